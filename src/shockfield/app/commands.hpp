@@ -1,0 +1,11 @@
+#pragma once
+// The `shockfield` subcommands. Each add_*_command() attaches one subcommand (with its complete
+// --help) to the application; main() calls them in order. A subcommand's callback returns through
+// exceptions: InputError and RunError become one message on stderr and a non-zero exit code.
+#include <CLI/CLI.hpp>
+
+namespace shockfield::app {
+
+void add_run_command(CLI::App& app);
+
+}  // namespace shockfield::app

@@ -1,0 +1,34 @@
+// shockfield: the command-line front end. Subcommands live in one file each (see commands.hpp).
+#include <fmt/format.h>
+
+#include <cstdio>
+
+#include "shockfield/app/commands.hpp"
+#include "shockfield/core/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "shockfield " SHOCKFIELD_VERSION
+      " - shock response of heterogeneous materials, from atoms to the sample.\n"
+      "Simulate with molecular dynamics (md), then analyse the fields that come out.\n"
+      "Run `shockfield SUBCOMMAND --help` for each subcommand's options.",
+      "shockfield"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "shockfield " SHOCKFIELD_VERSION);
+  shockfield::app::add_run_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const shockfield::InputError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const shockfield::RunError& e) {
+    std::fprintf(stderr, "run stopped: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

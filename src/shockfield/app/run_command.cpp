@@ -1,0 +1,59 @@
+// `shockfield run CASE.toml`: validates the case file, then runs the method it names.
+#include <omp.h>
+
+#include <map>
+
+#include "shockfield/app/commands.hpp"
+#include "shockfield/core/config.hpp"
+#include "shockfield/core/error.hpp"
+#include "shockfield/core/run_options.hpp"
+#include "shockfield/md/run_case.hpp"
+
+namespace shockfield::app {
+namespace {
+
+using Runner = void (*)(const Config&, const RunOptions&);
+
+// Explicit registry of the methods `run` knows, by the case file's `method` value.
+const std::map<std::string, Runner>& runners() {
+  static const std::map<std::string, Runner> table{{"md", &md::run_case}};
+  return table;
+}
+
+void run(const RunOptions& options) {
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  const Config root = Config::load(options.case_file);
+  std::vector<std::string> names;
+  for (const auto& [name, runner] : runners()) names.push_back(name);
+  const std::string method = root.get_choice("method", names);
+  runners().at(method)(root, options);
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "run",
+      "Run a simulation described by a TOML case file.\n"
+      "The case file is checked completely before anything runs (unknown keys, wrong types,\n"
+      "missing or out-of-range values are reported with file, key and line). The run writes a\n"
+      "folder with log.txt, config.resolved.toml, thermo.csv, dumps and checkpoints.\n"
+      "Ctrl-C or SIGTERM writes a checkpoint and stops; --resume continues from it.\n"
+      "Case-file keys: docs/md.md (method = \"md\").");
+  cmd->add_option("case", options->case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", options->output,
+                  "Run folder (default: runs/<case file name without .toml>)");
+  cmd->add_flag("--overwrite", options->overwrite, "Replace an existing run folder");
+  cmd->add_flag("--resume", options->resume,
+                "Continue the run in the output folder from its last checkpoint");
+  cmd->add_option("-j,--threads", options->threads,
+                  "OpenMP threads (default: OMP_NUM_THREADS, else all cores)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("-q,--quiet", options->quiet, "No progress line");
+  cmd->add_flag("--check", options->validate_only,
+                "Only validate the case file (and the files it names), then exit");
+  cmd->callback([options] { run(*options); });
+}
+
+}  // namespace shockfield::app

@@ -1,0 +1,106 @@
+#pragma once
+// Case-file reading with validation. A Config is a view on one TOML table of a case file. Every
+// typed read records the value (or its default) in the resolved configuration; once a case is
+// parsed, check_unknown_keys() reports every key nobody read. Every failure is an InputError
+// naming the file, the dotted key, its line and what was expected.
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace shockfield {
+
+/// Inclusive or exclusive bounds on a number read from a case file.
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false;
+  bool hi_open = false;
+  static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
+  static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
+  static Range closed(double a, double b) { return {a, b, false, false}; }
+  bool contains(double v) const;
+  std::string describe() const;
+};
+
+class Config {
+ public:
+  /// Parses a TOML file; syntax errors become InputError with file:line:column.
+  static Config load(const std::filesystem::path& file);
+  /// Parses TOML text (tests); `name` stands in for the file name in messages.
+  static Config parse(std::string_view text, const std::string& name = "<string>");
+
+  const std::string& file() const { return shared_->file; }
+  /// Dotted path of this table ("" for the root).
+  const std::string& path() const { return path_; }
+  std::string key_path(std::string_view key) const;
+
+  bool has(std::string_view key) const;
+
+  // Required values.
+  double get_double(std::string_view key, Range range = {}) const;
+  long long get_int(std::string_view key, Range range = {}) const;
+  bool get_bool(std::string_view key) const;
+  std::string get_string(std::string_view key) const;
+  /// A string that must be one of `choices`.
+  std::string get_choice(std::string_view key, const std::vector<std::string>& choices) const;
+  std::vector<double> get_doubles(std::string_view key, std::size_t count, Range range = {}) const;
+  std::vector<long long> get_ints(std::string_view key, std::size_t count, Range range = {}) const;
+  std::vector<std::string> get_strings(std::string_view key) const;
+
+  // Optional values with a default (the default is recorded in the resolved config).
+  double get_double_or(std::string_view key, double fallback, Range range = {}) const;
+  long long get_int_or(std::string_view key, long long fallback, Range range = {}) const;
+  bool get_bool_or(std::string_view key, bool fallback) const;
+  std::string get_string_or(std::string_view key, const std::string& fallback) const;
+  std::string get_choice_or(std::string_view key, const std::vector<std::string>& choices,
+                            const std::string& fallback) const;
+  std::vector<double> get_doubles_or(std::string_view key, const std::vector<double>& fallback,
+                                     Range range = {}) const;
+
+  /// A sub-table; required() throws if it is missing.
+  Config table(std::string_view key) const;
+  std::optional<Config> optional_table(std::string_view key) const;
+  /// An array of tables ([[key]]); empty when absent.
+  std::vector<Config> tables(std::string_view key) const;
+
+  /// Records a derived value (time step in fs, atom count, ...) under [derived] in the resolved
+  /// configuration. Values are stored as given.
+  void derive(const std::string& key, double value) const;
+  void derive(const std::string& key, long long value) const;
+  void derive(const std::string& key, const std::string& value) const;
+
+  /// Throws InputError listing every key of the file that was never read.
+  void check_unknown_keys() const;
+  /// The resolved configuration: every value read (with defaults) plus [derived].
+  std::string resolved_toml() const;
+
+  /// Error naming this file and key, with the key's line when it has one.
+  [[noreturn]] void fail(std::string_view key, const std::string& expectation) const;
+
+ private:
+  struct Shared {
+    std::string file;
+    toml::table root;
+    toml::table resolved;
+    std::set<std::string> read_keys;
+  };
+  Config(std::shared_ptr<Shared> shared, const toml::table* table, std::string path)
+      : shared_(std::move(shared)), table_(table), path_(std::move(path)) {}
+  const toml::node* node(std::string_view key) const;
+  void mark(std::string_view key) const;
+  template <class T>
+  void record(std::string_view key, const T& value) const;
+  double number(std::string_view key, const toml::node& n, Range range) const;
+
+  std::shared_ptr<Shared> shared_;
+  const toml::table* table_ = nullptr;
+  std::string path_;
+};
+
+}  // namespace shockfield

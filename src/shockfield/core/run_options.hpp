@@ -1,0 +1,18 @@
+#pragma once
+// Options of `shockfield run` that are not part of the case file.
+#include <filesystem>
+#include <optional>
+
+namespace shockfield {
+
+struct RunOptions {
+  std::filesystem::path case_file;
+  std::optional<std::filesystem::path> output;   ///< run folder; default runs/<case name>
+  bool overwrite = false;                        ///< replace an existing run folder
+  bool resume = false;                           ///< continue from the folder's last checkpoint
+  int threads = 0;                               ///< OpenMP threads; 0 = OMP_NUM_THREADS or all cores
+  bool quiet = false;                            ///< no progress line
+  bool validate_only = false;                    ///< check the case file and stop
+};
+
+}  // namespace shockfield

@@ -1,0 +1,16 @@
+#pragma once
+// Unit systems and conversions. Only this file holds conversion constants.
+// md uses LAMMPS "metal" units: Å, eV, ps, amu, K, bar. The constants are the ones LAMMPS
+// (29 Sep 2021, src/update.cpp) uses, so that our numbers and LAMMPS's agree to round-off.
+
+namespace shockfield::units::metal {
+
+inline constexpr double boltz = 8.617343e-5;     ///< Boltzmann constant, eV/K
+inline constexpr double mvv2e = 1.0364269e-4;    ///< amu·Å²/ps² → eV
+inline constexpr double ftm2v = 1.0 / 1.0364269e-4;  ///< eV/Å / amu → Å/ps²
+inline constexpr double nktv2p = 1.6021765e6;    ///< eV/Å³ → bar
+inline constexpr double amu_per_A3_to_g_per_cc = 1.66053904;  ///< amu/Å³ → g/cm³
+inline constexpr double A_per_ps_to_km_per_s = 0.1;  ///< Å/ps → km/s
+inline constexpr double bar_to_GPa = 1.0e-4;
+
+}  // namespace shockfield::units::metal

@@ -1,0 +1,36 @@
+#include "shockfield/md/ghosts.hpp"
+
+#include <cmath>
+
+namespace shockfield::md {
+
+void rebuild_ghosts(Atoms& atoms, const geometry::Box& box, double cutoff) {
+  atoms.clear_ghosts();
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) box.wrap(atoms.x[i], atoms.image[i]);
+  for (int d = 0; d < 3; ++d) {
+    if (!box.periodic(d)) continue;
+    const double length = box.hi[d] - box.lo[d];
+    const int layers = static_cast<int>(std::ceil(cutoff / length));
+    const std::size_t n = atoms.size();  // owned + ghosts of earlier dimensions
+    for (int layer = 1; layer <= layers; ++layer) {
+      for (int side = -1; side <= 1; side += 2) {
+        Vec3 shift = Vec3::Zero();
+        shift[d] = side * layer * length;
+        for (std::size_t i = 0; i < n; ++i) {
+          const double y = atoms.x[i][d] + shift[d];
+          if (y < box.lo[d] - cutoff || y >= box.hi[d] + cutoff) continue;
+          const bool is_ghost = i >= atoms.nlocal;
+          const int owner = is_ghost ? atoms.ghost_owner[i - atoms.nlocal] : static_cast<int>(i);
+          const Vec3 total = is_ghost ? Vec3(atoms.ghost_shift[i - atoms.nlocal] + shift) : shift;
+          atoms.x.push_back(atoms.x[i] + shift);
+          atoms.type.push_back(atoms.type[i]);
+          atoms.ghost_owner.push_back(owner);
+          atoms.ghost_shift.push_back(total);
+        }
+      }
+    }
+  }
+  atoms.f.resize(atoms.size());
+}
+
+}  // namespace shockfield::md
