@@ -1,0 +1,287 @@
+#include "shockfield/io/lammps_dump.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <functional>
+#include <set>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/io/line_reader.hpp"
+
+namespace shockfield::io {
+
+std::optional<std::size_t> DumpFrame::find(std::string_view name) const {
+  const auto it = std::find(columns.begin(), columns.end(), name);
+  if (it == columns.end()) return std::nullopt;
+  return static_cast<std::size_t>(it - columns.begin());
+}
+
+const std::vector<double>& DumpFrame::column(std::string_view name) const {
+  const auto c = find(name);
+  if (!c) throw InputError(fmt::format("dump frame of timestep {} has no column '{}' (columns: {})",
+                                       timestep, name, fmt::join(columns, " ")));
+  return values[*c];
+}
+
+void DumpFrame::set_column(const std::string& name, std::vector<double> data) {
+  if (!values.empty() && data.size() != natoms())
+    throw InputError(fmt::format("dump column '{}' has {} values, the frame has {} atoms", name,
+                                 data.size(), natoms()));
+  if (const auto c = find(name)) {
+    values[*c] = std::move(data);
+    return;
+  }
+  columns.push_back(name);
+  values.push_back(std::move(data));
+}
+
+std::vector<std::int64_t> DumpFrame::ids() const {
+  const auto& c = column("id");
+  std::vector<std::int64_t> out(c.size());
+  std::transform(c.begin(), c.end(), out.begin(), [](double v) { return std::llround(v); });
+  return out;
+}
+
+std::vector<int> DumpFrame::types() const {
+  const auto& c = column("type");
+  std::vector<int> out(c.size());
+  std::transform(c.begin(), c.end(), out.begin(), [](double v) { return static_cast<int>(std::lround(v)); });
+  return out;
+}
+
+std::vector<Vec3> DumpFrame::positions() const {
+  // The position columns LAMMPS `dump custom` can write, in order of preference.
+  static const std::array<std::array<const char*, 3>, 3> sets{
+      {{"x", "y", "z"}, {"xu", "yu", "zu"}, {"xs", "ys", "zs"}}};
+  for (std::size_t s = 0; s < sets.size(); ++s) {
+    const auto& names = sets[s];
+    if (!has(names[0]) || !has(names[1]) || !has(names[2])) continue;
+    std::vector<Vec3> out(natoms());
+    for (int d = 0; d < 3; ++d) {
+      const auto& c = column(names[d]);
+      const bool scaled = s == 2;
+      for (std::size_t i = 0; i < c.size(); ++i)
+        out[i][d] = scaled ? box.lo[d] + c[i] * (box.hi[d] - box.lo[d]) : c[i];
+    }
+    return out;
+  }
+  throw InputError(fmt::format("dump frame of timestep {} has no positions (x y z, xu yu zu or "
+                               "xs ys zs); columns: {}", timestep, fmt::join(columns, " ")));
+}
+
+std::string dump_bounds_code(geometry::Boundary b) {
+  const char c = geometry::boundary_code(b);
+  return {c, c};
+}
+
+namespace {
+
+// The value of one LAMMPS `dump custom` per-atom attribute for atom i.
+std::function<double(std::size_t)> atom_field(const std::string& field, const geometry::Box& box,
+                                              const md::Atoms& atoms) {
+  if (field == "id") return [&](std::size_t i) { return static_cast<double>(atoms.id[i]); };
+  if (field == "type") return [&](std::size_t i) { return atoms.type[i] + 1.0; };
+  if (field == "mass") return [&](std::size_t i) { return atoms.mass_of(i); };
+  const auto axis = [](char c) { return c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1; };
+  if (field.size() == 1 && axis(field[0]) >= 0)  // x y z
+    return [&, d = axis(field[0])](std::size_t i) { return atoms.x[i][d]; };
+  if (field.size() == 2 && field[1] == 'u' && axis(field[0]) >= 0)  // xu yu zu: unwrapped
+    return [&, d = axis(field[0])](std::size_t i) {
+      return atoms.x[i][d] + atoms.image[i][d] * (box.hi[d] - box.lo[d]);
+    };
+  if (field.size() == 2 && axis(field[1]) >= 0) {
+    const int d = axis(field[1]);
+    if (field[0] == 'i') return [&, d](std::size_t i) { return double(atoms.image[i][d]); };
+    if (field[0] == 'v') return [&, d](std::size_t i) { return atoms.v[i][d]; };
+    if (field[0] == 'f') return [&, d](std::size_t i) { return atoms.f[i][d]; };
+  }
+  throw InputError(fmt::format("dump field '{}' is not one of id type x y z xu yu zu ix iy iz vx "
+                               "vy vz fx fy fz mass", field));
+}
+
+}  // namespace
+
+DumpFrame make_dump_frame(long long timestep, const geometry::Box& box, const md::Atoms& atoms,
+                          const std::vector<std::string>& fields) {
+  DumpFrame frame;
+  frame.timestep = timestep;
+  frame.box = box;
+  for (int d = 0; d < 3; ++d) frame.bounds[d] = dump_bounds_code(box.boundary[d]);
+  for (const std::string& field : fields) {
+    const auto value = atom_field(field, box, atoms);
+    std::vector<double> data(atoms.nlocal);
+    for (std::size_t i = 0; i < data.size(); ++i) data[i] = value(i);
+    frame.set_column(field, std::move(data));
+  }
+  return frame;
+}
+
+namespace {
+
+// Reduces a two-letter dump bounds code to one Box boundary (see DumpFrame::bounds).
+geometry::Boundary boundary_from_code(const LineReader& r, std::string_view code) {
+  const auto valid = [](char c) { return c == 'p' || c == 'f' || c == 's' || c == 'm'; };
+  if (code.size() != 2 || !valid(code[0]) || !valid(code[1]) || ((code[0] == 'p') != (code[1] == 'p')))
+    r.fail(fmt::format("expected a boundary code of two letters from p, f, s, m (pp, ff, fs, mm, ...), got '{}'", code));
+  if (code[0] == 'p') return geometry::Boundary::periodic;
+  if (code == "ff") return geometry::Boundary::fixed;
+  return geometry::Boundary::shrink;
+}
+
+void read_box(LineReader& r, DumpFrame& frame) {
+  const auto words = r.words();  // ITEM: BOX BOUNDS [xy xz yz] [codes...]
+  const std::vector<std::string> codes(words.begin() + 3, words.end());
+  if (std::find(codes.begin(), codes.end(), "xy") != codes.end())
+    r.fail("triclinic box (xy xz yz) is not supported: shockfield boxes are orthogonal");
+  if (!codes.empty() && codes.size() != 3)
+    r.fail(fmt::format("expected three boundary codes after BOX BOUNDS (e.g. 'pp pp ff'), got {}", codes.size()));
+  for (std::size_t d = 0; d < codes.size(); ++d) {
+    frame.bounds[d] = codes[d];
+    frame.box.boundary[d] = boundary_from_code(r, codes[d]);
+  }
+  static const char* axis = "xyz";
+  for (int d = 0; d < 3; ++d) {
+    r.require_next(fmt::format("the {0}lo {0}hi line of BOX BOUNDS", axis[d]));
+    const auto w = r.words();
+    if (w.size() != 2) r.fail(fmt::format("expected two numbers '{0}lo {0}hi', got {1} words", axis[d], w.size()));
+    frame.box.lo[d] = r.to_double(w[0], fmt::format("{}lo", axis[d]));
+    frame.box.hi[d] = r.to_double(w[1], fmt::format("{}hi", axis[d]));
+    if (!(frame.box.lo[d] < frame.box.hi[d]))
+      r.fail(fmt::format("expected {0}lo < {0}hi, got {1} {2}", axis[d], frame.box.lo[d], frame.box.hi[d]));
+  }
+}
+
+// The single word on the line after an ITEM header.
+std::string value_line(LineReader& r, const std::string& what) {
+  r.require_next(what);
+  const auto w = r.words();
+  if (w.size() != 1) r.fail(fmt::format("expected {} alone on the line, got '{}'", what, r.line()));
+  return std::string(w[0]);
+}
+
+void read_atoms(LineReader& r, DumpFrame& frame, long long natoms) {
+  const auto words = r.words();  // ITEM: ATOMS col...
+  std::set<std::string_view> seen;
+  for (std::size_t i = 2; i < words.size(); ++i) {
+    if (!seen.insert(words[i]).second) r.fail(fmt::format("column '{}' appears twice in ITEM: ATOMS", words[i]));
+    frame.columns.emplace_back(words[i]);
+  }
+  if (frame.columns.empty()) r.fail("expected column names after ITEM: ATOMS (e.g. 'id type x y z')");
+  const std::size_t ncols = frame.columns.size();
+  frame.values.assign(ncols, std::vector<double>(static_cast<std::size_t>(natoms)));
+  for (long long i = 0; i < natoms; ++i) {
+    r.require_next(fmt::format("atom row {} of {} at timestep {}", i + 1, natoms, frame.timestep));
+    const auto w = r.words();
+    if (w.size() != ncols)
+      r.fail(fmt::format("expected {} values ({}), got {}", ncols, fmt::join(frame.columns, " "), w.size()));
+    for (std::size_t c = 0; c < ncols; ++c)
+      frame.values[c][static_cast<std::size_t>(i)] = r.to_double(w[c], "column '" + frame.columns[c] + "'");
+  }
+}
+
+}  // namespace
+
+std::vector<DumpFrame> read_dump(std::istream& in, const std::string& name) {
+  LineReader r(in, name);
+  std::vector<DumpFrame> frames;
+  DumpFrame frame;
+  bool have_step = false, have_box = false;
+  long long natoms = -1;
+  while (r.next()) {
+    const std::string& line = r.line();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    if (line.rfind("ITEM:", 0) != 0) r.fail(fmt::format("expected an 'ITEM:' line, got '{}'", line));
+    const auto words = r.words();
+    if (words.size() >= 2 && words[1] == "TIMESTEP") {
+      frame.timestep = r.to_int(value_line(r, "the timestep"), "the timestep");
+      have_step = true;
+    } else if (words.size() >= 2 && words[1] == "TIME") {
+      frame.time = r.to_double(value_line(r, "the time"), "the time");
+    } else if (words.size() >= 2 && words[1] == "UNITS") {
+      frame.units = value_line(r, "the unit style");
+    } else if (words.size() >= 4 && words[1] == "NUMBER" && words[2] == "OF" && words[3] == "ATOMS") {
+      natoms = r.to_int(value_line(r, "the number of atoms"), "the number of atoms");
+      if (natoms < 0) r.fail("expected a number of atoms >= 0");
+    } else if (words.size() >= 3 && words[1] == "BOX" && words[2] == "BOUNDS") {
+      read_box(r, frame);
+      have_box = true;
+    } else if (words.size() >= 2 && words[1] == "ATOMS") {
+      if (!have_step || natoms < 0 || !have_box)
+        r.fail("ITEM: ATOMS before the frame's ITEM: TIMESTEP, NUMBER OF ATOMS and BOX BOUNDS");
+      read_atoms(r, frame, natoms);
+      frames.push_back(std::move(frame));
+      frame = DumpFrame{};
+      have_step = have_box = false;
+      natoms = -1;
+    } else {
+      r.fail(fmt::format("unknown section '{}' (expected TIMESTEP, TIME, UNITS, NUMBER OF ATOMS, "
+                         "BOX BOUNDS or ATOMS)", line));
+    }
+  }
+  if (have_step || have_box || natoms >= 0)
+    throw InputError(fmt::format("{}:{}: unexpected end of file, expected ITEM: ATOMS of timestep {}",
+                                 name, r.line_number() + 1, frame.timestep));
+  if (frames.empty()) throw InputError(fmt::format("{}: no dump frame found (empty file?)", name));
+  return frames;
+}
+
+std::vector<DumpFrame> read_dump(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("{}: cannot open dump file for reading", file.string()));
+  return read_dump(in, file.string());
+}
+
+void write_dump_frame(std::ostream& out, const DumpFrame& frame, const DumpWriteOptions& options) {
+  const std::size_t n = frame.natoms();
+  if (frame.columns.size() != frame.values.size())
+    throw InputError(fmt::format("dump frame: {} column names for {} value arrays",
+                                 frame.columns.size(), frame.values.size()));
+  for (std::size_t c = 0; c < frame.values.size(); ++c)
+    if (frame.values[c].size() != n)
+      throw InputError(fmt::format("dump frame: column '{}' has {} values, column '{}' has {}",
+                                   frame.columns[c], frame.values[c].size(), frame.columns[0], n));
+  // Integer-valued per-atom attributes of LAMMPS `dump custom`, written with "%d".
+  static const std::set<std::string> integer_columns{"id", "type", "mol", "proc", "procp1", "ix", "iy", "iz"};
+  std::vector<bool> is_int(frame.columns.size());
+  for (std::size_t c = 0; c < is_int.size(); ++c) is_int[c] = integer_columns.count(frame.columns[c]) > 0;
+
+  fmt::memory_buffer buf;
+  auto it = std::back_inserter(buf);
+  // Header as written by LAMMPS DumpCustom::header_item (units and time first, when present).
+  if (!frame.units.empty()) fmt::format_to(it, "ITEM: UNITS\n{}\n", frame.units);
+  if (frame.time) fmt::format_to(it, "ITEM: TIME\n{:.16g}\n", *frame.time);
+  fmt::format_to(it, "ITEM: TIMESTEP\n{}\nITEM: NUMBER OF ATOMS\n{}\n", frame.timestep, n);
+  fmt::format_to(it, "ITEM: BOX BOUNDS {} {} {}\n", frame.bounds[0], frame.bounds[1], frame.bounds[2]);
+  for (int d = 0; d < 3; ++d) fmt::format_to(it, "{:.16e} {:.16e}\n", frame.box.lo[d], frame.box.hi[d]);
+  fmt::format_to(it, "ITEM: ATOMS {}\n", fmt::join(frame.columns, " "));
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t c = 0; c < frame.values.size(); ++c) {
+      if (c) buf.push_back(' ');
+      const double v = frame.values[c][i];
+      if (is_int[c]) fmt::format_to(it, "{}", std::llround(v));
+      else if (options.full_precision) fmt::format_to(it, "{}", v);
+      else fmt::format_to(it, "{:g}", v);
+    }
+    buf.push_back('\n');
+    if (buf.size() > (1u << 20)) {
+      out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+      buf.clear();
+    }
+  }
+  out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+}
+
+DumpWriter::DumpWriter(const std::filesystem::path& file, DumpWriteOptions options)
+    : file_(file), out_(file), options_(options) {
+  if (!out_) throw InputError(fmt::format("{}: cannot open dump file for writing", file.string()));
+}
+
+void DumpWriter::write(const DumpFrame& frame) {
+  write_dump_frame(out_, frame, options_);
+  out_.flush();
+  if (!out_) throw RunError(fmt::format("{}: writing the dump frame of timestep {} failed",
+                                        file_.string(), frame.timestep));
+}
+
+}  // namespace shockfield::io
