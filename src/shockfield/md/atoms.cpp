@@ -20,7 +20,7 @@ void Atoms::clear_ghosts() {
   type.resize(nlocal);
   f.resize(nlocal);
   ghost_owner.clear();
-  ghost_shift.clear();
+  ghost_image.clear();
 }
 
 void Atoms::keep(const std::vector<bool>& flag) {
@@ -36,8 +36,12 @@ void Atoms::keep(const std::vector<bool>& flag) {
   id.resize(k); image.resize(k); mask.resize(k);
 }
 
-void Atoms::update_ghost_positions() {
-  for (std::size_t g = 0; g < nghost(); ++g) x[nlocal + g] = x[ghost_owner[g]] + ghost_shift[g];
+void Atoms::update_ghost_positions(const geometry::Box& box) {
+  const Vec3 length = box.length();
+  for (std::size_t g = 0; g < nghost(); ++g) {
+    const auto& im = ghost_image[g];
+    x[nlocal + g] = x[ghost_owner[g]] + Vec3(im[0] * length[0], im[1] * length[1], im[2] * length[2]);
+  }
 }
 
 std::int64_t Atoms::max_id() const {

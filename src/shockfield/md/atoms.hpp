@@ -24,9 +24,10 @@ struct Atoms {
   std::vector<std::array<int, 3>> image;  ///< periodic image counts (unwrapped = x + image·L)
   std::vector<std::uint32_t> mask;        ///< group membership bits; bit 0 = "all"
 
-  // Ghost bookkeeping (size nghost): owner index and the shift added to the owner's position.
+  // Ghost bookkeeping (size nghost): owner index and which periodic image of the owner the ghost
+  // is (ghost position = owner position + image·box length, so it follows box deformation).
   std::vector<int> ghost_owner;
-  std::vector<Vec3> ghost_shift;
+  std::vector<std::array<int, 3>> ghost_image;
 
   std::vector<double> mass;               ///< per type, amu
   std::vector<std::string> type_names;    ///< per type, element symbol or "" (e.g. "Cu")
@@ -44,8 +45,8 @@ struct Atoms {
   void clear_ghosts();
   /// Keeps the owned atoms whose flag is true, in order (ghosts must be cleared first).
   void keep(const std::vector<bool>& flag);
-  /// Copies owner positions to the ghosts (owner position + shift).
-  void update_ghost_positions();
+  /// Moves the ghosts to their owners' current positions plus image·(box length).
+  void update_ghost_positions(const geometry::Box& box);
   /// Adds each ghost's value into its owner's value (size() entries in `values`).
   template <class T>
   void reverse_sum(std::vector<T>& values) const {

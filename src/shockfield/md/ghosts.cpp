@@ -16,16 +16,20 @@ void rebuild_ghosts(Atoms& atoms, const geometry::Box& box, double cutoff) {
       for (int side = -1; side <= 1; side += 2) {
         Vec3 shift = Vec3::Zero();
         shift[d] = side * layer * length;
+        std::array<int, 3> step{0, 0, 0};
+        step[d] = side * layer;
         for (std::size_t i = 0; i < n; ++i) {
           const double y = atoms.x[i][d] + shift[d];
           if (y < box.lo[d] - cutoff || y >= box.hi[d] + cutoff) continue;
           const bool is_ghost = i >= atoms.nlocal;
           const int owner = is_ghost ? atoms.ghost_owner[i - atoms.nlocal] : static_cast<int>(i);
-          const Vec3 total = is_ghost ? Vec3(atoms.ghost_shift[i - atoms.nlocal] + shift) : shift;
+          std::array<int, 3> image = step;
+          if (is_ghost)
+            for (int k = 0; k < 3; ++k) image[k] += atoms.ghost_image[i - atoms.nlocal][k];
           atoms.x.push_back(atoms.x[i] + shift);
           atoms.type.push_back(atoms.type[i]);
           atoms.ghost_owner.push_back(owner);
-          atoms.ghost_shift.push_back(total);
+          atoms.ghost_image.push_back(image);
         }
       }
     }

@@ -1,0 +1,43 @@
+#include "shockfield/core/run_folder.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield {
+
+std::filesystem::path run_folder_path(const RunOptions& options) {
+  if (options.output) return *options.output;
+  return std::filesystem::path("runs") / options.case_file.stem();
+}
+
+void prepare_run_folder(const std::filesystem::path& folder, const RunOptions& options) {
+  namespace fs = std::filesystem;
+  if (options.resume) {
+    if (!fs::is_directory(folder))
+      throw InputError(fmt::format("--resume: run folder '{}' does not exist", folder.string()));
+    return;
+  }
+  if (fs::exists(folder)) {
+    if (!options.overwrite)
+      throw InputError(fmt::format("run folder '{}' exists; pass --overwrite to replace it, "
+                                   "--resume to continue it, or --output to choose another",
+                                   folder.string()));
+    fs::remove_all(folder);
+  }
+  fs::create_directories(folder);
+}
+
+void write_file_atomically(const std::filesystem::path& file, const std::string& text) {
+  const auto tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) throw RunError(fmt::format("cannot write '{}'", tmp));
+    out << text;
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+}  // namespace shockfield

@@ -1,0 +1,41 @@
+#include "shockfield/io/csv_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <sstream>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::io {
+
+CsvWriter::CsvWriter(const std::filesystem::path& file, std::vector<std::string> columns,
+                     const double* resume_from)
+    : columns_(std::move(columns)) {
+  std::vector<std::string> kept;
+  if (resume_from && std::filesystem::exists(file)) {
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+      if (line.empty()) continue;
+      if (std::stod(line.substr(0, line.find(','))) < *resume_from) kept.push_back(line);
+    }
+  }
+  out_.open(file, std::ios::trunc);
+  if (!out_) throw RunError(fmt::format("cannot write '{}'", file.string()));
+  for (std::size_t i = 0; i < columns_.size(); ++i) out_ << (i ? "," : "") << columns_[i];
+  out_ << '\n';
+  for (const auto& line : kept) out_ << line << '\n';
+  out_.flush();
+}
+
+void CsvWriter::row(const std::vector<double>& values) {
+  std::string line;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i) line += ',';
+    line += fmt::format("{:.10g}", values[i]);
+  }
+  out_ << line << '\n' << std::flush;
+}
+
+}  // namespace shockfield::io

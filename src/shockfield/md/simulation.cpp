@@ -1,0 +1,159 @@
+#include "shockfield/md/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/core/units.hpp"
+#include "shockfield/md/force_evaluation.hpp"
+#include "shockfield/md/ghosts.hpp"
+
+namespace shockfield::md {
+
+using units::metal::boltz;
+using units::metal::mvv2e;
+using units::metal::nktv2p;
+
+Simulation::Simulation(geometry::Box box_, Atoms atoms_, std::unique_ptr<Potential> potential_,
+                       double timestep, double skin_)
+    : box(std::move(box_)), atoms(std::move(atoms_)), potential(std::move(potential_)), dt(timestep),
+      skin(skin_) {}
+
+void Simulation::shrink_wrap() {
+  if (atoms.nlocal == 0) return;
+  for (int d = 0; d < 3; ++d) {
+    if (box.boundary[d] != geometry::Boundary::shrink) continue;
+    double lo = atoms.x[0][d], hi = lo;
+    for (std::size_t i = 1; i < atoms.nlocal; ++i) {
+      lo = std::min(lo, atoms.x[i][d]);
+      hi = std::max(hi, atoms.x[i][d]);
+    }
+    // LAMMPS pads shrink-wrapped faces by a small fraction so no atom sits on a face.
+    const double pad = 1e-4 * std::max(hi - lo, 1.0);
+    box.lo[d] = lo - pad;
+    box.hi[d] = hi + pad;
+  }
+}
+
+void Simulation::rebuild() {
+  shrink_wrap();
+  rebuild_ghosts(atoms, box, potential->cutoff() + skin);
+  geometry::build_neighbor_list(atoms.x, atoms.nlocal, potential->cutoff() + skin, true, list);
+  x_rebuild_.assign(atoms.x.begin(), atoms.x.begin() + static_cast<std::ptrdiff_t>(atoms.nlocal));
+  box_rebuild_ = box;
+  ++rebuilds;
+}
+
+void Simulation::restore_rebuild_state(const std::vector<Vec3>& x_rebuild, const geometry::Box& box_rebuild) {
+  const std::vector<Vec3> x_now(atoms.x.begin(), atoms.x.begin() + static_cast<std::ptrdiff_t>(atoms.nlocal));
+  const geometry::Box box_now = box;
+  atoms.clear_ghosts();
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.x[i] = x_rebuild[i];
+  box = box_rebuild;
+  rebuild_ghosts(atoms, box, potential->cutoff() + skin);
+  geometry::build_neighbor_list(atoms.x, atoms.nlocal, potential->cutoff() + skin, true, list);
+  x_rebuild_ = x_rebuild;
+  box_rebuild_ = box_rebuild;
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.x[i] = x_now[i];
+  box = box_now;
+  atoms.update_ghost_positions(box);
+}
+
+bool Simulation::needs_rebuild() const {
+  if (x_rebuild_.size() != atoms.nlocal) return true;
+  const double limit2 = 0.25 * skin * skin;
+  bool moved = false;
+#pragma omp parallel for reduction(|| : moved) schedule(static)
+  for (std::size_t i = 0; i < atoms.nlocal; ++i)
+    if ((atoms.x[i] - x_rebuild_[i]).squaredNorm() > limit2) moved = true;
+  if (moved) return true;
+  // A box that changed (deform, barostat) moves ghosts; rebuild when a face moved by half the skin.
+  for (int d = 0; d < 3; ++d)
+    if (std::abs(box.lo[d] - box_rebuild_.lo[d]) > 0.5 * skin ||
+        std::abs(box.hi[d] - box_rebuild_.hi[d]) > 0.5 * skin)
+      return true;
+  return false;
+}
+
+void Simulation::compute_forces(bool per_atom) {
+  if (needs_rebuild()) rebuild();
+  else atoms.update_ghost_positions(box);
+  evaluate_forces(atoms, *potential, list, forces, per_atom);
+}
+
+void Simulation::setup(bool per_atom) {
+  rebuild();
+  evaluate_forces(atoms, *potential, list, forces, per_atom);
+}
+
+void Simulation::advance(const std::function<bool(std::int64_t)>& want_per_atom) {
+  for (auto& fix : fixes) fix->initial_integrate(*this);
+  for (auto& fix : fixes) fix->post_integrate(*this);
+  ++step;
+  time += dt;
+  per_atom_this_step = want_per_atom(step);
+  compute_forces(per_atom_this_step);
+  for (auto& fix : fixes) fix->post_force(*this);
+  for (auto& fix : fixes) fix->final_integrate(*this);
+  for (auto& fix : fixes) fix->end_of_step(*this);
+}
+
+double Simulation::kinetic_energy() const {
+  double sum = 0;
+#pragma omp parallel for reduction(+ : sum) schedule(static)
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) sum += atoms.mass_of(i) * atoms.v[i].squaredNorm();
+  return 0.5 * mvv2e * sum;
+}
+
+ThermoState Simulation::thermo() const {
+  ThermoState s;
+  Voigt6 kin = Voigt6::Zero();
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) {
+    const double m = atoms.mass_of(i);
+    const Vec3& v = atoms.v[i];
+    kin += m * (Voigt6() << v.x() * v.x(), v.y() * v.y(), v.z() * v.z(), v.x() * v.y(),
+                v.x() * v.z(), v.y() * v.z()).finished();
+  }
+  kin *= mvv2e;
+  s.kinetic = 0.5 * (kin[0] + kin[1] + kin[2]);
+  const double dof = std::max(3.0 * static_cast<double>(atoms.nlocal) - 3.0, 1.0);
+  s.temperature = 2.0 * s.kinetic / (dof * boltz);
+  s.potential = forces.energy;
+  s.volume = box.volume();
+  // LAMMPS compute pressure: P = (N_dof k T + Σ r·f) / (3V); tensor uses Σ m v v + virial.
+  s.pressure = (dof * boltz * s.temperature + forces.virial[0] + forces.virial[1] + forces.virial[2]) /
+               (3.0 * s.volume) * nktv2p;
+  s.pressure_tensor = (kin + forces.virial) / s.volume * nktv2p;
+  return s;
+}
+
+void Simulation::check_health() const {
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) {
+    if (!atoms.x[i].allFinite() || !atoms.v[i].allFinite() || !atoms.f[i].allFinite())
+      throw RunError(fmt::format(
+          "step {}: atom {} has a non-finite position, velocity or force (x = {} {} {}, v = {} {} {}); "
+          "the time step ({} ps) is probably too large or two atoms overlap",
+          step, atoms.id[i], atoms.x[i].x(), atoms.x[i].y(), atoms.x[i].z(), atoms.v[i].x(),
+          atoms.v[i].y(), atoms.v[i].z(), dt));
+    for (int d = 0; d < 3; ++d) {
+      if (box.boundary[d] != geometry::Boundary::fixed) continue;
+      if (atoms.x[i][d] < box.lo[d] || atoms.x[i][d] >= box.hi[d])
+        throw RunError(fmt::format("step {}: lost atom {}: it left the fixed {} boundary of the box "
+                                   "([{}, {}]) at {} = {}",
+                                   step, atoms.id[i], "xyz"[d], box.lo[d], box.hi[d], "xyz"[d], atoms.x[i][d]));
+    }
+  }
+  // A displacement of more than the skin in one step means the list missed pairs.
+  const double vmax2 = [&] {
+    double m = 0;
+    for (std::size_t i = 0; i < atoms.nlocal; ++i) m = std::max(m, atoms.v[i].squaredNorm());
+    return m;
+  }();
+  if (std::sqrt(vmax2) * dt > 0.5 * skin)
+    throw RunError(fmt::format("step {}: an atom moves {:.3g} Å per step, more than half the neighbour "
+                               "skin ({} Å); the time step ({} ps) is too large for these velocities",
+                               step, std::sqrt(vmax2) * dt, skin, dt));
+}
+
+}  // namespace shockfield::md

@@ -1,0 +1,74 @@
+#pragma once
+// The MD simulation: owns the atoms, box, potential, neighbour list and fixes, and runs the
+// velocity-Verlet time loop (LAMMPS metal units). Neighbour lists are rebuilt when an atom moved
+// more than half the skin since the last build (LAMMPS `neigh_modify every 1 delay 0 check yes`).
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "shockfield/geometry/box.hpp"
+#include "shockfield/geometry/neighbor_list.hpp"
+#include "shockfield/md/atoms.hpp"
+#include "shockfield/md/fix.hpp"
+#include "shockfield/md/potential.hpp"
+
+namespace shockfield::md {
+
+struct ThermoState {
+  double temperature = 0;  ///< K, 3N−3 degrees of freedom (LAMMPS compute temp)
+  double kinetic = 0;      ///< eV
+  double potential = 0;    ///< eV
+  double pressure = 0;     ///< bar
+  Voigt6 pressure_tensor = Voigt6::Zero();  ///< bar, xx yy zz xy xz yz
+  double volume = 0;       ///< Å³
+};
+
+class Simulation {
+ public:
+  Simulation(geometry::Box box, Atoms atoms, std::unique_ptr<Potential> potential, double timestep,
+             double skin);
+
+  // State (public: fixes and diagnostics work on it directly).
+  geometry::Box box;
+  Atoms atoms;
+  std::unique_ptr<Potential> potential;
+  geometry::NeighborList list;
+  ForceResult forces;
+  double dt;              ///< ps
+  double skin;            ///< Å
+  std::int64_t step = 0;
+  double time = 0;        ///< ps
+  std::vector<std::unique_ptr<Fix>> fixes;
+  bool per_atom_this_step = false;  ///< set by diagnostics that need per-atom energy/virial
+  std::int64_t rebuilds = 0;
+
+  /// Wraps, rebuilds ghosts and list, and computes forces (per-atom tallies if asked).
+  void setup(bool per_atom);
+  /// Advances one velocity-Verlet step through all fix stages. `want_per_atom(step)` tells
+  /// whether the forces of the new step need per-atom tallies.
+  void advance(const std::function<bool(std::int64_t)>& want_per_atom);
+  /// Forces on the current positions (rebuilding the list if needed).
+  void compute_forces(bool per_atom);
+  /// Rebuild ghosts and neighbour list now (after changing positions or the box by hand).
+  void rebuild();
+
+  double kinetic_energy() const;
+  ThermoState thermo() const;
+  /// Positions and box at the last rebuild (the restart reproduces the list from them).
+  const std::vector<Vec3>& positions_at_rebuild() const { return x_rebuild_; }
+  const geometry::Box& box_at_rebuild() const { return box_rebuild_; }
+  /// Restores a rebuild reference from a checkpoint and rebuilds ghosts and list from it.
+  void restore_rebuild_state(const std::vector<Vec3>& x_rebuild, const geometry::Box& box_rebuild);
+
+  /// Throws RunError with a diagnosis if positions/velocities/forces are not finite or an atom
+  /// left a fixed boundary.
+  void check_health() const;
+
+ private:
+  bool needs_rebuild() const;
+  void shrink_wrap();
+  std::vector<Vec3> x_rebuild_;
+  geometry::Box box_rebuild_;
+};
+
+}  // namespace shockfield::md
