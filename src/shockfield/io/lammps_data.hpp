@@ -1,0 +1,53 @@
+#pragma once
+// LAMMPS data files, atom style atomic (`read_data` / `write_data`), orthogonal boxes.
+//
+//   <title line>
+//   N atoms
+//   M atom types
+//   xlo xhi / ylo yhi / zlo zhi
+//   Masses                      type mass [# element]
+//   Atoms # atomic              id type x y z [ix iy iz]
+//   Velocities                  id vx vy vz      (optional)
+//
+// `#` starts a comment anywhere; blank lines are ignored. "Pair Coeffs" / "PairIJ Coeffs"
+// sections are skipped (the force field comes from the case file); other sections, bonds and
+// triclinic boxes are rejected. As in LAMMPS read_data, atoms outside a periodic box are remapped
+// into it (image flags updated) and atoms outside a non-periodic box are an error. Every error
+// names the file, the line and what was expected.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shockfield/geometry/box.hpp"
+#include "shockfield/md/atoms.hpp"
+
+namespace shockfield::io {
+
+struct DataFile {
+  std::string title;
+  geometry::Box box;
+  /// Owned atoms in file order; mass per type (0 where the Masses section did not give one),
+  /// type_names from a "# Cu" comment after the mass, else "".
+  md::Atoms atoms;
+  bool has_velocities = false;
+  std::vector<bool> mass_given;  ///< per type
+};
+
+/// Reads a data file; `boundary` plays the role of the LAMMPS `boundary` command before read_data.
+DataFile read_data(const std::filesystem::path& file,
+                   const std::array<geometry::Boundary, 3>& boundary = {
+                       geometry::Boundary::periodic, geometry::Boundary::periodic,
+                       geometry::Boundary::periodic});
+
+struct DataWriteOptions {
+  std::string title = "LAMMPS data file written by shockfield";
+  bool velocities = true;   ///< write the Velocities section
+  bool image_flags = true;  ///< write ix iy iz after the positions
+};
+
+/// Writes the owned atoms of `atoms` as a LAMMPS data file (atom style atomic), positions and
+/// velocities to full precision (they read back bit-identical).
+void write_data(const std::filesystem::path& file, const geometry::Box& box, const md::Atoms& atoms,
+                const DataWriteOptions& options = {});
+
+}  // namespace shockfield::io

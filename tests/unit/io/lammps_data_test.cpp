@@ -1,0 +1,135 @@
+// LAMMPS data files: a file written by LAMMPS write_data (fixtures/io/data_fcc.in) is read and
+// written back byte for byte; round trips; comments; every kind of malformed input.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/io/lammps_data.hpp"
+
+namespace shockfield::io {
+namespace {
+
+using geometry::Boundary;
+constexpr std::array<Boundary, 3> ppf{Boundary::periodic, Boundary::periodic, Boundary::fixed};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string temp_file(const std::string& name, const std::string& text) {
+  const std::string path = testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+void expect_data_error(const std::string& text, const std::string& fragment,
+                       const std::array<Boundary, 3>& boundary = ppf) {
+  const std::string path = temp_file("bad.data", text);
+  try {
+    read_data(path, boundary);
+    FAIL() << "no error for:\n" << text;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad.data"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LammpsData, ReadsLammpsWriteData) {
+  const DataFile d = read_data("fixtures/io/data_fcc.data", ppf);
+  EXPECT_EQ(d.atoms.nlocal, 32u);
+  EXPECT_EQ(d.atoms.ntypes(), 2);
+  EXPECT_EQ(d.atoms.mass, (std::vector<double>{63.546, 58.6934}));
+  EXPECT_TRUE(d.has_velocities);
+  EXPECT_DOUBLE_EQ(d.box.hi.z(), 7.23);
+  EXPECT_EQ(d.box.boundary[2], Boundary::fixed);
+  EXPECT_EQ(d.atoms.id[0], 1);
+  EXPECT_DOUBLE_EQ(d.atoms.x[0].x(), 6.73);
+  EXPECT_EQ(d.atoms.image[0], (std::array<int, 3>{1, 0, 0}));
+  EXPECT_EQ(d.atoms.type[1], 1);
+  EXPECT_DOUBLE_EQ(d.atoms.v[0].x(), -0.5647194065870035);
+}
+
+TEST(LammpsData, WritesTheSameTextAsLammps) {
+  const std::string path = "fixtures/io/data_fcc.data";
+  const DataFile d = read_data(path, ppf);
+  const std::string out = testing::TempDir() + "rewritten.data";
+  write_data(out, d.box, d.atoms, {.title = d.title});
+  EXPECT_EQ(slurp(out), slurp(path));
+}
+
+TEST(LammpsData, RoundTripIsExact) {
+  md::Atoms atoms;
+  atoms.mass = {26.9815385, 1.0 / 3.0};
+  atoms.type_names = {"Al", ""};
+  atoms.add(Vec3(0.1, 1.0 / 7.0, 2.0 / 3.0), 0, 5, Vec3(1e-17, -2.5, 1.0 / 3.0));
+  atoms.add(Vec3(9.999999999999998, 0, 5), 1, 2);
+  atoms.image[1] = {-3, 0, 7};
+  geometry::Box box;
+  box.lo = Vec3(0, -1.0 / 9.0, 0);
+  box.hi = Vec3(10, 10, 10);
+  const std::string path = testing::TempDir() + "roundtrip.data";
+  write_data(path, box, atoms);
+  const DataFile d = read_data(path);
+  EXPECT_EQ(d.box.lo, box.lo);
+  EXPECT_EQ(d.atoms.x, atoms.x);
+  EXPECT_EQ(d.atoms.v, atoms.v);
+  EXPECT_EQ(d.atoms.id, atoms.id);
+  EXPECT_EQ(d.atoms.type, atoms.type);
+  EXPECT_EQ(d.atoms.image, atoms.image);
+  EXPECT_EQ(d.atoms.mass, atoms.mass);
+  EXPECT_EQ(d.atoms.type_names, atoms.type_names);
+}
+
+const std::string head = "title\n2 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n";
+
+TEST(LammpsData, CommentsBlankLinesSkippedSectionsAndWrapping) {
+  const std::string text =
+      "# title line\n\n  2 atoms   # two of them\n1 atom types\n0 bonds\n\n"
+      "0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n\n# a comment line\n"
+      "Pair Coeffs # lj/cut\n\n1 0.4 2.3\n\nMasses\n\n1 1.008 # H\n\n"
+      "Atoms # atomic\n\n7 1 -1 2 3\n\n3 1 10 2 10 0 0 0 # on the faces\n";
+  const DataFile d = read_data(temp_file("ok.data", text), ppf);
+  EXPECT_EQ(d.atoms.type_names[0], "H");
+  EXPECT_FALSE(d.has_velocities);
+  EXPECT_EQ(d.atoms.x[0], Vec3(9, 2, 3));  // remapped into the periodic box, as read_data does
+  EXPECT_EQ(d.atoms.image[0], (std::array<int, 3>{-1, 0, 0}));
+  EXPECT_EQ(d.atoms.x[1], Vec3(0, 2, 10));  // x wraps at the periodic hi face; z = zhi is inside
+}
+
+TEST(LammpsData, MalformedInput) {
+  const std::string masses = "\nMasses\n\n1 1.0\n";
+  expect_data_error("", "unexpected end of file, expected the title line");
+  expect_data_error(head + masses + "\nAtoms # atomic\n\n1 1 0 0 0\n", "bad.data:15: unexpected end of file, expected line 2 of 2 in the Atoms section");
+  expect_data_error(head + "\nAtoms\n\n1 1 0 0\n", "bad.data:10: expected 5 values");
+  expect_data_error(head + "\nAtoms\n\n1 1 0 0 0 0 0\n", "got 7");
+  expect_data_error(head + "\nAtoms\n\n1 1 0 0 0\n1 1 1 1 1\n", "bad.data:11: duplicate atom id 1");
+  expect_data_error(head + "\nAtoms\n\n1 2 0 0 0\n", "bad.data:10: atom type 2 out of range 1..1");
+  expect_data_error(head + "\nAtoms\n\n1 1 0 0 0\n2 1 1 1 10.5\n", "bad.data:11: atom 2 at z = 10.5 is outside the non-periodic box");
+  expect_data_error(head + "\nAtoms\n\n1 1 0 -1 0\n2 1 0 0 0\n", "outside the non-periodic box",
+                    {Boundary::periodic, Boundary::shrink, Boundary::periodic});
+  expect_data_error(head + "\nAtoms\n\n0 1 0 0 0\n", "atom id >= 1");
+  expect_data_error(head + "\nAtoms\n\n1 1 0 a 0\n", "bad.data:10: expected y");
+  expect_data_error(head + "\nAtoms # full\n\n", "atom style 'full' is not supported");
+  expect_data_error(head + masses + "\nAtoms\n\n1 1 0 0 0\n2 1 1 1 1\n\nVelocities\n\n1 0 0 0\n9 0 0 0\n",
+                    "bad.data:20: velocity for atom id 9");
+  expect_data_error(head + "\nVelocities\n\n", "must come after the Atoms section");
+  expect_data_error(head + "\nMasses\n\n1 -1\n", "expected a mass > 0");
+  expect_data_error(head + "\nMasses\n\n1 1 1\n", "expected 'type mass'");
+  expect_data_error(head + "\nBonds\n\n", "unsupported section 'Bonds'");
+  expect_data_error(head, "declares 2 atoms but there is no Atoms section");
+  expect_data_error("t\n2 atoms\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\nAtoms\n", "no 'N atom types' line");
+  expect_data_error("t\n2 atoms\n1 atom types\n0 10 xlo xhi\n0 10 zlo zhi\nAtoms\n", "no 'ylo yhi' line");
+  expect_data_error("t\n2 atoms\n1 atom types\n5 1 xlo xhi\n", "bad.data:4: expected xlo < xhi");
+  expect_data_error("t\n2 atoms\n0 0 0 xy xz yz\n", "triclinic");
+  expect_data_error("t\n2 atoms\n3 bonds\n", "only atom style atomic");
+  expect_data_error("t\n2 atoms\n3 things\n", "bad.data:3: unknown header line '3 things'");
+  EXPECT_THROW(read_data("fixtures/io/no_such.data"), InputError);
+}
+
+}  // namespace
+}  // namespace shockfield::io
