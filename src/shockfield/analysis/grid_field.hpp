@@ -1,0 +1,43 @@
+#pragma once
+// A scalar field Θ(x) on a regular grid (seed 000 §3.1: "fields and structures based on ordered
+// points"). Values are stored x fastest: index = x + nx * (y + ny * z); a 2D field has nz = 1.
+// Cells may be marked void (no material, e.g. an empty bin of a particle field): a void cell has
+// no value, counts as black (Θ < Θ_th) for every threshold and is skipped by statistics.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace shockfield::analysis {
+
+struct GridField {
+  std::array<std::size_t, 3> n{0, 0, 1};        ///< cells along x, y, z (nz = 1 in 2D)
+  std::array<double, 3> spacing{1.0, 1.0, 1.0};  ///< grid step along x, y, z
+  std::array<double, 3> origin{0.0, 0.0, 0.0};   ///< position of cell (0, 0, 0)
+  std::vector<double> values;                    ///< n[0] * n[1] * n[2] values
+  std::vector<std::uint8_t> is_void;             ///< empty (no void cells) or one flag per cell
+
+  /// A field of nx × ny × nz cells, all equal to `value`.
+  static GridField filled(std::size_t nx, std::size_t ny, std::size_t nz, double value);
+
+  std::size_t size() const { return n[0] * n[1] * n[2]; }
+  int dimension() const { return n[2] > 1 ? 3 : 2; }
+  std::size_t index(std::size_t x, std::size_t y, std::size_t z = 0) const {
+    return x + n[0] * (y + n[1] * z);
+  }
+  bool void_at(std::size_t i) const { return !is_void.empty() && is_void[i] != 0; }
+  std::size_t void_count() const;
+};
+
+/// Checks that the field can be analysed: at least one cell, values.size() matching the
+/// dimensions, a void mask that is empty or of the same size, positive spacings, and no NaN or
+/// infinite value in a non-void cell. Throws InputError naming `what` (a file name or a role such
+/// as "reference field") and the first offending cell.
+void validate(const GridField& field, const std::string& what);
+
+/// Throws InputError unless `a` and `b` have the same cell counts and spacings.
+void require_same_grid(const GridField& a, const GridField& b, const std::string& what_a,
+                       const std::string& what_b);
+
+}  // namespace shockfield::analysis

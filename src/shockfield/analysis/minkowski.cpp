@@ -1,0 +1,281 @@
+#include "shockfield/analysis/minkowski.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::analysis {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// Crofton direction weights: fraction of the unit sphere (3D) or circle (2D) closer to a lattice
+// direction class than to any other, indexed by the number m of its nonzero components.
+// 3D values: Legland, Kiêu & Devaux (2007), the 13-direction spherical Voronoi areas (×2 for ±u).
+constexpr std::array<double, 4> kWeight2D{0.0, 0.25, 0.25, 0.0};
+constexpr std::array<double, 4> kWeight3D{0.0, 0.04577789120476 * 2, 0.03698062787608 * 2,
+                                          0.03519563978232 * 2};
+
+// 2^D × χ contribution of one block (D = 2 or 3) for the cell complex of the white cells:
+// closed == true: white cells are closed squares/cubes (connectivity 8 / 26);
+// closed == false: white cells are points joined by edges, squares, cubes when all their corners
+// are white (connectivity 4 / 6).
+// A j-dimensional face of the block's cell complex lies in 2^(D-j) blocks; summing
+// (−1)^dim(cell) over the cells gives χ = V − E + F (− C). The faces are enumerated as sub-blocks:
+// per axis the cell coordinate is fixed to 0, fixed to 1, or free.
+int euler_times_cells(unsigned config, int dimension, bool closed) {
+  int sum = 0;
+  int states = 1;
+  for (int a = 0; a < dimension; ++a) states *= 3;
+  for (int s = 0; s < states; ++s) {
+    unsigned mask = 0;
+    int free = 0, code = s;
+    std::array<int, 3> state{};
+    for (int a = 0; a < dimension; ++a, code /= 3) state[a] = code % 3, free += state[a] == 2;
+    for (unsigned cell = 0; cell < (1u << dimension); ++cell) {
+      bool inside = true;
+      for (int a = 0; a < dimension; ++a)
+        if (state[a] != 2 && static_cast<int>((cell >> a) & 1u) != state[a]) inside = false;
+      if (inside) mask |= 1u << cell;
+    }
+    const int weight = 1 << free;
+    if (closed) {  // the dual cell at the block centre, of dimension D − free, exists if any
+                   // white cell touches it
+      if (config & mask) sum += ((dimension - free) % 2 ? -weight : weight);
+    } else if ((config & mask) == mask) {
+      sum += (free % 2 ? -weight : weight);
+    }
+  }
+  return sum;
+}
+
+// Crofton weight of one block for the boundary length (2D) or surface (3D), in grid units: every
+// pair of block cells that differ (a crossing of the lattice line through them), divided by the
+// number of blocks holding that pair (2^(D−m)) and the line density |u| = √m.
+double crofton_crossings(unsigned config, int dimension) {
+  const double factor = dimension == 2 ? pi / 2.0 : 2.0;
+  const auto& weight = dimension == 2 ? kWeight2D : kWeight3D;
+  double sum = 0.0;
+  const unsigned cells = 1u << dimension;
+  for (unsigned a = 0; a < cells; ++a)
+    for (unsigned b = a + 1; b < cells; ++b) {
+      if (((config >> a) & 1u) == ((config >> b) & 1u)) continue;
+      const int m = std::popcount(a ^ b);
+      sum += weight[m] / (static_cast<double>(1 << (dimension - m)) * std::sqrt(double(m)));
+    }
+  return factor * sum;
+}
+
+// 2D configuration of four block cells c00, c10, c01, c11 forming a (possibly sheared) square.
+unsigned square_config(unsigned config, std::array<unsigned, 4> cells) {
+  unsigned out = 0;
+  for (unsigned i = 0; i < 4; ++i) out |= ((config >> cells[i]) & 1u) << i;
+  return out;
+}
+
+// Mean breadth weight of one 3D block, in grid units: Σ over the 13 plane normals u of
+// w_u × (plane spacing 1/|u|) × χ of the block's part of the planar sections.
+double mean_breadth_weight(unsigned config, bool closed) {
+  double sum = 0.0;
+  // Axis normals: the block's two faces normal to the axis; each face square lies in 2 blocks.
+  for (unsigned a = 0; a < 3; ++a) {
+    const unsigned u = 1u << ((a + 1) % 3), v = 1u << ((a + 2) % 3);
+    for (unsigned side = 0; side < 2; ++side) {
+      const unsigned o = side << a;
+      const int chi4 = euler_times_cells(square_config(config, {o, o | u, o | v, o | u | v}), 2,
+                                         closed);
+      sum += kWeight3D[1] * 0.5 * chi4 / 4.0;
+    }
+  }
+  // Face-diagonal normals (a ± b): the plane through the block's diagonal pair in (a, b) holds
+  // a 1 × √2 rectangle, which lies in one block only.
+  for (unsigned a = 0; a < 3; ++a)
+    for (unsigned b = a + 1; b < 3; ++b) {
+      const unsigned t = 1u << (3 - a - b);  // the third axis
+      const std::array<std::array<unsigned, 2>, 2> pairs{
+          {{0u, (1u << a) | (1u << b)}, {1u << a, 1u << b}}};
+      for (const auto& p : pairs) {
+        const int chi4 =
+            euler_times_cells(square_config(config, {p[0], p[1], p[0] | t, p[1] | t}), 2, closed);
+        sum += kWeight3D[2] / std::sqrt(2.0) * chi4 / 4.0;
+      }
+    }
+  // Space-diagonal normals (1, ±1, ±1): planes cut the block in triangles of face diagonals
+  // (the level sets of n·p with three cells); the triangular lattice is self-dual, so both
+  // complexes give χ_tri = [any] − ½ Σ_edges [either] + ⅙ Σ_cells [white].
+  for (int s = 0; s < 4; ++s) {
+    const std::array<int, 3> n{1, s & 1 ? -1 : 1, s & 2 ? -1 : 1};
+    for (int level = -2; level <= 3; ++level) {
+      std::array<unsigned, 3> tri{};
+      int count = 0;
+      for (unsigned c = 0; c < 8; ++c)
+        if (n[0] * int(c & 1u) + n[1] * int((c >> 1) & 1u) + n[2] * int((c >> 2) & 1u) == level) {
+          if (count < 3) tri[count] = c;
+          ++count;
+        }
+      if (count != 3) continue;
+      const auto white = [&](unsigned c) { return (config >> c) & 1u; };
+      const unsigned any = white(tri[0]) | white(tri[1]) | white(tri[2]);
+      const unsigned points = white(tri[0]) + white(tri[1]) + white(tri[2]);
+      const unsigned either = (white(tri[0]) | white(tri[1])) + (white(tri[1]) | white(tri[2])) +
+                              (white(tri[0]) | white(tri[2]));
+      const double chi = double(any) - 0.5 * either + double(points) / 6.0;
+      sum += kWeight3D[3] / std::sqrt(3.0) * chi;
+    }
+  }
+  return sum;
+}
+
+// Per-configuration weights, computed once.
+struct WeightTable {
+  std::vector<std::int64_t> white_cells;  // cells of the block that are white
+  std::vector<double> crofton;   // boundary length (2D) or surface (3D), grid units
+  std::array<std::vector<std::int64_t>, 2> euler;   // [closed] 2^D χ
+  std::array<std::vector<double>, 2> mean_breadth;  // [closed], 3D only
+};
+
+const WeightTable& weights(int dimension) {
+  static const std::array<WeightTable, 2> tables = [] {
+    std::array<WeightTable, 2> t;
+    for (int d = 2; d <= 3; ++d) {
+      WeightTable& w = t[d - 2];
+      const unsigned nc = 1u << (1u << d);
+      for (unsigned c = 0; c < nc; ++c) {
+        w.white_cells.push_back(std::popcount(c));
+        w.crofton.push_back(crofton_crossings(c, d));
+        for (int closed = 0; closed < 2; ++closed) {
+          w.euler[closed].push_back(euler_times_cells(c, d, closed != 0));
+          if (d == 3) w.mean_breadth[closed].push_back(mean_breadth_weight(c, closed != 0));
+        }
+      }
+    }
+    return t;
+  }();
+  return tables[dimension - 2];
+}
+
+// Σ_c counts[c] × weight[c], in configuration order (the same order for every route).
+template <class T>
+T weighted_sum(std::span<const std::int64_t> counts, const std::vector<T>& weight) {
+  T sum{};
+  for (std::size_t c = 0; c < counts.size(); ++c) sum += static_cast<T>(counts[c]) * weight[c];
+  return sum;
+}
+
+double isotropic_spacing(const GridField& field) {
+  for (int a = 1; a < field.dimension(); ++a)
+    if (field.spacing[a] != field.spacing[0])
+      throw InputError(fmt::format(
+          "Minkowski functionals need a square/cubic lattice; the grid spacing is ({}, {}, {})",
+          field.spacing[0], field.spacing[1], field.spacing[2]));
+  return field.spacing[0];
+}
+
+// Common part: white cells, area/volume fraction and eq. (33)'s normalisation.
+struct Common {
+  std::int64_t white = 0, euler = 0;
+  double fraction = 0.0, per_black = 0.0;
+};
+
+Common common(std::span<const std::int64_t> row, const GridField& field, bool closed) {
+  const WeightTable& w = weights(field.dimension());
+  const std::int64_t cells_per_block = std::int64_t{1} << field.dimension();
+  Common c;
+  c.white = weighted_sum<std::int64_t>(row, w.white_cells) / cells_per_block;
+  c.euler = weighted_sum<std::int64_t>(row, w.euler[closed]) / cells_per_block;  // eq. (32)
+  const auto total = static_cast<std::int64_t>(field.size());
+  c.fraction = static_cast<double>(c.white) / static_cast<double>(total);
+  const std::int64_t black = total - c.white;  // void cells are black
+  c.per_black = black > 0 ? static_cast<double>(c.euler) / static_cast<double>(black)
+                          : std::numeric_limits<double>::quiet_NaN();  // eq. (33)
+  return c;
+}
+
+void require_dimension(const GridField& field, int dimension) {
+  if (field.dimension() != dimension)
+    throw InputError(fmt::format("expected a {}D field, got {} x {} x {} cells", dimension,
+                                 field.n[0], field.n[1], field.n[2]));
+}
+
+}  // namespace
+
+Functionals2D functionals_2d(const ConfigurationCounts& counts, std::size_t k,
+                             const GridField& field, Connectivity2D connectivity) {
+  require_dimension(field, 2);
+  const double h = isotropic_spacing(field);
+  const auto row = counts.row(k);
+  const Common c = common(row, field, connectivity == Connectivity2D::eight);
+  Functionals2D f;
+  f.threshold = counts.thresholds[k];
+  f.area_fraction = c.fraction;
+  f.boundary_length = weighted_sum<double>(row, weights(2).crofton) * h;
+  f.euler = c.euler;
+  f.euler_per_black_node = c.per_black;
+  f.white_cells = c.white;
+  return f;
+}
+
+Functionals3D functionals_3d(const ConfigurationCounts& counts, std::size_t k,
+                             const GridField& field, Adjacency3D adjacency) {
+  require_dimension(field, 3);
+  const double h = isotropic_spacing(field);
+  const auto row = counts.row(k);
+  const bool closed = adjacency == Adjacency3D::twentysix_6;
+  const Common c = common(row, field, closed);
+  Functionals3D f;
+  f.threshold = counts.thresholds[k];
+  f.volume_fraction = c.fraction;
+  f.surface_area = weighted_sum<double>(row, weights(3).crofton) * h * h;
+  f.mean_breadth = weighted_sum<double>(row, weights(3).mean_breadth[closed]) * h;
+  f.integral_mean_curvature = 2.0 * pi * f.mean_breadth;
+  f.euler = c.euler;
+  f.euler_per_black_node = c.per_black;
+  f.white_cells = c.white;
+  return f;
+}
+
+std::vector<Functionals2D> minkowski_2d(const GridField& field, std::span<const double> thresholds,
+                                        const MinkowskiOptions& options) {
+  require_dimension(field, 2);
+  isotropic_spacing(field);
+  const ConfigurationCounts counts = count_configurations(field, thresholds, options.boundary);
+  std::vector<Functionals2D> out;
+  for (std::size_t k = 0; k < thresholds.size(); ++k)
+    out.push_back(functionals_2d(counts, k, field, options.connectivity2d));
+  return out;
+}
+
+std::vector<Functionals3D> minkowski_3d(const GridField& field, std::span<const double> thresholds,
+                                        const MinkowskiOptions& options) {
+  require_dimension(field, 3);
+  isotropic_spacing(field);
+  const ConfigurationCounts counts = count_configurations(field, thresholds, options.boundary);
+  std::vector<Functionals3D> out;
+  for (std::size_t k = 0; k < thresholds.size(); ++k)
+    out.push_back(functionals_3d(counts, k, field, options.adjacency3d));
+  return out;
+}
+
+std::vector<double> linear_thresholds(const GridField& field, std::size_t count) {
+  validate(field, "field");
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < field.size(); ++i)
+    if (!field.void_at(i)) lo = std::min(lo, field.values[i]), hi = std::max(hi, field.values[i]);
+  if (!(hi > lo) || count == 0)
+    throw InputError(fmt::format(
+        "cannot spread {} thresholds over the field's values [{}, {}]; give thresholds explicitly",
+        count, lo, hi));
+  std::vector<double> t(count);
+  for (std::size_t k = 0; k < count; ++k)
+    t[k] = count == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * double(k) / double(count - 1);
+  return t;
+}
+
+}  // namespace shockfield::analysis
