@@ -1,0 +1,108 @@
+#include "shockfield/md/region.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::md {
+
+bool Region::inside(const Vec3& x) const {
+  switch (shape) {
+    case Shape::block:
+      return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
+    case Shape::sphere:
+      return (x - center).norm() <= radius;
+    case Shape::cylinder: {
+      Vec3 d = x - center;
+      d[axis] = 0.0;
+      return d.norm() <= radius && x[axis] >= axial_lo && x[axis] <= axial_hi;
+    }
+  }
+  return false;
+}
+
+Region region_from_config(const Config& t) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Region r;
+  const std::string shape = t.get_choice("shape", {"block", "sphere", "cylinder"});
+  r.side_in = t.get_choice_or("side", {"in", "out"}, "in") == "in";
+  if (shape == "block") {
+    r.shape = Region::Shape::block;
+    const auto lo = t.get_doubles_or("lo", {-inf, -inf, -inf});
+    const auto hi = t.get_doubles_or("hi", {inf, inf, inf});
+    if (lo.size() != 3) t.fail("lo", "expected 3 numbers [x, y, z]");
+    if (hi.size() != 3) t.fail("hi", "expected 3 numbers [x, y, z]");
+    r.lo = Vec3(lo[0], lo[1], lo[2]);
+    r.hi = Vec3(hi[0], hi[1], hi[2]);
+    if (!(r.lo.array() < r.hi.array()).all()) t.fail("hi", "expected hi > lo in every dimension");
+  } else if (shape == "sphere") {
+    r.shape = Region::Shape::sphere;
+    const auto c = t.get_doubles("center", 3);
+    r.center = Vec3(c[0], c[1], c[2]);
+    r.radius = t.get_double("radius", Range::positive());
+  } else {
+    r.shape = Region::Shape::cylinder;
+    r.axis = t.get_choice("axis", {"x", "y", "z"})[0] - 'x';
+    const auto c = t.get_doubles("center", 2);
+    for (int d = 0, k = 0; d < 3; ++d)
+      if (d != r.axis) r.center[d] = c[static_cast<std::size_t>(k++)];
+    r.radius = t.get_double("radius", Range::positive());
+    r.axial_lo = t.get_double_or("lo", -inf);
+    r.axial_hi = t.get_double_or("hi", inf);
+    if (!(r.axial_lo < r.axial_hi)) t.fail("hi", "expected hi > lo along the cylinder axis");
+  }
+  return r;
+}
+
+std::size_t delete_atoms(const Region& region, Atoms& atoms) {
+  std::vector<bool> keep(atoms.nlocal);
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) keep[i] = !region.match(atoms.x[i]);
+  const std::size_t before = atoms.nlocal;
+  atoms.keep(keep);
+  return before - atoms.nlocal;
+}
+
+std::uint32_t GroupTable::bit(const std::string& name) {
+  if (has(name)) return find(name);
+  if (names_.size() == 32)
+    throw InputError(fmt::format("group '{}': too many groups (at most 32, 'all' included)", name));
+  names_.push_back(name);
+  return 1u << (names_.size() - 1);
+}
+
+bool GroupTable::has(const std::string& name) const {
+  return std::find(names_.begin(), names_.end(), name) != names_.end();
+}
+
+std::uint32_t GroupTable::find(const std::string& name) const {
+  const auto it = std::find(names_.begin(), names_.end(), name);
+  if (it == names_.end())
+    throw InputError(fmt::format("unknown group '{}' (groups: {})", name, fmt::join(names_, ", ")));
+  return 1u << (it - names_.begin());
+}
+
+namespace {
+template <class Pred>
+std::size_t add_if(std::uint32_t bit, Atoms& atoms, Pred pred) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) {
+    if (pred(i)) atoms.mask[i] |= bit;
+    n += (atoms.mask[i] & bit) != 0;
+  }
+  return n;
+}
+}  // namespace
+
+std::size_t add_to_group(std::uint32_t bit, const Region& region, Atoms& atoms) {
+  return add_if(bit, atoms, [&](std::size_t i) { return region.match(atoms.x[i]); });
+}
+
+std::size_t add_to_group(std::uint32_t bit, const std::vector<int>& types, Atoms& atoms) {
+  return add_if(bit, atoms, [&](std::size_t i) {
+    return std::find(types.begin(), types.end(), atoms.type[i]) != types.end();
+  });
+}
+
+}  // namespace shockfield::md

@@ -1,0 +1,102 @@
+// Peer cross-check with LAMMPS (29 Sep 2021): the same lattice, orientation, box of whole
+// periodic repeats and deleted region give the same atoms. References made by
+// fixtures/io/regenerate.sh from fixtures/io/lattice_*.in (LAMMPS lattice, create_atoms box,
+// region ... units box, delete_atoms region, write_data). Positions are compared after sorting,
+// quantised to 1e-6 Å (both sides compute the sites in double precision; differences are
+// round-off, ~1e-14 Å).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "shockfield/io/lammps_data.hpp"
+#include "shockfield/md/lattice.hpp"
+#include "shockfield/md/region.hpp"
+
+namespace shockfield::md {
+namespace {
+
+using Key = std::array<long long, 3>;
+
+std::vector<Key> sorted_keys(const std::vector<Vec3>& x, const geometry::Box& box) {
+  const double q = 1e-6;
+  std::vector<Key> keys;
+  for (const Vec3& p : x) {
+    Key k;
+    for (int d = 0; d < 3; ++d) {
+      const long long period = std::llround(box.length()[d] / q);
+      k[d] = ((std::llround((p[d] - box.lo[d]) / q) % period) + period) % period;
+    }
+    keys.push_back(k);
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+void expect_same_as_lammps(const LatticeSpec& spec, const std::array<int, 3>& n, const Region& hole,
+                           const std::string& name) {
+  SCOPED_TRACE(name);
+  const Lattice lattice(spec);
+  const auto box = lattice.box(n, {geometry::Boundary::periodic, geometry::Boundary::periodic,
+                                   geometry::Boundary::periodic});
+  Atoms atoms;
+  atoms.mass = {1.0};
+  lattice.create_atoms(box, atoms);
+  delete_atoms(hole, atoms);
+  const io::DataFile ref = io::read_data("fixtures/io/lattice_" + name + ".data");
+  for (int d = 0; d < 3; ++d) {
+    EXPECT_NEAR(box.lo[d], ref.box.lo[d], 1e-12);
+    EXPECT_NEAR(box.hi[d], ref.box.hi[d], 1e-12);
+  }
+  ASSERT_EQ(atoms.nlocal, ref.atoms.nlocal);
+  EXPECT_EQ(sorted_keys(atoms.x, box), sorted_keys(ref.atoms.x, ref.box));
+  for (const Vec3& x : atoms.x) EXPECT_TRUE(box.contains(x));
+}
+
+LatticeSpec spec(LatticeStyle style, double a0,
+                 const std::array<std::array<int, 3>, 3>& orient = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}) {
+  LatticeSpec s;
+  s.style = style;
+  s.a0 = a0;
+  s.orient = orient;
+  return s;
+}
+
+Region sphere(double x, double y, double z, double r) {
+  Region s;
+  s.shape = Region::Shape::sphere;
+  s.center = Vec3(x, y, z);
+  s.radius = r;
+  return s;
+}
+
+TEST(LatticeVsLammps, Fcc100SphereVoid) {
+  expect_same_as_lammps(spec(LatticeStyle::fcc, 3.615), {4, 4, 4}, sphere(7.3, 7.1, 7.2, 4.2), "fcc100");
+}
+
+TEST(LatticeVsLammps, Fcc111OrientedSphereVoid) {
+  expect_same_as_lammps(spec(LatticeStyle::fcc, 3.615, {{{1, -1, 0}, {1, 1, -2}, {1, 1, 1}}}), {6, 4, 3}, sphere(7.9, 8.3, 9.1, 5.0), "fcc111");
+}
+
+TEST(LatticeVsLammps, Bcc111OrientedBlockDeleted) {
+  Region block;
+  block.hi.x() = 5.0;
+  block.lo.x() = 0.0;
+  expect_same_as_lammps(spec(LatticeStyle::bcc, 2.8665, {{{1, 1, 1}, {-1, 1, 0}, {-1, -1, 2}}}), {6, 3, 2}, block, "bcc111");
+}
+
+TEST(LatticeVsLammps, HcpSphereVoid) {
+  expect_same_as_lammps(spec(LatticeStyle::hcp, 3.21), {5, 3, 3}, sphere(8.0, 8.3, 7.9, 3.9), "hcp");
+}
+
+TEST(LatticeVsLammps, DiamondCylinderHole) {
+  Region cyl;
+  cyl.shape = Region::Shape::cylinder;
+  cyl.axis = 2;
+  cyl.center = Vec3(8.1, 8.2, 0.0);
+  cyl.radius = 3.3;
+  expect_same_as_lammps(spec(LatticeStyle::diamond, 5.431), {3, 3, 3}, cyl, "diamond");
+}
+
+}  // namespace
+}  // namespace shockfield::md
