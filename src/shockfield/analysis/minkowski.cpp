@@ -204,6 +204,18 @@ void require_dimension(const GridField& field, int dimension) {
                                  field.n[0], field.n[1], field.n[2]));
 }
 
+// Counts every threshold in one pass, then evaluates `row(counts, k)` per threshold.
+template <class Row>
+auto for_all_thresholds(const GridField& field, std::span<const double> thresholds,
+                        Boundary boundary, int dimension, Row row) {
+  require_dimension(field, dimension);
+  isotropic_spacing(field);
+  const ConfigurationCounts counts = count_configurations(field, thresholds, boundary);
+  std::vector<decltype(row(counts, std::size_t{0}))> out;
+  for (std::size_t k = 0; k < thresholds.size(); ++k) out.push_back(row(counts, k));
+  return out;
+}
+
 }  // namespace
 
 Functionals2D functionals_2d(const ConfigurationCounts& counts, std::size_t k,
@@ -243,24 +255,16 @@ Functionals3D functionals_3d(const ConfigurationCounts& counts, std::size_t k,
 
 std::vector<Functionals2D> minkowski_2d(const GridField& field, std::span<const double> thresholds,
                                         const MinkowskiOptions& options) {
-  require_dimension(field, 2);
-  isotropic_spacing(field);
-  const ConfigurationCounts counts = count_configurations(field, thresholds, options.boundary);
-  std::vector<Functionals2D> out;
-  for (std::size_t k = 0; k < thresholds.size(); ++k)
-    out.push_back(functionals_2d(counts, k, field, options.connectivity2d));
-  return out;
+  return for_all_thresholds(field, thresholds, options.boundary, 2, [&](const auto& counts, auto k) {
+    return functionals_2d(counts, k, field, options.connectivity2d);
+  });
 }
 
 std::vector<Functionals3D> minkowski_3d(const GridField& field, std::span<const double> thresholds,
                                         const MinkowskiOptions& options) {
-  require_dimension(field, 3);
-  isotropic_spacing(field);
-  const ConfigurationCounts counts = count_configurations(field, thresholds, options.boundary);
-  std::vector<Functionals3D> out;
-  for (std::size_t k = 0; k < thresholds.size(); ++k)
-    out.push_back(functionals_3d(counts, k, field, options.adjacency3d));
-  return out;
+  return for_all_thresholds(field, thresholds, options.boundary, 3, [&](const auto& counts, auto k) {
+    return functionals_3d(counts, k, field, options.adjacency3d);
+  });
 }
 
 std::vector<double> linear_thresholds(const GridField& field, std::size_t count) {
