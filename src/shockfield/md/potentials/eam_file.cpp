@@ -1,0 +1,182 @@
+#include "shockfield/md/potentials/eam_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <sstream>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::md::potentials {
+namespace {
+
+// The smallest table length the 4-point interpolation and the spline accept without reading
+// outside the table (pair_eam.cpp file2array() uses entries k-1..k+2 with 2 <= k <= n-2).
+constexpr int kMinTableLength = 5;
+
+std::vector<std::string> split(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+// Line records of a potential file with LAMMPS TextFileReader semantics (see the header).
+class Records {
+ public:
+  explicit Records(const std::filesystem::path& file) : name_(file.string()), in_(file) {
+    if (!in_) throw InputError(fmt::format("{}: cannot open EAM potential file", name_));
+  }
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw InputError(fmt::format("{}:{}: {}", name_, line_number_, message));
+  }
+
+  // A comment or title line (read whole, '#' included).
+  void skip_line(const std::string& what) {
+    std::string line;
+    if (!std::getline(in_, line)) fail(fmt::format("unexpected end of file, expected {}", what));
+    ++line_number_;
+  }
+
+  // Reads lines (comments stripped) until at least n words are collected; returns all of them.
+  std::vector<std::string> words(std::size_t n, const std::string& what) {
+    std::vector<std::string> out;
+    while (out.empty() || out.size() < n) {
+      std::string line;
+      if (!next_data_line(line)) fail(fmt::format("unexpected end of file, expected {}", what));
+      for (auto& w : split(line)) out.push_back(std::move(w));
+    }
+    return out;
+  }
+
+  // Reads n numbers that may span lines; the rest of the last line is dropped.
+  std::vector<double> doubles(std::size_t n, const std::string& what) {
+    std::vector<double> out;
+    out.reserve(n);
+    while (out.size() < n) {
+      std::string line;
+      if (!next_data_line(line))
+        fail(fmt::format("unexpected end of file after {} of the {} values of {}", out.size(), n,
+                         what));
+      for (const auto& w : split(line)) {
+        if (out.size() == n) break;
+        out.push_back(to_double(w, what));
+      }
+    }
+    return out;
+  }
+
+  // A number; Fortran "D" exponents are read as "E" (see the header).
+  double to_double(std::string word, const std::string& what) const {
+    std::replace(word.begin(), word.end(), 'D', 'E');
+    std::replace(word.begin(), word.end(), 'd', 'e');
+    const char* first = word.data();
+    if (*first == '+') ++first;
+    double value = 0;
+    const auto [end, ec] = std::from_chars(first, word.data() + word.size(), value);
+    if (ec != std::errc() || end != word.data() + word.size())
+      fail(fmt::format("expected a number in {}, found '{}'", what, word));
+    return value;
+  }
+
+  int to_int(const std::string& word, const std::string& what) const {
+    int value = 0;
+    const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (ec != std::errc() || end != word.data() + word.size())
+      fail(fmt::format("expected an integer {}, found '{}'", what, word));
+    return value;
+  }
+
+ private:
+  bool next_data_line(std::string& line) {
+    if (!std::getline(in_, line)) return false;
+    ++line_number_;
+    if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    return true;
+  }
+
+  std::string name_;
+  std::ifstream in_;
+  int line_number_ = 0;
+};
+
+EamGrid read_grid(Records& in) {
+  const std::string what = "the grid line 'Nrho drho Nr dr cutoff'";
+  const auto w = in.words(5, what);
+  EamGrid g;
+  g.nrho = in.to_int(w[0], "Nrho");
+  g.drho = in.to_double(w[1], "drho");
+  g.nr = in.to_int(w[2], "Nr");
+  g.dr = in.to_double(w[3], "dr");
+  g.cut = in.to_double(w[4], "cutoff");
+  if (g.nrho < kMinTableLength || g.nr < kMinTableLength)
+    in.fail(fmt::format("expected Nrho and Nr >= {}, found Nrho = {}, Nr = {}", kMinTableLength,
+                        g.nrho, g.nr));
+  if (!(g.drho > 0) || !(g.dr > 0) || !(g.cut > 0))
+    in.fail(fmt::format("expected drho, dr and cutoff > 0, found {}, {}, {}", g.drho, g.dr, g.cut));
+  return g;
+}
+
+double read_mass(Records& in, const std::string& what) {
+  const auto w = in.words(2, fmt::format("the line 'Z mass ...' of {}", what));
+  in.to_int(w[0], fmt::format("atomic number Z of {}", what));
+  const double mass = in.to_double(w[1], fmt::format("the mass of {}", what));
+  if (!(mass > 0)) in.fail(fmt::format("expected a positive mass for {}, found {}", what, mass));
+  return mass;
+}
+
+}  // namespace
+
+int SetflFile::element_index(const std::string& name) const {
+  const auto it = std::find(elements.begin(), elements.end(), name);
+  return it == elements.end() ? -1 : static_cast<int>(it - elements.begin());
+}
+
+FuncflFile read_funcfl(const std::filesystem::path& file) {
+  Records in(file);
+  FuncflFile f;
+  f.path = file.string();
+  in.skip_line("a comment line");
+  f.mass = read_mass(in, "the element");
+  f.grid = read_grid(in);
+  f.frho = in.doubles(static_cast<std::size_t>(f.grid.nrho), "F(rho)");
+  f.zr = in.doubles(static_cast<std::size_t>(f.grid.nr), "Z(r)");
+  f.rhor = in.doubles(static_cast<std::size_t>(f.grid.nr), "rho(r)");
+  return f;
+}
+
+SetflFile read_setfl(const std::filesystem::path& file, bool finnis_sinclair) {
+  Records in(file);
+  SetflFile s;
+  s.path = file.string();
+  s.finnis_sinclair = finnis_sinclair;
+  for (int k = 0; k < 3; ++k) in.skip_line("three comment lines");
+  const auto w = in.words(1, "the element line 'N element_1 ... element_N'");
+  const int n = in.to_int(w[0], "number of elements N");
+  if (n < 1 || static_cast<std::size_t>(n) + 1 != w.size())
+    in.fail(fmt::format("expected 'N' followed by N element names, found N = {} and {} names",
+                        w[0], w.size() - 1));
+  s.elements.assign(w.begin() + 1, w.end());
+  s.grid = read_grid(in);
+  const auto nrho = static_cast<std::size_t>(s.grid.nrho), nr = static_cast<std::size_t>(s.grid.nr);
+  for (int i = 0; i < n; ++i) {
+    const std::string& el = s.elements[static_cast<std::size_t>(i)];
+    s.mass.push_back(read_mass(in, "element " + el));
+    s.frho.push_back(in.doubles(nrho, "F(rho) of " + el));
+    if (finnis_sinclair) {
+      for (int j = 0; j < n; ++j)
+        s.rhor.push_back(in.doubles(nr, fmt::format("rho_{},{}(r)", el, s.elements[j])));
+    } else {
+      s.rhor.push_back(in.doubles(nr, "rho(r) of " + el));
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j <= i; ++j)
+      s.z2r.push_back(in.doubles(nr, fmt::format("r*phi(r) of {}-{}", s.elements[i], s.elements[j])));
+  return s;
+}
+
+}  // namespace shockfield::md::potentials

@@ -1,0 +1,179 @@
+#pragma once
+// The threaded loops over a half neighbour list that every potential here shares (LAMMPS newton
+// on: each pair once, both atoms updated, ghosts included). Threads take contiguous ranges of
+// owned atoms holding about equal numbers of pairs; thread 0 adds into the caller's arrays, every
+// other thread into a private zeroed copy, and the copies are added in thread order afterwards.
+// No atomics, no races, and for a given thread count the result is reproducible; different
+// thread counts differ only by the order of the sums (round-off).
+#include <omp.h>
+
+#include <algorithm>
+#include <concepts>
+#include <type_traits>
+#include <vector>
+
+#include "shockfield/core/types.hpp"
+#include "shockfield/geometry/neighbor_list.hpp"
+#include "shockfield/md/atoms.hpp"
+#include "shockfield/md/potential.hpp"
+
+namespace shockfield::md::potentials {
+
+/// A pair force model: for atoms i, j at squared distance rsq, returns false when the pair is
+/// beyond its cutoff; otherwise sets fpair (force on i = (x_i - x_j) * fpair) and the pair energy.
+template <class K>
+concept PairForceKernel = requires(const K& k, int i, int j, double rsq, double& fpair,
+                                   double& energy) {
+  { k(i, j, rsq, fpair, energy) } -> std::same_as<bool>;
+};
+
+/// A pair density model (EAM): returns false beyond the cutoff, else what atom i receives from
+/// j (to_i) and j from i (to_j).
+template <class K>
+concept PairScalarKernel = requires(const K& k, int i, int j, double rsq, double& to_i,
+                                    double& to_j) {
+  { k(i, j, rsq, to_i, to_j) } -> std::same_as<bool>;
+};
+
+/// Per-thread private copies of per-atom arrays, kept between calls to avoid reallocation.
+struct ThreadScratch {
+  std::vector<std::vector<Vec3>> force;
+  std::vector<std::vector<double>> scalar;
+  std::vector<std::vector<Voigt6>> virial;
+};
+
+namespace detail {
+
+/// First owned atom of each thread's range (size nthreads + 1), balancing pair counts.
+inline std::vector<std::size_t> thread_ranges(const geometry::NeighborList& list, int nthreads) {
+  const std::size_t n = list.nlocal();
+  std::vector<std::size_t> begin(static_cast<std::size_t>(nthreads) + 1, n);
+  begin[0] = 0;
+  const auto total = n == 0 ? 0 : list.offset[n];
+  for (int t = 1; t < nthreads; ++t) {
+    const auto target = total * t / nthreads;
+    const auto it = std::lower_bound(list.offset.begin(), list.offset.end() - 1, target);
+    begin[static_cast<std::size_t>(t)] = static_cast<std::size_t>(it - list.offset.begin());
+  }
+  return begin;
+}
+
+/// Thread t's accumulation array: the target itself for thread 0, else a zeroed private copy.
+template <class T>
+std::vector<T>& private_copy(std::vector<std::vector<T>>& copies, std::vector<T>& target, int t,
+                             const std::type_identity_t<T>& zero) {
+  if (t == 0) return target;
+  auto& mine = copies[static_cast<std::size_t>(t)];
+  mine.assign(target.size(), zero);
+  return mine;
+}
+
+/// Adds the copies of threads 1.. into the target in thread order (call inside the parallel
+/// region after a barrier; the atoms are shared out among the threads).
+template <class T>
+void reduce_copies(const std::vector<std::vector<T>>& copies, std::vector<T>& target, int nthreads) {
+#pragma omp for schedule(static)
+  for (std::size_t a = 0; a < target.size(); ++a)
+    for (int t = 1; t < nthreads; ++t) target[a] += copies[static_cast<std::size_t>(t)][a];
+}
+
+}  // namespace detail
+
+/// Adds the forces of `kernel` over the half list to atoms.f (owned and ghost entries), the pair
+/// energy and virial Σ r_ij ⊗ f_ij to `out`, and with `out.per_atom` half of each pair's energy
+/// and virial to each atom (LAMMPS ev_tally with newton on).
+template <PairForceKernel K>
+void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, const K& kernel,
+                            ForceResult& out, ThreadScratch& scratch) {
+  const int nthreads = omp_get_max_threads();
+  const auto range = detail::thread_ranges(list, nthreads);
+  scratch.force.resize(static_cast<std::size_t>(nthreads));
+  scratch.scalar.resize(static_cast<std::size_t>(nthreads));
+  scratch.virial.resize(static_cast<std::size_t>(nthreads));
+  std::vector<double> energy(static_cast<std::size_t>(nthreads), 0.0);
+  std::vector<Voigt6> virial(static_cast<std::size_t>(nthreads), Voigt6::Zero());
+  const bool per_atom = out.per_atom;
+  const Vec3* x = atoms.x.data();
+#pragma omp parallel num_threads(nthreads)
+  {
+    const int t = omp_get_thread_num();
+    Vec3* f = detail::private_copy(scratch.force, atoms.f, t, Vec3::Zero()).data();
+    double* eatom = nullptr;
+    Voigt6* vatom = nullptr;
+    if (per_atom) {
+      eatom = detail::private_copy(scratch.scalar, out.energy_atom, t, 0.0).data();
+      vatom = detail::private_copy(scratch.virial, out.virial_atom, t, Voigt6::Zero()).data();
+    }
+    double e = 0, vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0;
+    for (std::size_t i = range[t]; i < range[t + 1]; ++i) {
+      const Vec3 xi = x[i];
+      Vec3 fi = Vec3::Zero();
+      for (auto k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+        const int j = list.neighbors[static_cast<std::size_t>(k)];
+        const Vec3 d = xi - x[j];
+        const double rsq = d.squaredNorm();
+        double fpair, epair;
+        if (!kernel(static_cast<int>(i), j, rsq, fpair, epair)) continue;
+        const Vec3 fij = d * fpair;
+        fi += fij;
+        f[j] -= fij;
+        e += epair;
+        const double vx = d.x() * fij.x(), vy = d.y() * fij.y(), vz = d.z() * fij.z();
+        const double vxy_ = d.x() * fij.y(), vxz_ = d.x() * fij.z(), vyz_ = d.y() * fij.z();
+        vxx += vx; vyy += vy; vzz += vz; vxy += vxy_; vxz += vxz_; vyz += vyz_;
+        if (per_atom) {
+          Voigt6 half;
+          half << 0.5 * vx, 0.5 * vy, 0.5 * vz, 0.5 * vxy_, 0.5 * vxz_, 0.5 * vyz_;
+          eatom[i] += 0.5 * epair;
+          eatom[j] += 0.5 * epair;
+          vatom[i] += half;
+          vatom[j] += half;
+        }
+      }
+      f[i] += fi;
+    }
+    energy[static_cast<std::size_t>(t)] = e;
+    virial[static_cast<std::size_t>(t)] << vxx, vyy, vzz, vxy, vxz, vyz;
+#pragma omp barrier
+    detail::reduce_copies(scratch.force, atoms.f, nthreads);
+    if (per_atom) {
+      detail::reduce_copies(scratch.scalar, out.energy_atom, nthreads);
+      detail::reduce_copies(scratch.virial, out.virial_atom, nthreads);
+    }
+  }
+  for (int t = 0; t < nthreads; ++t) {
+    out.energy += energy[static_cast<std::size_t>(t)];
+    out.virial += virial[static_cast<std::size_t>(t)];
+  }
+}
+
+/// Adds to_i and to_j of `kernel` over the half list into `values` (owned and ghost entries).
+template <PairScalarKernel K>
+void accumulate_pair_scalars(const Atoms& atoms, const geometry::NeighborList& list,
+                             const K& kernel, std::vector<double>& values, ThreadScratch& scratch) {
+  const int nthreads = omp_get_max_threads();
+  const auto range = detail::thread_ranges(list, nthreads);
+  scratch.scalar.resize(static_cast<std::size_t>(nthreads));
+  const Vec3* x = atoms.x.data();
+#pragma omp parallel num_threads(nthreads)
+  {
+    const int t = omp_get_thread_num();
+    double* v = detail::private_copy(scratch.scalar, values, t, 0.0).data();
+    for (std::size_t i = range[t]; i < range[t + 1]; ++i) {
+      const Vec3 xi = x[i];
+      double vi = 0;
+      for (auto k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+        const int j = list.neighbors[static_cast<std::size_t>(k)];
+        double to_i, to_j;
+        if (!kernel(static_cast<int>(i), j, (xi - x[j]).squaredNorm(), to_i, to_j)) continue;
+        vi += to_i;
+        v[j] += to_j;
+      }
+      v[i] += vi;
+    }
+#pragma omp barrier
+    detail::reduce_copies(scratch.scalar, values, nthreads);
+  }
+}
+
+}  // namespace shockfield::md::potentials

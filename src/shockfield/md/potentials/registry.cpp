@@ -1,0 +1,138 @@
+#include "shockfield/md/potentials/registry.hpp"
+
+#include <fmt/format.h>
+
+#include <functional>
+#include <utility>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/md/potentials/eam.hpp"
+#include "shockfield/md/potentials/eam_file.hpp"
+#include "shockfield/md/potentials/eam_tables.hpp"
+#include "shockfield/md/potentials/lj_cut.hpp"
+
+namespace shockfield::md::potentials {
+namespace {
+
+using Factory = std::function<std::unique_ptr<Potential>(const Config&, const std::filesystem::path&, int)>;
+
+// Reads a potential file, turning a reader's InputError into one that also names the case key.
+template <class Read>
+auto read_for_key(const Config& table, std::string_view key, Read&& read) {
+  try {
+    return read();
+  } catch (const InputError& e) {
+    table.fail(key, fmt::format("cannot use the potential file: {}", e.what()));
+  }
+}
+
+std::unique_ptr<Potential> make_funcfl(const Config& table, const std::filesystem::path& case_dir,
+                                       int ntypes) {
+  const auto path = find_potential_file(table, "file", table.get_string("file"), case_dir);
+  std::vector<FuncflFile> files{read_for_key(table, "file", [&] { return read_funcfl(path); })};
+  // pair_coeff * * file: every type uses the one file.
+  auto tables = tabulate_funcfl(files, std::vector<int>(static_cast<std::size_t>(ntypes), 0));
+  return std::make_unique<EamPotential>("eam", std::move(tables),
+                                        std::vector<std::string>(static_cast<std::size_t>(ntypes)));
+}
+
+std::unique_ptr<Potential> make_setfl(const Config& table, const std::filesystem::path& case_dir,
+                                      int ntypes, bool finnis_sinclair) {
+  const auto path = find_potential_file(table, "file", table.get_string("file"), case_dir);
+  const auto file = read_for_key(table, "file", [&] { return read_setfl(path, finnis_sinclair); });
+  const auto elements = table.get_strings("elements");
+  const std::string available = fmt::format("{}", fmt::join(file.elements, " "));
+  if (static_cast<int>(elements.size()) != ntypes)
+    table.fail("elements", fmt::format("expected one element per atom type ({} names, one of: {}), "
+                                       "found {}", ntypes, available, elements.size()));
+  std::vector<int> type_element;
+  for (const auto& name : elements) {
+    const int e = file.element_index(name);
+    if (e < 0)
+      table.fail("elements", fmt::format("element '{}' is not in {} (it has: {})", name,
+                                         path.string(), available));
+    type_element.push_back(e);
+  }
+  return std::make_unique<EamPotential>(finnis_sinclair ? "eam/fs" : "eam/alloy",
+                                        tabulate_setfl(file, type_element), elements);
+}
+
+std::unique_ptr<Potential> make_lj_cut(const Config& table, const std::filesystem::path&, int ntypes) {
+  const double cutoff = table.get_double("cutoff", Range::positive());
+  const bool shift = table.get_bool_or("shift", false);
+  const auto n = static_cast<std::size_t>(ntypes);
+  std::vector<std::optional<LjCoeff>> set(n * n);
+  if (table.has("epsilon") || table.has("sigma")) {
+    const LjCoeff all{table.get_double("epsilon", Range::non_negative()),
+                      table.get_double("sigma", Range::positive()), cutoff};
+    std::fill(set.begin(), set.end(), all);
+  }
+  for (const auto& pair : table.tables("pair")) {
+    const auto types = pair.get_ints("types", 2, Range::closed(1, ntypes));
+    const LjCoeff c{pair.get_double("epsilon", Range::non_negative()),
+                    pair.get_double("sigma", Range::positive()),
+                    pair.get_double_or("cutoff", cutoff, Range::positive())};
+    const auto i = static_cast<std::size_t>(types[0] - 1), j = static_cast<std::size_t>(types[1] - 1);
+    set[i * n + j] = set[j * n + i] = c;
+  }
+  try {
+    return std::make_unique<LjCutPotential>(ntypes, mix_lj(ntypes, set), shift);
+  } catch (const InputError& e) {
+    table.fail("pair", e.what());
+  }
+}
+
+// The explicit style table.
+const std::vector<std::pair<std::string, Factory>>& factories() {
+  static const std::vector<std::pair<std::string, Factory>> table{
+      {"lj/cut", make_lj_cut},
+      {"eam", make_funcfl},
+      {"eam/alloy", [](const Config& c, const std::filesystem::path& d, int n) { return make_setfl(c, d, n, false); }},
+      {"eam/fs", [](const Config& c, const std::filesystem::path& d, int n) { return make_setfl(c, d, n, true); }},
+  };
+  return table;
+}
+
+}  // namespace
+
+std::vector<std::string> potential_styles() {
+  std::vector<std::string> names;
+  for (const auto& [name, factory] : factories()) names.push_back(name);
+  return names;
+}
+
+std::unique_ptr<Potential> make_potential(const Config& table, const std::filesystem::path& case_dir,
+                                          int ntypes) {
+  if (ntypes < 1) throw InputError(fmt::format("{}: [{}] needs at least one atom type, found {}",
+                                               table.file(), table.path(), ntypes));
+  const std::string style = table.get_choice("style", potential_styles());
+  for (const auto& [name, factory] : factories())
+    if (name == style) return factory(table, case_dir, ntypes);
+  table.fail("style", "a known style");  // unreachable: get_choice checked the name
+}
+
+std::optional<double> potential_type_mass(const Potential& potential, int t) {
+  if (const auto* eam = dynamic_cast<const EamPotential*>(&potential)) return eam->type_mass(t);
+  return std::nullopt;
+}
+
+std::filesystem::path find_potential_file(const Config& table, std::string_view key,
+                                          const std::string& name,
+                                          const std::filesystem::path& case_dir) {
+  const std::filesystem::path given(name);
+  std::vector<std::filesystem::path> tried;
+  if (given.is_absolute()) {
+    tried.push_back(given);
+  } else {
+    tried.push_back(case_dir / given);
+    tried.push_back(lammps_potential_dir / given);
+  }
+  for (const auto& p : tried)
+    if (std::filesystem::is_regular_file(p)) return p;
+  std::vector<std::string> shown;
+  for (const auto& p : tried) shown.push_back(p.string());
+  table.fail(key, fmt::format("potential file '{}' not found; looked in: {}", name,
+                              fmt::join(shown, ", ")));
+}
+
+}  // namespace shockfield::md::potentials

@@ -1,0 +1,57 @@
+#pragma once
+// Potentials by name, from the [potential] table of a case file:
+//
+//   [potential]                       # EAM: one LAMMPS potential file
+//   style = "eam/alloy"               # "eam" (funcfl), "eam/alloy" (setfl), "eam/fs", "lj/cut"
+//   file = "CuNi.eam.alloy"           # relative to the case file's folder, then
+//                                     # /usr/share/lammps/potentials
+//   elements = ["Cu", "Ni"]           # eam/alloy, eam/fs: element of atom types 1..n
+//                                     # (LAMMPS `pair_coeff * * CuNi.eam.alloy Cu Ni`)
+//
+//   [potential]                       # Lennard-Jones
+//   style = "lj/cut"
+//   cutoff = 8.5                      # Å, global (pair_style lj/cut 8.5)
+//   epsilon = 0.0104                  # eV, all pairs (pair_coeff * * ε σ); optional when every
+//   sigma = 3.4                       # Å   like pair is given below
+//   shift = true                      # pair_modify shift yes (default false)
+//   [[potential.pair]]                # per type pair (pair_coeff i j ε σ [cutoff]);
+//   types = [1, 2]                    # unset unlike pairs mix geometrically
+//   epsilon = 0.02
+//   sigma = 3.0
+//   cutoff = 7.0                      # optional, default the global cutoff
+//
+// Every value is read through Config, so a mistake names the case file, the key and its line.
+// The MD driver calls
+//   auto potential = make_potential(root.table("potential"), case_file.parent_path(), ntypes);
+// The styles are listed explicitly in registry.cpp (no static registration).
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "shockfield/core/config.hpp"
+#include "shockfield/md/potential.hpp"
+
+namespace shockfield::md::potentials {
+
+/// The folder searched for potential files after the case file's folder (Debian `lammps`).
+inline const std::filesystem::path lammps_potential_dir = "/usr/share/lammps/potentials";
+
+/// Builds the potential described by `table` for atoms of `ntypes` types (1..ntypes in files).
+std::unique_ptr<Potential> make_potential(const Config& table, const std::filesystem::path& case_dir,
+                                          int ntypes);
+
+/// The style names make_potential() accepts.
+std::vector<std::string> potential_styles();
+
+/// The mass the potential file gives atom type t (0-based), if the potential has masses (EAM).
+std::optional<double> potential_type_mass(const Potential& potential, int t);
+
+/// `name` if absolute, else case_dir/name, else lammps_potential_dir/name; fails on `key` of
+/// `table` listing the places it looked when none exists.
+std::filesystem::path find_potential_file(const Config& table, std::string_view key,
+                                          const std::string& name,
+                                          const std::filesystem::path& case_dir);
+
+}  // namespace shockfield::md::potentials
