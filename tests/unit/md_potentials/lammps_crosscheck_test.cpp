@@ -5,12 +5,14 @@
 // is about 5e-13; the sums differ from LAMMPS's only in order).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
 
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/lammps_dump.hpp"
+#include "shockfield/md/potentials/eam.hpp"
 #include "unit/md_potentials/potential_test_support.hpp"
 
 namespace shockfield::md::potentials::testing {
@@ -101,9 +103,21 @@ TEST_P(LammpsCrossCheck, EnergyForcesAndVirialMatchLammps) {
   EXPECT_LT(dvt, kTolerance);
 }
 
+// The compressed fixture must reach beyond the F(rho) table, so that LAMMPS's linear extension
+// of the embedding energy (rho > rhomax) is part of the comparison above.
+TEST(LammpsCrossCheckCoverage, CompressedCopperExceedsTheDensityTable) {
+  const System system = load_dump_system("fixtures/lammps/cu_u3_compressed.dump");
+  auto potential = potential_from_toml(kCuU3, 1);
+  evaluate(system, *potential);
+  const auto& eam = dynamic_cast<const EamPotential&>(*potential);
+  const double rho_max = *std::max_element(eam.density().begin(), eam.density().end());
+  EXPECT_GT(rho_max, eam.tables().rhomax);
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, LammpsCrossCheck,
     ::testing::Values(Case{"cu_u3_thermal", kCuU3}, Case{"cu_u3_void", kCuU3},
+                      Case{"cu_u3_compressed", kCuU3},
                       Case{"al_zhou_thermal", kAlZhou}, Case{"al_zhou_void", kAlZhou},
                       Case{"fe_mm_thermal", kFeMm}, Case{"fe_mm_void", kFeMm},
                       Case{"cuni_thermal", kCuNi}, Case{"cuni_void", kCuNi},

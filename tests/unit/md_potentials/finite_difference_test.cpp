@@ -1,0 +1,60 @@
+// Forces are −dE/dx: central differences of the total energy, per potential, on a thermally
+// perturbed lattice. Tolerance 1e-6 eV/Å: with h = 1e-5 Å the truncation error of the C¹ splines
+// (second derivative jumps at the knots) is O(h·|Δf''|) ~ 1e-7 and round-off ~ 1e-16·|E|/h ~ 1e-8.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "unit/md_potentials/potential_test_support.hpp"
+
+namespace shockfield::md::potentials::testing {
+namespace {
+
+struct FdCase {
+  std::string fixture;
+  std::string toml;
+};
+
+class FiniteDifference : public ::testing::TestWithParam<FdCase> {};
+
+TEST_P(FiniteDifference, ForcesAreMinusTheEnergyGradient) {
+  const auto& c = GetParam();
+  const System system = load_dump_system("fixtures/lammps/" + c.fixture + ".dump");
+  auto potential = potential_from_toml(c.toml, system.atoms.ntypes());
+  const Evaluation base = evaluate(system, *potential, false);
+  constexpr double h = 1e-5;
+  double worst = 0;
+  for (std::size_t i : {0ul, 7ul, 42ul, 101ul, system.atoms.nlocal - 1}) {
+    for (int d = 0; d < 3; ++d) {
+      System plus = system, minus = system;
+      plus.atoms.x[i][d] += h;
+      minus.atoms.x[i][d] -= h;
+      const double ep = evaluate(plus, *potential, false).result.energy;
+      const double em = evaluate(minus, *potential, false).result.energy;
+      const double fd = -(ep - em) / (2 * h);
+      worst = std::max(worst, std::abs(fd - base.force[i][d]));
+      EXPECT_NEAR(fd, base.force[i][d], 1e-6) << c.fixture << " atom " << i << " dim " << d;
+    }
+  }
+  std::printf("%-16s max |F_fd - F| = %.1e eV/A\n", c.fixture.c_str(), worst);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Potentials, FiniteDifference,
+    ::testing::Values(
+        FdCase{"cu_u3_thermal", "[potential]\nstyle = \"eam\"\nfile = \"Cu_u3.eam\"\n"},
+        FdCase{"al_zhou_thermal",
+               "[potential]\nstyle = \"eam/alloy\"\nfile = \"Al_zhou.eam.alloy\"\nelements = [\"Al\"]\n"},
+        FdCase{"fe_mm_thermal",
+               "[potential]\nstyle = \"eam/fs\"\nfile = \"Fe_mm.eam.fs\"\nelements = [\"Fe\"]\n"},
+        FdCase{"cuni_thermal", "[potential]\nstyle = \"eam/alloy\"\nfile = \"CuNi.eam.alloy\"\n"
+                               "elements = [\"Cu\", \"Ni\"]\n"},
+        FdCase{"alfe_mm_thermal", "[potential]\nstyle = \"eam/fs\"\nfile = \"AlFe_mm.eam.fs\"\n"
+                                  "elements = [\"Fe\", \"Al\"]\n"},
+        FdCase{"lj_thermal", "[potential]\nstyle = \"lj/cut\"\ncutoff = 8.5\nshift = true\n"
+                             "epsilon = 0.0104\nsigma = 3.4\n[[potential.pair]]\ntypes = [2, 2]\n"
+                             "epsilon = 0.008\nsigma = 3.0\ncutoff = 7.0\n"}),
+    [](const auto& info) { return info.param.fixture; });
+
+}  // namespace
+}  // namespace shockfield::md::potentials::testing
