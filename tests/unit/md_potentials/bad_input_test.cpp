@@ -1,0 +1,176 @@
+// Bad potential input: truncated and malformed files, Fortran D exponents, element and type
+// mismatches, missing files, bad [potential] keys. Each must be an InputError whose message
+// names the file (and line or key) and what was expected.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/md/potentials/eam_file.hpp"
+#include "shockfield/md/potentials/eam_tables.hpp"
+#include "unit/md_potentials/potential_test_support.hpp"
+
+namespace shockfield::md::potentials::testing {
+namespace {
+
+const std::filesystem::path kPotentials = "/usr/share/lammps/potentials";
+
+class BadInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("shockfield_potentials_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  // Writes the first `lines` lines of `source` (all when negative) with `replace` applied.
+  std::filesystem::path write(const std::string& name, const std::filesystem::path& source,
+                              int lines, const std::string& from = "", const std::string& to = "") {
+    std::ifstream in(source);
+    std::ofstream out(dir_ / name);
+    std::string line;
+    for (int k = 0; (lines < 0 || k < lines) && std::getline(in, line); ++k) {
+      if (!from.empty())
+        if (const auto at = line.find(from); at != std::string::npos) line.replace(at, from.size(), to);
+      out << line << '\n';
+    }
+    return dir_ / name;
+  }
+
+  std::filesystem::path dir_;
+};
+
+// Runs `f`, expecting an InputError whose message contains every fragment.
+template <class F>
+void expect_input_error(F&& f, const std::vector<std::string>& fragments) {
+  try {
+    f();
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    for (const auto& s : fragments)
+      EXPECT_NE(std::string(e.what()).find(s), std::string::npos) << "'" << s << "' not in: " << e.what();
+  }
+}
+
+TEST_F(BadInput, TruncatedFuncflNamesFileLineAndTable) {
+  const auto file = write("cut.eam", kPotentials / "Cu_u3.eam", 150);
+  expect_input_error([&] { read_funcfl(file); },
+                     {"cut.eam:150:", "unexpected end of file", "of the 500 values of Z(r)"});
+}
+
+TEST_F(BadInput, TruncatedSetflHeader) {
+  const auto file = write("cut.eam.alloy", kPotentials / "CuNi.eam.alloy", 4);
+  expect_input_error([&] { read_setfl(file, false); },
+                     {"cut.eam.alloy:4:", "expected the grid line"});
+}
+
+TEST_F(BadInput, TruncatedFinnisSinclairPairTable) {
+  // Fe_mm.eam.fs: 5 header lines, 1 element line, then 2000 lines each for F, rho, r*phi.
+  const auto file = write("cut.eam.fs", kPotentials / "Fe_mm.eam.fs", 5000);
+  expect_input_error([&] { read_setfl(file, true); }, {"cut.eam.fs:5000:", "r*phi(r) of Fe-Fe"});
+}
+
+TEST_F(BadInput, ElementLineMustMatchItsCount) {
+  const auto file = write("count.eam.alloy", kPotentials / "CuNi.eam.alloy", -1, "2  Ni  Cu", "3  Ni  Cu");
+  expect_input_error([&] { read_setfl(file, false); },
+                     {"count.eam.alloy:4:", "N = 3 and 2 names"});
+}
+
+TEST_F(BadInput, NonNumericValue) {
+  const auto file = write("word.eam", kPotentials / "Cu_u3.eam", -1,
+                          "-3.1561636903424350e-01", "-3.15616369O3424350e-01");
+  expect_input_error([&] { read_funcfl(file); }, {"word.eam:4:", "expected a number in F(rho)"});
+}
+
+TEST_F(BadInput, GridMustBeUsable) {
+  const auto file = write("grid.eam", kPotentials / "Cu_u3.eam", -1, "  500  5.01", "  3  5.01");
+  expect_input_error([&] { read_funcfl(file); }, {"grid.eam:3:", "Nrho and Nr >= 5"});
+}
+
+TEST_F(BadInput, FortranDExponentsAreReadAsE) {
+  // The same funcfl file with every exponent written as D (upper and lower case) reads the same.
+  std::ifstream in(kPotentials / "Cu_u3.eam");
+  std::ofstream out(dir_ / "fortran.eam");
+  std::string line;
+  for (int k = 0; std::getline(in, line); ++k) {
+    if (k >= 2)
+      for (auto& ch : line)
+        if (ch == 'e') ch = (k % 2) ? 'D' : 'd';
+    out << line << '\n';
+  }
+  out.close();
+  const auto a = read_funcfl(kPotentials / "Cu_u3.eam");
+  const auto b = read_funcfl(dir_ / "fortran.eam");
+  EXPECT_EQ(a.grid.drho, b.grid.drho);
+  EXPECT_EQ(a.frho, b.frho);
+  EXPECT_EQ(a.zr, b.zr);
+  EXPECT_EQ(a.rhor, b.rhor);
+}
+
+TEST_F(BadInput, MissingFileListsWhereItLooked) {
+  expect_input_error(
+      [] { potential_from_toml("[potential]\nstyle = \"eam\"\nfile = \"nope.eam\"\n", 1); },
+      {"test.toml:3", "potential.file", "'nope.eam' not found", "/usr/share/lammps/potentials/nope.eam",
+       std::filesystem::current_path().string()});
+}
+
+TEST_F(BadInput, ElementNotInFile) {
+  expect_input_error(
+      [] {
+        potential_from_toml("[potential]\nstyle = \"eam/alloy\"\nfile = \"CuNi.eam.alloy\"\n"
+                            "elements = [\"Cu\", \"Fe\"]\n", 2);
+      },
+      {"test.toml:4", "potential.elements", "'Fe' is not in", "CuNi.eam.alloy", "Ni Cu"});
+}
+
+TEST_F(BadInput, ElementCountMustMatchTypes) {
+  expect_input_error(
+      [] {
+        potential_from_toml("[potential]\nstyle = \"eam/fs\"\nfile = \"Fe_mm.eam.fs\"\n"
+                            "elements = [\"Fe\"]\n", 2);
+      },
+      {"test.toml:4", "one element per atom type (2 names", "found 1"});
+}
+
+TEST_F(BadInput, AtomsWithOtherTypesOrNamesAreRejected) {
+  auto potential = potential_from_toml(
+      "[potential]\nstyle = \"eam/alloy\"\nfile = \"CuNi.eam.alloy\"\nelements = [\"Cu\", \"Ni\"]\n", 2);
+  Atoms atoms;
+  atoms.mass = {63.5};
+  expect_input_error([&] { potential->check_types(atoms); }, {"maps 2 atom types, the atoms have 1"});
+  atoms.mass = {63.5, 58.7};
+  atoms.type_names = {"Ni", "Cu"};
+  expect_input_error([&] { potential->check_types(atoms); }, {"type 1 is Ni", "maps it to Cu"});
+}
+
+TEST_F(BadInput, UnknownStyleAndUnmixableLj) {
+  expect_input_error([] { potential_from_toml("[potential]\nstyle = \"tersoff\"\n", 1); },
+                     {"test.toml:2", "potential.style"});
+  expect_input_error(
+      [] {
+        potential_from_toml("[potential]\nstyle = \"lj/cut\"\ncutoff = 5.0\n[[potential.pair]]\n"
+                            "types = [1, 1]\nepsilon = 0.01\nsigma = 3.0\n", 2);
+      },
+      {"potential.pair", "type pair 1 2", "none for type 2"});
+}
+
+TEST(Spline, ReproducesACubicInsideTheTable) {
+  // interpolate() is exact for polynomials its 5-point slopes differentiate exactly (cubics) on
+  // the inner intervals; check value and derivative at the middle of one interval.
+  std::vector<double> f;
+  const double delta = 0.1;
+  auto g = [](double x) { return 1.0 - 2.0 * x + 0.5 * x * x + 0.25 * x * x * x; };
+  for (int k = 0; k < 20; ++k) f.push_back(g(k * delta));
+  const auto s = spline_coefficients(f, delta);
+  const double x = 7.5 * delta, p = 0.5;
+  const auto& c = s[7];
+  EXPECT_NEAR(((c[3] * p + c[4]) * p + c[5]) * p + c[6], g(x), 1e-13);
+  EXPECT_NEAR((c[0] * p + c[1]) * p + c[2], -2.0 + x + 0.75 * x * x, 1e-12);
+}
+
+}  // namespace
+}  // namespace shockfield::md::potentials::testing
