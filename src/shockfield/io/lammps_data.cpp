@@ -110,7 +110,6 @@ class DataReader {
       if (!have_box[d]) missing(fmt::format("{0}lo {0}hi", axis_name[d]));
     out_.atoms.mass.assign(static_cast<std::size_t>(ntypes_), 0.0);
     out_.atoms.type_names.assign(static_cast<std::size_t>(ntypes_), "");
-    out_.mass_given.assign(static_cast<std::size_t>(ntypes_), false);
   }
 
   // The current line is a section keyword; reads its body. False when the file ends.
@@ -148,7 +147,6 @@ class DataReader {
     const double m = r_.to_double(words_[1], "a mass");
     if (!(m > 0)) r_.fail(fmt::format("expected a mass > 0, got {}", m));
     out_.atoms.mass[t] = m;
-    out_.mass_given[t] = true;
     const auto names = split_words(comment_);
     if (!names.empty()) out_.atoms.type_names[t] = std::string(names[0]);
   }

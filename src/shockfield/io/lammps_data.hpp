@@ -30,7 +30,6 @@ struct DataFile {
   /// type_names from a "# Cu" comment after the mass, else "".
   md::Atoms atoms;
   bool has_velocities = false;
-  std::vector<bool> mass_given;  ///< per type
 };
 
 /// Reads a data file; `boundary` plays the role of the LAMMPS `boundary` command before read_data.

@@ -30,13 +30,12 @@ Region region_from_config(const Config& t) {
   r.side_in = t.get_choice_or("side", {"in", "out"}, "in") == "in";
   if (shape == "block") {
     r.shape = Region::Shape::block;
-    const auto lo = t.get_doubles_or("lo", {-inf, -inf, -inf});
-    const auto hi = t.get_doubles_or("hi", {inf, inf, inf});
-    if (lo.size() != 3) t.fail("lo", "expected 3 numbers [x, y, z]");
-    if (hi.size() != 3) t.fail("hi", "expected 3 numbers [x, y, z]");
-    r.lo = Vec3(lo[0], lo[1], lo[2]);
-    r.hi = Vec3(hi[0], hi[1], hi[2]);
-    if (!(r.lo.array() < r.hi.array()).all()) t.fail("hi", "expected hi > lo in every dimension");
+    for (int d = 0; d < 3; ++d) {  // LAMMPS `region ID block xlo xhi ...`, an absent bound is INF
+      const std::string axis(1, "xyz"[d]);
+      r.lo[d] = t.get_double_or(axis + "lo", -inf);
+      r.hi[d] = t.get_double_or(axis + "hi", inf);
+      if (!(r.lo[d] < r.hi[d])) t.fail(axis + "hi", fmt::format("expected {0}hi > {0}lo", axis));
+    }
   } else if (shape == "sphere") {
     r.shape = Region::Shape::sphere;
     const auto c = t.get_doubles("center", 3);

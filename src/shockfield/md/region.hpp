@@ -35,7 +35,7 @@ struct Region {
 
 /// Reads a region from a case-file table:
 ///   shape = "block" | "sphere" | "cylinder", side = "in" (default) | "out"
-///   block:    lo = [x, y, z], hi = [x, y, z]   (each defaults to ±inf; TOML inf is allowed)
+///   block:    xlo, xhi, ylo, yhi, zlo, zhi   (each optional; an absent bound is open, INF)
 ///   sphere:   center = [x, y, z], radius
 ///   cylinder: axis = "x" | "y" | "z", center = [c1, c2] (the other two coordinates, in x, y, z
 ///             order), radius, lo / hi along the axis (default ±inf)

@@ -1,0 +1,167 @@
+#include "shockfield/md/system_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/geometry/neighbor_list.hpp"
+#include "shockfield/io/lammps_data.hpp"
+#include "shockfield/md/ghosts.hpp"
+#include "shockfield/md/lattice.hpp"
+
+namespace shockfield::md {
+namespace {
+
+std::array<geometry::Boundary, 3> read_boundary(const Config& t) {
+  const std::string codes = t.get_string_or("boundary", "ppp");
+  if (codes.size() != 3) t.fail("boundary", fmt::format("expected three letters from p, f, s (e.g. \"ppf\"), got \"{}\"", codes));
+  std::array<geometry::Boundary, 3> b{};
+  for (int d = 0; d < 3; ++d) {
+    try {
+      b[d] = geometry::parse_boundary(std::string(1, codes[d]), "boundary");
+    } catch (const InputError& e) {
+      t.fail("boundary", e.what());
+    }
+  }
+  return b;
+}
+
+// masses = [...] (amu) and elements = ["Cu", ...], one per atom type, both optional. A type with
+// no mass keeps 0 (the MD driver then takes it from the potential file, or stops). The data
+// file's Masses section and "# Cu" comments are the defaults; the case file overrides them.
+void read_types(const Config& t, std::size_t ntypes, Atoms& atoms) {
+  atoms.mass.resize(ntypes, 0.0);
+  atoms.type_names.resize(ntypes, "");
+  if (t.has("masses")) atoms.mass = t.get_doubles("masses", ntypes, Range::positive());
+  if (t.has("elements")) {
+    const auto names = t.get_strings("elements");
+    if (names.size() != ntypes)
+      t.fail("elements", fmt::format("expected {} element names (one per atom type), got {}", ntypes, names.size()));
+    atoms.type_names = names;
+  }
+}
+
+// Three integers (Miller indices, repeat counts); `fallback` is recorded when the key is absent.
+std::array<int, 3> read_int3(const Config& t, const char* key, const std::array<int, 3>& fallback) {
+  const auto v = t.get_doubles_or(key, {double(fallback[0]), double(fallback[1]), double(fallback[2])});
+  std::array<int, 3> out{};
+  for (std::size_t d = 0; d < 3 && v.size() == 3; ++d) {
+    if (v[d] != std::round(v[d]) || std::abs(v[d]) > 1e6) t.fail(key, "expected three integers");
+    out[d] = static_cast<int>(v[d]);
+  }
+  if (v.size() != 3) t.fail(key, fmt::format("expected three integers, got {} values", v.size()));
+  return out;
+}
+
+BuiltSystem from_lattice(const Config& lat) {
+  LatticeSpec spec;
+  spec.style = parse_lattice_style(lat.get_choice("style", lattice_style_names()), "style");
+  spec.a0 = lat.get_double("a0", Range::positive());
+  const char* orient_keys[3] = {"orient_x", "orient_y", "orient_z"};
+  for (int d = 0; d < 3; ++d) {
+    std::array<int, 3> unit{};
+    unit[d] = 1;
+    spec.orient[d] = read_int3(lat, orient_keys[d], unit);
+  }
+  if (lat.has("c_over_a")) {
+    if (spec.style != LatticeStyle::hcp) lat.fail("c_over_a", "c/a is only used by style = \"hcp\"");
+    spec.c_over_a = lat.get_double("c_over_a", Range::positive());
+  }
+  const auto repeat = read_int3(lat, "repeat", {1, 1, 1});
+  for (int d = 0; d < 3; ++d)
+    if (repeat[d] < 1) lat.fail("repeat", "expected three counts >= 1 [nx, ny, nz]");
+  const auto boundary = read_boundary(lat);
+  // The number of types: from masses, else elements, else the largest basis type.
+  std::size_t ntypes = lat.has("masses") ? lat.get_doubles("masses", 0).size()
+                       : lat.has("elements") ? lat.get_strings("elements").size() : 0;
+  if ((lat.has("masses") || lat.has("elements")) && ntypes == 0)
+    lat.fail(lat.has("masses") ? "masses" : "elements", "expected one entry per atom type");
+  int basis_size = 0;
+  try {
+    basis_size = Lattice(spec).basis_size();  // validates the orientation
+  } catch (const InputError& e) {
+    lat.fail("orient_x", e.what());
+  }
+  if (lat.has("basis_types")) {
+    const double max_type = ntypes ? static_cast<double>(ntypes) : 32.0;
+    for (long long t : lat.get_ints("basis_types", static_cast<std::size_t>(basis_size), Range::closed(1, max_type)))
+      spec.basis_types.push_back(static_cast<int>(t) - 1);
+  }
+  const Lattice lattice(spec);
+  if (ntypes == 0)
+    ntypes = spec.basis_types.empty() ? 1 : static_cast<std::size_t>(*std::max_element(spec.basis_types.begin(), spec.basis_types.end()) + 1);
+  BuiltSystem sys;
+  read_types(lat, ntypes, sys.atoms);
+  sys.box = lattice.box(repeat, boundary);
+  lattice.create_atoms(sys.box, sys.atoms);
+  return sys;
+}
+
+BuiltSystem from_data_file(const Config& system) {
+  // Relative to the case file's folder (Config::file() is the case file's path).
+  const std::filesystem::path case_dir = std::filesystem::path(system.file()).parent_path();
+  const std::filesystem::path file = case_dir / system.get_string("data_file");
+  const auto boundary = read_boundary(system);
+  io::DataFile data = io::read_data(file, boundary);
+  BuiltSystem sys{data.box, std::move(data.atoms), {}};
+  read_types(system, sys.atoms.mass.size(), sys.atoms);
+  return sys;
+}
+
+}  // namespace
+
+std::optional<std::string> find_overlap(const geometry::Box& box, const Atoms& atoms, double min_distance) {
+  Atoms copy = atoms;
+  rebuild_ghosts(copy, box, min_distance);
+  geometry::NeighborList list;
+  geometry::build_neighbor_list(copy.x, copy.nlocal, min_distance, true, list);
+  for (std::size_t i = 0; i < copy.nlocal; ++i) {
+    if (list.offset[i] == list.offset[i + 1]) continue;
+    const auto j = static_cast<std::size_t>(list.neighbors[static_cast<std::size_t>(list.offset[i])]);
+    const std::size_t owner = j < copy.nlocal ? j : static_cast<std::size_t>(copy.ghost_owner[j - copy.nlocal]);
+    return fmt::format("atoms {} and {} are {:.4g} Å apart, closer than {} Å (overlapping atoms)",
+                       std::min(copy.id[i], copy.id[owner]), std::max(copy.id[i], copy.id[owner]),
+                       (copy.x[j] - copy.x[i]).norm(), min_distance);
+  }
+  return std::nullopt;
+}
+
+BuiltSystem build_system(const Config& system) {
+  const bool has_lattice = system.has("lattice"), has_data = system.has("data_file");
+  if (has_lattice == has_data)
+    system.fail(has_data ? "data_file" : "lattice",
+                "expected exactly one of [system.lattice] (build a crystal) or data_file = \"...\" (read a LAMMPS data file)");
+  BuiltSystem sys = has_lattice ? from_lattice(system.table("lattice")) : from_data_file(system);
+
+  std::size_t deleted = 0;
+  for (const Config& t : system.tables("delete")) deleted += delete_atoms(region_from_config(t), sys.atoms);
+
+  for (const Config& t : system.tables("group")) {
+    const std::string name = t.get_string("name");
+    if (name == "all") t.fail("name", "'all' is predefined; choose another group name");
+    if (t.has("shape") == t.has("types"))
+      t.fail(t.has("types") ? "types" : "name", "expected exactly one of shape = ... (a region) or types = [...]");
+    const std::uint32_t bit = sys.groups.bit(name);
+    std::size_t count = 0;
+    if (t.has("shape")) {
+      count = add_to_group(bit, region_from_config(t), sys.atoms);
+    } else {
+      std::vector<int> types;
+      for (long long ty : t.get_ints("types", 0, Range::closed(1, sys.atoms.ntypes()))) types.push_back(int(ty) - 1);
+      count = add_to_group(bit, types, sys.atoms);
+    }
+    system.derive(fmt::format("atoms_in_group_{}", name), static_cast<long long>(count));
+  }
+
+  const double min_distance = system.get_double_or("min_distance", 0.1, Range::positive());
+  if (const auto overlap = find_overlap(sys.box, sys.atoms, min_distance)) system.fail("min_distance", *overlap);
+  if (sys.atoms.nlocal == 0) system.fail(has_lattice ? "lattice" : "data_file", "the system has no atoms");
+
+  system.derive("atoms", static_cast<long long>(sys.atoms.nlocal));
+  system.derive("atoms_deleted", static_cast<long long>(deleted));
+  system.derive("box_lengths", fmt::format("{} {} {}", sys.box.length().x(), sys.box.length().y(), sys.box.length().z()));
+  return sys;
+}
+
+}  // namespace shockfield::md

@@ -1,0 +1,34 @@
+#pragma once
+// Builds the atomic system of an MD case from its [system] table (keys: docs/md-system.md):
+// a crystal (`[system.lattice]`, LAMMPS lattice + create_atoms) or a LAMMPS data file
+// (`data_file`, LAMMPS read_data), then `[[system.delete]]` regions (delete_atoms region) and
+// `[[system.group]]` definitions (group ID region / group ID type). Checks that every atom is
+// inside a non-periodic box and that no two atoms are closer than `min_distance`.
+#include <optional>
+#include <string>
+
+#include "shockfield/core/config.hpp"
+#include "shockfield/geometry/box.hpp"
+#include "shockfield/md/atoms.hpp"
+#include "shockfield/md/region.hpp"
+
+namespace shockfield::md {
+
+struct BuiltSystem {
+  geometry::Box box;
+  Atoms atoms;        ///< owned atoms, ids 1..N (lattice) or as in the data file; masks set
+  GroupTable groups;  ///< "all" plus the [[system.group]] names, bits as in atoms.mask
+};
+
+/// Reads and validates the [system] table and builds the system; InputError naming file, key and
+/// line (or the data file and its line) on any problem. `data_file` is relative to the folder of
+/// the case file (Config::file()).
+/// Types without a mass keep mass 0 (to be taken from the potential). Derived values (atom count,
+/// atoms deleted and per group, box lengths) are recorded with Config::derive.
+BuiltSystem build_system(const Config& system);
+
+/// The first pair of atoms (periodic images included) closer than `min_distance`, described with
+/// both ids and their distance; nullopt when there is none.
+std::optional<std::string> find_overlap(const geometry::Box& box, const Atoms& atoms, double min_distance);
+
+}  // namespace shockfield::md
