@@ -79,6 +79,48 @@ void reduce_copies(const std::vector<std::vector<T>>& copies, std::vector<T>& ta
 
 }  // namespace detail
 
+namespace detail {
+
+// The pair loop of one thread over owned atoms [begin, end); PerAtom adds the LAMMPS per-atom
+// split (half of each pair's energy and virial to each atom).
+template <bool PerAtom, class K>
+void pair_force_range(const Vec3* x, const geometry::NeighborList& list, const K& kernel,
+                      std::size_t begin, std::size_t end, Vec3* f, double* eatom, Voigt6* vatom,
+                      double& energy, Voigt6& virial) {
+  double e = 0, vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0;
+  const int* neighbors = list.neighbors.data();
+  for (std::size_t i = begin; i < end; ++i) {
+    const Vec3 xi = x[i];
+    Vec3 fi = Vec3::Zero();
+    for (auto k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+      const int j = neighbors[k];
+      const Vec3 d = xi - x[j];
+      double fpair, epair;
+      if (!kernel(static_cast<int>(i), j, d.squaredNorm(), fpair, epair)) continue;
+      const Vec3 fij = d * fpair;
+      fi += fij;
+      f[j] -= fij;
+      e += epair;
+      const double v0 = d.x() * fij.x(), v1 = d.y() * fij.y(), v2 = d.z() * fij.z();
+      const double v3 = d.x() * fij.y(), v4 = d.x() * fij.z(), v5 = d.y() * fij.z();
+      vxx += v0; vyy += v1; vzz += v2; vxy += v3; vxz += v4; vyz += v5;
+      if constexpr (PerAtom) {
+        Voigt6 half;
+        half << 0.5 * v0, 0.5 * v1, 0.5 * v2, 0.5 * v3, 0.5 * v4, 0.5 * v5;
+        eatom[i] += 0.5 * epair;
+        eatom[j] += 0.5 * epair;
+        vatom[i] += half;
+        vatom[j] += half;
+      }
+    }
+    f[i] += fi;
+  }
+  energy = e;
+  virial << vxx, vyy, vzz, vxy, vxz, vyz;
+}
+
+}  // namespace detail
+
 /// Adds the forces of `kernel` over the half list to atoms.f (owned and ghost entries), the pair
 /// energy and virial Σ r_ij ⊗ f_ij to `out`, and with `out.per_atom` half of each pair's energy
 /// and virial to each atom (LAMMPS ev_tally with newton on).
@@ -93,47 +135,20 @@ void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, co
   std::vector<double> energy(static_cast<std::size_t>(nthreads), 0.0);
   std::vector<Voigt6> virial(static_cast<std::size_t>(nthreads), Voigt6::Zero());
   const bool per_atom = out.per_atom;
-  const Vec3* x = atoms.x.data();
 #pragma omp parallel num_threads(nthreads)
   {
     const int t = omp_get_thread_num();
+    const auto ut = static_cast<std::size_t>(t);
     Vec3* f = detail::private_copy(scratch.force, atoms.f, t, Vec3::Zero()).data();
-    double* eatom = nullptr;
-    Voigt6* vatom = nullptr;
     if (per_atom) {
-      eatom = detail::private_copy(scratch.scalar, out.energy_atom, t, 0.0).data();
-      vatom = detail::private_copy(scratch.virial, out.virial_atom, t, Voigt6::Zero()).data();
+      double* eatom = detail::private_copy(scratch.scalar, out.energy_atom, t, 0.0).data();
+      Voigt6* vatom = detail::private_copy(scratch.virial, out.virial_atom, t, Voigt6::Zero()).data();
+      detail::pair_force_range<true>(atoms.x.data(), list, kernel, range[ut], range[ut + 1], f,
+                                     eatom, vatom, energy[ut], virial[ut]);
+    } else {
+      detail::pair_force_range<false>(atoms.x.data(), list, kernel, range[ut], range[ut + 1], f,
+                                      nullptr, nullptr, energy[ut], virial[ut]);
     }
-    double e = 0, vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0;
-    for (std::size_t i = range[t]; i < range[t + 1]; ++i) {
-      const Vec3 xi = x[i];
-      Vec3 fi = Vec3::Zero();
-      for (auto k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-        const int j = list.neighbors[static_cast<std::size_t>(k)];
-        const Vec3 d = xi - x[j];
-        const double rsq = d.squaredNorm();
-        double fpair, epair;
-        if (!kernel(static_cast<int>(i), j, rsq, fpair, epair)) continue;
-        const Vec3 fij = d * fpair;
-        fi += fij;
-        f[j] -= fij;
-        e += epair;
-        const double vx = d.x() * fij.x(), vy = d.y() * fij.y(), vz = d.z() * fij.z();
-        const double vxy_ = d.x() * fij.y(), vxz_ = d.x() * fij.z(), vyz_ = d.y() * fij.z();
-        vxx += vx; vyy += vy; vzz += vz; vxy += vxy_; vxz += vxz_; vyz += vyz_;
-        if (per_atom) {
-          Voigt6 half;
-          half << 0.5 * vx, 0.5 * vy, 0.5 * vz, 0.5 * vxy_, 0.5 * vxz_, 0.5 * vyz_;
-          eatom[i] += 0.5 * epair;
-          eatom[j] += 0.5 * epair;
-          vatom[i] += half;
-          vatom[j] += half;
-        }
-      }
-      f[i] += fi;
-    }
-    energy[static_cast<std::size_t>(t)] = e;
-    virial[static_cast<std::size_t>(t)] << vxx, vyy, vzz, vxy, vxz, vyz;
 #pragma omp barrier
     detail::reduce_copies(scratch.force, atoms.f, nthreads);
     if (per_atom) {
