@@ -75,7 +75,7 @@ TEST(Region, DeleteAndGroups) {
   EXPECT_EQ(groups.find("left"), left);
   EXPECT_EQ(groups.bit("left"), left);
   EXPECT_THROW(groups.find("right"), InputError);
-  for (int g = 2; g < 32; ++g) groups.bit("g" + std::to_string(g));
+  for (int g = 2; g < 32; ++g) groups.bit(std::string("g").append(std::to_string(g)));
   EXPECT_THROW(groups.bit("one_too_many"), InputError);
 }
 
