@@ -14,10 +14,6 @@ struct Property {
   std::vector<const std::vector<double>*> columns;
 };
 
-bool is_integer_column(const std::string& name) {
-  return name == "id" || name == "mol" || name == "proc" || name == "ix" || name == "iy" || name == "iz";
-}
-
 }  // namespace
 
 void write_extxyz_frame(std::ostream& out, const DumpFrame& frame, const std::vector<std::string>& type_names,

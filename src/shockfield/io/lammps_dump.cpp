@@ -70,6 +70,12 @@ std::vector<Vec3> DumpFrame::positions() const {
                                "xs ys zs); columns: {}", timestep, fmt::join(columns, " ")));
 }
 
+bool is_integer_column(std::string_view name) {
+  // Written with "%d" by LAMMPS DumpCustom.
+  static const std::set<std::string_view> names{"id", "type", "mol", "proc", "procp1", "ix", "iy", "iz"};
+  return names.count(name) > 0;
+}
+
 std::string dump_bounds_code(geometry::Boundary b) {
   const char c = geometry::boundary_code(b);
   return {c, c};
@@ -241,10 +247,8 @@ void write_dump_frame(std::ostream& out, const DumpFrame& frame, const DumpWrite
     if (frame.values[c].size() != n)
       throw InputError(fmt::format("dump frame: column '{}' has {} values, column '{}' has {}",
                                    frame.columns[c], frame.values[c].size(), frame.columns[0], n));
-  // Integer-valued per-atom attributes of LAMMPS `dump custom`, written with "%d".
-  static const std::set<std::string> integer_columns{"id", "type", "mol", "proc", "procp1", "ix", "iy", "iz"};
   std::vector<bool> is_int(frame.columns.size());
-  for (std::size_t c = 0; c < is_int.size(); ++c) is_int[c] = integer_columns.count(frame.columns[c]) > 0;
+  for (std::size_t c = 0; c < is_int.size(); ++c) is_int[c] = is_integer_column(frame.columns[c]);
 
   fmt::memory_buffer buf;
   auto it = std::back_inserter(buf);

@@ -90,6 +90,10 @@ class DumpWriter {
   DumpWriteOptions options_;
 };
 
+/// True for the integer-valued per-atom attributes of `dump custom` (id type mol proc procp1 ix
+/// iy iz), which the writers print as integers.
+bool is_integer_column(std::string_view name);
+
 /// The two-letter dump code of a Box boundary ("pp", "ff", "ss").
 std::string dump_bounds_code(geometry::Boundary b);
 
