@@ -54,8 +54,9 @@ LevelGrid make_levels(const GridField& field, std::span<const double> thresholds
 }
 
 // Calls visit(levels of the 2^D block cells, accumulator) for every block, each thread with its
-// own accumulator of acc_size integers; returns their sum (integers: any thread count gives the
-// same result).
+// own accumulator of acc_size 32-bit integers (small enough to stay in cache; a thread sees fewer
+// than 2^31 blocks, checked by the callers); returns their sum (integers: any thread count gives
+// the same result).
 template <int D, class Visit>
 std::vector<std::int64_t> sum_over_blocks(const LevelGrid& g, std::size_t acc_size, Visit visit) {
   const std::size_t bx = g.ext[0] - 1, by = g.ext[1] - 1, bz = D == 3 ? g.ext[2] - 1 : 1;
@@ -64,7 +65,7 @@ std::vector<std::int64_t> sum_over_blocks(const LevelGrid& g, std::size_t acc_si
   std::vector<std::int64_t> total(acc_size, 0);
 #pragma omp parallel
   {
-    std::vector<std::int64_t> acc(acc_size, 0);
+    std::vector<std::int32_t> acc(acc_size, 0);
 #pragma omp for schedule(static)
     for (std::ptrdiff_t r = 0; r < rows; ++r) {
       const std::size_t y = static_cast<std::size_t>(r) % by, z = static_cast<std::size_t>(r) / by;
@@ -85,9 +86,25 @@ std::vector<std::int64_t> sum_over_blocks(const LevelGrid& g, std::size_t acc_si
   return total;
 }
 
+// Branch-free sorting networks for 4 and 8 keys (Batcher's odd-even merge sort).
+template <std::size_t N>
+void sort_network(std::array<std::uint32_t, N>& k) {
+  constexpr std::array<std::array<int, 2>, 5> net4{{{0, 1}, {2, 3}, {0, 2}, {1, 3}, {1, 2}}};
+  constexpr std::array<std::array<int, 2>, 19> net8{{{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2},
+                                                      {1, 3}, {4, 6}, {5, 7}, {1, 2}, {5, 6},
+                                                      {0, 4}, {3, 7}, {1, 5}, {2, 6}, {1, 4},
+                                                      {3, 6}, {2, 4}, {3, 5}, {3, 4}}};
+  const auto exchange = [&](const std::array<int, 2>& p) {
+    const std::uint32_t a = k[p[0]], b = k[p[1]];
+    k[p[0]] = std::min(a, b), k[p[1]] = std::max(a, b);
+  };
+  if constexpr (N == 4) for (const auto& p : net4) exchange(p);
+  else for (const auto& p : net8) exchange(p);
+}
+
 template <int D>
 std::vector<std::int64_t> count_one(const LevelGrid& g) {
-  return sum_over_blocks<D>(g, std::size_t{1} << (1 << D), [](const auto& lv, std::int64_t* acc) {
+  return sum_over_blocks<D>(g, std::size_t{1} << (1 << D), [](const auto& lv, std::int32_t* acc) {
     unsigned config = 0;
     for (std::size_t b = 0; b < lv.size(); ++b) config |= (lv[b] > 0 ? 1u : 0u) << b;
     ++acc[config];
@@ -102,14 +119,11 @@ std::vector<std::int64_t> count_all(const LevelGrid& g, std::size_t n_thresholds
   constexpr std::size_t nc = std::size_t{1} << cells;
   // diff[K][c]: change of the count of configuration c at threshold index K.
   std::vector<std::int64_t> diff = sum_over_blocks<D>(
-      g, (n_thresholds + 1) * nc, [](const auto& lv, std::int64_t* acc) {
-        std::array<std::uint32_t, cells> key{};  // level << 3 | cell, sorted by level
-        for (std::size_t b = 0; b < cells; ++b) {
-          std::uint32_t k = (std::uint32_t{lv[b]} << 3) | static_cast<std::uint32_t>(b);
-          std::size_t j = b;
-          for (; j > 0 && key[j - 1] > k; --j) key[j] = key[j - 1];
-          key[j] = k;
-        }
+      g, (n_thresholds + 1) * nc, [](const auto& lv, std::int32_t* acc) {
+        std::array<std::uint32_t, cells> key{};  // level << 3 | cell, sorted by level below
+        for (std::size_t b = 0; b < cells; ++b)
+          key[b] = (std::uint32_t{lv[b]} << 3) | static_cast<std::uint32_t>(b);
+        sort_network(key);
         unsigned config = full;
         for (std::size_t i = 0; i < cells;) {
           const std::uint32_t level = key[i] >> 3;
@@ -149,6 +163,9 @@ std::int64_t block_count(const GridField& field, Boundary boundary) {
   std::int64_t blocks = 1;
   for (int a = 0; a < field.dimension(); ++a)
     blocks *= static_cast<std::int64_t>(field.n[a] + (boundary == Boundary::open ? 1 : 0));
+  if (blocks > std::numeric_limits<std::int32_t>::max())
+    throw InputError(fmt::format("field of {} x {} x {} cells: more than 2^31 blocks are not "
+                                 "supported", field.n[0], field.n[1], field.n[2]));
   return blocks;
 }
 
@@ -157,6 +174,7 @@ ConfigurationCounts count_configurations(const GridField& field, double threshol
   const std::array<double, 1> t{threshold};
   require_increasing(t);
   validate(field, "field");
+  block_count(field, boundary);
   const LevelGrid g = make_levels(field, t, boundary);
   return {g.dimension, {threshold}, g.dimension == 3 ? count_one<3>(g) : count_one<2>(g)};
 }

@@ -1,0 +1,327 @@
+// `shockfield analyze minkowski|similarity|stats`: morphology and statistics of grid fields
+// (seed 000 §3.1, §4.1.2). Reads CSV grids and VTK image data (analysis/field_reader.hpp), writes
+// CSV and, for minkowski and similarity, a PNG through python/shockfield_plot (/usr/bin/python3 +
+// matplotlib; skipped with a warning when that fails). Docs: docs/analysis-minkowski.md.
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "shockfield/analysis/field_reader.hpp"
+#include "shockfield/analysis/field_statistics.hpp"
+#include "shockfield/analysis/minkowski.hpp"
+#include "shockfield/analysis/similarity.hpp"
+#include "shockfield/analysis/spectral_statistics.hpp"
+#include "shockfield/app/commands.hpp"
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::app {
+namespace {
+
+namespace sa = shockfield::analysis;
+namespace fs = std::filesystem;
+
+struct Common {
+  std::vector<std::string> files;
+  std::vector<double> times;
+  std::string array;
+  std::string output = "analysis";
+  int threads = 0;
+  bool no_plot = false;
+};
+
+struct Morphology {
+  std::vector<double> thresholds;
+  std::size_t count = 0;  // evenly spaced over the first field's range when no list is given
+  std::string boundary = "periodic";
+  int connectivity = 8, adjacency = 26;
+};
+
+const char* kFormats =
+    "Fields: .csv/.txt (one line per row, comma-separated, slices separated by a blank line, "
+    "`void` marks a void cell, `# spacing = h`), .vtk (legacy ASCII STRUCTURED_POINTS), .vti "
+    "(XML ImageData, ascii). See docs/analysis-minkowski.md.";
+
+void add_common(CLI::App* cmd, Common& c, const char* files_help) {
+  cmd->add_option("fields", c.files, files_help)->check(CLI::ExistingFile);
+  cmd->add_option("--times", c.times,
+                  "Time of each field, in order (default 0, 1, 2, ...); strictly increasing")
+      ->delimiter(',');
+  cmd->add_option("--array", c.array, "Data array to read from VTK files (default: the first)");
+  cmd->add_option("-o,--output", c.output, "Output folder (created if missing)")->capture_default_str();
+  cmd->add_option("-j,--threads", c.threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--no-plot", c.no_plot, "Write CSV only, no PNG");
+}
+
+void add_morphology(CLI::App* cmd, Morphology& m) {
+  cmd->add_option("-t,--thresholds", m.thresholds,
+                  "Thresholds Θ_th, comma-separated, strictly increasing (white = Θ >= Θ_th)")
+      ->delimiter(',');
+  cmd->add_option("-n,--count", m.count,
+                  "Instead of --thresholds: this many thresholds evenly spaced over the first "
+                  "field's value range");
+  cmd->add_option("--boundary", m.boundary,
+                  "periodic (the grid wraps; the surrounding region does not count, as in eq. 32) "
+                  "or open (black outside the grid, scikit-image's convention)")->capture_default_str()
+      ->check(CLI::IsMember({"periodic", "open"}));
+  cmd->add_option("--connectivity", m.connectivity, "2D connectivity of the white set: 4 or 8")->capture_default_str()
+      ->check(CLI::IsMember({4, 8}));
+  cmd->add_option("--adjacency", m.adjacency,
+                  "3D adjacency of the white set: 26 (pair (26,6)) or 6 (pair (6,26))")->capture_default_str()
+      ->check(CLI::IsMember({6, 26}));
+}
+
+std::vector<sa::GridField> read_all(const Common& c, const char* role) {
+  if (c.files.empty()) throw InputError(fmt::format("analyze: no {} field files given", role));
+  if (!c.times.empty() && c.times.size() != c.files.size())
+    throw InputError(fmt::format("--times: {} times for {} {} fields", c.times.size(),
+                                 c.files.size(), role));
+  std::vector<sa::GridField> fields;
+  for (const auto& f : c.files) {
+    fields.push_back(sa::read_grid_field(f, c.array));
+    sa::require_same_grid(fields.front(), fields.back(), c.files.front(), f);
+  }
+  return fields;
+}
+
+std::vector<double> times_of(const Common& c) {
+  if (!c.times.empty()) return c.times;
+  std::vector<double> t;
+  for (std::size_t i = 0; i < c.files.size(); ++i) t.push_back(double(i));
+  return t;
+}
+
+sa::MinkowskiOptions options_of(const Morphology& m) {
+  sa::MinkowskiOptions o;
+  o.boundary = m.boundary == "open" ? sa::Boundary::open : sa::Boundary::periodic;
+  o.connectivity2d = m.connectivity == 4 ? sa::Connectivity2D::four : sa::Connectivity2D::eight;
+  o.adjacency3d = m.adjacency == 6 ? sa::Adjacency3D::six_26 : sa::Adjacency3D::twentysix_6;
+  return o;
+}
+
+std::vector<double> thresholds_of(const Morphology& m, const sa::GridField& first) {
+  if (!m.thresholds.empty() && m.count > 0)
+    throw InputError("give either --thresholds or --count, not both");
+  if (!m.thresholds.empty()) return m.thresholds;
+  return sa::linear_thresholds(first, m.count > 0 ? m.count : 32);
+}
+
+// Functionals of every field at every threshold, as morphology points and as CSV text rows.
+struct Table {
+  std::string header;
+  std::vector<std::vector<std::string>> rows;        // [field][threshold]
+  std::vector<std::vector<sa::MorphologyPoint>> points;  // [field][threshold]
+};
+
+Table functionals(const std::vector<sa::GridField>& fields, std::span<const double> thresholds,
+                  const sa::MinkowskiOptions& o) {
+  Table t;
+  const bool three = fields.front().dimension() == 3;
+  t.header = three ? "V,S,b,M,chi,chi_per_black" : "A,L,chi,chi_per_black";
+  for (const auto& f : fields) {
+    auto& rows = t.rows.emplace_back();
+    auto& points = t.points.emplace_back();
+    if (three) {
+      for (const auto& m : sa::minkowski_3d(f, thresholds, o)) {
+        rows.push_back(fmt::format("{},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g}", m.threshold,
+                                   m.volume_fraction, m.surface_area, m.mean_breadth,
+                                   m.integral_mean_curvature, m.euler, m.euler_per_black_node));
+        points.push_back(sa::morphology_point(m, f));
+      }
+    } else {
+      for (const auto& m : sa::minkowski_2d(f, thresholds, o)) {
+        rows.push_back(fmt::format("{},{:.10g},{:.10g},{},{:.10g}", m.threshold, m.area_fraction,
+                                   m.boundary_length, m.euler, m.euler_per_black_node));
+        points.push_back(sa::morphology_point(m, f));
+      }
+    }
+  }
+  return t;
+}
+
+std::ofstream open_output(const Common& c, const std::string& name) {
+  fs::create_directories(c.output);
+  std::ofstream out(fs::path(c.output) / name);
+  if (!out) throw InputError(fmt::format("{}: cannot write", (fs::path(c.output) / name).string()));
+  return out;
+}
+
+void plot(const Common& c, const char* kind, const std::string& csv) {
+  if (c.no_plot) return;
+  const fs::path dir(c.output);
+  const std::string png = (dir / (std::string(kind) + ".png")).string();
+  const std::string cmd = fmt::format(
+      "PYTHONPATH='{}/python' /usr/bin/python3 -m shockfield_plot {} '{}' '{}'",
+      SHOCKFIELD_SOURCE_DIR, kind, (dir / csv).string(), png);
+  if (std::system(cmd.c_str()) != 0)
+    std::fprintf(stderr, "warning: no plot (%s failed); the CSV is written\n", cmd.c_str());
+  else
+    std::printf("wrote %s\n", png.c_str());
+}
+
+void set_threads(const Common& c) {
+  if (c.threads > 0) omp_set_num_threads(c.threads);
+}
+
+void run_minkowski(const Common& c, const Morphology& m) {
+  set_threads(c);
+  const auto fields = read_all(c, "input");
+  const auto times = times_of(c);
+  const auto thresholds = thresholds_of(m, fields.front());
+  const Table t = functionals(fields, thresholds, options_of(m));
+  auto out = open_output(c, "minkowski.csv");
+  out << "file,time,threshold," << t.header << "\n";
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    for (const auto& row : t.rows[i]) out << c.files[i] << "," << times[i] << "," << row << "\n";
+  out.close();
+  std::printf("wrote %s (%zu fields x %zu thresholds)\n",
+              (fs::path(c.output) / "minkowski.csv").c_str(), fields.size(), thresholds.size());
+  plot(c, "minkowski", "minkowski.csv");
+}
+
+struct SimilarityArgs {
+  std::vector<std::string> reference;
+  double reference_threshold = 0.0;
+  double t1 = std::numeric_limits<double>::quiet_NaN(), t2 = t1;
+};
+
+void run_similarity(const Common& c, const Morphology& m, const SimilarityArgs& s) {
+  set_threads(c);
+  Common ref = c;
+  ref.files = s.reference;
+  const auto ref_fields = read_all(ref, "reference");
+  const auto fields = read_all(c, "candidate");
+  sa::require_same_grid(ref_fields.front(), fields.front(), "reference fields", "candidate fields");
+  const auto times = times_of(c);
+  if (ref_fields.size() != fields.size())
+    throw InputError(fmt::format("similarity: {} reference fields but {} candidate fields; one "
+                                 "per time each", ref_fields.size(), fields.size()));
+  const auto thresholds = thresholds_of(m, fields.front());
+  const auto o = options_of(m);
+  const std::vector<double> one{s.reference_threshold};
+  const Table rt = functionals(ref_fields, one, o), ct = functionals(fields, thresholds, o);
+  sa::Process reference;
+  std::vector<sa::Process> candidates(thresholds.size());
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    reference.times.push_back(times[i]);
+    reference.points.push_back(rt.points[i][0]);
+    for (std::size_t k = 0; k < thresholds.size(); ++k) {
+      candidates[k].times.push_back(times[i]);
+      candidates[k].points.push_back(ct.points[i][k]);
+    }
+  }
+  const double t1 = std::isnan(s.t1) ? times.front() : s.t1;
+  const double t2 = std::isnan(s.t2) ? times.back() : s.t2;
+  const auto match = sa::match_threshold(reference, thresholds, candidates, t1, t2);
+  auto out = open_output(c, "similarity.csv");
+  out << "# reference threshold " << s.reference_threshold << ", interval [" << t1 << ", " << t2
+      << "], best candidate threshold " << match.threshold << " (d_P = " << match.distance << ")\n";
+  out << "candidate,threshold,d_P,S_D\n";
+  for (std::size_t k = 0; k < thresholds.size(); ++k)
+    out << "c," << thresholds[k] << "," << match.distances[k] << ","
+        << (match.distances[k] > 0 ? 1.0 / match.distances[k] : INFINITY) << "\n";
+  out.close();
+  std::printf("best candidate threshold %g: process distance d_P = %g, S_D = %g\n",
+              match.threshold, match.distance, 1.0 / match.distance);
+  plot(c, "similarity", "similarity.csv");
+}
+
+void run_stats(const Common& c, std::size_t bins) {
+  set_threads(c);
+  const auto fields = read_all(c, "input");
+  const auto times = times_of(c);
+  auto stats = open_output(c, "stats.csv");
+  auto hist = open_output(c, "histogram.csv");
+  auto sk = open_output(c, "structure_factor.csv");
+  auto corr = open_output(c, "correlation.csv");
+  stats << "file,time,cells,void_cells,mean,std,skewness,kurtosis,domain_size_R\n";
+  hist << "file,time,lo,hi,count\n";
+  sk << "file,time,k,S,shell_points\n";
+  corr << "file,time,r,C,shell_points\n";
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const auto& f = fields[i];
+    const auto m = sa::moments(f);
+    const double r = m.std > 0.0 ? sa::characteristic_size(f) : 0.0;
+    stats << fmt::format("{},{},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", c.files[i],
+                         times[i], f.size(), f.void_count(), m.mean, m.std, m.skewness,
+                         m.kurtosis, r);
+    const auto h = sa::histogram(f, bins);
+    for (std::size_t b = 0; b < bins; ++b)
+      hist << fmt::format("{},{},{:.10g},{:.10g},{}\n", c.files[i], times[i], h.edges[b],
+                          h.edges[b + 1], h.counts[b]);
+    if (m.std == 0.0) continue;
+    for (const auto& [profile, stream] :
+         {std::pair{sa::structure_factor(f), &sk}, std::pair{sa::correlation_function(f), &corr}})
+      for (std::size_t j = 0; j < profile.x.size(); ++j)
+        *stream << fmt::format("{},{},{:.10g},{:.10g},{}\n", c.files[i], times[i], profile.x[j],
+                               profile.values[j], profile.count[j]);
+  }
+  std::printf("wrote stats.csv, histogram.csv, structure_factor.csv, correlation.csv in %s\n",
+              c.output.c_str());
+}
+
+}  // namespace
+
+void add_analyze_command(CLI::App& app) {
+  CLI::App* analyze = app.add_subcommand(
+      "analyze",
+      "Analyse grid fields (temperature, density, pressure, ...): Minkowski functionals against\n"
+      "threshold and time, morphological similarity of two processes, field statistics.\n"
+      "Seed 000 §3.1 and §4.1.2; docs/analysis-minkowski.md.");
+  analyze->require_subcommand(1);
+
+  auto mc = std::make_shared<Common>();
+  auto mm = std::make_shared<Morphology>();
+  CLI::App* mink = analyze->add_subcommand(
+      "minkowski",
+      "Minkowski functionals of {Θ >= Θ_th} for every field and threshold, all thresholds in one\n"
+      "pass: 2D fractional area A, boundary length L (Crofton estimator), Euler characteristic\n"
+      "χ = N_W − N_B (eq. 32) and χ/N (eq. 33); 3D volume fraction V, surface area S, mean\n"
+      "breadth b, integral mean curvature M = 2πb, χ. Writes OUTPUT/minkowski.csv (file, time,\n"
+      "threshold, functionals) and OUTPUT/minkowski.png (functionals against time per threshold,\n"
+      "or against threshold for one field).\n" + std::string(kFormats));
+  add_common(mink, *mc, "Field files, one per time (same grid)");
+  add_morphology(mink, *mm);
+  mink->callback([mc, mm] { run_minkowski(*mc, *mm); });
+
+  auto sc = std::make_shared<Common>();
+  auto sm = std::make_shared<Morphology>();
+  auto sargs = std::make_shared<SimilarityArgs>();
+  CLI::App* sim = analyze->add_subcommand(
+      "similarity",
+      "Dynamic similarity (§3.1, Figs. 42-45): for a reference process (its fields at\n"
+      "--reference-threshold) find the threshold of a candidate process (FIELDS) that minimises\n"
+      "the process distance d_P = mean over [t1, t2] of d(t), d the distance in (A, L/(N h), χ/N)\n"
+      "space (3D: (V, S/(N h²), b/(N h), χ/N)); S_D = 1/d_P. Both processes are sampled at the same\n"
+      "--times. Writes OUTPUT/similarity.csv (d_P and S_D per candidate threshold) and\n"
+      "OUTPUT/similarity.png.\n" + std::string(kFormats));
+  add_common(sim, *sc, "Candidate process's field files, one per time");
+  add_morphology(sim, *sm);
+  sim->add_option("-r,--reference", sargs->reference, "Reference process's field files, one per time")
+      ->required()->check(CLI::ExistingFile);
+  sim->add_option("--reference-threshold", sargs->reference_threshold,
+                  "Threshold T_th1 of the reference process")->required();
+  sim->add_option("--t1", sargs->t1, "Start of the time interval (default: first time)");
+  sim->add_option("--t2", sargs->t2, "End of the time interval (default: last time)");
+  sim->callback([sc, sm, sargs] { run_similarity(*sc, *sm, *sargs); });
+
+  auto tc = std::make_shared<Common>();
+  auto bins = std::make_shared<std::size_t>(64);
+  CLI::App* stats = analyze->add_subcommand(
+      "stats",
+      "Field statistics over non-void cells: mean, std, skewness, kurtosis (3 for a Gaussian),\n"
+      "histogram, structure factor S(k), correlation function C(r) and the domain size\n"
+      "R = 2π/k1 from the first moment of S(k) (field taken as periodic). Writes OUTPUT/stats.csv,\n"
+      "histogram.csv, structure_factor.csv, correlation.csv.\n" + std::string(kFormats));
+  add_common(stats, *tc, "Field files, one per time");
+  stats->add_option("--bins", *bins, "Histogram bins over the value range")->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  stats->callback([tc, bins] { run_stats(*tc, *bins); });
+}
+
+}  // namespace shockfield::app
