@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "shockfield " SHOCKFIELD_VERSION);
   shockfield::app::add_run_command(app);
+  shockfield::app::add_plot_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -23,6 +24,9 @@ int main(int argc, char** argv) {
   } catch (const shockfield::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
+  } catch (const shockfield::StopRequested& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 130;
   } catch (const shockfield::RunError& e) {
     std::fprintf(stderr, "run stopped: %s\n", e.what());
     return 3;

@@ -51,6 +51,9 @@ void add_run_command(CLI::App& app) {
                   "OpenMP threads (default: OMP_NUM_THREADS, else all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("-q,--quiet", options->quiet, "No progress line");
+  cmd->add_option("--stop-after", options->stop_after,
+                  "Stop after this many steps as Ctrl-C would (checkpoint, exit code 130)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--check", options->validate_only,
                 "Only validate the case file (and the files it names), then exit");
   cmd->callback([options] { run(*options); });

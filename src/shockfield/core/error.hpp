@@ -19,4 +19,10 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A run stopped on request (Ctrl-C, SIGTERM, --stop-after) after writing its checkpoint.
+class StopRequested : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace shockfield

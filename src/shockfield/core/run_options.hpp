@@ -2,6 +2,7 @@
 // Options of `shockfield run` that are not part of the case file.
 #include <filesystem>
 #include <optional>
+#include <string>
 
 namespace shockfield {
 
@@ -13,6 +14,7 @@ struct RunOptions {
   int threads = 0;                               ///< OpenMP threads; 0 = OMP_NUM_THREADS or all cores
   bool quiet = false;                            ///< no progress line
   bool validate_only = false;                    ///< check the case file and stop
+  long long stop_after = 0;                      ///< stop as on Ctrl-C after this many steps (0: never)
 };
 
 }  // namespace shockfield

@@ -18,7 +18,7 @@ CsvWriter::CsvWriter(const std::filesystem::path& file, std::vector<std::string>
     std::getline(in, line);  // header
     while (std::getline(in, line)) {
       if (line.empty()) continue;
-      if (std::stod(line.substr(0, line.find(','))) < *resume_from) kept.push_back(line);
+      if (std::stod(line.substr(0, line.find(','))) <= *resume_from) kept.push_back(line);
     }
   }
   out_.open(file, std::ios::trunc);

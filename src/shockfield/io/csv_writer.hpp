@@ -1,7 +1,7 @@
 #pragma once
 // Time-series CSV: a header line of column names, then one row per record, flushed at once so
 // a stopped run keeps every row written. Opening in append mode (restart) keeps the old rows up
-// to a given first value of the first column.
+// to a given value of the first column.
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -13,7 +13,7 @@ class CsvWriter {
  public:
   CsvWriter() = default;
   /// Creates `file` with `columns`. With `resume_from` set, keeps the existing rows whose first
-  /// column is < *resume_from (a resumed run rewrites what came after its checkpoint).
+  /// column is <= *resume_from (a resumed run rewrites what came after its checkpoint).
   CsvWriter(const std::filesystem::path& file, std::vector<std::string> columns,
             const double* resume_from = nullptr);
 

@@ -4,11 +4,11 @@
 
 #include "shockfield/core/units.hpp"
 #include "shockfield/md/simulation.hpp"
+#include "shockfield/md/velocity.hpp"
 
 namespace shockfield::md {
 
 using units::metal::boltz;
-using units::metal::mvv2e;
 
 FixNoseHoover::FixNoseHoover(double temperature, double damping, int chain, std::uint32_t group_bit)
     : FixNve(group_bit), target_(temperature), period_(damping),
@@ -26,14 +26,8 @@ void FixNoseHoover::final_integrate(Simulation& sim) {
 
 void FixNoseHoover::integrate_chain(Simulation& sim) {
   Atoms& a = sim.atoms;
-  double twice_ke = 0;
   std::size_t n = 0;
-  for (std::size_t i = 0; i < a.nlocal; ++i) {
-    if (!(a.mask[i] & group_bit_)) continue;
-    twice_ke += a.mass_of(i) * a.v[i].squaredNorm();
-    ++n;
-  }
-  twice_ke *= mvv2e;
+  double twice_ke = group_twice_kinetic(a, group_bit_, n);
   dof_ = std::max(3.0 * static_cast<double>(n) - 3.0, 1.0);
   const int m = static_cast<int>(eta_.size());
   const double kt = boltz * target_, omega2 = 1.0 / (period_ * period_);

@@ -8,6 +8,12 @@ namespace shockfield::md {
 FixPiston::FixPiston(int axis, int side, double speed, double position, double start_time)
     : axis_(axis), side_(side), speed_(speed), position_(position), start_time_(start_time) {}
 
+void FixPiston::restore(const std::vector<double>& s) {
+  work_ = s.at(0);
+  position_ = s.at(1);
+  start_time_ = s.at(2);
+}
+
 void FixPiston::post_integrate(Simulation& sim) {
   Atoms& a = sim.atoms;
   // post_integrate runs before the clock advances: the drift ends at time + dt.

@@ -16,8 +16,13 @@ class FixPiston : public Fix {
   std::string name() const override { return "piston"; }
   void post_integrate(Simulation& sim) override;
   double energy_added() const override { return work_; }
-  std::vector<double> state() const override { return {work_}; }
-  void restore(const std::vector<double>& s) override { work_ = s.at(0); }
+  std::vector<double> state() const override { return {work_, position_, start_time_}; }
+  void restore(const std::vector<double>& s) override;
+  int axis() const { return axis_; }
+  int side() const { return side_; }
+  double speed() const { return speed_; }
+  double start_time() const { return start_time_; }
+  double start_position() const { return position_; }
   /// Wall position at time t.
   double wall(double t) const { return position_ + side_ * speed_ * (t - start_time_); }
 

@@ -1,0 +1,111 @@
+#include "shockfield/md/case_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace shockfield::md {
+
+int read_axis(const Config& table, std::string_view key, const std::string& fallback) {
+  const std::string a = table.get_choice_or(key, {"x", "y", "z"}, fallback);
+  return a[0] - 'x';
+}
+
+const std::vector<std::string>& known_dump_fields() {
+  static const std::vector<std::string> fields{
+      "id", "type", "mass", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz",
+      "vx", "vy", "vz", "fx", "fy", "fz", "pe", "ke", "sxx", "syy", "szz", "sxy", "sxz", "syz"};
+  return fields;
+}
+
+namespace {
+
+StageSpec read_stage(const Config& t, std::size_t index) {
+  StageSpec s;
+  s.name = t.get_string_or("name", fmt::format("stage{}", index + 1));
+  s.ensemble = t.get_choice_or("ensemble", {"nve", "langevin", "nvt", "minimize"}, "nve");
+  s.steps = s.ensemble == "minimize" ? 0 : t.get_int("steps", Range::non_negative());
+  s.group = t.get_string_or("group", "all");
+  if (s.ensemble == "langevin" || s.ensemble == "nvt") {
+    s.temperature = t.get_double("temperature", Range::positive());
+    s.damping = t.get_double_or("damping", 0.1, Range::positive());
+    if (s.ensemble == "nvt") s.chain = static_cast<int>(t.get_int_or("chain", 3, Range::closed(1, 10)));
+  }
+  if (s.ensemble == "minimize") {
+    MinimizeSettings& m = s.minimize;
+    m.force_tolerance = t.get_double_or("force_tolerance", 1e-6, Range::positive());
+    m.pressure_tolerance = t.get_double_or("pressure_tolerance", 1.0, Range::positive());
+    m.max_iterations = t.get_int_or("max_iterations", 100000, Range::closed(1, 1e9));
+    m.target_pressure = t.get_double_or("pressure", 0.0);
+    if (t.has("relax_box")) {
+      for (const auto& dim : t.get_strings("relax_box")) {
+        if (dim != "x" && dim != "y" && dim != "z") t.fail("relax_box", "expected a list of \"x\", \"y\", \"z\"");
+        m.relax_box[dim[0] - 'x'] = true;
+      }
+    }
+  }
+  if (auto p = t.optional_table("piston")) {
+    PistonSpec piston;
+    piston.axis = read_axis(*p, "axis", "z");
+    piston.side = p->get_choice_or("from", {"lo", "hi"}, "lo") == "lo" ? +1 : -1;
+    piston.speed = p->get_double("speed", Range::positive());
+    if (p->has("position")) piston.position = p->get_double("position");
+    s.piston = piston;
+  }
+  if (t.has("deform_rate")) {
+    const auto r = t.get_doubles("deform_rate", 3, Range::closed(-10, 10));
+    s.deform_rate = Vec3(r[0], r[1], r[2]);
+  }
+  if (s.ensemble == "minimize" && (s.piston || s.deform_rate))
+    t.fail("ensemble", "a minimisation stage cannot have a piston or deform_rate");
+  return s;
+}
+
+}  // namespace
+
+MdCase read_md_case(const Config& root) {
+  MdCase c;
+  const Config md = root.table("md");
+  c.timestep = md.get_double_or("timestep", 0.001, Range{0.0, 0.1, true, false});
+  c.skin = md.get_double_or("skin", 2.0, Range::positive());
+  c.seed = static_cast<std::uint64_t>(md.get_int_or("seed", 12345, Range::non_negative()));
+  md.derive("timestep_fs", c.timestep * 1000.0);
+
+  if (auto v = root.optional_table("velocity")) {
+    if (v->has("temperature")) c.temperature = v->get_double("temperature", Range::non_negative());
+    for (const Config& add : v->tables("add")) {
+      VelocityAdd a;
+      a.group = add.get_string("group");
+      const auto vel = add.get_doubles("velocity", 3);
+      a.velocity = Vec3(vel[0], vel[1], vel[2]);
+      c.velocity_adds.push_back(a);
+    }
+  }
+
+  if (auto o = root.optional_table("output")) {
+    OutputSpec& out = c.output;
+    out.thermo_every = o->get_int_or("thermo_every", 100, Range::closed(1, 1e12));
+    out.checkpoint_every = o->get_int_or("checkpoint_every", 0, Range::non_negative());
+    out.dump_every = o->get_int_or("dump_every", 0, Range::non_negative());
+    out.dump_fields = o->has("dump_fields") ? o->get_strings("dump_fields")
+                                            : std::vector<std::string>{"id", "type", "x", "y", "z", "vx", "vy", "vz", "pe"};
+    for (const auto& f : out.dump_fields)
+      if (std::find(known_dump_fields().begin(), known_dump_fields().end(), f) == known_dump_fields().end()) {
+        std::string list;
+        for (const auto& k : known_dump_fields()) list += (list.empty() ? "" : " ") + k;
+        o->fail("dump_fields", fmt::format("unknown field \"{}\"; known fields: {}", f, list));
+      }
+    out.dump_format = o->get_choice_or("dump_format", {"lammps", "extxyz"}, "lammps");
+    out.dump_full_precision = o->get_bool_or("dump_full_precision", false);
+    out.profile_every = o->get_int_or("profile_every", 0, Range::non_negative());
+    out.profile_axis = read_axis(*o, "profile_axis", "z");
+    out.profile_bin_width = o->get_double_or("profile_bin_width", 5.0, Range::positive());
+  }
+
+  const auto stages = root.tables("stage");
+  if (stages.empty()) root.fail("stage", "at least one [[stage]] table (what the run does)");
+  for (std::size_t k = 0; k < stages.size(); ++k) c.stages.push_back(read_stage(stages[k], k));
+  return c;
+}
+
+}  // namespace shockfield::md

@@ -1,0 +1,70 @@
+#pragma once
+// The MD case file, read and validated completely before anything runs. Keys are documented in
+// docs/md.md; each value is read through Config so an error names the file, key and line.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "shockfield/core/config.hpp"
+#include "shockfield/md/minimize.hpp"
+
+namespace shockfield::md {
+
+struct PistonSpec {
+  int axis = 2;
+  int side = +1;                   ///< +1: from the low face towards +axis; −1: from the high face
+  double speed = 0;                ///< Å/ps
+  std::optional<double> position;  ///< Å; default: the box face at the stage start
+};
+
+struct StageSpec {
+  std::string name;
+  long long steps = 0;
+  std::string ensemble = "nve";    ///< nve | langevin | nvt | minimize
+  std::string group = "all";
+  double temperature = 0;          ///< K (langevin, nvt)
+  double damping = 0.1;            ///< ps (langevin, nvt)
+  int chain = 3;                   ///< Nosé–Hoover chain length
+  std::optional<PistonSpec> piston;
+  std::optional<Vec3> deform_rate; ///< 1/ps per dimension
+  MinimizeSettings minimize;
+};
+
+struct VelocityAdd {
+  std::string group;
+  Vec3 velocity = Vec3::Zero();    ///< Å/ps
+};
+
+struct OutputSpec {
+  long long thermo_every = 100;
+  long long checkpoint_every = 0;  ///< 0: only when a run ends or is stopped
+  long long dump_every = 0;
+  std::vector<std::string> dump_fields;
+  std::string dump_format = "lammps";  ///< lammps | extxyz
+  bool dump_full_precision = false;
+  long long profile_every = 0;
+  int profile_axis = 2;
+  double profile_bin_width = 5.0;  ///< Å
+};
+
+struct MdCase {
+  double timestep = 0.001;         ///< ps
+  double skin = 2.0;               ///< Å
+  std::uint64_t seed = 12345;
+  std::optional<double> temperature;   ///< initial velocities, K
+  std::vector<VelocityAdd> velocity_adds;
+  OutputSpec output;
+  std::vector<StageSpec> stages;
+};
+
+/// Reads [md], [velocity], [output] and [[stage]] (not [system] or [potential]).
+MdCase read_md_case(const Config& root);
+
+/// "x" | "y" | "z" → 0 | 1 | 2 for `key` of `table`.
+int read_axis(const Config& table, std::string_view key, const std::string& fallback);
+
+/// Per-atom dump fields shockfield knows (LAMMPS names plus pe, ke, sxx..syz).
+const std::vector<std::string>& known_dump_fields();
+
+}  // namespace shockfield::md

@@ -1,0 +1,127 @@
+#include "shockfield/md/checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/io/hdf5_file.hpp"
+
+namespace shockfield::md {
+namespace {
+
+constexpr double kFormatVersion = 1;
+
+std::vector<double> flatten(const std::vector<Vec3>& v, std::size_t n) {
+  std::vector<double> out(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int d = 0; d < 3; ++d) out[3 * i + d] = v[i][d];
+  return out;
+}
+
+std::vector<Vec3> unflatten(const std::vector<double>& flat) {
+  std::vector<Vec3> out(flat.size() / 3);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec3(flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]);
+  return out;
+}
+
+std::vector<double> box_data(const geometry::Box& b) {
+  return {b.lo.x(), b.lo.y(), b.lo.z(), b.hi.x(), b.hi.y(), b.hi.z()};
+}
+
+void set_box(geometry::Box& b, const std::vector<double>& d) {
+  b.lo = Vec3(d.at(0), d.at(1), d.at(2));
+  b.hi = Vec3(d.at(3), d.at(4), d.at(5));
+}
+
+}  // namespace
+
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const CheckpointPosition& where) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    io::Hdf5File h5(tmp, io::Hdf5File::Mode::create);
+    const Atoms& a = sim.atoms;
+    const std::size_t n = a.nlocal;
+    const auto n3 = std::vector<hsize_t>{n, 3};
+    h5.set_attribute("format_version", kFormatVersion);
+    h5.set_attribute("step", static_cast<double>(sim.step));
+    h5.set_attribute("time", sim.time);
+    h5.set_attribute("neighbor_rebuilds", static_cast<double>(sim.rebuilds));
+    h5.set_attribute("stage", static_cast<double>(where.stage));
+    h5.set_attribute("stage_step", static_cast<double>(where.stage_step));
+    h5.set_attribute("boundary", sim.box.boundary_codes());
+    h5.write("x", flatten(a.x, n), n3);
+    h5.write("v", flatten(a.v, n), n3);
+    h5.write("f", flatten(a.f, n), n3);
+    h5.write("x_rebuild", flatten(sim.positions_at_rebuild(), n), n3);
+    std::vector<std::int64_t> image(3 * n), type(n), mask(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int d = 0; d < 3; ++d) image[3 * i + d] = a.image[i][d];
+      type[i] = a.type[i];
+      mask[i] = a.mask[i];
+    }
+    h5.write("image", image, n3);
+    h5.write("id", a.id);
+    h5.write("type", type);
+    h5.write("mask", mask);
+    h5.write("box", box_data(sim.box));
+    h5.write("box_rebuild", box_data(sim.box_at_rebuild()));
+    for (std::size_t k = 0; k < sim.fixes.size(); ++k) {
+      auto state = sim.fixes[k]->state();
+      if (!state.empty()) h5.write(fmt::format("fix{}_{}", k, sim.fixes[k]->name()), state);
+    }
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+CheckpointPosition read_checkpoint_header(const std::filesystem::path& file) {
+  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  if (h5.attribute("format_version") != kFormatVersion)
+    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", file.string(),
+                                 h5.attribute("format_version"), kFormatVersion));
+  return {static_cast<std::int64_t>(h5.attribute("stage")), static_cast<std::int64_t>(h5.attribute("stage_step"))};
+}
+
+void read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
+  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  Atoms& a = sim.atoms;
+  const auto id = h5.read_ints("id");
+  const std::size_t n = id.size();
+  if (h5.string_attribute("boundary") != sim.box.boundary_codes())
+    throw InputError(fmt::format("{}: checkpoint boundaries '{}' differ from the case's '{}'", file.string(),
+                                 h5.string_attribute("boundary"), sim.box.boundary_codes()));
+  const auto type = h5.read_ints("type");
+  const auto mask = h5.read_ints("mask");
+  const auto image = h5.read_ints("image");
+  a.clear_ghosts();
+  a.x = unflatten(h5.read_doubles("x"));
+  a.v = unflatten(h5.read_doubles("v"));
+  a.f.assign(n, Vec3::Zero());
+  a.id = id;
+  a.type.resize(n);
+  a.mask.resize(n);
+  a.image.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (type[i] < 0 || type[i] >= a.ntypes())
+      throw InputError(fmt::format("{}: atom type {} does not exist in the case", file.string(), type[i] + 1));
+    a.type[i] = static_cast<int>(type[i]);
+    a.mask[i] = static_cast<std::uint32_t>(mask[i]);
+    for (int d = 0; d < 3; ++d) a.image[i][d] = static_cast<int>(image[3 * i + d]);
+  }
+  a.nlocal = n;
+  sim.step = static_cast<std::int64_t>(h5.attribute("step"));
+  sim.time = h5.attribute("time");
+  set_box(sim.box, h5.read_doubles("box"));
+  geometry::Box rebuild_box = sim.box;
+  set_box(rebuild_box, h5.read_doubles("box_rebuild"));
+  for (std::size_t k = 0; k < sim.fixes.size(); ++k) {
+    const std::string name = fmt::format("fix{}_{}", k, sim.fixes[k]->name());
+    if (h5.has(name)) sim.fixes[k]->restore(h5.read_doubles(name));
+  }
+  sim.restore_rebuild_state(unflatten(h5.read_doubles("x_rebuild")), rebuild_box);
+  sim.rebuilds = static_cast<std::int64_t>(h5.attribute("neighbor_rebuilds"));
+  // Energies and virial of the restored step, then the saved forces: they include what fixes
+  // added after the force evaluation (Langevin bath forces), which a recomputation would lose.
+  sim.compute_forces(false);
+  a.f = unflatten(h5.read_doubles("f"));
+}
+
+}  // namespace shockfield::md

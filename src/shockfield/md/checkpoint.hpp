@@ -1,0 +1,28 @@
+#pragma once
+// MD checkpoints (HDF5): everything the time loop needs to continue as if never stopped —
+// atoms (positions, velocities, image counts, ids, types, groups), box, clock, the positions and
+// box of the last neighbour-list build (so the resumed run rebuilds the identical list and sums
+// forces in the identical order: bitwise restart with the same thread count), the fixes' state
+// and where in the stage list the run was. Written to a temporary file and renamed.
+#include <filesystem>
+#include <vector>
+
+#include "shockfield/md/simulation.hpp"
+
+namespace shockfield::md {
+
+struct CheckpointPosition {
+  std::int64_t stage = 0;        ///< index in the case's [[stage]] list
+  std::int64_t stage_step = 0;   ///< steps done in that stage
+};
+
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const CheckpointPosition& where);
+
+/// Where in the stage list the checkpointed run was.
+CheckpointPosition read_checkpoint_header(const std::filesystem::path& file);
+/// Restores `sim` (built from the same case file, with the fixes of the checkpoint's stage
+/// already added), ready for its next step: forces as they were (fix contributions included),
+/// energy and virial recomputed. Throws InputError when the checkpoint does not fit the case.
+void read_checkpoint(const std::filesystem::path& file, Simulation& sim);
+
+}  // namespace shockfield::md

@@ -1,0 +1,41 @@
+#pragma once
+// Shock-front tracking and Hugoniot-state extraction from binned profiles of a piston-driven
+// shock in material initially at rest. The front is where the particle velocity along the
+// axis first exceeds half the piston speed, looking from the undisturbed side (linear
+// interpolation between bins); U_s is the least-squares slope of the front position against
+// time over the fit window; the shocked state is the count-weighted mean of the bins between
+// the piston and the front (a margin of `margin_bins` bins kept from each). Rankine–Hugoniot
+// cross-checks: P = ρ₀ U_s U_p and ρ = ρ₀ U_s/(U_s − U_p).
+#include <string>
+#include <vector>
+
+#include "shockfield/md/diagnostics/profiles.hpp"
+
+namespace shockfield::md {
+
+struct HugoniotState {
+  double us = NAN;            ///< shock speed, km/s
+  double up = NAN;            ///< mean particle speed behind the front, km/s
+  double piston_speed = NAN;  ///< km/s
+  double pressure = NAN;      ///< P_axis from the virial, GPa
+  double pressure_rh = NAN;   ///< ρ₀ U_s U_p, GPa
+  double density = NAN;       ///< g/cm³
+  double density_rh = NAN;    ///< ρ₀ U_s/(U_s − U_p), g/cm³
+  double density0 = NAN;      ///< g/cm³, ahead of the front
+  double temperature = NAN;   ///< K
+  int frames = 0;             ///< profiles used in the fit window
+  std::string note;           ///< why a value is missing, if one is
+};
+
+/// Front position (Å) in one profile, NaN when no bin exceeds half the piston speed.
+double front_position(const Profile& profile, int axis, int side, double piston_speed);
+
+/// `piston_speed` in Å/ps along side·axis, `wall(t)` the piston position, frames in time order.
+/// The fit window is the last (1 − skip_fraction) of the frames' time span.
+HugoniotState extract_hugoniot(const std::vector<Profile>& frames, int axis, int side,
+                               double piston_speed, double wall0, double wall_t0,
+                               double skip_fraction = 0.3, int margin_bins = 3);
+
+std::string hugoniot_toml(const HugoniotState& s);
+
+}  // namespace shockfield::md

@@ -1,0 +1,125 @@
+#include "shockfield/md/run_output.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+#include "shockfield/core/units.hpp"
+#include "shockfield/io/extxyz.hpp"
+#include "shockfield/io/lammps_dump.hpp"
+#include "shockfield/md/diagnostics/profiles.hpp"
+
+namespace shockfield::md {
+
+namespace fs = std::filesystem;
+using units::metal::mvv2e;
+using units::metal::nktv2p;
+
+namespace {
+
+const std::vector<std::string> kThermoColumns{
+    "step", "time_ps", "temperature_K", "pe_eV", "ke_eV", "etotal_eV", "econserved_eV",
+    "press_bar", "pxx_bar", "pyy_bar", "pzz_bar", "pxy_bar", "pxz_bar", "pyz_bar",
+    "volume_A3", "lx_A", "ly_A", "lz_A", "neighbor_rebuilds"};
+
+std::int64_t frame_step(const fs::path& file) {
+  const std::string stem = file.stem().string();  // dump.<step>
+  return std::stoll(stem.substr(stem.find('.') + 1));
+}
+
+// Per-atom columns computed from the force evaluation, in LAMMPS conventions: pe (eV), ke (eV),
+// stress/atom s_ab = −(m v_a v_b + W_ab) in bar·Å³ (compute stress/atom, units "pressure*volume").
+std::vector<double> computed_column(const Simulation& sim, const std::string& field) {
+  const Atoms& a = sim.atoms;
+  std::vector<double> out(a.nlocal, 0.0);
+  const bool per_atom = sim.forces.per_atom && sim.forces.energy_atom.size() == a.nlocal;
+  static const std::vector<std::string> stress{"sxx", "syy", "szz", "sxy", "sxz", "syz"};
+  static const int comp[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+  for (std::size_t i = 0; i < a.nlocal; ++i) {
+    if (field == "pe") {
+      out[i] = per_atom ? sim.forces.energy_atom[i] : NAN;
+    } else if (field == "ke") {
+      out[i] = 0.5 * mvv2e * a.mass_of(i) * a.v[i].squaredNorm();
+    } else {
+      const auto k = static_cast<std::size_t>(std::find(stress.begin(), stress.end(), field) - stress.begin());
+      const double kin = mvv2e * a.mass_of(i) * a.v[i][comp[k][0]] * a.v[i][comp[k][1]];
+      out[i] = per_atom ? -(kin + sim.forces.virial_atom[i][static_cast<int>(k)]) * nktv2p : NAN;
+    }
+  }
+  return out;
+}
+
+bool is_computed(const std::string& f) {
+  return f == "pe" || f == "ke" || (f.size() == 3 && f[0] == 's');
+}
+
+}  // namespace
+
+RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::optional<std::int64_t> resume_step)
+    : folder_(folder), profiles_file_(folder / "profiles.csv"), spec_(spec) {
+  const double* keep = nullptr;
+  double keep_value = 0;
+  if (resume_step) {
+    keep_value = static_cast<double>(*resume_step);
+    keep = &keep_value;
+  }
+  thermo_ = io::CsvWriter(folder / "thermo.csv", kThermoColumns, keep);
+  if (spec.profile_every > 0) profiles_ = io::CsvWriter(profiles_file_, profile_columns(), keep);
+  if (spec.dump_every > 0) {
+    fs::create_directories(folder / "dumps");
+    if (resume_step)
+      for (const auto& entry : fs::directory_iterator(folder / "dumps"))
+        if (frame_step(entry.path()) > *resume_step) fs::remove(entry.path());
+  }
+  if (resume_step) last_thermo_step_ = last_frame_step_ = *resume_step;
+}
+
+bool RunOutput::dump_needs_per_atom() const {
+  for (const auto& f : spec_.dump_fields)
+    if (f == "pe" || (f.size() == 3 && f[0] == 's')) return true;
+  return false;
+}
+
+bool RunOutput::needs_per_atom(std::int64_t step) const {
+  if (spec_.profile_every > 0 && step % spec_.profile_every == 0) return true;
+  return spec_.dump_every > 0 && step % spec_.dump_every == 0 && dump_needs_per_atom();
+}
+
+void RunOutput::write(const Simulation& sim, bool force_thermo) {
+  if ((sim.step % spec_.thermo_every == 0 || force_thermo) && sim.step != last_thermo_step_) write_thermo(sim);
+  if (sim.step == last_frame_step_) return;
+  last_frame_step_ = sim.step;
+  if (spec_.profile_every > 0 && sim.step % spec_.profile_every == 0) {
+    const Profile p = bin_profile(sim, spec_.profile_axis, spec_.profile_bin_width);
+    for (std::size_t b = 0; b < p.bins.size(); ++b) profiles_.row(profile_row(p, b));
+  }
+  if (spec_.dump_every > 0 && sim.step % spec_.dump_every == 0) write_dump(sim);
+}
+
+void RunOutput::write_thermo(const Simulation& sim) {
+  last_thermo_step_ = sim.step;
+  const ThermoState t = sim.thermo();
+  double added = 0;
+  for (const auto& fix : sim.fixes) added += fix->energy_added();
+  const Vec3 l = sim.box.length();
+  thermo_.row({static_cast<double>(sim.step), sim.time, t.temperature, t.potential, t.kinetic,
+               t.potential + t.kinetic, t.potential + t.kinetic - added, t.pressure, t.pressure_tensor[0],
+               t.pressure_tensor[1], t.pressure_tensor[2], t.pressure_tensor[3], t.pressure_tensor[4],
+               t.pressure_tensor[5], t.volume, l.x(), l.y(), l.z(), static_cast<double>(sim.rebuilds)});
+}
+
+void RunOutput::write_dump(const Simulation& sim) const {
+  std::vector<std::string> basic;
+  for (const auto& f : spec_.dump_fields)
+    if (!is_computed(f)) basic.push_back(f);
+  io::DumpFrame frame = io::make_dump_frame(sim.step, sim.box, sim.atoms, basic);
+  for (const auto& f : spec_.dump_fields)
+    if (is_computed(f)) frame.set_column(f, computed_column(sim, f));
+  const std::string ext = spec_.dump_format == "extxyz" ? "xyz" : "lammpstrj";
+  const fs::path file = folder_ / "dumps" / fmt::format("dump.{}.{}", sim.step, ext);
+  std::ofstream out(file);
+  if (spec_.dump_format == "extxyz") io::write_extxyz_frame(out, frame, sim.atoms.type_names);
+  else io::write_dump_frame(out, frame, {spec_.dump_full_precision});
+}
+
+}  // namespace shockfield::md

@@ -1,0 +1,39 @@
+#pragma once
+// What an MD run writes while it runs: thermo.csv (one row every thermo_every steps),
+// profiles.csv (binned profiles every profile_every steps), dumps/ (one file per frame, LAMMPS
+// text dump or extended XYZ, so a resumed run simply removes frames past its checkpoint; OVITO
+// opens the series as dumps/dump.*.lammpstrj). Rows and frames are flushed when written.
+#include <filesystem>
+#include <optional>
+
+#include "shockfield/io/csv_writer.hpp"
+#include "shockfield/md/case_file.hpp"
+#include "shockfield/md/simulation.hpp"
+
+namespace shockfield::md {
+
+class RunOutput {
+ public:
+  /// `resume_step`: a resumed run keeps rows and frames up to that step and rewrites the rest.
+  RunOutput(const std::filesystem::path& folder, const OutputSpec& spec,
+            std::optional<std::int64_t> resume_step);
+
+  /// Whether step `step` writes something that needs per-atom energies and virials.
+  bool needs_per_atom(std::int64_t step) const;
+  /// Writes whatever is due at the simulation's current step.
+  void write(const Simulation& sim, bool force_thermo = false);
+
+  const std::filesystem::path& profiles_file() const { return profiles_file_; }
+
+ private:
+  void write_thermo(const Simulation& sim);
+  void write_dump(const Simulation& sim) const;
+  bool dump_needs_per_atom() const;
+
+  std::filesystem::path folder_, profiles_file_;
+  OutputSpec spec_;
+  io::CsvWriter thermo_, profiles_;
+  std::int64_t last_thermo_step_ = -1, last_frame_step_ = -1;
+};
+
+}  // namespace shockfield::md

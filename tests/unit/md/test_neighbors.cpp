@@ -1,0 +1,89 @@
+// Half neighbour lists with ghost atoms hold each physical pair exactly once, including boxes
+// thinner than the cutoff (several periodic images of one pair).
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "md_fixture.hpp"
+#include "shockfield/md/force_evaluation.hpp"
+#include "shockfield/md/ghosts.hpp"
+
+using namespace shockfield;
+using namespace shockfield::md;
+
+namespace {
+
+// Brute force: Σ over pairs and periodic images of the LJ energy (ε, σ, r_c as argon_lj()).
+double brute_force_lj(const Atoms& a, const geometry::Box& box, double rc) {
+  const double eps = 0.0104, sig = 3.4;
+  const Vec3 l = box.length();
+  const int ni = static_cast<int>(std::ceil(rc / l.x())), nj = static_cast<int>(std::ceil(rc / l.y())),
+            nk = static_cast<int>(std::ceil(rc / l.z()));
+  double e = 0;
+  for (std::size_t i = 0; i < a.nlocal; ++i)
+    for (std::size_t j = 0; j < a.nlocal; ++j)
+      for (int p = -ni; p <= ni; ++p)
+        for (int q = -nj; q <= nj; ++q)
+          for (int r = -nk; r <= nk; ++r) {
+            if (i == j && p == 0 && q == 0 && r == 0) continue;
+            const Vec3 d = a.x[j] + Vec3(p * l.x(), q * l.y(), r * l.z()) - a.x[i];
+            const double r2 = d.squaredNorm();
+            if (r2 >= rc * rc) continue;
+            const double s6 = std::pow(sig * sig / r2, 3);
+            e += 0.5 * 4 * eps * (s6 * s6 - s6);
+          }
+  return e;
+}
+
+}  // namespace
+
+TEST(NeighborList, EveryPhysicalPairOnceInAPeriodicBox) {
+  geometry::Box box;
+  Atoms atoms = fixture::fcc_atoms(3.615, {4, 4, 4}, box, 63.55);
+  fixture::perturb(atoms, 0.2, 3);
+  const double cut = 5.0;
+  rebuild_ghosts(atoms, box, cut);
+  geometry::NeighborList list;
+  geometry::build_neighbor_list(atoms.x, atoms.nlocal, cut, true, list);
+  // Count pairs by (owner i, owner j, rounded separation) and compare with brute force.
+  std::map<std::tuple<long, long, long, long, long>, int> seen;
+  auto key = [&](std::size_t i, int j, const Vec3& d) {
+    const long a = static_cast<long>(std::min<std::size_t>(i, j)), b = static_cast<long>(std::max<std::size_t>(i, j));
+    const Vec3 s = (static_cast<std::size_t>(j) > i ? d : Vec3(-d)) * 1000.0;
+    return std::make_tuple(a, b, std::lround(s.x()), std::lround(s.y()), std::lround(s.z()));
+  };
+  for (std::size_t i = 0; i < list.nlocal(); ++i)
+    for (auto k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+      const int j = list.neighbors[k];
+      const int owner = static_cast<std::size_t>(j) < atoms.nlocal ? j : atoms.ghost_owner[j - atoms.nlocal];
+      const Vec3 d = atoms.x[j] - atoms.x[i];
+      if (d.norm() < cut) ++seen[key(i, owner, d)];
+    }
+  std::size_t expected = 0;
+  for (std::size_t i = 0; i < atoms.nlocal; ++i)
+    for (std::size_t j = i + 1; j < atoms.nlocal; ++j)
+      if (box.minimum_image(atoms.x[j] - atoms.x[i]).norm() < cut) ++expected;
+  std::size_t found = 0;
+  for (const auto& [k, count] : seen) {
+    EXPECT_EQ(count, 1);
+    found += static_cast<std::size_t>(count);
+  }
+  EXPECT_EQ(found, expected);
+}
+
+TEST(NeighborList, ThinBoxSumsEveryPeriodicImage) {
+  // 2×2×1 cells of 3.615 Å: z is thinner than the 8.5 Å cutoff, so a pair has several images.
+  geometry::Box box;
+  Atoms atoms = fixture::fcc_atoms(3.615, {2, 2, 1}, box, 39.95);
+  fixture::perturb(atoms, 0.1, 5);
+  auto lj = fixture::argon_lj();
+  geometry::NeighborList list;
+  rebuild_ghosts(atoms, box, lj->cutoff() + 0.5);
+  geometry::build_neighbor_list(atoms.x, atoms.nlocal, lj->cutoff() + 0.5, true, list);
+  ForceResult result;
+  evaluate_forces(atoms, *lj, list, result, false);
+  EXPECT_NEAR(result.energy, brute_force_lj(atoms, box, 8.5), 1e-10 * std::abs(result.energy));
+  Vec3 total = Vec3::Zero();
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) total += atoms.f[i];
+  EXPECT_LT(total.norm(), 1e-10);
+}
