@@ -1,0 +1,28 @@
+#pragma once
+// Bulk artificial viscosity (von Neumann & Richtmyer 1950, linear term of Landshoff 1955), added
+// to the pressure of a compressing point so that shocks spread over a few cells instead of
+// ringing:
+//   q = ρ·ℓ·(C_Q·ℓ·(∇·v)² − C_L·c·∇·v)   for ∇·v < 0,   q = 0 otherwise,
+// with ℓ the cell size and c the sound speed. Defaults C_Q = 2.0, C_L = 0.3 are ours, set on the
+// seed-aluminium 1000 m/s symmetric impact (tests/unit/mpm/test_aluminium_impact.cpp): the finite
+// element defaults of LS-DYNA's *CONTROL_BULK_VISCOSITY (Q1 = 1.5, Q2 = 0.06) leave enough ringing
+// behind an MPM shock (±8% stress) that the overshoot raises the eq.-7 temperature rise by ~20%;
+// with these the mean state is unchanged, the ringing ~6%, the temperature within 1%.
+#include <string>
+
+namespace shockfield::materials {
+
+struct ArtificialViscosity {
+  double quadratic = 2.0;  ///< C_Q [-]
+  double linear = 0.3;    ///< C_L [-]
+
+  void validate(const std::string& where) const;
+  /// The evaluation function: q [Pa] for density ρ, sound speed c, velocity divergence div_v
+  /// [1/s] and length ℓ [m].
+  double pressure(double rho, double sound_speed, double div_v, double length) const {
+    if (div_v >= 0.0) return 0.0;
+    return rho * length * (quadratic * length * div_v * div_v - linear * sound_speed * div_v);
+  }
+};
+
+}  // namespace shockfield::materials

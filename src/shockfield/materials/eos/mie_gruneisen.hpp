@@ -1,0 +1,48 @@
+#pragma once
+// Mie-Grüneisen equation of state referenced to the linear Us-Up shock Hugoniot (seed 000,
+// §2.2.1, eqs. 5-6). SI units: density kg/m³, specific internal energy J/kg, pressure Pa.
+//
+//   P(ρ, e) = P_H(V) + (γ/V)·[e − E_H(V)],   γ/V = ργ = ρ0γ0            (eq. 5)
+//   P_H = ρ0c0²η / (1 − λη)²  for V ≤ V0 (η = 1 − V/V0 ≥ 0)              (eq. 6, compression)
+//   P_H = ρ0c0²η              for V > V0 (tension, η < 0)                (eq. 6, tension)
+//   E_H = ½·P_H·(V0 − V)      (Rankine-Hugoniot energy jump from P = 0, e = 0)
+//
+// The reference state (ρ0, e = 0) has zero pressure. Eq. 6 as printed in the seed reads
+// ρ0c0²(V/V0 − 1) on the tension branch, which would make stretched material push outwards;
+// we use the sign that continues the compression branch with the same slope (the printed sign
+// is a typo: the compression branch tends to ρ0c0²(1 − V/V0) as V → V0).
+#include <string>
+
+namespace shockfield::materials {
+
+struct MieGruneisen {
+  double rho0 = 0.0;    ///< reference density ρ0 [kg/m³]
+  double c0 = 0.0;      ///< bulk sound speed, intercept of Us = c0 + λ·Up [m/s]
+  double lambda = 0.0;  ///< slope λ of Us = c0 + λ·Up [-]
+  double gamma0 = 0.0;  ///< Grüneisen coefficient at ρ0; ργ = ρ0γ0 [-]
+
+  /// Throws InputError naming the parameter when a value is out of range; `where` prefixes it.
+  void validate(const std::string& where) const;
+
+  /// The evaluation function: pressure P(ρ, e) of eq. 5 [Pa]. RunError beyond the Hugoniot
+  /// singularity η = 1/λ.
+  double pressure(double rho, double e) const;
+
+  /// Hugoniot pressure P_H(ρ) (eq. 6) [Pa].
+  double hugoniot_pressure(double rho) const;
+  /// Hugoniot specific energy E_H(ρ) = ½P_H(V0 − V) [J/kg].
+  double hugoniot_energy(double rho) const;
+  /// ∂P/∂e at fixed ρ: γ/V = ρ0γ0 [kg/m³].
+  double energy_coefficient() const { return rho0 * gamma0; }
+  /// Isentropic bulk sound speed c = √(∂P/∂ρ|_e + P/ρ²·∂P/∂e|_ρ) [m/s].
+  double sound_speed(double rho, double e) const;
+  /// Shock speed of the linear Hugoniot Us = c0 + λ·Up [m/s].
+  double shock_speed(double up) const { return c0 + lambda * up; }
+  /// Bulk modulus at the reference state ρ0c0² [Pa].
+  double bulk_modulus() const { return rho0 * c0 * c0; }
+
+ private:
+  double compression(double rho) const;  // η = 1 − ρ0/ρ, checked against 1/λ
+};
+
+}  // namespace shockfield::materials

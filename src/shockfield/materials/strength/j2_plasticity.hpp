@@ -1,0 +1,55 @@
+#pragma once
+// J2 (von Mises) plasticity for the deviatoric stress (seed 000, §2.2.1, eqs. 1-4): isotropic
+// linear elasticity s = 2G·e^e with G = E/(2(1+ν)) (the seed's s = [E/(1+ν)]e^e), the yield
+// criterion √(3/2)‖ξ‖ = σ_Y (eq. 3) on the shifted stress ξ = s − α, and linear hardening
+// σ_Y = σ_Y0 + E_tan·ε̄p (eq. 4), where ε̄p = Σ√(2/3)‖Δe^p‖ is the accumulated equivalent
+// plastic strain (equal to the plastic strain of a uniaxial tension test).
+//
+// Mixed hardening (Hughes 1984; Simo & Hughes, Computational Inelasticity, 1998, §3.3): a
+// fraction β of E_tan hardens isotropically and 1 − β kinematically through the back stress α,
+// dα = (2/3)(1 − β)E_tan·Δe^p. β = 1 (default) is eq. 4 exactly.
+//
+// The update is the radial return (Wilkins 1964; Simo & Hughes Box 3.2):
+//   ξ* = s + 2GΔe − α,  f = √(3/2)‖ξ*‖ − σ_Y(ε̄p),  Δε̄p = f / (3G + E_tan)  if f > 0,
+//   n = ξ*/‖ξ*‖,  Δe^p = √(3/2)Δε̄p·n,  s = s + 2G(Δe − Δe^p),  α += (2/3)(1−β)E_tan·Δe^p.
+#include <string>
+
+#include "shockfield/core/types.hpp"
+
+namespace shockfield::materials {
+
+struct J2Plasticity {
+  double shear_modulus = 0.0;        ///< G [Pa]
+  double yield_stress0 = 0.0;        ///< σ_Y0 [Pa]
+  double tangent_modulus = 0.0;      ///< E_tan of eq. 4 [Pa]
+  double isotropic_fraction = 1.0;   ///< β: 1 isotropic, 0 kinematic [-]
+
+  /// From Young's modulus E and Poisson's ratio ν (G = E/(2(1+ν))).
+  static J2Plasticity from_young(double young, double poisson, double yield0, double tangent,
+                                 double isotropic_fraction = 1.0);
+
+  /// Deviatoric state of one material point.
+  struct State {
+    Mat3 s = Mat3::Zero();            ///< deviatoric Cauchy stress [Pa]
+    Mat3 back_stress = Mat3::Zero();  ///< α [Pa]
+    double plastic_strain = 0.0;      ///< ε̄p [-]
+  };
+  /// What one update did: the plastic strain increment (traceless) and its equivalent measure.
+  struct Increment {
+    Mat3 plastic = Mat3::Zero();   ///< Δe^p
+    double equivalent = 0.0;       ///< Δε̄p = √(2/3)‖Δe^p‖
+  };
+
+  void validate(const std::string& where) const;
+  /// Current yield stress σ_Y(ε̄p) (eq. 4) [Pa].
+  double yield_stress(double plastic_strain) const;
+  /// The evaluation function: advance `state` by the traceless strain increment `de`.
+  Increment update(State& state, const Mat3& de) const;
+};
+
+/// Equivalent (von Mises) stress √(3/2)‖s‖ of eq. 3 [Pa].
+double von_mises(const Mat3& s);
+/// Traceless part of a tensor.
+Mat3 deviator(const Mat3& a);
+
+}  // namespace shockfield::materials

@@ -1,0 +1,36 @@
+#pragma once
+// Temperature of a material point (seed 000, §2.2.1): heating by shock compression along the
+// Hugoniot (eq. 7) and by plastic work (eq. 8), in increments as the seed suggests.
+//
+//   dT_H/dV = c0²λ(V0 − V)² / (c_v[(λ−1)V0 − λV]³) − (γ/V)·T          (eq. 7)
+//   dT_p    = dW_p / c_v                                                (eq. 8)
+//
+// with γ/V = ρ0γ0 (ργ = ρ0γ0). Eq. 7 is applied while a point is compressed beyond the smallest
+// specific volume it has reached so far (its "shock volume": a new, stronger shock state).
+// Otherwise only the isentropic part −(γ/V)T is kept: release from a shocked state follows the
+// isentrope, not the Hugoniot, so the entropy a shock deposited is not taken back, and the
+// ringing behind a numerical shock front does not pump heat in. Heat conduction
+// (conductivity k) is recorded for completeness but not solved: over the ns-µs times of the
+// seed's MPM studies it is negligible ("The thermal process is much slower", §4.2.2).
+#include <string>
+
+#include "shockfield/materials/eos/mie_gruneisen.hpp"
+
+namespace shockfield::materials {
+
+struct Thermal {
+  double heat_capacity = 0.0;        ///< c_v [J/(kg·K)]
+  double conductivity = 0.0;         ///< k [W/(m·K)], not used by the explicit update
+  double initial_temperature = 300;  ///< T0 [K]
+
+  void validate(const std::string& where) const;
+  /// dT/dV along the Hugoniot of `eos` at specific volume v and temperature T (eq. 7) [K·kg/m³].
+  double hugoniot_slope(const MieGruneisen& eos, double v, double temperature) const;
+  /// The evaluation function: temperature after the specific volume changes from v_old to v_new
+  /// and the specific plastic work grows by dwp [J/kg] (eqs. 7-8, second-order Runge-Kutta in V).
+  /// `shock_volume` is the smallest specific volume reached so far; it is updated.
+  double advance(const MieGruneisen& eos, double v_old, double v_new, double temperature, double dwp,
+                 double& shock_volume) const;
+};
+
+}  // namespace shockfield::materials

@@ -1,0 +1,68 @@
+#pragma once
+// The MPM background grid (seed 000, §2.2.2): a regular mesh of cells in 2D plane strain (x, y;
+// one node layer in z) or 3D, fixed in space (the "convective" step of the seed maps back to the
+// original mesh every step). Each axis is either periodic (n nodes, index n wraps to 0) or
+// bounded (n + 1 nodes) with a free, stick or slip rigid wall on each face.
+#include <array>
+#include <vector>
+
+#include "shockfield/core/types.hpp"
+#include "shockfield/mpm/shape_functions.hpp"
+
+namespace shockfield::mpm {
+
+enum class Wall { Free, Stick, Slip };
+
+struct GridSpec {
+  int dim = 2;                               ///< 2 (plane strain) or 3
+  Vec3 origin = Vec3::Zero();                ///< position of node (0, 0, 0) [m]
+  Vec3 cell_size = Vec3::Constant(1e-6);     ///< h per axis [m]
+  std::array<int, 3> cells{1, 1, 1};         ///< cells per axis (z unused in 2D)
+  std::array<bool, 3> periodic{false, false, false};
+  std::array<std::array<Wall, 2>, 3> walls{};  ///< [axis][0 = low face, 1 = high face]
+
+  /// InputError naming the field when the grid is ill-formed.
+  void validate() const;
+  /// Extent of the grid along an axis [m].
+  double length(int axis) const { return cells[static_cast<std::size_t>(axis)] * cell_size[axis]; }
+};
+
+class Grid {
+ public:
+  explicit Grid(const GridSpec& spec);
+
+  const GridSpec& spec() const { return spec_; }
+  int dim() const { return spec_.dim; }
+  /// Nodes along an axis.
+  int nodes(int axis) const { return nodes_[static_cast<std::size_t>(axis)]; }
+  std::size_t size() const { return mass.size(); }
+  std::size_t flat(int i, int j, int k) const {
+    return (static_cast<std::size_t>(k) * static_cast<std::size_t>(nodes_[1]) + static_cast<std::size_t>(j)) *
+               static_cast<std::size_t>(nodes_[0]) + static_cast<std::size_t>(i);
+  }
+  std::array<int, 3> unflatten(std::size_t n) const;
+  /// Node index along an axis after periodic wrapping, or −1 when outside a bounded axis.
+  int wrap(int axis, int i) const;
+  double min_cell_size() const;
+
+  /// Wrap a position into the periodic extent; false when it lies outside a bounded axis.
+  bool wrap_position(Vec3& x) const;
+  /// Fit a 1D stencil into the grid: wrap along periodic axes; on bounded axes drop the weights
+  /// of nodes beyond the edge (a GIMP particle box overhanging a wall) and shift the window in.
+  /// False when the particle itself is outside.
+  bool fit(int axis, Weights1D& w) const;
+
+  /// Impose the rigid walls on nodal momenta: stick zeroes all components, slip the normal one.
+  void apply_walls(std::vector<Vec3>& momentum) const;
+
+  // Nodal fields.
+  std::vector<double> mass;
+  std::vector<Vec3> momentum;
+  std::vector<Vec3> force;
+
+ private:
+  GridSpec spec_;
+  std::array<int, 3> nodes_{};
+};
+
+}  // namespace shockfield::mpm

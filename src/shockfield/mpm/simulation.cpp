@@ -1,0 +1,167 @@
+#include "shockfield/mpm/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::mpm {
+
+void SimulationOptions::validate() const {
+  if (!(courant > 0.0 && courant <= 1.0))
+    throw InputError(fmt::format("mpm: courant = {} (expected 0 < C <= 1)", courant));
+  if (!(flip >= 0.0 && flip <= 1.0)) throw InputError(fmt::format("mpm: flip = {} (expected 0 <= flip <= 1)", flip));
+  if (!(min_time_step >= 0.0)) throw InputError(fmt::format("mpm: min_time_step = {} (expected >= 0 s)", min_time_step));
+}
+
+Simulation::Simulation(const GridSpec& grid, std::vector<materials::SolidMaterial> materials, Particles particles,
+                       SimulationOptions options)
+    : grid_(grid), materials_(std::move(materials)), particles_(std::move(particles)), options_(options) {
+  options_.validate();
+  if (particles_.size() == 0) throw InputError("mpm: the simulation has no particles");
+  for (const auto& m : materials_) m.validate();
+  double min_mass = particles_.mass[0];
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    const int id = particles_.material[p];
+    if (id < 0 || id >= static_cast<int>(materials_.size()))
+      throw InputError(fmt::format("mpm: particle {} has material index {} (expected 0..{})", p, id,
+                                   materials_.size() - 1));
+    if (options_.shape == ShapeKind::Gimp)
+      for (int a = 0; a < grid_.dim(); ++a)
+        if (!(particles_.half_size[p][a] > 0.0 && 2.0 * particles_.half_size[p][a] < grid_.spec().cell_size[a]))
+          throw InputError(fmt::format("mpm: GIMP needs particle half-widths in (0, h/2); particle {} has {} m along "
+                                       "axis {} with h = {} m", p, particles_.half_size[p][a], a,
+                                       grid_.spec().cell_size[a]));
+    min_mass = std::min(min_mass, particles_.mass[p]);
+  }
+  mass_floor_ = 1e-9 * min_mass;
+  wrap_particles();
+}
+
+void Simulation::add_hook(Stage stage, Hook hook) { hooks_[static_cast<std::size_t>(stage)].push_back(std::move(hook)); }
+
+void Simulation::run_hooks(Stage stage) {
+  for (auto& h : hooks_[static_cast<std::size_t>(stage)]) h(*this);
+}
+
+double Simulation::stable_time_step() const {
+  double fastest = 0.0;
+  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+#pragma omp parallel for schedule(static) reduction(max : fastest)
+  for (std::ptrdiff_t q = 0; q < n; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    fastest = std::max(fastest, particles_.state[p].sound_speed + particles_.v[p].norm());
+  }
+  return options_.courant * grid_.min_cell_size() / fastest;
+}
+
+void Simulation::step(double max_dt) {
+  dt_ = stable_time_step();
+  if (max_dt > 0.0) dt_ = std::min(dt_, max_dt);
+  if (!(std::isfinite(dt_) && dt_ > 0.0) || dt_ < options_.min_time_step)
+    throw RunError(fmt::format("mpm: time step {} s at t = {} s (step {}) is not usable (minimum {} s)", dt_, time_,
+                               steps_, options_.min_time_step));
+  run_hooks(Stage::BeforeStep);
+
+  transfer_.build(grid_, particles_, options_.shape);
+  transfer_.to_grid(grid_, particles_, true);
+  update_grid();
+  run_hooks(Stage::AfterGridUpdate);
+  if (options_.scheme == UpdateScheme::USL) {
+    grid_velocity_gradients();
+    grid_to_particles();
+  } else {
+    grid_to_particles();
+    transfer_.to_grid(grid_, particles_, false);  // MUSL: remap the updated momenta
+    grid_.apply_walls(grid_.momentum);
+    grid_velocity_gradients();
+  }
+  update_materials();
+  wrap_particles();
+  time_ += dt_;
+  ++steps_;
+  run_hooks(Stage::EndOfStep);
+}
+
+void Simulation::run_until(double t_end) {
+  while (time_ < t_end * (1.0 - 1e-12)) step(t_end - time_);
+}
+
+void Simulation::update_grid() {
+  // m_i dv_i/dt = f_i (eq. 12), walls, then the force the walls leave (for the FLIP update).
+  old_momentum_ = grid_.momentum;
+  const auto n = static_cast<std::ptrdiff_t>(grid_.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) grid_.momentum[static_cast<std::size_t>(i)] += dt_ * grid_.force[static_cast<std::size_t>(i)];
+  grid_.apply_walls(grid_.momentum);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    grid_.force[u] = (grid_.momentum[u] - old_momentum_[u]) / dt_;
+  }
+}
+
+void Simulation::grid_to_particles() {
+  const double flip = options_.flip;
+  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < n; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    Vec3 accel = Vec3::Zero(), vel = Vec3::Zero();
+    transfer_.visit(grid_, p, [&](std::size_t i, double w, const Vec3&) {
+      if (grid_.mass[i] <= mass_floor_) return;
+      accel += (w / grid_.mass[i]) * grid_.force[i];
+      vel += (w / grid_.mass[i]) * grid_.momentum[i];
+    });
+    particles_.x[p] += dt_ * vel;
+    particles_.v[p] = flip * (particles_.v[p] + dt_ * accel) + (1.0 - flip) * vel;
+  }
+}
+
+void Simulation::grid_velocity_gradients() {
+  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < n; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    Mat3 l = Mat3::Zero();
+    transfer_.visit(grid_, p, [&](std::size_t i, double, const Vec3& grad) {
+      if (grid_.mass[i] > mass_floor_) l += (grid_.momentum[i] / grid_.mass[i]) * grad.transpose();
+    });
+    particles_.velocity_gradient[p] = l;
+  }
+}
+
+void Simulation::update_materials() {
+  const double length = grid_.min_cell_size();
+  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+  std::ptrdiff_t failed = -1;
+  std::string why;
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < n; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    const auto& mat = materials_[static_cast<std::size_t>(particles_.material[p])];
+    try {
+      mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], particles_.velocity_gradient[p], dt_,
+                 length);
+    } catch (const RunError& e) {
+#pragma omp critical(mpm_material_failure)
+      if (failed < 0 || q < failed) {
+        failed = q;
+        why = e.what();
+      }
+    }
+  }
+  if (failed >= 0)
+    throw RunError(fmt::format("mpm: particle {} at t = {} s (step {}): {}", failed, time_, steps_, why));
+}
+
+void Simulation::wrap_particles() {
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    if (!grid_.wrap_position(particles_.x[p]))
+      throw RunError(fmt::format("mpm: particle {} at ({}, {}, {}) m has left the grid at t = {} s", p,
+                                 particles_.x[p][0], particles_.x[p][1], particles_.x[p][2], time_));
+  }
+}
+
+}  // namespace shockfield::mpm

@@ -1,0 +1,84 @@
+#pragma once
+// Coarse 1D-like MPM strips for wave tests: a 2D plane-strain grid two cells wide, periodic along
+// x, so the motion along y is in uniaxial strain. Two bodies meet at y = 0.
+#include <algorithm>
+#include <map>
+#include <vector>
+
+#include "shockfield/materials/solid_material.hpp"
+#include "shockfield/mpm/sample_builders.hpp"
+#include "shockfield/mpm/simulation.hpp"
+
+namespace strip {
+
+using shockfield::Vec3;
+namespace mpm = shockfield::mpm;
+
+struct Setup {
+  double h = 1e-3;         // cell size [m]
+  int cells = 200;         // cells per body along y
+  double v_lower = 0.0;    // velocity of the body below y = 0 [m/s]
+  double v_upper = 0.0;    // velocity of the body above y = 0 [m/s]
+  mpm::SimulationOptions options{};
+};
+
+inline mpm::Simulation make(const Setup& s, const shockfield::materials::SolidMaterial& mat) {
+  const double len = s.cells * s.h, width = 2 * s.h;
+  mpm::Particles p;
+  mpm::Body lower{Vec3(0, -len, 0), Vec3(width, 0, 0), s.h / 2, Vec3(0, s.v_lower, 0), 0};
+  mpm::Body upper{Vec3(0, 0, 0), Vec3(width, len, 0), s.h / 2, Vec3(0, s.v_upper, 0), 0};
+  mpm::add_body(p, 2, lower, mat);
+  mpm::add_body(p, 2, upper, mat);
+  const double margin = 20 * s.h;
+  const auto grid = mpm::impact_grid(2, Vec3(0, -len - margin, 0), Vec3(width, len + margin, 0), s.h);
+  return mpm::Simulation(grid, {mat}, std::move(p), s.options);
+}
+
+/// Rows of particles (same y up to 1e-3 h) averaged: y, v_y, σ_yy, ρ, T, W_p.
+struct Row {
+  double y = 0, vy = 0, syy = 0, rho = 0, t = 0, wp = 0;
+};
+inline std::vector<Row> profile(const mpm::Particles& p, double h) {
+  std::map<long, std::pair<Row, int>> rows;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    // Points keep their lattice row in a strip (no lateral motion): bin by the initial row.
+    auto& [r, n] = rows[std::lround(p.x[i][1] / (0.25 * h))];
+    r.y += p.x[i][1];
+    r.vy += p.v[i][1];
+    r.syy += p.state[i].stress()(1, 1);
+    r.rho += p.density(i);
+    r.t += p.state[i].temperature;
+    r.wp += p.state[i].plastic_work;
+    ++n;
+  }
+  std::vector<Row> out;
+  for (auto& [key, rn] : rows) {
+    auto [r, n] = rn;
+    out.push_back({r.y / n, r.vy / n, r.syy / n, r.rho / n, r.t / n, r.wp / n});
+  }
+  return out;
+}
+
+/// Highest y where v_y, scanned from the top down, first reaches `level` (linear interpolation).
+inline double front_from_top(const std::vector<Row>& rows, double level) {
+  for (std::size_t i = rows.size() - 1; i > 0; --i) {
+    const Row &a = rows[i - 1], &b = rows[i];
+    if (a.vy >= level && b.vy < level) return b.y + (level - b.vy) / (a.vy - b.vy) * (a.y - b.y);
+  }
+  return 0.0;
+}
+
+/// Mean of a row field over y in [y0, y1].
+template <class F>
+double mean(const std::vector<Row>& rows, double y0, double y1, F field) {
+  double s = 0;
+  int n = 0;
+  for (const Row& r : rows)
+    if (r.y >= y0 && r.y <= y1) {
+      s += field(r);
+      ++n;
+    }
+  return n ? s / n : 0.0;
+}
+
+}  // namespace strip
