@@ -51,6 +51,10 @@ HugoniotState extract_hugoniot(const std::vector<Profile>& frames, int axis, int
     ++n;
     const double wall = wall0 + side * piston_speed * (p.time - wall_t0);
     const double width = p.bins.size() > 1 ? std::abs(p.bins[1].position - p.bins[0].position) : 1.0;
+    // The free end of the sample (partly filled bins, surface relaxation) is not bulk.
+    double far_end = side > 0 ? -1e300 : 1e300;
+    for (const ProfileBin& b : p.bins)
+      if (b.count > 0) far_end = side > 0 ? std::max(far_end, b.position) : std::min(far_end, b.position);
     for (const ProfileBin& b : p.bins) {
       if (b.count == 0) continue;
       const double from_wall = side * (b.position - wall), to_front = side * (front - b.position);
@@ -60,7 +64,7 @@ HugoniotState extract_hugoniot(const std::vector<Profile>& frames, int axis, int
         temp += b.count * b.temperature;
         press += b.count * b.pressure[axis];
         weight += b.count;
-      } else if (to_front < -margin_bins * width) {
+      } else if (to_front < -margin_bins * width && side * (far_end - b.position) > margin_bins * width) {
         rho0 += b.count * b.density;
         weight0 += b.count;
       }

@@ -4,7 +4,8 @@
 // axis first exceeds half the piston speed, looking from the undisturbed side (linear
 // interpolation between bins); U_s is the least-squares slope of the front position against
 // time over the fit window; the shocked state is the count-weighted mean of the bins between
-// the piston and the front (a margin of `margin_bins` bins kept from each). Rankine–Hugoniot
+// the piston and the front (a margin of `margin_bins` bins kept from each), the initial density
+// that of the bins ahead of the front (the same margin kept from the free end). Rankine–Hugoniot
 // cross-checks: P = ρ₀ U_s U_p and ρ = ρ₀ U_s/(U_s − U_p).
 #include <string>
 #include <vector>
