@@ -81,7 +81,11 @@ TEST_P(ElasticWave, SpeedAndStress) {
 INSTANTIATE_TEST_SUITE_P(Schemes, ElasticWave,
                          ::testing::Values(std::make_tuple(mpm::ShapeKind::Linear, mpm::UpdateScheme::MUSL),
                                            std::make_tuple(mpm::ShapeKind::Gimp, mpm::UpdateScheme::MUSL),
-                                           std::make_tuple(mpm::ShapeKind::Linear, mpm::UpdateScheme::USL)));
+                                           std::make_tuple(mpm::ShapeKind::Linear, mpm::UpdateScheme::USL)),
+                         [](const auto& info) {
+                           return std::string(std::get<0>(info.param) == mpm::ShapeKind::Gimp ? "Gimp" : "Linear") +
+                                  (std::get<1>(info.param) == mpm::UpdateScheme::USL ? "USL" : "MUSL");
+                         });
 
 // Elastic-plastic bar: halves at 300 m/s and 0, u_p = 150 m/s. Elastic precursor at c_L carrying
 // σ_HEL = 541.6 MPa, then the plastic wave at c_p to σ = σ_HEL + ρc_p(u_p − u_HEL) = 2.27 GPa.
