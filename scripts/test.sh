@@ -6,4 +6,6 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)"
+# Tests run side by side: idle OpenMP threads must sleep, not spin, or they starve each other.
+export OMP_WAIT_POLICY=passive
 ctest --preset release -j "$(nproc)"
