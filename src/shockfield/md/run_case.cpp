@@ -9,6 +9,7 @@
 #include "shockfield/core/progress.hpp"
 #include "shockfield/core/run_folder.hpp"
 #include "shockfield/core/units.hpp"
+#include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/lammps_data.hpp"
 #include "shockfield/md/case_file.hpp"
 #include "shockfield/md/checkpoint.hpp"
@@ -97,6 +98,11 @@ void report_hugoniot(const Simulation& sim, const RunOutput& output, const Outpu
   std::vector<Profile> frames;
   for (Profile& p : read_profiles_csv(output.profiles_file()))
     if (p.time >= piston->start_time() - 1e-12) frames.push_back(std::move(p));
+  io::CsvWriter front(folder / fmt::format("shock_front_{}.csv", stage.name),
+                      {"step", "time_ps", "front_A", "piston_A"});
+  for (const Profile& p : frames)
+    front.row({static_cast<double>(p.step), p.time, front_position(p, piston->axis(), piston->side(), piston->speed()),
+               piston->wall(p.time)});
   const HugoniotState h = extract_hugoniot(frames, piston->axis(), piston->side(), piston->speed(),
                                            piston->start_position(), piston->start_time());
   const fs::path file = folder / fmt::format("hugoniot_{}.toml", stage.name);

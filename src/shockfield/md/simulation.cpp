@@ -89,6 +89,11 @@ void Simulation::setup(bool per_atom) {
 
 void Simulation::advance(const std::function<bool(std::int64_t)>& want_per_atom) {
   for (auto& fix : fixes) fix->initial_integrate(*this);
+  // The drift of this step is Δt·v(t+Δt/2): its largest value tells a time step too large.
+  double vmax2 = 0;
+#pragma omp parallel for reduction(max : vmax2) schedule(static)
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) vmax2 = std::max(vmax2, atoms.v[i].squaredNorm());
+  max_drift_ = std::sqrt(vmax2) * dt;
   for (auto& fix : fixes) fix->post_integrate(*this);
   ++step;
   time += dt;
@@ -144,16 +149,15 @@ void Simulation::check_health() const {
                                    step, atoms.id[i], "xyz"[d], box.lo[d], box.hi[d], "xyz"[d], atoms.x[i][d]));
     }
   }
-  // A displacement of more than the skin in one step means the list missed pairs.
-  const double vmax2 = [&] {
-    double m = 0;
-    for (std::size_t i = 0; i < atoms.nlocal; ++i) m = std::max(m, atoms.v[i].squaredNorm());
-    return m;
-  }();
-  if (std::sqrt(vmax2) * dt > 0.5 * skin)
-    throw RunError(fmt::format("step {}: an atom moves {:.3g} Å per step, more than half the neighbour "
-                               "skin ({} Å); the time step ({} ps) is too large for these velocities",
-                               step, std::sqrt(vmax2) * dt, skin, dt));
+  if (!std::isfinite(forces.energy))
+    throw RunError(fmt::format("step {}: the potential energy is not finite; the time step ({} ps) is "
+                               "probably too large or two atoms overlap", step, dt));
+  // An atom that drifts more than half the skin in one step outruns the neighbour check and
+  // integrates its collisions badly: the time step is too large.
+  if (max_drift_ > 0.5 * skin)
+    throw RunError(fmt::format("step {}: an atom moved {:.3g} Å in one step, more than half the "
+                               "neighbour skin ({} Å); the time step ({} ps) is too large for these "
+                               "velocities", step, max_drift_, skin, dt));
 }
 
 }  // namespace shockfield::md

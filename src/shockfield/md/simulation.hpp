@@ -60,8 +60,8 @@ class Simulation {
   /// Restores a rebuild reference from a checkpoint and rebuilds ghosts and list from it.
   void restore_rebuild_state(const std::vector<Vec3>& x_rebuild, const geometry::Box& box_rebuild);
 
-  /// Throws RunError with a diagnosis if positions/velocities/forces are not finite or an atom
-  /// left a fixed boundary.
+  /// Throws RunError with a diagnosis if positions/velocities/forces/energy are not finite, an
+  /// atom left a fixed boundary, or an atom drifted more than half the skin in the last step.
   void check_health() const;
 
  private:
@@ -69,6 +69,7 @@ class Simulation {
   void shrink_wrap();
   std::vector<Vec3> x_rebuild_;
   geometry::Box box_rebuild_;
+  double max_drift_ = 0;  ///< largest drift of the last step, Å
 };
 
 }  // namespace shockfield::md
