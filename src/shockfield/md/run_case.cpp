@@ -17,6 +17,7 @@
 #include "shockfield/md/fixes/deform.hpp"
 #include "shockfield/md/fixes/langevin.hpp"
 #include "shockfield/md/fixes/nose_hoover.hpp"
+#include "shockfield/md/fixes/nose_hoover_npt.hpp"
 #include "shockfield/md/fixes/piston.hpp"
 #include "shockfield/md/minimize.hpp"
 #include "shockfield/md/potentials/registry.hpp"
@@ -59,6 +60,16 @@ Prepared prepare(const Config& root, const RunOptions& options) {
     } catch (const InputError& e) {
       stages[k].fail("group", e.what());
     }
+    StageSpec& s = p.md.stages[k];
+    if (s.ensemble != "npt") continue;
+    const geometry::Box& box = p.system.box;
+    const char* key = s.pressure_dims ? "pressure_dims" : "ensemble";
+    if (!s.pressure_dims) s.pressure_dims = std::array<bool, 3>{box.periodic(0), box.periodic(1), box.periodic(2)};
+    for (int d = 0; d < 3; ++d)
+      if ((*s.pressure_dims)[d] && !box.periodic(d))
+        stages[k].fail(key, fmt::format("npt can only change periodic dimensions; {} is not periodic", "xyz"[d]));
+    if (*s.pressure_dims == std::array<bool, 3>{false, false, false})
+      stages[k].fail(key, "npt needs at least one periodic dimension to barostat");
   }
   for (const auto& add : p.md.velocity_adds) p.add_groups.push_back(p.system.groups.find(add.group));
   root.check_unknown_keys();
@@ -82,6 +93,9 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   sim.fixes.clear();
   if (s.ensemble == "langevin") sim.fixes.push_back(std::make_unique<FixLangevin>(s.temperature, s.damping, seed, group));
   else if (s.ensemble == "nvt") sim.fixes.push_back(std::make_unique<FixNoseHoover>(s.temperature, s.damping, s.chain, group));
+  else if (s.ensemble == "npt")
+    sim.fixes.push_back(std::make_unique<FixNoseHooverNpt>(
+        NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims, s.couple_iso, s.chain}, group));
   else sim.fixes.push_back(std::make_unique<FixNve>(group));
   if (s.piston) {
     const PistonSpec& p = *s.piston;
@@ -93,7 +107,9 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
 
 void report_hugoniot(const Simulation& sim, const RunOutput& output, const OutputSpec& spec,
                      const StageSpec& stage, const fs::path& folder, Logger& log) {
-  const auto* piston = dynamic_cast<const FixPiston*>(sim.fixes.back().get());
+  const FixPiston* piston = nullptr;
+  for (const auto& fix : sim.fixes)
+    if (auto* p = dynamic_cast<const FixPiston*>(fix.get())) piston = p;
   if (!piston || spec.profile_every == 0) return;
   std::vector<Profile> frames;
   for (Profile& p : read_profiles_csv(output.profiles_file()))
