@@ -5,8 +5,8 @@ source "$(dirname "$0")/lib.bash"
 set -e
 base=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/tiny_cu.toml")
 
-expect_error "${base/skin = 1.0/skni = 1.0}" "bad.toml" "unknown key" "'md.skni' (line"
-expect_error "${base/timestep = 0.002/timestep = \"fast\"}" "bad.toml:" "md.timestep" "expected a number"
+expect_error "${base/skin = 1.0/skni = 1.0}" "case.toml" "unknown key" "'md.skni' (line"
+expect_error "${base/timestep = 0.002/timestep = \"fast\"}" "case.toml:" "md.timestep" "expected a number"
 expect_error "${base/timestep = 0.002/timestep = -0.002}" "md.timestep" "expected a number in (0, 0.1]"
 expect_error "${base/ensemble = \"nvt\"/ensemble = \"npe\"}" "stage[0].ensemble" "expected one of"
 expect_error "${base/steps = 100/}" "stage[0].steps" "missing required value"
@@ -24,7 +24,7 @@ style = \"eam\"
 file = \"Cu_u3.eam\"
 [md]
 timestep = 0.001" "key 'stage'" "at least one [[stage]]"
-expect_error "${base} = broken" "bad.toml:" "TOML syntax error"
+expect_error "${base} = broken" "case.toml:" "TOML syntax error"
 # Two atoms on top of each other (a data file with an overlap).
 cat > "$WORK/overlap.data" <<'DATA'
 overlap test

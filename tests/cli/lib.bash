@@ -5,19 +5,25 @@ ROOT="$2"
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
-# expect_error CASE_TEXT PATTERN...: the case must be rejected (exit 2), the message must contain
-# every pattern, and no run folder may be left behind.
-expect_error() {
-  local text="$1"; shift
-  printf '%s\n' "$text" > "$WORK/bad.toml"
+# run_expecting CODE CASE_TEXT PATTERN...: runs the case into $WORK/out; the exit code must be
+# CODE and stderr must contain every pattern.
+run_expecting() {
+  local expected="$1" text="$2"; shift 2
+  printf '%s\n' "$text" > "$WORK/case.toml"
+  rm -rf "$WORK/out"
   set +e
-  "$SF" run "$WORK/bad.toml" --output "$WORK/out" > "$WORK/stdout" 2> "$WORK/stderr"
+  "$SF" run "$WORK/case.toml" --output "$WORK/out" -q > "$WORK/stdout" 2> "$WORK/stderr"
   local code=$?
   set -e
-  [ $code -eq 2 ] || fail "exit code $code (expected 2) for: $text; stderr: $(cat "$WORK/stderr")"
+  [ $code -eq "$expected" ] || fail "exit code $code (expected $expected) for: $text; stderr: $(cat "$WORK/stderr")"
   for p in "$@"; do
     grep -qF -- "$p" "$WORK/stderr" || fail "message lacks '$p': $(cat "$WORK/stderr")"
   done
-  [ ! -e "$WORK/out" ] || fail "a run folder was left behind for: $text"
-  echo "ok: $(head -c 150 "$WORK/stderr")"
+  echo "ok: $(head -c 160 "$WORK/stderr")"
+}
+# expect_error CASE_TEXT PATTERN...: the case is rejected before running (exit 2) and no run
+# folder is left behind.
+expect_error() {
+  run_expecting 2 "$@"
+  [ ! -e "$WORK/out" ] || fail "a run folder was left behind for: $1"
 }

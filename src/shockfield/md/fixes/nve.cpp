@@ -5,25 +5,19 @@
 
 namespace shockfield::md {
 
-void FixNve::initial_integrate(Simulation& sim) {
+void FixNve::half_kick(Simulation& sim, bool drift) const {
   Atoms& a = sim.atoms;
   const double dtf = 0.5 * sim.dt * units::metal::ftm2v;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < a.nlocal; ++i) {
     if (!(a.mask[i] & group_bit_)) continue;
     a.v[i] += (dtf / a.mass_of(i)) * a.f[i];
-    a.x[i] += sim.dt * a.v[i];
+    if (drift) a.x[i] += sim.dt * a.v[i];
   }
 }
 
-void FixNve::final_integrate(Simulation& sim) {
-  Atoms& a = sim.atoms;
-  const double dtf = 0.5 * sim.dt * units::metal::ftm2v;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < a.nlocal; ++i) {
-    if (!(a.mask[i] & group_bit_)) continue;
-    a.v[i] += (dtf / a.mass_of(i)) * a.f[i];
-  }
-}
+void FixNve::initial_integrate(Simulation& sim) { half_kick(sim, true); }
+
+void FixNve::final_integrate(Simulation& sim) { half_kick(sim, false); }
 
 }  // namespace shockfield::md

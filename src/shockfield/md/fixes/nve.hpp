@@ -16,6 +16,8 @@ class FixNve : public Fix {
   void final_integrate(Simulation& sim) override;
 
  protected:
+  /// v ← v + ½Δt f/m for the group, then x ← x + Δt v if `drift`.
+  void half_kick(Simulation& sim, bool drift) const;
   std::uint32_t group_bit_;
 };
 
