@@ -8,6 +8,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/run_options.hpp"
 #include "shockfield/md/run_case.hpp"
+#include "shockfield/mpm/run_case.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -16,7 +17,7 @@ using Runner = void (*)(const Config&, const RunOptions&);
 
 // Explicit registry of the methods `run` knows, by the case file's `method` value.
 const std::map<std::string, Runner>& runners() {
-  static const std::map<std::string, Runner> table{{"md", &md::run_case}};
+  static const std::map<std::string, Runner> table{{"md", &md::run_case}, {"mpm", &mpm::run_case}};
   return table;
 }
 
@@ -40,7 +41,7 @@ void add_run_command(CLI::App& app) {
       "missing or out-of-range values are reported with file, key and line). The run writes a\n"
       "folder with log.txt, config.resolved.toml, thermo.csv, dumps and checkpoints.\n"
       "Ctrl-C or SIGTERM writes a checkpoint and stops; --resume continues from it.\n"
-      "Case-file keys: docs/md.md (method = \"md\").");
+      "Case-file keys: docs/md.md (method = \"md\"), docs/mpm.md (method = \"mpm\").");
   cmd->add_option("case", options->case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->output,
                   "Run folder (default: runs/<case file name without .toml>)");

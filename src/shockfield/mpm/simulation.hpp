@@ -53,6 +53,8 @@ class Simulation {
   double time() const { return time_; }
   long step_count() const { return steps_; }
   double last_time_step() const { return dt_; }
+  /// Sets the clock of a run restored from a checkpoint (particles restored by the caller).
+  void restore_clock(double time, long steps, double last_dt) { time_ = time, steps_ = steps, dt_ = last_dt; }
   const Grid& grid() const { return grid_; }
   Grid& grid() { return grid_; }
   const Particles& particles() const { return particles_; }

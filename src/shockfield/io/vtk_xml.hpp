@@ -1,0 +1,57 @@
+#pragma once
+// VTK XML writers for ParaView (https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html):
+// ImageData (.vti) for fields on a regular grid, PolyData (.vtp) for particles, and the .pvd
+// collection that indexes a time series of either. Arrays are Float64, written as ASCII text
+// (what `shockfield analyze` reads, analysis/field_reader) or base64 "binary" (a UInt64 byte
+// count, then the raw little-endian values, each base64-encoded on its own as VTK's writer does).
+// NaN marks a grid point without material (ParaView's blanking convention; analyze reads it as
+// a void cell).
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace shockfield::io {
+
+enum class VtkEncoding { Ascii, Base64 };
+
+struct VtkArray {
+  std::string name;
+  int components = 1;          ///< 1 (scalar) or 3 (vector)
+  std::vector<double> values;  ///< components × count, interleaved
+};
+
+/// Point data on (nx, ny, nz) grid points; x fastest. A 2D grid has nz = 1.
+struct VtkImage {
+  std::array<std::size_t, 3> points{1, 1, 1};
+  std::array<double, 3> origin{0, 0, 0};
+  std::array<double, 3> spacing{1, 1, 1};
+  std::vector<VtkArray> point_data;
+};
+
+void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkEncoding encoding);
+/// Points (x, y, z interleaved) with one vertex cell each, so every ParaView representation shows them.
+void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz, const std::vector<VtkArray>& point_data,
+               VtkEncoding encoding);
+
+/// RFC 4648 base64 of `size` bytes.
+std::string base64(const unsigned char* data, std::size_t size);
+
+/// A .pvd time-series index, rewritten (atomically) after every added frame.
+class PvdSeries {
+ public:
+  PvdSeries() = default;
+  /// Starts the index at `file`; with `keep_until` (a resumed run) the existing entries with
+  /// timestep <= *keep_until are kept and the others dropped.
+  explicit PvdSeries(std::filesystem::path file, const double* keep_until = nullptr);
+  /// Adds a frame; `data_file` is written relative to the .pvd's folder.
+  void add(double time, const std::string& data_file);
+  std::size_t size() const { return entries_.size(); }
+
+ private:
+  void write() const;
+  std::filesystem::path file_;
+  std::vector<std::pair<double, std::string>> entries_;
+};
+
+}  // namespace shockfield::io

@@ -1,0 +1,213 @@
+#include "shockfield/mpm/case_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/materials/library.hpp"
+
+namespace shockfield::mpm {
+namespace {
+
+constexpr const char* kAxes = "xyz";
+
+Wall read_wall(const Config& t, std::string_view key, const std::string& fallback) {
+  const std::string w = t.get_choice_or(key, {"free", "stick", "slip"}, fallback);
+  return w == "stick" ? Wall::Stick : w == "slip" ? Wall::Slip : Wall::Free;
+}
+
+Vec3 read_vec(const Config& t, std::string_view key, int dim, Range range = {}) {
+  const auto v = t.get_doubles(key, static_cast<std::size_t>(dim), range);
+  Vec3 out = Vec3::Zero();
+  for (int a = 0; a < dim; ++a) out[a] = v[static_cast<std::size_t>(a)];
+  return out;
+}
+
+// A library material with per-key overrides (seed 000 §4.1 parameters by default).
+materials::SolidMaterial read_material(const Config& t) {
+  materials::SolidMaterial m;
+  const std::string base = t.get_choice("library", materials::material_names());
+  m = materials::make_material(base);
+  m.name = t.get_string("name");
+  auto over = [&](std::string_view key, double& field, Range range) { field = t.get_double_or(key, field, range); };
+  over("rho0", m.eos.rho0, Range::positive());
+  over("c0", m.eos.c0, Range::positive());
+  over("lambda", m.eos.lambda, Range::closed(0.0, 10.0));
+  over("gamma0", m.eos.gamma0, Range::closed(0.0, 10.0));
+  if (t.has("young") || t.has("poisson")) {
+    const double young = t.get_double("young", Range::positive());
+    const double nu = t.get_double("poisson", {-1.0, 0.5, true, true});
+    m.strength.shear_modulus = young / (2.0 * (1.0 + nu));
+  }
+  over("yield_stress", m.strength.yield_stress0, Range::non_negative());
+  over("tangent_modulus", m.strength.tangent_modulus, Range::non_negative());
+  over("isotropic_fraction", m.strength.isotropic_fraction, Range::closed(0.0, 1.0));
+  over("heat_capacity", m.thermal.heat_capacity, Range::positive());
+  over("conductivity", m.thermal.conductivity, Range::non_negative());
+  over("initial_temperature", m.thermal.initial_temperature, Range::positive());
+  over("viscosity_quadratic", m.viscosity.quadratic, Range::non_negative());
+  over("viscosity_linear", m.viscosity.linear, Range::non_negative());
+  try {
+    m.validate();
+  } catch (const InputError& e) {
+    t.fail("library", e.what());
+  }
+  return m;
+}
+
+GridSpec read_grid(const Config& g) {
+  GridSpec s;
+  s.dim = static_cast<int>(g.get_int("dim", Range::closed(2, 3)));
+  const double h = g.get_double("cell_size", Range::positive());
+  s.cell_size = Vec3::Constant(h);
+  s.origin = read_vec(g, "lo", s.dim);
+  const Vec3 hi = read_vec(g, "hi", s.dim);
+  for (int a = 0; a < s.dim; ++a) {
+    const double cells = (hi[a] - s.origin[a]) / h;
+    const long n = std::lround(cells);
+    if (n < 1 || std::abs(cells - static_cast<double>(n)) > 1e-6)
+      g.fail("hi", fmt::format("hi - lo along {} is {} m: expected a whole number (>= 1) of cells of {} m", kAxes[a],
+                               hi[a] - s.origin[a], h));
+    s.cells[static_cast<std::size_t>(a)] = static_cast<int>(n);
+  }
+  const std::string lateral = g.get_choice_or("lateral", {"periodic", "free", "stick", "slip"}, "periodic");
+  for (int a = 0; a + 1 < s.dim; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    s.periodic[ua] = lateral == "periodic";
+    if (!s.periodic[ua]) s.walls[ua][0] = s.walls[ua][1] = read_wall(g, "lateral", lateral);
+  }
+  return s;
+}
+
+BodySpec read_body(const Config& b, const MpmCase& c, std::size_t index) {
+  BodySpec s;
+  const int dim = c.grid.dim;
+  const std::string material = b.get_string("material");
+  const auto it = std::find(c.material_names.begin(), c.material_names.end(), material);
+  if (it == c.material_names.end())
+    b.fail("material", fmt::format("no [[material]] named \"{}\" (body {})", material, index));
+  s.body.material = static_cast<int>(it - c.material_names.begin());
+  s.body.lo = read_vec(b, "lo", dim);
+  s.body.hi = read_vec(b, "hi", dim);
+  s.body.spacing = b.get_double_or("spacing", 0.5 * c.grid.cell_size[0], Range::positive());
+  if (c.loading == LoadingKind::None && b.has("velocity")) s.body.velocity = read_vec(b, "velocity", dim);
+  if (b.has("porosity")) {
+    VoidSpec v;
+    v.porosity = b.get_double("porosity", {0.0, 1.0, true, true});
+    v.mean_radius = b.get_double("void_radius", Range::positive());
+    v.radius_spread = b.get_double_or("void_radius_spread", 0.0, {0.0, 1.0, false, true});
+    v.seed = static_cast<std::uint64_t>(b.get_int_or("seed", 1, Range::non_negative()));
+    s.pores = v;
+  }
+  if (b.has("cavity_radius") || b.has("cavity_depth")) {
+    if (s.pores) b.fail("cavity_radius", "a body is either porous (porosity) or has one cavity, not both");
+    s.cavity = CavitySpec{b.get_double("cavity_depth", Range::non_negative()), b.get_double("cavity_radius", Range::positive())};
+  }
+  return s;
+}
+
+DiagnosticsSpec read_diagnostics(const std::optional<Config>& d, double default_bottom, double h) {
+  DiagnosticsSpec s;
+  s.ejecta_threshold = 2.0 * h;
+  if (!d) return s;
+  s.windows.bottom = d->get_double_or("window_bottom", default_bottom);
+  s.windows.heights = d->get_doubles_or("window_heights", {}, Range::positive());
+  s.histogram_times = d->get_doubles_or("histogram_times", {}, Range::non_negative());
+  if (!std::is_sorted(s.histogram_times.begin(), s.histogram_times.end()))
+    d->fail("histogram_times", "expected times in increasing order");
+  s.histogram_bins = static_cast<int>(d->get_int_or("histogram_bins", 50, Range::closed(2, 100000)));
+  s.histogram_all = d->get_choice_or("histogram_region", {"bottom", "all"}, "bottom") == "all";
+  s.ejecta = d->get_bool_or("ejecta", true);
+  s.ejecta_threshold = d->get_double_or("ejecta_threshold", s.ejecta_threshold, Range::positive());
+  if (!s.histogram_all && !s.histogram_times.empty() && s.windows.heights.empty())
+    d->fail("histogram_region", "\"bottom\" needs window_heights (or use \"all\")");
+  return s;
+}
+
+OutputSpec read_output(const std::optional<Config>& o, double end_time) {
+  OutputSpec s;
+  s.series_interval = end_time / 100.0;
+  if (!o) return s;
+  s.series_interval = o->get_double_or("series_interval", s.series_interval, Range::positive());
+  s.field_interval = o->get_double_or("field_interval", 0.0, Range::non_negative());
+  s.particles = o->get_bool_or("particles", true);
+  s.encoding = o->get_choice_or("vtk_encoding", {"ascii", "base64"}, "ascii") == "ascii" ? io::VtkEncoding::Ascii
+                                                                                        : io::VtkEncoding::Base64;
+  s.checkpoint_every = o->get_int_or("checkpoint_every", 0, Range::non_negative());
+  return s;
+}
+
+}  // namespace
+
+MpmCase read_mpm_case(const Config& root) {
+  MpmCase c;
+  const Config grid = root.table("grid");
+  c.grid = read_grid(grid);
+  const int axis = c.axis();
+  const auto ua = static_cast<std::size_t>(axis);
+
+  const Config solver = root.table("solver");
+  c.options.shape = solver.get_choice_or("shape", {"linear", "gimp"}, "gimp") == "gimp" ? ShapeKind::Gimp : ShapeKind::Linear;
+  c.options.scheme = solver.get_choice_or("scheme", {"musl", "usl"}, "musl") == "musl" ? UpdateScheme::MUSL : UpdateScheme::USL;
+  c.options.flip = solver.get_double_or("flip", 1.0, Range::closed(0.0, 1.0));
+  c.end_time = solver.get_double("end_time", Range::positive());
+  if (solver.has("time_step")) {
+    c.time_step = solver.get_double("time_step", Range::positive());
+    c.options.courant = 1.0;  // the CFL limit a fixed step is checked against
+  } else {
+    c.options.courant = solver.get_double_or("courant", 0.3, {0.0, 1.0, true, false});
+  }
+
+  const auto materials = root.tables("material");
+  if (materials.empty()) root.fail("material", "expected at least one [[material]] (name, library, overrides)");
+  for (const Config& m : materials) {
+    c.materials.push_back(read_material(m));
+    if (std::count(c.material_names.begin(), c.material_names.end(), c.materials.back().name))
+      m.fail("name", fmt::format("material name \"{}\" is used twice", c.materials.back().name));
+    c.material_names.push_back(c.materials.back().name);
+  }
+
+  const auto loading = root.optional_table("loading");
+  const std::string kind = loading ? loading->get_choice_or("type", {"wall", "symmetric", "tensile", "none"}, "none") : "none";
+  c.loading = kind == "wall" ? LoadingKind::Wall : kind == "symmetric" ? LoadingKind::Symmetric
+              : kind == "tensile" ? LoadingKind::Tensile : LoadingKind::None;
+  if (c.loading != LoadingKind::None) c.speed = loading->get_double("speed", Range::positive());
+  auto& shock_walls = c.grid.walls[ua];
+  if (c.loading == LoadingKind::Wall || c.loading == LoadingKind::Tensile) {
+    if (grid.has("low"))
+      grid.fail("low", fmt::format("the low face is the rigid wall of [loading] type \"{}\"; remove this key", kind));
+    shock_walls[0] = c.loading == LoadingKind::Tensile ? Wall::Stick : read_wall(*loading, "wall", "slip");
+    if (shock_walls[0] == Wall::Free) loading->fail("wall", "expected \"stick\" or \"slip\" for a wall impact");
+  } else {
+    shock_walls[0] = read_wall(grid, "low", "free");
+  }
+  shock_walls[1] = read_wall(grid, "high", "free");
+
+  const auto bodies = root.tables("body");
+  if (bodies.empty()) root.fail("body", "expected at least one [[body]] (material, lo, hi)");
+  double lowest = c.grid.origin[axis] + c.grid.length(axis);
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    c.bodies.push_back(read_body(bodies[k], c, k));
+    BodySpec& b = c.bodies.back();
+    lowest = std::min(lowest, b.body.lo[axis]);
+    if (c.loading != LoadingKind::None) {
+      b.body.velocity = Vec3::Zero();
+      b.body.velocity[axis] = c.loading == LoadingKind::Wall ? -c.speed : c.speed;
+    }
+  }
+
+  c.diagnostics = read_diagnostics(root.optional_table("diagnostics"), lowest, c.grid.cell_size[0]);
+  for (double t : c.diagnostics.histogram_times)
+    if (t > c.end_time) root.table("diagnostics").fail("histogram_times", fmt::format("{} s is after end_time {} s", t, c.end_time));
+  c.output = read_output(root.optional_table("output"), c.end_time);
+  try {
+    c.options.validate();
+  } catch (const InputError& e) {
+    solver.fail("courant", e.what());
+  }
+  return c;
+}
+
+}  // namespace shockfield::mpm

@@ -1,0 +1,29 @@
+#pragma once
+// MPM checkpoints (HDF5): every particle array and constitutive state, the clock, the output
+// counters and the cavity tracker, so that a resumed run continues bitwise as if never stopped
+// (same thread count; the solver keeps no other state between steps). Written to a temporary
+// file and renamed.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "shockfield/mpm/simulation.hpp"
+
+namespace shockfield::mpm {
+
+/// How far the driver's output schedule had got.
+struct OutputCounters {
+  std::int64_t series = 0;      ///< series rows written (row k at k·series_interval)
+  std::int64_t fields = 0;      ///< field frames written
+  std::int64_t histograms = 0;  ///< histogram times done
+};
+
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters,
+                      const std::vector<double>& cavity_state);
+
+/// Restores the particles and clock of `sim` (built from the same case file) and returns the
+/// counters; `cavity_state` receives the tracker state (empty when none was saved). InputError
+/// when the checkpoint does not fit the case.
+OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, std::vector<double>& cavity_state);
+
+}  // namespace shockfield::mpm

@@ -1,0 +1,204 @@
+#include "shockfield/mpm/run_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "shockfield/analysis/field_statistics.hpp"
+#include "shockfield/mpm/diagnostics.hpp"
+
+namespace shockfield::mpm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string window_label(double h) { return fmt::format("h{:g}um", h * 1e6); }
+
+double cross_section(const GridSpec& g) {
+  double s = 1.0;
+  for (int a = 0; a + 1 < g.dim; ++a) s *= g.length(a);
+  return s;
+}
+
+void append_window(std::vector<double>& row, const WindowStats& w) {
+  row.push_back(static_cast<double>(w.count));
+  row.push_back(w.bulk_density);
+  for (std::size_t q = 0; q < w.mean.size(); ++q) row.push_back(w.mean[q]), row.push_back(w.std[q]);
+  row.insert(row.end(), w.gradients.begin(), w.gradients.end());
+}
+
+}  // namespace
+
+RunOutput::RunOutput(const fs::path& folder, const MpmCase& c, std::optional<CavityTracker> cavity,
+                     std::optional<ResumePoint> resume)
+    : folder_(folder), case_(c), cavity_(std::move(cavity)) {
+  double keep_step = 0.0;
+  const double* keep = nullptr;
+  if (resume) keep_step = static_cast<double>(resume->step), keep = &keep_step;
+  series_ = io::CsvWriter(folder / "series.csv", columns(), keep);
+  if (c.output.field_interval > 0.0) {
+    fs::create_directories(folder / "fields");
+    const double* keep_time = resume ? &resume->time : nullptr;
+    grid_pvd_ = io::PvdSeries(folder / "grid.pvd", keep_time);
+    if (c.output.particles) particles_pvd_ = io::PvdSeries(folder / "particles.pvd", keep_time);
+  }
+  if (!c.diagnostics.histogram_times.empty()) fs::create_directories(folder / "histograms");
+}
+
+std::vector<std::string> RunOutput::columns() const {
+  const int dim = case_.grid.dim;
+  std::vector<std::string> cols{"step", "time_s", "dt_stable_s", "mass", "momentum_x", "momentum_y"};
+  if (dim == 3) cols.emplace_back("momentum_z");
+  for (const char* c : {"kinetic_J", "internal_J", "total_J", "top", "rot2", "div2", "strain_rate2"}) cols.emplace_back(c);
+  const auto names = quantity_names(dim);
+  for (const char* where : {"bottom", "top"})
+    for (double h : case_.diagnostics.windows.heights) {
+      const std::string p = fmt::format("{}_{}_", where, window_label(h));
+      cols.push_back(p + "count");
+      cols.push_back(p + "bulk_density");
+      for (const auto& n : names) cols.push_back(p + n + "_mean"), cols.push_back(p + n + "_std");
+      for (const char* g : {"rot2", "div2", "strain_rate2"}) cols.push_back(p + g);
+    }
+  if (cavity_)
+    for (const char* c : {"cavity_size", "cavity_horizontal", "cavity_vertical", "collapsibility", "v_up_above",
+                          "v_down_below"})
+      cols.emplace_back(c);
+  if (case_.diagnostics.ejecta)
+    for (const char* c : {"free_surface", "ejecta_mass", "ejecta_count", "ejecta_max_height"}) cols.emplace_back(c);
+  return cols;
+}
+
+void RunOutput::write_series(const Simulation& sim) {
+  const Particles& p = sim.particles();
+  const int dim = case_.grid.dim, axis = dim - 1;
+  const Totals t = totals(p);
+  std::vector<double> row{static_cast<double>(sim.step_count()), sim.time(), sim.stable_time_step(), t.mass,
+                          t.momentum[0], t.momentum[1]};
+  if (dim == 3) row.push_back(t.momentum[2]);
+  const double top = highest(p, axis);
+  const double inf = std::numeric_limits<double>::infinity();
+  const WindowStats all = window_stats(p, dim, -inf, inf, 1.0);
+  row.insert(row.end(), {t.kinetic, t.internal, t.total(), top});
+  row.insert(row.end(), all.gradients.begin(), all.gradients.end());
+  const double area = cross_section(case_.grid);
+  const double y1 = case_.diagnostics.windows.bottom;
+  for (double h : case_.diagnostics.windows.heights) append_window(row, window_stats(p, dim, y1, y1 + h, area));
+  for (double h : case_.diagnostics.windows.heights)
+    append_window(row, window_stats(p, dim, top - h, std::nextafter(top, inf), area));
+  if (cavity_) {
+    const CavityMeasure m = cavity_->measure(p, sim.time());
+    row.insert(row.end(), {m.size, m.horizontal, m.vertical, m.collapsibility, m.v_up_above, m.v_down_below});
+  }
+  if (case_.diagnostics.ejecta) {
+    const Ejecta e = ejecta(p, sim.grid(), case_.diagnostics.ejecta_threshold);
+    row.insert(row.end(), {e.surface, e.mass, e.count, e.max_height});
+  }
+  series_.row(row);
+}
+
+io::VtkImage grid_fields(const Simulation& sim) {
+  const Grid& grid = sim.grid();
+  const GridSpec& g = grid.spec();
+  const Particles& p = sim.particles();
+  io::VtkImage img;
+  for (int a = 0; a < 3; ++a) {
+    img.points[static_cast<std::size_t>(a)] = static_cast<std::size_t>(grid.nodes(a));
+    img.origin[static_cast<std::size_t>(a)] = g.origin[a];
+    img.spacing[static_cast<std::size_t>(a)] = a < g.dim ? g.cell_size[a] : 1.0;
+  }
+  const std::size_t nn = grid.size();
+  const char* names[] = {"temperature", "pressure", "density", "plastic_work"};
+  constexpr std::size_t ns = 4;
+  std::vector<double> mass(nn, 0.0), scalars(ns * nn, 0.0), vel(3 * nn, 0.0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    std::array<Weights1D, 3> w{};
+    for (int a = 0; a < g.dim; ++a) {
+      w[static_cast<std::size_t>(a)] = LinearShape::evaluate(p.x[i][a] - g.origin[a], g.cell_size[a], 0.0);
+      if (!grid.fit(a, w[static_cast<std::size_t>(a)])) return img;  // off the grid: no field frame
+    }
+    const double q[ns] = {p.state[i].temperature, -p.state[i].stress().trace() / 3.0, p.density(i), p.state[i].plastic_work};
+    for (int c = 0; c < w[2].count; ++c)
+      for (int b = 0; b < w[1].count; ++b)
+        for (int a = 0; a < w[0].count; ++a) {
+          const std::size_t n = grid.flat(grid.wrap(0, w[0].base + a), grid.wrap(1, w[1].base + b), grid.wrap(2, w[2].base + c));
+          const double mw = p.mass[i] * w[0].w[static_cast<std::size_t>(a)] * w[1].w[static_cast<std::size_t>(b)] *
+                            w[2].w[static_cast<std::size_t>(c)];
+          mass[n] += mw;
+          for (std::size_t k = 0; k < ns; ++k) scalars[k * nn + n] += mw * q[k];
+          for (int d = 0; d < 3; ++d) vel[3 * n + static_cast<std::size_t>(d)] += mw * p.v[i][d];
+        }
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double cell_volume = 1.0;
+  for (int a = 0; a < g.dim; ++a) cell_volume *= g.cell_size[a];
+  std::vector<double> mass_density(nn), ux(nn), uy(nn);
+  for (std::size_t n = 0; n < nn; ++n) {
+    const bool empty = !(mass[n] > 0.0);
+    for (std::size_t k = 0; k < ns; ++k) scalars[k * nn + n] = empty ? nan : scalars[k * nn + n] / mass[n];
+    for (std::size_t d = 0; d < 3; ++d) vel[3 * n + d] = empty ? nan : vel[3 * n + d] / mass[n];
+    mass_density[n] = mass[n] / cell_volume;
+    ux[n] = vel[3 * n], uy[n] = vel[3 * n + 1];
+  }
+  for (std::size_t k = 0; k < ns; ++k)
+    img.point_data.push_back({names[k], 1, std::vector<double>(scalars.begin() + static_cast<long>(k * nn),
+                                                               scalars.begin() + static_cast<long>((k + 1) * nn))});
+  img.point_data.push_back({"ux", 1, std::move(ux)});
+  img.point_data.push_back({"uy", 1, std::move(uy)});
+  img.point_data.push_back({"mass_density", 1, std::move(mass_density)});
+  img.point_data.push_back({"velocity", 3, std::move(vel)});
+  return img;
+}
+
+void RunOutput::write_fields(const Simulation& sim) {
+  const std::string grid_file = fmt::format("fields/grid_{:09d}.vti", sim.step_count());
+  io::write_vti(folder_ / grid_file, grid_fields(sim), case_.output.encoding);
+  grid_pvd_.add(sim.time(), grid_file);
+  if (!case_.output.particles) return;
+  const Particles& p = sim.particles();
+  const std::size_t n = p.size();
+  std::vector<double> xyz(3 * n), vel(3 * n);
+  std::vector<io::VtkArray> arrays;
+  for (const char* name : {"density", "pressure", "temperature", "plastic_work", "plastic_strain", "energy", "material"})
+    arrays.push_back({name, 1, std::vector<double>(n)});
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& s = p.state[i];
+    for (std::size_t d = 0; d < 3; ++d) xyz[3 * i + d] = p.x[i][static_cast<int>(d)], vel[3 * i + d] = p.v[i][static_cast<int>(d)];
+    const double values[] = {p.density(i), -s.stress().trace() / 3.0, s.temperature, s.plastic_work,
+                             s.deviatoric.plastic_strain, s.energy, static_cast<double>(p.material[i])};
+    for (std::size_t k = 0; k < arrays.size(); ++k) arrays[k].values[i] = values[k];
+  }
+  arrays.push_back({"velocity", 3, std::move(vel)});
+  const std::string file = fmt::format("fields/particles_{:09d}.vtp", sim.step_count());
+  io::write_vtp(folder_ / file, xyz, arrays, case_.output.encoding);
+  particles_pvd_.add(sim.time(), file);
+}
+
+void RunOutput::write_histograms(const Simulation& sim, std::size_t index) {
+  const Particles& p = sim.particles();
+  const int dim = case_.grid.dim, axis = dim - 1;
+  const double lo = case_.diagnostics.histogram_all ? -INFINITY : case_.diagnostics.windows.bottom;
+  const double hi = case_.diagnostics.histogram_all ? INFINITY : lo + case_.diagnostics.windows.heights.at(0);
+  const auto names = quantity_names(dim);
+  std::ofstream out(folder_ / "histograms" / fmt::format("hist_{}.csv", index));
+  out << fmt::format("# t = {:.17g} s, particles with {} <= x[{}] < {} m\n", sim.time(), lo, axis, hi);
+  out << "quantity,bin_lo,bin_hi,count,mean,std,skewness,kurtosis\n";
+  for (std::size_t q = 0; q < names.size(); ++q) {
+    analysis::GridField f;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.x[i][axis] >= lo && p.x[i][axis] < hi) f.values.push_back(quantity(p, i, q));
+    if (f.values.empty()) continue;
+    f.n = {f.values.size(), 1, 1};
+    const analysis::Moments m = analysis::moments(f);
+    const bool flat = m.std == 0.0;
+    const analysis::Histogram h = flat ? analysis::histogram(f, 1, m.mean - 0.5, m.mean + 0.5)
+                                       : analysis::histogram(f, static_cast<std::size_t>(case_.diagnostics.histogram_bins));
+    for (std::size_t b = 0; b < h.counts.size(); ++b)
+      out << fmt::format("{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", names[q], h.edges[b], h.edges[b + 1],
+                         h.counts[b], m.mean, m.std, m.skewness, m.kurtosis);
+  }
+}
+
+}  // namespace shockfield::mpm
