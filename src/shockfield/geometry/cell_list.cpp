@@ -5,26 +5,35 @@
 
 namespace shockfield::geometry {
 
+namespace {
+// At most this many cells per point (and at least 64 cells may always be used).
+constexpr double kMaxCellsPerPoint = 4.0;
+}  // namespace
+
 void CellList::build(const std::vector<Vec3>& points, std::size_t n, const Vec3& lo, const Vec3& hi,
                      double cell_size) {
   lo_ = lo;
+  const double max_cells = std::max(kMaxCellsPerPoint * static_cast<double>(n), 64.0);
+  Vec3 extent;
+  for (int d = 0; d < 3; ++d) extent[d] = std::max(hi[d] - lo[d], cell_size);
+  // Widen the cells uniformly until their number fits (a huge empty extent, a tiny cutoff).
+  const double wanted = (extent / cell_size).array().floor().max(1.0).prod();
+  if (wanted > max_cells) cell_size *= std::cbrt(wanted / max_cells);
   for (int d = 0; d < 3; ++d) {
-    const double extent = std::max(hi[d] - lo[d], cell_size);
-    // Cap the cell count so a huge empty extent (shrink-wrapped box, lone atom) stays cheap.
-    dims_[d] = std::clamp(static_cast<int>(std::floor(extent / cell_size)), 1, 1024);
-    inv_width_[d] = dims_[d] / extent;
+    dims_[d] = std::max(static_cast<int>(std::floor(extent[d] / cell_size)), 1);
+    inv_width_[d] = dims_[d] / std::max(extent[d], cell_size);
   }
   const int ncells = dims_[0] * dims_[1] * dims_[2];
   start_.assign(static_cast<std::size_t>(ncells) + 1, 0);
-  std::vector<int> cell(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    cell[i] = cell_of(points[i]);
-    ++start_[static_cast<std::size_t>(cell[i]) + 1];
-  }
+  cell_.resize(n);
+  const auto sn = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < sn; ++i) cell_[static_cast<std::size_t>(i)] = cell_of(points[static_cast<std::size_t>(i)]);
+  for (std::size_t i = 0; i < n; ++i) ++start_[static_cast<std::size_t>(cell_[i]) + 1];
   for (int c = 0; c < ncells; ++c) start_[c + 1] += start_[c];
   points_.resize(n);
   std::vector<int> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) points_[fill[cell[i]]++] = static_cast<int>(i);
+  for (std::size_t i = 0; i < n; ++i) points_[fill[cell_[i]]++] = static_cast<int>(i);
 }
 
 int CellList::cell_of(const Vec3& p) const {

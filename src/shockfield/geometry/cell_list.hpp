@@ -1,7 +1,9 @@
 #pragma once
 // Cell list (the seed's "background grid + linked list", 000 §2.1): space is cut into cubic-ish
 // cells at least `cell_size` wide, and each point is put in the cell that holds it. Points in
-// CSR order (cell_start / cell_points) so a cell's points are contiguous.
+// CSR order (cell_start / cell_points) so a cell's points are contiguous, in increasing index
+// order within a cell; cells are numbered x fastest, so a row of cells along x is one contiguous
+// run of points.
 #include <array>
 #include <vector>
 
@@ -12,17 +14,22 @@ namespace shockfield::geometry {
 class CellList {
  public:
   /// Bins points[0, n) into cells of width >= cell_size over [lo, hi] (points outside are clamped
-  /// into the edge cells).
+  /// into the edge cells). The cells are widened when needed so there are at most a few per point
+  /// (a tiny cell_size over a large box would otherwise cost memory, not speed).
   void build(const std::vector<Vec3>& points, std::size_t n, const Vec3& lo, const Vec3& hi,
              double cell_size);
 
   const std::array<int, 3>& dims() const { return dims_; }
+  /// Actual cell widths (>= the cell_size asked for).
+  Vec3 width() const { return inv_width_.cwiseInverse(); }
   int cell_of(const Vec3& p) const;
   int cell_index(int ix, int iy, int iz) const { return (iz * dims_[1] + iy) * dims_[0] + ix; }
   std::array<int, 3> cell_coords(int c) const;
   /// Points of cell c: cell_points()[cell_start()[c] .. cell_start()[c+1]).
   const std::vector<int>& cell_start() const { return start_; }
   const std::vector<int>& cell_points() const { return points_; }
+  /// The cell of each point binned by the last build (size n).
+  const std::vector<int>& point_cells() const { return cell_; }
 
  private:
   Vec3 lo_ = Vec3::Zero();
@@ -30,6 +37,7 @@ class CellList {
   std::array<int, 3> dims_{1, 1, 1};
   std::vector<int> start_;
   std::vector<int> points_;
+  std::vector<int> cell_;
 };
 
 }  // namespace shockfield::geometry

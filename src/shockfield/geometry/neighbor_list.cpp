@@ -3,87 +3,122 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "shockfield/geometry/cell_list.hpp"
 
 namespace shockfield::geometry {
 namespace {
+
+// Bins are half the list cutoff wide (LAMMPS's default binsize): a point's candidates lie in a
+// 5×5×5 block of bins, 15.6 rc³, against 27 rc³ for bins one cutoff wide.
+constexpr double kBinsPerCutoff = 2.0;
+
 // Of the two periodic copies of a crossing pair, keep the one whose ghost lies above.
 inline bool ghost_above(const Vec3& xi, const Vec3& xj) {
   if (xj.z() != xi.z()) return xj.z() > xi.z();
   if (xj.y() != xi.y()) return xj.y() > xi.y();
   return xj.x() > xi.x();
 }
+
+// One row of the stencil: bins (dx, dy, dz) for |dx| <= reach_x; rows whose nearest bin is
+// beyond the cutoff are left out.
+struct StencilRow {
+  int dy, dz, reach_x;
+};
+
+std::vector<StencilRow> stencil_rows(const CellList& cells, double cutoff) {
+  const Vec3 w = cells.width();
+  auto reach = [&](int d) { return static_cast<int>(std::ceil(cutoff / w[d])); };
+  // Smallest separation of two points whose bins are `steps` apart along a dimension of width wd.
+  auto gap = [](int steps, double wd) { return std::max(std::abs(steps) - 1, 0) * wd; };
+  std::vector<StencilRow> rows;
+  for (int dz = -reach(2); dz <= reach(2); ++dz)
+    for (int dy = -reach(1); dy <= reach(1); ++dy) {
+      const double left = cutoff * cutoff - gap(dz, w.z()) * gap(dz, w.z()) - gap(dy, w.y()) * gap(dy, w.y());
+      if (left <= 0) continue;
+      rows.push_back({dy, dz, std::min(reach(0), 1 + static_cast<int>(std::ceil(std::sqrt(left) / w.x())))});
+    }
+  return rows;
+}
+
+void bounding_box(const std::vector<Vec3>& points, Vec3& lo, Vec3& hi) {
+  double xlo = 1e300, ylo = 1e300, zlo = 1e300, xhi = -1e300, yhi = -1e300, zhi = -1e300;
+  const auto n = static_cast<std::ptrdiff_t>(points.size());
+#pragma omp parallel for schedule(static) reduction(min : xlo, ylo, zlo) reduction(max : xhi, yhi, zhi)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const Vec3& p = points[static_cast<std::size_t>(i)];
+    xlo = std::min(xlo, p.x()); ylo = std::min(ylo, p.y()); zlo = std::min(zlo, p.z());
+    xhi = std::max(xhi, p.x()); yhi = std::max(yhi, p.y()); zhi = std::max(zhi, p.z());
+  }
+  lo = n == 0 ? Vec3::Zero() : Vec3(xlo, ylo, zlo);
+  hi = n == 0 ? Vec3::Zero() : Vec3(xhi, yhi, zhi);
+}
+
 }  // namespace
 
 void build_neighbor_list(const std::vector<Vec3>& points, std::size_t nlocal, double cutoff,
                          bool half, NeighborList& list) {
-  const std::size_t n = points.size();
-  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-  for (std::size_t i = 0; i < n; ++i) {
-    lo = lo.cwiseMin(points[i]);
-    hi = hi.cwiseMax(points[i]);
-  }
-  if (n == 0) lo = hi = Vec3::Zero();
+  Vec3 lo, hi;
+  bounding_box(points, lo, hi);
   CellList cells;
-  cells.build(points, n, lo, hi, cutoff);
+  cells.build(points, points.size(), lo, hi, cutoff / kBinsPerCutoff);
   const auto dims = cells.dims();
+  const auto rows = stencil_rows(cells, cutoff);
   const double cut2 = cutoff * cutoff;
+  const int* start = cells.cell_start().data();
+  const int* binned = cells.cell_points().data();
+  const int own = static_cast<int>(nlocal);
 
-  // Pass 1: neighbours of each point into per-point scratch, in owned-point order per thread
-  // chunk; pass 2: CSR concatenation. Static schedule keeps the order thread-count independent.
+  // Each thread lists the neighbours of a contiguous range of owned points into its own buffer
+  // (in point order, each point's neighbours in stencil order); the buffers are then copied into
+  // the CSR arrays. The ranges are fixed by nlocal and the thread count, the per-point lists by
+  // the positions alone, so the list does not depend on the thread count.
   const int nthreads = omp_get_max_threads();
-  std::vector<std::vector<int>> chunk_neighbors(nthreads);
-  std::vector<std::int64_t> count(nlocal + 1, 0);
-  std::vector<std::size_t> chunk_begin(nthreads + 1, 0);
+  // Room for the previous list's mean count per point (lists change little between builds).
+  const std::size_t per_point = list.nlocal() == 0 ? 0 : list.pairs() / list.nlocal() + 4;
+  std::vector<std::vector<int>> chunk_neighbors(static_cast<std::size_t>(nthreads));
+  list.offset.resize(nlocal + 1);
+  list.offset[0] = 0;
 #pragma omp parallel num_threads(nthreads)
   {
     const int t = omp_get_thread_num();
     const std::size_t begin = nlocal * t / nthreads, end = nlocal * (t + 1) / nthreads;
-    chunk_begin[t] = begin;
-    std::vector<int>& out = chunk_neighbors[t];
-    out.clear();
+    std::vector<int>& out = chunk_neighbors[static_cast<std::size_t>(t)];
+    out.reserve((end - begin) * per_point);
     for (std::size_t i = begin; i < end; ++i) {
       const Vec3 xi = points[i];
-      const auto c = cells.cell_coords(cells.cell_of(xi));
-      const std::size_t before = out.size();
-      for (int dz = -1; dz <= 1; ++dz) {
-        const int cz = c[2] + dz;
-        if (cz < 0 || cz >= dims[2]) continue;
-        for (int dy = -1; dy <= 1; ++dy) {
-          const int cy = c[1] + dy;
-          if (cy < 0 || cy >= dims[1]) continue;
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int cx = c[0] + dx;
-            if (cx < 0 || cx >= dims[0]) continue;
-            const int cell = cells.cell_index(cx, cy, cz);
-            for (int k = cells.cell_start()[cell]; k < cells.cell_start()[cell + 1]; ++k) {
-              const int j = cells.cell_points()[k];
-              if (static_cast<std::size_t>(j) == i) continue;
-              if (half) {
-                if (static_cast<std::size_t>(j) < nlocal) {
-                  if (static_cast<std::size_t>(j) < i) continue;
-                } else if (!ghost_above(xi, points[j])) {
-                  continue;
-                }
-              }
-              if ((points[j] - xi).squaredNorm() < cut2) out.push_back(j);
-            }
-          }
+      const auto c = cells.cell_coords(cells.point_cells()[i]);
+      const int si = static_cast<int>(i);
+      for (const StencilRow& row : rows) {
+        const int cz = c[2] + row.dz, cy = c[1] + row.dy;
+        if (cz < 0 || cz >= dims[2] || cy < 0 || cy >= dims[1]) continue;
+        // Bins along x are consecutive, so the row is one run of points.
+        const int first = start[cells.cell_index(std::max(c[0] - row.reach_x, 0), cy, cz)];
+        const int last = start[cells.cell_index(std::min(c[0] + row.reach_x, dims[0] - 1), cy, cz) + 1];
+        for (int k = first; k < last; ++k) {
+          const int j = binned[k];
+          if (half ? (j < own ? j <= si : !ghost_above(xi, points[static_cast<std::size_t>(j)])) : j == si)
+            continue;
+          if ((points[static_cast<std::size_t>(j)] - xi).squaredNorm() < cut2) out.push_back(j);
         }
       }
-      // Sorted neighbours: memory-friendly access and an order independent of cell layout.
-      std::sort(out.begin() + static_cast<std::ptrdiff_t>(before), out.end());
-      count[i + 1] = static_cast<std::int64_t>(out.size() - before);
+      list.offset[i + 1] = static_cast<std::int64_t>(out.size());  // within the chunk for now
     }
+#pragma omp barrier
+#pragma omp single
+    {
+      // Chunk-relative ends to global offsets, chunk by chunk.
+      std::int64_t base = 0;
+      for (int u = 0; u < nthreads; ++u) {
+        const std::size_t b = nlocal * u / nthreads, e = nlocal * (u + 1) / nthreads;
+        for (std::size_t i = b; i < e; ++i) list.offset[i + 1] += base;
+        base += static_cast<std::int64_t>(chunk_neighbors[static_cast<std::size_t>(u)].size());
+      }
+      list.neighbors.resize(static_cast<std::size_t>(base));
+    }
+    std::copy(out.begin(), out.end(), list.neighbors.begin() + list.offset[begin]);
   }
-  chunk_begin[nthreads] = nlocal;
-  list.offset.assign(nlocal + 1, 0);
-  for (std::size_t i = 0; i < nlocal; ++i) list.offset[i + 1] = list.offset[i] + count[i + 1];
-  list.neighbors.resize(static_cast<std::size_t>(list.offset[nlocal]));
-  for (int t = 0; t < nthreads; ++t)
-    std::copy(chunk_neighbors[t].begin(), chunk_neighbors[t].end(),
-              list.neighbors.begin() + list.offset[chunk_begin[t]]);
   list.cutoff = cutoff;
   list.half = half;
 }

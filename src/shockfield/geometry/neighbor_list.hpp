@@ -3,7 +3,8 @@
 // (Newton's third law is applied by the force kernel): a pair of owned points (i < j) is kept by
 // i; a pair of an owned point i and a ghost j is kept when j lies "above" i (larger z, then y,
 // then x), so of the two periodic copies of a pair that crosses a face exactly one is kept.
-// A *full* list holds each owned point's every neighbour.
+// A *full* list holds each owned point's every neighbour. Each point's neighbours are in stencil
+// order (nearby bins, then point index), which depends on the positions only.
 #include <cstdint>
 #include <vector>
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "shockfield/core/error.hpp"
@@ -134,30 +135,43 @@ ThermoState Simulation::thermo() const {
 }
 
 void Simulation::check_health() const {
-  for (std::size_t i = 0; i < atoms.nlocal; ++i) {
+  // One parallel pass finds the first bad atom (if any) and the fastest speed; the diagnosis of
+  // the bad atom is then made on it alone, so the message is that of a serial scan.
+  auto outside_fixed = [&](std::size_t i, int d) {
+    return box.boundary[d] == geometry::Boundary::fixed && (atoms.x[i][d] < box.lo[d] || atoms.x[i][d] >= box.hi[d]);
+  };
+  auto bad_atom = [&](std::size_t i) {
+    return !atoms.x[i].allFinite() || !atoms.v[i].allFinite() || !atoms.f[i].allFinite() ||
+           outside_fixed(i, 0) || outside_fixed(i, 1) || outside_fixed(i, 2);
+  };
+  const auto n = static_cast<std::ptrdiff_t>(atoms.nlocal);
+  std::ptrdiff_t first_bad = n;
+  double vmax2 = 0;
+#pragma omp parallel for schedule(static) reduction(min : first_bad) reduction(max : vmax2)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (bad_atom(i)) first_bad = std::min(first_bad, k);
+    vmax2 = std::max(vmax2, atoms.v[i].squaredNorm());
+  }
+  if (first_bad < n) {
+    const auto i = static_cast<std::size_t>(first_bad);
     if (!atoms.x[i].allFinite() || !atoms.v[i].allFinite() || !atoms.f[i].allFinite())
       throw RunError(fmt::format(
           "step {}: atom {} has a non-finite position, velocity or force (x = {} {} {}, v = {} {} {}); "
           "the time step ({} ps) is probably too large or two atoms overlap",
           step, atoms.id[i], atoms.x[i].x(), atoms.x[i].y(), atoms.x[i].z(), atoms.v[i].x(),
           atoms.v[i].y(), atoms.v[i].z(), dt));
-    for (int d = 0; d < 3; ++d) {
-      if (box.boundary[d] != geometry::Boundary::fixed) continue;
-      if (atoms.x[i][d] < box.lo[d] || atoms.x[i][d] >= box.hi[d])
+    for (int d = 0; d < 3; ++d)
+      if (outside_fixed(i, d))
         throw RunError(fmt::format("step {}: lost atom {}: it left the fixed {} boundary of the box "
                                    "([{}, {}]) at {} = {}",
                                    step, atoms.id[i], "xyz"[d], box.lo[d], box.hi[d], "xyz"[d], atoms.x[i][d]));
-    }
   }
-  if (!std::isfinite(forces.energy))
-    throw RunError(fmt::format("step {}: the potential energy is not finite; the time step ({} ps) is "
-                               "probably too large or two atoms overlap", step, dt));
-  // An atom that drifts more than half the skin in one step outruns the neighbour check and
-  // integrates its collisions badly: the time step is too large.
-  if (max_drift_ > 0.5 * skin)
-    throw RunError(fmt::format("step {}: an atom moved {:.3g} Å in one step, more than half the "
-                               "neighbour skin ({} Å); the time step ({} ps) is too large for these "
-                               "velocities", step, max_drift_, skin, dt));
+  // A displacement of more than the skin in one step means the list missed pairs.
+  if (std::sqrt(vmax2) * dt > 0.5 * skin)
+    throw RunError(fmt::format("step {}: an atom moves {:.3g} Å per step, more than half the neighbour "
+                               "skin ({} Å); the time step ({} ps) is too large for these velocities",
+                               step, std::sqrt(vmax2) * dt, skin, dt));
 }
 
 }  // namespace shockfield::md
