@@ -23,13 +23,25 @@ namespace {
 StageSpec read_stage(const Config& t, std::size_t index) {
   StageSpec s;
   s.name = t.get_string_or("name", fmt::format("stage{}", index + 1));
-  s.ensemble = t.get_choice_or("ensemble", {"nve", "langevin", "nvt", "minimize"}, "nve");
+  s.ensemble = t.get_choice_or("ensemble", {"nve", "langevin", "nvt", "npt", "minimize"}, "nve");
   s.steps = s.ensemble == "minimize" ? 0 : t.get_int("steps", Range::non_negative());
   s.group = t.get_string_or("group", "all");
-  if (s.ensemble == "langevin" || s.ensemble == "nvt") {
+  if (s.ensemble == "langevin" || s.ensemble == "nvt" || s.ensemble == "npt") {
     s.temperature = t.get_double("temperature", Range::positive());
     s.damping = t.get_double_or("damping", 0.1, Range::positive());
-    if (s.ensemble == "nvt") s.chain = static_cast<int>(t.get_int_or("chain", 3, Range::closed(1, 10)));
+    if (s.ensemble != "langevin") s.chain = static_cast<int>(t.get_int_or("chain", 3, Range::closed(1, 10)));
+  }
+  if (s.ensemble == "npt") {
+    s.pressure = t.get_double("pressure", Range::closed(-1e7, 1e8));  // bar: −1 TPa to 10 TPa
+    s.pressure_damping = t.get_double_or("pressure_damping", 1.0, Range::positive());
+    s.couple_iso = t.get_choice_or("couple", {"iso", "aniso"}, "aniso") == "iso";
+    if (t.has("pressure_dims")) {  // periodicity is checked against the box in run_case
+      s.pressure_dims = std::array<bool, 3>{false, false, false};
+      for (const auto& dim : t.get_strings("pressure_dims")) {
+        if (dim != "x" && dim != "y" && dim != "z") t.fail("pressure_dims", "expected a list of \"x\", \"y\", \"z\"");
+        (*s.pressure_dims)[dim[0] - 'x'] = true;
+      }
+    }
   }
   if (s.ensemble == "minimize") {
     MinimizeSettings& m = s.minimize;

@@ -21,11 +21,15 @@ struct PistonSpec {
 struct StageSpec {
   std::string name;
   long long steps = 0;
-  std::string ensemble = "nve";    ///< nve | langevin | nvt | minimize
+  std::string ensemble = "nve";    ///< nve | langevin | nvt | npt | minimize
   std::string group = "all";
-  double temperature = 0;          ///< K (langevin, nvt)
-  double damping = 0.1;            ///< ps (langevin, nvt)
+  double temperature = 0;          ///< K (langevin, nvt, npt)
+  double damping = 0.1;            ///< ps (langevin, nvt, npt)
   int chain = 3;                   ///< Nosé–Hoover chain length
+  double pressure = 0;             ///< bar (npt)
+  double pressure_damping = 1.0;   ///< ps (npt)
+  bool couple_iso = false;         ///< npt couple = "iso" (else "aniso")
+  std::optional<std::array<bool, 3>> pressure_dims;  ///< npt barostatted dimensions; default: the periodic ones
   std::optional<PistonSpec> piston;
   std::optional<Vec3> deform_rate; ///< 1/ps per dimension
   MinimizeSettings minimize;

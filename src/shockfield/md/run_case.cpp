@@ -53,6 +53,11 @@ Prepared prepare(const Config& root, const RunOptions& options) {
   }
   p.potential->check_types(atoms);
   p.md = read_md_case(root);
+  if (options.piston_speed) {  // `shockfield hugoniot --speeds`: one run per piston speed
+    for (StageSpec& s : p.md.stages)
+      if (s.piston) s.piston->speed = *options.piston_speed;
+    root.derive("piston_speed_override_A_ps", *options.piston_speed);
+  }
   const auto stages = root.tables("stage");
   for (std::size_t k = 0; k < p.md.stages.size(); ++k) {
     try {

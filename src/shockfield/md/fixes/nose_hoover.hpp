@@ -5,9 +5,33 @@
 // kick; the atoms' velocities are scaled by exp(−½Δt η̇₁). Thermostat masses
 // Q₁ = N_f k_B T / ω², Q_k = k_B T / ω² with ω = 1/τ. The chain energy
 // N_f k_B T η₁ + Σ_{k>1} k_B T η_k + Σ ½ Q_k η̇_k² enters the conserved quantity.
+#include "shockfield/md/atoms.hpp"
 #include "shockfield/md/fixes/nve.hpp"
 
 namespace shockfield::md {
+
+/// One Nosé–Hoover chain (MTK 1996 eq. 2; LAMMPS fix_nh.cpp nhc_temp_integrate and, for the
+/// barostat, nhc_press_integrate) coupled to degrees of freedom of kinetic energy K: the first
+/// member drives 2K towards L k_B T, member k > 1 drives Q_{k−1} η̇²_{k−1} towards k_B T.
+class NoseHooverChain {
+ public:
+  NoseHooverChain(int length, double temperature, double period);
+  /// Advances the chain by half a step Δt/2 given 2K of the coupled degrees of freedom, their
+  /// number L (the target 2K is L k_B T) and the first mass Q₁ = first_mass_dof · k_B T / ω².
+  /// Returns exp(−½Δt η̇₁), the factor by which the coupled velocities must be scaled.
+  double half_step(double twice_ke, double dof, double first_mass_dof, double dt);
+  /// L k_B T η₁ + Σ_{k>1} k_B T η_k + Σ ½ Q_k η̇_k² (eV).
+  double energy() const;
+  /// Appends the chain variables to `s`; restore() reads them back from `s` at `k` and
+  /// returns the index after them.
+  void save(std::vector<double>& s) const;
+  std::size_t restore(const std::vector<double>& s, std::size_t k);
+
+ private:
+  double kt_, period_;
+  double dof_ = 0;
+  std::vector<double> eta_, eta_dot_, eta_dotdot_, mass_;
+};
 
 class FixNoseHoover : public FixNve {
  public:
@@ -15,16 +39,17 @@ class FixNoseHoover : public FixNve {
   std::string name() const override { return "nvt"; }
   void initial_integrate(Simulation& sim) override;
   void final_integrate(Simulation& sim) override;
-  double energy_added() const override;
+  double energy_added() const override { return -chain_.energy(); }
   std::vector<double> state() const override;
-  void restore(const std::vector<double>& s) override;
+  void restore(const std::vector<double>& s) override { chain_.restore(s, 0); }
 
  private:
   /// Advances the chain by half a step and scales the group's velocities.
   void integrate_chain(Simulation& sim);
-  double target_, period_;
-  double dof_ = 0;
-  std::vector<double> eta_, eta_dot_, eta_dotdot_, mass_;
+  NoseHooverChain chain_;
 };
+
+/// Scales the velocities of a group's atoms by `factor`.
+void scale_group_velocities(Atoms& atoms, std::uint32_t group_bit, double factor);
 
 }  // namespace shockfield::md

@@ -1,0 +1,151 @@
+#include "shockfield/md/fixes/nose_hoover_npt.hpp"
+
+#include <cmath>
+
+#include "shockfield/core/units.hpp"
+#include "shockfield/md/simulation.hpp"
+#include "shockfield/md/velocity.hpp"
+
+namespace shockfield::md {
+
+using units::metal::boltz;
+using units::metal::nktv2p;
+
+FixNoseHooverNpt::FixNoseHooverNpt(const NptSettings& settings, std::uint32_t group_bit)
+    : settings_(settings), group_bit_(group_bit),
+      atom_chain_(settings.chain, settings.temperature, settings.damping),
+      barostat_chain_(settings.chain, settings.temperature, settings.pressure_damping) {}
+
+void FixNoseHooverNpt::setup(Simulation& sim) {
+  volume0_ = volume_ = sim.box.volume();
+}
+
+void FixNoseHooverNpt::initial_integrate(Simulation& sim) {
+  const double omega_p = 1.0 / settings_.pressure_damping;
+  mass_ = (static_cast<double>(sim.atoms.nlocal) + 1.0) * boltz * settings_.temperature / (omega_p * omega_p);
+  barostat_chain_step(sim);
+  atom_chain_step(sim);
+  barostat_kick(sim);
+  barostat_velocity_scaling(sim);
+  velocity_kick(sim);
+  dilate(sim);
+  Atoms& a = sim.atoms;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < a.nlocal; ++i)
+    if (a.mask[i] & group_bit_) a.x[i] += sim.dt * a.v[i];
+  dilate(sim);
+}
+
+void FixNoseHooverNpt::final_integrate(Simulation& sim) {
+  velocity_kick(sim);
+  barostat_velocity_scaling(sim);
+  barostat_kick(sim);
+  atom_chain_step(sim);
+  barostat_chain_step(sim);
+}
+
+void FixNoseHooverNpt::barostat_chain_step(const Simulation& sim) {
+  double twice_ke = 0;
+  int dims = 0;
+  for (int d = 0; d < 3; ++d)
+    if (settings_.dims[d]) {
+      twice_ke += mass_ * omega_dot_[d] * omega_dot_[d];
+      ++dims;
+    }
+  // LAMMPS nhc_press_integrate: Q₁ = k_B T/ω_P²; an iso barostat is one degree of freedom.
+  const double factor = barostat_chain_.half_step(twice_ke, settings_.iso ? 1.0 : dims, 1.0, sim.dt);
+  for (int d = 0; d < 3; ++d)
+    if (settings_.dims[d]) omega_dot_[d] *= factor;
+}
+
+void FixNoseHooverNpt::atom_chain_step(Simulation& sim) {
+  std::size_t n = 0;
+  const double twice_ke = group_twice_kinetic(sim.atoms, group_bit_, n);
+  const double dof = std::max(3.0 * static_cast<double>(n) - 3.0, 1.0);
+  scale_group_velocities(sim.atoms, group_bit_, atom_chain_.half_step(twice_ke, dof, dof, sim.dt));
+}
+
+void FixNoseHooverNpt::barostat_kick(Simulation& sim) {
+  const ThermoState thermo = sim.thermo();
+  std::size_t n_group = 0;
+  const double twice_ke = group_twice_kinetic(sim.atoms, group_bit_, n_group);
+  const double three_n = 3.0 * static_cast<double>(sim.atoms.nlocal);
+  const double mtk = twice_ke / three_n;  // 2K/(3N) of eq. (1)
+  // iso: the scalar pressure, or for two coupled dimensions the mean of their components
+  // (LAMMPS FixNH::couple).
+  double coupled = 0;
+  int dims = 0;
+  for (int d = 0; d < 3; ++d)
+    if (settings_.dims[d]) {
+      coupled += thermo.pressure_tensor[d];
+      ++dims;
+    }
+  coupled = dims == 3 ? thermo.pressure : coupled / dims;
+  double trace = 0;
+  for (int d = 0; d < 3; ++d) {
+    if (!settings_.dims[d]) continue;
+    const double p = settings_.iso ? coupled : thermo.pressure_tensor[d];
+    const double force = (p - settings_.pressure) * thermo.volume / nktv2p + mtk;  // eV
+    omega_dot_[d] += 0.5 * sim.dt * force / mass_;
+    trace += omega_dot_[d];
+  }
+  mu_ = trace / three_n;
+}
+
+void FixNoseHooverNpt::barostat_velocity_scaling(Simulation& sim) const {
+  Vec3 factor;
+  for (int d = 0; d < 3; ++d) factor[d] = std::exp(-0.5 * sim.dt * (omega_dot_[d] + mu_));
+  Atoms& a = sim.atoms;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < a.nlocal; ++i)
+    if (a.mask[i] & group_bit_) a.v[i] = a.v[i].cwiseProduct(factor);
+}
+
+void FixNoseHooverNpt::velocity_kick(Simulation& sim) const {
+  Atoms& a = sim.atoms;
+  const double dtf = 0.5 * sim.dt * units::metal::ftm2v;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < a.nlocal; ++i)
+    if (a.mask[i] & group_bit_) a.v[i] += (dtf / a.mass_of(i)) * a.f[i];
+}
+
+void FixNoseHooverNpt::dilate(Simulation& sim) {
+  geometry::Box& box = sim.box;
+  Atoms& a = sim.atoms;
+  for (int d = 0; d < 3; ++d) {
+    if (!settings_.dims[d]) continue;
+    // h ← h e^{½Δt ω̇_d} about the box centre c (LAMMPS FixNH::remap, default fixedpoint).
+    const double c = 0.5 * (box.lo[d] + box.hi[d]), e = std::exp(0.5 * sim.dt * omega_dot_[d]);
+    box.lo[d] = c + (box.lo[d] - c) * e;
+    box.hi[d] = c + (box.hi[d] - c) * e;
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < a.nlocal; ++i) a.x[i][d] = c + (a.x[i][d] - c) * e;
+  }
+  volume_ = box.volume();
+}
+
+double FixNoseHooverNpt::energy_added() const {
+  double e = atom_chain_.energy() + barostat_chain_.energy() +
+             settings_.pressure * (volume_ - volume0_) / nktv2p;
+  for (int d = 0; d < 3; ++d)
+    if (settings_.dims[d]) e += 0.5 * mass_ * omega_dot_[d] * omega_dot_[d];
+  return -e;  // eq. (3): the extended variables hold this energy
+}
+
+std::vector<double> FixNoseHooverNpt::state() const {
+  std::vector<double> s{omega_dot_.x(), omega_dot_.y(), omega_dot_.z(), mass_, mu_, volume0_, volume_};
+  atom_chain_.save(s);
+  barostat_chain_.save(s);
+  return s;
+}
+
+void FixNoseHooverNpt::restore(const std::vector<double>& s) {
+  omega_dot_ = Vec3(s.at(0), s.at(1), s.at(2));
+  mass_ = s.at(3);
+  mu_ = s.at(4);
+  volume0_ = s.at(5);
+  volume_ = s.at(6);
+  barostat_chain_.restore(s, atom_chain_.restore(s, 7));
+}
+
+}  // namespace shockfield::md

@@ -1,0 +1,77 @@
+#pragma once
+// Isothermal–isobaric integration (LAMMPS `fix npt temp T T τ_T iso|aniso|x|y|z P P τ_P`):
+// the Martyna–Tobias–Klein equations (MTK, J. Chem. Phys. 101, 4177 (1994)) integrated with
+// the Trotter split of Tuckerman et al., J. Phys. A 39, 5629 (2006) as LAMMPS fix_nh.cpp does
+// (Shinoda, Shiga & Mikami, Phys. Rev. B 69, 134103 (2004)). Variables: a Nosé–Hoover chain on
+// the atoms, a log-strain rate ω̇_d per barostatted dimension d with mass
+// W = (N+1) k_B T / ω_P² (ω_P = 1/τ_P; LAMMPS's choice), and a chain on the barostat. Per step:
+//   initial_integrate: barostat chain ½Δt; atom chain ½Δt; ω̇ kick ½Δt; v ← v e^{−½Δt(ω̇_d+μ)};
+//                      v ← v + ½Δt f/m; box dilation e^{½Δt ω̇_d}; x ← x + Δt v; dilation again
+//   final_integrate:   v ← v + ½Δt f/m; v ← v e^{−½Δt(ω̇_d+μ)}; ω̇ kick ½Δt; atom chain ½Δt;
+//                      barostat chain ½Δt
+// with the ω̇ kick (MTK 1994 eq. 2.9, per dimension)
+//   W dω̇_d/dt = V (P_d − P_target) + 2K/(3N)                           (1)
+// and the MTK velocity coupling μ = Σ_d ω̇_d / (3N)                     (2)
+// (P_d: the scalar pressure for iso, the diagonal tensor component for aniso; K: the group's
+// kinetic energy; N: atoms). With all three dimensions barostatted (1–2) are LAMMPS's
+// mtk_term1/mtk_term2; for a subset LAMMPS divides by (number of dimensions)·N and uses only their
+// kinetic components, which breaks the conservation below by O(k_B T ln L/L₀); (1–2) keep it.
+// The dilation is about the box centre, coordinates are mapped affinely. "iso" moves the three
+// ω̇_d together (one variable of mass 3W; its chain targets k_B T), "aniso" each one on its own
+// (the chain targets d k_B T). The conserved quantity is
+//   H = K + U + E_chain(atoms) + E_chain(barostat) + Σ_d ½ W ω̇_d² + P_target (V − V₀)   (3)
+// (MTK 1994 eq. 2.11); energy_added() returns −(H − K − U). LAMMPS's econserve counts 3k_B T η₁
+// of the barostat chain for iso where its dynamics use k_B T; (3) uses k_B T.
+#include <array>
+
+#include "shockfield/core/types.hpp"
+#include "shockfield/md/fixes/nose_hoover.hpp"
+
+namespace shockfield::md {
+
+struct NptSettings {
+  double temperature = 300;       ///< K
+  double damping = 0.1;           ///< τ_T, ps
+  double pressure = 0;            ///< bar
+  double pressure_damping = 1.0;  ///< τ_P, ps
+  std::array<bool, 3> dims{true, true, true};  ///< barostatted dimensions (periodic)
+  bool iso = false;               ///< couple the barostatted dimensions (LAMMPS iso)
+  int chain = 3;                  ///< length of both chains
+};
+
+class FixNoseHooverNpt : public Fix {
+ public:
+  explicit FixNoseHooverNpt(const NptSettings& settings, std::uint32_t group_bit = 1u);
+  std::string name() const override { return "npt"; }
+  /// Records V₀ for the P(V − V₀) term of the conserved quantity.
+  void setup(Simulation& sim) override;
+  void initial_integrate(Simulation& sim) override;
+  void final_integrate(Simulation& sim) override;
+  double energy_added() const override;
+  std::vector<double> state() const override;
+  void restore(const std::vector<double>& s) override;
+
+ private:
+  /// ω̇ kick by ½Δt, eq. (1), and the coupling μ of eq. (2).
+  void barostat_kick(Simulation& sim);
+  /// Barostat chain by ½Δt; scales ω̇.
+  void barostat_chain_step(const Simulation& sim);
+  /// Atom chain by ½Δt; scales the group's velocities.
+  void atom_chain_step(Simulation& sim);
+  /// v_d ← v_d e^{−½Δt(ω̇_d + μ)} for the group.
+  void barostat_velocity_scaling(Simulation& sim) const;
+  /// v ← v + ½Δt f/m for the group.
+  void velocity_kick(Simulation& sim) const;
+  /// Box and all atoms dilated by e^{½Δt ω̇_d} about the box centre.
+  void dilate(Simulation& sim);
+
+  NptSettings settings_;
+  std::uint32_t group_bit_;
+  NoseHooverChain atom_chain_, barostat_chain_;
+  Vec3 omega_dot_ = Vec3::Zero();  ///< 1/ps
+  double mass_ = 0;                ///< W, eV ps²
+  double mu_ = 0;                  ///< eq. (2), 1/ps
+  double volume0_ = 0, volume_ = 0;
+};
+
+}  // namespace shockfield::md
