@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Bad MPM case files: one clear message naming file, key and line, exit code 2, nothing left
+# behind (porosity that cannot be packed, a cavity outside its body, a body outside the grid, a
+# fixed time step beyond the CFL limit, unknown keys and materials).
+source "$(dirname "$0")/lib.bash"
+set -e
+base=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/mpm_tiny.toml")
+
+expect_error "${base/void_radius = 40e-6/void_raduis = 40e-6}" "case.toml" "body[0].void_radius" "missing required value"
+expect_error "${base/porosity = 0.05/porosity = 0.05
+colour = 1}" "unknown key" "body[0].colour"
+expect_error "${base/porosity = 0.05/porosity = 0.6}" "body[0].porosity" "random-packing limit"
+expect_error "${base/void_radius = 40e-6/void_radius = 300e-6}" "body[0].porosity" "do not fit the body"
+expect_error "${base/porosity = 0.05
+void_radius = 40e-6/cavity_depth = 480e-6
+cavity_radius = 50e-6}" "body[0].cavity_depth" "does not lie inside the body"
+expect_error "${base/hi = \[0.4e-3, 0.5e-3\]/hi = [0.4e-3, 0.7e-3]}" "body[0].hi" "outside the grid"
+expect_error "${base/lo = \[0.0, 0.0\]
+hi = \[0.4e-3, 0.5e-3\]/lo = [0.0, 0.1e-3]
+hi = [0.4e-3, 0.5e-3]}" "body[0].lo" "within one cell of the wall"
+expect_error "${base/hi = \[0.4e-3, 0.6e-3\]/hi = [0.41e-3, 0.6e-3]}" "grid.hi" "whole number"
+expect_error "${base/end_time = 40e-9/end_time = 40e-9
+time_step = 1e-8}" "solver.time_step" "beyond the CFL limit"
+expect_error "${base/library = \"aluminium_seed000\"/library = \"unobtainium\"}" "material[0].library" "expected one of"
+expect_error "${base/library = \"aluminium_seed000\"/library = \"aluminium_seed000\"
+yield_stress = -1.0}" "material[0].yield_stress"
+expect_error "${base/material = \"al\"/material = \"steel\"}" "body[0].material" "no [[material]] named"
+expect_error "${base/speed = 1000.0/}" "loading.speed" "missing required value"
+expect_error "${base/type = \"wall\"/type = \"wall\"
+wall = \"free\"}" "loading.wall" "stick"
+echo "mpm_bad_input: all cases rejected cleanly"

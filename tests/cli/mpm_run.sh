@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# An MPM run writes its folder (log, resolved config with derived values, series, VTK fields
+# and particles with .pvd indexes, histograms, checkpoint); a run stopped as by Ctrl-C and resumed
+# is bitwise identical to the uninterrupted one (same threads); runs that go wrong (particles
+# leaving the grid, a fixed step beyond the CFL limit) stop with exit code 3 and keep their output.
+source "$(dirname "$0")/lib.bash"
+set -e
+case="$ROOT/tests/cli/cases/mpm_tiny.toml"
+export OMP_NUM_THREADS=2
+"$SF" run "$case" --output "$WORK/straight" -q > /dev/null
+for f in log.txt config.resolved.toml series.csv grid.pvd particles.pvd checkpoint.h5 histograms/hist_0.csv \
+         fields/grid_000000000.vti; do
+  [ -s "$WORK/straight/$f" ] || fail "run folder lacks $f"
+done
+grep -q "^particles = " "$WORK/straight/config.resolved.toml" || fail "no derived particle count"
+grep -q "^time_step_initial_s = " "$WORK/straight/config.resolved.toml" || fail "no derived time step"
+grep -q "^hugoniot_pressure_Pa = " "$WORK/straight/config.resolved.toml" || fail "no derived Hugoniot"
+[ "$(grep -c DataSet "$WORK/straight/grid.pvd")" -eq 5 ] || fail "grid.pvd should list 5 frames"
+[ "$(wc -l < "$WORK/straight/series.csv")" -eq 22 ] || fail "series.csv should have 21 rows"
+# The .vti is readable by `shockfield analyze`.
+"$SF" analyze stats "$WORK/straight/fields/grid_000000000.vti" --array density -o "$WORK/stats" --no-plot > /dev/null \
+  || fail "analyze cannot read the grid field"
+
+set +e
+"$SF" run "$case" --output "$WORK/split" -q --stop-after 25 > /dev/null 2> "$WORK/stop.txt"
+code=$?
+set -e
+[ $code -eq 130 ] || fail "stopped run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
+grep -q -- "--resume" "$WORK/stop.txt" || fail "the stop message does not say how to resume"
+"$SF" run "$case" --output "$WORK/split" -q --resume > /dev/null
+cmp "$WORK/straight/series.csv" "$WORK/split/series.csv" || fail "resumed series.csv differs"
+last=$(ls "$WORK/straight/fields" | grep vtp | tail -1)
+cmp "$WORK/straight/fields/$last" "$WORK/split/fields/$last" || fail "resumed particles differ"
+cmp "$WORK/straight/grid.pvd" "$WORK/split/grid.pvd" || fail "resumed grid.pvd differs"
+cmp "$WORK/straight/histograms/hist_0.csv" "$WORK/split/histograms/hist_0.csv" || fail "resumed histogram differs"
+echo "ok: resume is bitwise identical"
+
+base=$(sed -n '/^method/,$p' "$case")
+expect_run_error() {
+  run_expecting 3 "$@"
+  grep -qF "run stopped" "$WORK/out/log.txt" || fail "log.txt lacks the diagnosis"
+  [ "$(wc -l < "$WORK/out/series.csv")" -ge 2 ] || fail "series.csv lost its rows"
+  [ -s "$WORK/out/failure.vtp" ] || fail "no failure.vtp"
+}
+# Tensile loading with no headroom: the free surface leaves the grid.
+tensile=${base/type = \"wall\"/type = \"tensile\"}
+expect_run_error "${tensile/hi = \[0.4e-3, 0.6e-3\]/hi = [0.4e-3, 0.5e-3]}" "left the grid"
+# A fixed step just below the initial CFL limit: the shocked material's faster sound breaks it.
+expect_run_error "${base/end_time = 40e-9/end_time = 40e-9
+time_step = 3.3e-9}" "beyond the CFL limit"
+echo "mpm_run: ok"
