@@ -15,6 +15,7 @@ struct RunOptions {
   bool quiet = false;                            ///< no progress line
   bool validate_only = false;                    ///< check the case file and stop
   long long stop_after = 0;                      ///< stop as on Ctrl-C after this many steps (0: never)
+  std::optional<double> piston_speed;            ///< Å/ps: replaces the speed of every [stage.piston]
 };
 
 }  // namespace shockfield
