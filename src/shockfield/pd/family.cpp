@@ -23,7 +23,7 @@ Family build_family(const PointCloud& cloud, double horizon, VolumeCorrection co
   const std::size_t n = cloud.size();
   auto [lo, hi] = cloud.bounds();
   geometry::CellList cells;
-  cells.build(cloud.x, n, lo, hi, horizon);
+  cells.build(cloud.x, n, lo, hi, horizon * (1.0 + 1e-9));  // wider than the cut-off, so ±1 cell holds it
   const auto dims = cells.dims();
   const double cut2 = horizon * horizon * (1.0 + 1e-12);  // a neighbour at exactly δ = m·ΔX belongs
   const double half = 0.5 * cloud.spacing;

@@ -94,3 +94,13 @@ TEST(Influence, ValuesByName) {
     EXPECT_NE(std::string(e.what()).find("gaussian"), std::string::npos) << e.what();
   }
 }
+
+// Neighbours at exactly δ = m·ΔX are found whatever the lattice length (the cell list's cells
+// must be wider than the cut-off, not equal to it).
+TEST(Family, NeighboursOnTheHorizonAreNeverMissed) {
+  for (int n : {1200, 1600, 1601}) {
+    const PointCloud c = lattice_cloud(1, {n, 1, 1}, 1e-5);
+    const Family f = build_family(c, 3e-5, VolumeCorrection::linear);
+    for (int i = 3; i < n - 3; ++i) ASSERT_EQ(f.end(i) - f.begin(i), 6) << "point " << i << " of " << n;
+  }
+}

@@ -1,0 +1,29 @@
+#include "shockfield/pd/constitutive.hpp"
+
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::pd {
+
+SmallStrainJ2 SmallStrainJ2::from_young(double density, double young, double poisson, double yield, double hardening,
+                                        double slope) {
+  if (!(density > 0.0)) throw InputError(fmt::format("pd material: density {} (expected > 0 kg/m³)", density));
+  if (!(slope >= 0.0)) throw InputError(fmt::format("pd material: Hugoniot slope {} (expected >= 0)", slope));
+  SmallStrainJ2 m;
+  m.density = density;
+  m.deviatoric = materials::J2Plasticity::from_young(young, poisson, yield, hardening);
+  m.deviatoric.validate("pd material");
+  m.bulk = young / (3.0 * (1.0 - 2.0 * poisson));
+  m.slope = slope;
+  return m;
+}
+
+Mat3 SmallStrainJ2::update(State& s, const Mat3& /*f_old*/, const Mat3& f_new, double /*dt*/) const {
+  const Mat3 strain = 0.5 * (f_new + f_new.transpose()) - Mat3::Identity();
+  deviatoric.update(s.dev, materials::deviator(strain - s.strain));
+  s.strain = strain;
+  return s.dev.s + bulk * strain.trace() * Mat3::Identity();
+}
+
+}  // namespace shockfield::pd
