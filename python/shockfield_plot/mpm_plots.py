@@ -1,0 +1,137 @@
+#!/usr/bin/python3
+"""Plots of an MPM run folder written by `shockfield run` (method = "mpm").
+
+  mpm_plots.py porous RUN_DIR [--out FILE]         bottom-window means of density, pressure,
+                                                   temperature and u_y against time (seed Fig 19)
+                                                   with the seed's values at 250 ns, and the
+                                                   particles' temperature at the last frame
+  mpm_plots.py cavity RUN_DIR [RUN_DIR ...] [--out FILE]
+                                                   per run: particles around the cavity coloured
+                                                   by temperature at the last frame, and the
+                                                   cavity area and collapsibility against time
+                                                   (seed Figs 46, 50, 53)
+
+Reads series.csv and particles.pvd (VTK PolyData, ascii or base64 binary). Uses only numpy and
+matplotlib from Debian (run with /usr/bin/python3).
+"""
+import argparse
+import base64
+import csv
+import os
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+SEED_250NS = {"density": 3140.0, "pressure": 16.7e9, "temperature": 432.0}  # seed 000 §4.1.1, Fig 19
+
+
+def read_series(run):
+    with open(os.path.join(run, "series.csv"), newline="") as f:
+        rows = list(csv.reader(f))
+    data = np.array([[float(x) for x in r] for r in rows[1:] if r], dtype=float)
+    return {name: data[:, k] for k, name in enumerate(rows[0])}
+
+
+def last_frame(run):
+    text = open(os.path.join(run, "particles.pvd")).read()
+    frames = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', text)
+    if not frames:
+        sys.exit(f"{run}: particles.pvd lists no frames (set [output] field_interval)")
+    t, name = frames[-1]
+    return float(t), read_vtp(os.path.join(run, name))
+
+
+def read_vtp(path):
+    """Arrays of a VTK PolyData file as written by shockfield (Float64/Int64, ascii or binary)."""
+    text = open(path).read()
+    out = {}
+    for m in re.finditer(r'<DataArray type="(\w+)" Name="(\w+)"[^>]*format="(\w+)">\s*(.*?)\s*</DataArray>', text, re.S):
+        kind, name, fmt, body = m.groups()
+        dtype = np.float64 if kind == "Float64" else np.int64
+        if fmt == "ascii":
+            values = np.array(body.split(), dtype=float).astype(dtype)
+        else:  # UInt64 byte count (12 base64 characters), then the values
+            values = np.frombuffer(base64.b64decode(body[12:]), dtype=dtype)
+        out[name] = values
+    out["points"] = out["points"].reshape(-1, 3)
+    out["velocity"] = out["velocity"].reshape(-1, 3)
+    return out
+
+
+def porous(run, out):
+    s = read_series(run)
+    t_ns = s["time_s"] * 1e9
+    heights = sorted({k.split("_")[1] for k in s if k.startswith("bottom_h") and k.endswith("_count")},
+                     key=lambda h: -float(h[1:-2]))
+    panels = [("density", 1e-3, "density (g/cm³)"), ("pressure", 1e-9, "pressure (GPa)"),
+              ("temperature", 1.0, "temperature (K)"), ("uy", 1.0, "u_y (m/s)")]
+    fig, axes = plt.subplots(2, 3, figsize=(13, 7))
+    for ax, (q, scale, label) in zip(axes.flat, panels):
+        for h in heights:
+            ax.plot(t_ns, s[f"bottom_{h}_{q}_mean"] * scale, label=f"bottom, h = {h[1:-2]} µm")
+            ax.plot(t_ns, s[f"top_{h}_{q}_mean"] * scale, ls=":", lw=1, label=f"top, h = {h[1:-2]} µm")
+        if q in SEED_250NS:
+            ax.plot([250], [SEED_250NS[q] * scale], "k*", ms=12, label="seed Fig 19, h = 800 µm")
+        ax.set_xlabel("t (ns)")
+        ax.set_ylabel(label)
+    axes[0, 0].legend(fontsize="x-small")
+    t, f = last_frame(run)
+    axes[1, 1].remove()
+    axes[1, 2].remove()
+    ax = fig.add_subplot(2, 3, (5, 6))
+    x, y = f["points"][:, 0] * 1e3, f["points"][:, 1] * 1e3
+    sc = ax.scatter(y, x, c=f["temperature"], s=0.05, cmap="inferno", vmin=300, vmax=900, rasterized=True)
+    ax.set_aspect("equal")
+    ax.set_xlabel("y (mm), wall at y = 0")
+    ax.set_ylabel("x (mm)")
+    ax.set_title(f"temperature at t = {t * 1e9:.0f} ns")
+    fig.colorbar(sc, ax=ax, label="T (K)", shrink=0.7)
+    fig.suptitle(os.path.basename(os.path.normpath(run)) + ": porous Al, Δ = 0.029, r = 50 µm, 1000 m/s on a rigid wall")
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+
+
+def cavity(runs, out):
+    fig, axes = plt.subplots(1, len(runs) + 1, figsize=(4.2 * (len(runs) + 1), 4.6))
+    for ax, run in zip(axes, runs):
+        s = read_series(run)
+        t, f = last_frame(run)
+        p = f["points"] * 1e6
+        sel = p[:, 1] < p[:, 1].max() / 2  # the lower body, where the tracked cavity is
+        sc = ax.scatter(p[sel, 0], p[sel, 1], c=f["temperature"][sel], s=0.3, cmap="inferno", vmin=300,
+                        vmax=max(400, np.percentile(f["temperature"][sel], 99.5)), rasterized=True)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (µm)")
+        ax.set_ylabel("y (µm)")
+        ax.set_title(f"{os.path.basename(os.path.normpath(run))}: t = {t * 1e9:.1f} ns\n"
+                     f"Φ = {s['collapsibility'][-1]:.2f}", fontsize="small")
+        fig.colorbar(sc, ax=ax, label="T (K)", shrink=0.7)
+        axes[-1].plot(s["time_s"] * 1e9, s["collapsibility"], label=os.path.basename(os.path.normpath(run)))
+    axes[-1].set_xlabel("t (ns)")
+    axes[-1].set_ylabel("collapsibility Φ = (A0 − A)/A0")
+    axes[-1].legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("kind", choices=["porous", "cavity"])
+    ap.add_argument("runs", nargs="+")
+    ap.add_argument("--out", default=None)
+    a = ap.parse_args()
+    out = a.out or os.path.join(a.runs[0], f"{a.kind}.png")
+    if a.kind == "porous":
+        porous(a.runs[0], out)
+    else:
+        cavity(a.runs, out)
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
