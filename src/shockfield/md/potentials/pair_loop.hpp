@@ -82,17 +82,20 @@ void reduce_copies(const std::vector<std::vector<T>>& copies, std::vector<T>& ta
 namespace detail {
 
 // The pair loop of one thread over owned atoms [begin, end); PerAtom adds the LAMMPS per-atom
-// split (half of each pair's energy and virial to each atom).
+// split (half of each pair's energy and virial to each atom). The kernel is copied so its
+// parameters stay in registers (the force stores could alias a referenced kernel).
 template <bool PerAtom, class K>
-void pair_force_range(const Vec3* x, const geometry::NeighborList& list, const K& kernel,
+void pair_force_range(const Vec3* x, const geometry::NeighborList& list, const K& kernel_ref,
                       std::size_t begin, std::size_t end, Vec3* f, double* eatom, Voigt6* vatom,
-                      double& energy, Voigt6& virial) {
-  double e = 0, vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0;
+                      double& energy) {
+  const K kernel = kernel_ref;
+  double e = 0;
   const int* neighbors = list.neighbors.data();
+  const std::int64_t* offset = list.offset.data();
   for (std::size_t i = begin; i < end; ++i) {
     const Vec3 xi = x[i];
     Vec3 fi = Vec3::Zero();
-    for (auto k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+    for (auto k = offset[i]; k < offset[i + 1]; ++k) {
       const int j = neighbors[k];
       const Vec3 d = xi - x[j];
       double fpair, epair;
@@ -101,12 +104,11 @@ void pair_force_range(const Vec3* x, const geometry::NeighborList& list, const K
       fi += fij;
       f[j] -= fij;
       e += epair;
-      const double v0 = d.x() * fij.x(), v1 = d.y() * fij.y(), v2 = d.z() * fij.z();
-      const double v3 = d.x() * fij.y(), v4 = d.x() * fij.z(), v5 = d.y() * fij.z();
-      vxx += v0; vyy += v1; vzz += v2; vxy += v3; vxz += v4; vyz += v5;
       if constexpr (PerAtom) {
         Voigt6 half;
-        half << 0.5 * v0, 0.5 * v1, 0.5 * v2, 0.5 * v3, 0.5 * v4, 0.5 * v5;
+        half << d.x() * fij.x(), d.y() * fij.y(), d.z() * fij.z(), d.x() * fij.y(), d.x() * fij.z(),
+            d.y() * fij.z();
+        half *= 0.5;
         eatom[i] += 0.5 * epair;
         eatom[j] += 0.5 * epair;
         vatom[i] += half;
@@ -116,14 +118,27 @@ void pair_force_range(const Vec3* x, const geometry::NeighborList& list, const K
     f[i] += fi;
   }
   energy = e;
-  virial << vxx, vyy, vzz, vxy, vxz, vyz;
+}
+
+// Σ_k x_k ⊗ f_k over owned and ghost entries: the virial Σ_pairs r_ij ⊗ f_ij of the pair forces
+// held in f, since each pair adds f_ij at x_i and −f_ij at x_j (LAMMPS virial_fdotr_compute).
+inline Voigt6 virial_fdotr(const Vec3* x, const Vec3* f, std::size_t n) {
+  double vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    vxx += x[k].x() * f[k].x(); vyy += x[k].y() * f[k].y(); vzz += x[k].z() * f[k].z();
+    vxy += x[k].x() * f[k].y(); vxz += x[k].x() * f[k].z(); vyz += x[k].y() * f[k].z();
+  }
+  Voigt6 v;
+  v << vxx, vyy, vzz, vxy, vxz, vyz;
+  return v;
 }
 
 }  // namespace detail
 
-/// Adds the forces of `kernel` over the half list to atoms.f (owned and ghost entries), the pair
-/// energy and virial Σ r_ij ⊗ f_ij to `out`, and with `out.per_atom` half of each pair's energy
-/// and virial to each atom (LAMMPS ev_tally with newton on).
+/// Adds the forces of `kernel` over the half list to atoms.f (owned and ghost entries, zero on
+/// entry as Potential::compute() is promised), the pair energy and virial Σ r_ij ⊗ f_ij to `out`,
+/// and with `out.per_atom` half of each pair's energy and virial to each atom (LAMMPS ev_tally
+/// with newton on). The total virial is Σ x ⊗ f of each thread's forces, before they are summed.
 template <PairForceKernel K>
 void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, const K& kernel,
                             ForceResult& out, ThreadScratch& scratch) {
@@ -144,11 +159,12 @@ void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, co
       double* eatom = detail::private_copy(scratch.scalar, out.energy_atom, t, 0.0).data();
       Voigt6* vatom = detail::private_copy(scratch.virial, out.virial_atom, t, Voigt6::Zero()).data();
       detail::pair_force_range<true>(atoms.x.data(), list, kernel, range[ut], range[ut + 1], f,
-                                     eatom, vatom, energy[ut], virial[ut]);
+                                     eatom, vatom, energy[ut]);
     } else {
       detail::pair_force_range<false>(atoms.x.data(), list, kernel, range[ut], range[ut + 1], f,
-                                      nullptr, nullptr, energy[ut], virial[ut]);
+                                      nullptr, nullptr, energy[ut]);
     }
+    virial[ut] = detail::virial_fdotr(atoms.x.data(), f, atoms.size());
 #pragma omp barrier
     detail::reduce_copies(scratch.force, atoms.f, nthreads);
     if (per_atom) {
@@ -170,17 +186,20 @@ void accumulate_pair_scalars(const Atoms& atoms, const geometry::NeighborList& l
   const auto range = detail::thread_ranges(list, nthreads);
   scratch.scalar.resize(static_cast<std::size_t>(nthreads));
   const Vec3* x = atoms.x.data();
+  const int* neighbors = list.neighbors.data();
+  const std::int64_t* offset = list.offset.data();
 #pragma omp parallel num_threads(nthreads)
   {
     const int t = omp_get_thread_num();
+    const K local_kernel = kernel;  // in registers: the stores below could alias a reference
     double* v = detail::private_copy(scratch.scalar, values, t, 0.0).data();
     for (std::size_t i = range[t]; i < range[t + 1]; ++i) {
       const Vec3 xi = x[i];
       double vi = 0;
-      for (auto k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-        const int j = list.neighbors[static_cast<std::size_t>(k)];
+      for (auto k = offset[i]; k < offset[i + 1]; ++k) {
+        const int j = neighbors[k];
         double to_i, to_j;
-        if (!kernel(static_cast<int>(i), j, (xi - x[j]).squaredNorm(), to_i, to_j)) continue;
+        if (!local_kernel(static_cast<int>(i), j, (xi - x[j]).squaredNorm(), to_i, to_j)) continue;
         vi += to_i;
         v[j] += to_j;
       }
