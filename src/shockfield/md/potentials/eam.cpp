@@ -120,7 +120,7 @@ void EamPotential::compute(Atoms& atoms, const geometry::NeighborList& list, For
   accumulate_pair_scalars(atoms, list,
                           DensityKernel{density_rows_.data(), atoms.type.data(), cutsq, rdr, t.nr,
                                         t.ntypes},
-                          rho_, scratch_);
+                          rho_, scratch_, &accepted_);
   atoms.reverse_sum(rho_);
 
   // Embedding on owned atoms (PairEAM::compute(), "fp = derivative of embedding energy").
@@ -157,7 +157,7 @@ void EamPotential::compute(Atoms& atoms, const geometry::NeighborList& list, For
   accumulate_pair_forces(atoms, list,
                          ForceKernel{force_rows_.data(), atoms.type.data(), fp_.data(), cutsq, rdr,
                                      t.nr, t.ntypes},
-                         out, scratch_);
+                         out, scratch_, &accepted_);
   rho_.resize(atoms.nlocal);
 }
 

@@ -7,7 +7,8 @@
 //   3. embedding pass on owned atoms: F'(ρ_i) and F(ρ_i); beyond the table (ρ > rhomax) the
 //      energy is extended linearly, F(ρ) = F(ρmax⁻ spline) + F'·(ρ - ρmax), to conserve energy,
 //   4. F' copied to the ghosts (Atoms::forward_copy),
-//   5. force pass: f_pair = -(F'_i ρ'_{j→i} + F'_j ρ'_{i→j} + φ')/r on each pair.
+//   5. force pass: f_pair = -(F'_i ρ'_{j→i} + F'_j ρ'_{i→j} + φ')/r on each pair (only the
+//      pairs the density pass found within the cutoff: the list's skin pairs are skipped).
 // Table look-ups use LAMMPS's arithmetic (p = r/dr + 1, m = min(int p, n-1), p -= m, p <= 1), so
 // energies and forces agree with LAMMPS to round-off. For speed, the three spline rows one pair
 // needs are packed side by side per type pair (like LAMMPS's OPT package).
@@ -46,6 +47,7 @@ class EamPotential final : public Potential {
   std::vector<double> density_rows_;
   std::vector<double> force_rows_;
   std::vector<double> rho_, fp_;
+  AcceptedPairs accepted_;  // pairs within the cutoff, found by the density pass
   ThreadScratch scratch_;
 };
 

@@ -42,6 +42,14 @@ struct ThreadScratch {
   std::vector<std::vector<Voigt6>> virial;
 };
 
+/// The pairs of a half list that a potential's kernel accepted (within its cutoff), kept at their
+/// places in the list: the neighbours of owned atom i are neighbors[list.offset[i], end[i]). A
+/// many-body potential records them in its first pass so later passes skip the skin pairs.
+struct AcceptedPairs {
+  std::vector<int> neighbors;
+  std::vector<std::int64_t> end;
+};
+
 namespace detail {
 
 /// First owned atom of each thread's range (size nthreads + 1), balancing pair counts.
@@ -84,18 +92,17 @@ namespace detail {
 // The pair loop of one thread over owned atoms [begin, end); PerAtom adds the LAMMPS per-atom
 // split (half of each pair's energy and virial to each atom). The kernel is copied so its
 // parameters stay in registers (the force stores could alias a referenced kernel).
+// The neighbours of i are neighbors[first[i], last[i]).
 template <bool PerAtom, class K>
-void pair_force_range(const Vec3* x, const geometry::NeighborList& list, const K& kernel_ref,
-                      std::size_t begin, std::size_t end, Vec3* f, double* eatom, Voigt6* vatom,
-                      double& energy) {
+void pair_force_range(const Vec3* x, const int* neighbors, const std::int64_t* first,
+                      const std::int64_t* last, const K& kernel_ref, std::size_t begin,
+                      std::size_t end, Vec3* f, double* eatom, Voigt6* vatom, double& energy) {
   const K kernel = kernel_ref;
   double e = 0;
-  const int* neighbors = list.neighbors.data();
-  const std::int64_t* offset = list.offset.data();
   for (std::size_t i = begin; i < end; ++i) {
     const Vec3 xi = x[i];
     Vec3 fi = Vec3::Zero();
-    for (auto k = offset[i]; k < offset[i + 1]; ++k) {
+    for (auto k = first[i]; k < last[i]; ++k) {
       const int j = neighbors[k];
       const Vec3 d = xi - x[j];
       double fpair, epair;
@@ -139,9 +146,12 @@ inline Voigt6 virial_fdotr(const Vec3* x, const Vec3* f, std::size_t n) {
 /// entry as Potential::compute() is promised), the pair energy and virial Σ r_ij ⊗ f_ij to `out`,
 /// and with `out.per_atom` half of each pair's energy and virial to each atom (LAMMPS ev_tally
 /// with newton on). The total virial is Σ x ⊗ f of each thread's forces, before they are summed.
+/// With `accepted` (recorded by accumulate_pair_scalars on the same list and positions) only
+/// those pairs are visited.
 template <PairForceKernel K>
 void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, const K& kernel,
-                            ForceResult& out, ThreadScratch& scratch) {
+                            ForceResult& out, ThreadScratch& scratch,
+                            const AcceptedPairs* accepted = nullptr) {
   const int nthreads = omp_get_max_threads();
   const auto range = detail::thread_ranges(list, nthreads);
   scratch.force.resize(static_cast<std::size_t>(nthreads));
@@ -150,6 +160,9 @@ void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, co
   std::vector<double> energy(static_cast<std::size_t>(nthreads), 0.0);
   std::vector<Voigt6> virial(static_cast<std::size_t>(nthreads), Voigt6::Zero());
   const bool per_atom = out.per_atom;
+  const int* neighbors = accepted ? accepted->neighbors.data() : list.neighbors.data();
+  const std::int64_t* first = list.offset.data();
+  const std::int64_t* last = accepted ? accepted->end.data() : first + 1;
 #pragma omp parallel num_threads(nthreads)
   {
     const int t = omp_get_thread_num();
@@ -158,11 +171,11 @@ void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, co
     if (per_atom) {
       double* eatom = detail::private_copy(scratch.scalar, out.energy_atom, t, 0.0).data();
       Voigt6* vatom = detail::private_copy(scratch.virial, out.virial_atom, t, Voigt6::Zero()).data();
-      detail::pair_force_range<true>(atoms.x.data(), list, kernel, range[ut], range[ut + 1], f,
-                                     eatom, vatom, energy[ut]);
+      detail::pair_force_range<true>(atoms.x.data(), neighbors, first, last, kernel, range[ut],
+                                     range[ut + 1], f, eatom, vatom, energy[ut]);
     } else {
-      detail::pair_force_range<false>(atoms.x.data(), list, kernel, range[ut], range[ut + 1], f,
-                                      nullptr, nullptr, energy[ut]);
+      detail::pair_force_range<false>(atoms.x.data(), neighbors, first, last, kernel, range[ut],
+                                      range[ut + 1], f, nullptr, nullptr, energy[ut]);
     }
     virial[ut] = detail::virial_fdotr(atoms.x.data(), f, atoms.size());
 #pragma omp barrier
@@ -178,16 +191,26 @@ void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, co
   }
 }
 
-/// Adds to_i and to_j of `kernel` over the half list into `values` (owned and ghost entries).
+/// Adds to_i and to_j of `kernel` over the half list into `values` (owned and ghost entries);
+/// with `accepted`, records the pairs the kernel accepted (see AcceptedPairs).
 template <PairScalarKernel K>
 void accumulate_pair_scalars(const Atoms& atoms, const geometry::NeighborList& list,
-                             const K& kernel, std::vector<double>& values, ThreadScratch& scratch) {
+                             const K& kernel, std::vector<double>& values, ThreadScratch& scratch,
+                             AcceptedPairs* accepted = nullptr) {
   const int nthreads = omp_get_max_threads();
   const auto range = detail::thread_ranges(list, nthreads);
   scratch.scalar.resize(static_cast<std::size_t>(nthreads));
   const Vec3* x = atoms.x.data();
   const int* neighbors = list.neighbors.data();
   const std::int64_t* offset = list.offset.data();
+  int* kept = nullptr;
+  std::int64_t* kept_end = nullptr;
+  if (accepted) {
+    accepted->neighbors.resize(list.pairs());
+    accepted->end.resize(list.nlocal());
+    kept = accepted->neighbors.data();
+    kept_end = accepted->end.data();
+  }
 #pragma omp parallel num_threads(nthreads)
   {
     const int t = omp_get_thread_num();
@@ -196,14 +219,17 @@ void accumulate_pair_scalars(const Atoms& atoms, const geometry::NeighborList& l
     for (std::size_t i = range[t]; i < range[t + 1]; ++i) {
       const Vec3 xi = x[i];
       double vi = 0;
+      std::int64_t n_kept = offset[i];
       for (auto k = offset[i]; k < offset[i + 1]; ++k) {
         const int j = neighbors[k];
         double to_i, to_j;
         if (!local_kernel(static_cast<int>(i), j, (xi - x[j]).squaredNorm(), to_i, to_j)) continue;
         vi += to_i;
         v[j] += to_j;
+        if (kept) kept[n_kept++] = j;
       }
       v[i] += vi;
+      if (kept_end) kept_end[i] = n_kept;
     }
 #pragma omp barrier
     detail::reduce_copies(scratch.scalar, values, nthreads);
