@@ -56,21 +56,15 @@ int euler_times_cells(unsigned config, int dimension, bool closed) {
   return sum;
 }
 
-// Crofton weight of one block for the boundary length (2D) or surface (3D), in grid units: every
-// pair of block cells that differ (a crossing of the lattice line through them), divided by the
-// number of blocks holding that pair (2^(D−m)) and the line density |u| = √m.
-double crofton_crossings(unsigned config, int dimension) {
-  const double factor = dimension == 2 ? pi / 2.0 : 2.0;
-  const auto& weight = dimension == 2 ? kWeight2D : kWeight3D;
-  double sum = 0.0;
+// Crossings of the lattice lines through one block: the pairs of block cells that differ, by
+// direction class m (number of nonzero components of the pair's direction, 1..D).
+std::array<int, 4> crossings(unsigned config, int dimension) {
+  std::array<int, 4> by_class{};
   const unsigned cells = 1u << dimension;
   for (unsigned a = 0; a < cells; ++a)
-    for (unsigned b = a + 1; b < cells; ++b) {
-      if (((config >> a) & 1u) == ((config >> b) & 1u)) continue;
-      const int m = std::popcount(a ^ b);
-      sum += weight[m] / (static_cast<double>(1 << (dimension - m)) * std::sqrt(double(m)));
-    }
-  return factor * sum;
+    for (unsigned b = a + 1; b < cells; ++b)
+      if (((config >> a) & 1u) != ((config >> b) & 1u)) ++by_class[std::popcount(a ^ b)];
+  return by_class;
 }
 
 // 2D configuration of four block cells c00, c10, c01, c11 forming a (possibly sheared) square.
@@ -80,18 +74,17 @@ unsigned square_config(unsigned config, std::array<unsigned, 4> cells) {
   return out;
 }
 
-// Mean breadth weight of one 3D block, in grid units: Σ over the 13 plane normals u of
-// w_u × (plane spacing 1/|u|) × χ of the block's part of the planar sections.
-double mean_breadth_weight(unsigned config, bool closed) {
-  double sum = 0.0;
+// Euler characteristics of the block's part of the planar sections used by the mean breadth, for
+// the three classes of plane normal u, as integers: {Σ 4χ of the axis-normal faces, Σ 4χ of the
+// face-diagonal-normal rectangles, Σ 6χ of the space-diagonal-normal triangles}.
+std::array<int, 3> section_euler(unsigned config, bool closed) {
+  std::array<int, 3> sum{};
   // Axis normals: the block's two faces normal to the axis; each face square lies in 2 blocks.
   for (unsigned a = 0; a < 3; ++a) {
     const unsigned u = 1u << ((a + 1) % 3), v = 1u << ((a + 2) % 3);
     for (unsigned side = 0; side < 2; ++side) {
       const unsigned o = side << a;
-      const int chi4 = euler_times_cells(square_config(config, {o, o | u, o | v, o | u | v}), 2,
-                                         closed);
-      sum += kWeight3D[1] * 0.5 * chi4 / 4.0;
+      sum[0] += euler_times_cells(square_config(config, {o, o | u, o | v, o | u | v}), 2, closed);
     }
   }
   // Face-diagonal normals (a ± b): the plane through the block's diagonal pair in (a, b) holds
@@ -101,11 +94,9 @@ double mean_breadth_weight(unsigned config, bool closed) {
       const unsigned t = 1u << (3 - a - b);  // the third axis
       const std::array<std::array<unsigned, 2>, 2> pairs{
           {{0u, (1u << a) | (1u << b)}, {1u << a, 1u << b}}};
-      for (const auto& p : pairs) {
-        const int chi4 =
+      for (const auto& p : pairs)
+        sum[1] +=
             euler_times_cells(square_config(config, {p[0], p[1], p[0] | t, p[1] | t}), 2, closed);
-        sum += kWeight3D[2] / std::sqrt(2.0) * chi4 / 4.0;
-      }
     }
   // Space-diagonal normals (1, ±1, ±1): planes cut the block in triangles of face diagonals
   // (the level sets of n·p with three cells); the triangular lattice is self-dual, so both
@@ -121,52 +112,71 @@ double mean_breadth_weight(unsigned config, bool closed) {
           ++count;
         }
       if (count != 3) continue;
-      const auto white = [&](unsigned c) { return (config >> c) & 1u; };
-      const unsigned any = white(tri[0]) | white(tri[1]) | white(tri[2]);
-      const unsigned points = white(tri[0]) + white(tri[1]) + white(tri[2]);
-      const unsigned either = (white(tri[0]) | white(tri[1])) + (white(tri[1]) | white(tri[2])) +
-                              (white(tri[0]) | white(tri[2]));
-      const double chi = double(any) - 0.5 * either + double(points) / 6.0;
-      sum += kWeight3D[3] / std::sqrt(3.0) * chi;
+      const auto white = [&](unsigned c) { return int((config >> c) & 1u); };
+      const int any = white(tri[0]) | white(tri[1]) | white(tri[2]);
+      const int points = white(tri[0]) + white(tri[1]) + white(tri[2]);
+      const int either = (white(tri[0]) | white(tri[1])) + (white(tri[1]) | white(tri[2])) +
+                         (white(tri[0]) | white(tri[2]));
+      sum[2] += 6 * any - 3 * either + points;
     }
   }
   return sum;
 }
 
-// Per-configuration weights, computed once.
-struct WeightTable {
-  std::vector<std::int64_t> white_cells;  // cells of the block that are white
-  std::vector<double> crofton;   // boundary length (2D) or surface (3D), grid units
-  std::array<std::vector<std::int64_t>, 2> euler;   // [closed] 2^D χ
-  std::array<std::vector<double>, 2> mean_breadth;  // [closed], 3D only
-};
+// Columns of the integer weight table (per block configuration); the functionals are fixed
+// combinations of their sums over blocks. 2D uses the first five.
+namespace col {
+constexpr std::size_t white = 0;  // white cells of the block (each cell lies in 2^D blocks)
+constexpr std::size_t euler(bool closed) {
+  return closed ? 1 : 2;
+}  // 2^D χ
+constexpr std::size_t crossings(int m) {
+  return 2 + std::size_t(m);
+}  // m = 1..D
+constexpr std::size_t section(std::size_t kind, bool closed) {  // 3D: section_euler[kind]
+  return kind == 2 ? 10 : 6 + 2 * kind + (closed ? 0 : 1);
+}
+constexpr std::size_t width(int dimension) {
+  return dimension == 3 ? 11 : 5;
+}
+}  // namespace col
 
-const WeightTable& weights(int dimension) {
-  static const std::array<WeightTable, 2> tables = [] {
-    std::array<WeightTable, 2> t;
-    for (int d = 2; d <= 3; ++d) {
-      WeightTable& w = t[d - 2];
-      const unsigned nc = 1u << (1u << d);
-      for (unsigned c = 0; c < nc; ++c) {
-        w.white_cells.push_back(std::popcount(c));
-        w.crofton.push_back(crofton_crossings(c, d));
-        for (int closed = 0; closed < 2; ++closed) {
-          w.euler[closed].push_back(euler_times_cells(c, d, closed != 0));
-          if (d == 3) w.mean_breadth[closed].push_back(mean_breadth_weight(c, closed != 0));
-        }
-      }
+BlockWeights make_weights(int d) {
+  BlockWeights w{d, col::width(d), std::vector<std::int32_t>(configurations(d) * col::width(d))};
+  for (unsigned c = 0; c < configurations(d); ++c) {
+    std::int32_t* row = w.values.data() + c * w.width;
+    row[col::white] = std::popcount(c);
+    const auto crossed = crossings(c, d);
+    for (int m = 1; m <= d; ++m) row[col::crossings(m)] = crossed[m];
+    for (const bool closed : {false, true}) {
+      row[col::euler(closed)] = euler_times_cells(c, d, closed);
+      if (d != 3) continue;
+      const auto sections = section_euler(c, closed);
+      for (std::size_t kind = 0; kind < 3; ++kind) row[col::section(kind, closed)] = sections[kind];
     }
-    return t;
-  }();
-  return tables[dimension - 2];
+  }
+  return w;
 }
 
-// Σ_c counts[c] × weight[c], in configuration order (the same order for every route).
-template <class T>
-T weighted_sum(std::span<const std::int64_t> counts, const std::vector<T>& weight) {
-  T sum{};
-  for (std::size_t c = 0; c < counts.size(); ++c) sum += static_cast<T>(counts[c]) * weight[c];
-  return sum;
+// Crofton's formula in grid units: boundary length (2D, factor π/2) or surface (3D, factor 2)
+// from the crossings, each divided by the number of blocks holding the pair (2^(D−m)) and the
+// line density |u| = √m.
+double crofton(std::span<const std::int64_t> row, int dimension) {
+  const double factor = dimension == 2 ? pi / 2.0 : 2.0;
+  const auto& weight = dimension == 2 ? kWeight2D : kWeight3D;
+  double sum = 0.0;
+  for (int m = 1; m <= dimension; ++m)
+    sum += weight[m] / (double(1 << (dimension - m)) * std::sqrt(double(m))) *
+           double(row[col::crossings(m)]);
+  return factor * sum;
+}
+
+// Mean breadth in grid units: Σ over the 13 plane normals u of w_u × (plane spacing 1/|u|) × χ
+// of the sections (axis faces lie in 2 blocks; 4χ and 6χ are stored).
+double mean_breadth(std::span<const std::int64_t> row, bool closed) {
+  return kWeight3D[1] * 0.5 * double(row[col::section(0, closed)]) / 4.0 +
+         kWeight3D[2] / std::sqrt(2.0) * double(row[col::section(1, closed)]) / 4.0 +
+         kWeight3D[3] / std::sqrt(3.0) * double(row[col::section(2, closed)]) / 6.0;
 }
 
 double isotropic_spacing(const GridField& field) {
@@ -185,11 +195,10 @@ struct Common {
 };
 
 Common common(std::span<const std::int64_t> row, const GridField& field, bool closed) {
-  const WeightTable& w = weights(field.dimension());
   const std::int64_t cells_per_block = std::int64_t{1} << field.dimension();
   Common c;
-  c.white = weighted_sum<std::int64_t>(row, w.white_cells) / cells_per_block;
-  c.euler = weighted_sum<std::int64_t>(row, w.euler[closed]) / cells_per_block;  // eq. (32)
+  c.white = row[col::white] / cells_per_block;
+  c.euler = row[col::euler(closed)] / cells_per_block;  // eq. (32)
   const auto total = static_cast<std::int64_t>(field.size());
   c.fraction = static_cast<double>(c.white) / static_cast<double>(total);
   const std::int64_t black = total - c.white;  // void cells are black
@@ -204,48 +213,54 @@ void require_dimension(const GridField& field, int dimension) {
                                  field.n[0], field.n[1], field.n[2]));
 }
 
-// Counts every threshold in one pass, then evaluates `row(counts, k)` per threshold.
+// Sums every threshold in one pass, then evaluates `row(sums, k)` per threshold.
 template <class Row>
 auto for_all_thresholds(const GridField& field, std::span<const double> thresholds,
                         Boundary boundary, int dimension, Row row) {
   require_dimension(field, dimension);
   isotropic_spacing(field);
-  const ConfigurationCounts counts = count_configurations(field, thresholds, boundary);
-  std::vector<decltype(row(counts, std::size_t{0}))> out;
-  for (std::size_t k = 0; k < thresholds.size(); ++k) out.push_back(row(counts, k));
+  const BlockSums sums =
+      sum_block_weights(field, thresholds, boundary, minkowski_weights(dimension));
+  std::vector<decltype(row(sums, std::size_t{0}))> out;
+  for (std::size_t k = 0; k < thresholds.size(); ++k) out.push_back(row(sums, k));
   return out;
 }
 
 }  // namespace
 
-Functionals2D functionals_2d(const ConfigurationCounts& counts, std::size_t k,
-                             const GridField& field, Connectivity2D connectivity) {
+const BlockWeights& minkowski_weights(int dimension) {
+  static const std::array<BlockWeights, 2> tables{make_weights(2), make_weights(3)};
+  return tables.at(static_cast<std::size_t>(dimension - 2));
+}
+
+Functionals2D functionals_2d(const BlockSums& sums, std::size_t k, const GridField& field,
+                             Connectivity2D connectivity) {
   require_dimension(field, 2);
   const double h = isotropic_spacing(field);
-  const auto row = counts.row(k);
+  const auto row = sums.row(k);
   const Common c = common(row, field, connectivity == Connectivity2D::eight);
   Functionals2D f;
-  f.threshold = counts.thresholds[k];
+  f.threshold = sums.thresholds[k];
   f.area_fraction = c.fraction;
-  f.boundary_length = weighted_sum<double>(row, weights(2).crofton) * h;
+  f.boundary_length = crofton(row, 2) * h;
   f.euler = c.euler;
   f.euler_per_black_node = c.per_black;
   f.white_cells = c.white;
   return f;
 }
 
-Functionals3D functionals_3d(const ConfigurationCounts& counts, std::size_t k,
-                             const GridField& field, Adjacency3D adjacency) {
+Functionals3D functionals_3d(const BlockSums& sums, std::size_t k, const GridField& field,
+                             Adjacency3D adjacency) {
   require_dimension(field, 3);
   const double h = isotropic_spacing(field);
-  const auto row = counts.row(k);
+  const auto row = sums.row(k);
   const bool closed = adjacency == Adjacency3D::twentysix_6;
   const Common c = common(row, field, closed);
   Functionals3D f;
-  f.threshold = counts.thresholds[k];
+  f.threshold = sums.thresholds[k];
   f.volume_fraction = c.fraction;
-  f.surface_area = weighted_sum<double>(row, weights(3).crofton) * h * h;
-  f.mean_breadth = weighted_sum<double>(row, weights(3).mean_breadth[closed]) * h;
+  f.surface_area = crofton(row, 3) * h * h;
+  f.mean_breadth = mean_breadth(row, closed) * h;
   f.integral_mean_curvature = 2.0 * pi * f.mean_breadth;
   f.euler = c.euler;
   f.euler_per_black_node = c.per_black;
@@ -255,15 +270,15 @@ Functionals3D functionals_3d(const ConfigurationCounts& counts, std::size_t k,
 
 std::vector<Functionals2D> minkowski_2d(const GridField& field, std::span<const double> thresholds,
                                         const MinkowskiOptions& options) {
-  return for_all_thresholds(field, thresholds, options.boundary, 2, [&](const auto& counts, auto k) {
-    return functionals_2d(counts, k, field, options.connectivity2d);
+  return for_all_thresholds(field, thresholds, options.boundary, 2, [&](const auto& sums, auto k) {
+    return functionals_2d(sums, k, field, options.connectivity2d);
   });
 }
 
 std::vector<Functionals3D> minkowski_3d(const GridField& field, std::span<const double> thresholds,
                                         const MinkowskiOptions& options) {
-  return for_all_thresholds(field, thresholds, options.boundary, 3, [&](const auto& counts, auto k) {
-    return functionals_3d(counts, k, field, options.adjacency3d);
+  return for_all_thresholds(field, thresholds, options.boundary, 3, [&](const auto& sums, auto k) {
+    return functionals_3d(sums, k, field, options.adjacency3d);
   });
 }
 

@@ -55,11 +55,17 @@ struct Functionals3D {
   std::int64_t white_cells = 0;
 };
 
-/// Functionals of threshold row k of `counts`, for `field`'s grid (cell count and spacing).
-Functionals2D functionals_2d(const ConfigurationCounts& counts, std::size_t k,
-                             const GridField& field, Connectivity2D connectivity);
-Functionals3D functionals_3d(const ConfigurationCounts& counts, std::size_t k,
-                             const GridField& field, Adjacency3D adjacency);
+/// The integer block weights the functionals are computed from (dimension 2 or 3): white cells,
+/// 2^D χ for both connectivities, lattice-line crossings per direction class and (3D) the
+/// Euler characteristics of the mean breadth's planar sections.
+const BlockWeights& minkowski_weights(int dimension);
+
+/// Functionals of threshold row k of `sums` (of minkowski_weights), for `field`'s grid (cell
+/// count and spacing).
+Functionals2D functionals_2d(const BlockSums& sums, std::size_t k, const GridField& field,
+                             Connectivity2D connectivity);
+Functionals3D functionals_3d(const BlockSums& sums, std::size_t k, const GridField& field,
+                             Adjacency3D adjacency);
 
 /// All thresholds (strictly increasing) in one pass. Throws InputError on a bad field, bad
 /// thresholds, a grid of the wrong dimension or unequal spacings.
