@@ -8,16 +8,20 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <string_view>
 
+#include "shockfield/analysis/vti_binary.hpp"
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::analysis {
 namespace {
 
-std::string trim(const std::string& s) {
+constexpr double kVoid = std::numeric_limits<double>::quiet_NaN();
+
+std::string trim(std::string_view s) {
   const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+  if (b == std::string_view::npos) return "";
+  return std::string(s.substr(b, s.find_last_not_of(" \t\r") - b + 1));
 }
 
 std::string lower(std::string s) {
@@ -44,12 +48,78 @@ void push(GridField& f, double value) {
   f.is_void.push_back(std::isnan(value) ? 1 : 0);
 }
 
-GridField read_csv(const std::string& path, std::ifstream& in) {
+// Whitespace-separated tokens of a text, with the line each is on (for file:line messages).
+class Tokens {
+ public:
+  Tokens(std::string_view text, std::string path, std::size_t first_line = 1)
+      : text_(text), path_(std::move(path)), line_(first_line), token_line_(first_line) {}
+
+  /// The next token; empty at the end of the text.
+  std::string next() {
+    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_])))
+      line_ += text_[pos_++] == '\n';
+    const std::size_t start = pos_;
+    if (start < text_.size()) token_line_ = line_;
+    while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+    return std::string(text_.substr(start, pos_ - start));
+  }
+  /// The rest of the current line, trimmed; moves to the next line.
+  std::string rest_of_line() {
+    const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
+    const std::string rest = trim(text_.substr(pos_, end - pos_));
+    token_line_ = line_;
+    line_ += end < text_.size(), pos_ = std::min(end + 1, text_.size());
+    return rest;
+  }
+  /// "file:line" of the last token (or line) read.
+  std::string where() const { return fmt::format("{}:{}", path_, token_line_); }
+  double number(const char* what) {
+    const std::string t = next();
+    if (t.empty()) throw InputError(fmt::format("{}: {} expected, the file ends", where(), what));
+    return parse_number(t, where());
+  }
+  std::size_t count(const char* what) {
+    const double v = number(what);
+    if (!(v >= 0.0) || v != std::floor(v) || v > 1e15)
+      throw InputError(fmt::format("{}: {} is {}; expected a whole number >= 0", where(), what, v));
+    return static_cast<std::size_t>(v);
+  }
+
+ private:
+  std::string_view text_;
+  std::string path_;
+  std::size_t line_, token_line_, pos_ = 0;
+};
+
+// Reads f.size() whitespace-separated numbers (nan = void) into f.
+void read_values(Tokens& in, GridField& f) {
+  const std::size_t count = f.size();
+  f.values.clear(), f.is_void.clear();
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string token = in.next();
+    if (token.empty())
+      throw InputError(
+          fmt::format("{}: {} values expected for {} x {} x {} cells, the data ends "
+                      "after {}",
+                      in.where(), count, f.n[0], f.n[1], f.n[2], i));
+    const std::string t = lower(token);
+    push(f, t == "nan" || t == "-nan" ? kVoid : parse_number(token, in.where()));
+  }
+}
+
+GridField read_csv(const std::string& path, const std::string& text) {
   GridField f;
   f.n = {0, 0, 1};
   std::size_t rows_in_slice = 0, line_no = 0, slices = 0;
+  std::istringstream in(text);
   std::string line;
   bool in_slice = false;
+  const auto end_slice = [&](const std::string& where) {
+    if (slices > 0 && rows_in_slice != f.n[1])
+      throw InputError(fmt::format("{}: slice {} has {} rows, the first has {}", where, slices + 1,
+                                   rows_in_slice, f.n[1]));
+    f.n[1] = rows_in_slice, ++slices, rows_in_slice = 0, in_slice = false;
+  };
   while (std::getline(in, line)) {
     ++line_no;
     const std::string where = fmt::format("{}:{}", path, line_no);
@@ -60,16 +130,18 @@ GridField read_csv(const std::string& path, std::ifstream& in) {
       c >> key >> eq;
       if (key == "spacing") f.spacing.fill(parse_number(trim(c.str().substr(c.tellg())), where));
       if (key == "origin")
-        for (auto& o : f.origin) c >> o;
+        for (auto& o : f.origin)
+          o = parse_number(
+              [&] {
+                std::string s;
+                c >> s;
+                return s;
+              }(),
+              where);
       continue;
     }
     if (t.empty()) {
-      if (in_slice) {
-        if (slices > 0 && rows_in_slice != f.n[1])
-          throw InputError(fmt::format("{}: slice {} has {} rows, the first has {}", where, slices,
-                                       rows_in_slice, f.n[1]));
-        f.n[1] = rows_in_slice, ++slices, rows_in_slice = 0, in_slice = false;
-      }
+      if (in_slice) end_slice(where);
       continue;
     }
     std::vector<double> row;
@@ -77,84 +149,72 @@ GridField read_csv(const std::string& path, std::ifstream& in) {
     std::string cell;
     while (std::getline(cells, cell, ',')) {
       const std::string c = lower(trim(cell));
-      row.push_back(c.empty() || c == "void" ? std::numeric_limits<double>::quiet_NaN()
-                                             : parse_number(c, where));
+      row.push_back(c.empty() || c == "void" ? kVoid : parse_number(c, where));
       if (std::isnan(row.back()) && !(c.empty() || c == "void"))
-        throw InputError(fmt::format("{}: NaN value; write `void` for a cell without material",
-                                     where));
+        throw InputError(
+            fmt::format("{}: NaN value; write `void` for a cell without material", where));
     }
-    if (t.back() == ',') row.push_back(std::numeric_limits<double>::quiet_NaN());
+    if (t.back() == ',') row.push_back(kVoid);
     if (f.n[0] == 0) f.n[0] = row.size();
     if (row.size() != f.n[0])
-      throw InputError(fmt::format("{}: {} values in this row, {} in the first row", where,
-                                   row.size(), f.n[0]));
+      throw InputError(
+          fmt::format("{}: {} values in this row, {} in the first row", where, row.size(), f.n[0]));
     for (double v : row) push(f, v);
     ++rows_in_slice, in_slice = true;
   }
-  if (in_slice) {
-    if (slices > 0 && rows_in_slice != f.n[1])
-      throw InputError(fmt::format("{}: last slice has {} rows, the first has {}", path,
-                                   rows_in_slice, f.n[1]));
-    f.n[1] = rows_in_slice, ++slices;
-  }
+  if (in_slice) end_slice(fmt::format("{}:{}", path, line_no));
   f.n[2] = std::max<std::size_t>(slices, 1);
   if (f.values.empty()) f.n = {0, 0, 1};
   return f;
 }
 
-// Reads `count` whitespace-separated numbers (NaN allowed = void) from `in`.
-void read_values(std::istream& in, std::size_t count, GridField& f, const std::string& path) {
-  std::string token;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (!(in >> token))
-      throw InputError(fmt::format("{}: {} values expected, the data ends after {}", path, count, i));
-    const std::string t = lower(token);
-    push(f, t == "nan" || t == "-nan" ? std::numeric_limits<double>::quiet_NaN()
-                                      : parse_number(token, path));
-  }
-}
-
-GridField read_legacy_vtk(const std::string& path, std::ifstream& in, const std::string& array) {
+GridField read_legacy_vtk(const std::string& path, const std::string& text,
+                          const std::string& array) {
   GridField f;
   std::array<std::size_t, 3> dims{0, 0, 0};
-  std::string line, word;
-  std::getline(in, line);  // # vtk DataFile Version x.x
-  std::getline(in, line);  // title
-  std::getline(in, line);
-  if (trim(line) != "ASCII")
-    throw InputError(fmt::format("{}: legacy VTK encoding '{}'; only ASCII is read (use .vti "
-                                 "ascii or convert)", path, trim(line)));
+  Tokens in(text, path);
+  if (in.rest_of_line().rfind("# vtk DataFile", 0) != 0)
+    throw InputError(fmt::format("{}:1: not a legacy VTK file (no '# vtk DataFile' line)", path));
+  in.rest_of_line();  // title
+  if (const std::string encoding = in.rest_of_line(); encoding != "ASCII")
+    throw InputError(
+        fmt::format("{}:3: legacy VTK encoding '{}'; only ASCII is read (save as "
+                    ".vti, whose binary forms are read)",
+                    path, encoding));
   bool cell_data = false;
-  while (in >> word) {
-    word = lower(word);
+  for (std::string word = lower(in.next()); !word.empty(); word = lower(in.next())) {
     if (word == "dataset") {
-      in >> word;
-      if (lower(word) != "structured_points")
+      const std::string type = in.next();
+      if (lower(type) != "structured_points")
         throw InputError(fmt::format("{}: DATASET {}; expected STRUCTURED_POINTS (image data)",
-                                     path, word));
+                                     in.where(), type));
     } else if (word == "dimensions") {
-      in >> dims[0] >> dims[1] >> dims[2];
+      for (auto& d : dims) d = in.count("DIMENSIONS value");
     } else if (word == "spacing" || word == "aspect_ratio") {
-      in >> f.spacing[0] >> f.spacing[1] >> f.spacing[2];
+      for (auto& s : f.spacing) s = in.number("SPACING value");
     } else if (word == "origin") {
-      in >> f.origin[0] >> f.origin[1] >> f.origin[2];
+      for (auto& o : f.origin) o = in.number("ORIGIN value");
     } else if (word == "point_data" || word == "cell_data") {
       cell_data = word == "cell_data";
-      std::size_t count = 0;
-      in >> count;
-    } else if (word == "scalars") {
-      std::string name, type;
-      in >> name >> type;
-      std::getline(in, line);  // optional component count
-      if (!trim(line).empty() && trim(line) != "1")
-        throw InputError(fmt::format("{}: SCALARS {} has {} components; expected 1", path, name,
-                                     trim(line)));
-      in >> word >> word;  // LOOKUP_TABLE default
+      const std::size_t count = in.count("number of values");
+      if (dims[0] * dims[1] * dims[2] == 0)
+        throw InputError(fmt::format("{}: {} before DIMENSIONS", in.where(), word));
       for (int a = 0; a < 3; ++a)
-        f.n[a] = cell_data ? std::max<std::size_t>(dims[a], 2) - 1 : std::max<std::size_t>(dims[a], 1);
-      const std::size_t count = f.n[0] * f.n[1] * f.n[2];
-      f.values.clear(), f.is_void.clear();
-      read_values(in, count, f, path);
+        f.n[a] = cell_data ? std::max<std::size_t>(dims[a], 2) - 1 : dims[a];
+      if (count != f.size())
+        throw InputError(fmt::format("{}: {} {} for DIMENSIONS {} {} {}; expected {}", in.where(),
+                                     word, count, dims[0], dims[1], dims[2], f.size()));
+    } else if (word == "scalars") {
+      const std::string name = in.next(), type = in.next();
+      if (const std::string comps = in.rest_of_line(); !comps.empty() && comps != "1")
+        throw InputError(
+            fmt::format("{}: SCALARS {} has {} components; expected 1", in.where(), name, comps));
+      if (lower(in.next()) != "lookup_table")
+        throw InputError(fmt::format("{}: expected LOOKUP_TABLE after SCALARS", in.where()));
+      in.next();  // table name
+      if (f.size() == 0)
+        throw InputError(fmt::format("{}: SCALARS before POINT_DATA / CELL_DATA", in.where()));
+      read_values(in, f);
       if (array.empty() || name == array) return f;
     }
   }
@@ -162,67 +222,135 @@ GridField read_legacy_vtk(const std::string& path, std::ifstream& in, const std:
                                array.empty() ? "" : fmt::format(" named '{}'", array)));
 }
 
-// Value of attribute `key` in an XML start tag.
-std::string attribute(const std::string& tag, const std::string& key) {
-  const auto p = tag.find(" " + key + "=\"");
-  if (p == std::string::npos) return "";
-  const auto b = p + key.size() + 3;
-  return tag.substr(b, tag.find('"', b) - b);
+std::size_t line_at(const std::string& text, std::size_t pos) {
+  return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + pos, '\n'));
 }
 
-GridField read_vti(const std::string& path, std::ifstream& in, const std::string& array) {
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto image = text.find("<ImageData");
+GridField read_vti(const std::string& path, const std::string& text, const std::string& array) {
+  // Markup ends where raw appended data may begin.
+  const std::string_view markup = std::string_view(text).substr(0, text.find("<AppendedData"));
+  const auto image = markup.find("<ImageData");
   if (image == std::string::npos)
-    throw InputError(fmt::format("{}: no <ImageData> element; expected a VTK XML image file", path));
-  const std::string tag = text.substr(image, text.find('>', image) - image);
-  std::istringstream extent(attribute(tag, "WholeExtent"));
-  std::array<long, 6> e{};
-  for (auto& v : e) extent >> v;
+    throw InputError(
+        fmt::format("{}: no <ImageData> element; expected a VTK XML image file", path));
+  const auto tag = markup.substr(image, markup.find('>', image) - image);
+  const auto where = [&](std::size_t pos) {
+    return fmt::format("{}:{}", path, line_at(text, pos));
+  };
+  const std::string extent_text = xml_attribute(tag, "WholeExtent");
+  Tokens extent(extent_text, path, line_at(text, image));
+  std::array<double, 6> e{};
+  for (auto& v : e) v = extent.number("WholeExtent value");
   GridField f;
-  std::istringstream(attribute(tag, "Origin")) >> f.origin[0] >> f.origin[1] >> f.origin[2];
-  std::istringstream(attribute(tag, "Spacing")) >> f.spacing[0] >> f.spacing[1] >> f.spacing[2];
-  for (std::size_t pos = text.find("<DataArray", image); pos != std::string::npos;
-       pos = text.find("<DataArray", pos + 1)) {
-    const std::string da = text.substr(pos, text.find('>', pos) - pos);
-    if (!array.empty() && attribute(da, "Name") != array) continue;
-    if (attribute(da, "format") != "ascii")
-      throw InputError(fmt::format("{}: DataArray '{}' has format=\"{}\"; only ascii is read",
-                                   path, attribute(da, "Name"), attribute(da, "format")));
-    const std::string nc = attribute(da, "NumberOfComponents");
-    if (!nc.empty() && nc != "1")
-      throw InputError(fmt::format("{}: DataArray '{}' has {} components; expected 1", path,
-                                   attribute(da, "Name"), nc));
-    const auto cell_pos = text.rfind("<CellData", pos), point_pos = text.rfind("<PointData", pos);
-    const bool cell = cell_pos != std::string::npos &&
-                      (point_pos == std::string::npos || cell_pos > point_pos);
+  for (const auto& [key, values] : {std::pair{"Origin", &f.origin}, {"Spacing", &f.spacing}}) {
+    const std::string given = xml_attribute(tag, key);
+    Tokens t(given, path, line_at(text, image));
+    for (double& v : *values)
+      if (const std::string token = t.next(); !token.empty()) v = parse_number(token, t.where());
+  }
+  for (auto pos = markup.find("<DataArray", image); pos != std::string::npos;
+       pos = markup.find("<DataArray", pos + 1)) {
+    const auto da = markup.substr(pos, markup.find('>', pos) - pos);
+    const std::string name = xml_attribute(da, "Name"), format = xml_attribute(da, "format");
+    if (!array.empty() && name != array) continue;
+    const std::string nc = xml_attribute(da, "NumberOfComponents");
+    const bool scalar = nc.empty() || nc == "1";
+    if (array.empty() && !scalar) continue;  // the first scalar array
+    if (!scalar)
+      throw InputError(
+          fmt::format("{}: DataArray '{}' has {} components; expected 1", where(pos), name, nc));
+    const auto cell_pos = markup.rfind("<CellData", pos),
+               point_pos = markup.rfind("<PointData", pos);
+    const bool cell =
+        cell_pos != std::string::npos && (point_pos == std::string::npos || cell_pos > point_pos);
     for (int a = 0; a < 3; ++a) {
-      const auto points = static_cast<std::size_t>(e[2 * a + 1] - e[2 * a] + 1);
+      const auto points = static_cast<std::size_t>(std::max(0.0, e[2 * a + 1] - e[2 * a] + 1));
       f.n[a] = cell ? std::max<std::size_t>(points, 2) - 1 : points;
     }
-    const auto body = text.find('>', pos) + 1;
-    std::istringstream values(text.substr(body, text.find("</DataArray>", body) - body));
-    read_values(values, f.size(), f, path);
+    const auto body = markup.find('>', pos) + 1;
+    if (format == "ascii") {
+      Tokens values(markup.substr(body, markup.find("</DataArray>", body) - body), path,
+                    line_at(text, body));
+      read_values(values, f);
+    } else {
+      const VtiBinary b{text, where(pos), name, xml_attribute(da, "type")};
+      std::vector<double> values;
+      if (format == "binary")
+        values = b.inline_values(body, f.size());
+      else if (format == "appended")
+        values = b.appended_values(parse_number(xml_attribute(da, "offset"), where(pos)), f.size());
+      else
+        throw InputError(
+            fmt::format("{}: DataArray '{}' has format=\"{}\"; expected ascii, "
+                        "binary or appended",
+                        where(pos), name, format));
+      for (const double v : values) push(f, v);
+    }
     return f;
   }
-  throw InputError(fmt::format("{}: no DataArray{}", path,
-                               array.empty() ? "" : fmt::format(" named '{}'", array)));
+  throw InputError(fmt::format("{}: no {}", path,
+                               array.empty() ? "scalar DataArray (one component)"
+                                             : fmt::format("DataArray named '{}'", array)));
+}
+
+std::vector<SeriesEntry> read_pvd(const std::filesystem::path& pvd) {
+  std::ifstream in(pvd);
+  if (!in) throw InputError(fmt::format("{}: cannot open", pvd.string()));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<SeriesEntry> out;
+  for (auto pos = text.find("<DataSet"); pos != std::string::npos;
+       pos = text.find("<DataSet", pos + 1)) {
+    const std::string tag = text.substr(pos, text.find('>', pos) - pos);
+    const std::string where = fmt::format("{}:{}", pvd.string(), line_at(text, pos));
+    const std::string file = xml_attribute(tag, "file"), time = xml_attribute(tag, "timestep");
+    if (file.empty()) throw InputError(fmt::format("{}: <DataSet> without a file", where));
+    out.push_back({time.empty() ? double(out.size()) : parse_number(time, where),
+                   (pvd.parent_path() / file).string()});
+  }
+  if (out.empty()) throw InputError(fmt::format("{}: no <DataSet> entries", pvd.string()));
+  std::stable_sort(out.begin(), out.end(), [](auto& a, auto& b) { return a.time < b.time; });
+  return out;
 }
 
 }  // namespace
 
+std::vector<SeriesEntry> read_series(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(path)) return read_pvd(path);
+  std::vector<std::vector<SeriesEntry>> grids;
+  std::string names;
+  for (const auto& entry : fs::directory_iterator(path)) {
+    if (entry.path().extension() != ".pvd") continue;
+    auto series = read_pvd(entry.path());
+    if (fs::path(series.front().file).extension() != ".vti") continue;
+    grids.push_back(std::move(series));
+    names.append(" ").append(entry.path().filename().string());
+  }
+  if (grids.size() != 1)
+    throw InputError(
+        fmt::format("{}: {} .pvd series of image data (.vti){}{}; expected one (name "
+                    "the .pvd file instead of the folder)",
+                    path, grids.size(), names.empty() ? "" : ":", names));
+  return grids.front();
+}
+
 GridField read_grid_field(const std::string& path, const std::string& array) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open", path));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string ext = lower(std::filesystem::path(path).extension().string());
   GridField f;
-  if (ext == ".csv" || ext == ".txt") f = read_csv(path, in);
-  else if (ext == ".vtk") f = read_legacy_vtk(path, in, array);
-  else if (ext == ".vti") f = read_vti(path, in, array);
+  if (ext == ".csv" || ext == ".txt")
+    f = read_csv(path, text);
+  else if (ext == ".vtk")
+    f = read_legacy_vtk(path, text, array);
+  else if (ext == ".vti")
+    f = read_vti(path, text, array);
   else
-    throw InputError(fmt::format("{}: unknown field format '{}'; expected .csv, .txt, .vtk "
-                                 "(legacy ASCII STRUCTURED_POINTS) or .vti (XML ImageData, ascii)",
-                                 path, ext));
+    throw InputError(
+        fmt::format("{}: unknown field format '{}'; expected .csv, .txt, .vtk "
+                    "(legacy ASCII STRUCTURED_POINTS) or .vti (XML ImageData)",
+                    path, ext));
   if (f.void_count() == 0) f.is_void.clear();
   validate(f, path);
   return f;

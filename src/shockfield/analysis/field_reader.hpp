@@ -4,10 +4,15 @@
 //    in 3D, slices (z = 0 first) separated by a blank line. `void` or an empty entry marks a void
 //    cell. Lines starting with `#` are comments, except `# spacing = h` and `# origin = x y z`.
 //  - .vtk: legacy VTK, ASCII, DATASET STRUCTURED_POINTS with POINT_DATA or CELL_DATA SCALARS.
-//  - .vti: VTK XML ImageData with a DataArray in format="ascii" (PointData or CellData).
+//  - .vti: VTK XML ImageData (PointData or CellData), a DataArray in format="ascii", "binary" or
+//    "appended" (raw or base64; uncompressed: analysis/vti_binary.hpp).
 // For VTK files, `array` picks the data array by name (default: the first scalar array); NaN
 // entries mark void cells (ParaView's convention for blanked points).
+//
+// A time series is a .pvd collection (what a run writes to its output folder) or a run folder
+// holding one .pvd of image data.
 #include <string>
+#include <vector>
 
 #include "shockfield/analysis/grid_field.hpp"
 
@@ -16,5 +21,14 @@ namespace shockfield::analysis {
 /// Reads the field in `path` by its extension. Throws InputError naming the file (and line) on
 /// anything it cannot read.
 GridField read_grid_field(const std::string& path, const std::string& array = "");
+
+struct SeriesEntry {
+  double time = 0.0;
+  std::string file;  ///< path of the data set (the .pvd's folder joined with its `file`)
+};
+
+/// The data sets of a .pvd file, or of the one .pvd in folder `path` whose data sets are .vti
+/// files, in time order. Throws InputError when there is none, or several in a folder.
+std::vector<SeriesEntry> read_series(const std::string& path);
 
 }  // namespace shockfield::analysis

@@ -1,6 +1,7 @@
 #pragma once
 // A scalar field Θ(x) on a regular grid (seed 000 §3.1: "fields and structures based on ordered
-// points"). Values are stored x fastest: index = x + nx * (y + ny * z); a 2D field has nz = 1.
+// points"). Values are stored x fastest: index = x + nx * (y + ny * z); a 2D field has nz = 1
+// (a 3D grid of a single voxel layer sets single_layer_3d).
 // Cells may be marked void (no material, e.g. an empty bin of a particle field): a void cell has
 // no value, counts as black (Θ < Θ_th) for every threshold and is skipped by statistics.
 #include <array>
@@ -12,17 +13,18 @@
 namespace shockfield::analysis {
 
 struct GridField {
-  std::array<std::size_t, 3> n{0, 0, 1};        ///< cells along x, y, z (nz = 1 in 2D)
+  std::array<std::size_t, 3> n{0, 0, 1};         ///< cells along x, y, z (nz = 1 in 2D)
   std::array<double, 3> spacing{1.0, 1.0, 1.0};  ///< grid step along x, y, z
   std::array<double, 3> origin{0.0, 0.0, 0.0};   ///< position of cell (0, 0, 0)
   std::vector<double> values;                    ///< n[0] * n[1] * n[2] values
   std::vector<std::uint8_t> is_void;             ///< empty (no void cells) or one flag per cell
+  bool single_layer_3d = false;  ///< nz = 1 but a 3D grid (one layer of voxels): dimension() 3
 
   /// A field of nx × ny × nz cells, all equal to `value`.
   static GridField filled(std::size_t nx, std::size_t ny, std::size_t nz, double value);
 
   std::size_t size() const { return n[0] * n[1] * n[2]; }
-  int dimension() const { return n[2] > 1 ? 3 : 2; }
+  int dimension() const { return n[2] > 1 || single_layer_3d ? 3 : 2; }
   std::size_t index(std::size_t x, std::size_t y, std::size_t z = 0) const {
     return x + n[0] * (y + n[1] * z);
   }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -31,6 +32,7 @@ struct Common {
   std::string array;
   std::string output = "analysis";
   int threads = 0;
+  int dimension = 0;  // 0: from the grid (3D when it has more than one z layer)
   bool no_plot = false;
 };
 
@@ -44,15 +46,23 @@ struct Morphology {
 const char* kFormats =
     "Fields: .csv/.txt (one line per row, comma-separated, slices separated by a blank line, "
     "`void` marks a void cell, `# spacing = h`), .vtk (legacy ASCII STRUCTURED_POINTS), .vti "
-    "(XML ImageData, ascii). See docs/analysis-minkowski.md.";
+    "(XML ImageData: ascii, binary or appended raw/base64, uncompressed); a .pvd series or a run "
+    "folder with one .pvd of .vti fields stands for its fields at its times. See "
+    "docs/analysis-minkowski.md.";
 
 void add_common(CLI::App* cmd, Common& c, const char* files_help) {
-  cmd->add_option("fields", c.files, files_help)->check(CLI::ExistingFile);
+  cmd->add_option("fields", c.files, files_help)->check(CLI::ExistingPath);
   cmd->add_option("--times", c.times,
-                  "Time of each field, in order (default 0, 1, 2, ...); strictly increasing")
+                  "Time of each field, in order (default: the .pvd's times, else 0, 1, 2, ...); "
+                  "strictly increasing")
       ->delimiter(',');
+  cmd->add_option("--dimension", c.dimension,
+                  "2 or 3 (default: 3 when the grid has more than one z layer); 3 analyses a grid "
+                  "of a single z layer as one layer of voxels")
+      ->check(CLI::IsMember({2, 3}));
   cmd->add_option("--array", c.array, "Data array to read from VTK files (default: the first)");
-  cmd->add_option("-o,--output", c.output, "Output folder (created if missing)")->capture_default_str();
+  cmd->add_option("-o,--output", c.output, "Output folder (created if missing)")
+      ->capture_default_str();
   cmd->add_option("-j,--threads", c.threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-plot", c.no_plot, "Write CSV only, no PNG");
@@ -67,33 +77,73 @@ void add_morphology(CLI::App* cmd, Morphology& m) {
                   "field's value range");
   cmd->add_option("--boundary", m.boundary,
                   "periodic (the grid wraps; the surrounding region does not count, as in eq. 32) "
-                  "or open (black outside the grid, scikit-image's convention)")->capture_default_str()
+                  "or open (black outside the grid, scikit-image's convention)")
+      ->capture_default_str()
       ->check(CLI::IsMember({"periodic", "open"}));
-  cmd->add_option("--connectivity", m.connectivity, "2D connectivity of the white set: 4 or 8")->capture_default_str()
+  cmd->add_option("--connectivity", m.connectivity, "2D connectivity of the white set: 4 or 8")
+      ->capture_default_str()
       ->check(CLI::IsMember({4, 8}));
   cmd->add_option("--adjacency", m.adjacency,
-                  "3D adjacency of the white set: 26 (pair (26,6)) or 6 (pair (6,26))")->capture_default_str()
+                  "3D adjacency of the white set: 26 (pair (26,6)) or 6 (pair (6,26))")
+      ->capture_default_str()
       ->check(CLI::IsMember({6, 26}));
 }
 
-std::vector<sa::GridField> read_all(const Common& c, const char* role) {
-  if (c.files.empty()) throw InputError(fmt::format("analyze: no {} field files given", role));
-  if (!c.times.empty() && c.times.size() != c.files.size())
-    throw InputError(fmt::format("--times: {} times for {} {} fields", c.times.size(),
-                                 c.files.size(), role));
+// The inputs: field files, with .pvd series and run folders expanded into their fields.
+struct Inputs {
+  std::vector<std::string> files;
+  std::vector<double> times;
   std::vector<sa::GridField> fields;
-  for (const auto& f : c.files) {
-    fields.push_back(sa::read_grid_field(f, c.array));
-    sa::require_same_grid(fields.front(), fields.back(), c.files.front(), f);
+};
+
+// Times: --times, else the series' times (every input a series), else 0, 1, 2, ...; as many as
+// fields, finite and strictly increasing.
+std::vector<double> times_of(const Common& c, const std::vector<std::string>& files,
+                             const std::vector<double>& series_times, const char* role) {
+  std::vector<double> t = c.times;
+  if (t.empty() && series_times.size() == files.size()) t = series_times;
+  if (t.empty() && !series_times.empty())
+    throw InputError(
+        fmt::format("{} fields: .pvd series mixed with single files; give --times", role));
+  if (t.empty())
+    for (std::size_t i = 0; i < files.size(); ++i) t.push_back(double(i));
+  if (t.size() != files.size())
+    throw InputError(fmt::format("--times: {} times for {} {} fields; expected one per field",
+                                 t.size(), files.size(), role));
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (!std::isfinite(t[k]))
+      throw InputError(fmt::format("--times: value {} at position {} is not finite", t[k], k + 1));
+    if (k > 0 && !(t[k] > t[k - 1]))
+      throw InputError(
+          fmt::format("times out of order: {} at position {} follows {}; expected "
+                      "strictly increasing times (one field per time)",
+                      t[k], k + 1, t[k - 1]));
   }
-  return fields;
+  return t;
 }
 
-std::vector<double> times_of(const Common& c) {
-  if (!c.times.empty()) return c.times;
-  std::vector<double> t;
-  for (std::size_t i = 0; i < c.files.size(); ++i) t.push_back(double(i));
-  return t;
+Inputs read_all(const Common& c, const std::vector<std::string>& paths, const char* role) {
+  if (paths.empty()) throw InputError(fmt::format("analyze: no {} field files given", role));
+  Inputs in;
+  std::vector<double> series_times;
+  for (const auto& p : paths) {
+    if (fs::is_directory(p) || fs::path(p).extension() == ".pvd") {
+      for (const auto& e : sa::read_series(p))
+        in.files.push_back(e.file), series_times.push_back(e.time);
+    } else {
+      in.files.push_back(p);
+    }
+  }
+  in.times = times_of(c, in.files, series_times, role);
+  for (const auto& f : in.files) {
+    auto& field = in.fields.emplace_back(sa::read_grid_field(f, c.array));
+    if (c.dimension == 2 && field.n[2] > 1)
+      throw InputError(
+          fmt::format("{}: {} z layers; --dimension 2 needs a single layer", f, field.n[2]));
+    field.single_layer_3d = c.dimension == 3;
+    sa::require_same_grid(in.fields.front(), field, in.files.front(), f);
+  }
+  return in;
 }
 
 sa::MinkowskiOptions options_of(const Morphology& m) {
@@ -114,7 +164,7 @@ std::vector<double> thresholds_of(const Morphology& m, const sa::GridField& firs
 // Functionals of every field at every threshold, as morphology points and as CSV text rows.
 struct Table {
   std::string header;
-  std::vector<std::vector<std::string>> rows;        // [field][threshold]
+  std::vector<std::vector<std::string>> rows;            // [field][threshold]
   std::vector<std::vector<sa::MorphologyPoint>> points;  // [field][threshold]
 };
 
@@ -155,9 +205,9 @@ void plot(const Common& c, const char* kind, const std::string& csv) {
   if (c.no_plot) return;
   const fs::path dir(c.output);
   const std::string png = (dir / (std::string(kind) + ".png")).string();
-  const std::string cmd = fmt::format(
-      "PYTHONPATH='{}/python' /usr/bin/python3 -m shockfield_plot {} '{}' '{}'",
-      SHOCKFIELD_SOURCE_DIR, kind, (dir / csv).string(), png);
+  const std::string cmd =
+      fmt::format("PYTHONPATH='{}/python' /usr/bin/python3 -m shockfield_plot {} '{}' '{}'",
+                  SHOCKFIELD_SOURCE_DIR, kind, (dir / csv).string(), png);
   if (std::system(cmd.c_str()) != 0)
     std::fprintf(stderr, "warning: no plot (%s failed); the CSV is written\n", cmd.c_str());
   else
@@ -170,17 +220,17 @@ void set_threads(const Common& c) {
 
 void run_minkowski(const Common& c, const Morphology& m) {
   set_threads(c);
-  const auto fields = read_all(c, "input");
-  const auto times = times_of(c);
-  const auto thresholds = thresholds_of(m, fields.front());
-  const Table t = functionals(fields, thresholds, options_of(m));
+  const Inputs in = read_all(c, c.files, "input");
+  const auto thresholds = thresholds_of(m, in.fields.front());
+  const Table t = functionals(in.fields, thresholds, options_of(m));
   auto out = open_output(c, "minkowski.csv");
   out << "file,time,threshold," << t.header << "\n";
-  for (std::size_t i = 0; i < fields.size(); ++i)
-    for (const auto& row : t.rows[i]) out << c.files[i] << "," << times[i] << "," << row << "\n";
+  for (std::size_t i = 0; i < in.fields.size(); ++i)
+    for (const auto& row : t.rows[i])
+      out << in.files[i] << "," << in.times[i] << "," << row << "\n";
   out.close();
   std::printf("wrote %s (%zu fields x %zu thresholds)\n",
-              (fs::path(c.output) / "minkowski.csv").c_str(), fields.size(), thresholds.size());
+              (fs::path(c.output) / "minkowski.csv").c_str(), in.fields.size(), thresholds.size());
   plot(c, "minkowski", "minkowski.csv");
 }
 
@@ -192,19 +242,19 @@ struct SimilarityArgs {
 
 void run_similarity(const Common& c, const Morphology& m, const SimilarityArgs& s) {
   set_threads(c);
-  Common ref = c;
-  ref.files = s.reference;
-  const auto ref_fields = read_all(ref, "reference");
-  const auto fields = read_all(c, "candidate");
-  sa::require_same_grid(ref_fields.front(), fields.front(), "reference fields", "candidate fields");
-  const auto times = times_of(c);
-  if (ref_fields.size() != fields.size())
-    throw InputError(fmt::format("similarity: {} reference fields but {} candidate fields; one "
-                                 "per time each", ref_fields.size(), fields.size()));
-  const auto thresholds = thresholds_of(m, fields.front());
+  const Inputs ref = read_all(c, s.reference, "reference"), in = read_all(c, c.files, "candidate");
+  sa::require_same_grid(ref.fields.front(), in.fields.front(), "reference fields",
+                        "candidate fields");
+  if (ref.times != in.times)
+    throw InputError(
+        fmt::format("similarity: the reference ({} fields) and the candidate ({} "
+                    "fields) must be sampled at the same times",
+                    ref.fields.size(), in.fields.size()));
+  const auto& times = in.times;
+  const auto thresholds = thresholds_of(m, in.fields.front());
   const auto o = options_of(m);
   const std::vector<double> one{s.reference_threshold};
-  const Table rt = functionals(ref_fields, one, o), ct = functionals(fields, thresholds, o);
+  const Table rt = functionals(ref.fields, one, o), ct = functionals(in.fields, thresholds, o);
   sa::Process reference;
   std::vector<sa::Process> candidates(thresholds.size());
   for (std::size_t i = 0; i < times.size(); ++i) {
@@ -226,15 +276,16 @@ void run_similarity(const Common& c, const Morphology& m, const SimilarityArgs& 
     out << "c," << thresholds[k] << "," << match.distances[k] << ","
         << (match.distances[k] > 0 ? 1.0 / match.distances[k] : INFINITY) << "\n";
   out.close();
-  std::printf("best candidate threshold %g: process distance d_P = %g, S_D = %g\n",
-              match.threshold, match.distance, 1.0 / match.distance);
+  std::printf("best candidate threshold %g: process distance d_P = %g, S_D = %g\n", match.threshold,
+              match.distance, 1.0 / match.distance);
   plot(c, "similarity", "similarity.csv");
 }
 
 void run_stats(const Common& c, std::size_t bins) {
   set_threads(c);
-  const auto fields = read_all(c, "input");
-  const auto times = times_of(c);
+  const Inputs in = read_all(c, c.files, "input");
+  const auto& fields = in.fields;
+  const auto& times = in.times;
   auto stats = open_output(c, "stats.csv");
   auto hist = open_output(c, "histogram.csv");
   auto sk = open_output(c, "structure_factor.csv");
@@ -247,18 +298,18 @@ void run_stats(const Common& c, std::size_t bins) {
     const auto& f = fields[i];
     const auto m = sa::moments(f);
     const double r = m.std > 0.0 ? sa::characteristic_size(f) : 0.0;
-    stats << fmt::format("{},{},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", c.files[i],
-                         times[i], f.size(), f.void_count(), m.mean, m.std, m.skewness,
-                         m.kurtosis, r);
+    stats << fmt::format("{},{},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", in.files[i],
+                         times[i], f.size(), f.void_count(), m.mean, m.std, m.skewness, m.kurtosis,
+                         r);
     const auto h = sa::histogram(f, bins);
     for (std::size_t b = 0; b < bins; ++b)
-      hist << fmt::format("{},{},{:.10g},{:.10g},{}\n", c.files[i], times[i], h.edges[b],
+      hist << fmt::format("{},{},{:.10g},{:.10g},{}\n", in.files[i], times[i], h.edges[b],
                           h.edges[b + 1], h.counts[b]);
     if (m.std == 0.0) continue;
     for (const auto& [profile, stream] :
          {std::pair{sa::structure_factor(f), &sk}, std::pair{sa::correlation_function(f), &corr}})
       for (std::size_t j = 0; j < profile.x.size(); ++j)
-        *stream << fmt::format("{},{},{:.10g},{:.10g},{}\n", c.files[i], times[i], profile.x[j],
+        *stream << fmt::format("{},{},{:.10g},{:.10g},{}\n", in.files[i], times[i], profile.x[j],
                                profile.values[j], profile.count[j]);
   }
   std::printf("wrote stats.csv, histogram.csv, structure_factor.csv, correlation.csv in %s\n",
@@ -284,7 +335,8 @@ void add_analyze_command(CLI::App& app) {
       "χ = N_W − N_B (eq. 32) and χ/N (eq. 33); 3D volume fraction V, surface area S, mean\n"
       "breadth b, integral mean curvature M = 2πb, χ. Writes OUTPUT/minkowski.csv (file, time,\n"
       "threshold, functionals) and OUTPUT/minkowski.png (functionals against time per threshold,\n"
-      "or against threshold for one field).\n" + std::string(kFormats));
+      "or against threshold for one field).\n" +
+          std::string(kFormats));
   add_common(mink, *mc, "Field files, one per time (same grid)");
   add_morphology(mink, *mm);
   mink->callback([mc, mm] { run_minkowski(*mc, *mm); });
@@ -297,15 +349,20 @@ void add_analyze_command(CLI::App& app) {
       "Dynamic similarity (§3.1, Figs. 42-45): for a reference process (its fields at\n"
       "--reference-threshold) find the threshold of a candidate process (FIELDS) that minimises\n"
       "the process distance d_P = mean over [t1, t2] of d(t), d the distance in (A, L/(N h), χ/N)\n"
-      "space (3D: (V, S/(N h²), b/(N h), χ/N)); S_D = 1/d_P. Both processes are sampled at the same\n"
+      "space (3D: (V, S/(N h²), b/(N h), χ/N)); S_D = 1/d_P. Both processes are sampled at the "
+      "same\n"
       "--times. Writes OUTPUT/similarity.csv (d_P and S_D per candidate threshold) and\n"
-      "OUTPUT/similarity.png.\n" + std::string(kFormats));
+      "OUTPUT/similarity.png.\n" +
+          std::string(kFormats));
   add_common(sim, *sc, "Candidate process's field files, one per time");
   add_morphology(sim, *sm);
-  sim->add_option("-r,--reference", sargs->reference, "Reference process's field files, one per time")
-      ->required()->check(CLI::ExistingFile);
+  sim->add_option("-r,--reference", sargs->reference,
+                  "Reference process's field files, one per time")
+      ->required()
+      ->check(CLI::ExistingPath);
   sim->add_option("--reference-threshold", sargs->reference_threshold,
-                  "Threshold T_th1 of the reference process")->required();
+                  "Threshold T_th1 of the reference process")
+      ->required();
   sim->add_option("--t1", sargs->t1, "Start of the time interval (default: first time)");
   sim->add_option("--t2", sargs->t2, "End of the time interval (default: last time)");
   sim->callback([sc, sm, sargs] { run_similarity(*sc, *sm, *sargs); });
@@ -316,10 +373,13 @@ void add_analyze_command(CLI::App& app) {
       "stats",
       "Field statistics over non-void cells: mean, std, skewness, kurtosis (3 for a Gaussian),\n"
       "histogram, structure factor S(k), correlation function C(r) and the domain size\n"
-      "R = 2π/k1 from the first moment of S(k) (field taken as periodic). Writes OUTPUT/stats.csv,\n"
-      "histogram.csv, structure_factor.csv, correlation.csv.\n" + std::string(kFormats));
+      "R = 2π/k1 from the first moment of S(k) (field taken as periodic). Writes "
+      "OUTPUT/stats.csv,\n"
+      "histogram.csv, structure_factor.csv, correlation.csv.\n" +
+          std::string(kFormats));
   add_common(stats, *tc, "Field files, one per time");
-  stats->add_option("--bins", *bins, "Histogram bins over the value range")->capture_default_str()
+  stats->add_option("--bins", *bins, "Histogram bins over the value range")
+      ->capture_default_str()
       ->check(CLI::PositiveNumber);
   stats->callback([tc, bins] { run_stats(*tc, *bins); });
 }
