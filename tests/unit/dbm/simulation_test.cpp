@@ -1,0 +1,119 @@
+// BGK DBM: conservation on a periodic lattice, reflecting walls, thread-count independence and
+// the refusal of unstable settings and broken states.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/dbm/simulation.hpp"
+
+using namespace shockfield;
+using namespace shockfield::dbm;
+
+namespace {
+
+Lattice square(int n) {
+  Lattice l;
+  l.nx = l.ny = n;
+  l.dx = l.dy = 1.0 / n;
+  return l;
+}
+
+BgkSettings settings_for(const Lattice& l, double max_speed) {
+  BgkSettings s;
+  s.dt = 0.4 * l.dx / max_speed;
+  s.tau = 2.0 * s.dt;
+  return s;
+}
+
+// A smooth 2D blob: density and temperature bumps with a swirl.
+Macro blob(double x, double y) {
+  const double r2 = (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5);
+  const double g = std::exp(-r2 / 0.02);
+  return {1.0 + 0.3 * g, 0.2 * g * (y - 0.5), -0.2 * g * (x - 0.5), 1.0 + 0.2 * g};
+}
+
+}  // namespace
+
+TEST(DbmSimulation, ConservesMassMomentumEnergy) {
+  const VelocityModel model = d2v16({1.0, 2.0, 3.0, 4.0}, 2.0);
+  const Lattice l = square(32);
+  for (auto kind : {BoundaryKind::periodic, BoundaryKind::reflecting}) {
+    Boundaries bc;
+    for (auto& side : bc.side) side.kind = kind;
+    Simulation sim(model, l, bc, settings_for(l, model.max_speed()));
+    sim.initialize(blob);
+    const auto before = sim.totals();
+    for (int n = 0; n < 100; ++n) sim.step();
+    sim.check_state();
+    const auto after = sim.totals();
+    EXPECT_NEAR(after[0], before[0], 1e-12 * before[0]);
+    EXPECT_NEAR(after[3], before[3], 1e-12 * before[3]);
+    if (kind == BoundaryKind::periodic) {  // walls exchange momentum with the fluid
+      EXPECT_NEAR(after[1], before[1], 1e-13);
+      EXPECT_NEAR(after[2], before[2], 1e-13);
+    }
+  }
+}
+
+TEST(DbmSimulation, ResultsIndependentOfThreadCount) {
+  const VelocityModel model = d2v16({1.0, 2.0, 3.0, 4.0}, 2.0);
+  const Lattice l = square(24);
+  std::vector<double> result[2];
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    Simulation sim(model, l, Boundaries{}, settings_for(l, model.max_speed()));
+    sim.initialize(blob);
+    for (int n = 0; n < 8; ++n) sim.step();
+    result[threads - 1] = sim.f();
+  }
+  omp_set_num_threads(1);
+  EXPECT_EQ(result[0], result[1]);
+}
+
+TEST(DbmSimulation, RefusesUnstableSettings) {
+  const VelocityModel model = d2v16({1.0, 2.0, 3.0, 4.0}, 2.0);
+  const Lattice l = square(16);
+  auto message = [&](BgkSettings s) -> std::string {
+    try {
+      Simulation sim(model, l, Boundaries{}, s);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  BgkSettings s = settings_for(l, model.max_speed());
+  BgkSettings bad = s;
+  bad.tau = s.dt / 3.0;
+  EXPECT_NE(message(bad).find("dt/tau = 3 > 2.5"), std::string::npos) << message(bad);
+  bad = s;
+  bad.dt = 3.0 * l.dx / model.max_speed();
+  bad.tau = bad.dt;
+  EXPECT_NE(message(bad).find("Courant number"), std::string::npos) << message(bad);
+  bad = s;
+  bad.tau = -1.0;
+  EXPECT_NE(message(bad).find("tau = -1 must be a positive number"), std::string::npos);
+  bad = s;
+  bad.gamma = 2.5;
+  EXPECT_NE(message(bad).find("gamma = 2.5 is outside"), std::string::npos);
+  Boundaries half;
+  half.side[0].kind = BoundaryKind::outflow;
+  EXPECT_THROW(Simulation(model, l, half, s), InputError);
+  EXPECT_THROW(boundary_kind("sticky"), InputError);
+}
+
+TEST(DbmSimulation, BrokenStateIsDiagnosed) {
+  const VelocityModel model = d2v16({1.0, 2.0, 3.0, 4.0}, 2.0);
+  const Lattice l = square(8);
+  Simulation sim(model, l, Boundaries{}, settings_for(l, model.max_speed()));
+  sim.initialize(blob);
+  sim.f()[l.at(3, 5)] = std::nan("");
+  try {
+    sim.check_state();
+    FAIL() << "NaN not detected";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("cell (3, 5)"), std::string::npos) << e.what();
+  }
+}
