@@ -5,6 +5,8 @@
 // next to its bounding waves, where the numerically smeared fronts still sit at nx = 400.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "shockfield/core/error.hpp"
 #include "shockfield/dbm/shock_tube.hpp"
 
@@ -37,6 +39,7 @@ void check_tube(const VelocityModel& model, Primitive left, Primitive right, dou
     s.t_end = t_end;
     s.nx = nx;
     fine = run_shock_tube(s);
+    std::printf("nx = %d: L1(rho) = %.5f\n", nx, fine.l1_rho);
     EXPECT_LT(fine.l1_rho, 0.8 * previous) << "nx = " << nx;
     previous = fine.l1_rho;
   }
@@ -47,6 +50,9 @@ void check_tube(const VelocityModel& model, Primitive left, Primitive right, dou
   const double tail = x0 + (star.u - c_star) * t, contact = x0 + star.u * t;
   const double shock = x0 + exact.right_shock_speed() * t;
   const Primitive l = plateau(fine, tail, contact), r = plateau(fine, contact, shock);
+  std::printf("plateaus (exact): p* %.5f %.5f (%.5f), u* %.5f %.5f (%.5f), rho*_L %.5f (%.5f), "
+              "rho*_R %.5f (%.5f)\n",
+              l.p, r.p, star.p, l.u, r.u, star.u, l.rho, star.rho_left, r.rho, star.rho_right);
   expect_within(l.p, star.p, 0.01, "p* left");
   expect_within(r.p, star.p, 0.01, "p* right");
   expect_within(l.u, star.u, 0.01, "u* left");
