@@ -59,9 +59,12 @@ void expect_error(const std::string& path, const std::string& fragment) {
 const std::string kLegacyHead =
     "# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2 2 1\n";
 
-std::string vti_with(const std::string& file_attributes, const std::string& array) {
+// A VTK XML image of 2 x 2 points whose one array T has the given type, format and content.
+std::string vti_array(const std::string& type, const std::string& format,
+                      const std::string& content, const std::string& file_attributes = "") {
   return "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" byte_order=\"LittleEndian\"" +
-         file_attributes + ">\n<ImageData WholeExtent=\"0 1 0 1 0 0\">\n<PointData>\n" + array +
+         file_attributes + ">\n<ImageData WholeExtent=\"0 1 0 1 0 0\">\n<PointData>\n" +
+         "<DataArray type=\"" + type + "\" Name=\"T\" format=\"" + format + "\"" + content +
          "\n</PointData>\n</ImageData>\n</VTKFile>\n";
 }
 
@@ -122,14 +125,11 @@ TEST(FieldReader, MalformedLegacyVtkNamesFileAndLine) {
   expect_error(write_temp("bin.vtk", "# vtk DataFile Version 3.0\nt\nBINARY\n"),
                "bin.vtk:3: legacy VTK encoding 'BINARY'");
   expect_error(write_temp("head.vtk", "hello\n"), "head.vtk:1: not a legacy VTK file");
-  expect_error(
-      write_temp("short.vtk", kLegacyHead + "POINT_DATA 4\nSCALARS T double\nLOOKUP_TABLE default\n"
-                                            "1 2\n3\n"),
-      "short.vtk:10: 4 values expected for 2 x 2 x 1 cells, the data ends after 3");
-  expect_error(
-      write_temp("word.vtk", kLegacyHead + "POINT_DATA 4\nSCALARS T double\nLOOKUP_TABLE default\n"
-                                           "1 2\n3 x\n"),
-      "word.vtk:10: 'x' is not a number");
+  const std::string scalars =
+      kLegacyHead + "POINT_DATA 4\nSCALARS T double\nLOOKUP_TABLE default\n";
+  expect_error(write_temp("short.vtk", scalars + "1 2\n3\n"),
+               "short.vtk:10: 4 values expected for 2 x 2 x 1 cells, the data ends after 3");
+  expect_error(write_temp("word.vtk", scalars + "1 2\n3 x\n"), "word.vtk:10: 'x' is not a number");
   expect_error(write_temp("count.vtk", kLegacyHead + "POINT_DATA 5\n"),
                "count.vtk:6: point_data 5 for DIMENSIONS 2 2 1; expected 4");
   expect_error(write_temp("grid.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\n"),
@@ -139,32 +139,21 @@ TEST(FieldReader, MalformedLegacyVtkNamesFileAndLine) {
 
 TEST(FieldReader, MalformedVtiNamesFileAndLine) {
   expect_error(kDir + "compressed.vti", "is compressed (vtkZLibDataCompressor)");
-  expect_error(write_temp("ascii.vti", vti_with("",
-                                                "<DataArray type=\"Float64\" Name=\"T\" "
-                                                "format=\"ascii\">\n1 2\n3 z\n</DataArray>")),
-               "ascii.vti:7: 'z' is not a number");
-  // Base64 of a UInt32 header 32 (4 Float64) but only 1 value.
-  expect_error(write_temp("short.vti", vti_with("",
-                                                "<DataArray type=\"Float64\" Name=\"T\" "
-                                                "format=\"binary\">IAAAAAAAAAAAAPA/"
-                                                "</DataArray>")),
-               "short.vti:5: DataArray 'T': 32 bytes expected, the data ends after 8");
-  expect_error(write_temp("header.vti", vti_with("",
-                                                 "<DataArray type=\"Float64\" Name=\"T\" "
-                                                 "format=\"binary\">EAAAAA==</DataArray>")),
-               "the header says 16 bytes; expected 32 (4 values of Float64)");
-  expect_error(write_temp("chars.vti", vti_with("",
-                                                "<DataArray type=\"Float64\" Name=\"T\" "
-                                                "format=\"binary\">IAA*</DataArray>")),
-               "'*' is not a base64 character");
-  expect_error(write_temp("type.vti", vti_with("",
-                                               "<DataArray type=\"Complex\" Name=\"T\" "
-                                               "format=\"binary\">IAAAAA==</DataArray>")),
-               "type=\"Complex\"");
-  expect_error(write_temp("noappend.vti", vti_with(" header_type=\"UInt64\"",
-                                                   "<DataArray type=\"Float64\" Name=\"T\" "
-                                                   "format=\"appended\" offset=\"0\"/>")),
-               "no <AppendedData>");
+  struct Case {
+    const char *file, *type, *format, *content, *message;
+  };
+  // binary: base64 of a UInt32 header, then Float64 values (IAAAAA: 32 bytes, EAAAAA: 16).
+  for (const Case& c : std::initializer_list<Case>{
+           {"ascii.vti", "Float64", "ascii", ">\n1 2\n3 z\n</DataArray>",
+            "ascii.vti:7: 'z' is not a number"},
+           {"short.vti", "Float64", "binary", ">IAAAAAAAAAAAAPA/</DataArray>",
+            "short.vti:5: DataArray 'T': 32 bytes expected, the data ends after 8"},
+           {"header.vti", "Float64", "binary", ">EAAAAA==</DataArray>",
+            "the header says 16 bytes; expected 32 (4 values of Float64)"},
+           {"chars.vti", "Float64", "binary", ">IAA*</DataArray>", "'*' is not a base64 character"},
+           {"type.vti", "Complex", "binary", ">IAAAAA==</DataArray>", "type=\"Complex\""},
+           {"noappend.vti", "Float64", "appended", " offset=\"0\"/>", "no <AppendedData>"}})
+    expect_error(write_temp(c.file, vti_array(c.type, c.format, c.content)), c.message);
   expect_error(write_temp("extent.vti", "<VTKFile>\n<ImageData WholeExtent=\"0 1\">"),
                "extent.vti:2: WholeExtent value expected");
   expect_error(write_temp("x.vti", "<VTKFile/>\n"), "no <ImageData> element");
