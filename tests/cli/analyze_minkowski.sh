@@ -41,6 +41,10 @@ grep -q "wrote .*minkowski.png" "$WORK/out.txt" || fail "no 'wrote' line for the
 csv="$WORK/series/minkowski.csv"
 [ "$(column time "$csv" 1),$(column time "$csv" 2)" = "0.25,0.5" ] || fail "series times: $(cat "$csv")"
 [ "$(column V "$csv" 1)" = "$(column V "$csv" 2)" ] || fail "the two series fields differ"
+# A run folder: its one .pvd of image data (here series.pvd) stands for its fields.
+"$SF" analyze minkowski "$F" -t 50 --no-plot -o "$WORK/folder" > /dev/null
+cmp -s <(cut -d, -f2- "$csv") <(cut -d, -f2- "$WORK/folder/minkowski.csv") ||
+  fail "the folder gave other rows than its .pvd"
 "$SF" analyze minkowski "$F/raw.vti" "$F/binary.vti" --array T -t 50 --times 1,2 --no-plot \
   -o "$WORK/binary" > /dev/null
 v=$(awk 'BEGIN { printf "%.12g", 11 / 24 }')  # z = 1 is above 50 but for the void (or 0) cell
