@@ -117,3 +117,33 @@ TEST(DbmSimulation, BrokenStateIsDiagnosed) {
     EXPECT_NE(std::string(e.what()).find("cell (3, 5)"), std::string::npos) << e.what();
   }
 }
+
+TEST(DbmSimulation, InflowOutflowCarriesAUniformStreamUnchanged) {
+  // A uniform supersonic-free stream entering at x = 0 and leaving at x = 1 is a steady state;
+  // a denser inflow state enters from the left.
+  const VelocityModel model = d2v16({1.0, 2.0, 3.0, 4.0}, 2.0);
+  Lattice l;
+  l.nx = 40;
+  l.ny = 2;
+  l.dx = l.dy = 1.0 / 40;
+  const Macro stream{1.0, 0.5, 0.0, 1.0};
+  Boundaries bc;
+  bc.side[0] = {BoundaryKind::inflow, stream};
+  bc.side[1].kind = BoundaryKind::outflow;
+  Simulation sim(model, l, bc, settings_for(l, model.max_speed()));
+  sim.initialize([&](double, double) { return stream; });
+  for (int n = 0; n < 50; ++n) sim.step();
+  for (int i = 0; i < l.nx; ++i) {
+    EXPECT_NEAR(sim.macro(i, 1).rho, 1.0, 1e-12);
+    EXPECT_NEAR(sim.macro(i, 1).ux, 0.5, 1e-12);
+  }
+  Boundaries denser = bc;
+  denser.side[0].state.rho = 1.2;
+  Simulation fed(model, l, denser, settings_for(l, model.max_speed()));
+  fed.initialize([&](double, double) { return stream; });
+  const double mass = fed.totals()[0];
+  while (fed.time() < 0.6) fed.step();
+  fed.check_state();
+  EXPECT_GT(fed.macro(2, 0).rho, 1.1);
+  EXPECT_GT(fed.totals()[0], mass + 0.05);
+}
