@@ -4,6 +4,10 @@
   md_plots.py profiles RUN_DIR [--out FILE]   binned shock profiles (velocity, pressure,
                                               temperature, density) at several times
   md_plots.py thermo RUN_DIR [--out FILE]     thermo.csv columns against time
+  md_plots.py hugoniot SWEEP_DIR [--out FILE] [--compare CSV]
+                                              Us-Up points of `shockfield hugoniot` with their
+                                              fit, the experimental copper line (Marsh 1980) and
+                                              optionally a peer sweep (e.g. LAMMPS) to compare
 
 Uses only numpy and matplotlib from Debian (run with /usr/bin/python3).
 """
@@ -71,16 +75,41 @@ def plot_thermo(run, out):
     print(f"wrote {out}")
 
 
+def plot_hugoniot(run, out, compare):
+    """hugoniot_sweep.csv (+ hugoniot_fit.toml): Us against Up with standard errors."""
+    p = read_csv(os.path.join(run, "hugoniot_sweep.csv"))
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    up = np.linspace(0.0, 1.1 * max(p["up_km_s"]), 50)
+    ax.plot(up, 3.940 + 1.489 * up, "k--", label="experiment: 3.94 + 1.489 Up (Marsh 1980)")
+    ax.errorbar(p["up_km_s"], p["us_km_s"], yerr=p["us_stderr_km_s"], fmt="o", color="C0", label="shockfield")
+    if len(p["up_km_s"]) > 1:
+        s, c0 = np.polyfit(p["up_km_s"], p["us_km_s"], 1)
+        ax.plot(up, c0 + s * up, color="C0", label=f"fit: {c0:.2f} + {s:.3f} Up")
+    if compare:
+        q = read_csv(compare)
+        ax.errorbar(q["up_km_s"], q["us_km_s"], yerr=q["us_stderr_km_s"], fmt="s", mfc="none", color="C3",
+                    label=os.path.basename(compare))
+    ax.set_xlabel("particle velocity Up (km/s)")
+    ax.set_ylabel("shock velocity Us (km/s)")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    print(f"wrote {out}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["profiles", "thermo"])
+    ap.add_argument("kind", choices=["profiles", "thermo", "hugoniot"])
     ap.add_argument("run")
     ap.add_argument("--out")
     ap.add_argument("--axis", default="z", choices=["x", "y", "z"])
+    ap.add_argument("--compare", help="hugoniot: a peer sweep CSV (up_km_s, us_km_s, us_stderr_km_s)")
     a = ap.parse_args()
     out = a.out or os.path.join(a.run, f"{a.kind}.png")
     if a.kind == "profiles":
         plot_profiles(a.run, out, a.axis)
+    elif a.kind == "hugoniot":
+        plot_hugoniot(a.run, out, a.compare)
     else:
         plot_thermo(a.run, out)
 

@@ -1,0 +1,127 @@
+#include "shockfield/md/hugoniot_sweep.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "shockfield/core/config.hpp"
+#include "shockfield/core/error.hpp"
+#include "shockfield/core/run_folder.hpp"
+#include "shockfield/core/run_options.hpp"
+#include "shockfield/core/units.hpp"
+#include "shockfield/io/csv_writer.hpp"
+#include "shockfield/md/case_file.hpp"
+#include "shockfield/md/run_case.hpp"
+
+namespace shockfield::md {
+
+namespace fs = std::filesystem;
+using units::metal::A_per_ps_to_km_per_s;
+
+namespace {
+
+// The one stage with a [stage.piston]; profiles must be written for the front to be tracked.
+std::string piston_stage(const fs::path& case_file) {
+  const Config root = Config::load(case_file);
+  root.get_choice("method", {"md"});
+  const MdCase mdcase = read_md_case(root);
+  std::vector<std::string> names;
+  for (const auto& s : mdcase.stages)
+    if (s.piston) names.push_back(s.name);
+  if (names.size() != 1)
+    throw InputError(fmt::format("{}: a Hugoniot sweep needs exactly one [[stage]] with a [stage.piston], found {}",
+                                 case_file.string(), names.size()));
+  if (mdcase.output.profile_every == 0)
+    throw InputError(fmt::format("{}: a Hugoniot sweep needs profiles: set [output] profile_every > 0",
+                                 case_file.string()));
+  return names.front();
+}
+
+// shock_front_<stage>.csv: step, time_ps, front_A, piston_A ("nan" where no front was found).
+LineFit front_fit(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("{}: cannot open", file.string()));
+  std::string line;
+  std::getline(in, line);
+  std::vector<double> t, x;
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string step, time, front;
+    if (!std::getline(ss, step, ',') || !std::getline(ss, time, ',') || !std::getline(ss, front, ',')) continue;
+    t.push_back(std::strtod(time.c_str(), nullptr));
+    x.push_back(std::strtod(front.c_str(), nullptr));
+  }
+  return fit_shock_front(t, x);
+}
+
+SweepPoint run_one(const HugoniotSweepSettings& s, double speed, const fs::path& folder, const std::string& stage) {
+  const fs::path hugoniot = folder / fmt::format("hugoniot_{}.toml", stage);
+  if (s.overwrite || !fs::exists(hugoniot)) {
+    RunOptions r;
+    r.case_file = s.case_file;
+    r.output = folder;
+    r.overwrite = s.overwrite;
+    r.quiet = s.quiet;
+    r.piston_speed = speed / A_per_ps_to_km_per_s;
+    const Config root = Config::load(s.case_file);
+    root.get_choice("method", {"md"});  // read here as `shockfield run` does, so it is a known key
+    run_case(root, r);
+  } else {
+    std::printf("up = %g km/s: reusing the finished run in %s\n", speed, folder.string().c_str());
+  }
+  const Config h = Config::load(hugoniot);
+  SweepPoint p;
+  p.piston = h.get_double("piston_speed_km_s");
+  p.up = h.get_double("up_km_s");
+  p.us = h.get_double("us_km_s");
+  if (!std::isfinite(p.us) || !std::isfinite(p.up))
+    throw RunError(fmt::format("{}: no Hugoniot state at piston speed {} km/s ({})", hugoniot.string(), speed,
+                               h.get_string("note")));
+  p.pressure = h.get_double("pressure_GPa");
+  p.pressure_rh = h.get_double("pressure_rankine_hugoniot_GPa");
+  p.density = h.get_double("density_g_cc");
+  p.temperature = h.get_double("temperature_K");
+  const LineFit f = front_fit(folder / fmt::format("shock_front_{}.csv", stage));
+  p.us_stderr = f.slope_stderr * A_per_ps_to_km_per_s;
+  p.front_rms = f.residual_rms;
+  return p;
+}
+
+}  // namespace
+
+HugoniotSweep run_hugoniot_sweep(HugoniotSweepSettings s) {
+  if (s.speeds.empty()) throw InputError("Hugoniot sweep: no piston speeds");
+  std::sort(s.speeds.begin(), s.speeds.end());
+  if (s.speeds.front() <= 0) throw InputError("Hugoniot sweep: piston speeds must be positive");
+  if (std::adjacent_find(s.speeds.begin(), s.speeds.end()) != s.speeds.end())
+    throw InputError("Hugoniot sweep: a piston speed is given twice");
+  HugoniotSweep sweep;
+  sweep.stage = piston_stage(s.case_file);
+  fs::create_directories(s.folder);
+  for (double speed : s.speeds)
+    sweep.points.push_back(run_one(s, speed, s.folder / fmt::format("up_{:.2f}", speed), sweep.stage));
+
+  io::CsvWriter csv(s.folder / "hugoniot_sweep.csv",
+                    {"piston_speed_km_s", "up_km_s", "us_km_s", "us_stderr_km_s", "front_residual_rms_A",
+                     "pressure_GPa", "pressure_rankine_hugoniot_GPa", "density_g_cc", "temperature_K"});
+  std::vector<double> up, us;
+  for (const SweepPoint& p : sweep.points) {
+    csv.row({p.piston, p.up, p.us, p.us_stderr, p.front_rms, p.pressure, p.pressure_rh, p.density, p.temperature});
+    up.push_back(p.up);
+    us.push_back(p.us);
+  }
+  if (sweep.points.size() < 2) return sweep;
+  sweep.fit = fit_us_up(up, us);
+  write_file_atomically(s.folder / "hugoniot_fit.toml",
+                        us_up_fit_toml(*sweep.fit) +
+                            fmt::format("\n[experiment_copper]  # Marsh, LASL Shock Hugoniot Data (1980); Mitchell & "
+                                        "Nellis, J. Appl. Phys. 52, 3363 (1981)\nc0_km_s = {}\ns = {}\n",
+                                        kCopperC0, kCopperS));
+  return sweep;
+}
+
+}  // namespace shockfield::md

@@ -1,0 +1,47 @@
+#pragma once
+// A U_s–U_p sweep (`shockfield hugoniot`): an MD case with one piston stage is run once per
+// piston speed (RunOptions::piston_speed) into FOLDER/up_<speed>/; each run's Hugoniot state
+// (hugoniot_<stage>.toml, written by run_case) and front track (shock_front_<stage>.csv, whose
+// fit residuals give the standard error of U_s) are collected, U_s = c0 + s·U_p is fitted, and
+// FOLDER/hugoniot_sweep.csv and FOLDER/hugoniot_fit.toml are written. A finished run already in
+// its folder is reused unless `overwrite`.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "shockfield/md/diagnostics/us_up_fit.hpp"
+
+namespace shockfield::md {
+
+/// Experimental copper Hugoniot, U_s = 3.940 + 1.489 U_p (km/s): S. P. Marsh (ed.), LASL Shock
+/// Hugoniot Data, University of California Press (1980), copper; consistent with A. C. Mitchell
+/// & W. J. Nellis, J. Appl. Phys. 52, 3363 (1981).
+inline constexpr double kCopperC0 = 3.940, kCopperS = 1.489;
+
+struct HugoniotSweepSettings {
+  std::filesystem::path case_file;
+  std::vector<double> speeds;  ///< piston speeds, km/s
+  std::filesystem::path folder;
+  bool overwrite = false;
+  bool quiet = false;          ///< no progress lines from the runs
+};
+
+struct SweepPoint {
+  double piston = 0, up = 0, us = 0;  ///< km/s
+  double us_stderr = 0;               ///< km/s, from the front-position fit residuals
+  double front_rms = 0;               ///< Å, rms residual of the front about its line
+  double pressure = 0, pressure_rh = 0, density = 0, temperature = 0;  ///< GPa, GPa, g/cm³, K
+};
+
+struct HugoniotSweep {
+  std::string stage;               ///< the piston stage's name
+  std::vector<SweepPoint> points;  ///< in increasing piston speed
+  std::optional<UsUpFit> fit;      ///< with two or more speeds
+};
+
+/// Runs (or reuses) every speed and writes the sweep files; InputError for a case without
+/// exactly one piston stage or without profiles, RunError for a run without a Hugoniot state.
+HugoniotSweep run_hugoniot_sweep(HugoniotSweepSettings settings);
+
+}  // namespace shockfield::md
