@@ -9,6 +9,7 @@
 #include "shockfield/core/run_options.hpp"
 #include "shockfield/md/run_case.hpp"
 #include "shockfield/mpm/run_case.hpp"
+#include "shockfield/pd/run_case.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -17,7 +18,7 @@ using Runner = void (*)(const Config&, const RunOptions&);
 
 // Explicit registry of the methods `run` knows, by the case file's `method` value.
 const std::map<std::string, Runner>& runners() {
-  static const std::map<std::string, Runner> table{{"md", &md::run_case}, {"mpm", &mpm::run_case}};
+  static const std::map<std::string, Runner> table{{"md", &md::run_case}, {"mpm", &mpm::run_case}, {"pd", &pd::run_case}};
   return table;
 }
 

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::pd {
@@ -24,6 +26,20 @@ Mat3 SmallStrainJ2::update(State& s, const Mat3& /*f_old*/, const Mat3& f_new, d
   deviatoric.update(s.dev, materials::deviator(strain - s.strain));
   s.strain = strain;
   return s.dev.s + bulk * strain.trace() * Mat3::Identity();
+}
+
+void SmallStrainJ2::State::save(double* out) const {
+  std::copy_n(strain.data(), 9, out);
+  std::copy_n(dev.s.data(), 9, out + 9);
+  std::copy_n(dev.back_stress.data(), 9, out + 18);
+  out[27] = dev.plastic_strain;
+}
+
+void SmallStrainJ2::State::load(const double* in) {
+  strain = Mat3(in);
+  dev.s = Mat3(in + 9);
+  dev.back_stress = Mat3(in + 18);
+  dev.plastic_strain = in[27];
 }
 
 }  // namespace shockfield::pd

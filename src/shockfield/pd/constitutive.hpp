@@ -33,6 +33,9 @@ struct SmallStrainJ2 {
   struct State {
     Mat3 strain = Mat3::Zero();
     materials::J2Plasticity::State dev;
+    static constexpr std::size_t doubles = 28;  ///< checkpoint size
+    void save(double* out) const;
+    void load(const double* in);
   };
   /// From E, ν, Y and a linear hardening modulus (InputError on bad values).
   static SmallStrainJ2 from_young(double density, double young, double poisson, double yield, double hardening,

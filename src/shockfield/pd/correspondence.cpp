@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -137,6 +138,29 @@ double CorrespondenceForce<Material>::stable_step(const std::vector<double>& den
     dt = std::min(dt, 2.0 * std::sqrt(density[i] / row));
   }
   return dt;
+}
+
+template <CorrespondenceMaterial Material>
+std::vector<double> CorrespondenceForce<Material>::saved_state() const {
+  constexpr std::size_t per = 9 + Material::State::doubles;
+  std::vector<double> out(per * cloud_.size());
+  for (std::size_t i = 0; i < cloud_.size(); ++i) {
+    std::copy_n(f_[i].data(), 9, &out[per * i]);
+    state_[i].save(&out[per * i + 9]);
+  }
+  return out;
+}
+
+template <CorrespondenceMaterial Material>
+void CorrespondenceForce<Material>::restore_state(const std::vector<double>& data) {
+  constexpr std::size_t per = 9 + Material::State::doubles;
+  if (data.size() != per * cloud_.size())
+    throw InputError(fmt::format("pd correspondence: saved state of {} values, expected {} for {} points", data.size(),
+                                 per * cloud_.size(), cloud_.size()));
+  for (std::size_t i = 0; i < cloud_.size(); ++i) {
+    f_[i] = Mat3(&data[per * i]);
+    state_[i].load(&data[per * i + 9]);
+  }
 }
 
 template class CorrespondenceForce<SmallStrainJ2>;

@@ -48,6 +48,10 @@ class CorrespondenceForce final : public ForceModel {
   const Mat3& stress(std::size_t i) const { return sigma_[i]; }  ///< Cauchy σ
   const typename Material::State& state(std::size_t i) const { return state_[i]; }
   const Material& material(std::size_t i) const { return materials_[materials_.size() == 1 ? 0 : i]; }
+  /// Everything a later step reads of the past (F and the material state of every point), for
+  /// checkpoints; restore_state() takes it back bitwise (InputError on a size mismatch).
+  std::vector<double> saved_state() const;
+  void restore_state(const std::vector<double>& data);
 
  private:
   const PointCloud& cloud_;

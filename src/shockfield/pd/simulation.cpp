@@ -60,6 +60,15 @@ void Simulation::step(double dt) {
   run_hooks(Stage::end_of_step);
 }
 
+void Simulation::restore(std::vector<Vec3> y, std::vector<Vec3> v, std::vector<Vec3> force_density, long long steps,
+                         double time) {
+  if (y.size() != cloud_.size() || v.size() != cloud_.size() || force_density.size() != cloud_.size())
+    throw InputError(fmt::format("pd: restored state has {} points, the body {}", y.size(), cloud_.size()));
+  y_ = std::move(y), v_ = std::move(v), f_ = std::move(force_density);
+  steps_ = steps, time_ = time;
+  ready_ = true;
+}
+
 void Simulation::run_hooks(Stage stage) {
   for (auto& [s, hook] : hooks_)
     if (s == stage) hook(*this);

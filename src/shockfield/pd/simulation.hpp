@@ -30,6 +30,10 @@ class Simulation {
   void setup();
   /// One velocity-Verlet step. RunError when a position or velocity stops being finite.
   void step(double dt);
+  /// Puts back a checkpointed state (positions, velocities, the force density of the last
+  /// evaluation, the clock): the next step continues bitwise as if never stopped.
+  void restore(std::vector<Vec3> y, std::vector<Vec3> v, std::vector<Vec3> force_density, long long steps,
+               double time);
   void add_hook(Stage stage, Hook hook) { hooks_.push_back({stage, std::move(hook)}); }
   /// Largest stable step for this body and model (the model's estimate) [s].
   double stable_step() const { return model_->stable_step(density_); }

@@ -1,0 +1,75 @@
+#include "shockfield/pd/case_file.hpp"
+
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::pd {
+namespace {
+
+BodySpec read_body(const Config& t) {
+  BodySpec b;
+  b.dim = static_cast<int>(t.get_int("dim", Range::closed(1, 3)));
+  const auto counts = t.get_ints("counts", static_cast<std::size_t>(b.dim), Range::closed(2, 1e7));
+  for (int d = 0; d < b.dim; ++d) b.counts[static_cast<std::size_t>(d)] = static_cast<int>(counts[static_cast<std::size_t>(d)]);
+  b.spacing = t.get_double("spacing", Range::positive());
+  b.horizon_factor = t.get_double_or("horizon_factor", 3.0, Range::positive());
+  if (b.horizon_factor < 1.0)
+    t.fail("horizon_factor", fmt::format("{}: the horizon δ = {}·ΔX is smaller than the spacing, so a point has no "
+                                         "neighbour on the lattice (expected >= 1)",
+                                         b.horizon_factor, b.horizon_factor));
+  b.influence = Influence::from_name(t.get_choice_or("influence", Influence::names(), "constant"));
+  b.correction = volume_correction_from_name(t.get_choice_or("volume_correction", {"linear", "none"}, "linear"));
+  return b;
+}
+
+SmallStrainJ2 read_material(const Config& t) {
+  t.get_choice_or("model", {"j2"}, "j2");
+  const double density = t.get_double("density", Range::positive());
+  const double young = t.get_double("young", Range::positive());
+  const double poisson = t.get_double("poisson", {-1.0, 0.5, true, true});
+  const double yield = t.get_double("yield_stress", Range::positive());
+  const double hardening = t.get_double_or("hardening", 0.0, Range::non_negative());
+  const double slope = t.get_double_or("hugoniot_slope", 0.0, Range::closed(0.0, 10.0));
+  try {
+    return SmallStrainJ2::from_young(density, young, poisson, yield, hardening, slope);
+  } catch (const InputError& e) {
+    t.fail("young", e.what());
+  }
+}
+
+SolverSpec read_solver(const Config& t) {
+  SolverSpec s;
+  s.options.riemann = t.get_bool_or("riemann", true);
+  s.options.hourglass = t.get_double_or("hourglass", 0.0, Range::non_negative());
+  s.end_time = t.get_double("end_time", Range::positive());
+  if (t.has("time_step")) s.time_step = t.get_double("time_step", Range::positive());
+  s.safety = t.get_double_or("safety", 0.5, {0.0, 1.0, true, false});
+  return s;
+}
+
+OutputSpec read_output(const std::optional<Config>& o, double end_time) {
+  OutputSpec s;
+  s.series_interval = end_time / 100.0;
+  if (!o) return s;
+  s.series_interval = o->get_double_or("series_interval", s.series_interval, Range::positive());
+  s.profile_interval = o->get_double_or("profile_interval", 0.0, Range::non_negative());
+  s.checkpoint_every = o->get_int_or("checkpoint_every", 0, Range::non_negative());
+  return s;
+}
+
+}  // namespace
+
+PdCase read_pd_case(const Config& root) {
+  PdCase c;
+  c.body = read_body(root.table("body"));
+  c.material = read_material(root.table("material"));
+  c.solver = read_solver(root.table("solver"));
+  const Config loading = root.table("loading");
+  loading.get_choice_or("type", {"impact"}, "impact");
+  c.impact_speed = loading.get_double("speed", Range::positive());
+  c.output = read_output(root.optional_table("output"), c.solver.end_time);
+  return c;
+}
+
+}  // namespace shockfield::pd

@@ -1,0 +1,51 @@
+#pragma once
+// The peridynamics case file (method = "pd"), read and validated completely before anything runs.
+// Keys are documented in docs/pd.md; every value goes through Config so that an error names the
+// file, the key and its line. SI units. The body is a regular lattice (seed 004 §1) loaded by the
+// impact of its left half on its right half (seed 004 Fig. 2).
+#include <array>
+#include <optional>
+#include <string>
+
+#include "shockfield/core/config.hpp"
+#include "shockfield/pd/correspondence.hpp"
+#include "shockfield/pd/family.hpp"
+#include "shockfield/pd/influence.hpp"
+
+namespace shockfield::pd {
+
+struct BodySpec {
+  int dim = 1;
+  std::array<int, 3> counts{1, 1, 1};  ///< points along x, y, z (1 beyond dim)
+  double spacing = 0.0;                ///< ΔX [m]
+  double horizon_factor = 3.0;         ///< m of δ = m·ΔX
+  Influence influence;
+  VolumeCorrection correction = VolumeCorrection::linear;
+  double horizon() const { return horizon_factor * spacing; }
+};
+
+struct SolverSpec {
+  CorrespondenceOptions options;     ///< Riemann correction, zero-energy penalty coefficient
+  double end_time = 0.0;             ///< [s]
+  std::optional<double> time_step;   ///< fixed Δt [s]; else safety × the stable-step estimate
+  double safety = 0.5;               ///< fraction of the stable step when no time_step is given
+};
+
+struct OutputSpec {
+  double series_interval = 0.0;    ///< series.csv row every ... [s]
+  double profile_interval = 0.0;   ///< profiles/profile_<k>.csv every ... [s]; 0: only the last
+  long long checkpoint_every = 0;  ///< steps; 0: only when the run ends or is stopped
+};
+
+struct PdCase {
+  BodySpec body;
+  SmallStrainJ2 material;  ///< [material] model = "j2" (seed 004 §3.1)
+  SolverSpec solver;
+  double impact_speed = 0.0;  ///< left half at +v, right half at rest [m/s]
+  OutputSpec output;
+};
+
+/// Reads [body], [material], [solver], [loading] and [output].
+PdCase read_pd_case(const Config& root);
+
+}  // namespace shockfield::pd

@@ -1,0 +1,64 @@
+#include "shockfield/pd/checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/io/hdf5_file.hpp"
+
+namespace shockfield::pd {
+namespace {
+
+constexpr double kFormatVersion = 1;
+
+std::vector<double> flatten(const std::vector<Vec3>& a) {
+  std::vector<double> out;
+  out.reserve(3 * a.size());
+  for (const Vec3& x : a) out.insert(out.end(), {x[0], x[1], x[2]});
+  return out;
+}
+
+std::vector<Vec3> unflatten(const std::vector<double>& d, std::size_t n, const std::string& name,
+                            const std::string& file) {
+  if (d.size() != 3 * n)
+    throw InputError(fmt::format("{}: dataset '{}' has {} values, the case has {} points", file, name, d.size(), n));
+  std::vector<Vec3> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = Vec3(&d[3 * i]);
+  return out;
+}
+
+}  // namespace
+
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const std::vector<double>& model_state,
+                      const OutputCounters& counters) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    io::Hdf5File h5(tmp, io::Hdf5File::Mode::create);
+    const hsize_t n = sim.cloud().size();
+    h5.set_attribute("format_version", kFormatVersion);
+    h5.set_attribute("step", static_cast<double>(sim.step_count()));
+    h5.set_attribute("time", sim.time());
+    h5.set_attribute("series", static_cast<double>(counters.series));
+    h5.set_attribute("profiles", static_cast<double>(counters.profiles));
+    h5.write("y", flatten(sim.positions()), {n, 3});
+    h5.write("v", flatten(sim.velocities()), {n, 3});
+    h5.write("force_density", flatten(sim.force_density()), {n, 3});
+    h5.write("model_state", model_state);
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, std::vector<double>& model_state) {
+  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  const std::string f = file.string();
+  if (h5.attribute("format_version") != kFormatVersion)
+    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", f, h5.attribute("format_version"),
+                                 kFormatVersion));
+  const std::size_t n = sim.cloud().size();
+  sim.restore(unflatten(h5.read_doubles("y"), n, "y", f), unflatten(h5.read_doubles("v"), n, "v", f),
+              unflatten(h5.read_doubles("force_density"), n, "force_density", f),
+              static_cast<long long>(h5.attribute("step")), h5.attribute("time"));
+  model_state = h5.read_doubles("model_state");
+  return {static_cast<std::int64_t>(h5.attribute("series")), static_cast<std::int64_t>(h5.attribute("profiles"))};
+}
+
+}  // namespace shockfield::pd

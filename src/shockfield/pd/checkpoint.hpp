@@ -1,0 +1,27 @@
+#pragma once
+// PD checkpoints (HDF5): positions, velocities, the force density of the last evaluation, the
+// force model's saved state (F and material state per point), the clock and the output counters,
+// so that a resumed run continues bitwise as if never stopped (same thread count). Written to a
+// temporary file and renamed.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "shockfield/pd/simulation.hpp"
+
+namespace shockfield::pd {
+
+/// How far the driver's output schedule had got.
+struct OutputCounters {
+  std::int64_t series = 0;    ///< series rows written (row k at k·series_interval)
+  std::int64_t profiles = 0;  ///< profiles written
+};
+
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const std::vector<double>& model_state,
+                      const OutputCounters& counters);
+
+/// Restores `sim` (built from the same case file) and returns the counters; `model_state`
+/// receives the force model's state. InputError when the checkpoint does not fit the case.
+OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, std::vector<double>& model_state);
+
+}  // namespace shockfield::pd

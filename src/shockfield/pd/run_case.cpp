@@ -1,0 +1,155 @@
+#include "shockfield/pd/run_case.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/core/interrupt.hpp"
+#include "shockfield/core/logger.hpp"
+#include "shockfield/core/progress.hpp"
+#include "shockfield/core/run_folder.hpp"
+#include "shockfield/pd/bar_impact.hpp"
+#include "shockfield/pd/case_file.hpp"
+#include "shockfield/pd/checkpoint.hpp"
+#include "shockfield/pd/run_output.hpp"
+
+namespace shockfield::pd {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Force = CorrespondenceForce<SmallStrainJ2>;
+
+// Resolved values the run echoes under [derived]: sizes, steps, and the uniaxial-strain wave
+// speeds and stresses of the symmetric impact (seed 004 §3.1: c_L = √(M/ρ), c_p = √(K/ρ),
+// σ_HEL = M·Y/(2G), elastic state ρ c_L v/2, two-wave plastic state σ_HEL + ρ c_p (v/2 − u_HEL)).
+void derive(const Config& root, const PdCase& c, const Simulation& sim, double dt) {
+  const SmallStrainJ2& m = c.material;
+  root.derive("points", static_cast<long long>(sim.cloud().size()));
+  root.derive("bonds", static_cast<long long>(sim.family().bonds()));
+  root.derive("horizon_m", c.body.horizon());
+  root.derive("stable_time_step_s", sim.stable_step());
+  root.derive("time_step_s", dt);
+  root.derive("steps", static_cast<long long>(std::ceil(c.solver.end_time / dt - 1e-9)));
+  const double rho = m.density, g = m.deviatoric.shear_modulus, modulus = m.longitudinal_modulus();
+  const double cl = std::sqrt(modulus / rho), cp = std::sqrt(m.bulk / rho);
+  const double hel = modulus * m.deviatoric.yield_stress0 / (2.0 * g), u_hel = hel / (rho * cl);
+  const double up = 0.5 * c.impact_speed;
+  root.derive("elastic_wave_speed_m_s", cl);
+  root.derive("plastic_wave_speed_m_s", cp);
+  root.derive("hel_Pa", hel);
+  root.derive("impact_axial_stress_Pa", up <= u_hel ? rho * cl * up : hel + rho * cp * (up - u_hel));
+  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
+}
+
+}  // namespace
+
+void run_case(const Config& root, const RunOptions& options) {
+  const PdCase c = read_pd_case(root);
+  root.check_unknown_keys();
+  const Config body = root.table("body");
+  const PointCloud cloud = lattice_cloud(c.body.dim, c.body.counts, c.body.spacing);
+  const Family family = build_family(cloud, c.body.horizon(), c.body.correction);
+  std::unique_ptr<Force> model;
+  try {
+    model = std::make_unique<Force>(cloud, family, std::vector{c.material}, c.body.influence, c.solver.options);
+  } catch (const InputError& e) {
+    body.fail("horizon_factor", e.what());
+  }
+  Force& force = *model;
+  Simulation sim(cloud, family, std::move(model), {c.material.density});
+  const double stable = sim.stable_step();
+  const double dt = c.solver.time_step.value_or(c.solver.safety * stable);
+  if (dt > stable)
+    root.table("solver").fail("time_step", fmt::format("{} s is beyond the stable step {} s of this body and horizon "
+                                                       "(velocity-Verlet would blow up); lower it or drop it",
+                                                       dt, stable));
+  derive(root, c, sim, dt);
+  if (options.validate_only) {
+    std::printf("%s: valid pd case (%zu points, %zu bonds, dt %.3g s)\n", options.case_file.string().c_str(),
+                cloud.size(), family.bonds(), dt);
+    return;
+  }
+
+  const fs::path folder = run_folder_path(options);
+  prepare_run_folder(folder, options);
+  const fs::path checkpoint = folder / "checkpoint.h5";
+  Logger log(folder / "log.txt", !options.quiet, options.resume);
+  log.info("shockfield {} pd: {} ({} points, {} bonds, {}D, {} threads) -> {}", SHOCKFIELD_VERSION,
+           options.case_file.string(), cloud.size(), family.bonds(), c.body.dim, omp_get_max_threads(), folder.string());
+  if (!options.resume) write_file_atomically(folder / "config.resolved.toml", root.resolved_toml());
+
+  OutputCounters counters;
+  std::optional<ResumePoint> resume;
+  if (options.resume) {
+    if (!fs::exists(checkpoint)) throw InputError(fmt::format("--resume: no checkpoint in '{}'", folder.string()));
+    std::vector<double> state;
+    counters = read_checkpoint(checkpoint, sim, state);
+    force.restore_state(state);
+    resume = ResumePoint{sim.step_count(), counters.profiles};
+    log.info("resumed from {} at step {}, t = {} s", checkpoint.string(), sim.step_count(), sim.time());
+  } else {
+    set_impact_velocity(sim, c.impact_speed);
+    sim.setup();
+  }
+  RunOutput output(folder, {[&](std::size_t i) { return force.stress(i); },
+                            [&](std::size_t i) { return force.state(i).dev.plastic_strain; }},
+                   resume);
+
+  // Rows at the first step at or past k·interval (the step is fixed).
+  const double tol = 1e-9 * dt;
+  auto write_due = [&] {
+    const double t = sim.time() + tol;
+    for (; static_cast<double>(counters.series) * c.output.series_interval <= t; ++counters.series)
+      output.write_series(sim);
+    for (; c.output.profile_interval > 0 && static_cast<double>(counters.profiles) * c.output.profile_interval <= t;
+         ++counters.profiles)
+      output.write_profile(sim, counters.profiles);
+  };
+  auto save = [&] { write_checkpoint(checkpoint, sim, force.saved_state(), counters); };
+
+  clear_stop_request();
+  install_stop_handlers();
+  if (!options.resume) write_due();
+  const long long first = sim.step_count();
+  const auto remaining = static_cast<long long>(std::ceil((c.solver.end_time - sim.time()) / dt - 1e-9));
+  Progress progress("pd", first, remaining, !options.quiet);
+  log.info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
+           c.solver.end_time, dt, dt / stable, stable);
+  try {
+    while (sim.time() < c.solver.end_time - tol) {
+      sim.step(std::min(dt, c.solver.end_time - sim.time()));
+      write_due();
+      progress.update(sim.step_count());
+      if (c.output.checkpoint_every > 0 && sim.step_count() % c.output.checkpoint_every == 0) save();
+      if (stop_requested() || (options.stop_after > 0 && sim.step_count() - first == options.stop_after)) {
+        progress.finish(sim.step_count());
+        save();
+        log.info("stopped at step {} (t = {} s): checkpoint written to {}", sim.step_count(), sim.time(),
+                 checkpoint.string());
+        throw StopRequested(fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
+                                        sim.step_count(), options.case_file.string(), folder.string()));
+      }
+    }
+  } catch (const RunError& e) {
+    log.info("run stopped: {}", e.what());
+    output.write_profile(sim, counters.profiles);
+    log.info("the output written so far is kept in {}; the points at the failure: profiles/profile_{}.csv",
+             folder.string(), counters.profiles);
+    throw;
+  }
+  progress.finish(sim.step_count());
+  if (c.output.profile_interval == 0.0) output.write_profile(sim, counters.profiles++);
+  save();
+  const Vec3 p = sim.momentum();
+  log.info("finished: t = {} s after {} steps ({:.3g} bond-updates/s); kinetic energy {} J, momentum ({}, {}, {})",
+           sim.time(), sim.step_count(), progress.rate(sim.step_count()) * static_cast<double>(family.bonds()),
+           sim.kinetic_energy(), p[0], p[1], p[2]);
+}
+
+}  // namespace shockfield::pd

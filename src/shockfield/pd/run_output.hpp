@@ -1,0 +1,42 @@
+#pragma once
+// Output of a PD run (docs/pd.md, "Outputs"): the time series series.csv (kinetic energy,
+// momentum, peak axial compression and plastic measure) and point profiles
+// profiles/profile_<k>.csv (position, displacement, velocity, Cauchy stress, pressure, plastic
+// measure of every point) indexed with their times by profiles/index.csv.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+
+#include "shockfield/io/csv_writer.hpp"
+#include "shockfield/pd/simulation.hpp"
+
+namespace shockfield::pd {
+
+/// What the output reads of the force model per point.
+struct PointFields {
+  std::function<Mat3(std::size_t)> stress;     ///< Cauchy σ [Pa]
+  std::function<double(std::size_t)> plastic;  ///< accumulated plastic measure (ε̄p, or slip Γ) [-]
+};
+
+/// Where a resumed run picks up its output.
+struct ResumePoint {
+  std::int64_t step = 0;
+  std::int64_t profiles = 0;
+};
+
+class RunOutput {
+ public:
+  RunOutput(const std::filesystem::path& folder, PointFields fields, std::optional<ResumePoint> resume);
+
+  void write_series(const Simulation& sim);
+  /// profiles/profile_<index>.csv at the current time.
+  void write_profile(const Simulation& sim, std::int64_t index);
+
+ private:
+  std::filesystem::path folder_;
+  PointFields fields_;
+  io::CsvWriter series_, index_;
+};
+
+}  // namespace shockfield::pd
