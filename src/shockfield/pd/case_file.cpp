@@ -10,7 +10,7 @@ namespace {
 BodySpec read_body(const Config& t) {
   BodySpec b;
   b.dim = static_cast<int>(t.get_int("dim", Range::closed(1, 3)));
-  const auto counts = t.get_ints("counts", static_cast<std::size_t>(b.dim), Range::closed(2, 1e7));
+  const auto counts = t.get_ints("counts", static_cast<std::size_t>(b.dim), Range::closed(1, 1e7));
   for (int d = 0; d < b.dim; ++d) b.counts[static_cast<std::size_t>(d)] = static_cast<int>(counts[static_cast<std::size_t>(d)]);
   b.spacing = t.get_double("spacing", Range::positive());
   b.horizon_factor = t.get_double_or("horizon_factor", 3.0, Range::positive());

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Bad PD case files: one clear message naming file, key and line, exit code 2, nothing left
+# behind (horizon smaller than the spacing, unstable fixed step, bad material values, unknown
+# keys and choices, a point with a singular shape tensor).
+source "$(dirname "$0")/lib.bash"
+set -e
+base=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/pd_tiny.toml")
+
+expect_error "${base/horizon_factor = 3.0/horizon_factor = 0.5}" "case.toml" "body.horizon_factor" "smaller than the spacing"
+expect_error "${base/end_time = 2e-7/end_time = 2e-7
+time_step = 1e-8}" "solver.time_step" "beyond the stable step"
+expect_error "${base/poisson = 0.334/poisson = 0.6}" "material.poisson"
+expect_error "${base/yield_stress = 270e6/yield_stress = -1.0}" "material.yield_stress"
+expect_error "${base/model = \"j2\"/model = \"bcc_crystal\"}" "material.model" "expected one of"
+expect_error "${base/spacing = 10e-6/spacing = 10e-6
+colour = 1}" "unknown key" "body.colour"
+expect_error "${base/counts = \[400\]/counts = [400, 2]}" "body.counts"
+expect_error "${base/dim = 1
+counts = \[400\]/dim = 2
+counts = [40, 1]}" "body.horizon_factor" "shape tensor" "singular"
+expect_error "${base/speed = 300.0/}" "loading.speed" "missing required value"
+expect_error "${base/horizon_factor = 3.0/horizon_factor = 3.0
+influence = \"cubic\"}" "body.influence" "expected one of"
+echo "pd_bad_input: all cases rejected cleanly"
