@@ -23,8 +23,8 @@ BodySpec read_body(const Config& t) {
   return b;
 }
 
-SmallStrainJ2 read_material(const Config& t) {
-  t.get_choice_or("model", {"j2"}, "j2");
+std::variant<SmallStrainJ2, CrystalSpec> read_material(const Config& t) {
+  if (t.get_choice_or("model", {"j2", "crystal"}, "j2") == "crystal") return read_crystal(t);
   const double density = t.get_double("density", Range::positive());
   const double young = t.get_double("young", Range::positive());
   const double poisson = t.get_double("poisson", {-1.0, 0.5, true, true});

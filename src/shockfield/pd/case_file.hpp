@@ -6,9 +6,11 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/pd/correspondence.hpp"
+#include "shockfield/pd/crystal_case.hpp"
 #include "shockfield/pd/family.hpp"
 #include "shockfield/pd/influence.hpp"
 
@@ -39,7 +41,7 @@ struct OutputSpec {
 
 struct PdCase {
   BodySpec body;
-  SmallStrainJ2 material;  ///< [material] model = "j2" (seed 004 §3.1)
+  std::variant<SmallStrainJ2, CrystalSpec> material;  ///< model = "j2" (seed 004 §3.1) or "crystal"
   SolverSpec solver;
   double impact_speed = 0.0;  ///< left half at +v, right half at rest [m/s]
   OutputSpec output;

@@ -28,18 +28,18 @@ Mat3 SmallStrainJ2::update(State& s, const Mat3& /*f_old*/, const Mat3& f_new, d
   return s.dev.s + bulk * strain.trace() * Mat3::Identity();
 }
 
-void SmallStrainJ2::State::save(double* out) const {
-  std::copy_n(strain.data(), 9, out);
-  std::copy_n(dev.s.data(), 9, out + 9);
-  std::copy_n(dev.back_stress.data(), 9, out + 18);
-  out[27] = dev.plastic_strain;
+void SmallStrainJ2::save(const State& s, double* out) const {
+  std::copy_n(s.strain.data(), 9, out);
+  std::copy_n(s.dev.s.data(), 9, out + 9);
+  std::copy_n(s.dev.back_stress.data(), 9, out + 18);
+  out[27] = s.dev.plastic_strain;
 }
 
-void SmallStrainJ2::State::load(const double* in) {
-  strain = Mat3(in);
-  dev.s = Mat3(in + 9);
-  dev.back_stress = Mat3(in + 18);
-  dev.plastic_strain = in[27];
+void SmallStrainJ2::load(State& s, const double* in) const {
+  s.strain = Mat3(in);
+  s.dev.s = Mat3(in + 9);
+  s.dev.back_stress = Mat3(in + 18);
+  s.dev.plastic_strain = in[27];
 }
 
 }  // namespace shockfield::pd

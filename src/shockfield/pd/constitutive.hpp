@@ -5,6 +5,7 @@
 // into the first Piola-Kirchhoff stress (eq. 10, P = det(F)·σ·F⁻ᵀ, or P = σ for small strain)
 // and its wave speeds for the Riemann correction and the stable step.
 #include <concepts>
+#include <utility>
 
 #include "shockfield/core/types.hpp"
 #include "shockfield/materials/strength/j2_plasticity.hpp"
@@ -12,8 +13,12 @@
 namespace shockfield::pd {
 
 template <class M>
-concept CorrespondenceMaterial = requires(const M& m, typename M::State& s, const Mat3& f) {
+concept CorrespondenceMaterial = requires(const M& m, typename M::State& s, const Mat3& f, double* out) {
+  { m.initial_state() } -> std::same_as<typename M::State>;  // the unloaded state of a point
   { m.update(s, f, f, 0.0) } -> std::same_as<Mat3>;  // σ at the new F, advancing s over dt
+  { m.state_size() } -> std::convertible_to<std::size_t>;  // doubles of save()/load() (checkpoints)
+  m.save(std::as_const(s), out);
+  m.load(s, std::as_const(out));
   { m.finite_strain() } -> std::convertible_to<bool>;
   { m.reference_density() } -> std::convertible_to<double>;
   { m.longitudinal_modulus() } -> std::convertible_to<double>;  // M = ρ0·c_L² [Pa]
@@ -33,18 +38,22 @@ struct SmallStrainJ2 {
   struct State {
     Mat3 strain = Mat3::Zero();
     materials::J2Plasticity::State dev;
-    static constexpr std::size_t doubles = 28;  ///< checkpoint size
-    void save(double* out) const;
-    void load(const double* in);
   };
   /// From E, ν, Y and a linear hardening modulus (InputError on bad values).
   static SmallStrainJ2 from_young(double density, double young, double poisson, double yield, double hardening,
                                   double slope);
+  State initial_state() const { return {}; }
   Mat3 update(State& s, const Mat3& f_old, const Mat3& f_new, double dt) const;
+  std::size_t state_size() const { return 28; }
+  void save(const State& s, double* out) const;
+  void load(State& s, const double* in) const;
   bool finite_strain() const { return false; }
   double reference_density() const { return density; }
   double longitudinal_modulus() const { return bulk + 4.0 / 3.0 * deviatoric.shear_modulus; }
   double hugoniot_slope() const { return slope; }
 };
+
+/// The plastic measure the run output reports: the equivalent plastic strain ε̄p.
+inline double plastic_measure(const SmallStrainJ2::State& s) { return s.dev.plastic_strain; }
 
 }  // namespace shockfield::pd

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/pd/crystal_material.hpp"
 #include "shockfield/pd/riemann.hpp"
 
 namespace shockfield::pd {
@@ -54,7 +55,8 @@ CorrespondenceForce<Material>::CorrespondenceForce(const PointCloud& cloud, cons
   ak_.assign(n, Mat3::Zero());
   sigma_m_.assign(n, 0.0);
   rho_.assign(n, 0.0);
-  state_.assign(n, typename Material::State{});
+  state_.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) state_.push_back(material(i).initial_state());
 }
 
 template <CorrespondenceMaterial Material>
@@ -142,27 +144,30 @@ double CorrespondenceForce<Material>::stable_step(const std::vector<double>& den
 
 template <CorrespondenceMaterial Material>
 std::vector<double> CorrespondenceForce<Material>::saved_state() const {
-  constexpr std::size_t per = 9 + Material::State::doubles;
-  std::vector<double> out(per * cloud_.size());
+  std::vector<double> out;
   for (std::size_t i = 0; i < cloud_.size(); ++i) {
-    std::copy_n(f_[i].data(), 9, &out[per * i]);
-    state_[i].save(&out[per * i + 9]);
+    const std::size_t at = out.size();
+    out.resize(at + 9 + material(i).state_size());
+    std::copy_n(f_[i].data(), 9, &out[at]);
+    material(i).save(state_[i], &out[at + 9]);
   }
   return out;
 }
 
 template <CorrespondenceMaterial Material>
 void CorrespondenceForce<Material>::restore_state(const std::vector<double>& data) {
-  constexpr std::size_t per = 9 + Material::State::doubles;
-  if (data.size() != per * cloud_.size())
+  std::size_t expected = 0;
+  for (std::size_t i = 0; i < cloud_.size(); ++i) expected += 9 + material(i).state_size();
+  if (data.size() != expected)
     throw InputError(fmt::format("pd correspondence: saved state of {} values, expected {} for {} points", data.size(),
-                                 per * cloud_.size(), cloud_.size()));
-  for (std::size_t i = 0; i < cloud_.size(); ++i) {
-    f_[i] = Mat3(&data[per * i]);
-    state_[i].load(&data[per * i + 9]);
+                                 expected, cloud_.size()));
+  for (std::size_t i = 0, at = 0; i < cloud_.size(); at += 9 + material(i).state_size(), ++i) {
+    f_[i] = Mat3(&data[at]);
+    material(i).load(state_[i], &data[at + 9]);
   }
 }
 
 template class CorrespondenceForce<SmallStrainJ2>;
+template class CorrespondenceForce<CrystalMaterial>;
 
 }  // namespace shockfield::pd

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <variant>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/interrupt.hpp"
@@ -23,19 +24,23 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Force = CorrespondenceForce<SmallStrainJ2>;
-
-// Resolved values the run echoes under [derived]: sizes, steps, and the uniaxial-strain wave
-// speeds and stresses of the symmetric impact (seed 004 §3.1: c_L = √(M/ρ), c_p = √(K/ρ),
-// σ_HEL = M·Y/(2G), elastic state ρ c_L v/2, two-wave plastic state σ_HEL + ρ c_p (v/2 − u_HEL)).
-void derive(const Config& root, const PdCase& c, const Simulation& sim, double dt) {
-  const SmallStrainJ2& m = c.material;
+// Resolved values the run echoes under [derived], common to every material.
+void derive_common(const Config& root, const PdCase& c, const Simulation& sim, double dt) {
   root.derive("points", static_cast<long long>(sim.cloud().size()));
   root.derive("bonds", static_cast<long long>(sim.family().bonds()));
   root.derive("horizon_m", c.body.horizon());
   root.derive("stable_time_step_s", sim.stable_step());
   root.derive("time_step_s", dt);
   root.derive("steps", static_cast<long long>(std::ceil(c.solver.end_time / dt - 1e-9)));
+  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
+}
+
+// J2: the uniaxial-strain wave speeds and stresses of the symmetric impact (seed 004 §3.1:
+// c_L = √(M/ρ), c_p = √(K/ρ), σ_HEL = M·Y/(2G), elastic state ρ c_L v/2, two-wave plastic state
+// σ_HEL + ρ c_p (v/2 − u_HEL)).
+void derive_material(const Config& root, const PdCase& c, const std::vector<SmallStrainJ2>& materials,
+                     const std::vector<int>&) {
+  const SmallStrainJ2& m = materials.front();
   const double rho = m.density, g = m.deviatoric.shear_modulus, modulus = m.longitudinal_modulus();
   const double cl = std::sqrt(modulus / rho), cp = std::sqrt(m.bulk / rho);
   const double hel = modulus * m.deviatoric.yield_stress0 / (2.0 * g), u_hel = hel / (rho * cl);
@@ -44,32 +49,53 @@ void derive(const Config& root, const PdCase& c, const Simulation& sim, double d
   root.derive("plastic_wave_speed_m_s", cp);
   root.derive("hel_Pa", hel);
   root.derive("impact_axial_stress_Pa", up <= u_hel ? rho * cl * up : hel + rho * cp * (up - u_hel));
-  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
 }
 
-}  // namespace
+// Crystal: the elastic wave speed along x and the Schmid factor of a single crystal, the grain
+// count of a polycrystal.
+void derive_material(const Config& root, const PdCase& c, const std::vector<CrystalMaterial>& materials,
+                     const std::vector<int>& grain) {
+  if (std::get<CrystalSpec>(c.material).polycrystal) {
+    root.derive("grains", static_cast<long long>(*std::max_element(grain.begin(), grain.end()) + 1));
+    return;
+  }
+  const CrystalMaterial& m = materials.front();
+  root.derive("elastic_wave_speed_m_s", std::sqrt(m.longitudinal_modulus() / m.density));
+  root.derive("schmid_factor", schmid_factor_along_x(m));
+}
 
-void run_case(const Config& root, const RunOptions& options) {
-  const PdCase c = read_pd_case(root);
-  root.check_unknown_keys();
-  const Config body = root.table("body");
-  const PointCloud cloud = lattice_cloud(c.body.dim, c.body.counts, c.body.spacing);
-  const Family family = build_family(cloud, c.body.horizon(), c.body.correction);
+// The materials of the points (one when all share it) and the grain of each point.
+std::pair<std::vector<SmallStrainJ2>, std::vector<int>> point_materials(const SmallStrainJ2& m,
+                                                                        const PointCloud& cloud) {
+  return {{m}, std::vector<int>(cloud.size(), 0)};
+}
+std::pair<std::vector<CrystalMaterial>, std::vector<int>> point_materials(const CrystalSpec& spec,
+                                                                          const PointCloud& cloud) {
+  CrystalBody body = crystal_body(spec, cloud);
+  return {std::move(body.materials), std::move(body.grain)};
+}
+
+template <class Material>
+void run_with(const Config& root, const RunOptions& options, const PdCase& c, const PointCloud& cloud,
+              const Family& family, std::vector<Material> materials, std::vector<int> grain) {
+  using Force = CorrespondenceForce<Material>;
+  const double density = materials.front().reference_density();
   std::unique_ptr<Force> model;
   try {
-    model = std::make_unique<Force>(cloud, family, std::vector{c.material}, c.body.influence, c.solver.options);
+    model = std::make_unique<Force>(cloud, family, materials, c.body.influence, c.solver.options);
   } catch (const InputError& e) {
-    body.fail("horizon_factor", e.what());
+    root.table("body").fail("horizon_factor", e.what());
   }
   Force& force = *model;
-  Simulation sim(cloud, family, std::move(model), {c.material.density});
+  Simulation sim(cloud, family, std::move(model), {density});
   const double stable = sim.stable_step();
   const double dt = c.solver.time_step.value_or(c.solver.safety * stable);
   if (dt > stable)
     root.table("solver").fail("time_step", fmt::format("{} s is beyond the stable step {} s of this body and horizon "
                                                        "(velocity-Verlet would blow up); lower it or drop it",
                                                        dt, stable));
-  derive(root, c, sim, dt);
+  derive_common(root, c, sim, dt);
+  derive_material(root, c, materials, grain);
   if (options.validate_only) {
     std::printf("%s: valid pd case (%zu points, %zu bonds, dt %.3g s)\n", options.case_file.string().c_str(),
                 cloud.size(), family.bonds(), dt);
@@ -98,7 +124,7 @@ void run_case(const Config& root, const RunOptions& options) {
     sim.setup();
   }
   RunOutput output(folder, {[&](std::size_t i) { return force.stress(i); },
-                            [&](std::size_t i) { return force.state(i).dev.plastic_strain; }},
+                            [&](std::size_t i) { return plastic_measure(force.state(i)); }, std::move(grain)},
                    resume);
 
   // Rows at the first step at or past k·interval (the step is fixed).
@@ -150,6 +176,21 @@ void run_case(const Config& root, const RunOptions& options) {
   log.info("finished: t = {} s after {} steps ({:.3g} bond-updates/s); kinetic energy {} J, momentum ({}, {}, {})",
            sim.time(), sim.step_count(), progress.rate(sim.step_count()) * static_cast<double>(family.bonds()),
            sim.kinetic_energy(), p[0], p[1], p[2]);
+}
+
+}  // namespace
+
+void run_case(const Config& root, const RunOptions& options) {
+  const PdCase c = read_pd_case(root);
+  root.check_unknown_keys();
+  const PointCloud cloud = lattice_cloud(c.body.dim, c.body.counts, c.body.spacing);
+  const Family family = build_family(cloud, c.body.horizon(), c.body.correction);
+  std::visit(
+      [&](const auto& m) {
+        auto [materials, grain] = point_materials(m, cloud);
+        run_with(root, options, c, cloud, family, std::move(materials), std::move(grain));
+      },
+      c.material);
 }
 
 }  // namespace shockfield::pd

@@ -36,13 +36,13 @@ void RunOutput::write_series(const Simulation& sim) {
 void RunOutput::write_profile(const Simulation& sim, std::int64_t index) {
   io::CsvWriter out(folder_ / "profiles" / fmt::format("profile_{}.csv", index),
                     {"x_m", "y_m", "z_m", "ux_m", "vx_m_s", "vy_m_s", "vz_m_s", "sxx_Pa", "syy_Pa", "szz_Pa", "sxy_Pa",
-                     "sxz_Pa", "syz_Pa", "pressure_Pa", "plastic"});
+                     "sxz_Pa", "syz_Pa", "pressure_Pa", "plastic", "grain"});
   const auto& x = sim.cloud().x;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Mat3 s = fields_.stress(i);
     const Vec3& v = sim.velocities()[i];
     out.row({x[i][0], x[i][1], x[i][2], sim.positions()[i][0] - x[i][0], v[0], v[1], v[2], s(0, 0), s(1, 1), s(2, 2),
-             s(0, 1), s(0, 2), s(1, 2), -s.trace() / 3.0, fields_.plastic(i)});
+             s(0, 1), s(0, 2), s(1, 2), -s.trace() / 3.0, fields_.plastic(i), static_cast<double>(fields_.grain[i])});
   }
   index_.row({static_cast<double>(index), sim.time(), static_cast<double>(sim.step_count())});
 }

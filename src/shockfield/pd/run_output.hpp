@@ -2,11 +2,12 @@
 // Output of a PD run (docs/pd.md, "Outputs"): the time series series.csv (kinetic energy,
 // momentum, peak axial compression and plastic measure) and point profiles
 // profiles/profile_<k>.csv (position, displacement, velocity, Cauchy stress, pressure, plastic
-// measure of every point) indexed with their times by profiles/index.csv.
+// measure and grain of every point) indexed with their times by profiles/index.csv.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/pd/simulation.hpp"
@@ -16,7 +17,8 @@ namespace shockfield::pd {
 /// What the output reads of the force model per point.
 struct PointFields {
   std::function<Mat3(std::size_t)> stress;     ///< Cauchy σ [Pa]
-  std::function<double(std::size_t)> plastic;  ///< accumulated plastic measure (ε̄p, or slip Γ) [-]
+  std::function<double(std::size_t)> plastic;  ///< accumulated plastic measure (ε̄p, or slip γ_tot) [-]
+  std::vector<int> grain;                      ///< grain of each point (0 without grains)
 };
 
 /// Where a resumed run picks up its output.

@@ -1,0 +1,109 @@
+#include "shockfield/pd/crystal_case.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/core/rng.hpp"
+
+namespace shockfield::pd {
+
+CrystalSpec read_crystal(const Config& t) {
+  CrystalSpec s;
+  CrystalMaterial& m = s.base;
+  m.density = t.get_double("density", Range::positive());
+  materials::CrystalViscoplasticity& c = m.crystal;
+  const std::string systems = t.get_string_or("slip_systems", "fcc");
+  try {
+    c.systems = materials::slip_systems(systems);
+  } catch (const InputError& e) {
+    t.fail("slip_systems", e.what());
+  }
+  auto over = [&](std::string_view key, double& field, Range range) { field = t.get_double_or(key, field, range); };
+  over("reference_rate", c.reference_rate, Range::positive());  // γ̇0, eq. 37
+  over("rate_sensitivity", c.rate_sensitivity, {0.0, 1.0, true, false});  // m
+  over("g0", c.initial_resistance, Range::positive());  // eqs. 38-41
+  over("g_s", c.saturation_resistance, Range::positive());
+  over("h0", c.hardening, Range::non_negative());
+  over("q", c.latent_ratio, Range::non_negative());
+  over("c11", c.c11, Range::positive());  // eqs. 31-32
+  over("c12", c.c12, {});
+  over("c44", c.c44, Range::positive());
+  over("substep_factor", c.substep_factor, {0.0, 2.0, true, true});
+  try {
+    c.validate("crystal");
+  } catch (const InputError& e) {
+    t.fail("g0", e.what());
+  }
+  m.slope = t.get_double_or("hugoniot_slope", 0.0, Range::closed(0.0, 10.0));
+  const std::string kind = t.get_choice_or("orientation", {"direction", "euler", "random_grains"}, "direction");
+  if (kind == "direction") {
+    const auto d = t.get_doubles_or("direction", {1.0, 0.0, 0.0});
+    const Vec3 axis(d.size() > 0 ? d[0] : 0.0, d.size() > 1 ? d[1] : 0.0, d.size() > 2 ? d[2] : 0.0);
+    if (d.size() != 3 || !(axis.norm() > 0.0))
+      t.fail("direction", "a non-zero crystal direction [h, k, l] to load along x");
+    m.orientation = materials::rotation_loading_along(axis);
+  } else if (kind == "euler") {
+    const auto e = t.get_doubles("euler_angles_deg", 3);
+    try {
+      constexpr double deg = std::numbers::pi / 180.0;
+      m.orientation = materials::bunge_rotation(e[0] * deg, e[1] * deg, e[2] * deg);
+    } catch (const InputError& err) {
+      t.fail("euler_angles_deg", fmt::format("{} (φ1, φ2 in [0, 360), Φ in [0, 180] degrees)", err.what()));
+    }
+  } else {
+    s.polycrystal = true;
+    const auto planes = t.get_ints("grain_planes", 2, Range::closed(1, 1e6));
+    if (planes[0] > planes[1]) t.fail("grain_planes", "[lo, hi] with lo <= hi");
+    s.grain_planes = {static_cast<int>(planes[0]), static_cast<int>(planes[1])};
+    s.seed = static_cast<std::uint64_t>(t.get_int_or("seed", 1, Range::non_negative()));
+  }
+  return s;
+}
+
+CrystalBody crystal_body(const CrystalSpec& spec, const PointCloud& cloud) {
+  CrystalBody body;
+  body.grain.assign(cloud.size(), 0);
+  if (!spec.polycrystal) {
+    body.materials = {spec.base};
+    return body;
+  }
+  // Lattice planes across x in order; consecutive runs of grain_planes planes form a grain.
+  std::map<double, int> plane;
+  for (const Vec3& x : cloud.x) plane.emplace(x[0], 0);
+  int grain = 0, left = 0;
+  std::vector<Mat3> orientation;
+  for (auto& [x, g] : plane) {
+    if (left == 0) {
+      const auto k = static_cast<std::uint64_t>(orientation.size());
+      const int span = spec.grain_planes[1] - spec.grain_planes[0] + 1;
+      left = spec.grain_planes[0] + std::min(span - 1, static_cast<int>(rng::uniform(spec.seed, k, 3) * span));
+      const Vec3 a = materials::random_bunge_angles(spec.seed, k);
+      orientation.push_back(materials::bunge_rotation(a[0], a[1], a[2]));
+      grain = static_cast<int>(orientation.size()) - 1;
+    }
+    g = grain;
+    --left;
+  }
+  body.grains = static_cast<int>(orientation.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    body.grain[i] = plane.at(cloud.x[i][0]);
+    CrystalMaterial m = spec.base;
+    m.orientation = orientation[static_cast<std::size_t>(body.grain[i])];
+    body.materials.push_back(m);
+  }
+  return body;
+}
+
+double schmid_factor_along_x(const CrystalMaterial& m) {
+  double best = 0.0;
+  for (const auto& s : m.crystal.systems)
+    best = std::max(best, std::abs((m.orientation * s.direction)[0] * (m.orientation * s.normal)[0]));
+  return best;
+}
+
+}  // namespace shockfield::pd

@@ -1,0 +1,37 @@
+#pragma once
+// [material] model = "crystal" of a PD case file (docs/pd.md): the crystal viscoplastic law of
+// seed 004 eqs. 18-41 with Table 1 (OFHC copper) defaults, and the orientation of the body: a
+// single crystal loaded along a crystal direction or given Bunge Euler angles, or a polycrystal
+// whose grains are slabs of 8-12 lattice planes across x with random orientations (seed 004 §4.2).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "shockfield/core/config.hpp"
+#include "shockfield/pd/crystal_material.hpp"
+#include "shockfield/pd/point_cloud.hpp"
+
+namespace shockfield::pd {
+
+struct CrystalSpec {
+  CrystalMaterial base;                  ///< parameters; `orientation` is the single crystal's g
+  bool polycrystal = false;
+  std::array<int, 2> grain_planes{8, 12};  ///< lattice planes per grain, drawn uniformly in [lo, hi]
+  std::uint64_t seed = 1;                ///< stream of the grain sizes and orientations
+};
+
+/// Reads the crystal keys of [material] (model = "crystal" already read).
+CrystalSpec read_crystal(const Config& t);
+
+struct CrystalBody {
+  std::vector<CrystalMaterial> materials;  ///< one for a single crystal, else one per point
+  std::vector<int> grain;                  ///< grain of each point (all 0 for a single crystal)
+  int grains = 1;
+};
+/// The per-point materials of the body.
+CrystalBody crystal_body(const CrystalSpec& spec, const PointCloud& cloud);
+
+/// Largest Schmid factor |(g m0)·x (g n0)·x| of uniaxial stress along the sample x axis.
+double schmid_factor_along_x(const CrystalMaterial& m);
+
+}  // namespace shockfield::pd
