@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# Builds shockfield and runs the main example: a piston-driven shock in an EAM copper crystal.
-# Leaves the run folder in runs/cu_shock/ (log, thermo, binned profiles, dumps, plot).
+# Builds shockfield and runs the main example: porous aluminium hitting a rigid wall at 1000 m/s
+# (material point method, seed 000 §4.1.1, Fig 19). Leaves the run folder runs/mpm_porous_al/
+# (log, resolved configuration, window time series, VTK fields and particles for ParaView,
+# checkpoint) and the picture runs/mpm_porous_al/porous.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)" --target shockfield
-./build/release/shockfield run examples/md_shock_piston/case.toml --output runs/cu_shock --overwrite
-./build/release/shockfield plot profiles runs/cu_shock
+./build/release/shockfield run examples/mpm_porous_al/case.toml --output runs/mpm_porous_al --overwrite
+./build/release/shockfield plot porous runs/mpm_porous_al

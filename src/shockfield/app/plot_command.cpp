@@ -1,5 +1,5 @@
-// `shockfield plot profiles|thermo RUN_DIR`: PNG figures of a run folder, drawn by the Python
-// helper python/shockfield_plot/md_plots.py with Debian's matplotlib (/usr/bin/python3).
+// `shockfield plot KIND RUN_DIR`: PNG figures of a run folder, drawn by the Python helpers in
+// python/shockfield_plot/ (md_plots.py, mpm_plots.py) with Debian's matplotlib (/usr/bin/python3).
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -25,13 +25,14 @@ std::string quote(const std::string& s) {
 }
 
 void plot(const PlotOptions& o) {
-  const std::filesystem::path script =
-      std::filesystem::path(SHOCKFIELD_SOURCE_DIR) / "python" / "shockfield_plot" / "md_plots.py";
+  const bool md = o.kind == "profiles" || o.kind == "thermo";
+  const std::filesystem::path script = std::filesystem::path(SHOCKFIELD_SOURCE_DIR) / "python" /
+                                       "shockfield_plot" / (md ? "md_plots.py" : "mpm_plots.py");
   if (!std::filesystem::exists(script))
     throw InputError(fmt::format("plot helper not found at {}", script.string()));
   if (!std::filesystem::is_directory(o.run)) throw InputError(fmt::format("'{}' is not a run folder", o.run));
-  std::string cmd = fmt::format("/usr/bin/python3 {} {} {} --axis {}", quote(script.string()), o.kind,
-                                quote(o.run), o.axis);
+  std::string cmd = fmt::format("/usr/bin/python3 {} {} {}", quote(script.string()), o.kind, quote(o.run));
+  if (md) cmd += " --axis " + o.axis;
   if (!o.out.empty()) cmd += " --out " + quote(o.out);
   if (std::system(cmd.c_str()) != 0)
     throw RunError("the plot helper failed (is python3-matplotlib installed? scripts/install-deps.sh installs it)");
@@ -46,11 +47,17 @@ void add_plot_command(CLI::App& app) {
       "Draw PNG figures of a run folder.\n"
       "  profiles  binned shock profiles along the axis (particle velocity, pressure, temperature,\n"
       "            density) at six times, from profiles.csv -> RUN/profiles.png\n"
-      "  thermo    temperature, energies and pressure against time, from thermo.csv -> RUN/thermo.png");
-  cmd->add_option("kind", o->kind, "What to plot")->required()->check(CLI::IsMember({"profiles", "thermo"}));
+      "  thermo    temperature, energies and pressure against time, from thermo.csv -> RUN/thermo.png\n"
+      "  porous    MPM: bottom-window mean density, pressure, temperature, u_y against time beside\n"
+      "            the seed's values, and particle temperatures at the last frame -> RUN/porous.png\n"
+      "  cavity    MPM: particles around the cavity by temperature, cavity area and collapsibility\n"
+      "            against time -> RUN/cavity.png");
+  cmd->add_option("kind", o->kind, "What to plot")
+      ->required()
+      ->check(CLI::IsMember({"profiles", "thermo", "porous", "cavity"}));
   cmd->add_option("run", o->run, "Run folder")->required();
   cmd->add_option("-o,--out", o->out, "PNG file (default RUN/<kind>.png)");
-  cmd->add_option("--axis", o->axis, "Shock axis of the profiles (default z)")->check(CLI::IsMember({"x", "y", "z"}));
+  cmd->add_option("--axis", o->axis, "Shock axis of MD profiles (default z)")->check(CLI::IsMember({"x", "y", "z"}));
   cmd->callback([o] { plot(*o); });
 }
 
