@@ -70,12 +70,14 @@ void build_neighbor_list(const std::vector<Vec3>& points, std::size_t nlocal, do
   const int own = static_cast<int>(nlocal);
 
   // Each thread lists the neighbours of a contiguous range of owned points into its own buffer
-  // (in point order, each point's neighbours in stencil order); the buffers are then copied into
-  // the CSR arrays. The ranges are fixed by nlocal and the thread count, the per-point lists by
-  // the positions alone, so the list does not depend on the thread count.
+  // (in point order, each point's neighbours in stencil order); thread 0's buffer, with room for
+  // the whole list, then receives the others' and becomes the list. The ranges are fixed by
+  // nlocal and the thread count, the per-point lists by the positions alone, so the list does
+  // not depend on the thread count. The previous list is released first: the two never coexist.
   const int nthreads = omp_get_max_threads();
   // Room for the previous list's mean count per point (lists change little between builds).
   const std::size_t per_point = list.nlocal() == 0 ? 16 : list.pairs() / list.nlocal() + 4;
+  std::vector<int>().swap(list.neighbors);
   std::vector<std::vector<int>> chunk_neighbors(static_cast<std::size_t>(nthreads));
   list.offset.resize(nlocal + 1);
   list.offset[0] = 0;
@@ -84,6 +86,7 @@ void build_neighbor_list(const std::vector<Vec3>& points, std::size_t nlocal, do
     const int t = omp_get_thread_num();
     const std::size_t begin = nlocal * t / nthreads, end = nlocal * (t + 1) / nthreads;
     std::vector<int>& out = chunk_neighbors[static_cast<std::size_t>(t)];
+    if (t == 0) out.reserve(nlocal * per_point);
     out.resize((end - begin) * per_point);
     std::size_t n = 0;  // neighbours listed so far; out holds room for every candidate
     for (std::size_t i = begin; i < end; ++i) {
@@ -121,10 +124,11 @@ void build_neighbor_list(const std::vector<Vec3>& points, std::size_t nlocal, do
         for (std::size_t i = b; i < e; ++i) list.offset[i + 1] += base;
         base += static_cast<std::int64_t>(chunk_neighbors[static_cast<std::size_t>(u)].size());
       }
-      list.neighbors.resize(static_cast<std::size_t>(base));
+      chunk_neighbors[0].resize(static_cast<std::size_t>(base));
     }
-    std::copy(out.begin(), out.end(), list.neighbors.begin() + list.offset[begin]);
+    if (t > 0) std::copy(out.begin(), out.end(), chunk_neighbors[0].begin() + list.offset[begin]);
   }
+  list.neighbors.swap(chunk_neighbors[0]);
   list.cutoff = cutoff;
   list.half = half;
 }
