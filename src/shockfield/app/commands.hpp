@@ -9,5 +9,6 @@ namespace shockfield::app {
 void add_run_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
+void add_hugoniot_command(CLI::App& app);
 
 }  // namespace shockfield::app

@@ -10,13 +10,15 @@ int main(int argc, char** argv) {
   CLI::App app{
       "shockfield " SHOCKFIELD_VERSION
       " - shock response of heterogeneous materials, from atoms to the sample.\n"
-      "Simulate with molecular dynamics (md), then analyse the fields that come out (analyze).\n"
+      "Simulate with molecular dynamics (md), the material point method (mpm), peridynamics (pd);\n"
+      "analyse the fields that come out (analyze); sweep shock Hugoniots (hugoniot).\n"
       "Run `shockfield SUBCOMMAND --help` for each subcommand's options.",
       "shockfield"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "shockfield " SHOCKFIELD_VERSION);
   shockfield::app::add_run_command(app);
   shockfield::app::add_plot_command(app);
+  shockfield::app::add_hugoniot_command(app);
   shockfield::app::add_analyze_command(app);
   try {
     app.parse(argc, argv);

@@ -25,14 +25,14 @@ std::string quote(const std::string& s) {
 }
 
 void plot(const PlotOptions& o) {
-  const bool md = o.kind == "profiles" || o.kind == "thermo";
+  const bool md = o.kind == "profiles" || o.kind == "thermo" || o.kind == "hugoniot";
   const std::filesystem::path script = std::filesystem::path(SHOCKFIELD_SOURCE_DIR) / "python" /
                                        "shockfield_plot" / (md ? "md_plots.py" : "mpm_plots.py");
   if (!std::filesystem::exists(script))
     throw InputError(fmt::format("plot helper not found at {}", script.string()));
   if (!std::filesystem::is_directory(o.run)) throw InputError(fmt::format("'{}' is not a run folder", o.run));
   std::string cmd = fmt::format("/usr/bin/python3 {} {} {}", quote(script.string()), o.kind, quote(o.run));
-  if (md) cmd += " --axis " + o.axis;
+  if (o.kind == "profiles") cmd += " --axis " + o.axis;
   if (!o.out.empty()) cmd += " --out " + quote(o.out);
   if (std::system(cmd.c_str()) != 0)
     throw RunError("the plot helper failed (is python3-matplotlib installed? scripts/install-deps.sh installs it)");
@@ -48,13 +48,15 @@ void add_plot_command(CLI::App& app) {
       "  profiles  binned shock profiles along the axis (particle velocity, pressure, temperature,\n"
       "            density) at six times, from profiles.csv -> RUN/profiles.png\n"
       "  thermo    temperature, energies and pressure against time, from thermo.csv -> RUN/thermo.png\n"
+      "  hugoniot  Us against Up of a `shockfield hugoniot` sweep folder with the fitted line and\n"
+      "            the experimental one -> RUN/hugoniot.png\n"
       "  porous    MPM: bottom-window mean density, pressure, temperature, u_y against time beside\n"
       "            the seed's values, and particle temperatures at the last frame -> RUN/porous.png\n"
       "  cavity    MPM: particles around the cavity by temperature, cavity area and collapsibility\n"
       "            against time -> RUN/cavity.png");
   cmd->add_option("kind", o->kind, "What to plot")
       ->required()
-      ->check(CLI::IsMember({"profiles", "thermo", "porous", "cavity"}));
+      ->check(CLI::IsMember({"profiles", "thermo", "hugoniot", "porous", "cavity"}));
   cmd->add_option("run", o->run, "Run folder")->required();
   cmd->add_option("-o,--out", o->out, "PNG file (default RUN/<kind>.png)");
   cmd->add_option("--axis", o->axis, "Shock axis of MD profiles (default z)")->check(CLI::IsMember({"x", "y", "z"}));

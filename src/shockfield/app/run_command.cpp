@@ -42,7 +42,7 @@ void add_run_command(CLI::App& app) {
       "missing or out-of-range values are reported with file, key and line). The run writes a\n"
       "folder with log.txt, config.resolved.toml, thermo.csv, dumps and checkpoints.\n"
       "Ctrl-C or SIGTERM writes a checkpoint and stops; --resume continues from it.\n"
-      "Case-file keys: docs/md.md (method = \"md\"), docs/mpm.md (method = \"mpm\").");
+      "Case-file keys: docs/md.md (method = \"md\"), docs/mpm.md (\"mpm\"), docs/pd.md (\"pd\").");
   cmd->add_option("case", options->case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->output,
                   "Run folder (default: runs/<case file name without .toml>)");
