@@ -46,6 +46,13 @@ Simulation::Simulation(VelocityModel model, const Lattice& lattice, const Bounda
         "unstable; use dt <= {:.4g}",
         courant, BgkSettings::max_courant, model_.max_speed(),
         BgkSettings::max_courant * std::min(lattice.dx, lattice.dy) / model_.max_speed()));
+  if (settings.spectral_convection) {
+    for (const BoundarySide& s : boundaries.side)
+      if (s.kind != BoundaryKind::periodic)
+        throw InputError("spectral (FFT) convection needs periodic boundaries on all four sides");
+    spectral_ = std::make_unique<PeriodicSpectral>(lattice.nx, lattice.ny, lattice.dx, lattice.dy);
+    convection_.assign(spectral_->size() * model_.size(), 0.0);
+  }
   const std::size_t n = lattice_.cells() * static_cast<std::size_t>(model_.size());
   f_.assign(n, 0.0);
   f1_.assign(n, 0.0);
@@ -68,8 +75,25 @@ Macro Simulation::macro(int i, int j) const {
   return macro_of(model_, f_.data() + lattice_.at(i, j), lattice_.cells(), b_);
 }
 
+void Simulation::spectral_convection(const std::vector<double>& f) {
+  const std::size_t N = lattice_.cells(), n = spectral_->size();
+  std::vector<double> field(n);
+  for (int k = 0; k < model_.size(); ++k) {
+    for (int j = 0; j < lattice_.ny; ++j)
+      for (int i = 0; i < lattice_.nx; ++i)
+        field[i + static_cast<std::size_t>(lattice_.nx) * j] = f[k * N + lattice_.at(i, j)];
+    auto s = spectral_->forward(field);
+    auto sy = s;
+    for (auto& v : s) v *= model_.vx[k];
+    for (auto& v : sy) v *= model_.vy[k];
+    const std::vector<double> d = spectral_->divergence(s, sy);
+    std::copy(d.begin(), d.end(), convection_.begin() + static_cast<std::ptrdiff_t>(k * n));
+  }
+}
+
 void Simulation::rhs(std::vector<double>& f, std::vector<double>& out) {
   ghosts_.fill(f);
+  if (spectral_) spectral_convection(f);
   const std::size_t N = lattice_.cells();
   const int Q = model_.size();
   const double inv_tau = 1.0 / settings_.tau;
@@ -86,8 +110,11 @@ void Simulation::rhs(std::vector<double>& f, std::vector<double>& out) {
         inversion_.equilibrium(m.rho, m.ux, m.uy, m.T, b_, eq.data());
         for (int k = 0; k < Q; ++k) {
           const double* p = f.data() + k * N + c;
-          const double convection = nnd_derivative(p, sx, model_.vx[k], lattice_.dx) +
-                                    nnd_derivative(p, sy, model_.vy[k], lattice_.dy);
+          const double convection =
+              spectral_ ? convection_[k * spectral_->size() + i +
+                                      static_cast<std::size_t>(lattice_.nx) * j]
+                        : nnd_derivative(p, sx, model_.vx[k], lattice_.dx) +
+                              nnd_derivative(p, sy, model_.vy[k], lattice_.dy);
           out[k * N + c] = -convection - (p[0] - eq[k]) * inv_tau;
         }
       }

@@ -1,0 +1,208 @@
+#include "shockfield/dbm/gls.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::dbm {
+
+double eos_pressure(const GlsEos& eos, double rho, double T) {
+  return std::visit([&](const auto& e) { return e.pressure(rho, T); }, eos);
+}
+double eos_attraction(const GlsEos& eos) {
+  return std::visit([](const auto& e) { return e.a; }, eos);
+}
+double eos_max_density(const GlsEos& eos) {
+  return std::visit([](const auto& e) { return e.max_density(); }, eos);
+}
+
+GlsForce::GlsForce(Simulation& simulation, const Boundaries& boundaries,
+                   const GlsSettings& settings)
+    : sim_(simulation),
+      settings_(settings),
+      spectral_(simulation.lattice().nx, simulation.lattice().ny, simulation.lattice().dx,
+                simulation.lattice().dy),
+      coef_(spectral_.size()) {
+  for (const BoundarySide& s : boundaries.side)
+    if (s.kind != BoundaryKind::periodic)
+      throw InputError(
+          "the GLS liquid-vapour model takes its spatial derivatives by FFT and needs periodic "
+          "boundaries on all four sides");
+  if (simulation.b() != 2.0)
+    throw InputError(fmt::format(
+        "the GLS liquid-vapour model needs gamma = 2 (b = 2 degrees of freedom, e = rho T), "
+        "got b = {}",
+        simulation.b()));
+  if (!(settings.K >= 0.0)) throw InputError(fmt::format("GLS K = {} must be >= 0", settings.K));
+  if (!(settings.zeta >= 0.0))
+    throw InputError(fmt::format("GLS bulk viscosity zeta = {} must be >= 0", settings.zeta));
+  if (!(settings.q >= 0.0)) throw InputError(fmt::format("GLS q = {} must be >= 0", settings.q));
+  std::visit([](const auto& e) { e.validate("GLS equation of state"); }, settings.eos);
+  simulation.set_source(
+      [this](const std::vector<double>& f, std::vector<double>& rhs) {
+        coefficients(f);
+        apply(f, rhs, false);
+      });
+}
+
+std::vector<Macro> GlsForce::macros(const std::vector<double>& f) const {
+  const Lattice& L = sim_.lattice();
+  std::vector<Macro> m(spectral_.size());
+#pragma omp parallel for schedule(static)
+  for (int j = 0; j < L.ny; ++j)
+    for (int i = 0; i < L.nx; ++i)
+      m[i + static_cast<std::size_t>(L.nx) * j] =
+          macro_of(sim_.model(), f.data() + L.at(i, j), L.cells(), sim_.b());
+  return m;
+}
+
+void GlsForce::coefficients(const std::vector<double>& f) {
+  const std::vector<Macro> m = macros(f);
+  const std::size_t n = m.size();
+  const double K = settings_.K, zeta = settings_.zeta, q = settings_.q;
+  const double a = eos_attraction(settings_.eos);
+  std::vector<double> rho(n), ux(n), uy(n), T(n), P(n);
+  for (std::size_t c = 0; c < n; ++c) {  // serial: the EOS throws on states outside its domain
+    rho[c] = m[c].rho, ux[c] = m[c].ux, uy[c] = m[c].uy, T[c] = m[c].T;
+    P[c] = eos_pressure(settings_.eos, rho[c], T[c]);
+  }
+  const PeriodicSpectral& s = spectral_;
+  const auto s_rho = s.forward(rho), s_ux = s.forward(ux), s_uy = s.forward(uy),
+             s_T = s.forward(T);
+  const auto rx = s.derivative(s_rho, 1, 0), ry = s.derivative(s_rho, 0, 1),
+             lap = s.laplacian(s_rho);
+  const auto uxx = s.derivative(s_ux, 1, 0), uxy = s.derivative(s_ux, 0, 1),  // ∂x ux, ∂y ux
+      uyx = s.derivative(s_uy, 1, 0), uyy = s.derivative(s_uy, 0, 1);
+  const auto Tx = s.derivative(s_T, 1, 0), Ty = s.derivative(s_T, 0, 1);
+  std::vector<double> div(n), nonideal(n), Lxx(n), Lxy(n), Lyy(n), hx(n), hy(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t c = 0; c < n; ++c) {
+    div[c] = uxx[c] + uyy[c];
+    nonideal[c] = P[c] - rho[c] * T[c];
+    // Λ with ∇(K/T) = −K∇T/T² for a constant K.
+    const double g2 = rx[c] * rx[c] + ry[c] * ry[c];
+    const double iso = K * (rho[c] * lap[c] + 0.5 * g2) -
+                       K * rho[c] * (rx[c] * Tx[c] + ry[c] * Ty[c]) / T[c];
+    Lxx[c] = K * rx[c] * rx[c] - iso;
+    Lxy[c] = K * rx[c] * ry[c];
+    Lyy[c] = K * ry[c] * ry[c] - iso;
+    hx[c] = 2.0 * q * rho[c] * T[c] * Tx[c];  // eq. 18 flux
+    hy[c] = 2.0 * q * rho[c] * T[c] * Ty[c];
+  }
+  const auto s_div = s.forward(div), s_ni = s.forward(nonideal);
+  const auto divx = s.derivative(s_div, 1, 0), divy = s.derivative(s_div, 0, 1);
+  const auto nix = s.derivative(s_ni, 1, 0), niy = s.derivative(s_ni, 0, 1);
+  const auto s_xx = s.forward(Lxx), s_xy = s.forward(Lxy), s_yy = s.forward(Lyy);
+  const auto dLx = s.divergence(s_xx, s_xy), dLy = s.divergence(s_xy, s_yy);
+  const auto dh = q > 0.0 ? s.divergence(s.forward(hx), s.forward(hy)) : std::vector<double>(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t c = 0; c < n; ++c) {
+    const double r = rho[c], t = T[c], d = div[c];
+    const double Bx = (nix[c] + dLx[c] - zeta * divx[c]) / (r * t);  // eq. 16
+    const double By = (niy[c] + dLy[c] - zeta * divy[c]) / (r * t);
+    const double g2 = rx[c] * rx[c] + ry[c] * ry[c];
+    const double lambda_grad_u = Lxx[c] * uxx[c] + Lxy[c] * (uxy[c] + uyx[c]) + Lyy[c] * uyy[c];
+    const double grad_u_rr = rx[c] * rx[c] * uxx[c] + rx[c] * ry[c] * (uxy[c] + uyx[c]) +
+                             ry[c] * ry[c] * uyy[c];  // ∇ρ·∇u·∇ρ
+    const double C = (nonideal[c] * d + lambda_grad_u - zeta * d * d + a * r * r * d +
+                      K * (-0.5 * g2 * d - r * (rx[c] * divx[c] + ry[c] * divy[c]) - grad_u_rr)) /
+                     (2.0 * r * t * t);  // eq. 17
+    const double Cq = dh[c] / (2.0 * r * t * t);  // eq. 18
+    coef_[c] = {-2.0 * (C + Cq) * t, Bx, By, C + Cq};  // eq. 15
+  }
+}
+
+void GlsForce::apply(const std::vector<double>& f, std::vector<double>& out,
+                     bool overwrite) const {
+  const Lattice& L = sim_.lattice();
+  const VelocityModel& model = sim_.model();
+  const int Q = model.size();
+  const std::size_t N = L.cells();
+#pragma omp parallel
+  {
+    std::vector<double> eq(Q);
+#pragma omp for schedule(static)
+    for (int j = 0; j < L.ny; ++j)
+      for (int i = 0; i < L.nx; ++i) {
+        const std::size_t id = i + static_cast<std::size_t>(L.nx) * j, cell = L.at(i, j);
+        const Macro m = macro_of(model, f.data() + cell, N, sim_.b());
+        sim_.inversion().equilibrium(m.rho, m.ux, m.uy, m.T, sim_.b(), eq.data());
+        const auto& [A, Bx, By, C] = coef_[id];
+        for (int k = 0; k < Q; ++k) {
+          const double cx = model.vx[k] - m.ux, cy = model.vy[k] - m.uy;
+          const double I = -(A + Bx * cx + By * cy + C * (cx * cx + cy * cy)) * eq[k];  // eq. 14
+          double& o = out[k * N + cell];
+          o = overwrite ? I : o + I;
+        }
+      }
+  }
+}
+
+void GlsForce::force_term(const std::vector<double>& f, std::vector<double>& out) {
+  out.assign(f.size(), 0.0);
+  coefficients(f);
+  apply(f, out, true);
+}
+
+std::vector<double> GlsForce::pressure() const {
+  const std::vector<Macro> m = macros(sim_.f());
+  std::vector<double> P(m.size());
+  for (std::size_t c = 0; c < m.size(); ++c) P[c] = eos_pressure(settings_.eos, m[c].rho, m[c].T);
+  return P;
+}
+
+GlsEnergy GlsForce::energy() const {
+  const std::vector<Macro> m = macros(sim_.f());
+  std::vector<double> rho(m.size());
+  for (std::size_t c = 0; c < m.size(); ++c) rho[c] = m[c].rho;
+  const auto s_rho = spectral_.forward(rho);
+  const auto rx = spectral_.derivative(s_rho, 1, 0), ry = spectral_.derivative(s_rho, 0, 1);
+  const double a = eos_attraction(settings_.eos);
+  GlsEnergy e;
+  for (std::size_t c = 0; c < m.size(); ++c) {  // fixed order: thread-count independent
+    const Macro& x = m[c];
+    e.thermal += x.rho * x.T;
+    e.kinetic += 0.5 * x.rho * (x.ux * x.ux + x.uy * x.uy);
+    e.attraction -= a * x.rho * x.rho;
+    e.interfacial += 0.5 * settings_.K * (rx[c] * rx[c] + ry[c] * ry[c]);
+  }
+  const double area = sim_.lattice().dx * sim_.lattice().dy;
+  e.thermal *= area, e.kinetic *= area, e.attraction *= area, e.interfacial *= area;
+  return e;
+}
+
+GlsTne GlsForce::tne() {
+  const std::vector<double>& f = sim_.f();
+  const Lattice& L = sim_.lattice();
+  const int Q = sim_.model().size();
+  const std::size_t N = L.cells();
+  std::vector<double> force;
+  force_term(f, force);
+  const std::vector<Macro> m = macros(f);
+  std::vector<double> net(f.size(), 0.0);
+  const double tau = sim_.settings().tau;
+#pragma omp parallel
+  {
+    std::vector<double> eq(Q);
+#pragma omp for schedule(static)
+    for (int j = 0; j < L.ny; ++j)
+      for (int i = 0; i < L.nx; ++i) {
+        const Macro& x = m[i + static_cast<std::size_t>(L.nx) * j];
+        sim_.inversion().equilibrium(x.rho, x.ux, x.uy, x.T, sim_.b(), eq.data());
+        for (int k = 0; k < Q; ++k) {
+          const std::size_t c = k * N + L.at(i, j);
+          net[c] = f[c] - eq[k];  // eq. 27
+          force[c] *= tau;        // eq. 29: τI
+        }
+      }
+  }
+  std::vector<double> gradient(f.size());
+  for (std::size_t c = 0; c < f.size(); ++c) gradient[c] = net[c] - force[c];  // eq. 31
+  const VelocityModel& model = sim_.model();
+  return {tne_measures(model, L, net, m), tne_measures(model, L, force, m),
+          tne_measures(model, L, gradient, m)};
+}
+
+}  // namespace shockfield::dbm

@@ -1,0 +1,41 @@
+#pragma once
+// Spatial derivatives of periodic 2D fields by FFT (FFTW3), as the seed's refs 34–35 use for the
+// GLS force term: a field is transformed once, and any derivative ∂x^a ∂y^b of it is (ik_x)^a
+// (ik_y)^b in Fourier space, transformed back, with an exponential filter on the highest modes
+// (none on the Nyquist mode). Plans are made once per grid (FFTW plan creation is not thread-safe); each
+// transform runs single-threaded, so results do not depend on the OpenMP thread count.
+#include <complex>
+#include <vector>
+
+namespace shockfield::dbm {
+
+class PeriodicSpectral {
+ public:
+  using Spectrum = std::vector<std::complex<double>>;
+
+  /// nx × ny cells of size dx × dy; fields are stored x fastest (i + nx·j).
+  PeriodicSpectral(int nx, int ny, double dx, double dy);
+  ~PeriodicSpectral();
+  PeriodicSpectral(const PeriodicSpectral&) = delete;
+  PeriodicSpectral& operator=(const PeriodicSpectral&) = delete;
+
+  std::size_t size() const { return static_cast<std::size_t>(nx_) * ny_; }
+  Spectrum forward(const std::vector<double>& field) const;
+  /// ∂x^ax ∂y^ay of the field whose spectrum is s (ax, ay ≤ 2).
+  std::vector<double> derivative(const Spectrum& s, int ax, int ay) const;
+  /// ∂x of sx plus ∂y of sy (a divergence), one inverse transform.
+  std::vector<double> divergence(const Spectrum& sx, const Spectrum& sy) const;
+  /// ∇² of the field whose spectrum is s.
+  std::vector<double> laplacian(const Spectrum& s) const;
+
+ private:
+  std::complex<double> factor(int ix, int iy, int ax, int ay) const;
+  std::vector<double> backward(Spectrum s) const;
+
+  int nx_, ny_, hx_;
+  std::vector<double> kx_, ky_;
+  void* forward_plan_;   // fftw_plan, kept opaque so this header does not need fftw3.h
+  void* backward_plan_;
+};
+
+}  // namespace shockfield::dbm
