@@ -6,6 +6,12 @@
       column per run (seed 004 Fig. 3), with the run's derived HEL and impact stress as dashed
       lines.
 
+  pd_plots.py crystal RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
+      at the last profile time: axial compression (Fig. 8/10) and accumulated slip (Fig. 11)
+      against x of every run on shared axes, grains of a polycrystal as alternating stripes
+      (Fig. 12); prints each run's HEL (the compression where the slip first exceeds 1e-5,
+      scanning from the resting end) and mean slip behind the plastic wave.
+
 Reads profiles/index.csv, profiles/profile_<k>.csv and config.resolved.toml. Uses only numpy
 and matplotlib from Debian (run with /usr/bin/python3).
 """
@@ -60,14 +66,57 @@ def bar(runs, labels, out):
     fig.savefig(out, dpi=110)
 
 
+def last_profile(run):
+    index = read_csv(os.path.join(run, "profiles", "index.csv"))
+    k = int(index["profile"][-1])
+    return index["time_s"][-1], read_csv(os.path.join(run, "profiles", f"profile_{k}.csv"))
+
+
+def hel(p, threshold=1e-5):
+    """Compression where the accumulated slip first exceeds `threshold` from the resting end."""
+    for k in range(len(p["x_m"]) - 1, 0, -1):
+        if p["plastic"][k] > threshold:
+            return -p["sxx_Pa"][k]
+    return float("nan")
+
+
+def crystal(runs, labels, out):
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 6.5), sharex=True)
+    for run, label in zip(runs, labels):
+        t, p = last_profile(run)
+        x = p["x_m"] * 1e3
+        middle = 0.5 * (x[0] + x[-1])
+        loaded = (x > middle + 0.1 * (x[-1] - middle)) & (x < middle + 0.4 * (x[-1] - middle))
+        slip = p["plastic"][loaded].mean()
+        print(f"{label}: HEL {hel(p) / 1e6:.1f} MPa (threshold 1e-5), {hel(p, 1e-4) / 1e6:.1f} MPa (1e-4); "
+              f"mean slip behind the plastic wave {slip:.5f} (min {p['plastic'][loaded].min():.5f}, "
+              f"max {p['plastic'][loaded].max():.5f}) at {t * 1e9:.0f} ns")
+        top.plot(x, -p["sxx_Pa"] / 1e6, label=label)
+        bottom.plot(x, p["plastic"], label=label)
+        if p["grain"].max() > 0:
+            edges = np.flatnonzero(np.diff(p["grain"])) + 1
+            bounds = np.concatenate(([0], edges, [len(x) - 1]))
+            for a, b, g in zip(bounds[:-1], bounds[1:], p["grain"][bounds[:-1]]):
+                if g % 2:
+                    bottom.axvspan(x[a], x[b], color="grey", alpha=0.15, lw=0)
+    top.set_ylabel("axial compression  $-\\sigma_{xx}$ [MPa]")
+    bottom.set_ylabel("accumulated slip $\\gamma_{tot}$")
+    bottom.set_xlabel("x [mm]")
+    top.legend(fontsize="small")
+    top.set_title(f"t = {t * 1e9:.0f} ns (grey stripes: alternate grains of the polycrystal)", fontsize="small")
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["bar"])
+    ap.add_argument("kind", choices=["bar", "crystal"])
     ap.add_argument("runs", nargs="+")
     ap.add_argument("--labels", nargs="*")
     ap.add_argument("--out", default="bar.png")
     a = ap.parse_args()
-    bar(a.runs, a.labels or [os.path.basename(os.path.normpath(r)) for r in a.runs], a.out)
+    labels = a.labels or [os.path.basename(os.path.normpath(r)) for r in a.runs]
+    {"bar": bar, "crystal": crystal}[a.kind](a.runs, labels, a.out)
 
 
 if __name__ == "__main__":

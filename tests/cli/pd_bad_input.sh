@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Bad PD case files: one clear message naming file, key and line, exit code 2, nothing left
 # behind (horizon smaller than the spacing, unstable fixed step, bad material values, unknown
-# keys and choices, a point with a singular shape tensor).
+# keys and choices, a point with a singular shape tensor, an unknown slip system set, Euler angles
+# out of range, a zero loading direction, inverted grain sizes).
 source "$(dirname "$0")/lib.bash"
 set -e
 base=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/pd_tiny.toml")
@@ -21,4 +22,20 @@ counts = [40, 1]}" "body.horizon_factor" "shape tensor" "singular"
 expect_error "${base/speed = 300.0/}" "loading.speed" "missing required value"
 expect_error "${base/horizon_factor = 3.0/horizon_factor = 3.0
 influence = \"cubic\"}" "body.influence" "expected one of"
+crystal="${base/model = \"j2\"
+density = 2703.0
+young = 77.11e9
+poisson = 0.334
+yield_stress = 270e6/model = \"crystal\"
+density = 8960.0}"
+expect_error "${crystal/density = 8960.0/density = 8960.0
+slip_systems = \"hcp\"}" "material.slip_systems" "fcc"
+expect_error "${crystal/density = 8960.0/density = 8960.0
+orientation = \"euler\"
+euler_angles_deg = [30.0, 200.0, 10.0]}" "material.euler_angles_deg" "out of range"
+expect_error "${crystal/density = 8960.0/density = 8960.0
+direction = [0.0, 0.0, 0.0]}" "material.direction" "non-zero"
+expect_error "${crystal/density = 8960.0/density = 8960.0
+orientation = \"random_grains\"
+grain_planes = [12, 8]}" "material.grain_planes" "lo <= hi"
 echo "pd_bad_input: all cases rejected cleanly"
