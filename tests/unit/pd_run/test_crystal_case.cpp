@@ -55,7 +55,8 @@ TEST(PdCrystalCase, GrainsOfEightToTwelvePlanes) {
   for (int g : body.grain) ++size[g];
   EXPECT_EQ(static_cast<int>(size.size()), body.grains);
   for (const auto& [g, n] : size) {
-    if (g + 1 < body.grains) EXPECT_TRUE(n >= 8 && n <= 12) << "grain " << g << " has " << n << " points";
+    if (g + 1 == body.grains) continue;  // the last grain is cut by the body's end
+    EXPECT_TRUE(n >= 8 && n <= 12) << "grain " << g << " has " << n << " points";
   }
   EXPECT_NE(body.materials[0].orientation, body.materials[119].orientation);
 }
