@@ -152,13 +152,14 @@ void run_case(const Config& root, const RunOptions& options) {
   const long first = sim.step_count();
   const auto remaining = static_cast<std::int64_t>(std::ceil((c.end_time - sim.time()) / p.first_dt));
   Progress progress("mpm", first, remaining, !options.quiet);
+  const double start_time = sim.time();
   log.info("running to t = {} s; initial dt = {} s (about {} steps)", c.end_time, p.first_dt, remaining);
   try {
     while (sim.time() < c.end_time - tol) {
       advance(sim, c, next_event() - sim.time());
       check_health(sim);
       write_due();
-      progress.update(sim.step_count());
+      progress.update(sim.step_count(), (sim.time() - start_time) / (c.end_time - start_time));
       if (c.output.checkpoint_every > 0 && sim.step_count() % c.output.checkpoint_every == 0)
         write_checkpoint(checkpoint, sim, counters, cavity_state());
       if (stop_requested() || (options.stop_after > 0 && sim.step_count() - first == options.stop_after)) {
