@@ -33,7 +33,7 @@ class PeriodicSpectral {
   std::vector<double> backward(Spectrum s) const;
 
   int nx_, ny_, hx_;
-  std::vector<double> kx_, ky_;
+  std::vector<double> kx_, ky_, filter_;
   void* forward_plan_;   // fftw_plan, kept opaque so this header does not need fftw3.h
   void* backward_plan_;
 };

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <omp.h>
+
 #include "unit/dbm_gls/gls_setup.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/dbm/coexistence.hpp"
@@ -132,4 +134,29 @@ TEST(DbmGls, DensityOutsideTheEosDomainStopsWithAClearMessage) {
   } catch (const RunError& e) {
     EXPECT_NE(std::string(e.what()).find("van der Waals"), std::string::npos);
   }
+}
+
+TEST(DbmGls, ResultsDoNotDependOnTheThreadCount) {
+  GlsCase c;
+  c.nx = 32, c.ny = 8, c.K = 1e-3, c.tau = 1e-3, c.dt = 2e-4;
+  const auto state = [](double x, double y) {
+    return Macro{1.0 + 0.4 * std::sin(6.28318 * x) * std::cos(6.28318 * y), 0, 0, 0.9};
+  };
+  std::vector<std::vector<double>> f;
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    auto run = make_gls(c, state);
+    for (int s = 0; s < 10; ++s) run.sim->step();
+    f.push_back(run.sim->f());
+  }
+  EXPECT_EQ(f[0], f[1]);
+}
+
+TEST(DbmGls, InterfaceTensionOfTheSquareGradientModel) {
+  // σ = ∫ sqrt(2Kω) dρ scales as sqrt(K) and is converged in the grid (vdW, T = 0.9).
+  const materials::VanDerWaals vdw;
+  const double s = interface_tension(vdw, 0.9, 1e-3);
+  EXPECT_NEAR(s, interface_tension(vdw, 0.9, 1e-3, 2000), 1e-4 * s);
+  EXPECT_NEAR(interface_tension(vdw, 0.9, 4e-3), 2.0 * s, 1e-12);
+  EXPECT_NEAR(s, 0.005563, 5e-6);
 }
