@@ -80,6 +80,9 @@ MdCase read_md_case(const Config& root) {
   const Config md = root.table("md");
   c.timestep = md.get_double_or("timestep", 0.001, Range{0.0, 0.1, true, false});
   c.skin = md.get_double_or("skin", 2.0, Range::positive());
+  c.neighbor_every = static_cast<int>(md.get_int_or("neighbor_every", 1, Range::closed(1, 1000)));
+  c.neighbor_delay = static_cast<int>(md.get_int_or("neighbor_delay", 0, Range::closed(0, 1000)));
+  c.neighbor_check = md.get_bool_or("neighbor_check", true);
   c.seed = static_cast<std::uint64_t>(md.get_int_or("seed", 12345, Range::non_negative()));
   md.derive("timestep_fs", c.timestep * 1000.0);
 

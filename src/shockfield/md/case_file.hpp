@@ -55,6 +55,9 @@ struct OutputSpec {
 struct MdCase {
   double timestep = 0.001;         ///< ps
   double skin = 2.0;               ///< Å
+  int neighbor_every = 1;          ///< LAMMPS neigh_modify every
+  int neighbor_delay = 0;          ///< LAMMPS neigh_modify delay
+  bool neighbor_check = true;      ///< LAMMPS neigh_modify check
   std::uint64_t seed = 12345;
   std::optional<double> temperature;   ///< initial velocities, K
   std::vector<VelocityAdd> velocity_adds;

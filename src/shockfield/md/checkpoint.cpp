@@ -4,6 +4,7 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/hdf5_file.hpp"
+#include "shockfield/md/force_evaluation.hpp"
 
 namespace shockfield::md {
 namespace {
@@ -45,6 +46,7 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
     h5.set_attribute("step", static_cast<double>(sim.step));
     h5.set_attribute("time", sim.time);
     h5.set_attribute("neighbor_rebuilds", static_cast<double>(sim.rebuilds));
+    h5.set_attribute("steps_since_rebuild", static_cast<double>(sim.steps_since_rebuild));
     h5.set_attribute("stage", static_cast<double>(where.stage));
     h5.set_attribute("stage_step", static_cast<double>(where.stage_step));
     h5.set_attribute("boundary", sim.box.boundary_codes());
@@ -118,9 +120,10 @@ void read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
   }
   sim.restore_rebuild_state(unflatten(h5.read_doubles("x_rebuild")), rebuild_box);
   sim.rebuilds = static_cast<std::int64_t>(h5.attribute("neighbor_rebuilds"));
+  sim.steps_since_rebuild = static_cast<std::int64_t>(h5.attribute("steps_since_rebuild"));
   // Energies and virial of the restored step, then the saved forces: they include what fixes
   // added after the force evaluation (Langevin bath forces), which a recomputation would lose.
-  sim.compute_forces(false);
+  evaluate_forces(a, *sim.potential, sim.list, sim.forces, false);
   a.f = unflatten(h5.read_doubles("f"));
 }
 

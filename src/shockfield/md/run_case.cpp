@@ -152,6 +152,9 @@ void run_case(const Config& root, const RunOptions& options) {
   if (!options.resume) write_file_atomically(folder / "config.resolved.toml", root.resolved_toml());
 
   Simulation sim(p.system.box, std::move(p.system.atoms), std::move(p.potential), p.md.timestep, p.md.skin);
+  sim.neighbor_every = p.md.neighbor_every;
+  sim.neighbor_delay = p.md.neighbor_delay;
+  sim.neighbor_check = p.md.neighbor_check;
   CheckpointPosition start{};
   std::optional<std::int64_t> resume_step;
   if (options.resume) {

@@ -44,6 +44,7 @@ void Simulation::rebuild() {
   x_rebuild_.assign(atoms.x.begin(), atoms.x.begin() + static_cast<std::ptrdiff_t>(atoms.nlocal));
   box_rebuild_ = box;
   ++rebuilds;
+  steps_since_rebuild = 0;
 }
 
 void Simulation::restore_rebuild_state(const std::vector<Vec3>& x_rebuild, const geometry::Box& box_rebuild) {
@@ -63,6 +64,8 @@ void Simulation::restore_rebuild_state(const std::vector<Vec3>& x_rebuild, const
 
 bool Simulation::needs_rebuild() const {
   if (x_rebuild_.size() != atoms.nlocal) return true;
+  if (steps_since_rebuild < neighbor_delay || steps_since_rebuild % neighbor_every != 0) return false;
+  if (!neighbor_check) return true;
   const double limit2 = 0.25 * skin * skin;
   bool moved = false;
 #pragma omp parallel for reduction(|| : moved) schedule(static)
@@ -78,6 +81,7 @@ bool Simulation::needs_rebuild() const {
 }
 
 void Simulation::compute_forces(bool per_atom) {
+  ++steps_since_rebuild;
   if (needs_rebuild()) rebuild();
   else atoms.update_ghost_positions(box);
   evaluate_forces(atoms, *potential, list, forces, per_atom);

@@ -41,6 +41,14 @@ class Simulation {
   std::vector<std::unique_ptr<Fix>> fixes;
   bool per_atom_this_step = false;  ///< set by diagnostics that need per-atom energy/virial
   std::int64_t rebuilds = 0;
+  /// Neighbour-list policy (LAMMPS `neigh_modify every N delay D check yes|no`): a rebuild is
+  /// considered when at least `neighbor_delay` steps passed since the last one and that count is
+  /// a multiple of `neighbor_every`; it happens if `neighbor_check` is off or an atom moved more
+  /// than half the skin (or a box face by as much).
+  int neighbor_every = 1;
+  int neighbor_delay = 0;
+  bool neighbor_check = true;
+  std::int64_t steps_since_rebuild = 0;
 
   /// Wraps, rebuilds ghosts and list, and computes forces (per-atom tallies if asked).
   void setup(bool per_atom);

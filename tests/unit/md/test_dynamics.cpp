@@ -114,6 +114,35 @@ TEST(Restart, NoseHooverResumesBitwise) {
                          "nvt");
 }
 
+TEST(Restart, FixedRebuildPolicyResumesBitwise) {
+  // LAMMPS neigh_modify every 3 delay 2 check no: the step count since the last build is state.
+  expect_bitwise_restart(
+      [](Simulation& s) {
+        s.neighbor_every = 3;
+        s.neighbor_delay = 2;
+        s.neighbor_check = false;
+        s.fixes.push_back(std::make_unique<FixNve>());
+      },
+      "policy");
+}
+
+TEST(Neighbors, RebuildPolicyFollowsLammpsNeighModify) {
+  Simulation s = copper({3, 3, 3}, 300.0);
+  s.neighbor_every = 5;
+  s.neighbor_check = false;
+  s.fixes.push_back(std::make_unique<FixNve>());
+  s.setup(false);
+  run(s, 100);
+  EXPECT_EQ(s.rebuilds, 1 + 100 / 5);  // setup + every 5th step, no distance check
+  Simulation c = copper({3, 3, 3}, 300.0);
+  c.neighbor_every = 1;
+  c.neighbor_delay = 1000;
+  c.fixes.push_back(std::make_unique<FixNve>());
+  c.setup(false);
+  run(c, 100);
+  EXPECT_EQ(c.rebuilds, 1);  // the delay holds every rebuild back
+}
+
 TEST(Thermostat, LangevinAndNoseHooverReachTheirTemperature) {
   for (int kind = 0; kind < 2; ++kind) {
     Simulation s = copper({4, 4, 4}, 100.0);
