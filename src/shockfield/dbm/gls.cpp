@@ -114,27 +114,59 @@ void GlsForce::coefficients(const std::vector<double>& f) {
   }
 }
 
+namespace {
+
+/// 4 × 4 Gauss–Hermite rule for the weight exp(−ξ²/2)/sqrt(2π) per axis (nodes ±sqrt(3 ± sqrt 6),
+/// weights 3/(2(ξ³ − 3ξ)²)): exact for polynomials of degree ≤ 7 in each component.
+struct HermiteRule {
+  std::array<double, 16> x, y, w;
+  HermiteRule() {
+    std::array<double, 4> node, weight;
+    for (int s = 0; s < 2; ++s) {
+      const double xi = std::sqrt(3.0 + (s == 0 ? 1.0 : -1.0) * std::sqrt(6.0));
+      const double he3 = xi * xi * xi - 3.0 * xi;
+      node[2 * s] = xi, node[2 * s + 1] = -xi;
+      weight[2 * s] = weight[2 * s + 1] = 1.5 / (he3 * he3);
+    }
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) x[4 * a + b] = node[a], y[4 * a + b] = node[b],
+                                  w[4 * a + b] = weight[a] * weight[b];
+  }
+};
+
+}  // namespace
+
 void GlsForce::apply(const std::vector<double>& f, std::vector<double>& out,
                      bool overwrite) const {
+  // I_k = C⁻¹·M(I): the 16 moments of eq. 14 applied to the continuous Maxwellian of (ρ, u, T)
+  // (by the Gauss–Hermite rule, exact here: degree ≤ 6), inverted like f^eq = C⁻¹·M^eq.
+  // Evaluating eq. 14 on the discrete f^eq instead makes M_3(I) and M_(4,2)(I) depend on moments
+  // of f^eq beyond eq. 26 that D2V16 does not fix, and the runs blow up.
+  static const HermiteRule rule;
   const Lattice& L = sim_.lattice();
   const VelocityModel& model = sim_.model();
   const int Q = model.size();
   const std::size_t N = L.cells();
 #pragma omp parallel
   {
-    std::vector<double> eq(Q);
+    std::vector<double> I(Q);
 #pragma omp for schedule(static)
     for (int j = 0; j < L.ny; ++j)
       for (int i = 0; i < L.nx; ++i) {
         const std::size_t id = i + static_cast<std::size_t>(L.nx) * j, cell = L.at(i, j);
         const Macro m = macro_of(model, f.data() + cell, N, sim_.b());
-        sim_.inversion().equilibrium(m.rho, m.ux, m.uy, m.T, sim_.b(), eq.data());
         const auto& [A, Bx, By, C] = coef_[id];
+        const double s = std::sqrt(m.T);
+        Eigen::Matrix<double, kMoments, 1> moments = Eigen::Matrix<double, kMoments, 1>::Zero();
+        for (int q = 0; q < 16; ++q) {
+          const double cx = s * rule.x[q], cy = s * rule.y[q];
+          const double theta = -(A + Bx * cx + By * cy + C * (cx * cx + cy * cy));  // eq. 14
+          moments += (m.rho * rule.w[q] * theta) * moment_row(m.ux + cx, m.uy + cy, 0.0);
+        }
+        sim_.inversion().distribution(moments, I.data());
         for (int k = 0; k < Q; ++k) {
-          const double cx = model.vx[k] - m.ux, cy = model.vy[k] - m.uy;
-          const double I = -(A + Bx * cx + By * cy + C * (cx * cx + cy * cy)) * eq[k];  // eq. 14
           double& o = out[k * N + cell];
-          o = overwrite ? I : o + I;
+          o = overwrite ? I[k] : o + I[k];
         }
       }
   }

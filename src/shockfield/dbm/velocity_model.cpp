@@ -133,4 +133,9 @@ void MomentInversion::equilibrium(double rho, double ux, double uy, double T, do
   result.noalias() = inverse_ * equilibrium_moments(rho, ux, uy, T, b);
 }
 
+void MomentInversion::distribution(const Moments& moments, double* out) const {
+  Eigen::Map<Moments> result(out);
+  result.noalias() = inverse_ * moments;
+}
+
 }  // namespace shockfield::dbm

@@ -56,6 +56,8 @@ class MomentInversion {
   explicit MomentInversion(const VelocityModel& model);
   /// f^eq_k for k = 0..Q−1 into out (stride 1).
   void equilibrium(double rho, double ux, double uy, double T, double b, double* out) const;
+  /// The distribution with the given moments (in the order of equilibrium_moments()): C⁻¹·m.
+  void distribution(const Eigen::Matrix<double, kMoments, 1>& moments, double* out) const;
   double condition_number() const { return condition_; }
 
  private:

@@ -1,6 +1,7 @@
 #pragma once
 // Shared set-up of the GLS liquid–vapour tests: a periodic D2V16 simulation (γ = 2) with the
 // GLS force term, the van der Waals EOS of the seed (a = 9/8, b = 1/3, T_c = ρ_c = 1).
+#include <array>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -15,6 +16,7 @@ struct GlsCase {
   double tau = 0.01, dt = 1e-3, K = 1e-4, zeta = 0.0;
   double T = 0.9;
   bool spectral = true;
+  std::array<double, 4> speeds{1.0, 2.0, 3.0, 4.0};  // D2V16 speeds, eta0 = 2
   GlsEos eos = materials::VanDerWaals{};
 };
 
@@ -31,7 +33,7 @@ inline GlsRun make_gls(const GlsCase& c, const std::function<Macro(double, doubl
   BgkSettings bgk;
   bgk.gamma = 2.0, bgk.tau = c.tau, bgk.dt = c.dt, bgk.spectral_convection = c.spectral;
   GlsRun run;
-  run.sim = std::make_unique<Simulation>(d2v16({1.0, 2.0, 3.0, 4.0}, 2.0), lattice, periodic, bgk);
+  run.sim = std::make_unique<Simulation>(d2v16(c.speeds, 2.0), lattice, periodic, bgk);
   GlsSettings gls;
   gls.eos = c.eos, gls.K = c.K, gls.zeta = c.zeta;
   run.force = std::make_unique<GlsForce>(*run.sim, periodic, gls);
