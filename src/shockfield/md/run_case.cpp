@@ -8,6 +8,7 @@
 #include "shockfield/core/logger.hpp"
 #include "shockfield/core/progress.hpp"
 #include "shockfield/core/run_folder.hpp"
+#include "shockfield/core/run_session.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/lammps_data.hpp"
@@ -143,13 +144,10 @@ void run_case(const Config& root, const RunOptions& options) {
                 p.system.atoms.nlocal, p.md.stages.size());
     return;
   }
-  const fs::path folder = run_folder_path(options);
-  prepare_run_folder(folder, options);
-  const fs::path checkpoint = folder / "checkpoint.h5";
-  Logger log(folder / "log.txt", !options.quiet, options.resume);
-  log.info("shockfield {} md: {} ({} atoms, {} threads) -> {}", SHOCKFIELD_VERSION,
-           options.case_file.string(), p.system.atoms.nlocal, omp_get_max_threads(), folder.string());
-  if (!options.resume) write_file_atomically(folder / "config.resolved.toml", root.resolved_toml());
+  RunSession run = open_run_session(root, options, "md", fmt::format("{} atoms", p.system.atoms.nlocal));
+  const fs::path& folder = run.folder;
+  const fs::path& checkpoint = run.checkpoint;
+  Logger& log = run.log;
 
   Simulation sim(p.system.box, std::move(p.system.atoms), std::move(p.potential), p.md.timestep, p.md.skin);
   sim.neighbor_every = p.md.neighbor_every;

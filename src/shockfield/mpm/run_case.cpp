@@ -10,7 +10,7 @@
 #include "shockfield/core/interrupt.hpp"
 #include "shockfield/core/logger.hpp"
 #include "shockfield/core/progress.hpp"
-#include "shockfield/core/run_folder.hpp"
+#include "shockfield/core/run_session.hpp"
 #include "shockfield/mpm/case_builder.hpp"
 #include "shockfield/mpm/case_file.hpp"
 #include "shockfield/mpm/checkpoint.hpp"
@@ -100,14 +100,12 @@ void run_case(const Config& root, const RunOptions& options) {
     return;
   }
 
-  const fs::path folder = run_folder_path(options);
-  prepare_run_folder(folder, options);
-  const fs::path checkpoint = folder / "checkpoint.h5";
-  Logger log(folder / "log.txt", !options.quiet, options.resume);
-  log.info("shockfield {} mpm: {} ({} particles, {} grid nodes, {}D, {} threads) -> {}", SHOCKFIELD_VERSION,
-           options.case_file.string(), sim.particles().size(), sim.grid().size(), c.grid.dim, omp_get_max_threads(),
-           folder.string());
-  if (!options.resume) write_file_atomically(folder / "config.resolved.toml", root.resolved_toml());
+  RunSession run = open_run_session(
+      root, options, "mpm",
+      fmt::format("{} particles, {} grid nodes, {}D", sim.particles().size(), sim.grid().size(), c.grid.dim));
+  const fs::path& folder = run.folder;
+  const fs::path& checkpoint = run.checkpoint;
+  Logger& log = run.log;
 
   std::optional<CavityTracker> tracker;
   if (p.sample.cavity) tracker.emplace(c.grid.dim, *p.sample.cavity, p.sample.cavity_spacing);

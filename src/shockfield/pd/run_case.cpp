@@ -12,7 +12,7 @@
 #include "shockfield/core/interrupt.hpp"
 #include "shockfield/core/logger.hpp"
 #include "shockfield/core/progress.hpp"
-#include "shockfield/core/run_folder.hpp"
+#include "shockfield/core/run_session.hpp"
 #include "shockfield/pd/bar_impact.hpp"
 #include "shockfield/pd/case_file.hpp"
 #include "shockfield/pd/checkpoint.hpp"
@@ -102,13 +102,11 @@ void run_with(const Config& root, const RunOptions& options, const PdCase& c, co
     return;
   }
 
-  const fs::path folder = run_folder_path(options);
-  prepare_run_folder(folder, options);
-  const fs::path checkpoint = folder / "checkpoint.h5";
-  Logger log(folder / "log.txt", !options.quiet, options.resume);
-  log.info("shockfield {} pd: {} ({} points, {} bonds, {}D, {} threads) -> {}", SHOCKFIELD_VERSION,
-           options.case_file.string(), cloud.size(), family.bonds(), c.body.dim, omp_get_max_threads(), folder.string());
-  if (!options.resume) write_file_atomically(folder / "config.resolved.toml", root.resolved_toml());
+  RunSession run = open_run_session(root, options, "pd",
+                                    fmt::format("{} points, {} bonds, {}D", cloud.size(), family.bonds(), c.body.dim));
+  const fs::path& folder = run.folder;
+  const fs::path& checkpoint = run.checkpoint;
+  Logger& log = run.log;
 
   OutputCounters counters;
   std::optional<ResumePoint> resume;
