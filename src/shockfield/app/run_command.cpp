@@ -7,6 +7,7 @@
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/run_options.hpp"
+#include "shockfield/dbm/run_case.hpp"
 #include "shockfield/md/run_case.hpp"
 #include "shockfield/mpm/run_case.hpp"
 #include "shockfield/pd/run_case.hpp"
@@ -18,7 +19,8 @@ using Runner = void (*)(const Config&, const RunOptions&);
 
 // Explicit registry of the methods `run` knows, by the case file's `method` value.
 const std::map<std::string, Runner>& runners() {
-  static const std::map<std::string, Runner> table{{"md", &md::run_case}, {"mpm", &mpm::run_case}, {"pd", &pd::run_case}};
+  static const std::map<std::string, Runner> table{
+      {"dbm", &dbm::run_case}, {"md", &md::run_case}, {"mpm", &mpm::run_case}, {"pd", &pd::run_case}};
   return table;
 }
 
@@ -42,7 +44,8 @@ void add_run_command(CLI::App& app) {
       "missing or out-of-range values are reported with file, key and line). The run writes a\n"
       "folder with log.txt, config.resolved.toml, thermo.csv, dumps and checkpoints.\n"
       "Ctrl-C or SIGTERM writes a checkpoint and stops; --resume continues from it.\n"
-      "Case-file keys: docs/md.md (method = \"md\"), docs/mpm.md (\"mpm\"), docs/pd.md (\"pd\").");
+      "Case-file keys: docs/md.md (method = \"md\"), docs/mpm.md (\"mpm\"), docs/pd.md (\"pd\"),\n"
+      "docs/dbm.md (\"dbm\").");
   cmd->add_option("case", options->case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->output,
                   "Run folder (default: runs/<case file name without .toml>)");

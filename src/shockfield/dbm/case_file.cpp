@@ -1,0 +1,150 @@
+#include "shockfield/dbm/case_file.hpp"
+
+#include <array>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::dbm {
+namespace {
+
+const std::array<std::string, 4> kSides{"x_low", "x_high", "y_low", "y_high"};
+
+// ρ, u, v and T or p (p = ρT) of an inline table such as { rho = 1.0, u = 0.0, p = 1.0 }.
+Macro read_state(const Config& t) {
+  Macro m;
+  m.rho = t.get_double("rho", Range::positive());
+  m.ux = t.get_double_or("u", 0.0);
+  m.uy = t.get_double_or("v", 0.0);
+  if (t.has("T") == t.has("p")) t.fail("T", "give exactly one of T and p (p = rho*T)");
+  m.T = t.has("T") ? t.get_double("T", Range::positive()) : t.get_double("p", Range::positive()) / m.rho;
+  return m;
+}
+
+Lattice read_grid(const Config& t) {
+  Lattice l;
+  l.nx = static_cast<int>(t.get_int("nx", Range::closed(1, 1e6)));
+  l.ny = static_cast<int>(t.get_int_or("ny", 1, Range::closed(1, 1e6)));
+  l.dx = l.dy = t.get_double("dx", Range::positive());
+  return l;
+}
+
+VelocityModel read_model(const Config& t, BgkSettings& bgk) {
+  bgk.gamma = t.get_double_or("gamma", 1.4, {1.0, 2.0, true, false});
+  bgk.tau = t.get_double("tau", Range::positive());
+  const auto v = t.get_doubles_or("speeds", {1.0, 2.0, 3.0, 4.0}, Range::positive());
+  if (v.size() != 4) t.fail("speeds", fmt::format("{} values given; D2V16 needs 4 group speeds", v.size()));
+  VelocityModel model = d2v16({v[0], v[1], v[2], v[3]}, t.get_double_or("eta0", 2.0, Range::positive()));
+  try {
+    MomentInversion check(model);
+  } catch (const InputError& e) {
+    t.fail("speeds", e.what());
+  }
+  bgk.spectral_convection = t.get_choice_or("convection", {"nnd", "spectral"}, "nnd") == "spectral";
+  return model;
+}
+
+InitialSpec read_initial(const Config& t, const Lattice& lattice) {
+  InitialSpec s;
+  s.riemann = t.get_choice_or("type", {"riemann", "uniform"}, "riemann") == "riemann";
+  if (!s.riemann) {
+    s.left = s.right = read_state(t.table("state"));
+    return s;
+  }
+  s.left = read_state(t.table("left"));
+  s.right = read_state(t.table("right"));
+  const double length = lattice.nx * lattice.dx;
+  s.split = t.get_double_or("split", 0.5 * length, {0.0, length, true, true});
+  return s;
+}
+
+Boundaries read_boundaries(const std::optional<Config>& t) {
+  Boundaries b;
+  b.side[0].kind = b.side[1].kind = BoundaryKind::outflow;
+  if (!t) return b;
+  const std::vector<std::string> kinds{"periodic", "outflow", "inflow", "reflecting", "wall"};
+  for (std::size_t s = 0; s < 4; ++s) {
+    const std::string& side = kSides[s];
+    BoundarySide& bs = b.side[s];
+    bs.kind = boundary_kind(t->get_choice_or(side, kinds, s < 2 ? "outflow" : "periodic"));
+    if (bs.kind == BoundaryKind::inflow) bs.state = read_state(t->table(side + "_state"));
+    if (bs.kind == BoundaryKind::wall) {
+      const Config w = t->table(side + "_wall");
+      bs.state = {1.0, w.get_double_or("u", 0.0), w.get_double_or("v", 0.0), w.get_double("T", Range::positive())};
+    }
+  }
+  try {
+    b.check();
+  } catch (const InputError& e) {
+    t->fail("x_low", e.what());
+  }
+  return b;
+}
+
+// dt from [run] (dt, or courant × dx / max|v|), then shortened so that whole steps land on
+// end_time; refused when the collision (dt/τ) or the convection (Courant) would be unstable.
+void read_run(const Config& t, const Config& model, DbmCase& c) {
+  c.end_time = t.get_double("end_time", Range::positive());
+  if (t.has("dt") && t.has("courant")) t.fail("courant", "give dt or courant, not both");
+  const double vmax = c.model.max_speed(), dx = c.lattice.dx;
+  const double wanted = t.has("dt") ? t.get_double("dt", Range::positive())
+                                    : t.get_double_or("courant", 0.4, {0.0, 1.0, true, false}) * dx / vmax;
+  if (vmax * wanted / dx > BgkSettings::max_courant)
+    t.fail("dt", fmt::format("{} gives the Courant number max|v| dt/dx = {:.3g} > {} (max|v| = {}): the convection is "
+                             "unstable; use dt <= {:.4g}",
+                             wanted, vmax * wanted / dx, BgkSettings::max_courant, vmax,
+                             BgkSettings::max_courant * dx / vmax));
+  c.steps = static_cast<long long>(std::ceil(c.end_time / wanted - 1e-9));
+  c.bgk.dt = c.end_time / static_cast<double>(c.steps);
+  if (c.bgk.dt / c.bgk.tau > BgkSettings::max_dt_over_tau)
+    model.fail("tau", fmt::format("{} is too small for dt = {:.4g}: dt/tau = {:.3g} > {} makes the explicit collision "
+                                  "term unstable; use tau >= {:.4g} or a smaller dt",
+                                  c.bgk.tau, c.bgk.dt, c.bgk.dt / c.bgk.tau, BgkSettings::max_dt_over_tau,
+                                  c.bgk.dt / BgkSettings::max_dt_over_tau));
+}
+
+DbmOutputSpec read_output(const std::optional<Config>& t, const DbmCase& c) {
+  DbmOutputSpec s;
+  s.series_interval = c.end_time / 100.0;
+  s.profile_row = c.lattice.ny / 2;
+  if (!t) return s;
+  s.series_interval = t->get_double_or("series_interval", s.series_interval, Range::positive());
+  s.profile_interval = t->get_double_or("profile_interval", 0.0, Range::non_negative());
+  s.profile_row = static_cast<int>(t->get_int_or("profile_row", s.profile_row, Range::closed(0, c.lattice.ny - 1)));
+  return s;
+}
+
+std::optional<RiemannStar> exact_star(const InitialSpec& s, double gamma) {
+  if (!s.riemann || s.left.uy != 0.0 || s.right.uy != 0.0) return std::nullopt;
+  const auto primitive = [](const Macro& m) { return Primitive{m.rho, m.ux, m.rho * m.T}; };
+  try {
+    return ExactRiemann(primitive(s.left), primitive(s.right), gamma).star();
+  } catch (const InputError&) {
+    return std::nullopt;  // vacuum-generating jump: no star region to report
+  }
+}
+
+}  // namespace
+
+DbmCase read_dbm_case(const Config& root) {
+  DbmCase c;
+  c.lattice = read_grid(root.table("grid"));
+  const Config model = root.table("model");
+  c.model = read_model(model, c.bgk);
+  c.initial = read_initial(root.table("initial"), c.lattice);
+  const std::optional<Config> boundary = root.optional_table("boundary");
+  c.boundaries = read_boundaries(boundary);
+  if (c.bgk.spectral_convection)
+    for (const BoundarySide& s : c.boundaries.side)
+      if (s.kind != BoundaryKind::periodic)
+        model.fail("convection", "\"spectral\" (FFT) convection needs periodic boundaries on all four sides");
+  read_run(root.table("run"), model, c);
+  c.output = read_output(root.optional_table("output"), c);
+  c.exact_star = exact_star(c.initial, c.bgk.gamma);
+  return c;
+}
+
+}  // namespace shockfield::dbm
