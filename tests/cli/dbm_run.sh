@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # A short DBM Sod tube writes its folder (log, resolved config with the exact star state, series,
-# profiles); an unknown key, an unstable tau and --resume are refused (exit 2, file and key
-# named, no run folder); a blow-up stops with the cell named (exit 3) and keeps the output.
+# profiles, fields, checkpoint); a run stopped (as by Ctrl-C) and resumed writes the same output as
+# an uninterrupted one, bitwise (same thread count); an unknown key and an unstable tau are
+# refused (exit 2, file and key named, no run folder); a blow-up stops with the cell named (exit 3)
+# and keeps the output.
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=2
@@ -19,15 +21,20 @@ end_time = 0.05
 courant = 0.4
 [output]
 series_interval = 0.01
-profile_interval = 0.025'
+profile_interval = 0.025
+field_interval = 0.02
+checkpoint_every = 20'
 printf '%s\n' "$sod" > "$WORK/sod.toml"
 "$SF" run "$WORK/sod.toml" --check | grep -q "valid dbm case (100 x 1 cells, 50 steps" || fail "--check does not report the case"
 "$SF" run "$WORK/sod.toml" --output "$WORK/sod" -q > /dev/null
-for f in log.txt config.resolved.toml series.csv profiles/index.csv profiles/profile_0.csv profiles/profile_2.csv; do
+for f in log.txt config.resolved.toml series.csv checkpoint.h5 profiles/index.csv profiles/profile_0.csv profiles/profile_2.csv \
+         grid.pvd fields/grid_000000000.vti fields/grid_000000040.vti; do
   [ -s "$WORK/sod/$f" ] || fail "run folder lacks $f"
 done
 grep -q "exact_p_star = 0.30313" "$WORK/sod/config.resolved.toml" || fail "derived exact p* missing"
 [ "$(wc -l < "$WORK/sod/series.csv")" -eq 7 ] || fail "series.csv should have a header and 6 rows"
+[ "$(grep -c "<DataSet" "$WORK/sod/grid.pvd")" -eq 3 ] || fail "grid.pvd should list 3 frames"
+grep -q 'Name="D"' "$WORK/sod/fields/grid_000000040.vti" || fail "field frame lacks D"
 head -1 "$WORK/sod/profiles/profile_2.csv" | grep -q "x,rho,ux,uy,p,T,D2xx,D31x" || fail "profile columns"
 [ "$(wc -l < "$WORK/sod/profiles/profile_2.csv")" -eq 101 ] || fail "profile should have 100 cells"
 
@@ -38,11 +45,17 @@ expect_error "$sod
 [boundary]
 x_low = \"periodic\"" "boundary.x_low" "periodic"
 set +e
-"$SF" run "$WORK/sod.toml" --output "$WORK/sod" -q --resume > /dev/null 2> "$WORK/resume.txt"
+"$SF" run "$WORK/sod.toml" --output "$WORK/split" -q --stop-after 17 > /dev/null 2> "$WORK/stop.txt"
 code=$?
 set -e
-[ $code -eq 2 ] || fail "--resume exit code $code, expected 2"
-grep -q "cannot be resumed" "$WORK/resume.txt" || fail "--resume message: $(cat "$WORK/resume.txt")"
+[ $code -eq 130 ] || fail "stopped run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
+grep -q -- "--resume" "$WORK/stop.txt" || fail "the stop message does not say how to resume"
+[ -s "$WORK/split/checkpoint.h5" ] || fail "a stopped run wrote no checkpoint"
+"$SF" run "$WORK/sod.toml" --output "$WORK/split" -q --resume > /dev/null
+grep -q "resumed from .* at step 17" "$WORK/split/log.txt" || fail "the resumed run did not start at the checkpoint"
+for f in series.csv profiles/index.csv profiles/profile_1.csv profiles/profile_2.csv grid.pvd fields/grid_000000040.vti; do
+  cmp "$WORK/sod/$f" "$WORK/split/$f" || fail "resumed $f differs"
+done
 run_expecting 3 "${sod/p = 0.1 \}/p = 1e-4 \}}" "broke down" "in cell ("
 [ -s "$WORK/out/series.csv" ] && [ -s "$WORK/out/profiles/profile_1.csv" ] || fail "a blown-up run lost its output"
-echo "dbm_run: run folder, derived exact star state, refused keys, tau and --resume, blow-up"
+echo "dbm_run: run folder, fields, derived exact star state, bitwise resume, refused keys and tau, blow-up"

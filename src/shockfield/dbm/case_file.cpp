@@ -114,6 +114,8 @@ DbmOutputSpec read_output(const std::optional<Config>& t, const DbmCase& c) {
   s.series_interval = t->get_double_or("series_interval", s.series_interval, Range::positive());
   s.profile_interval = t->get_double_or("profile_interval", 0.0, Range::non_negative());
   s.profile_row = static_cast<int>(t->get_int_or("profile_row", s.profile_row, Range::closed(0, c.lattice.ny - 1)));
+  s.field_interval = t->get_double_or("field_interval", 0.0, Range::non_negative());
+  s.checkpoint_every = t->get_int_or("checkpoint_every", 0, Range::non_negative());
   return s;
 }
 

@@ -24,6 +24,8 @@ struct DbmOutputSpec {
   double series_interval = 0.0;   ///< series.csv row every ... (model time)
   double profile_interval = 0.0;  ///< profiles/profile_<k>.csv every ...; 0: only the last
   int profile_row = 0;            ///< j of the line profile along x
+  double field_interval = 0.0;    ///< fields/grid_<step>.vti + grid.pvd every ...; 0: none
+  long long checkpoint_every = 0; ///< checkpoint.h5 every ... steps; 0: only at the end or when stopped
 };
 
 struct DbmCase {

@@ -10,8 +10,10 @@
 #include "shockfield/core/progress.hpp"
 #include "shockfield/core/run_session.hpp"
 #include "shockfield/dbm/case_file.hpp"
+#include "shockfield/dbm/checkpoint.hpp"
 #include "shockfield/dbm/tne.hpp"
 #include "shockfield/io/csv_writer.hpp"
+#include "shockfield/io/vtk_xml.hpp"
 
 namespace shockfield::dbm {
 
@@ -40,15 +42,24 @@ void derive(const Config& root, const DbmCase& c, const Simulation& sim) {
   }
 }
 
-// series.csv (domain means) and profiles/ (line profiles along x at row profile_row).
+// series.csv (domain means), profiles/ (line profiles along x at row profile_row) and fields/
+// with grid.pvd. A resumed run keeps what was written up to its checkpoint and rewrites the rest.
 class Output {
  public:
-  Output(const fs::path& folder, int row)
-      : folder_(folder / "profiles"),
-        row_(row),
-        series_(folder / "series.csv", {"step", "time", "rho", "ux", "uy", "T", "D"}) {
-    fs::create_directories(folder_);
-    index_ = io::CsvWriter(folder_ / "index.csv", {"profile", "step", "time"});
+  Output(const fs::path& folder, const DbmOutputSpec& spec, const Simulation* resumed, const OutputCounters& counters)
+      : folder_(folder), row_(spec.profile_row) {
+    const double keep_step = resumed ? static_cast<double>(resumed->steps()) : 0.0;
+    const double keep_profile = static_cast<double>(counters.profiles) - 1.0;
+    series_ = io::CsvWriter(folder / "series.csv", {"step", "time", "rho", "ux", "uy", "T", "D"},
+                            resumed ? &keep_step : nullptr);
+    fs::create_directories(folder / "profiles");
+    index_ = io::CsvWriter(folder / "profiles" / "index.csv", {"profile", "step", "time"},
+                           resumed ? &keep_profile : nullptr);
+    if (spec.field_interval > 0.0) {
+      fs::create_directories(folder / "fields");
+      const double keep_time = resumed ? resumed->time() : 0.0;
+      grid_pvd_ = io::PvdSeries(folder / "grid.pvd", resumed ? &keep_time : nullptr);
+    }
   }
 
   void write_series(const Simulation& sim) {
@@ -64,25 +75,46 @@ class Output {
                  tne_measures(sim).mean_strength});
   }
 
-  void write_profile(const Simulation& sim) {
+  void write_profile(const Simulation& sim, std::int64_t index) {
     const TneFields tne = tne_measures(sim);
     const Lattice& l = sim.lattice();
-    io::CsvWriter csv(folder_ / fmt::format("profile_{}.csv", profiles_),
+    io::CsvWriter csv(folder_ / "profiles" / fmt::format("profile_{}.csv", index),
                       {"x", "rho", "ux", "uy", "p", "T", "D2xx", "D31x"});
     for (int i = 0; i < l.nx; ++i) {
       const Macro m = sim.macro(i, row_);
       const std::size_t cell = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * row_;
       csv.row({l.x(i), m.rho, m.ux, m.uy, m.rho * m.T, m.T, tne.central[kD2xx][cell], tne.central[kD31x][cell]});
     }
-    index_.row({static_cast<double>(profiles_++), static_cast<double>(sim.steps()), sim.time()});
+    index_.row({static_cast<double>(index), static_cast<double>(sim.steps()), sim.time()});
   }
-  long long profiles() const { return profiles_; }
+
+  /// ρ, u, T and the TNE strength D on the cell centres.
+  void write_fields(const Simulation& sim) {
+    const Lattice& l = sim.lattice();
+    const std::size_t n = static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(l.ny);
+    io::VtkImage img;
+    img.points = {static_cast<std::size_t>(l.nx), static_cast<std::size_t>(l.ny), 1};
+    img.origin = {l.x(0), l.y(0), 0.0};
+    img.spacing = {l.dx, l.dy, 1.0};
+    std::vector<double> rho(n), u(3 * n), T(n);
+    for (int j = 0; j < l.ny; ++j)
+      for (int i = 0; i < l.nx; ++i) {
+        const Macro m = sim.macro(i, j);
+        const std::size_t c = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(j);
+        rho[c] = m.rho, u[3 * c] = m.ux, u[3 * c + 1] = m.uy, T[c] = m.T;
+      }
+    img.point_data = {{"rho", 1, std::move(rho)}, {"velocity", 3, std::move(u)}, {"T", 1, std::move(T)},
+                      {"D", 1, tne_measures(sim).strength}};
+    const std::string file = fmt::format("fields/grid_{:09d}.vti", sim.steps());
+    io::write_vti(folder_ / file, img, io::VtkEncoding::Ascii);
+    grid_pvd_.add(sim.time(), file);
+  }
 
  private:
   fs::path folder_;
   int row_;
   io::CsvWriter series_, index_;
-  long long profiles_ = 0;
+  io::PvdSeries grid_pvd_;
 };
 
 }  // namespace
@@ -90,9 +122,6 @@ class Output {
 void run_case(const Config& root, const RunOptions& options) {
   const DbmCase c = read_dbm_case(root);
   root.check_unknown_keys();
-  if (options.resume)
-    throw InputError("--resume: dbm runs cannot be resumed yet (they write no checkpoint); rerun the case with "
-                     "--overwrite");
   Simulation sim(c.model, c.lattice, c.boundaries, c.bgk);
   derive(root, c, sim);
   if (options.validate_only) {
@@ -103,24 +132,39 @@ void run_case(const Config& root, const RunOptions& options) {
 
   RunSession run = open_run_session(root, options, "dbm",
                                     fmt::format("{} x {} cells, D2V16, tau {}", c.lattice.nx, c.lattice.ny, c.bgk.tau));
-  const InitialSpec& init = c.initial;
-  sim.initialize([&](double x, double) { return x < init.split ? init.left : init.right; });
-  Output output(run.folder, c.output.profile_row);
+  const fs::path& checkpoint = run.checkpoint;
+  OutputCounters counters;
+  if (options.resume) {
+    if (!fs::exists(checkpoint))
+      throw InputError(fmt::format("--resume: no checkpoint in '{}'", run.folder.string()));
+    counters = read_checkpoint(checkpoint, sim);
+    run.log.info("resumed from {} at step {}, t = {}", checkpoint.string(), sim.steps(), sim.time());
+  } else {
+    const InitialSpec& init = c.initial;
+    sim.initialize([&](double x, double) { return x < init.split ? init.left : init.right; });
+  }
+  Output output(run.folder, c.output, options.resume ? &sim : nullptr, counters);
 
-  // Rows at the first step at or past k·interval.
-  long long series = 0, profiles = 0;
+  // Rows and frames at the first step at or past k·interval.
   const double tol = 1e-9 * c.bgk.dt;
   auto write_due = [&] {
     const double t = sim.time() + tol;
-    for (; static_cast<double>(series) * c.output.series_interval <= t; ++series) output.write_series(sim);
-    for (; c.output.profile_interval > 0 && static_cast<double>(profiles) * c.output.profile_interval <= t; ++profiles)
-      output.write_profile(sim);
+    for (; static_cast<double>(counters.series) * c.output.series_interval <= t; ++counters.series)
+      output.write_series(sim);
+    for (; c.output.profile_interval > 0 && static_cast<double>(counters.profiles) * c.output.profile_interval <= t;
+         ++counters.profiles)
+      output.write_profile(sim, counters.profiles);
+    for (; c.output.field_interval > 0 && static_cast<double>(counters.fields) * c.output.field_interval <= t;
+         ++counters.fields)
+      output.write_fields(sim);
   };
+  auto save = [&] { write_checkpoint(checkpoint, sim, counters); };
 
   clear_stop_request();
   install_stop_handlers();
-  write_due();
-  Progress progress("dbm", 0, c.steps, !options.quiet);
+  if (!options.resume) write_due();
+  const long long first = sim.steps();
+  Progress progress("dbm", first, c.steps - first, !options.quiet);
   run.log.info("running to t = {} in {} steps of dt = {} (tau = {}, Courant {:.3g})", c.end_time, c.steps, c.bgk.dt,
                c.bgk.tau, c.model.max_speed() * c.bgk.dt / c.lattice.dx);
   try {
@@ -129,24 +173,27 @@ void run_case(const Config& root, const RunOptions& options) {
       sim.check_state();
       write_due();
       progress.update(sim.steps(), sim.time() / c.end_time);
-      if (stop_requested() || (options.stop_after > 0 && sim.steps() == options.stop_after)) {
+      if (c.output.checkpoint_every > 0 && sim.steps() % c.output.checkpoint_every == 0) save();
+      if (stop_requested() || (options.stop_after > 0 && sim.steps() - first == options.stop_after)) {
         progress.finish(sim.steps());
-        output.write_profile(sim);
-        run.log.info("stopped at step {} (t = {}); the output so far is kept", sim.steps(), sim.time());
-        throw StopRequested(fmt::format("stopped at step {} (t = {}); dbm runs cannot be resumed yet: rerun with "
-                                        "--overwrite to start again",
-                                        sim.steps(), sim.time()));
+        output.write_profile(sim, counters.profiles);
+        save();
+        run.log.info("stopped at step {} (t = {}): checkpoint written to {}, the state in profiles/profile_{}.csv",
+                     sim.steps(), sim.time(), checkpoint.string(), counters.profiles);
+        throw StopRequested(fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
+                                        sim.steps(), options.case_file.string(), run.folder.string()));
       }
     }
   } catch (const RunError& e) {
     run.log.info("run stopped: {}", e.what());
-    output.write_profile(sim);
+    output.write_profile(sim, counters.profiles);
     run.log.info("the output written so far is kept in {}; the state at the failure: profiles/profile_{}.csv",
-                 run.folder.string(), output.profiles() - 1);
+                 run.folder.string(), counters.profiles);
     throw;
   }
   progress.finish(sim.steps());
-  if (c.output.profile_interval == 0.0) output.write_profile(sim);
+  if (c.output.profile_interval == 0.0) output.write_profile(sim, counters.profiles++);
+  save();
   const auto total = sim.totals();
   run.log.info("finished: t = {} after {} steps ({:.3g} cell-steps/s); mass {}, momentum ({}, {}), energy {}",
                sim.time(), sim.steps(), progress.rate(sim.steps()) * c.lattice.nx * c.lattice.ny, total[0], total[1],

@@ -48,6 +48,8 @@ class Simulation {
   void check_state() const;
 
   void set_source(Source source) { source_ = std::move(source); }
+  /// Sets the clock of a state restored from a checkpoint (f() restored by the caller).
+  void restore_clock(double time, long long steps) { time_ = time, steps_ = steps; }
   double b() const { return b_; }
   double time() const { return time_; }
   long long steps() const { return steps_; }

@@ -1,0 +1,47 @@
+#include "shockfield/dbm/checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/io/hdf5_file.hpp"
+
+namespace shockfield::dbm {
+namespace {
+
+constexpr double kFormatVersion = 1;
+
+}  // namespace
+
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    io::Hdf5File h5(tmp, io::Hdf5File::Mode::create);
+    h5.set_attribute("format_version", kFormatVersion);
+    h5.set_attribute("step", static_cast<double>(sim.steps()));
+    h5.set_attribute("time", sim.time());
+    h5.set_attribute("series", static_cast<double>(counters.series));
+    h5.set_attribute("profiles", static_cast<double>(counters.profiles));
+    h5.set_attribute("fields", static_cast<double>(counters.fields));
+    const std::vector<double>& f = sim.f();
+    h5.write("f", f, {static_cast<hsize_t>(sim.model().size()), f.size() / static_cast<std::size_t>(sim.model().size())});
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
+  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  const std::string name = file.string();
+  if (h5.attribute("format_version") != kFormatVersion)
+    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", name,
+                                 h5.attribute("format_version"), kFormatVersion));
+  std::vector<double> f = h5.read_doubles("f");
+  if (f.size() != sim.f().size())
+    throw InputError(fmt::format("{}: dataset 'f' has {} values, the case needs {} (a different grid or velocity model)",
+                                 name, f.size(), sim.f().size()));
+  sim.f() = std::move(f);
+  sim.restore_clock(h5.attribute("time"), static_cast<long long>(h5.attribute("step")));
+  return {static_cast<std::int64_t>(h5.attribute("series")), static_cast<std::int64_t>(h5.attribute("profiles")),
+          static_cast<std::int64_t>(h5.attribute("fields"))};
+}
+
+}  // namespace shockfield::dbm

@@ -1,0 +1,25 @@
+#pragma once
+// DBM checkpoints (HDF5): the distributions f, the clock and the output counters, so that a
+// resumed run continues bitwise as if never stopped (same thread count; the model keeps no other
+// state between steps). Written to a temporary file and renamed.
+#include <cstdint>
+#include <filesystem>
+
+#include "shockfield/dbm/simulation.hpp"
+
+namespace shockfield::dbm {
+
+/// How far the driver's output schedule had got.
+struct OutputCounters {
+  std::int64_t series = 0;    ///< series rows written (row k at k·series_interval)
+  std::int64_t profiles = 0;  ///< scheduled profiles written
+  std::int64_t fields = 0;    ///< field frames written
+};
+
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters);
+
+/// Restores f and the clock of `sim` (built from the same case file) and returns the counters.
+/// InputError when the checkpoint does not fit the case.
+OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim);
+
+}  // namespace shockfield::dbm
