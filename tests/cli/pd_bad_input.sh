@@ -2,7 +2,8 @@
 # Bad PD case files: one clear message naming file, key and line, exit code 2, nothing left
 # behind (horizon smaller than the spacing, unstable fixed step, bad material values, unknown
 # keys and choices, a point with a singular shape tensor, an unknown slip system set, Euler angles
-# out of range, a zero loading direction, inverted grain sizes).
+# out of range, a zero loading direction, inverted grain sizes, a PMB critical stretch of 0, a
+# negative micromodulus, an LPS key given to PMB).
 source "$(dirname "$0")/lib.bash"
 set -e
 base=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/pd_tiny.toml")
@@ -38,4 +39,13 @@ direction = [0.0, 0.0, 0.0]}" "material.direction" "non-zero"
 expect_error "${crystal/density = 8960.0/density = 8960.0
 orientation = \"random_grains\"
 grain_planes = [12, 8]}" "material.grain_planes" "lo <= hi"
+pmb="${base/young = 77.11e9
+poisson = 0.334
+yield_stress = 270e6/micromodulus = 4e21
+critical_stretch = 0.01}"
+pmb="${pmb/model = \"j2\"/model = \"pmb\"}"
+expect_error "${pmb/critical_stretch = 0.01/critical_stretch = 0.0}" "material.critical_stretch"
+expect_error "${pmb/micromodulus = 4e21/micromodulus = -4e21}" "material.micromodulus"
+expect_error "${pmb/critical_stretch = 0.01/critical_stretch = 0.01
+shear = 26e9}" "material.shear" "only of model = \"lps\""
 echo "pd_bad_input: all cases rejected cleanly"

@@ -24,4 +24,33 @@ for f in series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4
   cmp "$WORK/straight/$f" "$WORK/split/$f" || fail "resumed $f differs"
 done
 echo "ok: resumed run is bitwise identical"
-echo "pd_run: run folder, derived values and bitwise resume"
+
+# The bond models on the same bar: a PMB run finishes with a damage column; an LPS run resumes bitwise.
+base=$(cat "$case")
+j2='model = "j2"
+density = 2703.0
+young = 77.11e9
+poisson = 0.334
+yield_stress = 270e6'
+echo "${base/"$j2"/model = \"pmb\"
+density = 2703.0
+micromodulus = 4e21
+critical_stretch = 0.01}" > "$WORK/pmb.toml"
+"$SF" run "$WORK/pmb.toml" --output "$WORK/pmb" -q > /dev/null
+head -1 "$WORK/pmb/profiles/profile_4.csv" | grep -q ",grain,damage$" || fail "PMB profile lacks the damage column"
+echo "${base/"$j2"/model = \"lps\"
+density = 2703.0
+bulk = 70e9
+shear = 26e9
+critical_stretch = 0.01}" > "$WORK/lps.toml"
+"$SF" run "$WORK/lps.toml" --output "$WORK/lps_straight" -q > /dev/null
+set +e
+"$SF" run "$WORK/lps.toml" --output "$WORK/lps_split" -q --stop-after 77 > /dev/null 2> "$WORK/stop.txt"
+code=$?
+set -e
+[ $code -eq 130 ] || fail "stopped LPS run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
+"$SF" run "$WORK/lps.toml" --output "$WORK/lps_split" -q --resume > /dev/null
+for f in series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4.csv; do
+  cmp "$WORK/lps_straight/$f" "$WORK/lps_split/$f" || fail "resumed LPS $f differs"
+done
+echo "pd_run: run folder, derived values and bitwise resume (J2, LPS); PMB run"

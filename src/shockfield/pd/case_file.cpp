@@ -1,6 +1,9 @@
 #include "shockfield/pd/case_file.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 #include "shockfield/core/error.hpp"
 
@@ -23,8 +26,39 @@ BodySpec read_body(const Config& t) {
   return b;
 }
 
-std::variant<SmallStrainJ2, CrystalSpec> read_material(const Config& t) {
-  if (t.get_choice_or("model", {"j2", "crystal"}, "j2") == "crystal") return read_crystal(t);
+// Keys that belong to some models only: given to another model they are refused by name.
+struct ModelKey {
+  const char* key;
+  std::vector<std::string> models;
+};
+const std::vector<ModelKey>& model_keys() {
+  static const std::vector<ModelKey> keys{
+      {"young", {"j2"}},         {"poisson", {"j2"}},     {"yield_stress", {"j2"}},
+      {"hardening", {"j2"}},     {"hugoniot_slope", {"j2", "crystal"}},
+      {"micromodulus", {"pmb"}}, {"bulk", {"lps"}},       {"shear", {"lps"}},
+      {"critical_stretch", {"pmb", "lps"}},               {"alpha", {"pmb", "lps"}}};
+  return keys;
+}
+
+// Density and critical-stretch damage of a bond model (LAMMPS s00 and α).
+template <class Law>
+BondSpec<Law> read_bond(const Config& t, Law law) {
+  BondSpec<Law> s{law, t.get_double("density", Range::positive()), {}};
+  s.damage.s00 = t.get_double("critical_stretch", Range::positive());
+  s.damage.alpha = t.get_double_or("alpha", 0.25, Range::non_negative());
+  return s;
+}
+
+std::variant<SmallStrainJ2, CrystalSpec, PmbSpec, LpsSpec> read_material(const Config& t) {
+  const std::string model = t.get_choice_or("model", {"j2", "crystal", "pmb", "lps"}, "j2");
+  for (const ModelKey& k : model_keys())
+    if (t.has(k.key) && std::find(k.models.begin(), k.models.end(), model) == k.models.end())
+      t.fail(k.key, fmt::format("not a parameter of model = \"{}\" (only of model = \"{}\")", model,
+                                fmt::join(k.models, "\" or \"")));
+  if (model == "crystal") return read_crystal(t);
+  if (model == "pmb") return read_bond(t, PmbModel{t.get_double("micromodulus", Range::positive())});
+  if (model == "lps")
+    return read_bond(t, LpsModel{t.get_double("bulk", Range::positive()), t.get_double("shear", Range::positive())});
   const double density = t.get_double("density", Range::positive());
   const double young = t.get_double("young", Range::positive());
   const double poisson = t.get_double("poisson", {-1.0, 0.5, true, true});

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "shockfield/core/config.hpp"
+#include "shockfield/pd/bond_models.hpp"
 #include "shockfield/pd/correspondence.hpp"
 #include "shockfield/pd/crystal_case.hpp"
 #include "shockfield/pd/family.hpp"
@@ -39,9 +40,21 @@ struct OutputSpec {
   long long checkpoint_every = 0;  ///< steps; 0: only when the run ends or is stopped
 };
 
+/// An ordinary bond law (model = "pmb" or "lps", LAMMPS peri/pmb and peri/lps) with its density and
+/// critical-stretch damage.
+template <class Law>
+struct BondSpec {
+  Law law;
+  double density = 0.0;  ///< [kg/m^3]
+  CriticalStretch damage;
+};
+using PmbSpec = BondSpec<PmbModel>;
+using LpsSpec = BondSpec<LpsModel>;
+
 struct PdCase {
   BodySpec body;
-  std::variant<SmallStrainJ2, CrystalSpec> material;  ///< model = "j2" (seed 004 §3.1) or "crystal"
+  /// model = "j2" (seed 004 §3.1), "crystal", "pmb" or "lps"
+  std::variant<SmallStrainJ2, CrystalSpec, PmbSpec, LpsSpec> material;
   SolverSpec solver;
   double impact_speed = 0.0;  ///< left half at +v, right half at rest [m/s]
   OutputSpec output;

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <memory>
 #include <variant>
 
 #include "shockfield/core/error.hpp"
@@ -14,6 +16,7 @@
 #include "shockfield/core/progress.hpp"
 #include "shockfield/core/run_session.hpp"
 #include "shockfield/pd/bar_impact.hpp"
+#include "shockfield/pd/bond_force.hpp"
 #include "shockfield/pd/case_file.hpp"
 #include "shockfield/pd/checkpoint.hpp"
 #include "shockfield/pd/run_output.hpp"
@@ -75,11 +78,24 @@ std::pair<std::vector<CrystalMaterial>, std::vector<int>> point_materials(const 
   return {std::move(body.materials), std::move(body.grain)};
 }
 
-template <class Material>
-void run_with(const Config& root, const RunOptions& options, const PdCase& c, const PointCloud& cloud,
-              const Family& family, std::vector<Material> materials, std::vector<int> grain) {
-  using Force = CorrespondenceForce<Material>;
-  const double density = materials.front().reference_density();
+// A force model as the driver sees it: the model, its density, what the output reads of it, its
+// state for checkpoints and its [derived] values.
+struct ModelRun {
+  std::unique_ptr<ForceModel> force;
+  double density = 0.0;
+  PointFields fields;
+  std::function<std::vector<double>()> save;
+  /// Takes back the saved state once `sim` holds the checkpointed positions.
+  std::function<void(Simulation&, const std::vector<double>&)> restore;
+  std::function<void(const Config&)> derive;
+};
+
+// Correspondence (J2 or crystal): σ, the plastic measure and the material state of every point.
+template <class Spec>
+ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const PointCloud& cloud,
+                    const Family& family) {
+  auto [materials, grain] = point_materials(spec, cloud);
+  using Force = CorrespondenceForce<typename std::decay_t<decltype(materials)>::value_type>;
   std::unique_ptr<Force> model;
   try {
     model = std::make_unique<Force>(cloud, family, materials, c.body.influence, c.solver.options);
@@ -87,7 +103,48 @@ void run_with(const Config& root, const RunOptions& options, const PdCase& c, co
     root.table("body").fail("horizon_factor", e.what());
   }
   Force& force = *model;
-  Simulation sim(cloud, family, std::move(model), {density});
+  ModelRun run{nullptr,
+               materials.front().reference_density(),
+               {[&force](std::size_t i) { return force.stress(i); },
+                [&force](std::size_t i) { return plastic_measure(force.state(i)); }, grain, {}},
+               [&force] { return force.saved_state(); },
+               [&force](Simulation&, const std::vector<double>& state) { force.restore_state(state); },
+               [&c, materials = std::move(materials), grain = grain](const Config& r) {
+                 derive_material(r, c, materials, grain);
+               }};
+  run.force = std::move(model);
+  return run;
+}
+
+// PMB or LPS: no stress nor plastic measure (NaN columns), damage only. Their state (intact bonds,
+// critical stretches, dilatations) follows from the positions as long as no bond has broken, so
+// the checkpoint keeps the intact bond count and a resume re-evaluates the forces at the restored
+// positions; a checkpoint taken after bonds broke is refused.
+template <class Law>
+ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, const PointCloud& cloud,
+                    const Family& family) {
+  auto model = std::make_unique<BondForce<Law>>(cloud, family, spec.law, c.body.influence, spec.damage);
+  BondForce<Law>& force = *model;
+  ModelRun run{nullptr,
+               spec.density,
+               {{}, {}, std::vector<int>(cloud.size(), 0), {}},
+               [&force] { return std::vector<double>{static_cast<double>(force.intact_bonds())}; },
+               [&force, &family](Simulation& sim, const std::vector<double>& state) {
+                 if (state.size() != 1 || state[0] != static_cast<double>(family.bonds()))
+                   throw InputError(fmt::format("--resume: the checkpoint was written after bonds broke ({} of {} "
+                                                "intact); a {} run resumes only from before the first break",
+                                                state.empty() ? 0.0 : state[0], family.bonds(), force.name()));
+                 std::vector<Vec3> scratch;
+                 force.compute({sim.positions(), sim.velocities(), 0.0}, scratch);
+               },
+               {}};
+  run.force = std::move(model);
+  return run;
+}
+
+void run_with(const Config& root, const RunOptions& options, const PdCase& c, const PointCloud& cloud,
+              const Family& family, ModelRun m) {
+  Simulation sim(cloud, family, std::move(m.force), {m.density});
   const double stable = sim.stable_step();
   const double dt = c.solver.time_step.value_or(c.solver.safety * stable);
   if (dt > stable)
@@ -95,7 +152,7 @@ void run_with(const Config& root, const RunOptions& options, const PdCase& c, co
                                                        "(velocity-Verlet would blow up); lower it or drop it",
                                                        dt, stable));
   derive_common(root, c, sim, dt);
-  derive_material(root, c, materials, grain);
+  if (m.derive) m.derive(root);
   if (options.validate_only) {
     std::printf("%s: valid pd case (%zu points, %zu bonds, dt %.3g s)\n", options.case_file.string().c_str(),
                 cloud.size(), family.bonds(), dt);
@@ -114,16 +171,15 @@ void run_with(const Config& root, const RunOptions& options, const PdCase& c, co
     if (!fs::exists(checkpoint)) throw InputError(fmt::format("--resume: no checkpoint in '{}'", folder.string()));
     std::vector<double> state;
     counters = read_checkpoint(checkpoint, sim, state);
-    force.restore_state(state);
+    m.restore(sim, state);
     resume = ResumePoint{sim.step_count(), counters.profiles};
     log.info("resumed from {} at step {}, t = {} s", checkpoint.string(), sim.step_count(), sim.time());
   } else {
     set_impact_velocity(sim, c.impact_speed);
     sim.setup();
   }
-  RunOutput output(folder, {[&](std::size_t i) { return force.stress(i); },
-                            [&](std::size_t i) { return plastic_measure(force.state(i)); }, std::move(grain)},
-                   resume);
+  m.fields.damage = [&sim] { return sim.model().damage(); };
+  RunOutput output(folder, std::move(m.fields), resume);
 
   // Rows at the first step at or past k·interval (the step is fixed).
   const double tol = 1e-9 * dt;
@@ -135,7 +191,7 @@ void run_with(const Config& root, const RunOptions& options, const PdCase& c, co
          ++counters.profiles)
       output.write_profile(sim, counters.profiles);
   };
-  auto save = [&] { write_checkpoint(checkpoint, sim, force.saved_state(), counters); };
+  auto save = [&] { write_checkpoint(checkpoint, sim, m.save(), counters); };
 
   clear_stop_request();
   install_stop_handlers();
@@ -183,12 +239,8 @@ void run_case(const Config& root, const RunOptions& options) {
   root.check_unknown_keys();
   const PointCloud cloud = lattice_cloud(c.body.dim, c.body.counts, c.body.spacing);
   const Family family = build_family(cloud, c.body.horizon(), c.body.correction);
-  std::visit(
-      [&](const auto& m) {
-        auto [materials, grain] = point_materials(m, cloud);
-        run_with(root, options, c, cloud, family, std::move(materials), std::move(grain));
-      },
-      c.material);
+  std::visit([&](const auto& m) { run_with(root, options, c, cloud, family, make_model(root, c, m, cloud, family)); },
+             c.material);
 }
 
 }  // namespace shockfield::pd

@@ -2,7 +2,7 @@
 // Output of a PD run (docs/pd.md, "Outputs"): the time series series.csv (kinetic energy,
 // momentum, peak axial compression and plastic measure) and point profiles
 // profiles/profile_<k>.csv (position, displacement, velocity, Cauchy stress, pressure, plastic
-// measure and grain of every point) indexed with their times by profiles/index.csv.
+// measure, grain and damage of every point) indexed with their times by profiles/index.csv.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -15,10 +15,12 @@
 namespace shockfield::pd {
 
 /// What the output reads of the force model per point.
+/// Empty stress and plastic functions (bond models) write NaN.
 struct PointFields {
-  std::function<Mat3(std::size_t)> stress;     ///< Cauchy σ [Pa]
-  std::function<double(std::size_t)> plastic;  ///< accumulated plastic measure (ε̄p, or slip γ_tot) [-]
-  std::vector<int> grain;                      ///< grain of each point (0 without grains)
+  std::function<Mat3(std::size_t)> stress;       ///< Cauchy σ [Pa]
+  std::function<double(std::size_t)> plastic;    ///< accumulated plastic measure (ε̄p, or slip γ_tot) [-]
+  std::vector<int> grain;                        ///< grain of each point (0 without grains)
+  std::function<std::vector<double>()> damage;   ///< φ of every point (ForceModel::damage) [-]
 };
 
 /// Where a resumed run picks up its output.
@@ -36,6 +38,9 @@ class RunOutput {
   void write_profile(const Simulation& sim, std::int64_t index);
 
  private:
+  Mat3 stress(std::size_t i) const;
+  double plastic(std::size_t i) const;
+
   std::filesystem::path folder_;
   PointFields fields_;
   io::CsvWriter series_, index_;
