@@ -8,6 +8,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/interrupt.hpp"
 #include "shockfield/core/progress.hpp"
+#include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_session.hpp"
 #include "shockfield/dbm/case_file.hpp"
 #include "shockfield/dbm/checkpoint.hpp"
@@ -149,14 +150,9 @@ void run_case(const Config& root, const RunOptions& options) {
   const double tol = 1e-9 * c.bgk.dt;
   auto write_due = [&] {
     const double t = sim.time() + tol;
-    for (; static_cast<double>(counters.series) * c.output.series_interval <= t; ++counters.series)
-      output.write_series(sim);
-    for (; c.output.profile_interval > 0 && static_cast<double>(counters.profiles) * c.output.profile_interval <= t;
-         ++counters.profiles)
-      output.write_profile(sim, counters.profiles);
-    for (; c.output.field_interval > 0 && static_cast<double>(counters.fields) * c.output.field_interval <= t;
-         ++counters.fields)
-      output.write_fields(sim);
+    write_due_frames(counters.series, c.output.series_interval, t, [&](auto) { output.write_series(sim); });
+    write_due_frames(counters.profiles, c.output.profile_interval, t, [&](auto k) { output.write_profile(sim, k); });
+    write_due_frames(counters.fields, c.output.field_interval, t, [&](auto) { output.write_fields(sim); });
   };
   auto save = [&] { write_checkpoint(checkpoint, sim, counters); };
 

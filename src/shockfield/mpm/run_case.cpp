@@ -10,6 +10,7 @@
 #include "shockfield/core/interrupt.hpp"
 #include "shockfield/core/logger.hpp"
 #include "shockfield/core/progress.hpp"
+#include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_session.hpp"
 #include "shockfield/mpm/case_builder.hpp"
 #include "shockfield/mpm/case_file.hpp"
@@ -134,9 +135,8 @@ void run_case(const Config& root, const RunOptions& options) {
   };
   auto write_due = [&] {
     const double t = sim.time() + tol;
-    for (; static_cast<double>(counters.series) * c.output.series_interval <= t; ++counters.series) output.write_series(sim);
-    for (; c.output.field_interval > 0 && static_cast<double>(counters.fields) * c.output.field_interval <= t; ++counters.fields)
-      output.write_fields(sim);
+    write_due_frames(counters.series, c.output.series_interval, t, [&](auto) { output.write_series(sim); });
+    write_due_frames(counters.fields, c.output.field_interval, t, [&](auto) { output.write_fields(sim); });
     for (; static_cast<std::size_t>(counters.histograms) < hist_times.size() &&
            hist_times[static_cast<std::size_t>(counters.histograms)] <= t;
          ++counters.histograms)

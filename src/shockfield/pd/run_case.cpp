@@ -14,6 +14,7 @@
 #include "shockfield/core/interrupt.hpp"
 #include "shockfield/core/logger.hpp"
 #include "shockfield/core/progress.hpp"
+#include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_session.hpp"
 #include "shockfield/pd/bar_impact.hpp"
 #include "shockfield/pd/bond_force.hpp"
@@ -185,11 +186,8 @@ void run_with(const Config& root, const RunOptions& options, const PdCase& c, co
   const double tol = 1e-9 * dt;
   auto write_due = [&] {
     const double t = sim.time() + tol;
-    for (; static_cast<double>(counters.series) * c.output.series_interval <= t; ++counters.series)
-      output.write_series(sim);
-    for (; c.output.profile_interval > 0 && static_cast<double>(counters.profiles) * c.output.profile_interval <= t;
-         ++counters.profiles)
-      output.write_profile(sim, counters.profiles);
+    write_due_frames(counters.series, c.output.series_interval, t, [&](auto) { output.write_series(sim); });
+    write_due_frames(counters.profiles, c.output.profile_interval, t, [&](auto k) { output.write_profile(sim, k); });
   };
   auto save = [&] { write_checkpoint(checkpoint, sim, m.save(), counters); };
 
