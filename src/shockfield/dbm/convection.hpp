@@ -3,14 +3,16 @@
 // upwind scheme with the minmod limiter): for a velocity component v the flux derivative at cell i
 // along a direction of stride s is built from the limited slopes σ = minmod(Δ−, Δ+) of the upwind
 // cells. Needs two ghost cells on each side.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
 namespace shockfield::dbm {
 
+/// The argument of smaller magnitude when a and b have the same sign, else 0; written without
+/// branches so that loops over cells vectorise.
 inline double minmod(double a, double b) {
-  if (a * b <= 0.0) return 0.0;
-  return std::abs(a) < std::abs(b) ? a : b;
+  return 0.5 * (std::copysign(1.0, a) + std::copysign(1.0, b)) * std::min(std::abs(a), std::abs(b));
 }
 
 /// Limited slope of f at p (neighbours at ±s).
@@ -18,17 +20,28 @@ inline double limited_slope(const double* p, std::ptrdiff_t s) {
   return minmod(p[0] - p[-s], p[s] - p[0]);
 }
 
-/// v ∂f/∂x at p by NND with upwinding on the sign of v; h is the grid spacing.
-inline double nnd_derivative(const double* p, std::ptrdiff_t s, double v, double h) {
-  if (v == 0.0) return 0.0;
-  if (v > 0.0) {
-    const double right = p[0] + 0.5 * limited_slope(p, s);
-    const double left = p[-s] + 0.5 * limited_slope(p - s, s);
-    return v * (right - left) / h;
+/// h ∂f/∂x at p by NND, upwinded for a velocity of sign Upwind (+1, −1; 0 gives 0), given the
+/// limited slopes: slope[0] of cell p, slope[±ss] of its neighbours p[±s]. The sign is a template
+/// parameter so that loops over cells carry no branch and vectorise.
+template <int Upwind>
+inline double nnd_difference(const double* p, std::ptrdiff_t s, const double* slope,
+                             std::ptrdiff_t ss) {
+  if constexpr (Upwind > 0) {
+    return (p[0] + 0.5 * slope[0]) - (p[-s] + 0.5 * slope[-ss]);
+  } else if constexpr (Upwind < 0) {
+    return (p[s] - 0.5 * slope[ss]) - (p[0] - 0.5 * slope[0]);
+  } else {
+    return 0.0;
   }
-  const double right = p[s] - 0.5 * limited_slope(p + s, s);
-  const double left = p[0] - 0.5 * limited_slope(p, s);
-  return v * (right - left) / h;
+}
+
+/// The same with the two slopes it needs computed on the spot.
+template <int Upwind>
+inline double nnd_difference(const double* p, std::ptrdiff_t s) {
+  double slope[3] = {0.0, limited_slope(p, s), 0.0};
+  if constexpr (Upwind > 0) slope[0] = limited_slope(p - s, s);
+  if constexpr (Upwind < 0) slope[2] = limited_slope(p + s, s);
+  return nnd_difference<Upwind>(p, s, slope + 1, 1);
 }
 
 }  // namespace shockfield::dbm

@@ -1,11 +1,10 @@
 #include "shockfield/dbm/simulation.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "shockfield/core/error.hpp"
-#include "shockfield/dbm/convection.hpp"
 
 namespace shockfield::dbm {
 namespace {
@@ -38,8 +37,7 @@ Simulation::Simulation(VelocityModel model, const Lattice& lattice, const Bounda
         "larger tau",
         settings.dt / settings.tau, BgkSettings::max_dt_over_tau,
         BgkSettings::max_dt_over_tau * settings.tau));
-  const double courant =
-      model_.max_speed() * settings.dt / std::min(lattice.dx, lattice.dy);
+  const double courant = model_.max_speed() * settings.dt / std::min(lattice.dx, lattice.dy);
   if (courant > BgkSettings::max_courant)
     throw InputError(fmt::format(
         "Courant number max|v| dt/dx = {:.3g} > {} (max|v| = {:.4g}): the convection is "
@@ -56,7 +54,7 @@ Simulation::Simulation(VelocityModel model, const Lattice& lattice, const Bounda
   const std::size_t n = lattice_.cells() * static_cast<std::size_t>(model_.size());
   f_.assign(n, 0.0);
   f1_.assign(n, 0.0);
-  rhs_.assign(n, 0.0);
+  work_.assign(n, 0.0);
 }
 
 void Simulation::initialize(const std::function<Macro(double, double)>& state) {
@@ -91,62 +89,48 @@ void Simulation::spectral_convection(const std::vector<double>& f) {
   }
 }
 
-void Simulation::rhs(std::vector<double>& f, std::vector<double>& out) {
+void Simulation::stage(std::vector<double>& f, const RowOutput& output) {
   ghosts_.fill(f);
   if (spectral_) spectral_convection(f);
-  const std::size_t N = lattice_.cells();
-  const int Q = model_.size();
-  const double inv_tau = 1.0 / settings_.tau;
-  const auto sx = static_cast<std::ptrdiff_t>(1);
-  const auto sy = static_cast<std::ptrdiff_t>(lattice_.stride());
 #pragma omp parallel
   {
-    std::vector<double> eq(Q);
+    BgkRow row(model_, inversion_, lattice_, b_, settings_.tau);
 #pragma omp for schedule(static)
-    for (int j = 0; j < lattice_.ny; ++j) {
-      for (int i = 0; i < lattice_.nx; ++i) {
-        const std::size_t c = lattice_.at(i, j);
-        const Macro m = macro_of(model_, f.data() + c, N, b_);
-        inversion_.equilibrium(m.rho, m.ux, m.uy, m.T, b_, eq.data());
-        for (int k = 0; k < Q; ++k) {
-          const double* p = f.data() + k * N + c;
-          const double convection =
-              spectral_ ? convection_[k * spectral_->size() + i +
-                                      static_cast<std::size_t>(lattice_.nx) * j]
-                        : nnd_derivative(p, sx, model_.vx[k], lattice_.dx) +
-                              nnd_derivative(p, sy, model_.vy[k], lattice_.dy);
-          out[k * N + c] = -convection - (p[0] - eq[k]) * inv_tau;
-        }
-      }
-    }
+    for (int j = 0; j < lattice_.ny; ++j)
+      row.rhs(f.data(), j, spectral_ ? convection_.data() : nullptr, output);
   }
-  if (source_) source_(f, out);
 }
 
 void Simulation::step() {
   // Third-order TVD Runge–Kutta (Shu & Osher): f1 = f + Δt L(f); f2 = ¾f + ¼(f1 + Δt L(f1));
-  // f ← ⅓f + ⅔(f2 + Δt L(f2)). f1_ holds f1 then f2.
-  const std::size_t N = lattice_.cells();
-  const int Q = model_.size();
+  // f ← ⅓f + ⅔(f2 + Δt L(f2)).
   const double dt = settings_.dt;
-  auto combine = [&](double a, const std::vector<double>& base, std::vector<double>& stage) {
+  if (!source_) {
+    // Each stage is completed row by row as L is computed: f1 in f1_, f2 in work_, f in f1_.
+    stage(f_, {f1_.data(), f_.data(), 0.0, dt});
+    stage(f1_, {work_.data(), f_.data(), 0.75, dt});
+    stage(work_, {f1_.data(), f_.data(), 1.0 / 3.0, dt});
+  } else {
+    // A source needs the whole L(f) first: L in work_, then the stage update.
+    const std::size_t N = lattice_.cells();
+    const int Q = model_.size();
+    auto combine = [&](double a, std::vector<double>& in, std::vector<double>& out) {
+      stage(in, {work_.data()});
+      source_(in, work_);
 #pragma omp parallel for schedule(static)
-    for (int j = 0; j < lattice_.ny; ++j)
-      for (int k = 0; k < Q; ++k) {
-        const std::size_t row = k * N + lattice_.at(0, j);
-        for (int i = 0; i < lattice_.nx; ++i) {
-          const std::size_t c = row + i;
-          stage[c] = a * base[c] + (1.0 - a) * (stage[c] + dt * rhs_[c]);
+      for (int j = 0; j < lattice_.ny; ++j)
+        for (int k = 0; k < Q; ++k) {
+          const std::size_t row = k * N + lattice_.at(0, j);
+          for (int i = 0; i < lattice_.nx; ++i) {
+            const std::size_t c = row + i;
+            out[c] = a * f_[c] + (1.0 - a) * (in[c] + dt * work_[c]);
+          }
         }
-      }
-  };
-  rhs(f_, rhs_);
-  f1_ = f_;
-  combine(0.0, f_, f1_);
-  rhs(f1_, rhs_);
-  combine(0.75, f_, f1_);
-  rhs(f1_, rhs_);
-  combine(1.0 / 3.0, f_, f1_);
+    };
+    combine(0.0, f_, f1_);
+    combine(0.75, f1_, f1_);
+    combine(1.0 / 3.0, f1_, f1_);
+  }
   std::swap(f_, f1_);
   time_ += dt;
   ++steps_;

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "shockfield/dbm/bgk_row.hpp"
 #include "shockfield/dbm/boundary.hpp"
 #include "shockfield/dbm/lattice.hpp"
 #include "shockfield/dbm/spectral.hpp"
@@ -18,9 +19,9 @@
 namespace shockfield::dbm {
 
 struct BgkSettings {
-  double gamma = 1.4;  // specific-heat ratio γ = (b+2)/b
-  double tau = 1e-3;   // relaxation time
-  double dt = 1e-4;    // time step
+  double gamma = 1.4;                // specific-heat ratio γ = (b+2)/b
+  double tau = 1e-3;                 // relaxation time
+  double dt = 1e-4;                  // time step
   bool spectral_convection = false;  // v·∇f by FFT (needs periodic boundaries on all sides)
   /// Largest accepted Courant number max|v|·Δt/Δx of the NND + RK3 scheme.
   static constexpr double max_courant = 1.0;
@@ -65,7 +66,8 @@ class Simulation {
   std::array<double, 4> totals() const;
 
  private:
-  void rhs(std::vector<double>& f, std::vector<double>& out);
+  /// Fills the ghosts of f and writes L(f) of the BGK model (without the source) to output.
+  void stage(std::vector<double>& f, const RowOutput& output);
   /// v_k·∇f_k of every velocity by FFT into convection_ (interior cells, i + nx·j per k).
   void spectral_convection(const std::vector<double>& f);
 
@@ -78,7 +80,7 @@ class Simulation {
   Source source_;
   std::unique_ptr<PeriodicSpectral> spectral_;
   std::vector<double> convection_;
-  std::vector<double> f_, f1_, rhs_;
+  std::vector<double> f_, f1_, work_;  // work_: the second stage, or L(f) with a source
   double time_ = 0.0;
   long long steps_ = 0;
 };

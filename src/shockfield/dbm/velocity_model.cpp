@@ -1,17 +1,51 @@
 #include "shockfield/dbm/velocity_model.hpp"
 
+#include <fmt/format.h>
+
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::dbm {
 
 using Moments = Eigen::Matrix<double, kMoments, 1>;
+using Matrix = Eigen::Matrix<double, kMoments, kMoments>;
+
+namespace {
+
+/// R of the factored C⁻¹ (see MomentInversion): when each group of four consecutive velocities
+/// holds the rotations by 0, 90, 180, 270° of its first one (same η), row k = 4g + r holds the
+/// weights (1, ê_r,x, ê_r,y, (−1)^r) of the modes of group g; otherwise the identity.
+Matrix rotation_group_modes(const VelocityModel& model) {
+  Matrix R = Matrix::Zero();
+  for (int g = 0; g < kMoments / 4; ++g) {
+    const int k0 = 4 * g;
+    const double speed = std::hypot(model.vx[k0], model.vy[k0]);
+    for (int r = 0; r < 4; ++r) {
+      const int k = k0 + r;
+      // Rotating (vx, vy) by r·90°: (vx, vy) → (−vy, vx) applied r times.
+      double ex = model.vx[k0], ey = model.vy[k0];
+      for (int q = 0; q < r; ++q) {
+        const double x = ex;
+        ex = -ey, ey = x;
+      }
+      const bool rotated = speed > 0.0 && std::abs(model.vx[k] - ex) < 1e-12 * speed &&
+                           std::abs(model.vy[k] - ey) < 1e-12 * speed &&
+                           model.eta[k] == model.eta[k0];
+      if (!rotated) return Matrix::Identity();
+      R(k, k0) = 1.0;
+      R(k, k0 + 1) = model.vx[k] / speed;
+      R(k, k0 + 2) = model.vy[k] / speed;
+      R(k, k0 + 3) = r % 2 == 0 ? 1.0 : -1.0;
+    }
+  }
+  return R;
+}
+
+}  // namespace
 
 double VelocityModel::max_speed() const {
   double m = 0.0;
@@ -60,29 +94,19 @@ VelocityModel d2v16(const std::array<double, 4>& speeds, double eta0) {
 Moments moment_row(double vx, double vy, double eta) {
   const double e = 0.5 * (vx * vx + vy * vy + eta * eta);  // (v² + η²)/2
   Moments r;
-  r << 1.0,                                               // eq. 20
-      vx, vy,                                             // eq. 21
-      e,                                                  // eq. 22
-      vx * vx, vx * vy, vy * vy,                          // eq. 23
+  r << 1.0,                                                    // eq. 20
+      vx, vy,                                                  // eq. 21
+      e,                                                       // eq. 22
+      vx * vx, vx * vy, vy * vy,                               // eq. 23
       vx * vx * vx, vx * vx * vy, vx * vy * vy, vy * vy * vy,  // eq. 24
-      e * vx, e * vy,                                     // eq. 25
-      e * vx * vx, e * vx * vy, e * vy * vy;              // eq. 26
+      e * vx, e * vy,                                          // eq. 25
+      e * vx * vx, e * vx * vy, e * vy * vy;                   // eq. 26
   return r;
 }
 
 Moments equilibrium_moments(double rho, double ux, double uy, double T, double b) {
-  const double u2 = ux * ux + uy * uy;
-  const double h = 0.5 * ((b + 2.0) * T + u2);  // M3,1 / (ρu)
-  const double g = 0.5 * ((b + 4.0) * T + u2);  // uu coefficient of M4,2 / ρ
   Moments m;
-  m << rho,                                                  // eq. 20
-      rho * ux, rho * uy,                                    // eq. 21
-      0.5 * rho * (b * T + u2),                              // eq. 22
-      rho * (T + ux * ux), rho * ux * uy, rho * (T + uy * uy),  // eq. 23
-      rho * (3 * T * ux + ux * ux * ux), rho * (T * uy + ux * ux * uy),
-      rho * (T * ux + ux * uy * uy), rho * (3 * T * uy + uy * uy * uy),  // eq. 24
-      rho * ux * h, rho * uy * h,                                        // eq. 25
-      rho * (h * T + g * ux * ux), rho * g * ux * uy, rho * (h * T + g * uy * uy);  // eq. 26
+  put_equilibrium_moments(rho, ux, uy, T, b, [&](int q, double value) { m(q) = value; });
   return m;
 }
 
@@ -96,12 +120,7 @@ Macro macro_of(const VelocityModel& model, const double* f, std::size_t stride, 
     e += 0.5 * fk *
          (model.vx[k] * model.vx[k] + model.vy[k] * model.vy[k] + model.eta[k] * model.eta[k]);
   }
-  Macro m;
-  m.rho = rho;
-  m.ux = jx / rho;
-  m.uy = jy / rho;
-  m.T = (2.0 * e / rho - m.ux * m.ux - m.uy * m.uy) / b;
-  return m;
+  return macro_from_sums(rho, jx, jy, e, b);
 }
 
 MomentInversion::MomentInversion(const VelocityModel& model) {
@@ -110,32 +129,73 @@ MomentInversion::MomentInversion(const VelocityModel& model) {
         "velocity model {} has {} velocities; the seven moment relations (seed eqs. 20-26) fix "
         "{} moment components, so f^eq = C^-1 M^eq needs exactly {} velocities",
         model.name, model.size(), kMoments, kMoments));
-  Eigen::Matrix<double, kMoments, kMoments> C;
+  Matrix C;
   for (int k = 0; k < kMoments; ++k) C.col(k) = moment_row(model.vx[k], model.vy[k], model.eta[k]);
-  const Eigen::FullPivLU<Eigen::Matrix<double, kMoments, kMoments>> lu(C);
+  const Eigen::FullPivLU<Matrix> lu(C);
   // 1-norm condition number ‖C‖₁‖C⁻¹‖₁ (infinite when C is singular).
-  condition_ = lu.isInvertible()
-                   ? C.cwiseAbs().colwise().sum().maxCoeff() *
-                         lu.inverse().cwiseAbs().colwise().sum().maxCoeff()
-                   : INFINITY;
+  condition_ = lu.isInvertible() ? C.cwiseAbs().colwise().sum().maxCoeff() *
+                                       lu.inverse().cwiseAbs().colwise().sum().maxCoeff()
+                                 : INFINITY;
   if (!(condition_ < 1e12))
     throw InputError(fmt::format(
         "velocity model {} cannot satisfy the seven moment relations (seed eqs. 20-26): its "
         "16x16 moment matrix C is singular (condition number {:.3g}); choose distinct speeds "
         "and a non-zero eta0",
         model.name, condition_));
-  inverse_ = lu.inverse();
+  const Matrix inverse = lu.inverse();
+  const Matrix R = rotation_group_modes(model);
+  const Matrix S = R.fullPivLu().solve(inverse);
+  // Entries zero by symmetry come out at round-off; keep the rest and check the product.
+  const double cutoff = 1e-13 * S.cwiseAbs().maxCoeff();
+  Matrix kept = Matrix::Zero();
+  for (int row = 0; row < kMoments; ++row)
+    for (int m = 0; m < kMoments; ++m)
+      if (std::abs(S(row, m)) > cutoff) {
+        modes_.push_back({row, m, S(row, m)});
+        kept(row, m) = S(row, m);
+      }
+  for (int k = 0; k < kMoments; ++k)
+    for (int q = 0; q < kMoments; ++q)
+      if (R(k, q) != 0.0) rebuild_.push_back({k, q, R(k, q)});
+  const double error = (R * kept - inverse).cwiseAbs().maxCoeff() / inverse.cwiseAbs().maxCoeff();
+  if (!(error < 1e-12))
+    throw RunError(
+        fmt::format("velocity model {}: factored C^-1 is off by {:.3g}", model.name, error));
+}
+
+void MomentInversion::apply(const std::vector<Term>& terms, const double* in, int n, double* out) {
+  std::fill(out, out + static_cast<std::size_t>(kMoments) * n, 0.0);
+  for (const Term& t : terms) {
+    double* o = out + static_cast<std::size_t>(t.row) * n;
+    const double* x = in + static_cast<std::size_t>(t.column) * n;
+    const double w = t.weight;
+    for (int i = 0; i < n; ++i) o[i] += w * x[i];
+  }
+}
+
+void MomentInversion::equilibria(const double* rho, const double* ux, const double* uy,
+                                 const double* T, int n, double b, double* out,
+                                 double* work) const {
+  double* moments = work;
+  double* modes = work + static_cast<std::size_t>(kMoments) * n;
+#pragma omp simd
+  for (int i = 0; i < n; ++i)
+    put_equilibrium_moments(rho[i], ux[i], uy[i], T[i], b,
+                            [&](int m, double value) { moments[m * n + i] = value; });
+  apply(modes_, moments, n, modes);
+  apply(rebuild_, modes, n, out);
 }
 
 void MomentInversion::equilibrium(double rho, double ux, double uy, double T, double b,
                                   double* out) const {
-  Eigen::Map<Moments> result(out);
-  result.noalias() = inverse_ * equilibrium_moments(rho, ux, uy, T, b);
+  double work[2 * kMoments];
+  equilibria(&rho, &ux, &uy, &T, 1, b, out, work);
 }
 
 void MomentInversion::distribution(const Moments& moments, double* out) const {
-  Eigen::Map<Moments> result(out);
-  result.noalias() = inverse_ * moments;
+  double modes[kMoments];
+  apply(modes_, moments.data(), 1, modes);
+  apply(rebuild_, modes, 1, out);
 }
 
 }  // namespace shockfield::dbm

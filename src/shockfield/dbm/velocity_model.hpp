@@ -4,12 +4,11 @@
 // specific-heat ratio γ = (b+2)/b, b = 2 + I extra degrees of freedom). f^eq is obtained from the
 // seven kinetic moment relations (eqs. 20–26) as f^eq = C⁻¹·M^eq; the model is usable only when
 // the 16×16 moment matrix C is invertible, which the constructor of MomentInversion checks.
+#include <Eigen/Core>
 #include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace shockfield::dbm {
 
@@ -42,26 +41,71 @@ Eigen::Matrix<double, kMoments, 1> moment_row(double vx, double vy, double eta);
 
 /// M^eq of eqs. 20–26 for b = 2/(γ−1) degrees of freedom (eq. 22: E = ρ(bT + u²)/2, eq. 25:
 /// ρu((b+2)T + u²)/2, eq. 26: ρ[((b+2)T + u²)T I + ((b+4)T + u²) uu]/2; b = 2 gives the seed's
-/// forms exactly).
+/// forms exactly), handed to put(m, value) for m = 0..15 in the order of moment_row().
+template <class Put>
+inline void put_equilibrium_moments(double rho, double ux, double uy, double T, double b,
+                                    Put&& put) {
+  const double u2 = ux * ux + uy * uy;
+  const double h = 0.5 * ((b + 2.0) * T + u2);  // M3,1 / (ρu)
+  const double g = 0.5 * ((b + 4.0) * T + u2);  // uu coefficient of M4,2 / ρ
+  put(0, rho);                                  // eq. 20
+  put(1, rho * ux), put(2, rho * uy);           // eq. 21
+  put(3, 0.5 * rho * (b * T + u2));             // eq. 22
+  put(4, rho * (T + ux * ux)), put(5, rho * ux * uy), put(6, rho * (T + uy * uy));   // eq. 23
+  put(7, rho * (3 * T * ux + ux * ux * ux)), put(8, rho * (T * uy + ux * ux * uy));  // eq. 24
+  put(9, rho * (T * ux + ux * uy * uy)), put(10, rho * (3 * T * uy + uy * uy * uy));
+  put(11, rho * ux * h), put(12, rho * uy * h);                      // eq. 25
+  put(13, rho * (h * T + g * ux * ux)), put(14, rho * g * ux * uy);  // eq. 26
+  put(15, rho * (h * T + g * uy * uy));
+}
+
 Eigen::Matrix<double, kMoments, 1> equilibrium_moments(double rho, double ux, double uy, double T,
                                                        double b);
+
+/// ρ, u, T from the sums Σf, Σf v_x, Σf v_y and Σf (v² + η²)/2 of one cell (eqs. 20–22).
+inline Macro macro_from_sums(double rho, double jx, double jy, double e, double b) {
+  Macro m;
+  m.rho = rho;
+  m.ux = jx / rho;
+  m.uy = jy / rho;
+  m.T = (2.0 * e / rho - m.ux * m.ux - m.uy * m.uy) / b;
+  return m;
+}
 
 /// ρ, u, T of one cell from f (eqs. 20–22 with f for f^eq; f_k at f[k·stride]).
 Macro macro_of(const VelocityModel& model, const double* f, std::size_t stride, double b);
 
 /// C⁻¹ of a velocity model, checked: InputError when the model has Q ≠ 16 velocities or C is
 /// singular / too ill-conditioned to satisfy the moment relations.
+///
+/// C⁻¹ is applied in factored form C⁻¹ = R·S. When the velocities come in groups of four related
+/// by 90° rotations (D2V16), f within a group is a discrete Fourier series f_r = a + b·ê_r +
+/// (−1)^r d (ê_r the unit vector of velocity r, R holds these weights) and S maps the moments to
+/// the modes a, b, d of each group; by symmetry each mode depends on a few moments only, so
+/// S·M costs 61 multiply-adds instead of 256. Other models use R = I, S = C⁻¹.
 class MomentInversion {
  public:
   explicit MomentInversion(const VelocityModel& model);
   /// f^eq_k for k = 0..Q−1 into out (stride 1).
   void equilibrium(double rho, double ux, double uy, double T, double b, double* out) const;
+  /// f^eq of n cells: out[k·n + i] from rho[i], ux[i], uy[i], T[i]; work holds 2·16·n doubles.
+  /// Loops run over the cells, so they vectorise.
+  void equilibria(const double* rho, const double* ux, const double* uy, const double* T, int n,
+                  double b, double* out, double* work) const;
   /// The distribution with the given moments (in the order of equilibrium_moments()): C⁻¹·m.
   void distribution(const Eigen::Matrix<double, kMoments, 1>& moments, double* out) const;
   double condition_number() const { return condition_; }
 
  private:
-  Eigen::Matrix<double, kMoments, kMoments, Eigen::RowMajor> inverse_;
+  struct Term {
+    int row, column;
+    double weight;
+  };
+  /// out_row[i] = Σ weight·in_column[i] over terms sorted by row (arrays of n, row-major).
+  static void apply(const std::vector<Term>& terms, const double* in, int n, double* out);
+
+  std::vector<Term> modes_;    // nonzeros of S (moment → group mode)
+  std::vector<Term> rebuild_;  // nonzeros of R (group mode → f_k)
   double condition_ = 0.0;
 };
 
