@@ -13,6 +13,17 @@ struct IgnitionSpec {
   double width = 0.0;  ///< then unburnt gas (λ = 1) at the von Neumann state on [x, x + width)
 };
 
+/// The [reaction] table of a case file (reaction_case.hpp).
+struct ReactionSpec {
+  RateLaw law;
+  IgnitionSpec ignition;
+  double inflow_lambda = 1.0;  ///< λ of gas entering through inflow sides
+  GasState fresh;              ///< the gas ahead of the detonation ([initial] right/uniform state)
+  ChapmanJouguet theory;       ///< CJ speed and states for `fresh`, γ and Q
+  /// p at which the front is tracked: halfway between the fresh and the CJ pressure.
+  double front_pressure() const { return 0.5 * (fresh.p + theory.cj.p); }
+};
+
 /// f = f^eq and λ of the ZND-like start: CJ state (burnt) | von Neumann state (fresh) | `fresh`
 /// (λ = 1), with the states of chapman_jouguet(fresh, γ, Q). `rest(x, y)` gives the state of the
 /// cells beyond the ignition region (the case's [initial]).
