@@ -1,6 +1,9 @@
 #include "shockfield/dbm/detonation.hpp"
 
+#include <cmath>
 #include <stdexcept>
+
+#include "shockfield/dbm/tne.hpp"
 
 namespace shockfield::dbm {
 
@@ -41,6 +44,48 @@ double fitted_speed(const std::vector<double>& t, const std::vector<double>& x) 
     st += t[k], sx += x[k], stt += t[k] * t[k], stx += t[k] * x[k];
   }
   return (n * stx - st * sx) / (n * stt - st * st);
+}
+
+DetonationTubeResult run_detonation_tube(const DetonationTubeSetup& d) {
+  const VelocityModel model = d2v16({1.0, 2.0, 3.0, 4.0}, 2.0);
+  Lattice l;
+  l.nx = static_cast<int>(std::lround(d.length / d.dx));
+  l.dx = l.dy = d.dx;
+  DetonationTubeResult r;
+  r.theory = chapman_jouguet(d.fresh, d.gamma, d.law.heat_release);
+  const GasState& vn = r.theory.von_neumann;
+  Boundaries bc;
+  bc.side[0].kind = d.piston ? BoundaryKind::inflow : BoundaryKind::reflecting;
+  bc.side[0].state = {vn.rho, vn.u, 0.0, vn.p / vn.rho};
+  bc.side[1].kind = BoundaryKind::outflow;
+  BgkSettings s;
+  s.gamma = d.gamma, s.dt = 0.1 * d.dx, s.tau = d.tau;  // Courant 0.4 with max|v| = 4
+  Simulation sim(model, l, bc, s);
+  ReactiveFlow flow(sim, bc, d.law);
+  const Macro fresh{d.fresh.rho, d.fresh.u, 0.0, d.fresh.p / d.fresh.rho};
+  initialize_detonation(sim, flow, {d.piston ? 0.0 : 0.5, d.ignition_width}, r.theory,
+                        [&](double, double) { return fresh; });
+  const double threshold = 0.5 * (d.fresh.p + r.theory.cj.p);
+  std::vector<double> t, front;
+  const long long steps = std::llround(d.t_end / s.dt);
+  for (long long n = 1; n <= steps; ++n) {
+    sim.step();
+    if (n % 20 == 0 && sim.time() >= 0.5 * d.t_end) {
+      t.push_back(sim.time());
+      front.push_back(pressure_front(sim, 0, threshold));
+    }
+  }
+  sim.check_state();
+  r.speed = fitted_speed(t, front);
+  const TneFields tne = tne_measures(sim);
+  for (int i = 0; i < l.nx; ++i) {
+    const Macro m = sim.macro(i, 0);
+    r.x.push_back(l.x(i));
+    r.p.push_back(m.rho * m.T);
+    r.lambda.push_back(flow.lambda(i, 0));
+    r.d2xx.push_back(tne.central[0][i]);
+  }
+  return r;
 }
 
 }  // namespace shockfield::dbm

@@ -37,4 +37,25 @@ double pressure_front(const Simulation& sim, int row, double threshold);
 /// Least-squares slope of x(t): the measured front speed.
 double fitted_speed(const std::vector<double>& t, const std::vector<double>& x);
 
+/// A planar detonation tube on nx × 1 cells (D2V16 speeds 1, 2, 3, 4, η0 = 2): closed
+/// (reflecting) end at x = 0, outflow at x = length, ZND-like start at x = 0.5 — or, with
+/// `piston`, an inert control: the whole [0, ignition_width) at the von Neumann state and
+/// von Neumann gas flowing in at x = 0 (a steady shock at D_CJ, uniform behind).
+struct DetonationTubeSetup {
+  GasState fresh{1.0, 0.0, 0.6};
+  double gamma = 1.4;
+  RateLaw law;
+  double length = 6.0, dx = 0.01, tau = 2e-3, t_end = 2.0;
+  double ignition_width = 0.1;
+  bool piston = false;
+};
+
+struct DetonationTubeResult {
+  double speed = 0.0;  ///< fitted front speed over the second half of the run
+  ChapmanJouguet theory;
+  std::vector<double> x, p, lambda, d2xx;  ///< final line profile (d2xx = Δ*_2xx)
+};
+
+DetonationTubeResult run_detonation_tube(const DetonationTubeSetup& setup);
+
 }  // namespace shockfield::dbm

@@ -11,7 +11,6 @@
 #include <cstdio>
 
 #include "shockfield/dbm/detonation.hpp"
-#include "shockfield/dbm/tne.hpp"
 
 using namespace shockfield;
 using namespace shockfield::dbm;
@@ -21,56 +20,13 @@ namespace {
 constexpr double kGamma = 1.4, kP0 = 0.6, kQ = 0.6;
 const GasState kFresh{1.0, 0.0, kP0};
 
-struct Run {
-  double rate, length, t_end, ignition_width;
-  bool piston = false;  // inert control: von Neumann gas fed in from x = 0 (a steady shock)
-  double dx = 0.01, tau = 2e-3;
-};
-
-struct Outcome {
-  double speed;  // fitted over the second half of the run
-  std::vector<double> x, p, lambda, d2xx;
-};
-
-Outcome run(const Run& r) {
-  const VelocityModel model = d2v16({1.0, 2.0, 3.0, 4.0}, 2.0);
-  Lattice l;
-  l.nx = static_cast<int>(std::lround(r.length / r.dx));
-  l.dx = l.dy = r.dx;
-  const ChapmanJouguet cj = chapman_jouguet(kFresh, kGamma, kQ);
-  const GasState& vn = cj.von_neumann;
-  Boundaries bc;
-  bc.side[0].kind = r.piston ? BoundaryKind::inflow : BoundaryKind::reflecting;  // closed end
-  bc.side[0].state = {vn.rho, vn.u, 0.0, vn.p / vn.rho};
-  bc.side[1].kind = BoundaryKind::outflow;
-  BgkSettings s;
-  s.gamma = kGamma, s.dt = 0.1 * r.dx, s.tau = r.tau;
-  Simulation sim(model, l, bc, s);
-  RateLaw law;
-  law.heat_release = kQ, law.rate = r.rate, law.ignition_temperature = 0.7;
-  ReactiveFlow flow(sim, bc, law);
-  initialize_detonation(sim, flow, {r.piston ? 0.0 : 0.5, r.ignition_width}, cj,
-                        [](double, double) { return Macro{1.0, 0.0, 0.0, kP0}; });
-  std::vector<double> t, front;
-  const long long steps = std::llround(r.t_end / s.dt);
-  for (long long n = 1; n <= steps; ++n) {
-    sim.step();
-    if (n % 20 == 0 && sim.time() >= 0.5 * r.t_end) {
-      t.push_back(sim.time());
-      front.push_back(pressure_front(sim, 0, 0.5 * (kP0 + cj.cj.p)));
-    }
-  }
-  sim.check_state();
-  Outcome o{fitted_speed(t, front), {}, {}, {}, {}};
-  const TneFields tne = tne_measures(sim);
-  for (int i = 0; i < l.nx; ++i) {
-    const Macro m = sim.macro(i, 0);
-    o.x.push_back(l.x(i));
-    o.p.push_back(m.rho * m.T);
-    o.lambda.push_back(flow.lambda(i, 0));
-    o.d2xx.push_back(tne.central[0][i]);
-  }
-  return o;
+DetonationTubeResult run(double rate, double length, double t_end, double ignition_width,
+                         bool piston = false) {
+  DetonationTubeSetup d;
+  d.fresh = kFresh, d.gamma = kGamma;
+  d.law.heat_release = kQ, d.law.rate = rate, d.law.ignition_temperature = 0.7;
+  d.length = length, d.t_end = t_end, d.ignition_width = ignition_width, d.piston = piston;
+  return run_detonation_tube(d);
 }
 
 double mean(const std::vector<double>& v, std::size_t from, std::size_t to) {
@@ -101,7 +57,7 @@ TEST(DbmDetonation, ChapmanJouguetAndVonNeumannStatesSatisfyRankineHugoniot) {
 
 TEST(DbmDetonation, SpeedWithinTwoPercentOfChapmanJouguet) {
   // Fast reaction (k = 20, zone ≈ 4 cells): the front settles to D_CJ within the run.
-  const Outcome o = run({20.0, 6.0, 2.2, 0.1});
+  const DetonationTubeResult o = run(20.0, 6.0, 2.2, 0.1);
   const double D_cj = chapman_jouguet(kFresh, kGamma, kQ).speed;
   std::printf("measured D = %.5f, D_CJ = %.5f (%.2f%%)\n", o.speed, D_cj, 100 * (o.speed / D_cj - 1));
   EXPECT_NEAR(o.speed, D_cj, 0.02 * D_cj);
@@ -111,10 +67,10 @@ TEST(DbmDetonation, TneOppositeSignsAroundVonNeumannPeak) {
   // Slow reaction (k = 1, zone ≈ 0.7 = 70 cells) started from a ZND-like layer: a resolved
   // reaction zone behind the pressure peak; and, as control, the inert shock at D_CJ (k = 0,
   // driven by von Neumann gas flowing in), uniform behind.
-  const Outcome det = run({1.0, 5.0, 2.0, 0.7});
-  const Outcome inert = run({0.0, 4.0, 1.0, 0.5, true});
+  const DetonationTubeResult det = run(1.0, 5.0, 2.0, 0.7);
+  const DetonationTubeResult inert = run(0.0, 4.0, 1.0, 0.5, true);
   double det_behind = 0.0;
-  for (const Outcome* o : {&det, &inert}) {
+  for (const DetonationTubeResult* o : {&det, &inert}) {
     const std::size_t peak = std::max_element(o->p.begin(), o->p.end()) - o->p.begin();
     std::size_t front_end = peak;  // the shock: p above 5% of the jump, ahead of the peak
     while (front_end + 1 < o->p.size() && o->p[front_end + 1] > kP0 + 0.05 * (o->p[peak] - kP0)) ++front_end;
