@@ -45,12 +45,7 @@ awk -F, 'NR == 2 {e0 = $10; c0 = $9; x0 = $11} END {
   if ($11 - x0 < 0.5) { print "front did not advance: " x0 " -> " $11; exit 1 } }' "$WORK/det/series.csv" ||
   fail "reactive series"
 
-set +e
-"$SF" run "$WORK/det.toml" --output "$WORK/split" -q --stop-after 70 > /dev/null 2> "$WORK/stop.txt"
-code=$?
-set -e
-[ $code -eq 130 ] || fail "stopped run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
-"$SF" run "$WORK/det.toml" --output "$WORK/split" -q --resume > /dev/null
+stop_then_resume "$WORK/det.toml" "$WORK/split" 70
 for f in series.csv profiles/profile_1.csv profiles/profile_2.csv; do
   cmp "$WORK/det/$f" "$WORK/split/$f" || fail "resumed $f differs"
 done

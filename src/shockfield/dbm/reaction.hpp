@@ -14,8 +14,10 @@
 //
 // Rate laws (only where T ≥ T_ign):
 //   Arrhenius:  ω = k λ exp(−E_a/T)
-//   Cochran (as in Lin, Xu et al., the DBM detonation papers; λ_p = 1 − λ the product fraction):
-//               dλ_p/dt = ω1 p^m (1 − λ_p) + ω2 p^n λ_p (1 − λ_p),  i.e. ω = ω1 p^m λ + ω2 p^n λ(1 − λ).
+//   Cochran, a pressure-dependent rate (λ_p = 1 − λ the product fraction):
+//               dλ_p/dt = ω1 p^m (1 − λ_p) + ω2 p^n λ_p (1 − λ_p),  i.e. ω = ω1 p^m λ + ω2 p^n λ(1 − λ);
+//   the pressure-dependent rate of the Xu-group DBM papers (Lin, Xu, Zhang, Li, arXiv:1308.0653),
+//   written from memory: the form is not checked against the paper.
 //
 // φ is advanced with the same third-order Runge–Kutta stages as f: the source installed on the
 // Simulation is called once per stage, in order, with the stage's f (Simulation::step), and keeps
