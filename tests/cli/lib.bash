@@ -27,3 +27,14 @@ expect_error() {
   run_expecting 2 "$@"
   [ ! -e "$WORK/out" ] || fail "a run folder was left behind for: $1"
 }
+# stop_then_resume CASE_FILE RUN_DIR STEPS: runs the case with --stop-after STEPS (exit 130 with a
+# checkpoint expected), then resumes it to the end in the same folder.
+stop_then_resume() {
+  local case_file="$1" out="$2" steps="$3"
+  set +e
+  "$SF" run "$case_file" --output "$out" -q --stop-after "$steps" > /dev/null 2> "$WORK/stop.txt"
+  local code=$?
+  set -e
+  [ $code -eq 130 ] || fail "stopped run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
+  "$SF" run "$case_file" --output "$out" -q --resume > /dev/null
+}

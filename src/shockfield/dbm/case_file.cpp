@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/dbm/reaction_case.hpp"
 
 namespace shockfield::dbm {
 namespace {
@@ -146,6 +147,7 @@ DbmCase read_dbm_case(const Config& root) {
   read_run(root.table("run"), model, c);
   c.output = read_output(root.optional_table("output"), c);
   c.exact_star = exact_star(c.initial, c.bgk.gamma);
+  c.reaction = read_reaction(root, c);
   return c;
 }
 

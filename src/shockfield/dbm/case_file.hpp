@@ -7,6 +7,7 @@
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/dbm/boundary.hpp"
+#include "shockfield/dbm/detonation.hpp"
 #include "shockfield/dbm/lattice.hpp"
 #include "shockfield/dbm/riemann_exact.hpp"
 #include "shockfield/dbm/simulation.hpp"
@@ -39,9 +40,11 @@ struct DbmCase {
   DbmOutputSpec output;
   /// Exact star-region p and u of the Riemann problem (u_y = 0, no vacuum), for [derived].
   std::optional<RiemannStar> exact_star;
+  /// The one-step reactive DBM of [reaction] (reaction_case.hpp), when present.
+  std::optional<ReactionSpec> reaction;
 };
 
-/// Reads [grid], [model], [initial], [boundary], [run] and [output].
+/// Reads [grid], [model], [initial], [boundary], [run], [output] and [reaction].
 DbmCase read_dbm_case(const Config& root);
 
 }  // namespace shockfield::dbm

@@ -12,7 +12,8 @@ constexpr double kFormatVersion = 1;
 
 }  // namespace
 
-void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters) {
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters,
+                      const std::vector<double>* reactant) {
   const std::filesystem::path tmp = file.string() + ".tmp";
   {
     io::Hdf5File h5(tmp, io::Hdf5File::Mode::create);
@@ -24,11 +25,12 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
     h5.set_attribute("fields", static_cast<double>(counters.fields));
     const std::vector<double>& f = sim.f();
     h5.write("f", f, {static_cast<hsize_t>(sim.model().size()), f.size() / static_cast<std::size_t>(sim.model().size())});
+    if (reactant) h5.write("reactant", *reactant, {static_cast<hsize_t>(reactant->size())});
   }
   std::filesystem::rename(tmp, file);
 }
 
-OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
+OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, std::vector<double>* reactant) {
   io::Hdf5File h5(file, io::Hdf5File::Mode::read);
   const std::string name = file.string();
   if (h5.attribute("format_version") != kFormatVersion)
@@ -39,6 +41,15 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
     throw InputError(fmt::format("{}: dataset 'f' has {} values, the case needs {} (a different grid or velocity model)",
                                  name, f.size(), sim.f().size()));
   sim.f() = std::move(f);
+  if (reactant) {
+    if (!h5.has("reactant"))
+      throw InputError(fmt::format("{}: no dataset 'reactant': the checkpoint was written by a case without [reaction]", name));
+    std::vector<double> phi = h5.read_doubles("reactant");
+    if (phi.size() != reactant->size())
+      throw InputError(fmt::format("{}: dataset 'reactant' has {} values, the [reaction] case needs {}", name,
+                                   phi.size(), reactant->size()));
+    *reactant = std::move(phi);
+  }
   sim.restore_clock(h5.attribute("time"), static_cast<long long>(h5.attribute("step")));
   return {static_cast<std::int64_t>(h5.attribute("series")), static_cast<std::int64_t>(h5.attribute("profiles")),
           static_cast<std::int64_t>(h5.attribute("fields"))};

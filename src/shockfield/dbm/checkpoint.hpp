@@ -16,10 +16,13 @@ struct OutputCounters {
   std::int64_t fields = 0;    ///< field frames written
 };
 
-void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters);
+/// `reactant`: the reactant density φ of a reactive case (reaction.hpp), stored beside f.
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters,
+                      const std::vector<double>* reactant = nullptr);
 
-/// Restores f and the clock of `sim` (built from the same case file) and returns the counters.
-/// InputError when the checkpoint does not fit the case.
-OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim);
+/// Restores f and the clock of `sim` (built from the same case file), and φ into `reactant` when
+/// given, and returns the counters. InputError when the checkpoint does not fit the case.
+OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim,
+                               std::vector<double>* reactant = nullptr);
 
 }  // namespace shockfield::dbm

@@ -4,6 +4,8 @@
 #include <omp.h>
 
 #include <cstdio>
+#include <memory>
+#include <optional>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/interrupt.hpp"
@@ -12,6 +14,8 @@
 #include "shockfield/core/run_session.hpp"
 #include "shockfield/dbm/case_file.hpp"
 #include "shockfield/dbm/checkpoint.hpp"
+#include "shockfield/dbm/reaction.hpp"
+#include "shockfield/dbm/reaction_case.hpp"
 #include "shockfield/dbm/tne.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/vtk_xml.hpp"
@@ -41,18 +45,22 @@ void derive(const Config& root, const DbmCase& c, const Simulation& sim) {
     root.derive("exact_rho_star_left", c.exact_star->rho_left);
     root.derive("exact_rho_star_right", c.exact_star->rho_right);
   }
+  if (c.reaction) derive_reaction(root, *c.reaction);
 }
 
 // series.csv (domain means), profiles/ (line profiles along x at row profile_row) and fields/
 // with grid.pvd. A resumed run keeps what was written up to its checkpoint and rewrites the rest.
 class Output {
  public:
-  Output(const fs::path& folder, const DbmOutputSpec& spec, const Simulation* resumed, const OutputCounters& counters)
-      : folder_(folder), row_(spec.profile_row) {
+  /// `reaction`: the reactive DBM of a [reaction] case (extra columns), or null.
+  Output(const fs::path& folder, const DbmOutputSpec& spec, const Simulation* resumed, const OutputCounters& counters,
+         const ReactiveFlow* reaction, const std::optional<ReactionSpec>& spec_reaction)
+      : folder_(folder), row_(spec.profile_row), reaction_(reaction), spec_reaction_(spec_reaction) {
     const double keep_step = resumed ? static_cast<double>(resumed->steps()) : 0.0;
     const double keep_profile = static_cast<double>(counters.profiles) - 1.0;
-    series_ = io::CsvWriter(folder / "series.csv", {"step", "time", "rho", "ux", "uy", "T", "D"},
-                            resumed ? &keep_step : nullptr);
+    std::vector<std::string> series_columns{"step", "time", "rho", "ux", "uy", "T", "D"};
+    if (reaction_) series_columns.insert(series_columns.end(), {"lambda", "chemical_energy", "total_energy", "front_x"});
+    series_ = io::CsvWriter(folder / "series.csv", series_columns, resumed ? &keep_step : nullptr);
     fs::create_directories(folder / "profiles");
     index_ = io::CsvWriter(folder / "profiles" / "index.csv", {"profile", "step", "time"},
                            resumed ? &keep_profile : nullptr);
@@ -72,19 +80,31 @@ class Output {
         rho += m.rho, ux += m.ux, uy += m.uy, T += m.T;
       }
     const double n = static_cast<double>(l.nx) * l.ny;
-    series_.row({static_cast<double>(sim.steps()), sim.time(), rho / n, ux / n, uy / n, T / n,
-                 tne_measures(sim).mean_strength});
+    std::vector<double> row{static_cast<double>(sim.steps()), sim.time(), rho / n, ux / n, uy / n, T / n,
+                            tne_measures(sim).mean_strength};
+    if (reaction_) {  // [reaction]: mean λ, Q·Σφ, E + Q·Σφ and the tracked front (detonation.hpp)
+      double lambda = 0.0;
+      for (int j = 0; j < l.ny; ++j)
+        for (int i = 0; i < l.nx; ++i) lambda += reaction_->lambda(i, j);
+      const double chemical = reaction_->chemical_energy();
+      row.insert(row.end(), {lambda / n, chemical, sim.totals()[3] + chemical,
+                             pressure_front(sim, row_, spec_reaction_->front_pressure())});
+    }
+    series_.row(row);
   }
 
   void write_profile(const Simulation& sim, std::int64_t index) {
     const TneFields tne = tne_measures(sim);
     const Lattice& l = sim.lattice();
-    io::CsvWriter csv(folder_ / "profiles" / fmt::format("profile_{}.csv", index),
-                      {"x", "rho", "ux", "uy", "p", "T", "D2xx", "D31x"});
+    std::vector<std::string> columns{"x", "rho", "ux", "uy", "p", "T", "D2xx", "D31x"};
+    if (reaction_) columns.insert(columns.end(), {"lambda", "omega"});
+    io::CsvWriter csv(folder_ / "profiles" / fmt::format("profile_{}.csv", index), columns);
     for (int i = 0; i < l.nx; ++i) {
       const Macro m = sim.macro(i, row_);
       const std::size_t cell = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * row_;
-      csv.row({l.x(i), m.rho, m.ux, m.uy, m.rho * m.T, m.T, tne.central[kD2xx][cell], tne.central[kD31x][cell]});
+      std::vector<double> row{l.x(i), m.rho, m.ux, m.uy, m.rho * m.T, m.T, tne.central[kD2xx][cell], tne.central[kD31x][cell]};
+      if (reaction_) row.insert(row.end(), {reaction_->lambda(i, row_), reaction_->consumption(i, row_)});
+      csv.row(row);
     }
     index_.row({static_cast<double>(index), static_cast<double>(sim.steps()), sim.time()});
   }
@@ -114,6 +134,8 @@ class Output {
  private:
   fs::path folder_;
   int row_;
+  const ReactiveFlow* reaction_;
+  const std::optional<ReactionSpec>& spec_reaction_;
   io::CsvWriter series_, index_;
   io::PvdSeries grid_pvd_;
 };
@@ -124,6 +146,11 @@ void run_case(const Config& root, const RunOptions& options) {
   const DbmCase c = read_dbm_case(root);
   root.check_unknown_keys();
   Simulation sim(c.model, c.lattice, c.boundaries, c.bgk);
+  // [reaction]: the reactive DBM installs its source on sim (reaction.hpp).
+  std::unique_ptr<ReactiveFlow> reaction =
+      c.reaction ? std::make_unique<ReactiveFlow>(sim, c.boundaries, c.reaction->law, c.reaction->inflow_lambda)
+                 : nullptr;
+  std::vector<double>* reactant = reaction ? &reaction->reactant_density() : nullptr;
   derive(root, c, sim);
   if (options.validate_only) {
     std::printf("%s: valid dbm case (%d x %d cells, %lld steps, dt %.3g)\n", options.case_file.string().c_str(),
@@ -138,13 +165,17 @@ void run_case(const Config& root, const RunOptions& options) {
   if (options.resume) {
     if (!fs::exists(checkpoint))
       throw InputError(fmt::format("--resume: no checkpoint in '{}'", run.folder.string()));
-    counters = read_checkpoint(checkpoint, sim);
+    counters = read_checkpoint(checkpoint, sim, reactant);
     run.log.info("resumed from {} at step {}, t = {}", checkpoint.string(), sim.steps(), sim.time());
   } else {
     const InitialSpec& init = c.initial;
-    sim.initialize([&](double x, double) { return x < init.split ? init.left : init.right; });
+    const auto initial = [&](double x, double) { return x < init.split ? init.left : init.right; };
+    if (reaction)
+      initialize_detonation(sim, *reaction, c.reaction->ignition, c.reaction->theory, initial);
+    else
+      sim.initialize(initial);
   }
-  Output output(run.folder, c.output, options.resume ? &sim : nullptr, counters);
+  Output output(run.folder, c.output, options.resume ? &sim : nullptr, counters, reaction.get(), c.reaction);
 
   // Rows and frames at the first step at or past k·interval.
   const double tol = 1e-9 * c.bgk.dt;
@@ -154,7 +185,7 @@ void run_case(const Config& root, const RunOptions& options) {
     write_due_frames(counters.profiles, c.output.profile_interval, t, [&](auto k) { output.write_profile(sim, k); });
     write_due_frames(counters.fields, c.output.field_interval, t, [&](auto) { output.write_fields(sim); });
   };
-  auto save = [&] { write_checkpoint(checkpoint, sim, counters); };
+  auto save = [&] { write_checkpoint(checkpoint, sim, counters, reactant); };
 
   clear_stop_request();
   install_stop_handlers();
@@ -194,6 +225,9 @@ void run_case(const Config& root, const RunOptions& options) {
   run.log.info("finished: t = {} after {} steps ({:.3g} cell-steps/s); mass {}, momentum ({}, {}), energy {}",
                sim.time(), sim.steps(), progress.rate(sim.steps()) * c.lattice.nx * c.lattice.ny, total[0], total[1],
                total[2], total[3]);
+  if (reaction)
+    run.log.info("chemical energy Q*sum(rho*lambda) {}; energy + chemical energy {}", reaction->chemical_energy(),
+                 total[3] + reaction->chemical_energy());
 }
 
 }  // namespace shockfield::dbm
