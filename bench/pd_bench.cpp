@@ -49,10 +49,12 @@ std::unique_ptr<ForceModel> make_model(const std::string& name, const PointCloud
   if (name == "lps")
     return std::make_unique<LpsForce>(cloud, family, LpsModel{14.9e9, 8.94e9}, Influence(Influence::Kind::inverse),
                                       damage);
-  CrystalMaterial m;  // Table 1 copper, [111] along x
-  m.density = kCopperDensity;
-  m.orientation = materials::rotation_loading_along(Vec3(1, 1, 1));
-  return std::make_unique<CorrespondenceForce<CrystalMaterial>>(cloud, family, std::vector{m}, Influence(),
+  // Table 1 copper, [111] along x
+  const CrystalMaterial m{kCopperDensity,
+                          {materials::CrystalViscoplasticity::ofhc_copper(),
+                           {materials::rotation_loading_along(Vec3(1, 1, 1))}},
+                          0.0};
+  return std::make_unique<CorrespondenceForce<CrystalMaterial>>(cloud, family, std::vector<CrystalMaterial>(1, m), Influence(),
                                                                 CorrespondenceOptions{true, 0.0});
 }
 

@@ -12,6 +12,12 @@
       (Fig. 12); prints each run's HEL (the compression where the slip first exceeds 1e-5,
       scanning from the resting end) and mean slip behind the plastic wave.
 
+  pd_plots.py compression RUN_DIR [--out FILE]
+      a [homogeneous] run (seed 004 Fig. 5): every grain's axial compression against the
+      compressive strain, the band mean ± SD, and the Taylor average (eq. 43); below, the
+      soft-hard spread (max − min over the grains) and the SD against strain; prints the
+      strains where the spread and the SD peak and where the spread first reaches 100 MPa.
+
 Reads profiles/index.csv, profiles/profile_<k>.csv and config.resolved.toml. Uses only numpy
 and matplotlib from Debian (run with /usr/bin/python3).
 """
@@ -108,15 +114,50 @@ def crystal(runs, labels, out):
     fig.savefig(out, dpi=110)
 
 
+def compression(runs, labels, out):
+    run = runs[0]
+    curve = read_csv(os.path.join(run, "stress_strain.csv"))
+    grains = read_csv(os.path.join(run, "grains.csv"))
+    eps = -curve["strain"]
+    sigma = np.array([-v for k, v in grains.items() if k.startswith("grain_")]) / 1e6
+    taylor, sd = -curve["taylor_axial_Pa"] / 1e6, curve["grain_sd_Pa"] / 1e6
+    spread = sigma.max(axis=0) - sigma.min(axis=0)
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 7.5), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    for s in sigma:
+        top.plot(eps, s, color="grey", lw=0.5, alpha=0.6)
+    soft, hard = np.argmin(sigma[:, -1]), np.argmax(sigma[:, -1])
+    top.plot(eps, sigma[soft], color="tab:green", lw=1.2, label="softest grain at the end")
+    top.plot(eps, sigma[hard], color="tab:red", lw=1.2, label="hardest grain at the end")
+    top.fill_between(eps, taylor - sd, taylor + sd, color="tab:blue", alpha=0.2, label="Taylor average ± SD")
+    top.plot(eps, taylor, color="tab:blue", lw=2.2, label=f"Taylor average (eq. 43), {sigma.shape[0]} grains")
+    top.set_ylabel("axial compression (eq. 45) [MPa]")
+    top.legend(fontsize="small", loc="lower right")
+    top.set_title("OFHC copper, Table 1, isochoric compression (eq. 44), thin: each grain", fontsize="small")
+    bottom.plot(eps, spread, color="k", label="spread: hardest − softest grain")
+    bottom.plot(eps, sd, color="tab:blue", label="SD over the grains")
+    bottom.axhline(100.0, color="grey", ls="--", lw=0.8)
+    bottom.set_ylabel("[MPa]")
+    bottom.set_xlabel("compressive true strain  $-\\varepsilon$")
+    bottom.legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(out, dpi=100)
+    first = eps[np.argmax(spread >= 100.0)] if (spread >= 100.0).any() else float("nan")
+    print(f"{run}: Taylor average {taylor[-1]:.1f} MPa at strain {eps[-1]:.3g}; spread reaches 100 MPa at strain "
+          f"{first:.3g}, peaks at {spread.max():.1f} MPa (strain {eps[np.argmax(spread)]:.3g}); SD peaks at "
+          f"{sd.max():.1f} MPa (strain {eps[np.argmax(sd)]:.3g}); at strain 0.01/0.05/0.1: spread "
+          + ", ".join(f"{np.interp(e, eps, spread):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa, Taylor "
+          + ", ".join(f"{np.interp(e, eps, taylor):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["bar", "crystal"])
+    ap.add_argument("kind", choices=["bar", "crystal", "compression"])
     ap.add_argument("runs", nargs="+")
     ap.add_argument("--labels", nargs="*")
     ap.add_argument("--out", default="bar.png")
     a = ap.parse_args()
     labels = a.labels or [os.path.basename(os.path.normpath(r)) for r in a.runs]
-    {"bar": bar, "crystal": crystal}[a.kind](a.runs, labels, a.out)
+    {"bar": bar, "crystal": crystal, "compression": compression}[a.kind](a.runs, labels, a.out)
 
 
 if __name__ == "__main__":

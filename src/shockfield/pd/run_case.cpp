@@ -20,6 +20,7 @@
 #include "shockfield/pd/bond_force.hpp"
 #include "shockfield/pd/case_file.hpp"
 #include "shockfield/pd/checkpoint.hpp"
+#include "shockfield/pd/homogeneous_case.hpp"
 #include "shockfield/pd/run_output.hpp"
 
 namespace shockfield::pd {
@@ -65,7 +66,10 @@ void derive_material(const Config& root, const PdCase& c, const std::vector<Crys
   }
   const CrystalMaterial& m = materials.front();
   root.derive("elastic_wave_speed_m_s", std::sqrt(m.longitudinal_modulus() / m.density));
-  root.derive("schmid_factor", schmid_factor_along_x(m));
+  if (m.aggregate.orientations.size() == 1)
+    root.derive("schmid_factor", schmid_factor_along_x(m));
+  else
+    root.derive("taylor_grains", static_cast<long long>(m.aggregate.orientations.size()));
 }
 
 // The materials of the points (one when all share it) and the grain of each point.
@@ -233,6 +237,7 @@ void run_with(const Config& root, const RunOptions& options, const PdCase& c, co
 }  // namespace
 
 void run_case(const Config& root, const RunOptions& options) {
+  if (root.has("homogeneous")) return run_homogeneous(root, options);
   const PdCase c = read_pd_case(root);
   root.check_unknown_keys();
   const PointCloud cloud = lattice_cloud(c.body.dim, c.body.counts, c.body.spacing);

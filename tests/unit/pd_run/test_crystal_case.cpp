@@ -58,14 +58,14 @@ TEST(PdCrystalCase, GrainsOfEightToTwelvePlanes) {
     if (g + 1 == body.grains) continue;  // the last grain is cut by the body's end
     EXPECT_TRUE(n >= 8 && n <= 12) << "grain " << g << " has " << n << " points";
   }
-  EXPECT_NE(body.materials[0].orientation, body.materials[119].orientation);
+  EXPECT_NE(body.materials[0].aggregate.orientations[0], body.materials[119].aggregate.orientations[0]);
 }
 
 TEST(PdCrystalCase, SchmidFactorsOfHundredAndHundredEleven) {
   CrystalMaterial m;
-  m.orientation = materials::rotation_loading_along(Vec3(1, 0, 0));
+  m.aggregate.orientations = {materials::rotation_loading_along(Vec3(1, 0, 0))};
   EXPECT_NEAR(schmid_factor_along_x(m), 1.0 / std::sqrt(6.0), 1e-12);
-  m.orientation = materials::rotation_loading_along(Vec3(1, 1, 1));
+  m.aggregate.orientations = {materials::rotation_loading_along(Vec3(1, 1, 1))};
   EXPECT_NEAR(schmid_factor_along_x(m), std::sqrt(6.0) / 9.0, 1e-12);
 }
 
