@@ -9,8 +9,8 @@
   pd_plots.py crystal RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
       at the last profile time: axial compression (Fig. 8/10) and accumulated slip (Fig. 11)
       against x of every run on shared axes, grains of a polycrystal as alternating stripes
-      (Fig. 12); prints each run's HEL (the compression where the slip first exceeds 1e-5,
-      scanning from the resting end) and mean slip behind the plastic wave.
+      (Fig. 12); prints each run's HEL (the compression where the slip first exceeds 1e-5, 1e-4
+      and 2% of its plateau, scanning from the resting end) and mean slip behind the plastic wave.
 
   pd_plots.py compression RUN_DIR [--out FILE]
       a [homogeneous] run (seed 004 Fig. 5): every grain's axial compression against the
@@ -94,7 +94,8 @@ def crystal(runs, labels, out):
         middle = 0.5 * (x[0] + x[-1])
         loaded = (x > middle + 0.1 * (x[-1] - middle)) & (x < middle + 0.4 * (x[-1] - middle))
         slip = p["plastic"][loaded].mean()
-        print(f"{label}: HEL {hel(p) / 1e6:.1f} MPa (threshold 1e-5), {hel(p, 1e-4) / 1e6:.1f} MPa (1e-4); "
+        print(f"{label}: HEL {hel(p) / 1e6:.1f} MPa (threshold 1e-5), {hel(p, 1e-4) / 1e6:.1f} MPa (1e-4), "
+              f"{hel(p, 0.02 * slip) / 1e6:.1f} MPa (2% of the plateau slip, an offset yield); "
               f"mean slip behind the plastic wave {slip:.5f} (min {p['plastic'][loaded].min():.5f}, "
               f"max {p['plastic'][loaded].max():.5f}) at {t * 1e9:.0f} ns")
         top.plot(x, -p["sxx_Pa"] / 1e6, label=label)

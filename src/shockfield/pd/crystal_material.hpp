@@ -17,7 +17,8 @@ namespace shockfield::pd {
 
 struct CrystalMaterial {
   double density = 0.0;                        ///< ρ0 [kg/m³]
-  materials::TaylorAggregate aggregate{{}, {Mat3::Identity()}};  ///< Table 1 law and the grains' g
+  materials::TaylorAggregate aggregate{materials::CrystalViscoplasticity::ofhc_copper(),
+                                       {Mat3::Identity()}};  ///< Table 1 law and the grains' g
   double slope = 0.0;                          ///< s for the Riemann impedance (0: acoustic)
 
   using State = materials::TaylorAggregate::State;

@@ -91,3 +91,28 @@ TEST(PdCrystalCase, StoppedAndResumedRunIsBitwiseIdentical) {
   for (const char* f : {"series.csv", "profiles/profile_1.csv", "profiles/profile_2.csv", "profiles/index.csv"})
     EXPECT_EQ(slurp(dir / "straight" / f), slurp(dir / "split" / f)) << f;
 }
+
+// taylor_grains: N_g copies of a direction, or N_g random orientations shared by every point.
+TEST(PdCrystalCase, TaylorGrainsPerPoint) {
+  auto spec_of = [](const std::string& orientation) {
+    std::string text = kCase;
+    const std::string slabs = "orientation = \"random_grains\"\ngrain_planes = [8, 12]\nseed = 5\n";
+    text.replace(text.find(slabs), slabs.size(), orientation);
+    const Config root = Config::parse(text);
+    root.get_choice("method", {"pd"});
+    const PdCase c = read_pd_case(root);
+    root.check_unknown_keys();
+    return std::get<CrystalSpec>(c.material);
+  };
+  const CrystalSpec copies = spec_of("direction = [1.0, 1.0, 1.0]\ntaylor_grains = 3\n");
+  ASSERT_EQ(copies.base.aggregate.orientations.size(), 3u);
+  for (const Mat3& g : copies.base.aggregate.orientations)
+    EXPECT_EQ(g, materials::rotation_loading_along(Vec3(1, 1, 1)));
+  const CrystalSpec random = spec_of("orientation = \"random\"\ntaylor_grains = 4\n");
+  EXPECT_FALSE(random.polycrystal);
+  ASSERT_EQ(random.base.aggregate.orientations.size(), 4u);
+  EXPECT_NE(random.base.aggregate.orientations[0], random.base.aggregate.orientations[1]);
+  const CrystalBody body = crystal_body(random, lattice_cloud(1, {120, 1, 1}, 10e-6));
+  EXPECT_EQ(body.materials.size(), 1u);  // one aggregate shared by every point
+  EXPECT_THROW(spec_of("orientation = \"random_grains\"\ngrain_planes = [8, 12]\ntaylor_grains = 2\n"), InputError);
+}
