@@ -1,7 +1,11 @@
 #include "shockfield/pd/bond_force.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+
+#include "shockfield/core/error.hpp"
 
 namespace shockfield::pd {
 namespace {
@@ -124,6 +128,23 @@ std::vector<double> BondForce<Model>::damage() const {
 template <class Model>
 std::size_t BondForce<Model>::intact_bonds() const {
   return static_cast<std::size_t>(std::count(intact_.begin(), intact_.end(), 1));
+}
+
+template <class Model>
+std::vector<double> BondForce<Model>::saved_state() const {
+  std::vector<double> data(intact_.begin(), intact_.end());
+  data.insert(data.end(), s0_.begin(), s0_.end());
+  return data;
+}
+
+template <class Model>
+void BondForce<Model>::restore_state(const std::vector<double>& data) {
+  if (data.size() != intact_.size() + s0_.size())
+    throw InputError(fmt::format("pd {}: saved state of {} values, expected {} ({} bonds and {} points)", name(),
+                                 data.size(), intact_.size() + s0_.size(), intact_.size(), s0_.size()));
+  const auto split = data.begin() + static_cast<std::ptrdiff_t>(intact_.size());
+  std::transform(data.begin(), split, intact_.begin(), [](double flag) { return flag != 0.0 ? 1 : 0; });
+  std::copy(split, data.end(), s0_.begin());
 }
 
 template <class Model>
