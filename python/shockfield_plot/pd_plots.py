@@ -86,21 +86,45 @@ def hel(p, threshold=1e-5):
     return float("nan")
 
 
+def crossing(x, f, level):
+    """x where f, scanning from the resting end (largest x), first reaches `level` (interpolated)."""
+    for i in range(len(x) - 1, 0, -1):
+        if f[i - 1] >= level > f[i] or f[i] >= level:
+            if f[i] >= level:
+                return x[i]
+            return x[i] + (level - f[i]) * (x[i - 1] - x[i]) / (f[i - 1] - f[i])
+    return x[0]
+
+
+def plastic_front_width(p, hel_stress, plateau):
+    """Distance between 10% and 90% of the plastic jump (HEL to the Hugoniot state) on the
+    right-going wave."""
+    x, s = p["x_m"], -p["sxx_Pa"]
+    jump = plateau - hel_stress
+    return crossing(x, s, hel_stress + 0.1 * jump) - crossing(x, s, hel_stress + 0.9 * jump)
+
+
 def crystal(runs, labels, out):
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 6.5), sharex=True)
+    striped = False
     for run, label in zip(runs, labels):
         t, p = last_profile(run)
         x = p["x_m"] * 1e3
         middle = 0.5 * (x[0] + x[-1])
         loaded = (x > middle + 0.1 * (x[-1] - middle)) & (x < middle + 0.4 * (x[-1] - middle))
         slip = p["plastic"][loaded].mean()
+        offset = hel(p, 0.02 * slip)
+        state = -p["sxx_Pa"][loaded].mean()
         print(f"{label}: HEL {hel(p) / 1e6:.1f} MPa (threshold 1e-5), {hel(p, 1e-4) / 1e6:.1f} MPa (1e-4), "
-              f"{hel(p, 0.02 * slip) / 1e6:.1f} MPa (2% of the plateau slip, an offset yield); "
+              f"{offset / 1e6:.1f} MPa (2% of the plateau slip, an offset yield); Hugoniot state "
+              f"{state / 1e6:.1f} MPa, plastic front 10-90% width "
+              f"{plastic_front_width(p, offset, state) * 1e6:.0f} um; "
               f"mean slip behind the plastic wave {slip:.5f} (min {p['plastic'][loaded].min():.5f}, "
               f"max {p['plastic'][loaded].max():.5f}) at {t * 1e9:.0f} ns")
         top.plot(x, -p["sxx_Pa"] / 1e6, label=label)
         bottom.plot(x, p["plastic"], label=label)
         if p["grain"].max() > 0:
+            striped = True
             edges = np.flatnonzero(np.diff(p["grain"])) + 1
             bounds = np.concatenate(([0], edges, [len(x) - 1]))
             for a, b, g in zip(bounds[:-1], bounds[1:], p["grain"][bounds[:-1]]):
@@ -110,7 +134,8 @@ def crystal(runs, labels, out):
     bottom.set_ylabel("accumulated slip $\\gamma_{tot}$")
     bottom.set_xlabel("x [mm]")
     top.legend(fontsize="small")
-    top.set_title(f"t = {t * 1e9:.0f} ns (grey stripes: alternate grains of the polycrystal)", fontsize="small")
+    note = " (grey stripes: alternate grains of the polycrystal)" if striped else ""
+    top.set_title(f"t = {t * 1e9:.0f} ns{note}", fontsize="small")
     fig.tight_layout()
     fig.savefig(out, dpi=110)
 
