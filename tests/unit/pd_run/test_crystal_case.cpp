@@ -1,6 +1,6 @@
 // model = "crystal" case files: grains of a polycrystal, the single crystal's Schmid factors,
-// and a stopped and resumed crystal run that writes the same profiles bitwise (the crystal state
-// goes through the checkpoint).
+// Taylor grains per point, and stopped and resumed crystal runs (slab grains, Taylor grains) that
+// write the same profiles bitwise (the crystal state goes through the checkpoint).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,11 +69,14 @@ TEST(PdCrystalCase, SchmidFactorsOfHundredAndHundredEleven) {
   EXPECT_NEAR(schmid_factor_along_x(m), std::sqrt(6.0) / 9.0, 1e-12);
 }
 
-TEST(PdCrystalCase, StoppedAndResumedRunIsBitwiseIdentical) {
-  const auto dir = std::filesystem::temp_directory_path() / "shockfield_pd_crystal_resume";
+namespace {
+
+// Stops `text` after 17 steps, resumes it and compares the output with an uninterrupted run.
+void expect_bitwise_resume(const std::string& text, const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("shockfield_pd_crystal_resume_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  std::ofstream(dir / "case.toml") << kCase;
+  std::ofstream(dir / "case.toml") << text;
   auto run = [&](const std::string& out, long long stop_after, bool resume) {
     RunOptions o;
     o.case_file = dir / "case.toml";
@@ -89,7 +92,19 @@ TEST(PdCrystalCase, StoppedAndResumedRunIsBitwiseIdentical) {
   EXPECT_THROW(run("split", 17, false), StopRequested);
   run("split", 0, true);
   for (const char* f : {"series.csv", "profiles/profile_1.csv", "profiles/profile_2.csv", "profiles/index.csv"})
-    EXPECT_EQ(slurp(dir / "straight" / f), slurp(dir / "split" / f)) << f;
+    EXPECT_EQ(slurp(dir / "straight" / f), slurp(dir / "split" / f)) << name << ": " << f;
+}
+
+}  // namespace
+
+TEST(PdCrystalCase, StoppedAndResumedRunIsBitwiseIdentical) { expect_bitwise_resume(kCase, "slabs"); }
+
+// Every point's grains go through the checkpoint (N_g grain states per point).
+TEST(PdCrystalCase, StoppedAndResumedTaylorRunIsBitwiseIdentical) {
+  std::string text = kCase;
+  const std::string slabs = "orientation = \"random_grains\"\ngrain_planes = [8, 12]\n";
+  text.replace(text.find(slabs), slabs.size(), "orientation = \"random\"\ntaylor_grains = 3\n");
+  expect_bitwise_resume(text, "taylor");
 }
 
 // taylor_grains: N_g copies of a direction, or N_g random orientations shared by every point.
