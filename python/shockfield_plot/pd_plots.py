@@ -18,6 +18,11 @@
       soft-hard spread (max − min over the grains) and the SD against strain; prints the
       strains where the spread and the SD peak and where the spread first reaches 100 MPa.
 
+  pd_plots.py orientations RUN_DIR [--out FILE]
+      a [homogeneous] run's grains (grain_summary.csv): the crystal direction along the loading
+      axis before and after, in the standard stereographic triangle [001]-[101]-[111] (inverse
+      pole figure; seed Fig. 5(a) shows the initial orientations); prints the mean angle from <110>.
+
 Reads profiles/index.csv, profiles/profile_<k>.csv and config.resolved.toml. Uses only numpy
 and matplotlib from Debian (run with /usr/bin/python3).
 """
@@ -175,15 +180,47 @@ def compression(runs, labels, out):
           + ", ".join(f"{np.interp(e, eps, taylor):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa")
 
 
+def standard_triangle(h, k, l):
+    """Stereographic projection of the cubic-equivalent direction [u v w] with 0 <= v <= u <= w
+    (the [001]-[101]-[111] triangle, [101] to the right)."""
+    v = np.sort(np.abs(np.stack([h, k, l])), axis=0)
+    v /= np.linalg.norm(v, axis=0)
+    return v[1] / (1 + v[2]), v[0] / (1 + v[2]), v
+
+
+def orientations(runs, labels, out):
+    g = read_csv(os.path.join(runs[0], "grain_summary.csv"))
+    fig, axes = plt.subplots(1, 2, figsize=(9, 4.8))
+    t = np.linspace(0.0, 1.0, 50)
+    arc = standard_triangle(t, np.ones_like(t), np.ones_like(t))  # the [101]-[111] edge
+    for ax, key, title in ((axes[0], "axis", "initial"), (axes[1], "final_axis", "after compression")):
+        x, y, v = standard_triangle(g[key + "_h"], g[key + "_k"], g[key + "_l"])
+        ax.plot([0, arc[0][0]], [0, 0], "k", lw=0.8)
+        ax.plot([0, arc[0][-1]], [0, arc[1][-1]], "k", lw=0.8)
+        ax.plot(arc[0], arc[1], "k", lw=0.8)
+        ax.scatter(x, y, s=14, color="tab:blue")
+        for name, (px, py) in (("[001]", (0, 0)), ("[101]", (arc[0][0], 0)), ("[111]", (arc[0][-1], arc[1][-1]))):
+            ax.annotate(name, (px, py), textcoords="offset points", xytext=(-8, -12 if py == 0 else 4), fontsize="small")
+        ax.set_aspect("equal")
+        ax.axis("off")
+        angle = np.degrees(np.arccos(np.clip((v[1] + v[2]) / np.sqrt(2.0), -1, 1)))
+        ax.set_title(f"{title}: loading axis in the crystal\nmean angle from <110> {angle.mean():.1f}°", fontsize="small")
+        print(f"{title}: mean angle of the loading axis from <110> {angle.mean():.1f} deg "
+              f"({len(angle)} grains, min {angle.min():.1f}, max {angle.max():.1f})")
+    fig.tight_layout(rect=(0, 0, 1, 0.93))
+    fig.savefig(out, dpi=100)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["bar", "crystal", "compression"])
+    ap.add_argument("kind", choices=["bar", "crystal", "compression", "orientations"])
     ap.add_argument("runs", nargs="+")
     ap.add_argument("--labels", nargs="*")
     ap.add_argument("--out", default="bar.png")
     a = ap.parse_args()
     labels = a.labels or [os.path.basename(os.path.normpath(r)) for r in a.runs]
-    {"bar": bar, "crystal": crystal, "compression": compression}[a.kind](a.runs, labels, a.out)
+    {"bar": bar, "crystal": crystal, "compression": compression, "orientations": orientations}[a.kind](
+        a.runs, labels, a.out)
 
 
 if __name__ == "__main__":
