@@ -2,8 +2,9 @@
 // and LPS force laws in the velocity-Verlet loop, on 1 and 2 threads, on the work of
 // bench/lammps/in.peri_bench (an n³ simple-cubic lattice, lc = 0.5 mm, δ = 3.0002·lc, displaced
 // by up to 0.2 µm, halves pulled apart at ±10 m/s, critical stretch 0.002); also the
-// correspondence model with the crystal law (one grain per point). bench/run_pd_bench.sh runs
-// LAMMPS on the same work and prints the ratios.
+// correspondence model with the crystal law, one grain per point ("crystal") and 8 Taylor grains
+// per point ("crystal8": grain-updates/s = 8 × point-steps/s). bench/run_pd_bench.sh runs LAMMPS
+// on the same work and prints the ratios.
 // Usage: pd_bench [n (default 30)] [steps (default 50)].
 #include <omp.h>
 
@@ -49,10 +50,16 @@ std::unique_ptr<ForceModel> make_model(const std::string& name, const PointCloud
   if (name == "lps")
     return std::make_unique<LpsForce>(cloud, family, LpsModel{14.9e9, 8.94e9}, Influence(Influence::Kind::inverse),
                                       damage);
-  CrystalMaterial m;  // Table 1 copper, [111] along x
-  m.density = kCopperDensity;
-  m.orientation = materials::rotation_loading_along(Vec3(1, 1, 1));
-  return std::make_unique<CorrespondenceForce<CrystalMaterial>>(cloud, family, std::vector{m}, Influence(),
+  // Table 1 copper: one grain, [111] along x ("crystal"), or 8 random grains per point under the
+  // Taylor assumption ("crystal8", eqs. 42-43).
+  std::vector<Mat3> grains{materials::rotation_loading_along(Vec3(1, 1, 1))};
+  if (name == "crystal8")
+    for (std::uint64_t k = 1; k < 8; ++k) {
+      const Vec3 a = materials::random_bunge_angles(11, k);
+      grains.push_back(materials::bunge_rotation(a[0], a[1], a[2]));
+    }
+  const CrystalMaterial m{kCopperDensity, {materials::CrystalViscoplasticity::ofhc_copper(), grains}, 0.0};
+  return std::make_unique<CorrespondenceForce<CrystalMaterial>>(cloud, family, std::vector<CrystalMaterial>(1, m), Influence(),
                                                                 CorrespondenceOptions{true, 0.0});
 }
 
@@ -67,10 +74,11 @@ int main(int argc, char** argv) {
   std::printf("PD %d^3 lattice: %zu points, %zu bonds (both directions), %d steps\n", n, cloud.size(), family.bonds(),
               steps);
   std::printf("| model | threads | loop s | bond-updates/s | point-steps/s |\n|---|---|---|---|---|\n");
-  for (const std::string name : {"pmb", "lps", "crystal"}) {
+  for (const std::string name : {"pmb", "lps", "crystal", "crystal8"}) {
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
-      Simulation sim(cloud, family, make_model(name, cloud, family), {name == "crystal" ? kCopperDensity : kDensity});
+      const bool crystal = name.starts_with("crystal");
+      Simulation sim(cloud, family, make_model(name, cloud, family), {crystal ? kCopperDensity : kDensity});
       // The crystal (copper, 186 GPa) needs a shorter step than LAMMPS's 1e-7 s.
       const double s = loop_seconds(sim, steps, std::min(kDt, 0.5 * sim.stable_step()));
       const double updates = static_cast<double>(steps);

@@ -9,8 +9,19 @@
   pd_plots.py crystal RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
       at the last profile time: axial compression (Fig. 8/10) and accumulated slip (Fig. 11)
       against x of every run on shared axes, grains of a polycrystal as alternating stripes
-      (Fig. 12); prints each run's HEL (the compression where the slip first exceeds 1e-5,
-      scanning from the resting end) and mean slip behind the plastic wave.
+      (Fig. 12); prints each run's HEL (the compression where the slip first exceeds 1e-5, 1e-4
+      and 2% of its plateau, scanning from the resting end) and mean slip behind the plastic wave.
+
+  pd_plots.py compression RUN_DIR [--out FILE]
+      a [homogeneous] run (seed 004 Fig. 5): every grain's axial compression against the
+      compressive strain, the band mean ± SD, and the Taylor average (eq. 43); below, the
+      soft-hard spread (max − min over the grains) and the SD against strain; prints the
+      strains where the spread and the SD peak and where the spread first reaches 100 MPa.
+
+  pd_plots.py orientations RUN_DIR [--out FILE]
+      a [homogeneous] run's grains (grain_summary.csv): the crystal direction along the loading
+      axis before and after, in the standard stereographic triangle [001]-[101]-[111] (inverse
+      pole figure; seed Fig. 5(a) shows the initial orientations); prints the mean angle from <110>.
 
 Reads profiles/index.csv, profiles/profile_<k>.csv and config.resolved.toml. Uses only numpy
 and matplotlib from Debian (run with /usr/bin/python3).
@@ -80,20 +91,45 @@ def hel(p, threshold=1e-5):
     return float("nan")
 
 
+def crossing(x, f, level):
+    """x where f, scanning from the resting end (largest x), first reaches `level` (interpolated)."""
+    for i in range(len(x) - 1, 0, -1):
+        if f[i - 1] >= level > f[i] or f[i] >= level:
+            if f[i] >= level:
+                return x[i]
+            return x[i] + (level - f[i]) * (x[i - 1] - x[i]) / (f[i - 1] - f[i])
+    return x[0]
+
+
+def plastic_front_width(p, hel_stress, plateau):
+    """Distance between 10% and 90% of the plastic jump (HEL to the Hugoniot state) on the
+    right-going wave."""
+    x, s = p["x_m"], -p["sxx_Pa"]
+    jump = plateau - hel_stress
+    return crossing(x, s, hel_stress + 0.1 * jump) - crossing(x, s, hel_stress + 0.9 * jump)
+
+
 def crystal(runs, labels, out):
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 6.5), sharex=True)
+    striped = False
     for run, label in zip(runs, labels):
         t, p = last_profile(run)
         x = p["x_m"] * 1e3
         middle = 0.5 * (x[0] + x[-1])
         loaded = (x > middle + 0.1 * (x[-1] - middle)) & (x < middle + 0.4 * (x[-1] - middle))
         slip = p["plastic"][loaded].mean()
-        print(f"{label}: HEL {hel(p) / 1e6:.1f} MPa (threshold 1e-5), {hel(p, 1e-4) / 1e6:.1f} MPa (1e-4); "
+        offset = hel(p, 0.02 * slip)
+        state = -p["sxx_Pa"][loaded].mean()
+        print(f"{label}: HEL {hel(p) / 1e6:.1f} MPa (threshold 1e-5), {hel(p, 1e-4) / 1e6:.1f} MPa (1e-4), "
+              f"{offset / 1e6:.1f} MPa (2% of the plateau slip, an offset yield); Hugoniot state "
+              f"{state / 1e6:.1f} MPa, plastic front 10-90% width "
+              f"{plastic_front_width(p, offset, state) * 1e6:.0f} um; "
               f"mean slip behind the plastic wave {slip:.5f} (min {p['plastic'][loaded].min():.5f}, "
               f"max {p['plastic'][loaded].max():.5f}) at {t * 1e9:.0f} ns")
         top.plot(x, -p["sxx_Pa"] / 1e6, label=label)
         bottom.plot(x, p["plastic"], label=label)
         if p["grain"].max() > 0:
+            striped = True
             edges = np.flatnonzero(np.diff(p["grain"])) + 1
             bounds = np.concatenate(([0], edges, [len(x) - 1]))
             for a, b, g in zip(bounds[:-1], bounds[1:], p["grain"][bounds[:-1]]):
@@ -103,20 +139,88 @@ def crystal(runs, labels, out):
     bottom.set_ylabel("accumulated slip $\\gamma_{tot}$")
     bottom.set_xlabel("x [mm]")
     top.legend(fontsize="small")
-    top.set_title(f"t = {t * 1e9:.0f} ns (grey stripes: alternate grains of the polycrystal)", fontsize="small")
+    note = " (grey stripes: alternate grains of the polycrystal)" if striped else ""
+    top.set_title(f"t = {t * 1e9:.0f} ns{note}", fontsize="small")
     fig.tight_layout()
     fig.savefig(out, dpi=110)
 
 
+def compression(runs, labels, out):
+    run = runs[0]
+    curve = read_csv(os.path.join(run, "stress_strain.csv"))
+    grains = read_csv(os.path.join(run, "grains.csv"))
+    eps = -curve["strain"]
+    sigma = np.array([-v for k, v in grains.items() if k.startswith("grain_")]) / 1e6
+    taylor, sd = -curve["taylor_axial_Pa"] / 1e6, curve["grain_sd_Pa"] / 1e6
+    spread = sigma.max(axis=0) - sigma.min(axis=0)
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 7.5), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    for s in sigma:
+        top.plot(eps, s, color="grey", lw=0.5, alpha=0.6)
+    soft, hard = np.argmin(sigma[:, -1]), np.argmax(sigma[:, -1])
+    top.plot(eps, sigma[soft], color="tab:green", lw=1.2, label="softest grain at the end")
+    top.plot(eps, sigma[hard], color="tab:red", lw=1.2, label="hardest grain at the end")
+    top.fill_between(eps, taylor - sd, taylor + sd, color="tab:blue", alpha=0.2, label="Taylor average ± SD")
+    top.plot(eps, taylor, color="tab:blue", lw=2.2, label=f"Taylor average (eq. 43), {sigma.shape[0]} grains")
+    top.set_ylabel("axial compression (eq. 45) [MPa]")
+    top.legend(fontsize="small", loc="lower right")
+    top.set_title("OFHC copper, Table 1, isochoric compression (eq. 44), thin: each grain", fontsize="small")
+    bottom.plot(eps, spread, color="k", label="spread: hardest − softest grain")
+    bottom.plot(eps, sd, color="tab:blue", label="SD over the grains")
+    bottom.axhline(100.0, color="grey", ls="--", lw=0.8)
+    bottom.set_ylabel("[MPa]")
+    bottom.set_xlabel("compressive true strain  $-\\varepsilon$")
+    bottom.legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(out, dpi=100)
+    first = eps[np.argmax(spread >= 100.0)] if (spread >= 100.0).any() else float("nan")
+    print(f"{run}: Taylor average {taylor[-1]:.1f} MPa at strain {eps[-1]:.3g}; spread reaches 100 MPa at strain "
+          f"{first:.3g}, peaks at {spread.max():.1f} MPa (strain {eps[np.argmax(spread)]:.3g}); SD peaks at "
+          f"{sd.max():.1f} MPa (strain {eps[np.argmax(sd)]:.3g}); at strain 0.01/0.05/0.1: spread "
+          + ", ".join(f"{np.interp(e, eps, spread):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa, Taylor "
+          + ", ".join(f"{np.interp(e, eps, taylor):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa")
+
+
+def standard_triangle(h, k, l):
+    """Stereographic projection of the cubic-equivalent direction [u v w] with 0 <= v <= u <= w
+    (the [001]-[101]-[111] triangle, [101] to the right)."""
+    v = np.sort(np.abs(np.stack([h, k, l])), axis=0)
+    v /= np.linalg.norm(v, axis=0)
+    return v[1] / (1 + v[2]), v[0] / (1 + v[2]), v
+
+
+def orientations(runs, labels, out):
+    g = read_csv(os.path.join(runs[0], "grain_summary.csv"))
+    fig, axes = plt.subplots(1, 2, figsize=(9, 4.8))
+    t = np.linspace(0.0, 1.0, 50)
+    arc = standard_triangle(t, np.ones_like(t), np.ones_like(t))  # the [101]-[111] edge
+    for ax, key, title in ((axes[0], "axis", "initial"), (axes[1], "final_axis", "after compression")):
+        x, y, v = standard_triangle(g[key + "_h"], g[key + "_k"], g[key + "_l"])
+        ax.plot([0, arc[0][0]], [0, 0], "k", lw=0.8)
+        ax.plot([0, arc[0][-1]], [0, arc[1][-1]], "k", lw=0.8)
+        ax.plot(arc[0], arc[1], "k", lw=0.8)
+        ax.scatter(x, y, s=14, color="tab:blue")
+        for name, (px, py) in (("[001]", (0, 0)), ("[101]", (arc[0][0], 0)), ("[111]", (arc[0][-1], arc[1][-1]))):
+            ax.annotate(name, (px, py), textcoords="offset points", xytext=(-8, -12 if py == 0 else 4), fontsize="small")
+        ax.set_aspect("equal")
+        ax.axis("off")
+        angle = np.degrees(np.arccos(np.clip((v[1] + v[2]) / np.sqrt(2.0), -1, 1)))
+        ax.set_title(f"{title}: loading axis in the crystal\nmean angle from <110> {angle.mean():.1f}°", fontsize="small")
+        print(f"{title}: mean angle of the loading axis from <110> {angle.mean():.1f} deg "
+              f"({len(angle)} grains, min {angle.min():.1f}, max {angle.max():.1f})")
+    fig.tight_layout(rect=(0, 0, 1, 0.93))
+    fig.savefig(out, dpi=100)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["bar", "crystal"])
+    ap.add_argument("kind", choices=["bar", "crystal", "compression", "orientations"])
     ap.add_argument("runs", nargs="+")
     ap.add_argument("--labels", nargs="*")
     ap.add_argument("--out", default="bar.png")
     a = ap.parse_args()
     labels = a.labels or [os.path.basename(os.path.normpath(r)) for r in a.runs]
-    {"bar": bar, "crystal": crystal}[a.kind](a.runs, labels, a.out)
+    {"bar": bar, "crystal": crystal, "compression": compression, "orientations": orientations}[a.kind](
+        a.runs, labels, a.out)
 
 
 if __name__ == "__main__":

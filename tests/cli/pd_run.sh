@@ -25,32 +25,47 @@ for f in series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4
 done
 echo "ok: resumed run is bitwise identical"
 
-# The bond models on the same bar: a PMB run finishes with a damage column; an LPS run resumes bitwise.
+# The bond models on the same bar, with bonds breaking before the stop: a run stopped after the
+# first break and resumed (intact flags and critical stretches go through the checkpoint) writes
+# the same output as an uninterrupted one, bitwise; PMB profiles have a damage column.
 base=$(cat "$case")
 j2='model = "j2"
 density = 2703.0
 young = 77.11e9
 poisson = 0.334
 yield_stress = 270e6'
-echo "${base/"$j2"/model = \"pmb\"
+# has_damage FILE: some point of the profile has broken bonds (last column > 0).
+has_damage() { awk -F, 'NR > 1 && $NF > 0 { found = 1 } END { exit !found }' "$1"; }
+# stop_and_resume NAME STOP PROFILE: straight and split runs of $WORK/NAME.toml, split stopped
+# after STOP steps; PROFILE (written before the stop) must already show damage.
+stop_and_resume() {
+  local name="$1" stop="$2" profile="$3"
+  "$SF" run "$WORK/$name.toml" --output "$WORK/${name}_straight" -q > /dev/null
+  has_damage "$WORK/${name}_straight/profiles/profile_$profile.csv" || fail "$name: no bond broken by profile $profile"
+  awk -F, -v p="$profile" -v s="$stop" '$1 == p && $3 >= s { exit 1 }' "$WORK/${name}_straight/profiles/index.csv" ||
+    fail "$name: profile $profile is not written before step $stop"
+  set +e
+  "$SF" run "$WORK/$name.toml" --output "$WORK/${name}_split" -q --stop-after "$stop" > /dev/null 2> "$WORK/stop.txt"
+  local code=$?
+  set -e
+  [ $code -eq 130 ] || fail "stopped $name run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
+  "$SF" run "$WORK/$name.toml" --output "$WORK/${name}_split" -q --resume > /dev/null
+  for f in series.csv profiles/index.csv $(cd "$WORK/${name}_straight" && ls profiles/profile_*.csv); do
+    cmp "$WORK/${name}_straight/$f" "$WORK/${name}_split/$f" || fail "resumed $name $f differs"
+  done
+  echo "ok: $name resumed after bonds broke (stop at step $stop), bitwise"
+}
+pmb="${base/"$j2"/model = \"pmb\"
 density = 2703.0
 micromodulus = 4e21
-critical_stretch = 0.01}" > "$WORK/pmb.toml"
-"$SF" run "$WORK/pmb.toml" --output "$WORK/pmb" -q > /dev/null
-head -1 "$WORK/pmb/profiles/profile_4.csv" | grep -q ",grain,damage$" || fail "PMB profile lacks the damage column"
+critical_stretch = 0.004}"
+echo "${pmb/profile_interval = 5e-8/profile_interval = 2.5e-8}" > "$WORK/pmb.toml"
+stop_and_resume pmb 560 7
+head -1 "$WORK/pmb_straight/profiles/profile_4.csv" | grep -q ",grain,damage$" || fail "PMB profile lacks the damage column"
 echo "${base/"$j2"/model = \"lps\"
 density = 2703.0
 bulk = 70e9
 shear = 26e9
-critical_stretch = 0.01}" > "$WORK/lps.toml"
-"$SF" run "$WORK/lps.toml" --output "$WORK/lps_straight" -q > /dev/null
-set +e
-"$SF" run "$WORK/lps.toml" --output "$WORK/lps_split" -q --stop-after 77 > /dev/null 2> "$WORK/stop.txt"
-code=$?
-set -e
-[ $code -eq 130 ] || fail "stopped LPS run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
-"$SF" run "$WORK/lps.toml" --output "$WORK/lps_split" -q --resume > /dev/null
-for f in series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4.csv; do
-  cmp "$WORK/lps_straight/$f" "$WORK/lps_split/$f" || fail "resumed LPS $f differs"
-done
-echo "pd_run: run folder, derived values and bitwise resume (J2, LPS); PMB run"
+critical_stretch = 0.002}" > "$WORK/lps.toml"
+stop_and_resume lps 120 1
+echo "pd_run: run folder, derived values and bitwise resume (J2; PMB and LPS after bonds broke)"

@@ -1,7 +1,11 @@
 #include "shockfield/pd/bond_force.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+
+#include "shockfield/core/error.hpp"
 
 namespace shockfield::pd {
 namespace {
@@ -36,19 +40,23 @@ BondTerms BondForce<Model>::terms(std::size_t i, int b, double e) const {
 
 template <class Model>
 void BondForce<Model>::compute_dilatation(const std::vector<Vec3>& y) {
-  const auto n = static_cast<std::ptrdiff_t>(cloud_.size());
+  if constexpr (!Model::uses_dilatation) {
+    return;
+  } else {
+    const auto n = static_cast<std::ptrdiff_t>(cloud_.size());
 #pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t si = 0; si < n; ++si) {
-    const auto i = static_cast<std::size_t>(si);
-    double sum = 0.0;
-    for (int b = family_.begin(i); b < family_.end(i); ++b) {
-      if (!intact_[b]) continue;
-      const int j = family_.neighbor[b];
-      double e = (y[j] - y[i]).norm() - family_.length[b];
-      if (std::abs(e) < kNearZero) e = 0.0;
-      sum += omega_[b] * family_.length[b] * e * cloud_.volume[j] * family_.volume_scale[b];
+    for (std::ptrdiff_t si = 0; si < n; ++si) {
+      const auto i = static_cast<std::size_t>(si);
+      double sum = 0.0;
+      for (int b = family_.begin(i); b < family_.end(i); ++b) {
+        if (!intact_[b]) continue;
+        const int j = family_.neighbor[b];
+        double e = (y[j] - y[i]).norm() - family_.length[b];
+        if (std::abs(e) < kNearZero) e = 0.0;
+        sum += omega_[b] * family_.length[b] * e * cloud_.volume[j] * family_.volume_scale[b];
+      }
+      theta_[i] = weighted_volume_[i] != 0.0 ? model_.dilatation_factor() * sum / weighted_volume_[i] : 0.0;
     }
-    theta_[i] = weighted_volume_[i] != 0.0 ? 3.0 * sum / weighted_volume_[i] : 0.0;
   }
 }
 
@@ -89,7 +97,7 @@ void BondForce<Model>::compute(const Kinematics& k, std::vector<Vec3>& force_den
 template <class Model>
 double BondForce<Model>::stable_step(const std::vector<double>& density) const {
   // Silling & Askari (2005): Δt_i = √(2ρ_i / Σ_j V_j·β·k_ij), with k_ij = ∂t/∂e; for LPS the
-  // dilatation coupling adds its row sum |3K − 5G|·(3/m_i²)·(Σ_j ω r0 V β)²·2.
+  // dilatation coupling adds its row sum |A|·(d/m_i²)·(Σ_j ω r0 V β)²·2 (A = 3K − 5G in 3D).
   double dt = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < cloud_.size(); ++i) {
     double row = 0.0, lever = 0.0;
@@ -100,7 +108,8 @@ double BondForce<Model>::stable_step(const std::vector<double>& density) const {
     }
     if constexpr (Model::uses_dilatation)
       if (weighted_volume_[i] > 0.0)
-        row += 2.0 * model_.dilatation_coupling() * 3.0 * lever * lever / (weighted_volume_[i] * weighted_volume_[i]);
+        row += 2.0 * model_.dilatation_coupling() * model_.dilatation_factor() * lever * lever /
+               (weighted_volume_[i] * weighted_volume_[i]);
     if (row > 0.0) dt = std::min(dt, std::sqrt(2.0 * density[i] / row));
   }
   return dt;
@@ -124,6 +133,23 @@ std::vector<double> BondForce<Model>::damage() const {
 template <class Model>
 std::size_t BondForce<Model>::intact_bonds() const {
   return static_cast<std::size_t>(std::count(intact_.begin(), intact_.end(), 1));
+}
+
+template <class Model>
+std::vector<double> BondForce<Model>::saved_state() const {
+  std::vector<double> data(intact_.begin(), intact_.end());
+  data.insert(data.end(), s0_.begin(), s0_.end());
+  return data;
+}
+
+template <class Model>
+void BondForce<Model>::restore_state(const std::vector<double>& data) {
+  if (data.size() != intact_.size() + s0_.size())
+    throw InputError(fmt::format("pd {}: saved state of {} values, expected {} ({} bonds and {} points)", name(),
+                                 data.size(), intact_.size() + s0_.size(), intact_.size(), s0_.size()));
+  const auto split = data.begin() + static_cast<std::ptrdiff_t>(intact_.size());
+  std::transform(data.begin(), split, intact_.begin(), [](double flag) { return flag != 0.0 ? 1 : 0; });
+  std::copy(split, data.end(), s0_.begin());
 }
 
 template <class Model>

@@ -29,6 +29,13 @@ class BondForce final : public ForceModel {
   const std::vector<double>& dilatation() const { return theta_; }
   std::size_t intact_bonds() const;
 
+  /// The damage state for checkpoints: the intact flag of every bond (1/0) then every point's
+  /// critical stretch s0 of the next step. The dilatations are recomputed from the positions at
+  /// each force evaluation, so this is all a resume needs to continue bitwise.
+  std::vector<double> saved_state() const;
+  /// Takes back saved_state() (InputError on a size mismatch).
+  void restore_state(const std::vector<double>& data);
+
  private:
   BondTerms terms(std::size_t i, int b, double e) const;
   void compute_dilatation(const std::vector<Vec3>& y);

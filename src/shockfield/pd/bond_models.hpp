@@ -8,6 +8,7 @@
 //   LPS (Silling et al. 2007, linear peridynamic solid), with weighted volume
 //   m_i = Σ ω r0² V β and dilatation θ_i = (3/m_i) Σ ω r0 e V β (e = |Y| − r0):
 //       t = (3K − 5G)(ω θ_i/m_i + ω θ_j/m_j)·r0 + 15G(ω/m_i + ω/m_j)·e
+//   in 3D, with its 2D (plane strain) and 1D (uniaxial strain) forms below.
 //
 // Critical-stretch damage (LAMMPS semantics): bond i→j breaks when s > min(s0_i, s0_j), with
 // s0 from the previous step; then s0_i = s00 − α·min_j s over i's intact bonds (max of
@@ -35,17 +36,41 @@ struct PmbModel {
   double stiffness(const BondTerms& b) const { return micromodulus / b.r0; }
 };
 
+// LPS in d = 1, 2, 3 dimensions, one construction: W = (κ_d/2)θ² + (α_d/2) Σ ω (e^d)² V β with
+// θ = (d/m) Σ ω x e V β and e^d = e − θx/d, so that the scalar force state of i is
+//   t_i = (d·κ_d − B_d/d)·θ_i·ω·x/m_i + B_d·ω·e/m_i,   B_d = m·α_d,
+// and the bond force is t_i + t_j (the two terms of `force`). Homogeneous strain gives e^d = 0 and
+// the local energy, so κ_d is the d-dimensional bulk modulus of the body's constraint:
+//   3D: κ = K, B = 15G (Silling et al. 2007; LAMMPS peri/lps): A = 3K − 5G;
+//   2D plane strain (the pd convention: the missing direction held): κ = K + G/3 = λ + G and
+//       B = 8G (the 2D LPS of Le, Chan & Schwartz, IJNME 98 (2014) 547): A = 2K − 10G/3;
+//       longitudinal waves then travel at √((K + 4G/3)/ρ) and shear waves at √(G/ρ);
+//   1D uniaxial strain: κ = K + 4G/3 (there is no shear to carry) and B = 3G, the d(d+2)G
+//       pattern of 15G and 8G (our choice: it vanishes on homogeneous strain, so the wave speed
+//       is √((K + 4G/3)/ρ) whatever B is, and it stiffens the zig-zag mode u_j = (−1)^j, which
+//       has θ = 0 at every point and would otherwise cost no energy): A = K + 4G/3 − 3G.
 struct LpsModel {
   static constexpr bool uses_dilatation = true;
   double bulk = 0.0;   ///< K [Pa]
   double shear = 0.0;  ///< G [Pa]
-  double force(const BondTerms& b) const {
-    return (3.0 * bulk - 5.0 * shear) * (b.omega * b.theta_i / b.m_i + b.omega * b.theta_j / b.m_j) * b.r0 +
-           15.0 * shear * (b.omega / b.m_i + b.omega / b.m_j) * b.e;
+  int dim = 3;         ///< d of the body
+  /// d of θ = (d/m) Σ ω x e V β.
+  double dilatation_factor() const { return static_cast<double>(dim); }
+  /// A = d·κ_d − B_d/d.
+  double dilatation_modulus() const {
+    if (dim == 3) return 3.0 * bulk - 5.0 * shear;
+    if (dim == 2) return 2.0 * bulk - 10.0 / 3.0 * shear;
+    return bulk + 4.0 / 3.0 * shear - 3.0 * shear;
   }
-  double stiffness(const BondTerms& b) const { return 15.0 * shear * (b.omega / b.m_i + b.omega / b.m_j); }
+  /// B_d.
+  double deviatoric_modulus() const { return dim == 3 ? 15.0 * shear : dim == 2 ? 8.0 * shear : 3.0 * shear; }
+  double force(const BondTerms& b) const {
+    return dilatation_modulus() * (b.omega * b.theta_i / b.m_i + b.omega * b.theta_j / b.m_j) * b.r0 +
+           deviatoric_modulus() * (b.omega / b.m_i + b.omega / b.m_j) * b.e;
+  }
+  double stiffness(const BondTerms& b) const { return deviatoric_modulus() * (b.omega / b.m_i + b.omega / b.m_j); }
   /// Coefficient of the dilatation coupling (for the stable step).
-  double dilatation_coupling() const { return std::abs(3.0 * bulk - 5.0 * shear); }
+  double dilatation_coupling() const { return std::abs(dilatation_modulus()); }
 };
 
 struct CriticalStretch {

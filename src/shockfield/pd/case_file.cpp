@@ -98,6 +98,7 @@ PdCase read_pd_case(const Config& root) {
   PdCase c;
   c.body = read_body(root.table("body"));
   c.material = read_material(root.table("material"));
+  if (auto* lps = std::get_if<LpsSpec>(&c.material)) lps->law.dim = c.body.dim;  // the 1D/2D/3D LPS
   c.solver = read_solver(root.table("solver"));
   const Config loading = root.table("loading");
   loading.get_choice_or("type", {"impact"}, "impact");

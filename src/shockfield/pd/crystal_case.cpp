@@ -11,12 +11,21 @@
 #include "shockfield/core/rng.hpp"
 
 namespace shockfield::pd {
+namespace {
+
+// Orientation k of stream `seed`, uniform over SO(3).
+Mat3 random_orientation(std::uint64_t seed, std::uint64_t k) {
+  const Vec3 a = materials::random_bunge_angles(seed, k);
+  return materials::bunge_rotation(a[0], a[1], a[2]);
+}
+
+}  // namespace
 
 CrystalSpec read_crystal(const Config& t) {
   CrystalSpec s;
   CrystalMaterial& m = s.base;
   m.density = t.get_double("density", Range::positive());
-  materials::CrystalViscoplasticity& c = m.crystal;
+  materials::CrystalViscoplasticity& c = m.aggregate.crystal;
   const std::string systems = t.get_string_or("slip_systems", "fcc");
   try {
     c.systems = materials::slip_systems(systems);
@@ -40,28 +49,40 @@ CrystalSpec read_crystal(const Config& t) {
     t.fail("g0", e.what());
   }
   m.slope = t.get_double_or("hugoniot_slope", 0.0, Range::closed(0.0, 10.0));
-  const std::string kind = t.get_choice_or("orientation", {"direction", "euler", "random_grains"}, "direction");
+  const std::string kind =
+      t.get_choice_or("orientation", {"direction", "euler", "random", "random_grains"}, "direction");
+  const auto grains = static_cast<std::size_t>(t.get_int_or("taylor_grains", 1, Range::closed(1, 10000)));
+  Mat3 g = Mat3::Identity();
   if (kind == "direction") {
     const auto d = t.get_doubles_or("direction", {1.0, 0.0, 0.0});
     const Vec3 axis(d.size() > 0 ? d[0] : 0.0, d.size() > 1 ? d[1] : 0.0, d.size() > 2 ? d[2] : 0.0);
     if (d.size() != 3 || !(axis.norm() > 0.0))
       t.fail("direction", "a non-zero crystal direction [h, k, l] to load along x");
-    m.orientation = materials::rotation_loading_along(axis);
+    g = materials::rotation_loading_along(axis);
   } else if (kind == "euler") {
     const auto e = t.get_doubles("euler_angles_deg", 3);
     try {
       constexpr double deg = std::numbers::pi / 180.0;
-      m.orientation = materials::bunge_rotation(e[0] * deg, e[1] * deg, e[2] * deg);
+      g = materials::bunge_rotation(e[0] * deg, e[1] * deg, e[2] * deg);
     } catch (const InputError& err) {
       t.fail("euler_angles_deg", fmt::format("{} (φ1, φ2 in [0, 360), Φ in [0, 180] degrees)", err.what()));
     }
   } else {
+    s.seed = static_cast<std::uint64_t>(t.get_int_or("seed", 1, Range::non_negative()));
+  }
+  if (kind == "random_grains") {
+    if (grains != 1)
+      t.fail("taylor_grains", "orientation = \"random_grains\" gives each slab grain one orientation: "
+                              "Taylor grains per point are for orientation = \"direction\", \"euler\" or \"random\"");
     s.polycrystal = true;
     const auto planes = t.get_ints("grain_planes", 2, Range::closed(1, 1e6));
     if (planes[0] > planes[1]) t.fail("grain_planes", "[lo, hi] with lo <= hi");
     s.grain_planes = {static_cast<int>(planes[0]), static_cast<int>(planes[1])};
-    s.seed = static_cast<std::uint64_t>(t.get_int_or("seed", 1, Range::non_negative()));
   }
+  // The N_g grains of every point (eqs. 42-43): copies of one orientation, or uniform draws.
+  m.aggregate.orientations.clear();
+  for (std::size_t k = 0; k < grains; ++k)
+    m.aggregate.orientations.push_back(kind == "random" ? random_orientation(s.seed, k) : g);
   return s;
 }
 
@@ -82,8 +103,7 @@ CrystalBody crystal_body(const CrystalSpec& spec, const PointCloud& cloud) {
       const auto k = static_cast<std::uint64_t>(orientation.size());
       const int span = spec.grain_planes[1] - spec.grain_planes[0] + 1;
       left = spec.grain_planes[0] + std::min(span - 1, static_cast<int>(rng::uniform(spec.seed, k, 3) * span));
-      const Vec3 a = materials::random_bunge_angles(spec.seed, k);
-      orientation.push_back(materials::bunge_rotation(a[0], a[1], a[2]));
+      orientation.push_back(random_orientation(spec.seed, k));
       grain = static_cast<int>(orientation.size()) - 1;
     }
     g = grain;
@@ -93,7 +113,7 @@ CrystalBody crystal_body(const CrystalSpec& spec, const PointCloud& cloud) {
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     body.grain[i] = plane.at(cloud.x[i][0]);
     CrystalMaterial m = spec.base;
-    m.orientation = orientation[static_cast<std::size_t>(body.grain[i])];
+    m.aggregate.orientations = {orientation[static_cast<std::size_t>(body.grain[i])]};
     body.materials.push_back(m);
   }
   return body;
@@ -101,8 +121,9 @@ CrystalBody crystal_body(const CrystalSpec& spec, const PointCloud& cloud) {
 
 double schmid_factor_along_x(const CrystalMaterial& m) {
   double best = 0.0;
-  for (const auto& s : m.crystal.systems)
-    best = std::max(best, std::abs((m.orientation * s.direction)[0] * (m.orientation * s.normal)[0]));
+  const Mat3& g = m.aggregate.orientations.front();
+  for (const auto& s : m.aggregate.crystal.systems)
+    best = std::max(best, std::abs((g * s.direction)[0] * (g * s.normal)[0]));
   return best;
 }
 

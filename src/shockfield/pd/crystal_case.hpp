@@ -1,8 +1,10 @@
 #pragma once
 // [material] model = "crystal" of a PD case file (docs/pd.md): the crystal viscoplastic law of
 // seed 004 eqs. 18-41 with Table 1 (OFHC copper) defaults, and the orientation of the body: a
-// single crystal loaded along a crystal direction or given Bunge Euler angles, or a polycrystal
-// whose grains are slabs of 8-12 lattice planes across x with random orientations (seed 004 §4.2).
+// single crystal loaded along a crystal direction or given Bunge Euler angles, a polycrystal
+// whose grains are slabs of 8-12 lattice planes across x with random orientations (seed 004 §4.2),
+// or N_g grains per point under the Taylor assumption (eqs. 42-43), copies of one orientation or
+// random ones shared by every point.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -14,8 +16,8 @@
 namespace shockfield::pd {
 
 struct CrystalSpec {
-  CrystalMaterial base;                  ///< parameters; `orientation` is the single crystal's g
-  bool polycrystal = false;
+  CrystalMaterial base;                  ///< parameters and the N_g grains of every point
+  bool polycrystal = false;              ///< slab grains (each point then has one of them)
   std::array<int, 2> grain_planes{8, 12};  ///< lattice planes per grain, drawn uniformly in [lo, hi]
   std::uint64_t seed = 1;                ///< stream of the grain sizes and orientations
 };
@@ -31,7 +33,8 @@ struct CrystalBody {
 /// The per-point materials of the body.
 CrystalBody crystal_body(const CrystalSpec& spec, const PointCloud& cloud);
 
-/// Largest Schmid factor |(g m0)·x (g n0)·x| of uniaxial stress along the sample x axis.
+/// Largest Schmid factor |(g m0)·x (g n0)·x| of uniaxial stress along the sample x axis, of the
+/// point's first grain.
 double schmid_factor_along_x(const CrystalMaterial& m);
 
 }  // namespace shockfield::pd

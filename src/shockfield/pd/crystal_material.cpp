@@ -5,31 +5,42 @@
 namespace shockfield::pd {
 
 double CrystalMaterial::longitudinal_modulus() const {
-  const Vec3 a = orientation.transpose() * Vec3::UnitX();
-  const double quartic = a.array().pow(4).sum();
-  return crystal.c12 + 2.0 * crystal.c44 + (crystal.c11 - crystal.c12 - 2.0 * crystal.c44) * quartic;
+  const auto& c = aggregate.crystal;
+  double sum = 0.0;
+  for (const Mat3& g : aggregate.orientations) {
+    const Vec3 a = g.transpose() * Vec3::UnitX();
+    sum += c.c12 + 2.0 * c.c44 + (c.c11 - c.c12 - 2.0 * c.c44) * a.array().pow(4).sum();
+  }
+  return sum / static_cast<double>(aggregate.orientations.size());
 }
 
-void CrystalMaterial::save(const State& s, double* out) const {
-  const std::size_t n = crystal.systems.size();
-  std::copy_n(s.orientation.data(), 9, out);
-  std::copy_n(s.lattice.data(), 9, out + 9);
-  std::copy_n(s.fp.data(), 9, out + 18);
-  std::copy_n(s.resistance.data(), n, out + 27);
-  std::copy_n(s.slip.data(), n, out + 27 + n);
-  out[27 + 2 * n] = s.accumulated_slip;
-  out[28 + 2 * n] = static_cast<double>(s.substeps);
+void CrystalMaterial::save(const State& state, double* out) const {
+  const std::size_t n = aggregate.crystal.systems.size();
+  for (const auto& s : state) {
+    std::copy_n(s.orientation.data(), 9, out);
+    std::copy_n(s.lattice.data(), 9, out + 9);
+    std::copy_n(s.fp.data(), 9, out + 18);
+    std::copy_n(s.resistance.data(), n, out + 27);
+    std::copy_n(s.slip.data(), n, out + 27 + n);
+    out[27 + 2 * n] = s.accumulated_slip;
+    out[28 + 2 * n] = static_cast<double>(s.substeps);
+    out += grain_state_size();
+  }
 }
 
-void CrystalMaterial::load(State& s, const double* in) const {
-  const std::size_t n = crystal.systems.size();
-  s.orientation = Mat3(in);
-  s.lattice = Mat3(in + 9);
-  s.fp = Mat3(in + 18);
-  s.resistance.assign(in + 27, in + 27 + n);
-  s.slip.assign(in + 27 + n, in + 27 + 2 * n);
-  s.accumulated_slip = in[27 + 2 * n];
-  s.substeps = static_cast<long long>(in[28 + 2 * n]);
+void CrystalMaterial::load(State& state, const double* in) const {
+  const std::size_t n = aggregate.crystal.systems.size();
+  state.resize(aggregate.orientations.size());
+  for (auto& s : state) {
+    s.orientation = Mat3(in);
+    s.lattice = Mat3(in + 9);
+    s.fp = Mat3(in + 18);
+    s.resistance.assign(in + 27, in + 27 + n);
+    s.slip.assign(in + 27 + n, in + 27 + 2 * n);
+    s.accumulated_slip = in[27 + 2 * n];
+    s.substeps = static_cast<long long>(in[28 + 2 * n]);
+    in += grain_state_size();
+  }
 }
 
 }  // namespace shockfield::pd

@@ -20,6 +20,7 @@
 #include "shockfield/pd/bond_force.hpp"
 #include "shockfield/pd/case_file.hpp"
 #include "shockfield/pd/checkpoint.hpp"
+#include "shockfield/pd/homogeneous_case.hpp"
 #include "shockfield/pd/run_output.hpp"
 
 namespace shockfield::pd {
@@ -65,7 +66,10 @@ void derive_material(const Config& root, const PdCase& c, const std::vector<Crys
   }
   const CrystalMaterial& m = materials.front();
   root.derive("elastic_wave_speed_m_s", std::sqrt(m.longitudinal_modulus() / m.density));
-  root.derive("schmid_factor", schmid_factor_along_x(m));
+  if (m.aggregate.orientations.size() == 1)
+    root.derive("schmid_factor", schmid_factor_along_x(m));
+  else
+    root.derive("taylor_grains", static_cast<long long>(m.aggregate.orientations.size()));
 }
 
 // The materials of the points (one when all share it) and the grain of each point.
@@ -86,8 +90,8 @@ struct ModelRun {
   double density = 0.0;
   PointFields fields;
   std::function<std::vector<double>()> save;
-  /// Takes back the saved state once `sim` holds the checkpointed positions.
-  std::function<void(Simulation&, const std::vector<double>&)> restore;
+  /// Takes back the saved state.
+  std::function<void(const std::vector<double>&)> restore;
   std::function<void(const Config&)> derive;
 };
 
@@ -109,7 +113,7 @@ ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const
                {[&force](std::size_t i) { return force.stress(i); },
                 [&force](std::size_t i) { return plastic_measure(force.state(i)); }, grain, {}},
                [&force] { return force.saved_state(); },
-               [&force](Simulation&, const std::vector<double>& state) { force.restore_state(state); },
+               [&force](const std::vector<double>& state) { force.restore_state(state); },
                [&c, materials = std::move(materials), grain = grain](const Config& r) {
                  derive_material(r, c, materials, grain);
                }};
@@ -117,10 +121,8 @@ ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const
   return run;
 }
 
-// PMB or LPS: no stress nor plastic measure (NaN columns), damage only. Their state (intact bonds,
-// critical stretches, dilatations) follows from the positions as long as no bond has broken, so
-// the checkpoint keeps the intact bond count and a resume re-evaluates the forces at the restored
-// positions; a checkpoint taken after bonds broke is refused.
+// PMB or LPS: no stress nor plastic measure (NaN columns), damage only; the checkpoint keeps the
+// bonds' intact flags and the points' critical stretches (BondForce::saved_state).
 template <class Law>
 ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, const PointCloud& cloud,
                     const Family& family) {
@@ -129,15 +131,8 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
   ModelRun run{nullptr,
                spec.density,
                {{}, {}, std::vector<int>(cloud.size(), 0), {}},
-               [&force] { return std::vector<double>{static_cast<double>(force.intact_bonds())}; },
-               [&force, &family](Simulation& sim, const std::vector<double>& state) {
-                 if (state.size() != 1 || state[0] != static_cast<double>(family.bonds()))
-                   throw InputError(fmt::format("--resume: the checkpoint was written after bonds broke ({} of {} "
-                                                "intact); a {} run resumes only from before the first break",
-                                                state.empty() ? 0.0 : state[0], family.bonds(), force.name()));
-                 std::vector<Vec3> scratch;
-                 force.compute({sim.positions(), sim.velocities(), 0.0}, scratch);
-               },
+               [&force] { return force.saved_state(); },
+               [&force](const std::vector<double>& state) { force.restore_state(state); },
                {}};
   run.force = std::move(model);
   return run;
@@ -172,7 +167,7 @@ void run_with(const Config& root, const RunOptions& options, const PdCase& c, co
     if (!fs::exists(checkpoint)) throw InputError(fmt::format("--resume: no checkpoint in '{}'", folder.string()));
     std::vector<double> state;
     counters = read_checkpoint(checkpoint, sim, state);
-    m.restore(sim, state);
+    m.restore(state);
     resume = ResumePoint{sim.step_count(), counters.profiles};
     log.info("resumed from {} at step {}, t = {} s", checkpoint.string(), sim.step_count(), sim.time());
   } else {
@@ -233,6 +228,7 @@ void run_with(const Config& root, const RunOptions& options, const PdCase& c, co
 }  // namespace
 
 void run_case(const Config& root, const RunOptions& options) {
+  if (root.has("homogeneous")) return run_homogeneous(root, options);
   const PdCase c = read_pd_case(root);
   root.check_unknown_keys();
   const PointCloud cloud = lattice_cloud(c.body.dim, c.body.counts, c.body.spacing);

@@ -4,6 +4,7 @@
 
 #include "shockfield/pd/bar_impact.hpp"
 #include "shockfield/pd/correspondence.hpp"
+#include "shockfield/pd/crystal_material.hpp"
 
 namespace shockfield::pd::testing {
 
@@ -12,19 +13,22 @@ inline SmallStrainJ2 seed_aluminium(double yield = 270e6) {
   return SmallStrainJ2::from_young(2703.0, 77.11e9, 0.334, yield, 0.0, 0.0);
 }
 
-struct Bar {
+// The bar with any correspondence material (J2, crystal).
+template <class Material>
+struct MaterialBar {
   PointCloud cloud;
   Family family;
-  CorrespondenceForce<SmallStrainJ2>* force = nullptr;
+  CorrespondenceForce<Material>* force = nullptr;
   std::unique_ptr<Simulation> sim;
 
-  Bar(int points, double spacing, double m, double velocity, CorrespondenceOptions options,
-      SmallStrainJ2 material = seed_aluminium())
+  MaterialBar(int points, double spacing, double m, double velocity, CorrespondenceOptions options,
+              const Material& material)
       : cloud(bar_cloud(points, spacing)), family(build_family(cloud, m * spacing, VolumeCorrection::linear)) {
-    auto model = std::make_unique<CorrespondenceForce<SmallStrainJ2>>(cloud, family, std::vector{material},
-                                                                      Influence(), options);
+    auto model = std::make_unique<CorrespondenceForce<Material>>(cloud, family, std::vector<Material>(1, material),
+                                                                 Influence(), options);
     force = model.get();
-    sim = std::make_unique<Simulation>(cloud, family, std::move(model), std::vector{material.density});
+    sim = std::make_unique<Simulation>(cloud, family, std::move(model),
+                                       std::vector{material.reference_density()});
     set_impact_velocity(*sim, velocity);
   }
   void run_until(double t, double dt) {
@@ -41,6 +45,18 @@ struct Bar {
     for (std::size_t i = 0; i < cloud.size(); ++i) out.push_back(-force->stress(i)(0, 0));
     return out;
   }
+  /// The plastic measure of every point (ε̄p for J2, mean γ_tot for a crystal).
+  std::vector<double> plastic() const {
+    std::vector<double> out;
+    for (std::size_t i = 0; i < cloud.size(); ++i) out.push_back(plastic_measure(force->state(i)));
+    return out;
+  }
+};
+
+struct Bar : MaterialBar<SmallStrainJ2> {
+  Bar(int points, double spacing, double m, double velocity, CorrespondenceOptions options,
+      SmallStrainJ2 material = seed_aluminium())
+      : MaterialBar(points, spacing, m, velocity, options, material) {}
 };
 
 }  // namespace shockfield::pd::testing

@@ -83,3 +83,26 @@ TEST(BondDynamics, StableStepEstimateAndUnstableStepDiagnosis) {
     }
   }
 }
+
+// The damage state round-trips: a fresh force restored from saved_state() has the same broken
+// bonds and critical stretches (its next forces are identical), and a state of the wrong size is
+// refused.
+TEST(BondDynamics, DamageStateRoundTrips) {
+  Body body;
+  std::vector<Vec3> y = body.cloud.x, v(y.size(), Vec3::Zero()), f1, f2;
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] *= 1.0 + 2e-3 * std::sin(3.1 * static_cast<double>(i));
+  LpsForce broken(body.cloud, body.family, LpsModel{70e9, 26e9}, Influence(Influence::Kind::inverse), {1e-3, 0.25});
+  for (int k = 0; k < 2; ++k) broken.compute({y, v, 1e-9}, f1);
+  ASSERT_LT(broken.intact_bonds(), body.family.bonds());
+  ASSERT_GT(broken.intact_bonds(), 0u);
+  LpsForce restored(body.cloud, body.family, LpsModel{70e9, 26e9}, Influence(Influence::Kind::inverse), {1e-3, 0.25});
+  restored.restore_state(broken.saved_state());
+  EXPECT_EQ(restored.intact_bonds(), broken.intact_bonds());
+  EXPECT_EQ(restored.damage(), broken.damage());
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] *= 1.0 + 1e-3 * std::cos(1.3 * static_cast<double>(i));
+  broken.compute({y, v, 1e-9}, f1);
+  restored.compute({y, v, 1e-9}, f2);
+  EXPECT_EQ(f1, f2);
+  EXPECT_EQ(restored.saved_state(), broken.saved_state());
+  EXPECT_THROW(restored.restore_state(std::vector<double>(7, 1.0)), InputError);
+}

@@ -9,31 +9,25 @@
 #include <Eigen/Geometry>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/materials/strength/crystal_taylor.hpp"
+#include "shockfield/materials/strength/crystal_compression.hpp"
 
 using namespace shockfield;
 using namespace shockfield::materials;
 
 namespace {
 
-// Eq. 44: isochoric compression along z, ε = −rate·t.
-Mat3 eq44(double eps) { return Vec3(std::exp(-0.5 * eps), std::exp(-0.5 * eps), std::exp(eps)).asDiagonal(); }
-
-// Axial stress of eq. 45 (zero lateral stress): σ33 ≈ s33 − ½(s11 + s22) = σ33 − ½(σ11 + σ22).
-double axial(const Mat3& sigma) { return sigma(2, 2) - 0.5 * (sigma(0, 0) + sigma(1, 1)); }
-
-// Compresses an aggregate by eq. 44 at 0.01/s to `strain`; returns −σ33 (positive) at the end
+// Compresses an aggregate by eq. 44 (along z) at 0.01/s to `strain`; returns −σ33 (positive) at the end
 // and leaves the grains' state in `state`.
 double compress(const TaylorAggregate& agg, double strain, int steps, TaylorAggregate::State& state) {
   state = agg.initial_state();
   const double rate = 0.01, dt = strain / rate / steps;
   Mat3 f_old = Mat3::Identity(), sigma = Mat3::Zero();
   for (int k = 1; k <= steps; ++k) {
-    const Mat3 f_new = eq44(-rate * k * dt);
+    const Mat3 f_new = isochoric_compression(-rate * k * dt);
     sigma = agg.update(state, f_old, f_new, dt);
     f_old = f_new;
   }
-  return -axial(sigma);
+  return -axial_stress(sigma);
 }
 
 // g for loading along a crystal axis: crystal `axis` onto the sample z axis.

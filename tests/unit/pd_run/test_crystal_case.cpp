@@ -1,6 +1,6 @@
 // model = "crystal" case files: grains of a polycrystal, the single crystal's Schmid factors,
-// and a stopped and resumed crystal run that writes the same profiles bitwise (the crystal state
-// goes through the checkpoint).
+// Taylor grains per point, and stopped and resumed crystal runs (slab grains, Taylor grains) that
+// write the same profiles bitwise (the crystal state goes through the checkpoint).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -58,22 +58,25 @@ TEST(PdCrystalCase, GrainsOfEightToTwelvePlanes) {
     if (g + 1 == body.grains) continue;  // the last grain is cut by the body's end
     EXPECT_TRUE(n >= 8 && n <= 12) << "grain " << g << " has " << n << " points";
   }
-  EXPECT_NE(body.materials[0].orientation, body.materials[119].orientation);
+  EXPECT_NE(body.materials[0].aggregate.orientations[0], body.materials[119].aggregate.orientations[0]);
 }
 
 TEST(PdCrystalCase, SchmidFactorsOfHundredAndHundredEleven) {
   CrystalMaterial m;
-  m.orientation = materials::rotation_loading_along(Vec3(1, 0, 0));
+  m.aggregate.orientations = {materials::rotation_loading_along(Vec3(1, 0, 0))};
   EXPECT_NEAR(schmid_factor_along_x(m), 1.0 / std::sqrt(6.0), 1e-12);
-  m.orientation = materials::rotation_loading_along(Vec3(1, 1, 1));
+  m.aggregate.orientations = {materials::rotation_loading_along(Vec3(1, 1, 1))};
   EXPECT_NEAR(schmid_factor_along_x(m), std::sqrt(6.0) / 9.0, 1e-12);
 }
 
-TEST(PdCrystalCase, StoppedAndResumedRunIsBitwiseIdentical) {
-  const auto dir = std::filesystem::temp_directory_path() / "shockfield_pd_crystal_resume";
+namespace {
+
+// Stops `text` after 17 steps, resumes it and compares the output with an uninterrupted run.
+void expect_bitwise_resume(const std::string& text, const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("shockfield_pd_crystal_resume_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  std::ofstream(dir / "case.toml") << kCase;
+  std::ofstream(dir / "case.toml") << text;
   auto run = [&](const std::string& out, long long stop_after, bool resume) {
     RunOptions o;
     o.case_file = dir / "case.toml";
@@ -89,5 +92,42 @@ TEST(PdCrystalCase, StoppedAndResumedRunIsBitwiseIdentical) {
   EXPECT_THROW(run("split", 17, false), StopRequested);
   run("split", 0, true);
   for (const char* f : {"series.csv", "profiles/profile_1.csv", "profiles/profile_2.csv", "profiles/index.csv"})
-    EXPECT_EQ(slurp(dir / "straight" / f), slurp(dir / "split" / f)) << f;
+    EXPECT_EQ(slurp(dir / "straight" / f), slurp(dir / "split" / f)) << name << ": " << f;
+}
+
+}  // namespace
+
+TEST(PdCrystalCase, StoppedAndResumedRunIsBitwiseIdentical) { expect_bitwise_resume(kCase, "slabs"); }
+
+// Every point's grains go through the checkpoint (N_g grain states per point).
+TEST(PdCrystalCase, StoppedAndResumedTaylorRunIsBitwiseIdentical) {
+  std::string text = kCase;
+  const std::string slabs = "orientation = \"random_grains\"\ngrain_planes = [8, 12]\n";
+  text.replace(text.find(slabs), slabs.size(), "orientation = \"random\"\ntaylor_grains = 3\n");
+  expect_bitwise_resume(text, "taylor");
+}
+
+// taylor_grains: N_g copies of a direction, or N_g random orientations shared by every point.
+TEST(PdCrystalCase, TaylorGrainsPerPoint) {
+  auto spec_of = [](const std::string& orientation) {
+    std::string text = kCase;
+    const std::string slabs = "orientation = \"random_grains\"\ngrain_planes = [8, 12]\nseed = 5\n";
+    text.replace(text.find(slabs), slabs.size(), orientation);
+    const Config root = Config::parse(text);
+    root.get_choice("method", {"pd"});
+    const PdCase c = read_pd_case(root);
+    root.check_unknown_keys();
+    return std::get<CrystalSpec>(c.material);
+  };
+  const CrystalSpec copies = spec_of("direction = [1.0, 1.0, 1.0]\ntaylor_grains = 3\n");
+  ASSERT_EQ(copies.base.aggregate.orientations.size(), 3u);
+  for (const Mat3& g : copies.base.aggregate.orientations)
+    EXPECT_EQ(g, materials::rotation_loading_along(Vec3(1, 1, 1)));
+  const CrystalSpec random = spec_of("orientation = \"random\"\ntaylor_grains = 4\n");
+  EXPECT_FALSE(random.polycrystal);
+  ASSERT_EQ(random.base.aggregate.orientations.size(), 4u);
+  EXPECT_NE(random.base.aggregate.orientations[0], random.base.aggregate.orientations[1]);
+  const CrystalBody body = crystal_body(random, lattice_cloud(1, {120, 1, 1}, 10e-6));
+  EXPECT_EQ(body.materials.size(), 1u);  // one aggregate shared by every point
+  EXPECT_THROW(spec_of("orientation = \"random_grains\"\ngrain_planes = [8, 12]\ntaylor_grains = 2\n"), InputError);
 }

@@ -9,6 +9,7 @@ TaylorAggregate::State TaylorAggregate::initial_state() const {
 }
 
 Mat3 TaylorAggregate::update(State& s, const Mat3& f_old, const Mat3& f_new, double dt) const {
+  if (s.size() == 1) return crystal.update(s.front(), f_old, f_new, dt);
   Mat3 sum = Mat3::Zero();
   for (auto& grain : s) sum += crystal.update(grain, f_old, f_new, dt);
   return sum / static_cast<double>(s.size());  // eq. 43

@@ -15,7 +15,8 @@ struct TaylorAggregate {
 
   using State = std::vector<CrystalViscoplasticity::State>;
   State initial_state() const;
-  /// Advances every grain from F_old to F_new over dt; returns ⟨σ⟩ (eq. 43).
+  /// Advances every grain from F_old to F_new over dt; returns ⟨σ⟩ (eq. 43). A single grain's
+  /// stress is returned as it is (bitwise the single-crystal law).
   Mat3 update(State& s, const Mat3& f_old, const Mat3& f_new, double dt) const;
   /// Mean accumulated slip γ_tot of the grains.
   static double accumulated_slip(const State& s);

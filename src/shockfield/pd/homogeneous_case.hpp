@@ -1,0 +1,23 @@
+#pragma once
+// `method = "pd"` with a [homogeneous] table: one material point of the crystal law whose N_g
+// grains (the [material] orientation keys with taylor_grains) all follow the isochoric
+// compression of seed 004 eq. 44 (Taylor assumption), the simple-compression test of seed 004
+// §4.1 / Fig. 5 (annealed OFHC copper, Table 1, 50 random orientations). No lattice, no waves: the
+// same [material] as a shock run, driven homogeneously. Keys and outputs: docs/pd.md.
+#include "shockfield/core/config.hpp"
+#include "shockfield/core/run_options.hpp"
+#include "shockfield/materials/strength/crystal_compression.hpp"
+
+namespace shockfield::pd {
+
+/// Reads [homogeneous]: strain_rate, end_strain, strain_increment, output_increment.
+struct HomogeneousSpec {
+  materials::CompressionPath path;
+  double output_increment = 0.01;  ///< |Δε| between output rows
+};
+HomogeneousSpec read_homogeneous(const Config& t);
+
+/// Runs a case whose root has [homogeneous] (after run_case saw it).
+void run_homogeneous(const Config& root, const RunOptions& options);
+
+}  // namespace shockfield::pd
