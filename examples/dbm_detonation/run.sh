@@ -3,13 +3,12 @@
 # structure.toml (slow reaction, resolved zone, for the TNE around the von Neumann peak), then
 # detonation.png and the measured numbers of README.md.
 #   examples/dbm_detonation/run.sh [RUNS_DIR]     (from the repository root)
-# About 15 s per case on one core (1D: the DBM threads over rows, so one thread is fastest).
+# About 5-15 s per case (the DBM threads over 64-cell chunks of rows, so 1D runs use all cores).
 set -eu
 here=$(dirname "$0")
 runs=${1:-runs/dbm_detonation}
 bin=${SHOCKFIELD:-./build/release/shockfield}
 mkdir -p "$runs"
-export OMP_NUM_THREADS=1
 
 for case in case structure; do
     "$bin" run "$here/$case.toml" --output "$runs/$case" --overwrite -q

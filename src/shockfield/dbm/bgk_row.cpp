@@ -76,41 +76,40 @@ void BgkRow::equilibrium_chunk(const double* f, std::size_t c0, int n) {
                         work_.data());
 }
 
-void BgkRow::rhs(const double* f, int j, const double* convection, const RowOutput& output) {
+void BgkRow::rhs(const double* f, int j, int chunk_index, const double* convection,
+                 const RowOutput& output) {
   const std::size_t N = lattice_.cells();
   const auto sy = static_cast<std::ptrdiff_t>(lattice_.stride());
   const int nx = lattice_.nx;
+  const int i0 = chunk_index * chunk, n = std::min(chunk, nx - i0);
+  const std::size_t c0 = lattice_.at(i0, j);
   double* L = rhs_.data();
   double* slope_x = slope_x_.data();
-  for (int i0 = 0; i0 < nx; i0 += chunk) {
-    const int n = std::min(chunk, nx - i0);
-    const std::size_t c0 = lattice_.at(i0, j);
-    equilibrium_chunk(f, c0, n);
-    for (int k = 0; k < model_.size(); ++k) {
-      const double* fk = f + k * N + c0;
-      const double* eq = eq_.data() + static_cast<std::size_t>(k) * n;
-      if (convection) {
-        const double* c = convection + (static_cast<std::size_t>(k) * lattice_.ny + j) * nx + i0;
-        for (int i = 0; i < n; ++i) L[i] = -c[i] - (fk[i] - eq[i]) * inv_tau_;
-      } else {
-        const double vx_dx = model_.vx[k] / lattice_.dx, vy_dy = model_.vy[k] / lattice_.dy;
-        const int sign_y = sign_of(model_.vy[k]);
-        if (model_.vx[k] > 0.0)
-          nnd_bgk<1>(sign_y, fk, eq, slope_x, L, n, sy, vx_dx, vy_dy, inv_tau_);
-        else if (model_.vx[k] < 0.0)
-          nnd_bgk<-1>(sign_y, fk, eq, slope_x, L, n, sy, vx_dx, vy_dy, inv_tau_);
-        else
-          nnd_bgk<0>(sign_y, fk, eq, slope_x, L, n, sy, vx_dx, vy_dy, inv_tau_);
-      }
-      double* o = output.out + k * N + c0;
-      if (!output.base) {
-        std::copy_n(L, n, o);
-        continue;
-      }
-      const double* base = output.base + k * N + c0;
-      const double a = output.a, dt = output.dt;
-      for (int i = 0; i < n; ++i) o[i] = a * base[i] + (1.0 - a) * (fk[i] + dt * L[i]);
+  equilibrium_chunk(f, c0, n);
+  for (int k = 0; k < model_.size(); ++k) {
+    const double* fk = f + k * N + c0;
+    const double* eq = eq_.data() + static_cast<std::size_t>(k) * n;
+    if (convection) {
+      const double* c = convection + (static_cast<std::size_t>(k) * lattice_.ny + j) * nx + i0;
+      for (int i = 0; i < n; ++i) L[i] = -c[i] - (fk[i] - eq[i]) * inv_tau_;
+    } else {
+      const double vx_dx = model_.vx[k] / lattice_.dx, vy_dy = model_.vy[k] / lattice_.dy;
+      const int sign_y = sign_of(model_.vy[k]);
+      if (model_.vx[k] > 0.0)
+        nnd_bgk<1>(sign_y, fk, eq, slope_x, L, n, sy, vx_dx, vy_dy, inv_tau_);
+      else if (model_.vx[k] < 0.0)
+        nnd_bgk<-1>(sign_y, fk, eq, slope_x, L, n, sy, vx_dx, vy_dy, inv_tau_);
+      else
+        nnd_bgk<0>(sign_y, fk, eq, slope_x, L, n, sy, vx_dx, vy_dy, inv_tau_);
     }
+    double* o = output.out + k * N + c0;
+    if (!output.base) {
+      std::copy_n(L, n, o);
+      continue;
+    }
+    const double* base = output.base + k * N + c0;
+    const double a = output.a, dt = output.dt;
+    for (int i = 0; i < n; ++i) o[i] = a * base[i] + (1.0 - a) * (fk[i] + dt * L[i]);
   }
 }
 

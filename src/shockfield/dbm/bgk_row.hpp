@@ -27,12 +27,16 @@ class BgkRow {
   BgkRow(const VelocityModel& model, const MomentInversion& inversion, const Lattice& lattice,
          double b, double tau);
 
-  /// L(f) on the cells of interior row j (f with ghosts filled). With `convection` (Q arrays of
+  static constexpr int chunk = 64;
+  /// Number of chunks of a row: rows × chunks is the parallel work (so 1D runs use all threads).
+  static int chunks(int nx) { return (nx + chunk - 1) / chunk; }
+
+  /// L(f) on chunk chunk_index of interior row j (f with ghosts filled). With `convection` (Q arrays of
   /// nx·ny, index i + nx·j) v_k·∇f_k is taken from it instead of NND.
-  void rhs(const double* f, int j, const double* convection, const RowOutput& output);
+  void rhs(const double* f, int j, int chunk_index, const double* convection,
+           const RowOutput& output);
 
  private:
-  static constexpr int chunk = 64;
   /// ρ, u, T and f^eq of the n cells of the chunk starting at storage index c0.
   void equilibrium_chunk(const double* f, std::size_t c0, int n);
 

@@ -87,7 +87,7 @@ void ReactiveFlow::source(const std::vector<double>& f, std::vector<double>& rhs
   const double a = kKeep[stage_];
   std::vector<double>& target = stage_ == 2 ? phi_ : phi_stage_;
   const std::vector<double>& previous = stage_ == 0 ? phi0_ : phi_stage_;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for collapse(2) schedule(static)
   for (int j = 0; j < l.ny; ++j)
     for (int i = 0; i < l.nx; ++i) {
       const std::size_t c = l.at(i, j);
@@ -128,7 +128,7 @@ void ReactiveFlow::stage_rates(const std::vector<double>& f, const std::vector<d
 #pragma omp parallel
   {
     std::vector<double> r(Q);
-#pragma omp for schedule(static)
+#pragma omp for collapse(2) schedule(static)
     for (int j = 0; j < l.ny; ++j)
       for (int i = 0; i < l.nx; ++i) {
         const std::size_t c = l.at(i, j);
@@ -151,7 +151,7 @@ void ReactiveFlow::fill_lambda(const std::vector<double>& f, const std::vector<d
   const Lattice& l = sim_.lattice();
   const std::size_t N = l.cells();
   const int Q = sim_.model().size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for collapse(2) schedule(static)
   for (int j = 0; j < l.ny; ++j)
     for (int i = 0; i < l.nx; ++i) {
       const std::size_t c = l.at(i, j);

@@ -95,9 +95,10 @@ void Simulation::stage(std::vector<double>& f, const RowOutput& output) {
 #pragma omp parallel
   {
     BgkRow row(model_, inversion_, lattice_, b_, settings_.tau);
+    const int chunks = BgkRow::chunks(lattice_.nx);
 #pragma omp for schedule(static)
-    for (int j = 0; j < lattice_.ny; ++j)
-      row.rhs(f.data(), j, spectral_ ? convection_.data() : nullptr, output);
+    for (int t = 0; t < lattice_.ny * chunks; ++t)
+      row.rhs(f.data(), t / chunks, t % chunks, spectral_ ? convection_.data() : nullptr, output);
   }
 }
 
@@ -117,7 +118,7 @@ void Simulation::step() {
     auto combine = [&](double a, std::vector<double>& in, std::vector<double>& out) {
       stage(in, {work_.data()});
       source_(in, work_);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for collapse(2) schedule(static)
       for (int j = 0; j < lattice_.ny; ++j)
         for (int k = 0; k < Q; ++k) {
           const std::size_t row = k * N + lattice_.at(0, j);
