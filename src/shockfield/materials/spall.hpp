@@ -16,6 +16,8 @@
 // approximation; Antoun et al. §2.2, eq. 2.2).
 #include <string>
 
+#include "shockfield/core/types.hpp"
+
 namespace shockfield::materials {
 
 struct PointState;
@@ -25,11 +27,12 @@ struct SpallFailure {
 
   bool enabled() const { return strength > 0.0; }
   void validate(const std::string& where) const;
-  /// Applies the criterion to a point just updated by SolidMaterial::update, whose EOS pressure
-  /// P = a + b·e was found from the trapezoidal energy equation over the specific-volume change
-  /// dv. Cutting P to 0 there means the trapezoid should have used 0: e gains ½·P·dv (exact, as
-  /// P is linear in e).
-  void apply(PointState& p, double dv) const;
+  /// Applies the criterion to a point just updated by SolidMaterial::update, whose energy came
+  /// from the trapezoidal rule over the step: −½(P_old + P + 2q)·dv + v̄·½(s_old + s):Δe, with dv
+  /// the change of specific volume, v̄ its mean and Δe the deviatoric strain increment. Cutting
+  /// P to 0 and s to 0 at the end of the step means the trapezoid should have used 0 there: e
+  /// gains ½·P·dv (exact, as P = a + b·e is linear in e) and loses v̄·½·s:Δe.
+  void apply(PointState& p, double dv, double v_mean, const Mat3& de) const;
 };
 
 }  // namespace shockfield::materials
