@@ -1,7 +1,8 @@
 #include "shockfield/materials/spall.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/materials/solid_material.hpp"
@@ -10,7 +11,8 @@ namespace shockfield::materials {
 
 void SpallFailure::validate(const std::string& where) const {
   if (!(strength >= 0.0) || !std::isfinite(strength))
-    throw InputError(fmt::format("{}: spall_strength = {} (expected >= 0 Pa; 0 = no tensile failure)", where, strength));
+    throw InputError(fmt::format(
+        "{}: spall_strength = {} (expected >= 0 Pa; 0 = no tensile failure)", where, strength));
 }
 
 void SpallFailure::apply(PointState& p, double dv, double v_mean, const Mat3& de) const {

@@ -32,7 +32,8 @@ TEST(SpallFailure, FailsAtTheSpallStrengthAndThenCarriesOnlyCompression) {
   m.validate();
   PointState p = m.initial_state();
   const double rho0 = m.eos.rho0;
-  double work = 0.0;  // Σ v·σ:D·dt with the trapezoidal mean stress (what the energy equation integrates)
+  double work =
+      0.0;  // Σ v·σ:D·dt with the trapezoidal mean stress (what the energy equation integrates)
   bool failed = false;
   for (int i = 0; i < 4000 && !failed; ++i) {
     const double before = p.stress()(1, 1), v_old = p.deformation.determinant() / rho0;

@@ -52,7 +52,8 @@ TEST(MpmCavityTracker, FollowsAnIncompressiblyGrowingCavity) {
   const Block b = block_with_cavity();
   mpm::CavityTracker tracker(2, b.cavity, kSpacing);
   const double a_first = tracker.measure(b.reference, 0.0).size;
-  EXPECT_NEAR(a_first, std::numbers::pi * kRadius0 * kRadius0, 0.04 * std::numbers::pi * kRadius0 * kRadius0);
+  EXPECT_NEAR(a_first, std::numbers::pi * kRadius0 * kRadius0,
+              0.04 * std::numbers::pi * kRadius0 * kRadius0);
   for (int k = 1; k <= 30; ++k) {
     const double a = kRadius0 * (1.0 + 0.05 * k);
     const mpm::CavityMeasure m = tracker.measure(grown(b, a), 1e-9 * k);

@@ -50,7 +50,8 @@ std::map<std::string, double> row_at(const fs::path& series, double t) {
     std::map<std::string, double> row;
     std::stringstream ss(line);
     std::string cell;
-    for (std::size_t k = 0; k < names.size() && std::getline(ss, cell, ','); ++k) row[names[k]] = std::strtod(cell.c_str(), nullptr);
+    for (std::size_t k = 0; k < names.size() && std::getline(ss, cell, ','); ++k)
+      row[names[k]] = std::strtod(cell.c_str(), nullptr);
     if (std::abs(row["time_s"] - t) < best_dt) best_dt = std::abs(row["time_s"] - t), best = row;
   }
   return best;
@@ -80,13 +81,15 @@ Window run_porous(double cell, const fs::path& dir) {
   mpm::run_case(root, o);
   auto r = row_at(out / "series.csv", 250e-9);
   EXPECT_NEAR(r["time_s"], 250e-9, 3e-9);
-  return {r["bottom_h800um_density_mean"], r["bottom_h800um_pressure_mean"], r["bottom_h800um_temperature_mean"]};
+  return {r["bottom_h800um_density_mean"], r["bottom_h800um_pressure_mean"],
+          r["bottom_h800um_temperature_mean"]};
 }
 
 }  // namespace
 
 TEST(MpmSlow, PorousResolution) {
-  const fs::path base = fs::temp_directory_path() / ("shockfield_mpm_porous_" + std::to_string(getpid()));
+  const fs::path base =
+      fs::temp_directory_path() / ("shockfield_mpm_porous_" + std::to_string(getpid()));
   for (double cell : {20e-6, 10e-6}) {
     const fs::path dir = base / std::to_string(static_cast<int>(std::lround(cell * 1e6)));
     fs::create_directories(dir);
@@ -98,7 +101,8 @@ TEST(MpmSlow, PorousResolution) {
     RecordProperty("density_" + tag, std::to_string(w.density));
     RecordProperty("pressure_" + tag, std::to_string(w.pressure));
     RecordProperty("temperature_" + tag, std::to_string(w.temperature));
-    std::printf("cell %s: rho %.1f kg/m^3  P %.3f GPa  T %.1f K\n", tag.c_str(), w.density, w.pressure / 1e9, w.temperature);
+    std::printf("cell %s: rho %.1f kg/m^3  P %.3f GPa  T %.1f K\n", tag.c_str(), w.density,
+                w.pressure / 1e9, w.temperature);
   }
   fs::remove_all(base);
 }
