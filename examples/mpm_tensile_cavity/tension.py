@@ -5,11 +5,12 @@ frames, where the tension is highest, and a picture of the pressure field.
   tension.py RUN [RUN ...] [--times T ...] [--out pressure.png] [--csv cavity_area.csv]
 
 For every particle frame (particles.pvd) of every run:
-  - cavity area: a raster of 0.0625 µm cells over the block; each particle covers the cells within
-    its square of half-width (spacing/2)·(ρ0/ρ)^(1/2) (its current area); the cavity is the
-    uncovered component containing the last cavity centroid (periodic in x), not touching the
-    raster's top or bottom rows. Independent of the run's own cavity tracker (series.csv
-    `cavity_size`), which is printed beside it.
+  - cavity area: the run's own tracker (series.csv `cavity_size`, each particle covering its
+    deformed domain F·box) and, as a cross-check, a measurement on the frame: a raster of
+    0.0625 µm cells over the block, each particle covering the cells within its square of
+    half-width (spacing/2)·(ρ0/ρ)^(1/2) (its current area, but not its shape, which the frames do
+    not carry); the cavity is the uncovered component containing the last cavity centroid
+    (periodic in x), not touching the raster's top or bottom rows.
   - highest tension: the lowest particle pressure (−tr σ/3) and where it sits relative to the
     cavity (the 0.5 % most negative particles: their mean |x − x_c| and mean y − y_c).
 The picture has one row per run: particle pressure at --times, and the cavity area against time.
@@ -100,19 +101,19 @@ def main():
 
     table = []
     for name, rows in results.items():
-        a0 = rows[0]["area"]
-        print(f"{name}: t (ns), area (µm²), Φ, tracker area (µm²), min pressure (MPa), "
+        a0 = rows[0]["tracker"]
+        print(f"{name}: t (ns), tracker area (µm²), Φ, frame area (µm²), min pressure (MPa), "
               "0.5 % most negative particles mean |x − x_c| and y − y_c (µm)")
         for r in rows:
-            phi = (a0 - r["area"]) / a0
-            print(f"  {r['t'] * 1e9:5.1f} {r['area'] * 1e12:8.2f} {phi:+7.3f} {r['tracker'] * 1e12:8.2f} "
+            phi = (a0 - r["tracker"]) / a0
+            print(f"  {r['t'] * 1e9:5.1f} {r['tracker'] * 1e12:8.2f} {phi:+7.3f} {r['area'] * 1e12:8.2f} "
                   f"{r['pmin'] / 1e6:9.0f} {r['dx'] * 1e6:+6.1f} {r['dy'] * 1e6:+6.1f}")
-            table.append([name, f"{r['t']:.3g}", f"{r['area']:.5g}", f"{phi:.4f}", f"{r['tracker']:.5g}",
+            table.append([name, f"{r['t']:.3g}", f"{r['tracker']:.5g}", f"{phi:.4f}", f"{r['area']:.5g}",
                           f"{r['pmin']:.4g}", f"{r['dx']:.3g}", f"{r['dy']:.3g}"])
     if a.csv:
         with open(a.csv, "w", newline="") as fh:
             w = csv.writer(fh)
-            w.writerow(["run", "time_s", "cavity_area_m2", "collapsibility", "tracker_area_m2", "min_pressure_Pa",
+            w.writerow(["run", "time_s", "tracker_area_m2", "collapsibility", "frame_area_m2", "min_pressure_Pa",
                         "tension_abs_dx_m", "tension_dy_m"])
             w.writerows(table)
 
@@ -134,8 +135,8 @@ def main():
             fig.colorbar(sc, ax=ax, label="p (MPa), blue = tension", shrink=0.7)
         ax = row[-1]
         t = np.array([r["t"] for r in rows]) * 1e9
-        ax.plot(t, [r["area"] * 1e12 for r in rows], "o-", label="frames (tension.py)")
-        ax.plot(t, [r["tracker"] * 1e12 for r in rows], "s:", ms=4, label="run's tracker (0 = lost)")
+        ax.plot(t, [r["tracker"] * 1e12 for r in rows], "o-", label="run's tracker (series.csv)")
+        ax.plot(t, [r["area"] * 1e12 for r in rows], "s:", ms=4, label="frames, isotropic boxes (tension.py)")
         ax.set_xlabel("t (ns)")
         ax.set_ylabel("cavity area (µm²)")
         ax.set_title(f"{name}: cavity area", fontsize="small")

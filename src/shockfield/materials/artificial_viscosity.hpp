@@ -7,7 +7,9 @@
 // seed-aluminium 1000 m/s symmetric impact (tests/unit/mpm/test_aluminium_impact.cpp): the finite
 // element defaults of LS-DYNA's *CONTROL_BULK_VISCOSITY (Q1 = 1.5, Q2 = 0.06) leave enough ringing
 // behind an MPM shock (±8% stress) that the overshoot raises the eq.-7 temperature rise by ~20%;
-// with these the mean state is unchanged, the ringing ~6%, the temperature within 1%.
+// with these the mean state is unchanged and the ringing ~6%, which still overshoots the final
+// density by 0.6% and the eq.-7 temperature by 5% of its rise; C_L = 0.5 removes that
+// (docs/theory/mpm.md, "Shock temperature").
 #include <string>
 
 namespace shockfield::materials {

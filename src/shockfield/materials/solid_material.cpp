@@ -14,6 +14,7 @@ void SolidMaterial::validate() const {
   strength.validate(where);
   thermal.validate(where);
   viscosity.validate(where);
+  spall.validate(where);
 }
 
 double SolidMaterial::longitudinal_speed(double rho, double e) const {
@@ -68,6 +69,7 @@ void SolidMaterial::update(PointState& p, double rho_ref, const Mat3& velocity_g
   p.plastic_work += dwp;
   p.temperature = thermal.advance(eos, v_old, v_new, p.temperature, dwp, p.shock_volume);
   p.sound_speed = longitudinal_speed(rho_new, e_new);
+  spall.apply(p, dv, 0.5 * (v_old + v_new), de);
   if (!std::isfinite(p.pressure) || !std::isfinite(p.temperature))
     throw RunError(fmt::format("material '{}': non-finite pressure or temperature (ρ = {} kg/m³)", name, rho_new));
 }

@@ -1,6 +1,7 @@
 #pragma once
 // A solid as the seed's MPM sees it (seed 000, §2.2.1): Mie-Grüneisen pressure (eqs. 5-6), J2
-// deviatoric strength (eqs. 1-4), temperature (eqs. 7-8) and a bulk artificial viscosity, plus
+// deviatoric strength (eqs. 1-4), temperature (eqs. 7-8), a bulk artificial viscosity and an
+// optional tensile (spall) failure, plus
 // the update of one material point over a step given its velocity gradient. The update is written
 // once here so that every continuum method (mpm/, later pd/) shares it.
 #include <string>
@@ -8,6 +9,7 @@
 #include "shockfield/core/types.hpp"
 #include "shockfield/materials/artificial_viscosity.hpp"
 #include "shockfield/materials/eos/mie_gruneisen.hpp"
+#include "shockfield/materials/spall.hpp"
 #include "shockfield/materials/strength/j2_plasticity.hpp"
 #include "shockfield/materials/thermal.hpp"
 
@@ -24,6 +26,7 @@ struct PointState {
   double shock_volume = 0.0;            ///< smallest specific volume reached (eq. 7 bookkeeping) [m³/kg]
   double plastic_work = 0.0;            ///< accumulated specific plastic work W_p [J/kg]
   double sound_speed = 0.0;             ///< longitudinal speed √(c_b² + 4G/(3ρ)) [m/s]
+  double damage = 0.0;                  ///< 0 intact, 1 failed in tension (spall.hpp)
 
   Mat3 stress() const { return deviatoric.s - (pressure + viscous_pressure) * Mat3::Identity(); }
 };
@@ -34,6 +37,7 @@ struct SolidMaterial {
   J2Plasticity strength;
   Thermal thermal;
   ArtificialViscosity viscosity;
+  SpallFailure spall;  ///< off unless a spall strength is given
 
   /// InputError naming the material and the parameter when one is out of range.
   void validate() const;

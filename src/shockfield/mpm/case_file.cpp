@@ -49,6 +49,7 @@ materials::SolidMaterial read_material(const Config& t) {
   over("initial_temperature", m.thermal.initial_temperature, Range::positive());
   over("viscosity_quadratic", m.viscosity.quadratic, Range::non_negative());
   over("viscosity_linear", m.viscosity.linear, Range::non_negative());
+  over("spall_strength", m.spall.strength, Range::non_negative());
   try {
     m.validate();
   } catch (const InputError& e) {

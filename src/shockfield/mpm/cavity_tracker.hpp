@@ -4,11 +4,15 @@
 // of the material above it and downward velocity below it.
 //
 // The cavity is measured on a raster of half the particle spacing in a box around its last
-// centre: each particle covers the raster cells inside its box of half-width l_p·J^(1/d) (l_p the
-// initial half-spacing, J = det F), and the cavity is the set of uncovered cells connected to its
+// centre: each particle covers the raster cells inside its deformed domain x_p + F·[−l_p, l_p]^d
+// (l_p the initial half-spacing; a square of the current area, l_p·J^(1/d), is not enough: around
+// a growing cavity the hoop stretch exceeds J^(1/d) and the squares leave radial slivers that join
+// the cavity to the box edge), and the cavity is the set of uncovered cells connected to its
 // last interior that does not reach the box boundary (so a cavity vented through the free surface
 // counts as gone). The centre follows the material: it moves with the mean velocity of the ring
 // of particles around the cavity, then snaps to the centroid of the cells found.
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "shockfield/mpm/particles.hpp"
@@ -36,6 +40,10 @@ class CavityTracker {
   void restore(const std::vector<double>& s);
 
  private:
+  /// Marks the raster cells whose centre lies in the particle's deformed domain.
+  void cover_domain(const Vec3& x, const Vec3& half, const Mat3& deformation, const Vec3& lo,
+                    const std::array<int, 3>& dims, std::vector<std::uint8_t>& covered) const;
+
   int dim_;
   double r0_, cell_;
   Vec3 centre_;

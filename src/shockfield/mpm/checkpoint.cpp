@@ -8,9 +8,9 @@
 namespace shockfield::mpm {
 namespace {
 
-constexpr double kFormatVersion = 1;
+constexpr double kFormatVersion = 2;  // 2: damage added
 // Scalars of materials::PointState in checkpoint order.
-constexpr int kScalars = 9;
+constexpr int kScalars = 10;
 
 template <int N, class Get>
 std::vector<double> pack(std::size_t n, Get get) {
@@ -55,7 +55,7 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
                const auto& s = p.state[i];
                return Eigen::Matrix<double, kScalars, 1>(
                    (Eigen::Matrix<double, kScalars, 1>() << s.deviatoric.plastic_strain, s.pressure, s.viscous_pressure,
-                    s.energy, s.temperature, s.shock_volume, s.plastic_work, s.sound_speed, p.mass[i])
+                    s.energy, s.temperature, s.shock_volume, s.plastic_work, s.sound_speed, p.mass[i], s.damage)
                        .finished());
              }), {n, kScalars});
     if (!cavity_state.empty()) h5.write("cavity", cavity_state);
@@ -81,7 +81,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   unpack<kScalars>(h5.read_doubles("scalars"), n, "scalars", f, [&](std::size_t i, const double* d) {
     auto& s = p.state[i];
     s.deviatoric.plastic_strain = d[0], s.pressure = d[1], s.viscous_pressure = d[2], s.energy = d[3];
-    s.temperature = d[4], s.shock_volume = d[5], s.plastic_work = d[6], s.sound_speed = d[7];
+    s.temperature = d[4], s.shock_volume = d[5], s.plastic_work = d[6], s.sound_speed = d[7], s.damage = d[9];
     if (p.mass[i] != d[8])
       throw InputError(fmt::format("{}: particle {} has mass {} kg, the case gives {} kg (a different sample)", f, i, d[8],
                                    p.mass[i]));

@@ -110,8 +110,8 @@ io::VtkImage grid_fields(const Simulation& sim) {
     img.spacing[static_cast<std::size_t>(a)] = a < g.dim ? g.cell_size[a] : 1.0;
   }
   const std::size_t nn = grid.size();
-  const char* names[] = {"temperature", "pressure", "density", "plastic_work"};
-  constexpr std::size_t ns = 4;
+  const char* names[] = {"temperature", "pressure", "density", "plastic_work", "damage"};
+  constexpr std::size_t ns = 5;
   std::vector<double> mass(nn, 0.0), scalars(ns * nn, 0.0), vel(3 * nn, 0.0);
   for (std::size_t i = 0; i < p.size(); ++i) {
     std::array<Weights1D, 3> w{};
@@ -119,7 +119,8 @@ io::VtkImage grid_fields(const Simulation& sim) {
       w[static_cast<std::size_t>(a)] = LinearShape::evaluate(p.x[i][a] - g.origin[a], g.cell_size[a], 0.0);
       if (!grid.fit(a, w[static_cast<std::size_t>(a)])) return img;  // off the grid: no field frame
     }
-    const double q[ns] = {p.state[i].temperature, -p.state[i].stress().trace() / 3.0, p.density(i), p.state[i].plastic_work};
+    const double q[ns] = {p.state[i].temperature, -p.state[i].stress().trace() / 3.0, p.density(i), p.state[i].plastic_work,
+                          p.state[i].damage};
     for (int c = 0; c < w[2].count; ++c)
       for (int b = 0; b < w[1].count; ++b)
         for (int a = 0; a < w[0].count; ++a) {
@@ -161,13 +162,13 @@ void RunOutput::write_fields(const Simulation& sim) {
   const std::size_t n = p.size();
   std::vector<double> xyz(3 * n), vel(3 * n);
   std::vector<io::VtkArray> arrays;
-  for (const char* name : {"density", "pressure", "temperature", "plastic_work", "plastic_strain", "energy", "material"})
+  for (const char* name : {"density", "pressure", "temperature", "plastic_work", "plastic_strain", "energy", "material", "damage"})
     arrays.push_back({name, 1, std::vector<double>(n)});
   for (std::size_t i = 0; i < n; ++i) {
     const auto& s = p.state[i];
     for (std::size_t d = 0; d < 3; ++d) xyz[3 * i + d] = p.x[i][static_cast<int>(d)], vel[3 * i + d] = p.v[i][static_cast<int>(d)];
     const double values[] = {p.density(i), -s.stress().trace() / 3.0, s.temperature, s.plastic_work,
-                             s.deviatoric.plastic_strain, s.energy, static_cast<double>(p.material[i])};
+                             s.deviatoric.plastic_strain, s.energy, static_cast<double>(p.material[i]), s.damage};
     for (std::size_t k = 0; k < arrays.size(); ++k) arrays[k].values[i] = values[k];
   }
   arrays.push_back({"velocity", 3, std::move(vel)});

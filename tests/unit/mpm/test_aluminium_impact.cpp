@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <array>
 #include <cmath>
 
 #include "shockfield/materials/library.hpp"
@@ -83,6 +84,50 @@ TEST(AluminiumImpact, SteadyShockStateAt1000MetresPerSecond) {
   RecordProperty("rho", std::to_string(rho));
   RecordProperty("T", std::to_string(temp));
   RecordProperty("T_ref", std::to_string(t_ref));
+}
+
+// Where the 7 % temperature excess above comes from (docs/theory/mpm.md, "Shock temperature"):
+// each point follows eq. 7 down to the smallest volume it reaches and the isentrope
+// T ∝ exp(−ρ0γ0·ΔV) back up from there, and the ringing behind the MPM shock overshoots the final
+// density (3191.6 against 3173.3 kg/m³ at C_L = 0.3). (a) With the default viscosity the mean
+// temperature equals that path, T_H(V_min)·exp(−ρ0γ0(V − V_min)) + W_p/c_v averaged over the
+// points, within 1 % of the rise (measured 0.7 K of 204 K; the rest is the RK2 path integration).
+// (b) With C_L = 0.5 the overshoot is gone (ρ_max within 0.1 % of ρ) and T meets the plain eq.-7
+// reference T_H(ρ) + W_p/c_v within 1.5 % of the rise (measured 1.3 K); not the default, as it
+// would change every MPM result recorded so far (see the theory note).
+TEST(AluminiumImpact, TemperatureExcessIsTheShockOvershoot) {
+  auto measure = [](double linear_viscosity) {
+    auto al = materials::aluminium_seed000();
+    al.viscosity.linear = linear_viscosity;
+    const strip::Setup s = impact(200);
+    auto sim = strip::make(s, al);
+    const double len = s.cells * s.h;
+    sim.run_until(0.6 * len / 6690.0);
+    const double gv = al.eos.rho0 * al.eos.gamma0, cv = al.thermal.heat_capacity;
+    double n = 0, t = 0, path = 0, plain = 0, rho = 0, rho_max = 0;
+    for (std::size_t i = 0; i < sim.particles().size(); ++i) {
+      const double y = std::abs(sim.particles().x[i][1]);
+      if (y < 6 * s.h || y > 0.3 * len) continue;  // behind the front, away from the impact plane
+      const auto& st = sim.particles().state[i];
+      const double r = sim.particles().density(i), v_min = st.shock_volume, heat = st.plastic_work / cv;
+      n += 1, t += st.temperature, rho += r, rho_max += 1.0 / v_min;
+      path += hugoniot_temperature(al, 1.0 / v_min) * std::exp(-gv * (1.0 / r - v_min)) + heat;
+      plain += hugoniot_temperature(al, r) + heat;
+    }
+    return std::array<double, 5>{t / n, path / n, plain / n, rho / n, rho_max / n};
+  };
+  const auto [t, path, plain, rho, rho_max] = measure(0.3);
+  EXPECT_GT(rho_max, rho * 1.003);  // the overshoot is there ...
+  EXPECT_GT(t - plain, 0.03 * (plain - 300.0));  // ... and so is the excess
+  EXPECT_NEAR(t - 300.0, path - 300.0, 0.01 * (path - 300.0));
+  const auto [t5, path5, plain5, rho5, rho_max5] = measure(0.5);
+  EXPECT_LT(rho_max5, rho5 * 1.001);
+  EXPECT_NEAR(t5 - 300.0, plain5 - 300.0, 0.015 * (plain5 - 300.0));
+  RecordProperty("T_default", std::to_string(t));
+  RecordProperty("T_path", std::to_string(path));
+  RecordProperty("T_plain", std::to_string(plain));
+  RecordProperty("T_CL05", std::to_string(t5));
+  RecordProperty("T_plain_CL05", std::to_string(plain5));
 }
 
 // Mass: particle masses are fixed, and the grid carries exactly the particle mass (partition of
