@@ -2,7 +2,8 @@
 // (fixtures/analysis/fields, written by fixtures/analysis/make_field_fixtures.py), .pvd series and
 // run folders, and malformed files giving file:line messages.
 #include <gtest/gtest.h>
-#include <unistd.h>
+
+#include "support/scratch_path.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -41,7 +42,7 @@ void expect_fixture(const sa::GridField& f, bool void_cell = true) {
 
 // Writes `text` to a file named `name` in a fresh temporary folder and returns its path.
 std::string write_temp(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("sf_reader_" + std::to_string(::getpid()));
+  const fs::path dir = shockfield::testing::scratch_path("sf_reader");
   fs::create_directories(dir);
   std::ofstream(dir / name, std::ios::binary) << text;
   return (dir / name).string();

@@ -2,6 +2,8 @@
 // analysis/field_reader with NaN points as void cells; .pvd entries survive a resume up to its time.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -27,7 +29,7 @@ TEST(VtkXml, Base64Rfc4648Vectors) {
 }
 
 TEST(VtkXml, ImageDataReadsBackWithVoids) {
-  const fs::path dir = fs::temp_directory_path() / "shockfield_vtk_xml_test";
+  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_xml_test");
   fs::create_directories(dir);
   io::VtkImage img;
   img.points = {3, 2, 1};
@@ -58,7 +60,7 @@ TEST(VtkXml, ImageDataReadsBackWithVoids) {
 }
 
 TEST(VtkXml, PvdSeriesKeepsEntriesUpToTheResumeTime) {
-  const fs::path dir = fs::temp_directory_path() / "shockfield_pvd_test";
+  const fs::path dir = shockfield::testing::scratch_path("shockfield_pvd_test");
   fs::create_directories(dir);
   {
     io::PvdSeries s(dir / "a.pvd");

@@ -2,6 +2,8 @@
 // momentum; a run stopped at a checkpoint and resumed is bitwise the uninterrupted run; the
 // thermostats reach their temperature; threads change results by round-off only.
 #include <gtest/gtest.h>
+
+#include "support/scratch_path.hpp"
 #include <omp.h>
 
 #include <filesystem>
@@ -74,7 +76,7 @@ namespace {
 
 template <class Make>
 void expect_bitwise_restart(Make add_fixes, const std::string& name) {
-  const auto file = std::filesystem::temp_directory_path() / ("shockfield_restart_" + name + ".h5");
+  const auto file = shockfield::testing::scratch_path("shockfield_restart_" + name + ".h5");
   Simulation straight = copper({3, 3, 3}, 900.0);
   add_fixes(straight);
   straight.setup(false);

@@ -3,6 +3,8 @@
 // barostat on z only leaves x and y alone; iso keeps a cubic box cubic.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <cstdio>
 #include <filesystem>
 
@@ -52,7 +54,7 @@ TEST(NptDynamics, ExtendedEnergyIsConserved) {
 }
 
 TEST(NptDynamics, ResumesBitwiseFromACheckpoint) {
-  const auto file = std::filesystem::temp_directory_path() / "shockfield_restart_npt.h5";
+  const auto file = shockfield::testing::scratch_path("shockfield_restart_npt.h5");
   for (bool iso : {true, false}) {
     const NptSettings s = settings(2e4, iso);
     Simulation straight = copper_npt(3, 3.615, 600.0, s);

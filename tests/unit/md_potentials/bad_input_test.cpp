@@ -3,10 +3,11 @@
 // names the file (and line or key) and what was expected.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <fstream>
 #include <sstream>
 
-#include <unistd.h>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/md/potentials/eam_file.hpp"
@@ -21,8 +22,7 @@ const std::filesystem::path kPotentials = "/usr/share/lammps/potentials";
 class BadInput : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("shockfield_potentials_" + std::to_string(::getpid()));
+    dir_ = shockfield::testing::scratch_path("shockfield_potentials");
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }

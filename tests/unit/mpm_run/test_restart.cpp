@@ -2,6 +2,8 @@
 // the uninterrupted run, bitwise (same threads); the uninterrupted run does not depend on the
 // thread count.
 #include <gtest/gtest.h>
+
+#include "support/scratch_path.hpp"
 #include <omp.h>
 
 #include <filesystem>
@@ -39,7 +41,7 @@ void run(const fs::path& case_file, const fs::path& out, long long stop_after = 
 }
 
 TEST(MpmRestart, ResumeIsBitwiseAndThreadIndependent) {
-  const fs::path dir = fs::temp_directory_path() / "shockfield_mpm_restart_test";
+  const fs::path dir = shockfield::testing::scratch_path("shockfield_mpm_restart_test");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path case_file = "cli/cases/mpm_tiny.toml";

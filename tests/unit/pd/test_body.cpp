@@ -1,6 +1,8 @@
 // Point clouds, families, partial volumes, influence functions and their bad input.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <filesystem>
 #include <fstream>
 
@@ -22,7 +24,7 @@ TEST(PointCloud, LatticeCountsVolumesAndOrder) {
 }
 
 TEST(PointCloud, ReadsFileAndNamesTheBadLine) {
-  const auto dir = std::filesystem::temp_directory_path() / "shockfield_pd_cloud";
+  const auto dir = shockfield::testing::scratch_path("shockfield_pd_cloud");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "good.txt") << "# x y z V\n0 0 0 1e-3\n\n1e-3 0 0 1e-3\n";
   const PointCloud c = read_cloud(dir / "good.txt", 1, 1e-3);

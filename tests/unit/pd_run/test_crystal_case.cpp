@@ -3,6 +3,8 @@
 // write the same profiles bitwise (the crystal state goes through the checkpoint).
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -73,7 +75,7 @@ namespace {
 
 // Stops `text` after 17 steps, resumes it and compares the output with an uninterrupted run.
 void expect_bitwise_resume(const std::string& text, const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("shockfield_pd_crystal_resume_" + name);
+  const auto dir = shockfield::testing::scratch_path("shockfield_pd_crystal_resume_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "case.toml") << text;

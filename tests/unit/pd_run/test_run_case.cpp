@@ -3,6 +3,8 @@
 // the CSV keeps.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -42,7 +44,7 @@ std::vector<std::vector<double>> read_csv(const std::filesystem::path& file) {
 }
 
 std::filesystem::path run(const std::string& text, const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("shockfield_pd_run_" + name);
+  const auto dir = shockfield::testing::scratch_path("shockfield_pd_run_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "case.toml") << text;
