@@ -145,6 +145,9 @@ TEST(DbmGls, RefusesSetUpsItCannotRun) {
   negative.K = -1;
   Boundaries periodic;
   EXPECT_THROW(GlsForce(*run.sim, periodic, negative), InputError);
+  GlsSettings no_conduction;  // q ≥ τ: conductivity 2ρT(τ − q) ≤ 0
+  no_conduction.q = c.tau;
+  EXPECT_THROW(GlsForce(*run.sim, periodic, no_conduction), InputError);
   Lattice lattice;
   BgkSettings diatomic;  // γ = 1.4: b = 5, but the GLS moments assume b = 2
   Simulation gas(d2v16({1.0, 2.0, 3.0, 4.0}, 2.0), lattice, periodic, diatomic);
