@@ -33,8 +33,13 @@ Lattice read_grid(const Config& t) {
   return l;
 }
 
+bool is_gls(const Config& model) { return model.get_choice_or("kind", {"bgk", "gls"}, "bgk") == "gls"; }
+
 VelocityModel read_model(const Config& t, BgkSettings& bgk) {
-  bgk.gamma = t.get_double_or("gamma", 1.4, {1.0, 2.0, true, false});
+  const bool gls = is_gls(t);
+  bgk.gamma = t.get_double_or("gamma", gls ? 2.0 : 1.4, {1.0, 2.0, true, false});
+  if (gls && bgk.gamma != 2.0)
+    t.fail("gamma", "2 for kind = \"gls\": the GLS force moments assume b = 2 degrees of freedom (e = rho T)");
   bgk.tau = t.get_double("tau", Range::positive());
   const auto v = t.get_doubles_or("speeds", {1.0, 2.0, 3.0, 4.0}, Range::positive());
   if (v.size() != 4) t.fail("speeds", fmt::format("{} values given; D2V16 needs 4 group speeds", v.size()));
@@ -44,7 +49,10 @@ VelocityModel read_model(const Config& t, BgkSettings& bgk) {
   } catch (const InputError& e) {
     t.fail("speeds", e.what());
   }
-  bgk.spectral_convection = t.get_choice_or("convection", {"nnd", "spectral"}, "nnd") == "spectral";
+  bgk.spectral_convection = t.get_choice_or("convection", {"nnd", "spectral"}, gls ? "spectral" : "nnd") == "spectral";
+  if (gls && !bgk.spectral_convection)
+    t.fail("convection", "\"spectral\" for kind = \"gls\": with NND the ideal and the non-ideal pressure see different "
+                         "gradients and interfaces blow up (docs/theory/dbm.md)");
   return model;
 }
 
@@ -62,15 +70,17 @@ InitialSpec read_initial(const Config& t, const Lattice& lattice) {
   return s;
 }
 
-Boundaries read_boundaries(const std::optional<Config>& t) {
+Boundaries read_boundaries(const std::optional<Config>& t, bool gls) {
   Boundaries b;
-  b.side[0].kind = b.side[1].kind = BoundaryKind::outflow;
+  if (!gls) b.side[0].kind = b.side[1].kind = BoundaryKind::outflow;
   if (!t) return b;
   const std::vector<std::string> kinds{"periodic", "outflow", "inflow", "reflecting", "wall"};
   for (std::size_t s = 0; s < 4; ++s) {
     const std::string& side = kSides[s];
     BoundarySide& bs = b.side[s];
-    bs.kind = boundary_kind(t->get_choice_or(side, kinds, s < 2 ? "outflow" : "periodic"));
+    bs.kind = boundary_kind(t->get_choice_or(side, kinds, s < 2 && !gls ? "outflow" : "periodic"));
+    if (gls && bs.kind != BoundaryKind::periodic)
+      t->fail(side, "\"periodic\" for kind = \"gls\": its spatial derivatives are taken by FFT");
     if (bs.kind == BoundaryKind::inflow) bs.state = read_state(t->table(side + "_state"));
     if (bs.kind == BoundaryKind::wall) {
       const Config w = t->table(side + "_wall");
@@ -130,6 +140,23 @@ std::optional<RiemannStar> exact_star(const InitialSpec& s, double gamma) {
   }
 }
 
+// ---- GLS liquid–vapour (kind = "gls", gls_case.hpp): model keys, the quench, the L(t) threshold
+// ([output].threshold, default ρ0) and the GLS time-step limit.
+void read_gls_part(const Config& root, const Config& model, DbmCase& c) {
+  GlsCaseSpec g;
+  g.settings = read_gls_model(model, c.bgk.tau);
+  const Config initial = root.table("initial");
+  initial.get_choice_or("type", {"quench"}, "quench");
+  g.quench = read_quench(initial, g.settings);
+  expected_density_range(g);
+  const std::optional<Config> output = root.optional_table("output");
+  g.threshold = output ? output->get_double_or("threshold", g.quench.rho0, {0.0, eos_max_density(g.settings.eos), true, true})
+                       : g.quench.rho0;
+  check_gls_time_step(root.table("run"), g, c.lattice, c.model.max_speed(), c.bgk.tau, c.bgk.dt);
+  c.gls = g;
+}
+// ---- end GLS
+
 }  // namespace
 
 DbmCase read_dbm_case(const Config& root) {
@@ -137,14 +164,16 @@ DbmCase read_dbm_case(const Config& root) {
   c.lattice = read_grid(root.table("grid"));
   const Config model = root.table("model");
   c.model = read_model(model, c.bgk);
-  c.initial = read_initial(root.table("initial"), c.lattice);
+  const bool gls = is_gls(model);
+  if (!gls) c.initial = read_initial(root.table("initial"), c.lattice);
   const std::optional<Config> boundary = root.optional_table("boundary");
-  c.boundaries = read_boundaries(boundary);
+  c.boundaries = read_boundaries(boundary, gls);
   if (c.bgk.spectral_convection)
     for (const BoundarySide& s : c.boundaries.side)
       if (s.kind != BoundaryKind::periodic)
         model.fail("convection", "\"spectral\" (FFT) convection needs periodic boundaries on all four sides");
   read_run(root.table("run"), model, c);
+  if (gls) read_gls_part(root, model, c);
   c.output = read_output(root.optional_table("output"), c);
   c.exact_star = exact_star(c.initial, c.bgk.gamma);
   c.reaction = read_reaction(root, c);

@@ -1,6 +1,7 @@
 #pragma once
 // The discrete Boltzmann case file (method = "dbm"): the compressible BGK model on a D2V16
-// lattice, started from a Riemann problem along x or a uniform state. Read and validated
+// lattice, started from a Riemann problem along x or a uniform state, or ([model] kind = "gls")
+// the GLS liquid–vapour model started from a quench (gls_case.hpp). Read and validated
 // completely before anything runs; every failure names the file and the key (docs/dbm.md).
 // Units are those of the model (ρ, u, T dimensionless, p = ρT).
 #include <optional>
@@ -8,6 +9,7 @@
 #include "shockfield/core/config.hpp"
 #include "shockfield/dbm/boundary.hpp"
 #include "shockfield/dbm/detonation.hpp"
+#include "shockfield/dbm/gls_case.hpp"
 #include "shockfield/dbm/lattice.hpp"
 #include "shockfield/dbm/riemann_exact.hpp"
 #include "shockfield/dbm/simulation.hpp"
@@ -42,6 +44,8 @@ struct DbmCase {
   std::optional<RiemannStar> exact_star;
   /// The one-step reactive DBM of [reaction] (reaction_case.hpp), when present.
   std::optional<ReactionSpec> reaction;
+  /// [model] kind = "gls": the liquid–vapour force, the quench and the L(t) threshold.
+  std::optional<GlsCaseSpec> gls;
 };
 
 /// Reads [grid], [model], [initial], [boundary], [run], [output] and [reaction].

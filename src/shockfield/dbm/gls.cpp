@@ -38,7 +38,11 @@ GlsForce::GlsForce(Simulation& simulation, const Boundaries& boundaries,
   if (!(settings.K >= 0.0)) throw InputError(fmt::format("GLS K = {} must be >= 0", settings.K));
   if (!(settings.zeta >= 0.0))
     throw InputError(fmt::format("GLS bulk viscosity zeta = {} must be >= 0", settings.zeta));
-  if (!(settings.q >= 0.0)) throw InputError(fmt::format("GLS q = {} must be >= 0", settings.q));
+  if (!(settings.q < simulation.settings().tau))
+    throw InputError(fmt::format(
+        "GLS q = {} must be < tau = {}: the heat conductivity 2 rho T (tau - q) must be positive "
+        "(q < 0 raises it above the BGK value)",
+        settings.q, simulation.settings().tau));
   std::visit([](const auto& e) { e.validate("GLS equation of state"); }, settings.eos);
   simulation.set_source(
       [this](const std::vector<double>& f, std::vector<double>& rhs) {
@@ -96,7 +100,7 @@ void GlsForce::coefficients(const std::vector<double>& f) {
   const auto nix = s.derivative(s_ni, 1, 0), niy = s.derivative(s_ni, 0, 1);
   const auto s_xx = s.forward(Lxx), s_xy = s.forward(Lxy), s_yy = s.forward(Lyy);
   const auto dLx = s.divergence(s_xx, s_xy), dLy = s.divergence(s_xy, s_yy);
-  const auto dh = q > 0.0 ? s.divergence(s.forward(hx), s.forward(hy)) : std::vector<double>(n);
+  const auto dh = q != 0.0 ? s.divergence(s.forward(hx), s.forward(hy)) : std::vector<double>(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t c = 0; c < n; ++c) {
     const double r = rho[c], t = T[c], d = div[c];

@@ -29,6 +29,7 @@ RateLaw read_law(const Config& t) {
 std::optional<ReactionSpec> read_reaction(const Config& root, const DbmCase& c) {
   const std::optional<Config> t = root.optional_table("reaction");
   if (!t) return std::nullopt;
+  if (c.gls) t->fail("kind", "[reaction] needs model.kind = \"bgk\": the GLS liquid-vapour model has no reaction");
   if (c.bgk.spectral_convection)
     t->fail("kind", "the reactive DBM carries the reactant on the NND face fluxes: set model.convection = \"nnd\"");
   ReactionSpec s;

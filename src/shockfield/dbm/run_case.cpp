@@ -14,6 +14,7 @@
 #include "shockfield/core/run_session.hpp"
 #include "shockfield/dbm/case_file.hpp"
 #include "shockfield/dbm/checkpoint.hpp"
+#include "shockfield/dbm/gls_run.hpp"
 #include "shockfield/dbm/reaction.hpp"
 #include "shockfield/dbm/reaction_case.hpp"
 #include "shockfield/dbm/tne.hpp"
@@ -46,19 +47,31 @@ void derive(const Config& root, const DbmCase& c, const Simulation& sim) {
     root.derive("exact_rho_star_right", c.exact_star->rho_right);
   }
   if (c.reaction) derive_reaction(root, *c.reaction);
+  if (c.gls) {  // GLS: the time-step limit and the densities it was checked for
+    const GlsCaseSpec& g = *c.gls;
+    const GlsStepLimit limit = gls_step_limit(g.settings, c.lattice, c.model.max_speed(), c.bgk.tau, g.quench.T,
+                                              g.rho_vapour, g.rho_liquid);
+    root.derive("gls_stable_time_step", limit.dt);
+    root.derive("gls_time_step_limited_by", limit.cause);
+    root.derive("gls_expected_rho_vapour", g.rho_vapour);
+    root.derive("gls_expected_rho_liquid", g.rho_liquid);
+    root.derive("gls_heat_conductivity_per_rho_T", 2.0 * (c.bgk.tau - g.settings.q));
+  }
 }
 
 // series.csv (domain means), profiles/ (line profiles along x at row profile_row) and fields/
 // with grid.pvd. A resumed run keeps what was written up to its checkpoint and rewrites the rest.
 class Output {
  public:
-  /// `reaction`: the reactive DBM of a [reaction] case (extra columns), or null.
+  /// `reaction`: the reactive DBM of a [reaction] case (extra columns), or null; `gls`: the
+  /// liquid–vapour part of a kind = "gls" case (its own series columns), or null.
   Output(const fs::path& folder, const DbmOutputSpec& spec, const Simulation* resumed, const OutputCounters& counters,
-         const ReactiveFlow* reaction, const std::optional<ReactionSpec>& spec_reaction)
-      : folder_(folder), row_(spec.profile_row), reaction_(reaction), spec_reaction_(spec_reaction) {
+         const ReactiveFlow* reaction, const std::optional<ReactionSpec>& spec_reaction, GlsRunPart* gls)
+      : folder_(folder), row_(spec.profile_row), reaction_(reaction), spec_reaction_(spec_reaction), gls_(gls) {
     const double keep_step = resumed ? static_cast<double>(resumed->steps()) : 0.0;
     const double keep_profile = static_cast<double>(counters.profiles) - 1.0;
-    std::vector<std::string> series_columns{"step", "time", "rho", "ux", "uy", "T", "D"};
+    std::vector<std::string> series_columns =
+        gls ? GlsRunPart::series_columns() : std::vector<std::string>{"step", "time", "rho", "ux", "uy", "T", "D"};
     if (reaction_) series_columns.insert(series_columns.end(), {"lambda", "chemical_energy", "total_energy", "front_x"});
     series_ = io::CsvWriter(folder / "series.csv", series_columns, resumed ? &keep_step : nullptr);
     fs::create_directories(folder / "profiles");
@@ -72,6 +85,7 @@ class Output {
   }
 
   void write_series(const Simulation& sim) {
+    if (gls_) return series_.row(gls_->series_row(sim));
     const Lattice& l = sim.lattice();
     double rho = 0, ux = 0, uy = 0, T = 0;
     for (int j = 0; j < l.ny; ++j)
@@ -124,8 +138,12 @@ class Output {
         const std::size_t c = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(j);
         rho[c] = m.rho, u[3 * c] = m.ux, u[3 * c + 1] = m.uy, T[c] = m.T;
       }
-    img.point_data = {{"rho", 1, std::move(rho)}, {"velocity", 3, std::move(u)}, {"T", 1, std::move(T)},
-                      {"D", 1, tne_measures(sim).strength}};
+    img.point_data = {{"rho", 1, std::move(rho)}, {"velocity", 3, std::move(u)}, {"T", 1, std::move(T)}};
+    if (gls_) {
+      for (io::VtkArray& a : gls_->field_arrays()) img.point_data.push_back(std::move(a));
+    } else {
+      img.point_data.push_back({"D", 1, tne_measures(sim).strength});
+    }
     const std::string file = fmt::format("fields/grid_{:09d}.vti", sim.steps());
     io::write_vti(folder_ / file, img, io::VtkEncoding::Ascii);
     grid_pvd_.add(sim.time(), file);
@@ -136,6 +154,7 @@ class Output {
   int row_;
   const ReactiveFlow* reaction_;
   const std::optional<ReactionSpec>& spec_reaction_;
+  GlsRunPart* gls_;
   io::CsvWriter series_, index_;
   io::PvdSeries grid_pvd_;
 };
@@ -151,6 +170,8 @@ void run_case(const Config& root, const RunOptions& options) {
       c.reaction ? std::make_unique<ReactiveFlow>(sim, c.boundaries, c.reaction->law, c.reaction->inflow_lambda)
                  : nullptr;
   std::vector<double>* reactant = reaction ? &reaction->reactant_density() : nullptr;
+  std::optional<GlsRunPart> gls;
+  if (c.gls) gls.emplace(sim, c);
   derive(root, c, sim);
   if (options.validate_only) {
     std::printf("%s: valid dbm case (%d x %d cells, %lld steps, dt %.3g)\n", options.case_file.string().c_str(),
@@ -159,7 +180,8 @@ void run_case(const Config& root, const RunOptions& options) {
   }
 
   RunSession run = open_run_session(root, options, "dbm",
-                                    fmt::format("{} x {} cells, D2V16, tau {}", c.lattice.nx, c.lattice.ny, c.bgk.tau));
+                                    fmt::format("{} x {} cells, D2V16{}, tau {}", c.lattice.nx, c.lattice.ny,
+                                                c.gls ? ", GLS liquid-vapour" : "", c.bgk.tau));
   const fs::path& checkpoint = run.checkpoint;
   OutputCounters counters;
   if (options.resume) {
@@ -167,6 +189,8 @@ void run_case(const Config& root, const RunOptions& options) {
       throw InputError(fmt::format("--resume: no checkpoint in '{}'", run.folder.string()));
     counters = read_checkpoint(checkpoint, sim, reactant);
     run.log.info("resumed from {} at step {}, t = {}", checkpoint.string(), sim.steps(), sim.time());
+  } else if (gls) {
+    gls->initialize(sim);
   } else {
     const InitialSpec& init = c.initial;
     const auto initial = [&](double x, double) { return x < init.split ? init.left : init.right; };
@@ -175,7 +199,8 @@ void run_case(const Config& root, const RunOptions& options) {
     else
       sim.initialize(initial);
   }
-  Output output(run.folder, c.output, options.resume ? &sim : nullptr, counters, reaction.get(), c.reaction);
+  Output output(run.folder, c.output, options.resume ? &sim : nullptr, counters, reaction.get(), c.reaction,
+                gls ? &*gls : nullptr);
 
   // Rows and frames at the first step at or past k·interval.
   const double tol = 1e-9 * c.bgk.dt;
@@ -216,11 +241,16 @@ void run_case(const Config& root, const RunOptions& options) {
     output.write_profile(sim, counters.profiles);
     run.log.info("the output written so far is kept in {}; the state at the failure: profiles/profile_{}.csv",
                  run.folder.string(), counters.profiles);
+    if (gls) {
+      run.log.info("{}", GlsRunPart::blow_up_hint());
+      gls->write_summary(run.folder, run.log);
+    }
     throw;
   }
   progress.finish(sim.steps());
   if (c.output.profile_interval == 0.0) output.write_profile(sim, counters.profiles++);
   save();
+  if (gls) gls->write_summary(run.folder, run.log);
   const auto total = sim.totals();
   run.log.info("finished: t = {} after {} steps ({:.3g} cell-steps/s); mass {}, momentum ({}, {}), energy {}",
                sim.time(), sim.steps(), progress.rate(sim.steps()) * c.lattice.nx * c.lattice.ny, total[0], total[1],

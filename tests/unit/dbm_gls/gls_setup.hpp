@@ -13,7 +13,7 @@ namespace shockfield::dbm::gls_testing {
 struct GlsCase {
   int nx = 128, ny = 4;
   double length = 1.0;  // domain length along x (dx = length/nx = dy)
-  double tau = 0.01, dt = 1e-3, K = 1e-4, zeta = 0.0;
+  double tau = 0.01, dt = 1e-3, K = 1e-4, zeta = 0.0, q = 0.0;
   double T = 0.9;
   bool spectral = true;
   std::array<double, 4> speeds{1.0, 2.0, 3.0, 4.0};  // D2V16 speeds, eta0 = 2
@@ -35,7 +35,7 @@ inline GlsRun make_gls(const GlsCase& c, const std::function<Macro(double, doubl
   GlsRun run;
   run.sim = std::make_unique<Simulation>(d2v16(c.speeds, 2.0), lattice, periodic, bgk);
   GlsSettings gls;
-  gls.eos = c.eos, gls.K = c.K, gls.zeta = c.zeta;
+  gls.eos = c.eos, gls.K = c.K, gls.zeta = c.zeta, gls.q = c.q;
   run.force = std::make_unique<GlsForce>(*run.sim, periodic, gls);
   run.sim->initialize(state);
   return run;

@@ -48,6 +48,32 @@ TEST(DbmGls, ForceMomentsMatchTheContinuumForces) {
   }
 }
 
+TEST(DbmGls, HeatConductionTermOfEq18) {
+  // Uniform ρ, u = 0, T = T0 + δ sin(kx): C = 0 and B = 0, so the energy moment of I is the eq. 18
+  // source −2ρT²C_q = −∂x(2qρT ∂xT); with q < 0 it conducts heat (conductivity 2ρT(τ − q)).
+  GlsCase c;
+  c.nx = 64, c.K = 1e-3, c.tau = 1e-3, c.q = -0.02;
+  const double r0 = 0.5, T0 = 1.2, d = 0.05, k = 2 * std::numbers::pi;
+  auto run = make_gls(c, [&](double x, double) { return Macro{r0, 0, 0, T0 + d * std::sin(k * x)}; });
+  std::vector<double> I;
+  run.force->force_term(run.sim->f(), I);
+  const Lattice& L = run.sim->lattice();
+  const VelocityModel& m = run.sim->model();
+  for (int i = 0; i < c.nx; i += 3) {
+    const double x = L.x(i), T = T0 + d * std::sin(k * x), T1 = d * k * std::cos(k * x),
+                 T2 = -d * k * k * std::sin(k * x);
+    const double expected = -2.0 * c.q * r0 * (T1 * T1 + T * T2);  // −∂x(2qρT T')
+    double s0 = 0, se = 0;
+    for (int q = 0; q < m.size(); ++q) {
+      const double v = I[q * L.cells() + L.at(i, 1)];
+      s0 += v;
+      se += 0.5 * v * (m.vx[q] * m.vx[q] + m.vy[q] * m.vy[q] + m.eta[q] * m.eta[q]);
+    }
+    EXPECT_NEAR(s0, 0.0, 1e-12);
+    EXPECT_NEAR(se, expected, 1e-8 * (1 + std::abs(expected)));
+  }
+}
+
 namespace {
 
 struct SlabResult {
@@ -145,6 +171,9 @@ TEST(DbmGls, RefusesSetUpsItCannotRun) {
   negative.K = -1;
   Boundaries periodic;
   EXPECT_THROW(GlsForce(*run.sim, periodic, negative), InputError);
+  GlsSettings no_conduction;  // q ≥ τ: conductivity 2ρT(τ − q) ≤ 0
+  no_conduction.q = c.tau;
+  EXPECT_THROW(GlsForce(*run.sim, periodic, no_conduction), InputError);
   Lattice lattice;
   BgkSettings diatomic;  // γ = 1.4: b = 5, but the GLS moments assume b = 2
   Simulation gas(d2v16({1.0, 2.0, 3.0, 4.0}, 2.0), lattice, periodic, diatomic);

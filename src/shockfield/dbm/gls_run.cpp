@@ -1,0 +1,96 @@
+#include "shockfield/dbm/gls_run.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/dbm/phase_separation.hpp"
+#include "shockfield/io/csv_writer.hpp"
+
+namespace shockfield::dbm {
+
+namespace fs = std::filesystem;
+
+GlsRunPart::GlsRunPart(Simulation& sim, const DbmCase& c)
+    : sim_(sim), force_(sim, c.boundaries, c.gls->settings), spec_(*c.gls) {}
+
+void GlsRunPart::initialize(Simulation& sim) const {
+  const Lattice& lattice = sim.lattice();
+  sim.initialize([&](double x, double y) { return spec_.quench.state(lattice, x, y); });
+}
+
+std::vector<std::string> GlsRunPart::series_columns() {
+  return {"step", "time", "D", "D_force", "D_gradient", "L", "R", "density_variance",
+          "rho_min", "rho_max", "T_mean", "u_max", "mass", "energy"};
+}
+
+std::vector<double> GlsRunPart::series_row(const Simulation& sim) {
+  const PhaseSample s = sample_phase_separation(sim, force_, spec_.threshold);
+  const Lattice& l = sim.lattice();
+  double lo = INFINITY, hi = 0.0, T = 0.0, u = 0.0;
+  for (int j = 0; j < l.ny; ++j)
+    for (int i = 0; i < l.nx; ++i) {
+      const Macro m = sim.macro(i, j);
+      lo = std::min(lo, m.rho), hi = std::max(hi, m.rho), T += m.T;
+      u = std::max(u, std::hypot(m.ux, m.uy));
+    }
+  T /= static_cast<double>(l.nx) * l.ny;
+  return {static_cast<double>(sim.steps()), s.t, s.D, s.D_force, s.D_gradient, s.boundary_length,
+          s.domain_size, s.density_variance, lo, hi, T, u, s.mass, s.energy};
+}
+
+std::vector<io::VtkArray> GlsRunPart::field_arrays() {
+  const GlsTne tne = force_.tne();
+  return {{"D", 1, tne.net.strength}, {"D_force", 1, tne.force.strength}};
+}
+
+const char* GlsRunPart::blow_up_hint() {
+  return "GLS runs break down (docs/dbm.md, \"When a GLS run blows up\") when the interfaces are under-resolved "
+         "(width ~ 2 sqrt(2K/|dP/drho|_T) should span 4 or more cells: raise K or refine dx), when tau is long for "
+         "the grid (keep tau (pi/dx) sqrt(2T) near 0.3 or below and raise the heat conduction with q < 0 instead), "
+         "or when coalescing domains drive fast flows (the bulk viscosity zeta damps them)";
+}
+
+namespace {
+
+// Columns `names` of a CSV file written by io::CsvWriter (header line, then numbers).
+std::vector<std::vector<double>> read_columns(const fs::path& file, const std::vector<std::string>& names) {
+  std::ifstream in(file);
+  std::string line;
+  if (!std::getline(in, line)) throw RunError(fmt::format("cannot read '{}'", file.string()));
+  std::vector<std::string> header;
+  for (std::stringstream ss(line); std::getline(ss, line, ',');) header.push_back(line);
+  std::vector<std::size_t> index;
+  for (const std::string& n : names)
+    index.push_back(static_cast<std::size_t>(std::find(header.begin(), header.end(), n) - header.begin()));
+  std::vector<std::vector<double>> columns(names.size());
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    for (std::stringstream ss(line); std::getline(ss, line, ',');) row.push_back(std::stod(line));
+    for (std::size_t c = 0; c < names.size(); ++c) columns[c].push_back(row.at(index[c]));
+  }
+  return columns;
+}
+
+}  // namespace
+
+void GlsRunPart::write_summary(const fs::path& folder, Logger& log) const {
+  const auto col = read_columns(folder / "series.csv", {"time", "D", "D_force", "L"});
+  std::vector<PhaseSample> samples(col[0].size()), force(col[0].size());
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    samples[k].t = force[k].t = col[0][k];
+    samples[k].D = col[1][k], force[k].D = col[2][k];
+    samples[k].boundary_length = col[3][k];
+  }
+  const SpinodalEnd e = spinodal_end(samples), f = spinodal_end(force);
+  io::CsvWriter csv(folder / "summary.csv", {"t_SD", "D_max", "t_SD_force", "D_force_max", "t_L_max", "L_max"});
+  csv.row({e.t_sd, e.D_max, f.t_sd, f.D_max, e.t_L_max, e.L_max});
+  log.info("phase separation: t_SD = {} (peak of D, D_max = {}), peak of D^F at t = {} ({}), peak of L at t = {} "
+           "(L_max = {}, threshold {})",
+           e.t_sd, e.D_max, f.t_sd, f.D_max, e.t_L_max, e.L_max, spec_.threshold);
+}
+
+}  // namespace shockfield::dbm

@@ -1,0 +1,39 @@
+#pragma once
+// The GLS liquid–vapour part of a `method = "dbm"` run (docs/dbm.md): the force installed on the
+// simulation, the quench start, the phase-separation series (seed 000 §4.3: D, D^F, D^G of eqs.
+// 29–31 and 35, L(t), R(t), density range, largest |u|, mass, e_T), the D fields of the frames,
+// and summary.csv with t_SD and D_max (peak of D(t)) and the peak of L(t), read back from
+// series.csv so a resumed run summarises the whole history.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shockfield/core/logger.hpp"
+#include "shockfield/dbm/case_file.hpp"
+#include "shockfield/dbm/gls.hpp"
+#include "shockfield/io/vtk_xml.hpp"
+
+namespace shockfield::dbm {
+
+class GlsRunPart {
+ public:
+  GlsRunPart(Simulation& sim, const DbmCase& c);
+
+  /// f = f^eq of the quench on every cell.
+  void initialize(Simulation& sim) const;
+  static std::vector<std::string> series_columns();
+  std::vector<double> series_row(const Simulation& sim);
+  /// D and D^F (eq. 35 of Δ* and Δ*^F) per cell, for the field frames.
+  std::vector<io::VtkArray> field_arrays();
+  /// What makes GLS runs break down and what to change (logged when one does).
+  static const char* blow_up_hint();
+  /// summary.csv from series.csv; the values are also logged.
+  void write_summary(const std::filesystem::path& folder, Logger& log) const;
+
+ private:
+  Simulation& sim_;
+  GlsForce force_;
+  GlsCaseSpec spec_;
+};
+
+}  // namespace shockfield::dbm
