@@ -119,14 +119,10 @@ void read_run(const Config& t, const Config& model, DbmCase& c) {
 
 DbmOutputSpec read_output(const std::optional<Config>& t, const DbmCase& c) {
   DbmOutputSpec s;
-  s.series_interval = c.end_time / 100.0;
+  static_cast<OutputIntervals&>(s) = read_output_intervals(t, c.end_time, {.profiles = true, .fields = true});
   s.profile_row = c.lattice.ny / 2;
   if (!t) return s;
-  s.series_interval = t->get_double_or("series_interval", s.series_interval, Range::positive());
-  s.profile_interval = t->get_double_or("profile_interval", 0.0, Range::non_negative());
   s.profile_row = static_cast<int>(t->get_int_or("profile_row", s.profile_row, Range::closed(0, c.lattice.ny - 1)));
-  s.field_interval = t->get_double_or("field_interval", 0.0, Range::non_negative());
-  s.checkpoint_every = t->get_int_or("checkpoint_every", 0, Range::non_negative());
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/output_schedule.hpp"
 #include "shockfield/dbm/boundary.hpp"
 #include "shockfield/dbm/detonation.hpp"
 #include "shockfield/dbm/gls_case.hpp"
@@ -23,12 +24,9 @@ struct InitialSpec {
   bool riemann = false;
 };
 
-struct DbmOutputSpec {
-  double series_interval = 0.0;   ///< series.csv row every ... (model time)
-  double profile_interval = 0.0;  ///< profiles/profile_<k>.csv every ...; 0: only the last
-  int profile_row = 0;            ///< j of the line profile along x
-  double field_interval = 0.0;    ///< fields/grid_<step>.vti + grid.pvd every ...; 0: none
-  long long checkpoint_every = 0; ///< checkpoint.h5 every ... steps; 0: only at the end or when stopped
+/// Intervals in model time; profiles are profiles/profile_<k>.csv, fields fields/*.vti + grid.pvd.
+struct DbmOutputSpec : OutputIntervals {
+  int profile_row = 0;  ///< j of the line profile along x
 };
 
 struct DbmCase {

@@ -129,14 +129,11 @@ DiagnosticsSpec read_diagnostics(const std::optional<Config>& d, double default_
 
 OutputSpec read_output(const std::optional<Config>& o, double end_time) {
   OutputSpec s;
-  s.series_interval = end_time / 100.0;
+  static_cast<OutputIntervals&>(s) = read_output_intervals(o, end_time, {.profiles = false, .fields = true});
   if (!o) return s;
-  s.series_interval = o->get_double_or("series_interval", s.series_interval, Range::positive());
-  s.field_interval = o->get_double_or("field_interval", 0.0, Range::non_negative());
   s.particles = o->get_bool_or("particles", true);
   s.encoding = o->get_choice_or("vtk_encoding", {"ascii", "base64"}, "ascii") == "ascii" ? io::VtkEncoding::Ascii
                                                                                         : io::VtkEncoding::Base64;
-  s.checkpoint_every = o->get_int_or("checkpoint_every", 0, Range::non_negative());
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/output_schedule.hpp"
 #include "shockfield/io/vtk_xml.hpp"
 #include "shockfield/materials/solid_material.hpp"
 #include "shockfield/mpm/grid.hpp"
@@ -48,12 +49,10 @@ struct DiagnosticsSpec {
   double ejecta_threshold = 0.0;        ///< height above the free surface that counts as ejected [m]
 };
 
-struct OutputSpec {
-  double series_interval = 0.0;    ///< time-series row every ... [s]
-  double field_interval = 0.0;     ///< .vti/.vtp frames every ... [s]; 0: none
+/// Intervals in seconds; field frames are .vti (grid) and .vtp (particles).
+struct OutputSpec : OutputIntervals {
   bool particles = true;           ///< write particle .vtp with each field frame
   io::VtkEncoding encoding = io::VtkEncoding::Ascii;
-  long long checkpoint_every = 0;  ///< steps; 0: only when a run ends or is stopped
 };
 
 struct MpmCase {

@@ -83,13 +83,7 @@ SolverSpec read_solver(const Config& t) {
 }
 
 OutputSpec read_output(const std::optional<Config>& o, double end_time) {
-  OutputSpec s;
-  s.series_interval = end_time / 100.0;
-  if (!o) return s;
-  s.series_interval = o->get_double_or("series_interval", s.series_interval, Range::positive());
-  s.profile_interval = o->get_double_or("profile_interval", 0.0, Range::non_negative());
-  s.checkpoint_every = o->get_int_or("checkpoint_every", 0, Range::non_negative());
-  return s;
+  return read_output_intervals(o, end_time, {.profiles = true, .fields = false});
 }
 
 }  // namespace

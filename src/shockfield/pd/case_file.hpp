@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/output_schedule.hpp"
 #include "shockfield/pd/bond_models.hpp"
 #include "shockfield/pd/correspondence.hpp"
 #include "shockfield/pd/crystal_case.hpp"
@@ -34,11 +35,8 @@ struct SolverSpec {
   double safety = 0.5;               ///< fraction of the stable step when no time_step is given
 };
 
-struct OutputSpec {
-  double series_interval = 0.0;    ///< series.csv row every ... [s]
-  double profile_interval = 0.0;   ///< profiles/profile_<k>.csv every ... [s]; 0: only the last
-  long long checkpoint_every = 0;  ///< steps; 0: only when the run ends or is stopped
-};
+/// Intervals in seconds; profiles are profiles/profile_<k>.csv.
+using OutputSpec = OutputIntervals;
 
 /// An ordinary bond law (model = "pmb" or "lps", LAMMPS peri/pmb and peri/lps) with its density and
 /// critical-stretch damage.
