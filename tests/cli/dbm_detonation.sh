@@ -46,9 +46,7 @@ awk -F, 'NR == 2 {e0 = $10; c0 = $9; x0 = $11} END {
   fail "reactive series"
 
 stop_then_resume "$WORK/det.toml" "$WORK/split" 70
-for f in series.csv profiles/profile_1.csv profiles/profile_2.csv; do
-  cmp "$WORK/det/$f" "$WORK/split/$f" || fail "resumed $f differs"
-done
+same_files "$WORK/det" "$WORK/split" series.csv profiles/profile_1.csv profiles/profile_2.csv
 
 expect_error "${det/rate = 20.0/rate = 20.0
 omega1 = 1.0}" "case.toml" "reaction.omega1"

@@ -42,15 +42,8 @@ head -1 "$WORK/gls/summary.csv" | grep -q "t_SD,D_max" || fail "summary columns"
 grep -q 'Name="D_force"' "$WORK/gls/fields/grid_000000010.vti" || fail "field frame lacks D_force"
 grep -q "gls_time_step_limited_by = 'collision'" "$WORK/gls/config.resolved.toml" || fail "derived time-step limit missing"
 grep -q "phase separation: t_SD" "$WORK/gls/log.txt" || fail "log lacks the t_SD line"
-set +e
-"$SF" run "$WORK/gls.toml" --output "$WORK/split" -q --stop-after 7 > /dev/null 2>&1
-code=$?
-set -e
-[ $code -eq 130 ] || fail "stopped run exit code $code, expected 130"
-"$SF" run "$WORK/gls.toml" --output "$WORK/split" -q --resume > /dev/null
-for f in series.csv summary.csv fields/grid_000000020.vti; do
-  cmp "$WORK/gls/$f" "$WORK/split/$f" || fail "resumed $f differs"
-done
+stop_then_resume "$WORK/gls.toml" "$WORK/split" 7
+same_files "$WORK/gls" "$WORK/split" series.csv summary.csv fields/grid_000000020.vti
 expect_error "${gls/q = -0.019/q = -0.019
 zeta = 1.0}" "run.dt" "stable limit" "diffusion"
 expect_error "${gls/K = 1e-3/K = 5.0}" "run.dt" "capillary waves"

@@ -44,18 +44,10 @@ expect_error "${sod/tau = 1e-3/tau = 1e-5}" "case.toml" "model.tau" "dt/tau"
 expect_error "$sod
 [boundary]
 x_low = \"periodic\"" "boundary.x_low" "periodic"
-set +e
-"$SF" run "$WORK/sod.toml" --output "$WORK/split" -q --stop-after 17 > /dev/null 2> "$WORK/stop.txt"
-code=$?
-set -e
-[ $code -eq 130 ] || fail "stopped run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
-grep -q -- "--resume" "$WORK/stop.txt" || fail "the stop message does not say how to resume"
-[ -s "$WORK/split/checkpoint.h5" ] || fail "a stopped run wrote no checkpoint"
-"$SF" run "$WORK/sod.toml" --output "$WORK/split" -q --resume > /dev/null
+stop_then_resume "$WORK/sod.toml" "$WORK/split" 17
 grep -q "resumed from .* at step 17" "$WORK/split/log.txt" || fail "the resumed run did not start at the checkpoint"
-for f in series.csv profiles/index.csv profiles/profile_1.csv profiles/profile_2.csv grid.pvd fields/grid_000000040.vti; do
-  cmp "$WORK/sod/$f" "$WORK/split/$f" || fail "resumed $f differs"
-done
+same_files "$WORK/sod" "$WORK/split" series.csv profiles/index.csv profiles/profile_1.csv profiles/profile_2.csv \
+  grid.pvd fields/grid_000000040.vti
 run_expecting 3 "${sod/p = 0.1 \}/p = 1e-4 \}}" "broke down" "in cell ("
 [ -s "$WORK/out/series.csv" ] && [ -s "$WORK/out/profiles/profile_1.csv" ] || fail "a blown-up run lost its output"
 echo "dbm_run: run folder, fields, derived exact star state, bitwise resume, refused keys and tau, blow-up"

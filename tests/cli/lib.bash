@@ -27,8 +27,9 @@ expect_error() {
   run_expecting 2 "$@"
   [ ! -e "$WORK/out" ] || fail "a run folder was left behind for: $1"
 }
-# stop_then_resume CASE_FILE RUN_DIR STEPS: runs the case with --stop-after STEPS (exit 130 with a
-# checkpoint expected), then resumes it to the end in the same folder.
+# stop_then_resume CASE_FILE RUN_DIR STEPS: runs the case with --stop-after STEPS (exit 130, a
+# message saying how to resume and a checkpoint expected), then resumes it to the end in the same
+# folder.
 stop_then_resume() {
   local case_file="$1" out="$2" steps="$3"
   set +e
@@ -36,5 +37,15 @@ stop_then_resume() {
   local code=$?
   set -e
   [ $code -eq 130 ] || fail "stopped run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
+  grep -q -- "--resume" "$WORK/stop.txt" || fail "the stop message does not say how to resume"
+  [ -s "$out/checkpoint.h5" ] || fail "a stopped run wrote no checkpoint in $out"
   "$SF" run "$case_file" --output "$out" -q --resume > /dev/null
+}
+# same_files DIR_A DIR_B FILE...: each FILE (relative) is byte-identical in both folders.
+same_files() {
+  local a="$1" b="$2" f
+  shift 2
+  for f in "$@"; do
+    cmp "$a/$f" "$b/$f" || fail "resumed $f differs ($a vs $b)"
+  done
 }

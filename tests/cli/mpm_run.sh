@@ -21,18 +21,9 @@ grep -q "^hugoniot_pressure_Pa = " "$WORK/straight/config.resolved.toml" || fail
 "$SF" analyze stats "$WORK/straight/fields/grid_000000000.vti" --array density -o "$WORK/stats" --no-plot > /dev/null \
   || fail "analyze cannot read the grid field"
 
-set +e
-"$SF" run "$case" --output "$WORK/split" -q --stop-after 25 > /dev/null 2> "$WORK/stop.txt"
-code=$?
-set -e
-[ $code -eq 130 ] || fail "stopped run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
-grep -q -- "--resume" "$WORK/stop.txt" || fail "the stop message does not say how to resume"
-"$SF" run "$case" --output "$WORK/split" -q --resume > /dev/null
-cmp "$WORK/straight/series.csv" "$WORK/split/series.csv" || fail "resumed series.csv differs"
+stop_then_resume "$case" "$WORK/split" 25
 last=$(ls "$WORK/straight/fields" | grep vtp | tail -1)
-cmp "$WORK/straight/fields/$last" "$WORK/split/fields/$last" || fail "resumed particles differ"
-cmp "$WORK/straight/grid.pvd" "$WORK/split/grid.pvd" || fail "resumed grid.pvd differs"
-cmp "$WORK/straight/histograms/hist_0.csv" "$WORK/split/histograms/hist_0.csv" || fail "resumed histogram differs"
+same_files "$WORK/straight" "$WORK/split" series.csv "fields/$last" grid.pvd histograms/hist_0.csv
 echo "ok: resume is bitwise identical"
 
 base=$(sed -n '/^method/,$p' "$case")

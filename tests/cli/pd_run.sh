@@ -13,16 +13,8 @@ for f in log.txt config.resolved.toml series.csv checkpoint.h5 profiles/index.cs
 done
 grep -q "hel_Pa = 541626506" "$WORK/straight/config.resolved.toml" || fail "derived HEL missing"
 grep -q "time_step_s" "$WORK/straight/config.resolved.toml" || fail "derived time step missing"
-set +e
-"$SF" run "$case" --output "$WORK/split" -q --stop-after 77 > /dev/null 2> "$WORK/stop.txt"
-code=$?
-set -e
-[ $code -eq 130 ] || fail "stopped run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
-grep -q -- "--resume" "$WORK/stop.txt" || fail "the stop message does not say how to resume"
-"$SF" run "$case" --output "$WORK/split" -q --resume > /dev/null
-for f in series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4.csv; do
-  cmp "$WORK/straight/$f" "$WORK/split/$f" || fail "resumed $f differs"
-done
+stop_then_resume "$case" "$WORK/split" 77
+same_files "$WORK/straight" "$WORK/split" series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4.csv
 echo "ok: resumed run is bitwise identical"
 
 # The bond models on the same bar, with bonds breaking before the stop: a run stopped after the
@@ -44,15 +36,9 @@ stop_and_resume() {
   has_damage "$WORK/${name}_straight/profiles/profile_$profile.csv" || fail "$name: no bond broken by profile $profile"
   awk -F, -v p="$profile" -v s="$stop" '$1 == p && $3 >= s { exit 1 }' "$WORK/${name}_straight/profiles/index.csv" ||
     fail "$name: profile $profile is not written before step $stop"
-  set +e
-  "$SF" run "$WORK/$name.toml" --output "$WORK/${name}_split" -q --stop-after "$stop" > /dev/null 2> "$WORK/stop.txt"
-  local code=$?
-  set -e
-  [ $code -eq 130 ] || fail "stopped $name run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
-  "$SF" run "$WORK/$name.toml" --output "$WORK/${name}_split" -q --resume > /dev/null
-  for f in series.csv profiles/index.csv $(cd "$WORK/${name}_straight" && ls profiles/profile_*.csv); do
-    cmp "$WORK/${name}_straight/$f" "$WORK/${name}_split/$f" || fail "resumed $name $f differs"
-  done
+  stop_then_resume "$WORK/$name.toml" "$WORK/${name}_split" "$stop"
+  same_files "$WORK/${name}_straight" "$WORK/${name}_split" series.csv profiles/index.csv \
+    $(cd "$WORK/${name}_straight" && ls profiles/profile_*.csv)
   echo "ok: $name resumed after bonds broke (stop at step $stop), bitwise"
 }
 pmb="${base/"$j2"/model = \"pmb\"

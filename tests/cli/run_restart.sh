@@ -6,16 +6,8 @@ set -e
 case="$ROOT/tests/cli/cases/tiny_cu.toml"
 export OMP_NUM_THREADS=2
 "$SF" run "$case" --output "$WORK/straight" -q > /dev/null
-set +e
-"$SF" run "$case" --output "$WORK/split" -q --stop-after 130 > /dev/null 2> "$WORK/stop.txt"
-code=$?
-set -e
-[ $code -eq 130 ] || fail "stopped run exit code $code, expected 130: $(cat "$WORK/stop.txt")"
-grep -q -- "--resume" "$WORK/stop.txt" || fail "the stop message does not say how to resume"
-[ -f "$WORK/split/checkpoint.h5" ] || fail "no checkpoint after the stop"
-"$SF" run "$case" --output "$WORK/split" -q --resume > /dev/null
-cmp "$WORK/straight/dumps/dump.300.lammpstrj" "$WORK/split/dumps/dump.300.lammpstrj" || fail "resumed trajectory differs"
-cmp "$WORK/straight/thermo.csv" "$WORK/split/thermo.csv" || fail "resumed thermo.csv differs"
+stop_then_resume "$case" "$WORK/split" 130
+same_files "$WORK/straight" "$WORK/split" dumps/dump.300.lammpstrj thermo.csv
 for f in log.txt config.resolved.toml thermo.csv final.data; do
   [ -s "$WORK/straight/$f" ] || fail "run folder lacks $f"
 done
