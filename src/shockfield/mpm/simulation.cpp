@@ -33,9 +33,14 @@ Simulation::Simulation(const GridSpec& grid, std::vector<materials::SolidMateria
           throw InputError(fmt::format("mpm: GIMP needs particle half-widths in (0, h/2); particle {} has {} m along "
                                        "axis {} with h = {} m", p, particles_.half_size[p][a], a,
                                        grid_.spec().cell_size[a]));
+    if (grid_.dim() == 2 && particles_.v[p][2] != 0.0)
+      throw InputError(fmt::format("mpm: particle {} has z velocity {} m/s in a 2D (plane strain) run (expected 0)", p,
+                                   particles_.v[p][2]));
     min_mass = std::min(min_mass, particles_.mass[p]);
   }
   mass_floor_ = 1e-9 * min_mass;
+  node_velocity_.assign(grid_.size(), Vec3::Zero());
+  node_acceleration_.assign(grid_.size(), Vec3::Zero());
   wrap_particles();
 }
 
@@ -65,19 +70,20 @@ void Simulation::step(double max_dt) {
   run_hooks(Stage::BeforeStep);
 
   transfer_.build(grid_, particles_, options_.shape);
-  transfer_.to_grid(grid_, particles_, true);
+  transfer_.to_grid(grid_, particles_);
   update_grid();
   run_hooks(Stage::AfterGridUpdate);
+  nodal_velocities(true);
   if (options_.scheme == UpdateScheme::USL) {
-    grid_velocity_gradients();
+    update_materials();
     grid_to_particles();
   } else {
     grid_to_particles();
-    transfer_.to_grid(grid_, particles_, false);  // MUSL: remap the updated momenta
+    transfer_.momentum_to_grid(grid_, particles_);  // MUSL: remap the updated momenta
     grid_.apply_walls(grid_.momentum);
-    grid_velocity_gradients();
+    nodal_velocities(false);
+    update_materials();
   }
-  update_materials();
   wrap_particles();
   time_ += dt_;
   ++steps_;
@@ -102,65 +108,57 @@ void Simulation::update_grid() {
   }
 }
 
-void Simulation::grid_to_particles() {
-  const double flip = options_.flip;
-  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+void Simulation::nodal_velocities(bool with_acceleration) {
+  const auto n = static_cast<std::ptrdiff_t>(grid_.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
-    const auto p = static_cast<std::size_t>(q);
-    Vec3 accel = Vec3::Zero(), vel = Vec3::Zero();
-    transfer_.visit(grid_, p, [&](std::size_t i, double w, const Vec3&) {
-      if (grid_.mass[i] <= mass_floor_) return;
-      accel += (w / grid_.mass[i]) * grid_.force[i];
-      vel += (w / grid_.mass[i]) * grid_.momentum[i];
-    });
-    particles_.x[p] += dt_ * vel;
-    particles_.v[p] = flip * (particles_.v[p] + dt_ * accel) + (1.0 - flip) * vel;
+    const auto i = static_cast<std::size_t>(q);
+    const bool massive = grid_.mass[i] > mass_floor_;  // nodes without mass carry no velocity
+    node_velocity_[i] = massive ? Vec3(grid_.momentum[i] / grid_.mass[i]) : Vec3::Zero();
+    if (with_acceleration) node_acceleration_[i] = massive ? Vec3(grid_.force[i] / grid_.mass[i]) : Vec3::Zero();
   }
 }
 
-void Simulation::grid_velocity_gradients() {
-  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t q = 0; q < n; ++q) {
-    const auto p = static_cast<std::size_t>(q);
-    Mat3 l = Mat3::Zero();
-    transfer_.visit(grid_, p, [&](std::size_t i, double, const Vec3& grad) {
-      if (grid_.mass[i] > mass_floor_) l += (grid_.momentum[i] / grid_.mass[i]) * grad.transpose();
-    });
-    particles_.velocity_gradient[p] = l;
-  }
+void Simulation::grid_to_particles() {
+  const double flip = options_.flip;
+  transfer_.interpolate(grid_, node_acceleration_, node_velocity_, [&](std::size_t p, const Vec3& accel, const Vec3& vel) {
+    particles_.x[p] += dt_ * vel;
+    particles_.v[p] = flip * (particles_.v[p] + dt_ * accel) + (1.0 - flip) * vel;
+  });
 }
 
 void Simulation::update_materials() {
+  // L_p = Σ_i v_i ⊗ ∇N_i(x_p), then the material update of the point with it.
   const double length = grid_.min_cell_size();
-  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
-  std::ptrdiff_t failed = -1;
+  std::size_t failed = particles_.size();
   std::string why;
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t q = 0; q < n; ++q) {
-    const auto p = static_cast<std::size_t>(q);
+  transfer_.gradient(grid_, node_velocity_, [&](std::size_t p, const Mat3& l) {
+    particles_.velocity_gradient[p] = l;
     const auto& mat = materials_[static_cast<std::size_t>(particles_.material[p])];
     try {
-      mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], particles_.velocity_gradient[p], dt_,
-                 length);
+      mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], l, dt_, length);
     } catch (const RunError& e) {
 #pragma omp critical(mpm_material_failure)
-      if (failed < 0 || q < failed) {
-        failed = q;
+      if (p < failed) {
+        failed = p;
         why = e.what();
       }
     }
-  }
-  if (failed >= 0)
+  });
+  if (failed < particles_.size())
     throw RunError(fmt::format("mpm: particle {} at t = {} s (step {}): {}", failed, time_, steps_, why));
 }
 
 void Simulation::wrap_particles() {
-  for (std::size_t p = 0; p < particles_.size(); ++p) {
-    if (!grid_.wrap_position(particles_.x[p]))
-      throw RunError(fmt::format("mpm: particle {} at ({}, {}, {}) m has left the grid at t = {} s", p,
-                                 particles_.x[p][0], particles_.x[p][1], particles_.x[p][2], time_));
+  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+  std::ptrdiff_t lost = n;
+#pragma omp parallel for schedule(static) reduction(min : lost)
+  for (std::ptrdiff_t q = 0; q < n; ++q)
+    if (!grid_.wrap_position(particles_.x[static_cast<std::size_t>(q)])) lost = std::min(lost, q);
+  if (lost < n) {
+    const Vec3& x = particles_.x[static_cast<std::size_t>(lost)];
+    throw RunError(fmt::format("mpm: particle {} at ({}, {}, {}) m has left the grid at t = {} s", lost, x[0], x[1],
+                               x[2], time_));
   }
 }
 

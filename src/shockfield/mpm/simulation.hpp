@@ -65,8 +65,10 @@ class Simulation {
  private:
   void run_hooks(Stage stage);
   void update_grid();
+  /// v_i = (m v)_i / m_i and (with_acceleration) a_i = f_i / m_i; zero on nodes without mass.
+  void nodal_velocities(bool with_acceleration);
   void grid_to_particles();
-  void grid_velocity_gradients();
+  /// L_p from the nodal velocities, then the material update of every point.
   void update_materials();
   void wrap_particles();
 
@@ -77,6 +79,8 @@ class Simulation {
   Transfer transfer_;
   std::array<std::vector<Hook>, 3> hooks_;
   std::vector<Vec3> old_momentum_;
+  std::vector<Vec3> node_velocity_;
+  std::vector<Vec3> node_acceleration_;
   double mass_floor_ = 0.0;
   double time_ = 0.0;
   double dt_ = 0.0;

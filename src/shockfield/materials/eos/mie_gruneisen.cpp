@@ -1,5 +1,6 @@
 #include "shockfield/materials/eos/mie_gruneisen.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -25,39 +26,42 @@ double MieGruneisen::compression(double rho) const {
   return eta;
 }
 
-double MieGruneisen::hugoniot_pressure(double rho) const {
-  const double eta = compression(rho);
-  if (eta <= 0.0) return bulk_modulus() * eta;  // eq. 6, tension branch
-  const double d = 1.0 - lambda * eta;
-  return bulk_modulus() * eta / (d * d);  // eq. 6, compression branch
+MieGruneisen::HugoniotPoint MieGruneisen::hugoniot(double rho) const {
+  HugoniotPoint h;
+  h.rho = rho;
+  h.eta = compression(rho);
+  const double k0 = bulk_modulus();
+  h.ph = k0 * h.eta, h.dph = k0;  // eq. 6, tension branch
+  if (h.eta > 0.0) {              // eq. 6, compression branch
+    const double d = 1.0 - lambda * h.eta;
+    h.ph = k0 * h.eta / (d * d);
+    h.dph = k0 * (1.0 + lambda * h.eta) / (d * d * d);
+  }
+  h.eh = 0.5 * h.ph * h.eta / rho0;  // V0 − V = η/ρ0
+  return h;
 }
 
-double MieGruneisen::hugoniot_energy(double rho) const {
-  const double eta = 1.0 - rho0 / rho;  // V0 − V = η/ρ0
-  return 0.5 * hugoniot_pressure(rho) * eta / rho0;
-}
+double MieGruneisen::hugoniot_pressure(double rho) const { return hugoniot(rho).ph; }
+
+double MieGruneisen::hugoniot_energy(double rho) const { return hugoniot(rho).eh; }
 
 double MieGruneisen::pressure(double rho, double e) const {
-  return hugoniot_pressure(rho) + energy_coefficient() * (e - hugoniot_energy(rho));  // eq. 5
+  const HugoniotPoint h = hugoniot(rho);
+  return h.ph + energy_coefficient() * (e - h.eh);  // eq. 5
 }
 
-double MieGruneisen::sound_speed(double rho, double e) const {
-  const double eta = compression(rho);
-  const double k0 = bulk_modulus();
-  // dP_H/dη and dE_H/dη = (P_H + η·dP_H/dη)/(2ρ0); dη/dρ = ρ0/ρ².
-  double ph = k0 * eta, dph = k0;
-  if (eta > 0.0) {
-    const double d = 1.0 - lambda * eta;
-    ph = k0 * eta / (d * d);
-    dph = k0 * (1.0 + lambda * eta) / (d * d * d);
-  }
-  const double deh = (ph + eta * dph) / (2.0 * rho0);
-  const double dp_drho_e = (dph - energy_coefficient() * deh) * rho0 / (rho * rho);
-  const double p = ph + energy_coefficient() * (e - 0.5 * ph * eta / rho0);
-  const double c2 = dp_drho_e + p / (rho * rho) * energy_coefficient();
+double MieGruneisen::sound_speed_squared(const HugoniotPoint& h, double e) const {
+  // dE_H/dη = (P_H + η·dP_H/dη)/(2ρ0); dη/dρ = ρ0/ρ².
+  const double deh = (h.ph + h.eta * h.dph) / (2.0 * rho0);
+  const double inv_rho2 = 1.0 / (h.rho * h.rho);
+  const double dp_drho_e = (h.dph - energy_coefficient() * deh) * rho0 * inv_rho2;
+  const double p = h.ph + energy_coefficient() * (e - h.eh);
+  const double c2 = dp_drho_e + p * inv_rho2 * energy_coefficient();
   // Deep tension with a large energy term can make c² tiny or negative; the bulk speed at ρ0
   // bounds the stable step from below in that case.
-  return std::sqrt(std::max(c2, 1e-6 * c0 * c0));
+  return std::max(c2, 1e-6 * c0 * c0);
 }
+
+double MieGruneisen::sound_speed(double rho, double e) const { return std::sqrt(sound_speed_squared(hugoniot(rho), e)); }
 
 }  // namespace shockfield::materials

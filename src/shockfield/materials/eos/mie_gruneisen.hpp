@@ -28,6 +28,21 @@ struct MieGruneisen {
   /// singularity η = 1/λ.
   double pressure(double rho, double e) const;
 
+  /// The Hugoniot at one density, evaluated once and shared by the pressure, energy and sound
+  /// speed of a material-point update.
+  struct HugoniotPoint {
+    double rho = 0.0;  ///< ρ [kg/m³]
+    double eta = 0.0;  ///< η = 1 − ρ0/ρ
+    double ph = 0.0;   ///< P_H (eq. 6) [Pa]
+    double dph = 0.0;  ///< dP_H/dη [Pa]
+    double eh = 0.0;   ///< E_H = ½P_H(V0 − V) [J/kg]
+  };
+  /// RunError beyond the Hugoniot singularity η = 1/λ.
+  HugoniotPoint hugoniot(double rho) const;
+  /// Squared isentropic bulk sound speed at the Hugoniot point's density and energy e, floored
+  /// at 10⁻⁶c0² [m²/s²].
+  double sound_speed_squared(const HugoniotPoint& h, double e) const;
+
   /// Hugoniot pressure P_H(ρ) (eq. 6) [Pa].
   double hugoniot_pressure(double rho) const;
   /// Hugoniot specific energy E_H(ρ) = ½P_H(V0 − V) [J/kg].
