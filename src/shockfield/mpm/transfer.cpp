@@ -14,6 +14,7 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
     else return stencils3_;
   }();
   stencils.resize(p.size());
+  bin_of_.resize(p.size());
   const GridSpec& spec = grid.spec();
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   std::ptrdiff_t lost = -1;
@@ -29,6 +30,7 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
       s.w[ua] = w.w;
       s.dw[ua] = w.dw;
     }
+    bin_of_[uq] = grid.flat(s.base[0], s.base[1], Dim == 3 ? s.base[Dim - 1] : 0);
   }
   if (lost >= 0) {
     const Vec3& x = p.x[static_cast<std::size_t>(lost)];
@@ -36,22 +38,14 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
   }
 }
 
-template <int Dim>
 void Transfer::bin(const Grid& grid) {
-  const auto& stencils = [&]() -> const auto& {
-    if constexpr (Dim == 2) return stencils2_;
-    else return stencils3_;
-  }();
   // Counting sort by the first node of the stencil; stable, so particle order within a bin.
-  auto bin_of = [&](const Stencil<Dim>& s) {
-    return grid.flat(s.base[0], s.base[1], Dim == 3 ? s.base[Dim - 1] : 0);
-  };
   bin_start_.assign(grid.size() + 1, 0);
-  for (const auto& s : stencils) ++bin_start_[bin_of(s) + 1];
+  for (const std::size_t b : bin_of_) ++bin_start_[b + 1];
   for (std::size_t b = 0; b < grid.size(); ++b) bin_start_[b + 1] += bin_start_[b];
-  binned_.resize(stencils.size());
+  binned_.resize(bin_of_.size());
   std::vector<std::size_t> fill(bin_start_.begin(), bin_start_.end() - 1);
-  for (std::size_t q = 0; q < stencils.size(); ++q) binned_[fill[bin_of(stencils[q])]++] = q;
+  for (std::size_t q = 0; q < bin_of_.size(); ++q) binned_[fill[bin_of_[q]]++] = q;
 }
 
 void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
@@ -69,13 +63,12 @@ void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
     stencils3_.clear();
     if (shape == ShapeKind::Linear) evaluate<2, LinearShape>(grid, p);
     else evaluate<2, GimpShape>(grid, p);
-    bin<2>(grid);
   } else {
     stencils2_.clear();
     if (shape == ShapeKind::Linear) evaluate<3, LinearShape>(grid, p);
     else evaluate<3, GimpShape>(grid, p);
-    bin<3>(grid);
   }
+  bin(grid);
 
   // Slabs of two layers along the outermost axis; the layers a slab's stencils touch are
   // [2s, 2s + 1 + support). Even slabs, then odd slabs, then (periodic axis) the slabs reaching
@@ -92,60 +85,6 @@ void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
   }
 }
 
-template <int Dim, int S, bool Force>
-void Transfer::scatter(Grid& grid, const Particles& p) const {
-  const auto& stencils = [&]() -> const auto& {
-    if constexpr (Dim == 2) return stencils2_;
-    else return stencils3_;
-  }();
-  const std::size_t per_slab = slab_bins_, bins = grid.size();
-  for (const auto& pass : passes_) {
-    const auto count = static_cast<std::ptrdiff_t>(pass.size());
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::ptrdiff_t k = 0; k < count; ++k) {
-      const std::size_t slab = pass[static_cast<std::size_t>(k)];
-      const std::size_t first = bin_start_[std::min(bins, slab * per_slab)];
-      const std::size_t last = bin_start_[std::min(bins, (slab + 1) * per_slab)];
-      for (std::size_t e = first; e < last; ++e) {
-        const std::size_t q = binned_[e];
-        const auto& s = stencils[q];
-        const auto node = nodes<Dim, S>(s);
-        const double m = p.mass[q];
-        const Vec3 mv = m * p.v[q];
-        Mat3 vs;  // V_p σ_p
-        if constexpr (Force) vs = p.volume(q) * p.state[q].stress();
-        std::size_t n = 0;
-        for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
-          const auto uc = static_cast<std::size_t>(c);
-          const double wz = Dim == 3 ? s.w[Dim - 1][uc] : 1.0, dwz = Dim == 3 ? s.dw[Dim - 1][uc] : 0.0;
-          for (int b = 0; b < S; ++b) {
-            const auto ub = static_cast<std::size_t>(b);
-            const double wy = s.w[1][ub], dwy = s.dw[1][ub];
-            for (int a = 0; a < S; ++a, ++n) {
-              const auto ua = static_cast<std::size_t>(a);
-              const double wx = s.w[0][ua], dwx = s.dw[0][ua];
-              const double w = wx * wy * wz;
-              const std::size_t i = node[n];
-              Vec3& gm = grid.momentum[i];
-              for (int r = 0; r < Dim; ++r) gm[r] += w * mv[r];
-              if constexpr (Force) {
-                grid.mass[i] += w * m;
-                const double g[3] = {dwx * wy * wz, wx * dwy * wz, wx * wy * dwz};
-                Vec3& f = grid.force[i];
-                for (int r = 0; r < Dim; ++r) {
-                  double t = vs(r, 0) * g[0];
-                  for (int k2 = 1; k2 < Dim; ++k2) t += vs(r, k2) * g[k2];
-                  f[r] -= t;  // eq. 12, σ symmetric
-                }
-              }
-            }
-          }
-        }
-      }
-    }
-  }
-}
-
 void Transfer::to_grid(Grid& grid, const Particles& p) const {
   const auto nn = static_cast<std::ptrdiff_t>(grid.size());
 #pragma omp parallel for schedule(static)
@@ -156,16 +95,8 @@ void Transfer::to_grid(Grid& grid, const Particles& p) const {
     grid.force[u].setZero();
   }
   dispatch([&](auto kernel) {
-    scatter<decltype(kernel.first)::value, decltype(kernel.second)::value, true>(grid, p);
-  });
-}
-
-void Transfer::momentum_to_grid(Grid& grid, const Particles& p) const {
-  const auto nn = static_cast<std::ptrdiff_t>(grid.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < nn; ++i) grid.momentum[static_cast<std::size_t>(i)].setZero();
-  dispatch([&](auto kernel) {
-    scatter<decltype(kernel.first)::value, decltype(kernel.second)::value, false>(grid, p);
+    scatter<decltype(kernel.first)::value, decltype(kernel.second)::value, true>(grid, p,
+                                                                                 [](std::size_t, const auto&, const auto&) {});
   });
 }
 

@@ -16,6 +16,7 @@
 // periodic outermost axis go last, one at a time). Each nodal sum is therefore formed in one
 // fixed order — slab pass, then bin, then particle index — whatever the number of OpenMP threads,
 // with no atomics and no per-thread copies of the grid.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <type_traits>
@@ -45,16 +46,19 @@ class Transfer {
   void build(const Grid& grid, const Particles& p, ShapeKind shape);
   /// Nodal mass, momentum and internal force from the particles (eq. 12); overwrites them.
   void to_grid(Grid& grid, const Particles& p) const;
-  /// Nodal momentum only, from the current particle velocities (the MUSL remap); the nodal mass
-  /// is that of `to_grid`, the stencils being unchanged within a step.
-  void momentum_to_grid(Grid& grid, const Particles& p) const;
 
   /// For each particle p (in parallel): f(p, Σ_i N_i a_i, Σ_i N_i b_i) for nodal vectors a, b.
   template <class F>
-  void interpolate(const Grid& grid, const std::vector<Vec3>& a, const std::vector<Vec3>& b, F&& f) const;
+  void interpolate(const std::vector<Vec3>& a, const std::vector<Vec3>& b, F&& f) const;
+  /// The same, fused with the MUSL remap: right after f has updated particle p's velocity, its
+  /// momentum m_p v_p is scattered to the nodal momenta (zeroed first). The nodal mass stays that
+  /// of `to_grid`, the stencils being unchanged within a step.
+  template <class F>
+  void interpolate_and_remap(Grid& grid, const Particles& p, const std::vector<Vec3>& a, const std::vector<Vec3>& b,
+                             F&& f) const;
   /// For each particle p (in parallel): f(p, Σ_i a_i ⊗ ∇N_i(x_p)) for a nodal vector field a.
   template <class F>
-  void gradient(const Grid& grid, const std::vector<Vec3>& a, F&& f) const;
+  void gradient(const std::vector<Vec3>& a, F&& f) const;
 
  private:
   template <int D, int S>
@@ -64,10 +68,21 @@ class Transfer {
   void dispatch(K&& k) const;
   template <int Dim, class Shape>
   void evaluate(const Grid& grid, const Particles& p);
-  template <int Dim>
   void bin(const Grid& grid);
-  template <int Dim, int S, bool Force>
-  void scatter(Grid& grid, const Particles& p) const;
+  /// Particle-to-grid sums, slab pass by slab pass (see the top of this file). Per particle q,
+  /// `before(q, stencil, nodes)` runs first; then w m_p v_p (and with Force, w m_p and −V_p σ_p·∇N)
+  /// is added to each node of its stencil.
+  template <int Dim, int S, bool Force, class Before>
+  void scatter(Grid& grid, const Particles& p, Before&& before) const;
+  template <int Dim>
+  const std::vector<Stencil<Dim>>& stencils() const {
+    if constexpr (Dim == 2) return stencils2_;
+    else return stencils3_;
+  }
+  /// Σ_i N_i a_i and Σ_i N_i b_i over a stencil.
+  template <int Dim, int S, std::size_t N>
+  static void gather(const Stencil<Dim>& s, const std::array<std::size_t, N>& node, const std::vector<Vec3>& a,
+                     const std::vector<Vec3>& b, Vec3& sa, Vec3& sb);
   /// Flat indices of the S^Dim nodes of a stencil, x fastest.
   template <int Dim, int S>
   [[gnu::always_inline]] std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> nodes(const Stencil<Dim>& s) const;
@@ -79,6 +94,7 @@ class Transfer {
   std::array<std::vector<std::size_t>, 3> offset_;  // [axis][base + k]: flat offset of node base + k, wrapped
   std::vector<Stencil<2>> stencils2_;
   std::vector<Stencil<3>> stencils3_;
+  std::vector<std::size_t> bin_of_;  // per particle: flat index of its stencil's first node
   std::vector<std::size_t> bin_start_;
   std::vector<std::size_t> binned_;
   std::size_t slab_bins_ = 0;                     // bins per slab (two outermost layers)
@@ -109,55 +125,122 @@ inline std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> Transfer::nodes(const
   return out;
 }
 
-template <class F>
-void Transfer::interpolate(const Grid& grid, const std::vector<Vec3>& va, const std::vector<Vec3>& vb, F&& f) const {
-  (void)grid;
-  dispatch([&](auto kernel) {
-    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
-    const auto& stencils = [&]() -> const auto& {
-      if constexpr (D == 2) return stencils2_;
-      else return stencils3_;
-    }();
-    const auto n = static_cast<std::ptrdiff_t>(stencils.size());
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t q = 0; q < n; ++q) {
-      const auto& s = stencils[static_cast<std::size_t>(q)];
-      const auto node = nodes<D, S>(s);
-      Vec3 sa = Vec3::Zero(), sb = Vec3::Zero();
-      std::size_t e = 0;
-      for (int c = 0; c < (D == 3 ? S : 1); ++c) {
-        const double wz = D == 3 ? s.w[D - 1][static_cast<std::size_t>(c)] : 1.0;
-        for (int b = 0; b < S; ++b) {
-          const double wyz = s.w[1][static_cast<std::size_t>(b)] * wz;
-          for (int a = 0; a < S; ++a, ++e) {
-            const double w = s.w[0][static_cast<std::size_t>(a)] * wyz;
-            const Vec3& na = va[node[e]];
-            const Vec3& nb = vb[node[e]];
-            for (int r = 0; r < D; ++r) {
-              sa[r] += w * na[r];
-              sb[r] += w * nb[r];
-            }
-          }
+template <int Dim, int S, std::size_t N>
+inline void Transfer::gather(const Stencil<Dim>& s, const std::array<std::size_t, N>& node, const std::vector<Vec3>& va,
+                             const std::vector<Vec3>& vb, Vec3& sa, Vec3& sb) {
+  sa.setZero();
+  sb.setZero();
+  std::size_t e = 0;
+  for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
+    const double wz = Dim == 3 ? s.w[Dim - 1][static_cast<std::size_t>(c)] : 1.0;
+    for (int b = 0; b < S; ++b) {
+      const double wy = s.w[1][static_cast<std::size_t>(b)];
+      for (int a = 0; a < S; ++a, ++e) {
+        const double w = s.w[0][static_cast<std::size_t>(a)] * wy * wz;
+        const Vec3& na = va[node[e]];
+        const Vec3& nb = vb[node[e]];
+        for (int r = 0; r < Dim; ++r) {
+          sa[r] += w * na[r];
+          sb[r] += w * nb[r];
         }
       }
+    }
+  }
+}
+
+template <class F>
+void Transfer::interpolate(const std::vector<Vec3>& va, const std::vector<Vec3>& vb, F&& f) const {
+  dispatch([&](auto kernel) {
+    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
+    const auto& all = stencils<D>();
+    const auto n = static_cast<std::ptrdiff_t>(all.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t q = 0; q < n; ++q) {
+      const auto& s = all[static_cast<std::size_t>(q)];
+      Vec3 sa, sb;
+      gather<D, S>(s, nodes<D, S>(s), va, vb, sa, sb);
       f(static_cast<std::size_t>(q), sa, sb);
     }
   });
 }
 
 template <class F>
-void Transfer::gradient(const Grid& grid, const std::vector<Vec3>& va, F&& f) const {
-  (void)grid;
+void Transfer::interpolate_and_remap(Grid& grid, const Particles& p, const std::vector<Vec3>& va,
+                                     const std::vector<Vec3>& vb, F&& f) const {
+  const auto nn = static_cast<std::ptrdiff_t>(grid.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < nn; ++i) grid.momentum[static_cast<std::size_t>(i)].setZero();
   dispatch([&](auto kernel) {
     constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
-    const auto& stencils = [&]() -> const auto& {
-      if constexpr (D == 2) return stencils2_;
-      else return stencils3_;
-    }();
-    const auto n = static_cast<std::ptrdiff_t>(stencils.size());
+    scatter<D, S, false>(grid, p, [&](std::size_t q, const Stencil<D>& s, const auto& node) {
+      Vec3 sa, sb;
+      gather<D, S>(s, node, va, vb, sa, sb);
+      f(q, sa, sb);
+    });
+  });
+}
+
+template <int Dim, int S, bool Force, class Before>
+void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
+  const auto& all = stencils<Dim>();
+  const std::size_t bins = grid.size();
+  for (const auto& pass : passes_) {
+    const auto count = static_cast<std::ptrdiff_t>(pass.size());
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const std::size_t slab = pass[static_cast<std::size_t>(k)];
+      const std::size_t first = bin_start_[std::min(bins, slab * slab_bins_)];
+      const std::size_t last = bin_start_[std::min(bins, (slab + 1) * slab_bins_)];
+      for (std::size_t e = first; e < last; ++e) {
+        const std::size_t q = binned_[e];
+        const auto& s = all[q];
+        const auto node = nodes<Dim, S>(s);
+        before(q, s, node);
+        const double m = p.mass[q];
+        const Vec3 mv = m * p.v[q];
+        Mat3 vs;  // V_p σ_p
+        if constexpr (Force) vs = p.volume(q) * p.state[q].stress();
+        std::size_t n = 0;
+        for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
+          const auto uc = static_cast<std::size_t>(c);
+          const double wz = Dim == 3 ? s.w[Dim - 1][uc] : 1.0, dwz = Dim == 3 ? s.dw[Dim - 1][uc] : 0.0;
+          for (int b = 0; b < S; ++b) {
+            const auto ub = static_cast<std::size_t>(b);
+            const double wy = s.w[1][ub], dwy = s.dw[1][ub];
+            for (int a = 0; a < S; ++a, ++n) {
+              const auto ua = static_cast<std::size_t>(a);
+              const double wx = s.w[0][ua], dwx = s.dw[0][ua];
+              const double w = wx * wy * wz;
+              const std::size_t i = node[n];
+              Vec3& gm = grid.momentum[i];
+              for (int r = 0; r < Dim; ++r) gm[r] += w * mv[r];
+              if constexpr (Force) {
+                grid.mass[i] += w * m;
+                const double g[3] = {dwx * wy * wz, wx * dwy * wz, wx * wy * dwz};
+                Vec3& f = grid.force[i];
+                for (int r = 0; r < Dim; ++r) {
+                  double t = vs(r, 0) * g[0];
+                  for (int k2 = 1; k2 < Dim; ++k2) t += vs(r, k2) * g[k2];
+                  f[r] -= t;  // eq. 12, σ symmetric
+                }
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+template <class F>
+void Transfer::gradient(const std::vector<Vec3>& va, F&& f) const {
+  dispatch([&](auto kernel) {
+    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
+    const auto& all = stencils<D>();
+    const auto n = static_cast<std::ptrdiff_t>(all.size());
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t q = 0; q < n; ++q) {
-      const auto& s = stencils[static_cast<std::size_t>(q)];
+      const auto& s = all[static_cast<std::size_t>(q)];
       const auto node = nodes<D, S>(s);
       Mat3 l = Mat3::Zero();
       std::size_t e = 0;
