@@ -28,7 +28,7 @@ namespace {
 
 // a += dt·(W·a − a·W) for a symmetric a and an antisymmetric W (the Jaumann terms of eq. 1):
 // a·W = −(W·a)ᵀ, so the increment is W·a + (W·a)ᵀ, symmetric by construction.
-void jaumann_rotate(Mat3& a, const Mat3& w, double dt) {
+[[gnu::always_inline]] inline void jaumann_rotate(Mat3& a, const Mat3& w, double dt) {
   Mat3 wa;
   wa.noalias() = w * a;
   a += dt * (wa + wa.transpose());
