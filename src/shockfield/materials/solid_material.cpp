@@ -52,12 +52,17 @@ void SolidMaterial::update(PointState& p, double rho_ref, const Mat3& velocity_g
   const double j_new = p.deformation.determinant();
   if (!(j_new > 0.0) || !std::isfinite(j_new))
     throw RunError(fmt::format("material '{}': a point was inverted (det F = {})", name, j_new));
-  const double v_old = j_old / rho_ref, v_new = j_new / rho_ref, dv = v_new - v_old;
+  const double v_ref = 1.0 / rho_ref;
+  const double v_old = j_old * v_ref, v_new = j_new * v_ref, dv = v_new - v_old;
   const double rho_new = 1.0 / v_new;
 
   // Deviatoric part (eqs. 1-4) on the Jaumann-rotated stress: ṡ = Ws − sW + 2G(ė − ė^p).
-  const Mat3 d = 0.5 * (l + l.transpose());
-  const Mat3 w = 0.5 * (l - l.transpose());
+  Mat3 d, w;  // symmetric and antisymmetric parts of L, element by element
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) {
+      d(r, c) = 0.5 * (l(r, c) + l(c, r));
+      w(r, c) = 0.5 * (l(r, c) - l(c, r));
+    }
   J2Plasticity::State& dev = p.deviatoric;
   jaumann_rotate(dev.s, w, dt);
   if (strength.isotropic_fraction < 1.0) jaumann_rotate(dev.back_stress, w, dt);  // α ≡ 0 otherwise

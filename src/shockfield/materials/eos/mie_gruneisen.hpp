@@ -45,9 +45,9 @@ struct MieGruneisen {
     const double k0 = bulk_modulus();
     h.ph = k0 * h.eta, h.dph = k0;  // eq. 6, tension branch
     if (h.eta > 0.0) {              // eq. 6, compression branch
-      const double d = 1.0 - lambda * h.eta;
-      h.ph = k0 * h.eta / (d * d);
-      h.dph = k0 * (1.0 + lambda * h.eta) / (d * d * d);
+      const double inv_d = 1.0 / (1.0 - lambda * h.eta), inv_d2 = inv_d * inv_d;
+      h.ph = k0 * h.eta * inv_d2;
+      h.dph = k0 * (1.0 + lambda * h.eta) * inv_d2 * inv_d;
     }
     h.eh = 0.5 * h.ph * h.eta / rho0;  // V0 − V = η/ρ0
     return h;
