@@ -43,6 +43,8 @@ struct SolidMaterial {
   void validate() const;
   /// Longitudinal (elastic) wave speed √(c_b² + 4G/(3ρ)) at (ρ, e) [m/s].
   double longitudinal_speed(double rho, double e) const;
+  /// The same at a Hugoniot point already evaluated.
+  double longitudinal_speed(const MieGruneisen::HugoniotPoint& h, double e) const;
   /// Unstressed state at the reference density and the initial temperature.
   PointState initial_state() const;
   /// Advance a point with reference density rho_ref (= mass / initial volume) over dt with the

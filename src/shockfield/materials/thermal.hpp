@@ -25,12 +25,36 @@ struct Thermal {
 
   void validate(const std::string& where) const;
   /// dT/dV along the Hugoniot of `eos` at specific volume v and temperature T (eq. 7) [K·kg/m³].
-  double hugoniot_slope(const MieGruneisen& eos, double v, double temperature) const;
+  double hugoniot_slope(const MieGruneisen& eos, double v, double temperature) const {
+    const double v0 = 1.0 / eos.rho0;
+    const double l = eos.lambda;
+    const double d = (l - 1.0) * v0 - l * v;
+    const double shock = eos.c0 * eos.c0 * l * (v0 - v) * (v0 - v) / (heat_capacity * d * d * d);
+    return shock - eos.energy_coefficient() * temperature;  // eq. 7, γ/V = ρ0γ0
+  }
   /// The evaluation function: temperature after the specific volume changes from v_old to v_new
   /// and the specific plastic work grows by dwp [J/kg] (eqs. 7-8, second-order Runge-Kutta in V).
   /// `shock_volume` is the smallest specific volume reached so far; it is updated.
+  /// (Inline: it runs once per material-point update.)
   double advance(const MieGruneisen& eos, double v_old, double v_new, double temperature, double dwp,
-                 double& shock_volume) const;
+                 double& shock_volume) const {
+    auto isentrope = [&](double, double t) { return -eos.energy_coefficient() * t; };
+    auto hugoniot = [&](double v, double t) { return hugoniot_slope(eos, v, t); };
+    auto rk2 = [](double va, double vb, double t, auto slope) {
+      const double dv = vb - va;
+      return t + dv * slope(va + 0.5 * dv, t + 0.5 * dv * slope(va, t));
+    };
+    double t = temperature;
+    if (v_new < shock_volume) {  // a new, stronger shock state: isentrope down to it, then eq. 7
+      const double v_shock_start = v_old < shock_volume ? v_old : shock_volume;
+      t = rk2(v_old, v_shock_start, t, isentrope);
+      t = rk2(v_shock_start, v_new, t, hugoniot);
+      shock_volume = v_new;
+    } else {
+      t = rk2(v_old, v_new, t, isentrope);
+    }
+    return t + dwp / heat_capacity;  // eq. 8
+  }
 };
 
 }  // namespace shockfield::materials

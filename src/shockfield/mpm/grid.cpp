@@ -56,22 +56,12 @@ double Grid::min_cell_size() const {
   return h;
 }
 
-bool Grid::wrap_position(Vec3& x) const {
-  for (int a = 0; a < spec_.dim; ++a) {
-    const double len = spec_.length(a);
-    double r = x[a] - spec_.origin[a];
-    if (spec_.periodic[static_cast<std::size_t>(a)]) {
-      r -= len * std::floor(r / len);
-      if (r >= len) r = 0.0;  // round-off of the floor above
-      x[a] = spec_.origin[a] + r;
-    } else if (!(r >= 0.0 && r <= len)) {
-      return false;
-    }
-  }
-  return true;
+double Grid::wrap_periodic(double r, double len) {
+  r -= len * std::floor(r / len);
+  return r >= len ? 0.0 : r;  // round-off of the floor above
 }
 
-bool Grid::fit(int axis, Weights1D& w) const {
+bool Grid::fit_edge(int axis, Weights1D& w) const {
   if (spec_.periodic[static_cast<std::size_t>(axis)]) {
     w.base = wrap(axis, w.base);
     return true;

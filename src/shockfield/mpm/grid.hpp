@@ -46,11 +46,27 @@ class Grid {
   double min_cell_size() const;
 
   /// Wrap a position into the periodic extent; false when it lies outside a bounded axis.
-  bool wrap_position(Vec3& x) const;
+  bool wrap_position(Vec3& x) const {
+    for (int a = 0; a < spec_.dim; ++a) {
+      const double len = spec_.length(a);
+      double r = x[a] - spec_.origin[a];
+      if (spec_.periodic[static_cast<std::size_t>(a)]) {
+        if (!(r >= 0.0 && r < len)) r = wrap_periodic(r, len);
+        x[a] = spec_.origin[a] + r;
+      } else if (!(r >= 0.0 && r <= len)) {
+        return false;
+      }
+    }
+    return true;
+  }
   /// Fit a 1D stencil into the grid: wrap along periodic axes; on bounded axes drop the weights
   /// of nodes beyond the edge (a GIMP particle box overhanging a wall) and shift the window in.
   /// False when the particle itself is outside.
-  bool fit(int axis, Weights1D& w) const;
+  bool fit(int axis, Weights1D& w) const {
+    const auto a = static_cast<std::size_t>(axis);
+    if (!spec_.periodic[a] && w.base >= 0 && w.base + w.count <= nodes_[a]) return true;  // inside
+    return fit_edge(axis, w);
+  }
 
   /// Impose the rigid walls on nodal momenta: stick zeroes all components, slip the normal one.
   void apply_walls(std::vector<Vec3>& momentum) const;
@@ -61,6 +77,9 @@ class Grid {
   std::vector<Vec3> force;
 
  private:
+  bool fit_edge(int axis, Weights1D& w) const;  // fit() on a periodic axis or at a bounded edge
+  static double wrap_periodic(double r, double len);  // r into [0, len)
+
   GridSpec spec_;
   std::array<int, 3> nodes_{};
 };

@@ -38,30 +38,25 @@ struct LinearShape {
   }
 };
 
-/// Uniform GIMP: particle box [x − l, x + l], l = half < h/2, so at most three nodes.
+/// Uniform GIMP: particle box [x − l, x + l], l = half < h/2, so at most three nodes. The pieces
+/// are evaluated with the reciprocals 1/h and 1/(hl) and selected without branches (the inner
+/// loop of every step's stencil evaluation).
 struct GimpShape {
   static constexpr int support = 3;
   static Weights1D evaluate(double x, double h, double half) {
     Weights1D out;
     out.count = 3;
     out.base = static_cast<int>(std::floor((x - half) / h));
+    const double inv_h = 1.0 / h, inv_hl = 1.0 / (h * half);
     for (int k = 0; k < 3; ++k) {
       const double r = x - (out.base + k) * h;  // particle minus node position
-      const double a = std::abs(r), sgn = r < 0.0 ? -1.0 : 1.0;
-      double w = 0.0, dw = 0.0;
-      if (a < half) {
-        w = 1.0 - (r * r + half * half) / (2.0 * h * half);
-        dw = -r / (h * half);
-      } else if (a <= h - half) {
-        w = 1.0 - a / h;
-        dw = -sgn / h;
-      } else if (a < h + half) {
-        const double g = h + half - a;
-        w = g * g / (4.0 * h * half);
-        dw = -sgn * g / (2.0 * h * half);
-      }
-      out.w[static_cast<std::size_t>(k)] = w;
-      out.dw[static_cast<std::size_t>(k)] = dw;
+      const double a = std::abs(r), sgn = r < 0.0 ? -1.0 : 1.0, g = h + half - a;
+      const double w_in = 1.0 - (r * r + half * half) * (0.5 * inv_hl), dw_in = -r * inv_hl;  // |r| < l
+      const double w_mid = 1.0 - a * inv_h, dw_mid = -sgn * inv_h;                           // l <= |r| <= h − l
+      const double w_out = g * g * (0.25 * inv_hl), dw_out = -sgn * g * (0.5 * inv_hl);     // h − l < |r| < h + l
+      const bool in = a < half, mid = a <= h - half, out_ = a < h + half;
+      out.w[static_cast<std::size_t>(k)] = in ? w_in : mid ? w_mid : out_ ? w_out : 0.0;
+      out.dw[static_cast<std::size_t>(k)] = in ? dw_in : mid ? dw_mid : out_ ? dw_out : 0.0;
     }
     return out;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <omp.h>
 
 #include "shockfield/core/error.hpp"
 
@@ -33,9 +34,14 @@ Simulation::Simulation(const GridSpec& grid, std::vector<materials::SolidMateria
           throw InputError(fmt::format("mpm: GIMP needs particle half-widths in (0, h/2); particle {} has {} m along "
                                        "axis {} with h = {} m", p, particles_.half_size[p][a], a,
                                        grid_.spec().cell_size[a]));
+    if (grid_.dim() == 2 && particles_.v[p][2] != 0.0)
+      throw InputError(fmt::format("mpm: particle {} has z velocity {} m/s in a 2D (plane strain) run (expected 0)", p,
+                                   particles_.v[p][2]));
     min_mass = std::min(min_mass, particles_.mass[p]);
   }
   mass_floor_ = 1e-9 * min_mass;
+  node_velocity_.assign(grid_.size(), Vec3::Zero());
+  node_acceleration_.assign(grid_.size(), Vec3::Zero());
   wrap_particles();
 }
 
@@ -57,7 +63,10 @@ double Simulation::stable_time_step() const {
 }
 
 void Simulation::step(double max_dt) {
-  dt_ = stable_time_step();
+  // The fastest signal of the previous step's end, unless a hook or the caller may have changed
+  // the particles since (max over the same values either way).
+  dt_ = fastest_known_ ? options_.courant * grid_.min_cell_size() / fastest_ : stable_time_step();
+  fastest_known_ = false;
   if (max_dt > 0.0) dt_ = std::min(dt_, max_dt);
   if (!(std::isfinite(dt_) && dt_ > 0.0) || dt_ < options_.min_time_step)
     throw RunError(fmt::format("mpm: time step {} s at t = {} s (step {}) is not usable (minimum {} s)", dt_, time_,
@@ -65,22 +74,26 @@ void Simulation::step(double max_dt) {
   run_hooks(Stage::BeforeStep);
 
   transfer_.build(grid_, particles_, options_.shape);
-  transfer_.to_grid(grid_, particles_, true);
+  transfer_.to_grid(grid_, particles_);
   update_grid();
   run_hooks(Stage::AfterGridUpdate);
+  nodal_velocities(true);
+  per_thread_.assign(static_cast<std::size_t>(omp_get_max_threads()), {0.0, particles_.size()});
   if (options_.scheme == UpdateScheme::USL) {
-    grid_velocity_gradients();
-    grid_to_particles();
+    grid_to_particles(false);  // L_p below uses the same nodal velocities
   } else {
-    grid_to_particles();
-    transfer_.to_grid(grid_, particles_, false);  // MUSL: remap the updated momenta
+    grid_to_particles(true);  // MUSL: the updated momenta are remapped to the grid on the way
     grid_.apply_walls(grid_.momentum);
-    grid_velocity_gradients();
+    nodal_velocities(false);
   }
   update_materials();
-  wrap_particles();
+  fastest_ = 0.0;
+  std::size_t lost = particles_.size();
+  for (const auto& t : per_thread_) fastest_ = std::max(fastest_, t.fastest), lost = std::min(lost, t.lost);
+  if (lost < particles_.size()) throw_left_grid(lost);
   time_ += dt_;
   ++steps_;
+  fastest_known_ = hooks_[static_cast<std::size_t>(Stage::EndOfStep)].empty();
   run_hooks(Stage::EndOfStep);
 }
 
@@ -90,10 +103,14 @@ void Simulation::run_until(double t_end) {
 
 void Simulation::update_grid() {
   // m_i dv_i/dt = f_i (eq. 12), walls, then the force the walls leave (for the FLIP update).
-  old_momentum_ = grid_.momentum;
+  old_momentum_.resize(grid_.size());
   const auto n = static_cast<std::ptrdiff_t>(grid_.size());
 #pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < n; ++i) grid_.momentum[static_cast<std::size_t>(i)] += dt_ * grid_.force[static_cast<std::size_t>(i)];
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    old_momentum_[u] = grid_.momentum[u];
+    grid_.momentum[u] += dt_ * grid_.force[u];
+  }
   grid_.apply_walls(grid_.momentum);
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
@@ -102,66 +119,71 @@ void Simulation::update_grid() {
   }
 }
 
-void Simulation::grid_to_particles() {
-  const double flip = options_.flip;
-  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+void Simulation::nodal_velocities(bool with_acceleration) {
+  const auto n = static_cast<std::ptrdiff_t>(grid_.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
-    const auto p = static_cast<std::size_t>(q);
-    Vec3 accel = Vec3::Zero(), vel = Vec3::Zero();
-    transfer_.visit(grid_, p, [&](std::size_t i, double w, const Vec3&) {
-      if (grid_.mass[i] <= mass_floor_) return;
-      accel += (w / grid_.mass[i]) * grid_.force[i];
-      vel += (w / grid_.mass[i]) * grid_.momentum[i];
-    });
-    particles_.x[p] += dt_ * vel;
-    particles_.v[p] = flip * (particles_.v[p] + dt_ * accel) + (1.0 - flip) * vel;
+    const auto i = static_cast<std::size_t>(q);
+    const bool massive = grid_.mass[i] > mass_floor_;  // nodes without mass carry no velocity
+    node_velocity_[i] = massive ? Vec3(grid_.momentum[i] / grid_.mass[i]) : Vec3::Zero();
+    if (with_acceleration) node_acceleration_[i] = massive ? Vec3(grid_.force[i] / grid_.mass[i]) : Vec3::Zero();
   }
 }
 
-void Simulation::grid_velocity_gradients() {
-  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t q = 0; q < n; ++q) {
-    const auto p = static_cast<std::size_t>(q);
-    Mat3 l = Mat3::Zero();
-    transfer_.visit(grid_, p, [&](std::size_t i, double, const Vec3& grad) {
-      if (grid_.mass[i] > mass_floor_) l += (grid_.momentum[i] / grid_.mass[i]) * grad.transpose();
-    });
-    particles_.velocity_gradient[p] = l;
-  }
+void Simulation::track_fastest(std::size_t p) {
+  // The stable step's max_p(c_p + |v_p|), taken while the point is in cache.
+  double& fastest = per_thread_[static_cast<std::size_t>(omp_get_thread_num())].fastest;
+  fastest = std::max(fastest, particles_.state[p].sound_speed + particles_.v[p].norm());
+}
+
+void Simulation::grid_to_particles(bool remap) {
+  // FLIP/PIC velocity update and the move; positions are wrapped into periodic axes here, and a
+  // point that left the grid is reported at the end of the step.
+  const double flip = options_.flip;
+  auto update = [&](std::size_t p, const Vec3& accel, const Vec3& vel) {
+    particles_.x[p] += dt_ * vel;
+    particles_.v[p] = flip * (particles_.v[p] + dt_ * accel) + (1.0 - flip) * vel;
+    if (!grid_.wrap_position(particles_.x[p])) {
+      std::size_t& lost = per_thread_[static_cast<std::size_t>(omp_get_thread_num())].lost;
+      lost = std::min(lost, p);
+    }
+  };
+  if (remap) transfer_.interpolate_and_remap(grid_, particles_, node_acceleration_, node_velocity_, update);
+  else transfer_.interpolate(node_acceleration_, node_velocity_, update);
 }
 
 void Simulation::update_materials() {
+  // L_p = Σ_i v_i ⊗ ∇N_i(x_p), then the material update of the point with it.
   const double length = grid_.min_cell_size();
-  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
-  std::ptrdiff_t failed = -1;
+  std::size_t failed = particles_.size();
   std::string why;
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t q = 0; q < n; ++q) {
-    const auto p = static_cast<std::size_t>(q);
+  transfer_.gradient(node_velocity_, [&](std::size_t p, const Mat3& l) {
+    particles_.velocity_gradient[p] = l;
     const auto& mat = materials_[static_cast<std::size_t>(particles_.material[p])];
     try {
-      mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], particles_.velocity_gradient[p], dt_,
-                 length);
+      mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], l, dt_, length);
     } catch (const RunError& e) {
 #pragma omp critical(mpm_material_failure)
-      if (failed < 0 || q < failed) {
-        failed = q;
+      if (p < failed) {
+        failed = p;
         why = e.what();
       }
     }
-  }
-  if (failed >= 0)
+    track_fastest(p);
+  });
+  if (failed < particles_.size())
     throw RunError(fmt::format("mpm: particle {} at t = {} s (step {}): {}", failed, time_, steps_, why));
 }
 
 void Simulation::wrap_particles() {
-  for (std::size_t p = 0; p < particles_.size(); ++p) {
-    if (!grid_.wrap_position(particles_.x[p]))
-      throw RunError(fmt::format("mpm: particle {} at ({}, {}, {}) m has left the grid at t = {} s", p,
-                                 particles_.x[p][0], particles_.x[p][1], particles_.x[p][2], time_));
-  }
+  for (std::size_t p = 0; p < particles_.size(); ++p)
+    if (!grid_.wrap_position(particles_.x[p])) throw_left_grid(p);
+}
+
+void Simulation::throw_left_grid(std::size_t p) const {
+  const Vec3& x = particles_.x[p];
+  throw RunError(fmt::format("mpm: particle {} at ({}, {}, {}) m has left the grid at t = {} s", p, x[0], x[1], x[2],
+                             time_));
 }
 
 }  // namespace shockfield::mpm

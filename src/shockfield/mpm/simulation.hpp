@@ -58,17 +58,27 @@ class Simulation {
   const Grid& grid() const { return grid_; }
   Grid& grid() { return grid_; }
   const Particles& particles() const { return particles_; }
-  Particles& particles() { return particles_; }
+  Particles& particles() {
+    fastest_known_ = false;  // the caller may change velocities or states
+    return particles_;
+  }
   const std::vector<materials::SolidMaterial>& materials() const { return materials_; }
   const SimulationOptions& options() const { return options_; }
 
  private:
   void run_hooks(Stage stage);
   void update_grid();
-  void grid_to_particles();
-  void grid_velocity_gradients();
+  /// v_i = (m v)_i / m_i and (with_acceleration) a_i = f_i / m_i; zero on nodes without mass.
+  void nodal_velocities(bool with_acceleration);
+  /// v_p, x_p from the grid (with `remap`, fused with the MUSL remap of the momenta).
+  void grid_to_particles(bool remap);
+  /// L_p from the nodal velocities, then the material update of every point (the last
+  /// particle loop of a step).
   void update_materials();
+  /// Record c_p + |v_p| for the next stable step.
+  void track_fastest(std::size_t p);
   void wrap_particles();
+  [[noreturn]] void throw_left_grid(std::size_t p) const;
 
   Grid grid_;
   std::vector<materials::SolidMaterial> materials_;
@@ -77,6 +87,15 @@ class Simulation {
   Transfer transfer_;
   std::array<std::vector<Hook>, 3> hooks_;
   std::vector<Vec3> old_momentum_;
+  std::vector<Vec3> node_velocity_;
+  std::vector<Vec3> node_acceleration_;
+  struct alignas(64) PerThread {  // one cache line per OpenMP thread
+    double fastest;    ///< max_p c_p + |v_p| [m/s]
+    std::size_t lost;  ///< smallest index of a point that left the grid (size() if none)
+  };
+  std::vector<PerThread> per_thread_;
+  double fastest_ = 0.0;
+  bool fastest_known_ = false;
   double mass_floor_ = 0.0;
   double time_ = 0.0;
   double dt_ = 0.0;

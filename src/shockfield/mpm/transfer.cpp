@@ -1,26 +1,36 @@
 #include "shockfield/mpm/transfer.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::mpm {
 
-template <ShapeFunction S>
+template <int Dim, class Shape>
 void Transfer::evaluate(const Grid& grid, const Particles& p) {
+  auto& stencils = [&]() -> auto& {
+    if constexpr (Dim == 2) return stencils2_;
+    else return stencils3_;
+  }();
+  stencils.resize(p.size());
+  bin_of_.resize(p.size());
   const GridSpec& spec = grid.spec();
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   std::ptrdiff_t lost = -1;
 #pragma omp parallel for schedule(static) reduction(max : lost)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     const auto uq = static_cast<std::size_t>(q);
-    Stencil& s = stencils_[uq];
-    s[2] = Weights1D{};
-    for (int a = 0; a < spec.dim; ++a) {
-      s[static_cast<std::size_t>(a)] =
-          S::evaluate(p.x[uq][a] - spec.origin[a], spec.cell_size[a], p.half_size[uq][a]);
-      if (!grid.fit(a, s[static_cast<std::size_t>(a)])) lost = std::max(lost, q);
+    Stencil<Dim>& s = stencils[uq];
+    for (int a = 0; a < Dim; ++a) {
+      Weights1D w = Shape::evaluate(p.x[uq][a] - spec.origin[a], spec.cell_size[a], p.half_size[uq][a]);
+      if (!grid.fit(a, w)) lost = std::max(lost, q);
+      const auto ua = static_cast<std::size_t>(a);
+      s.base[ua] = w.base;
+      s.w[ua] = w.w;
+      s.dw[ua] = w.dw;
     }
+    bin_of_[uq] = grid.flat(s.base[0], s.base[1], Dim == 3 ? s.base[Dim - 1] : 0);
   }
   if (lost >= 0) {
     const Vec3& x = p.x[static_cast<std::size_t>(lost)];
@@ -28,66 +38,66 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
   }
 }
 
-void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
-  stencils_.resize(p.size());
-  if (shape == ShapeKind::Linear) evaluate<LinearShape>(grid, p);
-  else evaluate<GimpShape>(grid, p);
-
+void Transfer::bin(const Grid& grid) {
   // Counting sort by the first node of the stencil; stable, so particle order within a bin.
   bin_start_.assign(grid.size() + 1, 0);
-  auto bin_of = [&](const Stencil& s) { return grid.flat(s[0].base, s[1].base, s[2].base); };
-  for (const Stencil& s : stencils_) ++bin_start_[bin_of(s) + 1];
+  for (const std::size_t b : bin_of_) ++bin_start_[b + 1];
   for (std::size_t b = 0; b < grid.size(); ++b) bin_start_[b + 1] += bin_start_[b];
-  binned_.resize(p.size());
+  binned_.resize(bin_of_.size());
   std::vector<std::size_t> fill(bin_start_.begin(), bin_start_.end() - 1);
-  for (std::size_t q = 0; q < p.size(); ++q) binned_[fill[bin_of(stencils_[q])]++] = q;
+  for (std::size_t q = 0; q < bin_of_.size(); ++q) binned_[fill[bin_of_[q]]++] = q;
 }
 
-void Transfer::to_grid(Grid& grid, const Particles& p, bool with_force) {
-  const auto np = static_cast<std::ptrdiff_t>(p.size());
-  momentum_.resize(p.size());
-  volume_stress_.resize(p.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t q = 0; q < np; ++q) {
-    const auto uq = static_cast<std::size_t>(q);
-    momentum_[uq] = p.mass[uq] * p.v[uq];
-    if (with_force) volume_stress_[uq] = p.volume(uq) * p.state[uq].stress();
+void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
+  dim_ = grid.dim();
+  support_ = shape == ShapeKind::Linear ? LinearShape::support : GimpShape::support;
+  for (std::size_t a = 0; a < 3; ++a) node_count_[a] = grid.nodes(static_cast<int>(a));
+  stride_ = {1, static_cast<std::size_t>(node_count_[0]),
+             static_cast<std::size_t>(node_count_[0]) * static_cast<std::size_t>(node_count_[1])};
+  for (std::size_t a = 0; a < 3; ++a) {  // a wrapped base plus k < support runs past the end only when periodic
+    offset_[a].resize(static_cast<std::size_t>(node_count_[a] + support_));
+    for (int i = 0; i < node_count_[a] + support_; ++i)
+      offset_[a][static_cast<std::size_t>(i)] = static_cast<std::size_t>(i % node_count_[a]) * stride_[a];
   }
+  if (dim_ == 2) {
+    stencils3_.clear();
+    if (shape == ShapeKind::Linear) evaluate<2, LinearShape>(grid, p);
+    else evaluate<2, GimpShape>(grid, p);
+  } else {
+    stencils2_.clear();
+    if (shape == ShapeKind::Linear) evaluate<3, LinearShape>(grid, p);
+    else evaluate<3, GimpShape>(grid, p);
+  }
+  bin(grid);
 
-  const GridSpec& spec = grid.spec();
-  const int support = stencils_.empty() ? 1 : stencils_[0][0].count;
-  const int support_z = spec.dim == 3 ? support : 1;
+  // Slabs of two layers along the outermost axis; the layers a slab's stencils touch are
+  // [2s, 2s + 1 + support). Even slabs, then odd slabs, then (periodic axis) the slabs reaching
+  // past the last layer, each alone.
+  const auto outer = static_cast<std::size_t>(dim_ - 1);
+  const int layers = node_count_[outer];
+  const std::size_t slabs = static_cast<std::size_t>(layers + 1) / 2;
+  slab_bins_ = 2 * stride_[outer];
+  passes_.assign(2, {});
+  for (std::size_t s = 0; s < slabs; ++s) {
+    const bool wraps = static_cast<int>(2 * s) + 1 + support_ > layers;
+    if (wraps && grid.spec().periodic[outer]) passes_.push_back({s});
+    else passes_[s % 2].push_back(s);
+  }
+}
+
+void Transfer::to_grid(Grid& grid, const Particles& p) const {
   const auto nn = static_cast<std::ptrdiff_t>(grid.size());
 #pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t node = 0; node < nn; ++node) {
-    const auto [i, j, k] = grid.unflatten(static_cast<std::size_t>(node));
-    double m = 0.0;
-    Vec3 mv = Vec3::Zero(), f = Vec3::Zero();
-    for (int c = 0; c < support_z; ++c) {
-      const int bk = grid.wrap(2, k - c);
-      if (bk < 0) continue;
-      for (int b = 0; b < support; ++b) {
-        const int bj = grid.wrap(1, j - b);
-        if (bj < 0) continue;
-        for (int a = 0; a < support; ++a) {
-          const int bi = grid.wrap(0, i - a);
-          if (bi < 0) continue;
-          const std::size_t bin = grid.flat(bi, bj, bk);
-          for (std::size_t e = bin_start_[bin]; e < bin_start_[bin + 1]; ++e) {
-            const std::size_t q = binned_[e];
-            const auto [w, grad] = weight(stencils_[q], a, b, c);
-            m += w * p.mass[q];
-            mv += w * momentum_[q];
-            if (with_force) f -= volume_stress_[q] * grad;  // eq. 12, σ symmetric
-          }
-        }
-      }
-    }
-    const auto un = static_cast<std::size_t>(node);
-    grid.mass[un] = m;
-    grid.momentum[un] = mv;
-    if (with_force) grid.force[un] = f;
+  for (std::ptrdiff_t i = 0; i < nn; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    grid.mass[u] = 0.0;
+    grid.momentum[u].setZero();
+    grid.force[u].setZero();
   }
+  dispatch([&](auto kernel) {
+    scatter<decltype(kernel.first)::value, decltype(kernel.second)::value, true>(grid, p,
+                                                                                 [](std::size_t, const auto&, const auto&) {});
+  });
 }
 
 }  // namespace shockfield::mpm

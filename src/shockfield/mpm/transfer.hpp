@@ -2,11 +2,24 @@
 // Particle ↔ grid transfers of the material point method (seed 000, §2.2.2):
 //   m_i = Σ_p m_p N_i(x_p),   m_i v_i = Σ_p m_p v_p N_i(x_p),
 //   f_i^int = −Σ_p V_p σ_p·∇N_i(x_p)   (V_p = m_p/ρ_p)                       (eq. 12)
-// The particle-to-grid sums are gathers: each node visits the particles binned by the first node
-// of their stencil, bins in a fixed order and particles in index order, so every nodal sum is
-// formed in the same order whatever the number of OpenMP threads (no atomics, no colouring).
+//   v̄_p = Σ_i N_i(x_p) v_i,   L_p = Σ_i v_i ⊗ ∇N_i(x_p)                      (grid → particles)
+//
+// `build` evaluates every particle's stencil (first node and 1D weights per axis) once per step;
+// all transfers of the step reuse it. The kernels are compiled per dimension and stencil width
+// (2 nodes per axis for the linear hat, 3 for GIMP), so the node loops unroll; in 2D (plane
+// strain) only the x and y components are transferred, z components of nodal fields stay zero.
+//
+// Thread-count independence of the particle-to-grid sums: particles are binned by the first node
+// of their stencil and the bins cut into slabs of two node layers along the outermost axis. A
+// slab's particles touch at most four consecutive layers, so slabs two apart never share a node:
+// all even slabs scatter concurrently, then all odd slabs (slabs whose stencil wraps round a
+// periodic outermost axis go last, one at a time). Each nodal sum is therefore formed in one
+// fixed order — slab pass, then bin, then particle index — whatever the number of OpenMP threads,
+// with no atomics and no per-thread copies of the grid.
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include "shockfield/mpm/grid.hpp"
@@ -17,50 +30,239 @@ namespace shockfield::mpm {
 
 enum class ShapeKind { Linear, Gimp };
 
+/// One particle's stencil: first node along each axis (wrapped) and the 1D weights N and dN/dx of
+/// the nodes base, base+1, ... (unused trailing entries are zero).
+template <int Dim>
+struct Stencil {
+  std::array<int, Dim> base{};
+  std::array<std::array<double, 3>, Dim> w{};
+  std::array<std::array<double, 3>, Dim> dw{};
+};
+
 class Transfer {
  public:
   /// Evaluate every particle's stencil for the current positions and bin the particles.
   /// RunError when a particle has left the grid.
   void build(const Grid& grid, const Particles& p, ShapeKind shape);
-  /// Nodal mass, momentum and (with `with_force`) internal force from the particles.
-  void to_grid(Grid& grid, const Particles& p, bool with_force);
+  /// Nodal mass, momentum and internal force from the particles (eq. 12); overwrites them.
+  void to_grid(Grid& grid, const Particles& p) const;
 
-  /// Call f(node, N_i(x_p), ∇N_i(x_p)) for each node of particle p's stencil.
+  /// For each particle p (in parallel): f(p, Σ_i N_i a_i, Σ_i N_i b_i) for nodal vectors a, b.
   template <class F>
-  void visit(const Grid& grid, std::size_t p, F&& f) const {
-    const auto& s = stencils_[p];
-    for (int c = 0; c < s[2].count; ++c) {
-      const int k = grid.wrap(2, s[2].base + c);
-      for (int b = 0; b < s[1].count; ++b) {
-        const int j = grid.wrap(1, s[1].base + b);
-        for (int a = 0; a < s[0].count; ++a) {
-          const int i = grid.wrap(0, s[0].base + a);
-          const auto [w, grad] = weight(s, a, b, c);
-          f(grid.flat(i, j, k), w, grad);
+  void interpolate(const std::vector<Vec3>& a, const std::vector<Vec3>& b, F&& f) const;
+  /// The same, fused with the MUSL remap: right after f has updated particle p's velocity, its
+  /// momentum m_p v_p is scattered to the nodal momenta (zeroed first). The nodal mass stays that
+  /// of `to_grid`, the stencils being unchanged within a step.
+  template <class F>
+  void interpolate_and_remap(Grid& grid, const Particles& p, const std::vector<Vec3>& a, const std::vector<Vec3>& b,
+                             F&& f) const;
+  /// For each particle p (in parallel): f(p, Σ_i a_i ⊗ ∇N_i(x_p)) for a nodal vector field a.
+  template <class F>
+  void gradient(const std::vector<Vec3>& a, F&& f) const;
+
+ private:
+  template <int D, int S>
+  using Kernel = std::pair<std::integral_constant<int, D>, std::integral_constant<int, S>>;
+  /// Call k(Kernel<dim, support>{}) for the current dimension and stencil width.
+  template <class K>
+  void dispatch(K&& k) const;
+  template <int Dim, class Shape>
+  void evaluate(const Grid& grid, const Particles& p);
+  void bin(const Grid& grid);
+  /// Particle-to-grid sums, slab pass by slab pass (see the top of this file). Per particle q,
+  /// `before(q, stencil, nodes)` runs first; then w m_p v_p (and with Force, w m_p and −V_p σ_p·∇N)
+  /// is added to each node of its stencil.
+  template <int Dim, int S, bool Force, class Before>
+  void scatter(Grid& grid, const Particles& p, Before&& before) const;
+  template <int Dim>
+  const std::vector<Stencil<Dim>>& stencils() const {
+    if constexpr (Dim == 2) return stencils2_;
+    else return stencils3_;
+  }
+  /// Σ_i N_i a_i and Σ_i N_i b_i over a stencil.
+  template <int Dim, int S, std::size_t N>
+  static void gather(const Stencil<Dim>& s, const std::array<std::size_t, N>& node, const std::vector<Vec3>& a,
+                     const std::vector<Vec3>& b, Vec3& sa, Vec3& sb);
+  /// Flat indices of the S^Dim nodes of a stencil, x fastest.
+  template <int Dim, int S>
+  [[gnu::always_inline]] std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> nodes(const Stencil<Dim>& s) const;
+
+  int dim_ = 2;
+  int support_ = 2;
+  std::array<int, 3> node_count_{};
+  std::array<std::size_t, 3> stride_{};
+  std::array<std::vector<std::size_t>, 3> offset_;  // [axis][base + k]: flat offset of node base + k, wrapped
+  std::vector<Stencil<2>> stencils2_;
+  std::vector<Stencil<3>> stencils3_;
+  std::vector<std::size_t> bin_of_;  // per particle: flat index of its stencil's first node
+  std::vector<std::size_t> bin_start_;
+  std::vector<std::size_t> binned_;
+  std::size_t slab_bins_ = 0;                     // bins per slab (two outermost layers)
+  std::vector<std::vector<std::size_t>> passes_;  // slabs scattered concurrently, pass by pass
+};
+
+template <class K>
+void Transfer::dispatch(K&& k) const {
+  if (dim_ == 2) {
+    if (support_ == 2) k(Kernel<2, 2>{});
+    else k(Kernel<2, 3>{});
+  } else {
+    if (support_ == 2) k(Kernel<3, 2>{});
+    else k(Kernel<3, 3>{});
+  }
+}
+
+template <int Dim, int S>
+inline std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> Transfer::nodes(const Stencil<Dim>& s) const {
+  const std::size_t* ox = offset_[0].data() + s.base[0];
+  const std::size_t* oy = offset_[1].data() + s.base[1];
+  const std::size_t* oz = Dim == 3 ? offset_[2].data() + s.base[Dim - 1] : nullptr;
+  std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> out{};
+  std::size_t e = 0;
+  for (int c = 0; c < (Dim == 3 ? S : 1); ++c)
+    for (int b = 0; b < S; ++b)
+      for (int a = 0; a < S; ++a) out[e++] = ox[a] + oy[b] + (Dim == 3 ? oz[c] : 0);
+  return out;
+}
+
+template <int Dim, int S, std::size_t N>
+inline void Transfer::gather(const Stencil<Dim>& s, const std::array<std::size_t, N>& node, const std::vector<Vec3>& va,
+                             const std::vector<Vec3>& vb, Vec3& sa, Vec3& sb) {
+  sa.setZero();
+  sb.setZero();
+  std::size_t e = 0;
+  for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
+    const double wz = Dim == 3 ? s.w[Dim - 1][static_cast<std::size_t>(c)] : 1.0;
+    for (int b = 0; b < S; ++b) {
+      const double wy = s.w[1][static_cast<std::size_t>(b)];
+      for (int a = 0; a < S; ++a, ++e) {
+        const double w = s.w[0][static_cast<std::size_t>(a)] * wy * wz;
+        const Vec3& na = va[node[e]];
+        const Vec3& nb = vb[node[e]];
+        for (int r = 0; r < Dim; ++r) {
+          sa[r] += w * na[r];
+          sb[r] += w * nb[r];
         }
       }
     }
   }
+}
 
- private:
-  using Stencil = std::array<Weights1D, 3>;
-  struct Weight {
-    double w;
-    Vec3 grad;
-  };
-  static Weight weight(const Stencil& s, int a, int b, int c) {
-    const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b), uc = static_cast<std::size_t>(c);
-    const double wx = s[0].w[ua], wy = s[1].w[ub], wz = s[2].w[uc];
-    return {wx * wy * wz, Vec3(s[0].dw[ua] * wy * wz, wx * s[1].dw[ub] * wz, wx * wy * s[2].dw[uc])};
+template <class F>
+void Transfer::interpolate(const std::vector<Vec3>& va, const std::vector<Vec3>& vb, F&& f) const {
+  dispatch([&](auto kernel) {
+    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
+    const auto& all = stencils<D>();
+    const auto n = static_cast<std::ptrdiff_t>(all.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t q = 0; q < n; ++q) {
+      const auto& s = all[static_cast<std::size_t>(q)];
+      Vec3 sa, sb;
+      gather<D, S>(s, nodes<D, S>(s), va, vb, sa, sb);
+      f(static_cast<std::size_t>(q), sa, sb);
+    }
+  });
+}
+
+template <class F>
+void Transfer::interpolate_and_remap(Grid& grid, const Particles& p, const std::vector<Vec3>& va,
+                                     const std::vector<Vec3>& vb, F&& f) const {
+  const auto nn = static_cast<std::ptrdiff_t>(grid.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < nn; ++i) grid.momentum[static_cast<std::size_t>(i)].setZero();
+  dispatch([&](auto kernel) {
+    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
+    scatter<D, S, false>(grid, p, [&](std::size_t q, const Stencil<D>& s, const auto& node) {
+      Vec3 sa, sb;
+      gather<D, S>(s, node, va, vb, sa, sb);
+      f(q, sa, sb);
+    });
+  });
+}
+
+template <int Dim, int S, bool Force, class Before>
+void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
+  const auto& all = stencils<Dim>();
+  const std::size_t bins = grid.size();
+  for (const auto& pass : passes_) {
+    const auto count = static_cast<std::ptrdiff_t>(pass.size());
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const std::size_t slab = pass[static_cast<std::size_t>(k)];
+      const std::size_t first = bin_start_[std::min(bins, slab * slab_bins_)];
+      const std::size_t last = bin_start_[std::min(bins, (slab + 1) * slab_bins_)];
+      for (std::size_t e = first; e < last; ++e) {
+        const std::size_t q = binned_[e];
+        const auto& s = all[q];
+        const auto node = nodes<Dim, S>(s);
+        before(q, s, node);
+        const double m = p.mass[q];
+        const Vec3 mv = m * p.v[q];
+        Mat3 vs;  // V_p σ_p
+        if constexpr (Force) vs = p.volume(q) * p.state[q].stress();
+        std::size_t n = 0;
+        for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
+          const auto uc = static_cast<std::size_t>(c);
+          const double wz = Dim == 3 ? s.w[Dim - 1][uc] : 1.0, dwz = Dim == 3 ? s.dw[Dim - 1][uc] : 0.0;
+          for (int b = 0; b < S; ++b) {
+            const auto ub = static_cast<std::size_t>(b);
+            const double wy = s.w[1][ub], dwy = s.dw[1][ub];
+            for (int a = 0; a < S; ++a, ++n) {
+              const auto ua = static_cast<std::size_t>(a);
+              const double wx = s.w[0][ua], dwx = s.dw[0][ua];
+              const double w = wx * wy * wz;
+              const std::size_t i = node[n];
+              Vec3& gm = grid.momentum[i];
+              for (int r = 0; r < Dim; ++r) gm[r] += w * mv[r];
+              if constexpr (Force) {
+                grid.mass[i] += w * m;
+                const double g[3] = {dwx * wy * wz, wx * dwy * wz, wx * wy * dwz};
+                Vec3& f = grid.force[i];
+                for (int r = 0; r < Dim; ++r) {
+                  double t = vs(r, 0) * g[0];
+                  for (int k2 = 1; k2 < Dim; ++k2) t += vs(r, k2) * g[k2];
+                  f[r] -= t;  // eq. 12, σ symmetric
+                }
+              }
+            }
+          }
+        }
+      }
+    }
   }
-  template <ShapeFunction S>
-  void evaluate(const Grid& grid, const Particles& p);
+}
 
-  std::vector<Stencil> stencils_;
-  std::vector<std::size_t> bin_start_;
-  std::vector<std::size_t> binned_;
-  std::vector<Vec3> momentum_;   // m_p v_p
-  std::vector<Mat3> volume_stress_;  // V_p σ_p
-};
+template <class F>
+void Transfer::gradient(const std::vector<Vec3>& va, F&& f) const {
+  dispatch([&](auto kernel) {
+    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
+    const auto& all = stencils<D>();
+    const auto n = static_cast<std::ptrdiff_t>(all.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t q = 0; q < n; ++q) {
+      const auto& s = all[static_cast<std::size_t>(q)];
+      const auto node = nodes<D, S>(s);
+      Mat3 l = Mat3::Zero();
+      std::size_t e = 0;
+      for (int c = 0; c < (D == 3 ? S : 1); ++c) {
+        const auto uc = static_cast<std::size_t>(c);
+        const double wz = D == 3 ? s.w[D - 1][uc] : 1.0, dwz = D == 3 ? s.dw[D - 1][uc] : 0.0;
+        for (int b = 0; b < S; ++b) {
+          const auto ub = static_cast<std::size_t>(b);
+          const double wy = s.w[1][ub], dwy = s.dw[1][ub];
+          for (int a = 0; a < S; ++a, ++e) {
+            const auto ua = static_cast<std::size_t>(a);
+            const double wx = s.w[0][ua], dwx = s.dw[0][ua];
+            const double g[3] = {dwx * wy * wz, wx * dwy * wz, wx * wy * dwz};
+            const Vec3& v = va[node[e]];
+            for (int r = 0; r < D; ++r)
+              for (int k = 0; k < D; ++k) l(r, k) += v[r] * g[k];
+          }
+        }
+      }
+      f(static_cast<std::size_t>(q), l);
+    }
+  });
+}
 
 }  // namespace shockfield::mpm

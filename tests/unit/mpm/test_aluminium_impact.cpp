@@ -156,7 +156,7 @@ TEST(AluminiumImpact, ConservesMassMomentumEnergy) {
   RecordProperty("energy_drift", std::to_string(drift));
 }
 
-// Every particle-to-grid sum is a gather in a fixed order, so 1 and 2 threads give bit-identical
+// Every particle-to-grid sum is formed in a fixed order (transfer.hpp), so 1 and 2 threads give bit-identical
 // results (stronger than "beyond round-off").
 TEST(AluminiumImpact, IndependentOfThreadCount) {
   const auto al = materials::aluminium_seed000();

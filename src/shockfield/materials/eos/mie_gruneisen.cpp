@@ -17,47 +17,20 @@ void MieGruneisen::validate(const std::string& where) const {
   require(gamma0 >= 0.0 && std::isfinite(gamma0), "gamma0", "a Grüneisen coefficient >= 0", gamma0);
 }
 
-double MieGruneisen::compression(double rho) const {
-  const double eta = 1.0 - rho0 / rho;
-  if (!(rho > 0.0) || (lambda > 0.0 && lambda * eta >= 1.0))
-    throw RunError(fmt::format("Mie-Grüneisen: density {} kg/m³ is beyond the Hugoniot limit ρ0·λ/(λ−1) "
-                               "(ρ0 = {}, λ = {})", rho, rho0, lambda));
-  return eta;
+void MieGruneisen::beyond_limit(double rho) const {
+  throw RunError(fmt::format("Mie-Grüneisen: density {} kg/m³ is beyond the Hugoniot limit ρ0·λ/(λ−1) "
+                             "(ρ0 = {}, λ = {})", rho, rho0, lambda));
 }
 
-double MieGruneisen::hugoniot_pressure(double rho) const {
-  const double eta = compression(rho);
-  if (eta <= 0.0) return bulk_modulus() * eta;  // eq. 6, tension branch
-  const double d = 1.0 - lambda * eta;
-  return bulk_modulus() * eta / (d * d);  // eq. 6, compression branch
-}
+double MieGruneisen::hugoniot_pressure(double rho) const { return hugoniot(rho).ph; }
 
-double MieGruneisen::hugoniot_energy(double rho) const {
-  const double eta = 1.0 - rho0 / rho;  // V0 − V = η/ρ0
-  return 0.5 * hugoniot_pressure(rho) * eta / rho0;
-}
+double MieGruneisen::hugoniot_energy(double rho) const { return hugoniot(rho).eh; }
 
 double MieGruneisen::pressure(double rho, double e) const {
-  return hugoniot_pressure(rho) + energy_coefficient() * (e - hugoniot_energy(rho));  // eq. 5
+  const HugoniotPoint h = hugoniot(rho);
+  return h.ph + energy_coefficient() * (e - h.eh);  // eq. 5
 }
 
-double MieGruneisen::sound_speed(double rho, double e) const {
-  const double eta = compression(rho);
-  const double k0 = bulk_modulus();
-  // dP_H/dη and dE_H/dη = (P_H + η·dP_H/dη)/(2ρ0); dη/dρ = ρ0/ρ².
-  double ph = k0 * eta, dph = k0;
-  if (eta > 0.0) {
-    const double d = 1.0 - lambda * eta;
-    ph = k0 * eta / (d * d);
-    dph = k0 * (1.0 + lambda * eta) / (d * d * d);
-  }
-  const double deh = (ph + eta * dph) / (2.0 * rho0);
-  const double dp_drho_e = (dph - energy_coefficient() * deh) * rho0 / (rho * rho);
-  const double p = ph + energy_coefficient() * (e - 0.5 * ph * eta / rho0);
-  const double c2 = dp_drho_e + p / (rho * rho) * energy_coefficient();
-  // Deep tension with a large energy term can make c² tiny or negative; the bulk speed at ρ0
-  // bounds the stable step from below in that case.
-  return std::sqrt(std::max(c2, 1e-6 * c0 * c0));
-}
+double MieGruneisen::sound_speed(double rho, double e) const { return std::sqrt(sound_speed_squared(hugoniot(rho), e)); }
 
 }  // namespace shockfield::materials

@@ -28,6 +28,44 @@ struct MieGruneisen {
   /// singularity η = 1/λ.
   double pressure(double rho, double e) const;
 
+  /// The Hugoniot at one density, evaluated once and shared by the pressure, energy and sound
+  /// speed of a material-point update.
+  struct HugoniotPoint {
+    double rho = 0.0;  ///< ρ [kg/m³]
+    double eta = 0.0;  ///< η = 1 − ρ0/ρ
+    double ph = 0.0;   ///< P_H (eq. 6) [Pa]
+    double dph = 0.0;  ///< dP_H/dη [Pa]
+    double eh = 0.0;   ///< E_H = ½P_H(V0 − V) [J/kg]
+  };
+  /// RunError beyond the Hugoniot singularity η = 1/λ. (Inline: it runs once per point update.)
+  HugoniotPoint hugoniot(double rho) const {
+    HugoniotPoint h;
+    h.rho = rho;
+    h.eta = compression(rho);
+    const double k0 = bulk_modulus();
+    h.ph = k0 * h.eta, h.dph = k0;  // eq. 6, tension branch
+    if (h.eta > 0.0) {              // eq. 6, compression branch
+      const double inv_d = 1.0 / (1.0 - lambda * h.eta), inv_d2 = inv_d * inv_d;
+      h.ph = k0 * h.eta * inv_d2;
+      h.dph = k0 * (1.0 + lambda * h.eta) * inv_d2 * inv_d;
+    }
+    h.eh = 0.5 * h.ph * h.eta / rho0;  // V0 − V = η/ρ0
+    return h;
+  }
+  /// Squared isentropic bulk sound speed at the Hugoniot point's density and energy e, floored
+  /// at 10⁻⁶c0² [m²/s²].
+  double sound_speed_squared(const HugoniotPoint& h, double e) const {
+    // dE_H/dη = (P_H + η·dP_H/dη)/(2ρ0); dη/dρ = ρ0/ρ².
+    const double deh = (h.ph + h.eta * h.dph) / (2.0 * rho0);
+    const double inv_rho2 = 1.0 / (h.rho * h.rho);
+    const double dp_drho_e = (h.dph - energy_coefficient() * deh) * rho0 * inv_rho2;
+    const double p = h.ph + energy_coefficient() * (e - h.eh);
+    const double c2 = dp_drho_e + p * inv_rho2 * energy_coefficient();
+    // Deep tension with a large energy term can make c² tiny or negative; the bulk speed at ρ0
+    // bounds the stable step from below in that case.
+    return c2 > 1e-6 * c0 * c0 ? c2 : 1e-6 * c0 * c0;
+  }
+
   /// Hugoniot pressure P_H(ρ) (eq. 6) [Pa].
   double hugoniot_pressure(double rho) const;
   /// Hugoniot specific energy E_H(ρ) = ½P_H(V0 − V) [J/kg].
@@ -42,7 +80,12 @@ struct MieGruneisen {
   double bulk_modulus() const { return rho0 * c0 * c0; }
 
  private:
-  double compression(double rho) const;  // η = 1 − ρ0/ρ, checked against 1/λ
+  double compression(double rho) const {  // η = 1 − ρ0/ρ, checked against 1/λ
+    const double eta = 1.0 - rho0 / rho;
+    if (!(rho > 0.0) || (lambda > 0.0 && lambda * eta >= 1.0)) beyond_limit(rho);
+    return eta;
+  }
+  [[noreturn]] void beyond_limit(double rho) const;
 };
 
 }  // namespace shockfield::materials

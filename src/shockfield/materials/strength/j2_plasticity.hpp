@@ -12,6 +12,7 @@
 // The update is the radial return (Wilkins 1964; Simo & Hughes Box 3.2):
 //   ξ* = s + 2GΔe − α,  f = √(3/2)‖ξ*‖ − σ_Y(ε̄p),  Δε̄p = f / (3G + E_tan)  if f > 0,
 //   n = ξ*/‖ξ*‖,  Δe^p = √(3/2)Δε̄p·n,  s = s + 2G(Δe − Δe^p),  α += (2/3)(1−β)E_tan·Δe^p.
+#include <cmath>
 #include <string>
 
 #include "shockfield/core/types.hpp"
@@ -42,14 +43,31 @@ struct J2Plasticity {
 
   void validate(const std::string& where) const;
   /// Current yield stress σ_Y(ε̄p) (eq. 4) [Pa].
-  double yield_stress(double plastic_strain) const;
-  /// The evaluation function: advance `state` by the traceless strain increment `de`.
-  Increment update(State& state, const Mat3& de) const;
+  double yield_stress(double plastic_strain) const {
+    return yield_stress0 + isotropic_fraction * tangent_modulus * plastic_strain;  // eq. 4
+  }
+  /// The evaluation function: advance `state` by the traceless strain increment `de`. (Inline:
+  /// it runs once per material-point update.)
+  Increment update(State& state, const Mat3& de) const {
+    const double g = shear_modulus;
+    state.s += 2.0 * g * de;  // elastic trial, s = 2G·e^e
+    const Mat3 xi = state.s - state.back_stress;
+    const double xi_norm = xi.norm();
+    const double f = std::sqrt(1.5) * xi_norm - yield_stress(state.plastic_strain);  // eq. 3
+    Increment inc;
+    if (f <= 0.0) return inc;
+    inc.equivalent = f / (3.0 * g + tangent_modulus);
+    inc.plastic = (std::sqrt(1.5) * inc.equivalent / xi_norm) * xi;
+    state.s -= 2.0 * g * inc.plastic;
+    state.back_stress += (2.0 / 3.0) * (1.0 - isotropic_fraction) * tangent_modulus * inc.plastic;
+    state.plastic_strain += inc.equivalent;
+    return inc;
+  }
 };
 
 /// Equivalent (von Mises) stress √(3/2)‖s‖ of eq. 3 [Pa].
 double von_mises(const Mat3& s);
 /// Traceless part of a tensor.
-Mat3 deviator(const Mat3& a);
+inline Mat3 deviator(const Mat3& a) { return a - (a.trace() / 3.0) * Mat3::Identity(); }
 
 }  // namespace shockfield::materials
