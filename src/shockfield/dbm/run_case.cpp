@@ -16,6 +16,7 @@
 #include "shockfield/dbm/checkpoint.hpp"
 #include "shockfield/dbm/reaction.hpp"
 #include "shockfield/dbm/reaction_case.hpp"
+#include "shockfield/dbm/stability_case.hpp"
 #include "shockfield/dbm/tne.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/vtk_xml.hpp"
@@ -144,6 +145,7 @@ class Output {
 
 void run_case(const Config& root, const RunOptions& options) {
   const DbmCase c = read_dbm_case(root);
+  const CaseStability stability = check_case_stability(root.table("model"), c);  // BGK only, not GLS
   root.check_unknown_keys();
   Simulation sim(c.model, c.lattice, c.boundaries, c.bgk);
   // [reaction]: the reactive DBM installs its source on sim (reaction.hpp).
@@ -152,6 +154,7 @@ void run_case(const Config& root, const RunOptions& options) {
                  : nullptr;
   std::vector<double>* reactant = reaction ? &reaction->reactant_density() : nullptr;
   derive(root, c, sim);
+  derive_stability(root, stability);
   if (options.validate_only) {
     std::printf("%s: valid dbm case (%d x %d cells, %lld steps, dt %.3g)\n", options.case_file.string().c_str(),
                 c.lattice.nx, c.lattice.ny, c.steps, c.bgk.dt);
