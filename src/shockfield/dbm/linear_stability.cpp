@@ -159,4 +159,26 @@ StabilityReport analyse_stability(const StabilityProblem& p, const Macro& state)
   return r;
 }
 
+TemperatureWindow stable_temperatures(const StabilityProblem& p, double T0, bool discrete) {
+  const auto stable = [&](double T) {
+    const StabilityReport r = analyse_stability(p, {1.0, 0.0, 0.0, T});
+    return (discrete ? r.discrete_rate : r.model_rate) <= tolerance_rate(p.tau);
+  };
+  if (!stable(T0)) return {T0, T0};
+  // Bisection in ln T between the stable T0 and the first unstable T of a factor-2 march.
+  const auto edge = [&](double factor) {
+    double inside = T0, outside = T0 * factor;
+    while (stable(outside)) {
+      inside = outside, outside *= factor;
+      if (outside > 1e3 * T0 || outside < 1e-3 * T0) return inside;
+    }
+    while (std::abs(std::log(outside / inside)) > 1e-4) {
+      const double mid = std::sqrt(inside * outside);
+      (stable(mid) ? inside : outside) = mid;
+    }
+    return inside;
+  };
+  return {edge(0.5), edge(2.0)};
+}
+
 }  // namespace shockfield::dbm

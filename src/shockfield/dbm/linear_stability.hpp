@@ -72,6 +72,14 @@ inline double tolerance_rate(double tau) { return 1e-6 / tau; }
 
 StabilityReport analyse_stability(const StabilityProblem& problem, const Macro& state);
 
+/// The temperatures around a stable T0 (ρ = 1, u = 0) for which the run (discrete = true) or the
+/// model (false: model_rate) is stable, found by bisection to 1e-4 relative; assumes one interval
+/// within [T0/1000, 1000 T0]. InputError-free: returns {T0, T0} when T0 itself is unstable.
+struct TemperatureWindow {
+  double low = 0.0, high = 0.0;
+};
+TemperatureWindow stable_temperatures(const StabilityProblem& problem, double T0, bool discrete);
+
 /// A(k) = Δt(−i S(k) + J) for the wave vector θ = (kxΔx, kyΔy) (exposed for the tests).
 ComplexMatrix16 step_matrix(const StabilityProblem& problem, const RealMatrix16& collision,
                             double theta_x, double theta_y, Stencil stencil);

@@ -3,12 +3,12 @@
 // against direct simulations of a perturbed uniform gas (docs/theory/dbm.md, "Linear stability").
 #include "shockfield/dbm/linear_stability.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <numbers>
-#include <string>
 #include <vector>
 
 #include "shockfield/dbm/simulation.hpp"
@@ -144,7 +144,7 @@ TEST(DbmLinearStability, GrowthAtRestMatchesDirectSimulation) {
   const double decay = measured_growth_rate(p, {0.92, 0.0, 0.0, 1.0}, 0.5, &overall);
   EXPECT_LT(decay, 0.0);
   EXPECT_LT(overall, 1e-3);
-  RecordProperty("measured_rate_T1.0", std::to_string(decay));
+  RecordProperty("measured_rate_T1.0", fmt::format("{}", decay));
   for (const double T : {1.3, 1.35, 1.5}) {
     const StabilityReport hot = analyse_stability(p, {0.92, 0.0, 0.0, T});
     EXPECT_GT(hot.semi_discrete_rate, 1.0);  // no time step helps
@@ -153,8 +153,7 @@ TEST(DbmLinearStability, GrowthAtRestMatchesDirectSimulation) {
     EXPECT_GT(hot.model_rate, 0.0);                  // the BGK model itself (short waves)
     const double measured = measured_growth_rate(p, {0.92, 0.0, 0.0, T}, 2.5);
     EXPECT_NEAR(measured, hot.discrete_rate, 0.2 * hot.discrete_rate) << "T = " << T;
-    RecordProperty("T" + std::to_string(T), std::to_string(measured) + " measured, " +
-                                                std::to_string(hot.discrete_rate) + " predicted");
+    RecordProperty(fmt::format("T{}", T), fmt::format("{} measured, {} predicted", measured, hot.discrete_rate));
   }
 }
 
@@ -192,8 +191,7 @@ TEST(DbmLinearStability, LargestStableTimeStep) {
     const StabilityReport r = analyse_stability(p, state);
     double overall = 0.0;
     const double measured = measured_growth_rate(p, state, 0.5, &overall);
-    RecordProperty("dt_factor" + std::to_string(factor), std::to_string(measured) + " measured, " +
-                                                            std::to_string(r.discrete_rate) + " predicted");
+    RecordProperty(fmt::format("dt_factor{}", factor), fmt::format("{} measured, {} predicted", measured, r.discrete_rate));
     if (factor < 1.0) {
       EXPECT_LT(r.discrete_rate, tolerance_rate(p.tau));
       EXPECT_LT(overall, 1e-3);
