@@ -130,8 +130,9 @@ ComplexMatrix16 step_matrix(const StabilityProblem& p, const RealMatrix16& colli
 StabilityReport analyse_stability(const StabilityProblem& p, const Macro& state) {
   const RealMatrix16 J = collision_jacobian(p, state);
   StabilityReport r;
-  // The model: |k|τ log-spaced over [1e-3, 1e4] (the k → ∞ limit along an axis is reached to
-  // 1e-4 relative), directions kπ/16 in [0, π) (a lattice one cell high: along x only).
+  // The model: |k|τ log-spaced over [1e-3, 1e4] (along an axis the supremum is approached as
+  // |k| → ∞, docs/theory/dbm.md), directions aπ/16 in [0, π) (one cell high: along x only);
+  // the exact symbol with Δx = τ takes θ = kτ.
   StabilityProblem unit = p;
   unit.dx = unit.dy = p.tau;
   r.model_rate = -INFINITY;

@@ -73,7 +73,6 @@ std::string diagnosis(const NamedState& state, const StabilityReport& r, const S
 CaseStability check_case_stability(const Config& model, const DbmCase& c) {
   CaseStability result;
   result.mode = model.get_choice_or("stability_check", {"error", "warn", "off"}, "error");
-  result.verdict = "not checked";
   if (result.mode == "off") return result;
   StabilityProblem p;
   p.model = c.model;

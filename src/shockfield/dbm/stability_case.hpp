@@ -14,9 +14,10 @@
 
 namespace shockfield::dbm {
 
+/// Default-constructed: not checked (what a GLS case records).
 struct CaseStability {
-  std::string mode;     ///< "error", "warn" or "off" ([model] stability_check)
-  std::string verdict;  ///< "stable", "unstable" or "not checked"
+  std::string mode = "off";             ///< "error", "warn" or "off" ([model] stability_check)
+  std::string verdict = "not checked";  ///< "stable", "unstable" or "not checked"
   std::string worst_state;
   StabilityReport worst;  ///< the report of the state with the largest growth rate
   double stable_dt = 0.0;  ///< the smallest stable_dt over the states
