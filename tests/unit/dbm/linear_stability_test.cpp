@@ -94,23 +94,33 @@ TEST(DbmLinearStability, ConvectionSymbolsAreConsistent) {
     }
 }
 
-// Growth rate of the L2 norm of f − f^eq(state) in a periodic 64 × 1 (2D: 16 × 16) lattice
-// seeded with a 1e-9 odd–even (checkerboard) perturbation of every f_k (the mode NND convects
-// exactly like first-order upwind: every minmod slope is zero), fitted over the second half of
-// the run, which ends at t_end or when the norm reaches 1e-4 (still linear). `overall`: the
-// norm at the end over the seed's.
-double measured_growth_rate(const StabilityProblem& p, const Macro& s, double t_end, double* overall = nullptr) {
+enum class Seed { odd_even, smooth };
+
+// Growth rate of the L2 norm of f − f^eq(state) in a periodic 64 × 1 (2D: 16 × 16) lattice,
+// fitted over the second half of the run (at most its last 0.3 time units), which ends at t_end
+// or when the norm reaches 1e-4 (1e-3 with the smooth seed; still linear). Seeds: a 1e-9 odd–even (checkerboard)
+// perturbation of every f_k (the mode NND convects exactly like first-order upwind: every minmod
+// slope is zero), or a smooth u_y = 1e-6 sin(2πx/L) with round-off seeding the rest (the
+// experiment of docs/theory/dbm.md, "Stability window"). `overall`: the norm at the end over
+// the seed's.
+double measured_growth_rate(const StabilityProblem& p, const Macro& s, double t_end, double* overall = nullptr,
+                            Seed seed = Seed::odd_even) {
   Lattice lattice;
   lattice.nx = p.two_dimensional ? 16 : 64, lattice.ny = p.two_dimensional ? 16 : 1;
   lattice.dx = lattice.dy = p.dx;
   BgkSettings settings;
   settings.gamma = 1.0 + 2.0 / p.b, settings.tau = p.tau, settings.dt = p.dt;
   Simulation sim(p.model, lattice, Boundaries{}, settings);
-  sim.initialize([&](double, double) { return s; });
+  const double length = lattice.nx * p.dx;
+  sim.initialize([&](double x, double) {
+    Macro m = s;
+    if (seed == Seed::smooth) m.uy += 1e-6 * std::sin(2.0 * std::numbers::pi * x / length);
+    return m;
+  });
   double f0[kMoments];
   sim.inversion().equilibrium(s.rho, s.ux, s.uy, s.T, p.b, f0);
   const std::size_t N = lattice.cells();
-  for (int k = 0; k < kMoments; ++k)
+  for (int k = 0; seed == Seed::odd_even && k < kMoments; ++k)
     for (int j = 0; j < lattice.ny; ++j)
       for (int i = 0; i < lattice.nx; ++i)
         sim.f()[k * N + lattice.at(i, j)] += 1e-9 * ((i + j) % 2 == 0 ? 1.0 : -1.0) * std::cos(1.7 * k);
@@ -122,13 +132,15 @@ double measured_growth_rate(const StabilityProblem& p, const Macro& s, double t_
     return std::sqrt(sum);
   };
   std::vector<double> history{norm()};
-  while (sim.time() < t_end && history.back() < 1e-4) {
+  const double stop = seed == Seed::smooth ? 1e-3 : 1e-4;  // the smooth seed's norm is ~1e-5
+  while (sim.time() < t_end && history.back() < stop) {
     sim.step();
     history.push_back(norm());
   }
   const std::size_t n = history.size() - 1;
   if (overall) *overall = history[n] / history[0];
-  return std::log(history[n] / history[n / 2]) / ((n - n / 2) * p.dt);
+  const std::size_t first = n - std::min(n / 2, static_cast<std::size_t>(std::round(0.3 / p.dt)));
+  return std::log(history[n] / history[first]) / ((n - first) * p.dt);
 }
 
 TEST(DbmLinearStability, GrowthAtRestMatchesDirectSimulation) {
@@ -154,6 +166,13 @@ TEST(DbmLinearStability, GrowthAtRestMatchesDirectSimulation) {
     const double measured = measured_growth_rate(p, {0.92, 0.0, 0.0, T}, 2.5);
     EXPECT_NEAR(measured, hot.discrete_rate, 0.2 * hot.discrete_rate) << "T = " << T;
     RecordProperty(fmt::format("T{}", T), fmt::format("{} measured, {} predicted", measured, hot.discrete_rate));
+    // The documented experiment, T = 1.35 with a smooth seed: the odd–even mode grows out of
+    // round-off (at T = 1.3 it needs longer to outgrow the seed; at 1.5 the last 0.3 time units
+    // still include its emergence).
+    if (T != 1.35) continue;
+    const double smooth = measured_growth_rate(p, {0.92, 0.0, 0.0, T}, 4.0, nullptr, Seed::smooth);
+    EXPECT_NEAR(smooth, hot.discrete_rate, 0.2 * hot.discrete_rate) << "T = " << T;
+    RecordProperty(fmt::format("smooth_T{}", T), fmt::format("{} measured", smooth));
   }
 }
 
