@@ -176,6 +176,21 @@ TEST(DbmLinearStability, GrowthAtRestMatchesDirectSimulation) {
   }
 }
 
+TEST(DbmLinearStability, UnlimitedSecondOrderUpwindIsNotWhatNndDoes) {
+  // At T = 1.25 the unlimited second-order upwind stencil predicts growth ≈ 9.2 per unit time
+  // (at high θ, where minmod clips the slopes), the first-order one decay; the NND run decays.
+  StabilityProblem p = detonation_problem();
+  const Macro state{0.92, 0.0, 0.0, 1.25};
+  EXPECT_LT(analyse_stability(p, state).discrete_rate, tolerance_rate(p.tau));
+  p.stencil = Stencil::second_order_upwind;
+  const double unlimited = analyse_stability(p, state).semi_discrete_rate;
+  EXPECT_NEAR(unlimited, 9.2, 0.1);
+  double overall = 0.0;
+  const double measured = measured_growth_rate(p, state, 4.0, &overall, Seed::smooth);
+  EXPECT_LT(measured, 0.0);
+  EXPECT_LT(overall, 1.0);
+}
+
 TEST(DbmLinearStability, LaxSpeedsStableOverTheLaxTemperatures) {
   // The Lax tube (shock_tube_test.cpp): speeds (3, 2, 5, 10), η0 = 8, 400 cells on [0, 1],
   // τ = Δt = 0.4Δx/10; T from 1.1 (right) to 7.9 (left), |u| up to 1.53 (star region).
