@@ -17,6 +17,7 @@
 #include "shockfield/dbm/gls_run.hpp"
 #include "shockfield/dbm/reaction.hpp"
 #include "shockfield/dbm/reaction_case.hpp"
+#include "shockfield/dbm/stability_case.hpp"
 #include "shockfield/dbm/tne.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/vtk_xml.hpp"
@@ -163,6 +164,8 @@ class Output {
 
 void run_case(const Config& root, const RunOptions& options) {
   const DbmCase c = read_dbm_case(root);
+  // The linear check is for the BGK model; the GLS force is outside it (docs/theory/dbm.md).
+  const CaseStability stability = c.gls ? CaseStability{} : check_case_stability(root.table("model"), c);
   root.check_unknown_keys();
   Simulation sim(c.model, c.lattice, c.boundaries, c.bgk);
   // [reaction]: the reactive DBM installs its source on sim (reaction.hpp).
@@ -173,6 +176,7 @@ void run_case(const Config& root, const RunOptions& options) {
   std::optional<GlsRunPart> gls;
   if (c.gls) gls.emplace(sim, c);
   derive(root, c, sim);
+  derive_stability(root, stability);
   if (options.validate_only) {
     std::printf("%s: valid dbm case (%d x %d cells, %lld steps, dt %.3g)\n", options.case_file.string().c_str(),
                 c.lattice.nx, c.lattice.ny, c.steps, c.bgk.dt);

@@ -41,19 +41,19 @@ Eigen::Matrix<double, kMoments, 1> moment_row(double vx, double vy, double eta);
 
 /// M^eq of eqs. 20–26 for b = 2/(γ−1) degrees of freedom (eq. 22: E = ρ(bT + u²)/2, eq. 25:
 /// ρu((b+2)T + u²)/2, eq. 26: ρ[((b+2)T + u²)T I + ((b+4)T + u²) uu]/2; b = 2 gives the seed's
-/// forms exactly), handed to put(m, value) for m = 0..15 in the order of moment_row().
-template <class Put>
-inline void put_equilibrium_moments(double rho, double ux, double uy, double T, double b,
-                                    Put&& put) {
-  const double u2 = ux * ux + uy * uy;
-  const double h = 0.5 * ((b + 2.0) * T + u2);  // M3,1 / (ρu)
-  const double g = 0.5 * ((b + 4.0) * T + u2);  // uu coefficient of M4,2 / ρ
+/// forms exactly), handed to put(m, value) for m = 0..15 in the order of moment_row(). Real is
+/// double, or std::complex<double> for the complex-step derivatives of linear_stability.cpp.
+template <class Real, class Put>
+inline void put_equilibrium_moments(Real rho, Real ux, Real uy, Real T, double b, Put&& put) {
+  const Real u2 = ux * ux + uy * uy;
+  const Real h = 0.5 * ((b + 2.0) * T + u2);  // M3,1 / (ρu)
+  const Real g = 0.5 * ((b + 4.0) * T + u2);  // uu coefficient of M4,2 / ρ
   put(0, rho);                                  // eq. 20
   put(1, rho * ux), put(2, rho * uy);           // eq. 21
   put(3, 0.5 * rho * (b * T + u2));             // eq. 22
   put(4, rho * (T + ux * ux)), put(5, rho * ux * uy), put(6, rho * (T + uy * uy));   // eq. 23
-  put(7, rho * (3 * T * ux + ux * ux * ux)), put(8, rho * (T * uy + ux * ux * uy));  // eq. 24
-  put(9, rho * (T * ux + ux * uy * uy)), put(10, rho * (3 * T * uy + uy * uy * uy));
+  put(7, rho * (3.0 * T * ux + ux * ux * ux)), put(8, rho * (T * uy + ux * ux * uy));  // eq. 24
+  put(9, rho * (T * ux + ux * uy * uy)), put(10, rho * (3.0 * T * uy + uy * uy * uy));
   put(11, rho * ux * h), put(12, rho * uy * h);                      // eq. 25
   put(13, rho * (h * T + g * ux * ux)), put(14, rho * g * ux * uy);  // eq. 26
   put(15, rho * (h * T + g * uy * uy));
