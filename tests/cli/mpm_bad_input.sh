@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Bad MPM case files: one clear message naming file, key and line, exit code 2, nothing left
 # behind (porosity that cannot be packed, a cavity outside its body, a body outside the grid, a
-# fixed time step beyond the CFL limit, unknown keys and materials).
+# fixed time step beyond the CFL limit, unknown keys and materials, a negative conductivity, a
+# heat_conduction switch that is not a boolean).
 source "$(dirname "$0")/lib.bash"
 set -e
 base=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/mpm_tiny.toml")
@@ -26,6 +27,10 @@ expect_error "${base/library = \"aluminium_seed000\"/library = \"aluminium_seed0
 yield_stress = -1.0}" "material[0].yield_stress"
 expect_error "${base/library = \"aluminium_seed000\"/library = \"aluminium_seed000\"
 spall_strength = -1e9}" "material[0].spall_strength"
+expect_error "${base/library = \"aluminium_seed000\"/library = \"aluminium_seed000\"
+conductivity = -1.0}" "material[0].conductivity"
+expect_error "${base/end_time = 40e-9/end_time = 40e-9
+heat_conduction = \"yes\"}" "solver.heat_conduction"
 expect_error "${base/material = \"al\"/material = \"steel\"}" "body[0].material" "no [[material]] named"
 expect_error "${base/speed = 1000.0/}" "loading.speed" "missing required value"
 expect_error "${base/type = \"wall\"/type = \"wall\"

@@ -15,6 +15,7 @@ done
 grep -q "^particles = " "$WORK/straight/config.resolved.toml" || fail "no derived particle count"
 grep -q "^time_step_initial_s = " "$WORK/straight/config.resolved.toml" || fail "no derived time step"
 grep -q "^hugoniot_pressure_Pa = " "$WORK/straight/config.resolved.toml" || fail "no derived Hugoniot"
+grep -q "^heat_conduction = false" "$WORK/straight/config.resolved.toml" || fail "heat_conduction (default off) not echoed"
 [ "$(grep -c DataSet "$WORK/straight/grid.pvd")" -eq 5 ] || fail "grid.pvd should list 5 frames"
 [ "$(wc -l < "$WORK/straight/series.csv")" -eq 22 ] || fail "series.csv should have 21 rows"
 # The .vti is readable by `shockfield analyze`.

@@ -9,9 +9,10 @@
 // specific volume it has reached so far (its "shock volume": a new, stronger shock state).
 // Otherwise only the isentropic part −(γ/V)T is kept: release from a shocked state follows the
 // isentrope, not the Hugoniot, so the entropy a shock deposited is not taken back, and the
-// ringing behind a numerical shock front does not pump heat in. Heat conduction
-// (conductivity k) is recorded for completeness but not solved: over the ns-µs times of the
-// seed's MPM studies it is negligible ("The thermal process is much slower", §4.2.2).
+// ringing behind a numerical shock front does not pump heat in. Heat conduction with the
+// conductivity k is solved between points by the MPM when switched on (mpm/heat_conduction.hpp,
+// [solver] heat_conduction); it is off by default: over the ns-µs times of the seed's MPM studies
+// it is negligible ("The thermal process is much slower", §4.2.2).
 #include <string>
 
 #include "shockfield/materials/eos/mie_gruneisen.hpp"
@@ -20,7 +21,7 @@ namespace shockfield::materials {
 
 struct Thermal {
   double heat_capacity = 0.0;        ///< c_v [J/(kg·K)]
-  double conductivity = 0.0;         ///< k [W/(m·K)], not used by the explicit update
+  double conductivity = 0.0;         ///< k [W/(m·K)], used by mpm::HeatConduction only
   double initial_temperature = 300;  ///< T0 [K]
 
   void validate(const std::string& where) const;

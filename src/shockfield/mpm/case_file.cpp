@@ -151,6 +151,7 @@ MpmCase read_mpm_case(const Config& root) {
   c.options.scheme = solver.get_choice_or("scheme", {"musl", "usl"}, "musl") == "musl" ? UpdateScheme::MUSL : UpdateScheme::USL;
   c.options.flip = solver.get_double_or("flip", 1.0, Range::closed(0.0, 1.0));
   c.end_time = solver.get_double("end_time", Range::positive());
+  c.options.heat_conduction = solver.get_bool_or("heat_conduction", false);  // off: results as before
   if (solver.has("time_step")) {
     c.time_step = solver.get_double("time_step", Range::positive());
     c.options.courant = 1.0;  // the CFL limit a fixed step is checked against

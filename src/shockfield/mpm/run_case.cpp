@@ -68,12 +68,14 @@ void check_health(const Simulation& sim) {
   }
 }
 
-// One step; a fixed time step is checked against the CFL limit Δx/max(c_p + |v_p|) first.
+// One step; a fixed time step is checked against the CFL limit Δx/max(c_p + |v_p|) (and the
+// diffusion limit with heat conduction) first.
 void advance(Simulation& sim, const MpmCase& c, double max_dt) {
   if (c.time_step) {
     const double limit = sim.stable_time_step();  // courant = 1 for fixed steps
     if (*c.time_step > limit)
-      throw RunError(fmt::format("mpm: time_step {} s is beyond the CFL limit {} s = dx / max(c + |v|) at t = {} s "
+      throw RunError(fmt::format("mpm: time_step {} s is beyond the CFL limit {} s = dx / max(c + |v|) (or dx²/(2dα) "
+                                 "with heat_conduction) at t = {} s "
                                  "(step {}); lower [solver] time_step or drop it for the adaptive step",
                                  *c.time_step, limit, sim.time(), sim.step_count()));
     max_dt = std::min(max_dt, *c.time_step);
@@ -92,8 +94,8 @@ void run_case(const Config& root, const RunOptions& options) {
   Simulation sim(c.grid, c.materials, std::move(p.sample.particles), c.options);
   p.first_dt = c.time_step.value_or(sim.stable_time_step());
   if (c.time_step && *c.time_step > sim.stable_time_step())
-    root.table("solver").fail("time_step", fmt::format("{} s is beyond the CFL limit {} s = dx / max(c + |v|) of the "
-                                                       "initial state", *c.time_step, sim.stable_time_step()));
+    root.table("solver").fail("time_step", fmt::format("{} s is beyond the CFL limit {} s = dx / max(c + |v|) (or "
+                                                       "dx²/(2dα) with heat_conduction) of the initial state", *c.time_step, sim.stable_time_step()));
   derive(root, p, sim);
   if (options.validate_only) {
     std::printf("%s: valid mpm case (%zu particles, %zu grid nodes, dt %.3g s)\n", options.case_file.string().c_str(),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -59,13 +60,19 @@ double Simulation::stable_time_step() const {
     const auto p = static_cast<std::size_t>(q);
     fastest = std::max(fastest, particles_.state[p].sound_speed + particles_.v[p].norm());
   }
-  return options_.courant * grid_.min_cell_size() / fastest;
+  return std::min(options_.courant * grid_.min_cell_size() / fastest, conduction_time_step());
+}
+
+double Simulation::conduction_time_step() const {
+  if (!options_.heat_conduction) return std::numeric_limits<double>::infinity();
+  return HeatConduction::stable_time_step(particles_, materials_, options_.courant, grid_.min_cell_size(), grid_.dim());
 }
 
 void Simulation::step(double max_dt) {
   // The fastest signal of the previous step's end, unless a hook or the caller may have changed
   // the particles since (max over the same values either way).
-  dt_ = fastest_known_ ? options_.courant * grid_.min_cell_size() / fastest_ : stable_time_step();
+  dt_ = fastest_known_ ? std::min(options_.courant * grid_.min_cell_size() / fastest_, conduction_time_step())
+                       : stable_time_step();
   fastest_known_ = false;
   if (max_dt > 0.0) dt_ = std::min(dt_, max_dt);
   if (!(std::isfinite(dt_) && dt_ > 0.0) || dt_ < options_.min_time_step)
@@ -75,6 +82,7 @@ void Simulation::step(double max_dt) {
 
   transfer_.build(grid_, particles_, options_.shape);
   transfer_.to_grid(grid_, particles_);
+  if (options_.heat_conduction) heat_.step(transfer_, grid_.size(), particles_, materials_, dt_);
   update_grid();
   run_hooks(Stage::AfterGridUpdate);
   nodal_velocities(true);

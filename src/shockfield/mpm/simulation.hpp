@@ -8,6 +8,8 @@
 //   4. grid → particles: v_p += Δt Σ N_i f_i/m_i (FLIP), x_p += Δt Σ N_i v_i
 //   5. MUSL: map the new particle momenta back to the grid and impose walls again
 //   6. L_p = Σ_i v_i ⊗ ∇N_i(x_p); material update of every point (materials::SolidMaterial)
+// With `heat_conduction`, step 2 is followed by an explicit conduction step on the same stencils
+// (heat_conduction.hpp), and Δt is also bounded by the diffusion limit C·h²/(2·d·α_max).
 // Hooks run at named stages so drivers add loading, diagnostics and output without touching the
 // loop: BeforeStep (Δt known), AfterGridUpdate (nodal momenta after step 3, may be modified),
 // EndOfStep.
@@ -17,6 +19,7 @@
 
 #include "shockfield/materials/solid_material.hpp"
 #include "shockfield/mpm/grid.hpp"
+#include "shockfield/mpm/heat_conduction.hpp"
 #include "shockfield/mpm/particles.hpp"
 #include "shockfield/mpm/transfer.hpp"
 
@@ -31,6 +34,7 @@ struct SimulationOptions {
   double courant = 0.3;        ///< C of the stable step, in (0, 1]
   double flip = 1.0;           ///< FLIP fraction of the velocity update (1 FLIP, 0 PIC)
   double min_time_step = 0.0;  ///< RunError when Δt falls below this [s]
+  bool heat_conduction = false;  ///< solve heat conduction with the materials' conductivities
 
   void validate() const;
 };
@@ -43,7 +47,8 @@ class Simulation {
              SimulationOptions options = {});
 
   void add_hook(Stage stage, Hook hook);
-  /// Δt = C·Δx_min / max_p(c_p + |v_p|) for the current state.
+  /// Δt = C·Δx_min / max_p(c_p + |v_p|) for the current state (and, with heat conduction, at
+  /// most C·Δx_min² / (2·d·α_max)).
   double stable_time_step() const;
   /// One step of at most `max_dt` (defaults to the stable step).
   void step(double max_dt = 0.0);
@@ -67,6 +72,8 @@ class Simulation {
 
  private:
   void run_hooks(Stage stage);
+  /// C·Δx_min² / (2·d·α_max) with heat conduction, +∞ without.
+  double conduction_time_step() const;
   void update_grid();
   /// v_i = (m v)_i / m_i and (with_acceleration) a_i = f_i / m_i; zero on nodes without mass.
   void nodal_velocities(bool with_acceleration);
@@ -85,6 +92,7 @@ class Simulation {
   Particles particles_;
   SimulationOptions options_;
   Transfer transfer_;
+  HeatConduction heat_;
   std::array<std::vector<Hook>, 3> hooks_;
   std::vector<Vec3> old_momentum_;
   std::vector<Vec3> node_velocity_;

@@ -59,6 +59,16 @@ class Transfer {
   /// For each particle p (in parallel): f(p, Σ_i a_i ⊗ ∇N_i(x_p)) for a nodal vector field a.
   template <class F>
   void gradient(const std::vector<Vec3>& a, F&& f) const;
+  /// Generic transfers for other nodal fields (heat conduction): f(q, each) for every particle q,
+  /// where each(g) calls g(i, N_i(x_q), ∇N_i(x_q)) for the nodes i of q's stencil (∇N as
+  /// std::array<double, 3>, z component 0 in 2D). `scatter_each` visits the particles in the
+  /// slab-pass order of the particle-to-grid sums, so f may add to nodal fields and each nodal
+  /// sum is formed in one fixed order whatever the thread count; `gather_each` runs in parallel
+  /// over the particles and must only read nodal fields.
+  template <class F>
+  void scatter_each(F&& f) const;
+  template <class F>
+  void gather_each(F&& f) const;
 
  private:
   template <int D, int S>
@@ -74,6 +84,12 @@ class Transfer {
   /// is added to each node of its stencil.
   template <int Dim, int S, bool Force, class Before>
   void scatter(Grid& grid, const Particles& p, Before&& before) const;
+  /// The slab passes alone: body(q) for every particle, each slab's particles in bin order.
+  template <class Body>
+  void slab_passes(Body&& body) const;
+  /// each(g) of scatter_each/gather_each for one stencil.
+  template <int Dim, int S, class G>
+  void each_node(const Stencil<Dim>& s, G&& g) const;
   template <int Dim>
   const std::vector<Stencil<Dim>>& stencils() const {
     if constexpr (Dim == 2) return stencils2_;
@@ -180,10 +196,9 @@ void Transfer::interpolate_and_remap(Grid& grid, const Particles& p, const std::
   });
 }
 
-template <int Dim, int S, bool Force, class Before>
-void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
-  const auto& all = stencils<Dim>();
-  const std::size_t bins = grid.size();
+template <class Body>
+void Transfer::slab_passes(Body&& body) const {
+  const std::size_t bins = bin_start_.size() - 1;
   for (const auto& pass : passes_) {
     const auto count = static_cast<std::ptrdiff_t>(pass.size());
 #pragma omp parallel for schedule(dynamic, 1)
@@ -191,45 +206,92 @@ void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
       const std::size_t slab = pass[static_cast<std::size_t>(k)];
       const std::size_t first = bin_start_[std::min(bins, slab * slab_bins_)];
       const std::size_t last = bin_start_[std::min(bins, (slab + 1) * slab_bins_)];
-      for (std::size_t e = first; e < last; ++e) {
-        const std::size_t q = binned_[e];
-        const auto& s = all[q];
-        const auto node = nodes<Dim, S>(s);
-        before(q, s, node);
-        const double m = p.mass[q];
-        const Vec3 mv = m * p.v[q];
-        Mat3 vs;  // V_p σ_p
-        if constexpr (Force) vs = p.volume(q) * p.state[q].stress();
-        std::size_t n = 0;
-        for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
-          const auto uc = static_cast<std::size_t>(c);
-          const double wz = Dim == 3 ? s.w[Dim - 1][uc] : 1.0, dwz = Dim == 3 ? s.dw[Dim - 1][uc] : 0.0;
-          for (int b = 0; b < S; ++b) {
-            const auto ub = static_cast<std::size_t>(b);
-            const double wy = s.w[1][ub], dwy = s.dw[1][ub];
-            for (int a = 0; a < S; ++a, ++n) {
-              const auto ua = static_cast<std::size_t>(a);
-              const double wx = s.w[0][ua], dwx = s.dw[0][ua];
-              const double w = wx * wy * wz;
-              const std::size_t i = node[n];
-              Vec3& gm = grid.momentum[i];
-              for (int r = 0; r < Dim; ++r) gm[r] += w * mv[r];
-              if constexpr (Force) {
-                grid.mass[i] += w * m;
-                const double g[3] = {dwx * wy * wz, wx * dwy * wz, wx * wy * dwz};
-                Vec3& f = grid.force[i];
-                for (int r = 0; r < Dim; ++r) {
-                  double t = vs(r, 0) * g[0];
-                  for (int k2 = 1; k2 < Dim; ++k2) t += vs(r, k2) * g[k2];
-                  f[r] -= t;  // eq. 12, σ symmetric
-                }
-              }
+      for (std::size_t e = first; e < last; ++e) body(binned_[e]);
+    }
+  }
+}
+
+template <int Dim, int S, bool Force, class Before>
+void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
+  const auto& all = stencils<Dim>();
+  slab_passes([&](std::size_t q) {
+    const auto& s = all[q];
+    const auto node = nodes<Dim, S>(s);
+    before(q, s, node);
+    const double m = p.mass[q];
+    const Vec3 mv = m * p.v[q];
+    Mat3 vs;  // V_p σ_p
+    if constexpr (Force) vs = p.volume(q) * p.state[q].stress();
+    std::size_t n = 0;
+    for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
+      const auto uc = static_cast<std::size_t>(c);
+      const double wz = Dim == 3 ? s.w[Dim - 1][uc] : 1.0, dwz = Dim == 3 ? s.dw[Dim - 1][uc] : 0.0;
+      for (int b = 0; b < S; ++b) {
+        const auto ub = static_cast<std::size_t>(b);
+        const double wy = s.w[1][ub], dwy = s.dw[1][ub];
+        for (int a = 0; a < S; ++a, ++n) {
+          const auto ua = static_cast<std::size_t>(a);
+          const double wx = s.w[0][ua], dwx = s.dw[0][ua];
+          const double w = wx * wy * wz;
+          const std::size_t i = node[n];
+          Vec3& gm = grid.momentum[i];
+          for (int r = 0; r < Dim; ++r) gm[r] += w * mv[r];
+          if constexpr (Force) {
+            grid.mass[i] += w * m;
+            const double g[3] = {dwx * wy * wz, wx * dwy * wz, wx * wy * dwz};
+            Vec3& f = grid.force[i];
+            for (int r = 0; r < Dim; ++r) {
+              double t = vs(r, 0) * g[0];
+              for (int k2 = 1; k2 < Dim; ++k2) t += vs(r, k2) * g[k2];
+              f[r] -= t;  // eq. 12, σ symmetric
             }
           }
         }
       }
     }
+  });
+}
+
+template <int Dim, int S, class G>
+inline void Transfer::each_node(const Stencil<Dim>& s, G&& g) const {
+  const auto node = nodes<Dim, S>(s);
+  std::size_t n = 0;
+  for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
+    const auto uc = static_cast<std::size_t>(c);
+    const double wz = Dim == 3 ? s.w[Dim - 1][uc] : 1.0, dwz = Dim == 3 ? s.dw[Dim - 1][uc] : 0.0;
+    for (int b = 0; b < S; ++b) {
+      const auto ub = static_cast<std::size_t>(b);
+      const double wy = s.w[1][ub], dwy = s.dw[1][ub];
+      for (int a = 0; a < S; ++a, ++n) {
+        const auto ua = static_cast<std::size_t>(a);
+        const double wx = s.w[0][ua], dwx = s.dw[0][ua];
+        g(node[n], wx * wy * wz, std::array<double, 3>{dwx * wy * wz, wx * dwy * wz, wx * wy * dwz});
+      }
+    }
   }
+}
+
+template <class F>
+void Transfer::scatter_each(F&& f) const {
+  dispatch([&](auto kernel) {
+    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
+    const auto& all = stencils<D>();
+    slab_passes([&](std::size_t q) { f(q, [&](auto&& g) { each_node<D, S>(all[q], g); }); });
+  });
+}
+
+template <class F>
+void Transfer::gather_each(F&& f) const {
+  dispatch([&](auto kernel) {
+    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
+    const auto& all = stencils<D>();
+    const auto n = static_cast<std::ptrdiff_t>(all.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t q = 0; q < n; ++q) {
+      const auto u = static_cast<std::size_t>(q);
+      f(u, [&](auto&& g) { each_node<D, S>(all[u], g); });
+    }
+  });
 }
 
 template <class F>
