@@ -84,12 +84,13 @@ class Transfer {
   /// is added to each node of its stencil.
   template <int Dim, int S, bool Force, class Before>
   void scatter(Grid& grid, const Particles& p, Before&& before) const;
-  /// The slab passes alone: body(q) for every particle, each slab's particles in bin order.
+  /// The slab passes alone: body(first, last) for each slab, whose particles are
+  /// binned_[first..last) in bin order.
   template <class Body>
   void slab_passes(Body&& body) const;
-  /// each(g) of scatter_each/gather_each for one stencil.
-  template <int Dim, int S, class G>
-  void each_node(const Stencil<Dim>& s, G&& g) const;
+  /// g(i, N_i, ∇N_i) for the nodes i of a stencil (flat indices `node` from nodes()).
+  template <int Dim, int S, std::size_t N, class G>
+  static void each_node(const Stencil<Dim>& s, const std::array<std::size_t, N>& node, G&& g);
   template <int Dim>
   const std::vector<Stencil<Dim>>& stencils() const {
     if constexpr (Dim == 2) return stencils2_;
@@ -206,7 +207,7 @@ void Transfer::slab_passes(Body&& body) const {
       const std::size_t slab = pass[static_cast<std::size_t>(k)];
       const std::size_t first = bin_start_[std::min(bins, slab * slab_bins_)];
       const std::size_t last = bin_start_[std::min(bins, (slab + 1) * slab_bins_)];
-      for (std::size_t e = first; e < last; ++e) body(binned_[e]);
+      body(first, last);
     }
   }
 }
@@ -214,47 +215,35 @@ void Transfer::slab_passes(Body&& body) const {
 template <int Dim, int S, bool Force, class Before>
 void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
   const auto& all = stencils<Dim>();
-  slab_passes([&](std::size_t q) {
-    const auto& s = all[q];
-    const auto node = nodes<Dim, S>(s);
-    before(q, s, node);
-    const double m = p.mass[q];
-    const Vec3 mv = m * p.v[q];
-    Mat3 vs;  // V_p σ_p
-    if constexpr (Force) vs = p.volume(q) * p.state[q].stress();
-    std::size_t n = 0;
-    for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
-      const auto uc = static_cast<std::size_t>(c);
-      const double wz = Dim == 3 ? s.w[Dim - 1][uc] : 1.0, dwz = Dim == 3 ? s.dw[Dim - 1][uc] : 0.0;
-      for (int b = 0; b < S; ++b) {
-        const auto ub = static_cast<std::size_t>(b);
-        const double wy = s.w[1][ub], dwy = s.dw[1][ub];
-        for (int a = 0; a < S; ++a, ++n) {
-          const auto ua = static_cast<std::size_t>(a);
-          const double wx = s.w[0][ua], dwx = s.dw[0][ua];
-          const double w = wx * wy * wz;
-          const std::size_t i = node[n];
-          Vec3& gm = grid.momentum[i];
-          for (int r = 0; r < Dim; ++r) gm[r] += w * mv[r];
-          if constexpr (Force) {
-            grid.mass[i] += w * m;
-            const double g[3] = {dwx * wy * wz, wx * dwy * wz, wx * wy * dwz};
-            Vec3& f = grid.force[i];
-            for (int r = 0; r < Dim; ++r) {
-              double t = vs(r, 0) * g[0];
-              for (int k2 = 1; k2 < Dim; ++k2) t += vs(r, k2) * g[k2];
-              f[r] -= t;  // eq. 12, σ symmetric
-            }
+  slab_passes([&](std::size_t first, std::size_t last) {
+    for (std::size_t e = first; e < last; ++e) {
+      const std::size_t q = binned_[e];
+      const auto& s = all[q];
+      const auto node = nodes<Dim, S>(s);
+      before(q, s, node);
+      const double m = p.mass[q];
+      const Vec3 mv = m * p.v[q];
+      Mat3 vs;  // V_p σ_p
+      if constexpr (Force) vs = p.volume(q) * p.state[q].stress();
+      each_node<Dim, S>(s, node, [&](std::size_t i, double w, const std::array<double, 3>& g) {
+        Vec3& gm = grid.momentum[i];
+        for (int r = 0; r < Dim; ++r) gm[r] += w * mv[r];
+        if constexpr (Force) {
+          grid.mass[i] += w * m;
+          Vec3& f = grid.force[i];
+          for (int r = 0; r < Dim; ++r) {
+            double t = vs(r, 0) * g[0];
+            for (int k2 = 1; k2 < Dim; ++k2) t += vs(r, k2) * g[static_cast<std::size_t>(k2)];
+            f[r] -= t;  // eq. 12, σ symmetric
           }
         }
-      }
+      });
     }
   });
 }
 
-template <int Dim, int S, class G>
-inline void Transfer::each_node(const Stencil<Dim>& s, G&& g) const {
-  const auto node = nodes<Dim, S>(s);
+template <int Dim, int S, std::size_t N, class G>
+inline void Transfer::each_node(const Stencil<Dim>& s, const std::array<std::size_t, N>& node, G&& g) {
   std::size_t n = 0;
   for (int c = 0; c < (Dim == 3 ? S : 1); ++c) {
     const auto uc = static_cast<std::size_t>(c);
@@ -276,7 +265,12 @@ void Transfer::scatter_each(F&& f) const {
   dispatch([&](auto kernel) {
     constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
     const auto& all = stencils<D>();
-    slab_passes([&](std::size_t q) { f(q, [&](auto&& g) { each_node<D, S>(all[q], g); }); });
+    slab_passes([&](std::size_t first, std::size_t last) {
+      for (std::size_t e = first; e < last; ++e) {
+        const std::size_t q = binned_[e];
+        f(q, [&](auto&& g) { each_node<D, S>(all[q], nodes<D, S>(all[q]), g); });
+      }
+    });
   });
 }
 
@@ -289,7 +283,7 @@ void Transfer::gather_each(F&& f) const {
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t q = 0; q < n; ++q) {
       const auto u = static_cast<std::size_t>(q);
-      f(u, [&](auto&& g) { each_node<D, S>(all[u], g); });
+      f(u, [&](auto&& g) { each_node<D, S>(all[u], nodes<D, S>(all[u]), g); });
     }
   });
 }
