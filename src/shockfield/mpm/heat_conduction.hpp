@@ -1,7 +1,7 @@
 #pragma once
 // Explicit heat conduction of the material point method (seed 000, §2.2.1: "optional heat
-// conduction with the given k"), the standard MPM heat transfer (Tao, Zhang, Chen & Liu; Zhang,
-// Chen & Liu, "The Material Point Method", §3.5), on the stencils of the step's Transfer:
+// conduction with the given k"), the standard MPM heat transfer (Tao et al.; Zhang, Chen & Liu,
+// "The Material Point Method"), on the stencils of the step's Transfer:
 //   C_i  = Σ_p m_p c_v,p N_ip                       nodal heat capacity (lumped)
 //   T_i  = Σ_p m_p c_v,p T_p N_ip / C_i             nodal temperature
 //   ∇T_p = Σ_i T_i ∇N_ip
