@@ -297,25 +297,12 @@ void Transfer::gradient(const std::vector<Vec3>& va, F&& f) const {
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t q = 0; q < n; ++q) {
       const auto& s = all[static_cast<std::size_t>(q)];
-      const auto node = nodes<D, S>(s);
       Mat3 l = Mat3::Zero();
-      std::size_t e = 0;
-      for (int c = 0; c < (D == 3 ? S : 1); ++c) {
-        const auto uc = static_cast<std::size_t>(c);
-        const double wz = D == 3 ? s.w[D - 1][uc] : 1.0, dwz = D == 3 ? s.dw[D - 1][uc] : 0.0;
-        for (int b = 0; b < S; ++b) {
-          const auto ub = static_cast<std::size_t>(b);
-          const double wy = s.w[1][ub], dwy = s.dw[1][ub];
-          for (int a = 0; a < S; ++a, ++e) {
-            const auto ua = static_cast<std::size_t>(a);
-            const double wx = s.w[0][ua], dwx = s.dw[0][ua];
-            const double g[3] = {dwx * wy * wz, wx * dwy * wz, wx * wy * dwz};
-            const Vec3& v = va[node[e]];
-            for (int r = 0; r < D; ++r)
-              for (int k = 0; k < D; ++k) l(r, k) += v[r] * g[k];
-          }
-        }
-      }
+      each_node<D, S>(s, nodes<D, S>(s), [&](std::size_t node, double, const std::array<double, 3>& g) {
+        const Vec3& v = va[node];
+        for (int r = 0; r < D; ++r)
+          for (int k = 0; k < D; ++k) l(r, k) += v[r] * g[static_cast<std::size_t>(k)];
+      });
       f(static_cast<std::size_t>(q), l);
     }
   });
