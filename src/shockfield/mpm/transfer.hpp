@@ -76,6 +76,9 @@ class Transfer {
   /// Call k(Kernel<dim, support>{}) for the current dimension and stencil width.
   template <class K>
   void dispatch(K&& k) const;
+  /// In parallel over the particles q (static schedule): f(Kernel<dim, support>{}, q, stencil of q).
+  template <class F>
+  void each_particle(F&& f) const;
   template <int Dim, class Shape>
   void evaluate(const Grid& grid, const Particles& p);
   void bin(const Grid& grid);
@@ -166,18 +169,23 @@ inline void Transfer::gather(const Stencil<Dim>& s, const std::array<std::size_t
 }
 
 template <class F>
-void Transfer::interpolate(const std::vector<Vec3>& va, const std::vector<Vec3>& vb, F&& f) const {
+void Transfer::each_particle(F&& f) const {
   dispatch([&](auto kernel) {
-    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
+    constexpr int D = decltype(kernel.first)::value;
     const auto& all = stencils<D>();
     const auto n = static_cast<std::ptrdiff_t>(all.size());
 #pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t q = 0; q < n; ++q) {
-      const auto& s = all[static_cast<std::size_t>(q)];
-      Vec3 sa, sb;
-      gather<D, S>(s, nodes<D, S>(s), va, vb, sa, sb);
-      f(static_cast<std::size_t>(q), sa, sb);
-    }
+    for (std::ptrdiff_t q = 0; q < n; ++q) f(kernel, static_cast<std::size_t>(q), all[static_cast<std::size_t>(q)]);
+  });
+}
+
+template <class F>
+void Transfer::interpolate(const std::vector<Vec3>& va, const std::vector<Vec3>& vb, F&& f) const {
+  each_particle([&](auto kernel, std::size_t q, const auto& s) {
+    constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
+    Vec3 sa, sb;
+    gather<D, S>(s, nodes<D, S>(s), va, vb, sa, sb);
+    f(q, sa, sb);
   });
 }
 
@@ -276,35 +284,23 @@ void Transfer::scatter_each(F&& f) const {
 
 template <class F>
 void Transfer::gather_each(F&& f) const {
-  dispatch([&](auto kernel) {
+  each_particle([&](auto kernel, std::size_t q, const auto& s) {
     constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
-    const auto& all = stencils<D>();
-    const auto n = static_cast<std::ptrdiff_t>(all.size());
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t q = 0; q < n; ++q) {
-      const auto u = static_cast<std::size_t>(q);
-      f(u, [&](auto&& g) { each_node<D, S>(all[u], nodes<D, S>(all[u]), g); });
-    }
+    f(q, [&](auto&& g) { each_node<D, S>(s, nodes<D, S>(s), g); });
   });
 }
 
 template <class F>
 void Transfer::gradient(const std::vector<Vec3>& va, F&& f) const {
-  dispatch([&](auto kernel) {
+  each_particle([&](auto kernel, std::size_t q, const auto& s) {
     constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
-    const auto& all = stencils<D>();
-    const auto n = static_cast<std::ptrdiff_t>(all.size());
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t q = 0; q < n; ++q) {
-      const auto& s = all[static_cast<std::size_t>(q)];
-      Mat3 l = Mat3::Zero();
-      each_node<D, S>(s, nodes<D, S>(s), [&](std::size_t node, double, const std::array<double, 3>& g) {
-        const Vec3& v = va[node];
-        for (int r = 0; r < D; ++r)
-          for (int k = 0; k < D; ++k) l(r, k) += v[r] * g[static_cast<std::size_t>(k)];
-      });
-      f(static_cast<std::size_t>(q), l);
-    }
+    Mat3 l = Mat3::Zero();
+    each_node<D, S>(s, nodes<D, S>(s), [&](std::size_t node, double, const std::array<double, 3>& g) {
+      const Vec3& v = va[node];
+      for (int r = 0; r < D; ++r)
+        for (int k = 0; k < D; ++k) l(r, k) += v[r] * g[static_cast<std::size_t>(k)];
+    });
+    f(q, l);
   });
 }
 
