@@ -109,7 +109,7 @@ void BgkRow::rhs(const double* f, int j, int chunk_index, const double* convecti
     }
     const double* base = output.base + k * N + c0;
     const double a = output.a, dt = output.dt;
-    for (int i = 0; i < n; ++i) o[i] = a * base[i] + (1.0 - a) * (fk[i] + dt * L[i]);
+    for (int i = 0; i < n; ++i) o[i] = runge_kutta_stage(a, base[i], fk[i], dt, L[i]);
   }
 }
 

@@ -22,6 +22,11 @@ struct RowOutput {
   double a = 0.0, dt = 0.0;
 };
 
+/// One value of a third-order TVD Runge–Kutta stage: a·base + (1 − a)·(f + Δt·L).
+inline double runge_kutta_stage(double a, double base, double f, double dt, double L) {
+  return a * base + (1.0 - a) * (f + dt * L);
+}
+
 class BgkRow {
  public:
   BgkRow(const VelocityModel& model, const MomentInversion& inversion, const Lattice& lattice,

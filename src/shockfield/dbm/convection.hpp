@@ -35,13 +35,20 @@ inline double nnd_difference(const double* p, std::ptrdiff_t s, const double* sl
   }
 }
 
-/// The same with the two slopes it needs computed on the spot.
+/// The NND value at the face between p[0] and p[s], reconstructed from the upwind cell: p[0]
+/// when the flow goes towards +s (from_low), else p[s].
+inline double nnd_face_value(const double* p, std::ptrdiff_t s, bool from_low) {
+  return from_low ? p[0] + 0.5 * limited_slope(p, s) : p[s] - 0.5 * limited_slope(p + s, s);
+}
+
+/// nnd_difference with the slopes it needs computed on the spot: the difference of the two face
+/// values of the cell.
 template <int Upwind>
 inline double nnd_difference(const double* p, std::ptrdiff_t s) {
-  double slope[3] = {0.0, limited_slope(p, s), 0.0};
-  if constexpr (Upwind > 0) slope[0] = limited_slope(p - s, s);
-  if constexpr (Upwind < 0) slope[2] = limited_slope(p + s, s);
-  return nnd_difference<Upwind>(p, s, slope + 1, 1);
+  if constexpr (Upwind == 0)
+    return 0.0;
+  else
+    return nnd_face_value(p, s, Upwind > 0) - nnd_face_value(p - s, s, Upwind > 0);
 }
 
 }  // namespace shockfield::dbm

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/dbm/bgk_row.hpp"
 #include "shockfield/dbm/convection.hpp"
 
 namespace shockfield::dbm {
@@ -91,7 +92,7 @@ void ReactiveFlow::source(const std::vector<double>& f, std::vector<double>& rhs
   for (int j = 0; j < l.ny; ++j)
     for (int i = 0; i < l.nx; ++i) {
       const std::size_t c = l.at(i, j);
-      target[c] = a * phi0_[c] + (1.0 - a) * (previous[c] + dt * dphi_[c]);
+      target[c] = runge_kutta_stage(a, phi0_[c], previous[c], dt, dphi_[c]);
     }
   stage_ = (stage_ + 1) % 3;
 }
@@ -102,9 +103,8 @@ double ReactiveFlow::face_mass_flux(const std::vector<double>& f, std::size_t c,
   double flux = 0.0;
   for (int k = 0; k < static_cast<int>(v.size()); ++k) {
     const double* p = f.data() + k * N + c;
-    // The NND face values of convection.hpp (nnd_derivative's right-face value at c).
-    if (v[k] > 0.0) flux += v[k] * (p[0] + 0.5 * limited_slope(p, s));
-    else if (v[k] < 0.0) flux += v[k] * (p[s] - 0.5 * limited_slope(p + s, s));
+    // The face value the convection of f_k uses (convection.hpp).
+    if (v[k] != 0.0) flux += v[k] * nnd_face_value(p, s, v[k] > 0.0);
   }
   return flux;
 }
@@ -122,8 +122,7 @@ void ReactiveFlow::stage_rates(const std::vector<double>& f, const std::vector<d
   auto phi_flux = [&](std::size_t c, std::ptrdiff_t s, const std::vector<double>& v) {
     const double mass = face_mass_flux(f, c, s, v);
     const double* lam = lambda_.data() + c;
-    return mass * (mass > 0.0 ? lam[0] + 0.5 * limited_slope(lam, s)
-                              : lam[s] - 0.5 * limited_slope(lam + s, s));
+    return mass * nnd_face_value(lam, s, mass > 0.0);
   };
 #pragma omp parallel
   {

@@ -124,7 +124,7 @@ void Simulation::step() {
           const std::size_t row = k * N + lattice_.at(0, j);
           for (int i = 0; i < lattice_.nx; ++i) {
             const std::size_t c = row + i;
-            out[c] = a * f_[c] + (1.0 - a) * (in[c] + dt * work_[c]);
+            out[c] = runge_kutta_stage(a, f_[c], in[c], dt, work_[c]);
           }
         }
     };
