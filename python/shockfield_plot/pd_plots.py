@@ -12,11 +12,14 @@
       (Fig. 12); prints each run's HEL (the compression where the slip first exceeds 1e-5, 1e-4
       and 2% of its plateau, scanning from the resting end) and mean slip behind the plastic wave.
 
-  pd_plots.py compression RUN_DIR [--out FILE]
+  pd_plots.py compression RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
       a [homogeneous] run (seed 004 Fig. 5): every grain's axial compression against the
       compressive strain, the band mean ± SD, and the Taylor average (eq. 43); below, the
       soft-hard spread (max − min over the grains) and the SD against strain; prints the
       strains where the spread and the SD peak and where the spread first reaches 100 MPa.
+      Drawn beside it, as the experimental reference, the Johnson-Cook flow curve of OFHC copper
+      (Johnson & Cook 1983, fitted to their tests) at the run's strain rate and room temperature.
+      Further runs add their Taylor average only (e.g. another hardening law).
 
   pd_plots.py orientations RUN_DIR [--out FILE]
       a [homogeneous] run's grains (grain_summary.csv): the crystal direction along the loading
@@ -145,6 +148,20 @@ def crystal(runs, labels, out):
     fig.savefig(out, dpi=110)
 
 
+# Johnson & Cook's flow stress of OFHC copper, sigma = (A + B eps_p^n)(1 + C ln(rate / 1 s^-1)) at
+# room temperature: G. R. Johnson, W. H. Cook, "A constitutive model and data for metals subjected
+# to large strains, high strain rates and high temperatures", Proc. 7th Int. Symp. on Ballistics,
+# The Hague, 1983, pp. 541-547 (A = 90 MPa, B = 292 MPa, n = 0.31, C = 0.025; fitted to torsion
+# and Hopkinson-bar tests of OFHC copper). It stands in for the annealed-copper curve of Kalidindi,
+# Bronkhorst & Anand (1992) that the seed compares with, whose numbers we do not have.
+JOHNSON_COOK_OFHC = {"A": 90.0, "B": 292.0, "n": 0.31, "C": 0.025}
+
+
+def johnson_cook_ofhc(plastic_strain, rate):
+    jc = JOHNSON_COOK_OFHC
+    return (jc["A"] + jc["B"] * plastic_strain ** jc["n"]) * (1.0 + jc["C"] * np.log(rate))
+
+
 def compression(runs, labels, out):
     run = runs[0]
     curve = read_csv(os.path.join(run, "stress_strain.csv"))
@@ -160,7 +177,16 @@ def compression(runs, labels, out):
     top.plot(eps, sigma[soft], color="tab:green", lw=1.2, label="softest grain at the end")
     top.plot(eps, sigma[hard], color="tab:red", lw=1.2, label="hardest grain at the end")
     top.fill_between(eps, taylor - sd, taylor + sd, color="tab:blue", alpha=0.2, label="Taylor average ± SD")
-    top.plot(eps, taylor, color="tab:blue", lw=2.2, label=f"Taylor average (eq. 43), {sigma.shape[0]} grains")
+    top.plot(eps, taylor, color="tab:blue", lw=2.2,
+             label=f"Taylor average (eq. 43), {sigma.shape[0]} grains" + (f", {labels[0]}" if len(runs) > 1 else ""))
+    others = [(label, -read_csv(os.path.join(r, "stress_strain.csv"))["taylor_axial_Pa"] / 1e6)
+              for r, label in zip(runs[1:], labels[1:])]
+    for (label, other), color in zip(others, ("tab:orange", "tab:purple", "tab:brown")):
+        top.plot(eps, other, color=color, lw=2.2, label=f"Taylor average, {label}")
+    rate = abs(derived(run, "strain_rate"))
+    reference = johnson_cook_ofhc(eps, rate)
+    top.plot(eps, reference, color="k", ls="--", lw=1.5,
+             label=f"OFHC Cu, Johnson & Cook 1983 fit to experiment, {rate:g}/s")
     top.set_ylabel("axial compression (eq. 45) [MPa]")
     top.legend(fontsize="small", loc="lower right")
     top.set_title("OFHC copper, Table 1, isochoric compression (eq. 44), thin: each grain", fontsize="small")
@@ -178,6 +204,12 @@ def compression(runs, labels, out):
           f"{sd.max():.1f} MPa (strain {eps[np.argmax(sd)]:.3g}); at strain 0.01/0.05/0.1: spread "
           + ", ".join(f"{np.interp(e, eps, spread):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa, Taylor "
           + ", ".join(f"{np.interp(e, eps, taylor):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa")
+    print("strain  Johnson-Cook OFHC [MPa]  Taylor average [MPa] (ratio to Johnson-Cook): "
+          + "; ".join(labels[: len(runs)]))
+    for e in (0.01, 0.05, 0.1, 0.2, 0.5, 1.0):
+        r = johnson_cook_ofhc(e, rate)
+        cells = [np.interp(e, eps, t) for t in [taylor] + [o for _, o in others]]
+        print(f"{e:6.2f}  {r:23.1f}  " + "  ".join(f"{t:7.1f} ({t / r:4.2f})" for t in cells))
 
 
 def standard_triangle(h, k, l):

@@ -39,6 +39,10 @@ CrystalSpec read_crystal(const Config& t) {
   over("g_s", c.saturation_resistance, Range::positive());
   over("h0", c.hardening, Range::non_negative());
   over("q", c.latent_ratio, Range::non_negative());
+  c.hardening_law = t.get_choice_or("hardening_law", {"sech2", "power"}, "sech2") == "power"
+                        ? materials::HardeningLaw::power
+                        : materials::HardeningLaw::sech2;
+  over("hardening_exponent", c.hardening_exponent, Range::positive());  // a (power law only)
   over("c11", c.c11, Range::positive());  // eqs. 31-32
   over("c12", c.c12, {});
   over("c44", c.c44, Range::positive());

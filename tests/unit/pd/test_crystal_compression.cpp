@@ -141,3 +141,48 @@ TEST(CrystalCompression, FlowStressOfHundredAndHundredElevenFollowsSchmid) {
   EXPECT_NEAR(sigma[1] / sigma[0], 1.5 * std::pow(2.0, c.rate_sensitivity), 3e-3);
   RecordProperty("flow_stress_ratio_111_100", std::to_string(sigma[1] / sigma[0]));
 }
+
+// Hardening of a grain loaded along [100]: its 8 active systems (Schmid factor 1/√6) slip
+// alike at |γ̇1| and the 4 others not at all, so γ_tot = 8|γ1| and each active resistance obeys
+// dg/dγ_tot = h·(1 + 7q)/8 (eqs. 38-41). sech² law (eq. 40): h = h0 sech²(h0 γ_tot/(g_s − g0)),
+// so g = g0 + (1 + 7q)/8·(g_s − g0)·tanh(h0 γ_tot/(g_s − g0)). Power law (Kalidindi et al. 1992):
+// h = h0 (1 − g/g_s)^a, so x = 1 − g/g_s follows x^(1−a) = x0^(1−a) + (a − 1)·k·γ_tot with
+// k = h0 (1 + 7q)/(8 g_s). The idle systems harden through the slipping systems' h only
+// (dg_idle = q·8 h |dγ1| against (1 + 7q) h |dγ1|), so under both laws they sit at
+// g0 + 8q/(1 + 7q)·(g − g0), above the active ones when q > 1. 0.5%: the explicit sub-increments
+// and the elastic rotation of the axis.
+TEST(CrystalCompression, HardeningLawsFollowTheirClosedForms) {
+  for (const HardeningLaw law : {HardeningLaw::sech2, HardeningLaw::power}) {
+    auto c = CrystalViscoplasticity::ofhc_copper();
+    c.hardening_law = law;
+    const TaylorAggregate agg{c, {rotation_loading_along(Vec3(1, 0, 0))}};
+    TaylorAggregate::State last;
+    compress_aggregate(
+        agg, {-0.01, -0.3, 1e-4},
+        [&](long long, double, double, const TaylorAggregate::State& s, const std::vector<Mat3>&, const Mat3&) { last = s; },
+        0);
+    const auto& grain = last.front();
+    const double q = c.latent_ratio, g0 = c.initial_resistance, gs = c.saturation_resistance;
+    const double k = c.hardening * (1.0 + 7.0 * q) / (8.0 * gs), gamma = grain.accumulated_slip;
+    const double a = c.hardening_exponent;
+    const double active =
+        law == HardeningLaw::sech2
+            ? g0 + (1.0 + 7.0 * q) / 8.0 * (gs - g0) * std::tanh(c.hardening * gamma / (gs - g0))
+            : gs * (1.0 - std::pow(std::pow(1.0 - g0 / gs, 1.0 - a) + (a - 1.0) * k * gamma, 1.0 / (1.0 - a)));
+    int n_active = 0;
+    for (std::size_t i = 0; i < grain.resistance.size(); ++i) {
+      if (std::abs(grain.slip[i]) > 0.1 * gamma / 8.0) {
+        ++n_active;
+        EXPECT_NEAR(grain.resistance[i], active, 5e-3 * active) << "law " << int(law) << " system " << i;
+      } else {
+        const double idle = g0 + 8.0 * q / (1.0 + 7.0 * q) * (active - g0);
+        EXPECT_NEAR(grain.resistance[i], idle, 5e-3 * idle) << "law " << int(law) << " idle system " << i;
+      }
+    }
+    EXPECT_EQ(n_active, 8);
+    EXPECT_GT(gamma, 0.5);  // well into the hardening, where the two laws differ by > 10%
+    if (law == HardeningLaw::power) {
+      EXPECT_LT(active, gs);
+    }
+  }
+}

@@ -23,6 +23,7 @@ void CrystalViscoplasticity::validate(const std::string& where) const {
   require(saturation_resistance > initial_resistance, "g_s", saturation_resistance, "> g0");
   require(hardening >= 0.0, "h0", hardening, ">= 0 Pa");
   require(latent_ratio >= 0.0, "q", latent_ratio, ">= 0");
+  require(hardening_exponent > 0.0, "hardening_exponent", hardening_exponent, "a > 0");
   require(c44 > 0.0 && c11 > std::abs(c12) && c11 + 2.0 * c12 > 0.0, "c11/c12/c44", c11,
           "a positive-definite cubic stiffness (c44 > 0, c11 > |c12|, c11 + 2c12 > 0)");
   require(substep_factor > 0.0 && substep_factor < 2.0, "substep_factor", substep_factor, "0 < κ < 2");
@@ -73,13 +74,23 @@ Mat3 CrystalViscoplasticity::update(State& s, const Mat3& f_old, const Mat3& f_n
       for (double r : rate) sum += std::abs(r);
       return sum;
     }();
-    const double sech = 1.0 / std::cosh(hardening * s.accumulated_slip / (saturation_resistance - initial_resistance));
-    const double h_self = hardening * sech * sech;
-    Mat3 lp = Mat3::Zero();  // eq. 20
-    for (std::size_t k = 0; k < n; ++k) {
-      hardening_rate[k] = h_self * (latent_ratio * total_rate + (1.0 - latent_ratio) * std::abs(rate[k]));
-      lp += rate[k] * systems[k].direction * systems[k].normal.transpose();
+    if (hardening_law == HardeningLaw::sech2) {
+      const double sech = 1.0 / std::cosh(hardening * s.accumulated_slip / (saturation_resistance - initial_resistance));
+      const double h_self = hardening * sech * sech;
+      for (std::size_t k = 0; k < n; ++k)
+        hardening_rate[k] = h_self * (latent_ratio * total_rate + (1.0 - latent_ratio) * std::abs(rate[k]));
+    } else {  // Kalidindi et al. 1992: h^β from each system's own resistance
+      double weighted = 0.0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const double x = 1.0 - s.resistance[k] / saturation_resistance;
+        hardening_rate[k] = hardening * std::copysign(std::pow(std::abs(x), hardening_exponent), x) * std::abs(rate[k]);
+        weighted += hardening_rate[k];
+      }
+      for (std::size_t k = 0; k < n; ++k)
+        hardening_rate[k] = latent_ratio * weighted + (1.0 - latent_ratio) * hardening_rate[k];
     }
+    Mat3 lp = Mat3::Zero();  // eq. 20
+    for (std::size_t k = 0; k < n; ++k) lp += rate[k] * systems[k].direction * systems[k].normal.transpose();
     Mat3 fp = (Mat3::Identity() - h * lp).inverse() * s.fp;  // Algorithm 1 step 5
     s.fp = fp / std::cbrt(fp.determinant());                  // step 6
     for (std::size_t k = 0; k < n; ++k) {                      // step 7

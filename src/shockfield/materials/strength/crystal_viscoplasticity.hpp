@@ -8,6 +8,8 @@
 //   τ^α = (Ce·S) : (m0^α ⊗ n0^α), Ce = FeᵀFe (eq. 35)
 //   γ̇^α = γ̇0 |τ^α/g^α|^(1/m) sgn τ^α (eq. 37)
 //   ġ^α = Σ_β h(γ_tot) q^αβ |γ̇^β|, h = h0 sech²(h0 γ_tot/(g_s − g0)), q^αα = 1, q^αβ = q (eqs. 38-41)
+//   or, with HardeningLaw::power, Kalidindi et al.'s (1992, eq. 25) ġ^α = Σ_β q^αβ h^β |γ̇^β|,
+//   h^β = h0 |1 − g^β/g_s|^a sgn(1 − g^β/g_s): every g^β saturates at g_s
 //   L̄p = Σ γ̇^α m0^α ⊗ n0^α (eq. 20)
 //   σ = Fe·S·Feᵀ / det Fe (eq. 34 divided by J)
 // Algorithm 1, applied over sub-increments: the power law with m = 0.012 is far too stiff for one
@@ -19,7 +21,8 @@
 //   7    γ^α += γ̇^α h, g^α += ġ^α h
 // then 8-11: Fe = F Fp⁻¹, σ, Re from the polar decomposition Fe = Re Ue, lattice orientation g·Re.
 // Table 1 of the seed lists "c14"; it is c44 (cubic crystals have no c14), and its "a = 2.25" is the
-// exponent of Kalidindi's power-law hardening, not used by the sech² law of eq. 40.
+// exponent of Kalidindi's power-law hardening, used only by HardeningLaw::power (the seed's eq. 40
+// is the sech² law, whose latent systems saturate at g0 + q·(g_s − g0) instead of g_s).
 #include <array>
 #include <string>
 #include <vector>
@@ -29,6 +32,11 @@
 
 namespace shockfield::materials {
 
+enum class HardeningLaw {
+  sech2,  ///< seed 004 eq. 40, driven by the accumulated slip γ_tot
+  power,  ///< Kalidindi, Bronkhorst & Anand 1992, driven by each system's own g^β
+};
+
 struct CrystalViscoplasticity {
   double reference_rate = 1e-3;  ///< γ̇0 [1/s]
   double rate_sensitivity = 0.012;  ///< m [-]
@@ -36,6 +44,8 @@ struct CrystalViscoplasticity {
   double saturation_resistance = 148e6;  ///< g_s [Pa]
   double hardening = 180e6;  ///< h0 [Pa]
   double latent_ratio = 1.4;  ///< q [-]
+  HardeningLaw hardening_law = HardeningLaw::sech2;
+  double hardening_exponent = 2.25;  ///< a of the power law [-]
   double c11 = 186e9, c12 = 93e9, c44 = 46.5e9;  ///< cubic elastic constants [Pa]
   double substep_factor = 0.5;  ///< κ of the sub-increment limit
   std::vector<SlipSystem> systems = fcc_slip_systems();
