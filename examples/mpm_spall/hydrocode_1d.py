@@ -6,7 +6,8 @@ The flyer-plate set-up of tests/unit/mpm/test_spall.cpp (flyer d = 4 mm at v = 2
 Neumann-Richtmyer scheme (Wilkins, "Computer Simulation of Dynamic Phenomena", 1999, ch. 2): node
 velocities, cell densities and energies, the same Mie-Grüneisen EOS (seed 000 eqs. 5-6, tension
 branch included), the same bulk artificial viscosity q = ρℓ(C_Q·ℓ·(∂u/∂x)² − C_L·c·∂u/∂x) in
-compression only, the same trapezoidal energy update, and the same instantaneous spall criterion
+compression only (c the bulk speed, or the longitudinal one with --shear as in the MPM's
+PointState::sound_speed), the same trapezoidal energy update, and the same instantaneous spall criterion
 (materials/spall.hpp: P + q < −σ_sp ⇒ P ≥ 0 thereafter). The free-surface velocity is the last
 node's, so no particle sampling is involved; the pull-back is read as in the unit test.
 
@@ -25,7 +26,8 @@ K0, B = RHO0 * C0 * C0, RHO0 * GAMMA0
 
 
 def eos(rho, e):
-    """P(ρ, e) and the bulk sound speed (materials/eos/mie_gruneisen.hpp)."""
+    """P(ρ, e), a = P − B·e (P is linear in e at fixed ρ) and the bulk sound speed
+    (materials/eos/mie_gruneisen.hpp)."""
     eta = 1.0 - RHO0 / rho
     d = np.where(eta > 0, 1.0 - LAM * eta, 1.0)
     ph = np.where(eta > 0, K0 * eta / d**2, K0 * eta)
@@ -37,8 +39,8 @@ def eos(rho, e):
     return p, ph - B * eh, np.sqrt(np.maximum(c2, 1e-6 * C0 * C0))
 
 
-def run(cell, linear, quadratic, spall, speed=200.0, flyer=4e-3, courant=0.3, shear=0.0, q_in_tension=True, single_plane=False,
-        end=None):
+def run(cell, linear, quadratic, spall, speed=200.0, flyer=4e-3, courant=0.3, shear=0.0, q_in_tension=True,
+        single_plane=False, end=None):
     n_flyer = int(round(flyer / cell))
     n = 4 * n_flyer                                    # flyer + 3d target, one Lagrangian mesh
     x = np.arange(n + 1) * cell
