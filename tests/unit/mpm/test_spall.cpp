@@ -50,6 +50,26 @@ double top_row_velocity(const mpm::Particles& p) {
   return sum / n;
 }
 
+// Plateau: the median of u_fs over the 0.5 µs after it first reaches 95 % of v (it rings by a few
+// %). Pull-back: from the plateau to the first minimum after u_fs falls 5 % of v below it.
+void read_pullback(FreeSurface& fs) {
+  std::size_t k = 0;
+  while (fs.u[k] < 0.95 * kSpeed) ++k;
+  std::vector<double> plateau;
+  for (std::size_t i = k; i < fs.u.size() && fs.t[i] < fs.t[k] + 0.5e-6; ++i) plateau.push_back(fs.u[i]);
+  std::nth_element(plateau.begin(), plateau.begin() + static_cast<long>(plateau.size() / 2), plateau.end());
+  fs.peak = plateau[plateau.size() / 2];
+  std::size_t m = k;
+  while (m + 1 < fs.u.size() && fs.u[m] > fs.peak - 0.05 * kSpeed) ++m;
+  while (m + 1 < fs.u.size() && fs.u[m + 1] <= fs.u[m]) ++m;
+  fs.pullback = fs.peak - fs.u[m];
+}
+
+// Flyer d = kFlyerCells cells, target 3d, free surface at y = 3d; end after the spall signal.
+double end_time(const materials::SolidMaterial& mat) {
+  return 7.0 * kFlyerCells * kCell / mat.eos.c0;  // arrival 3d/Us, release 5d/c, spall signal ~7d/c
+}
+
 FreeSurface flyer_plate(const materials::SolidMaterial& mat) {
   const double d = kFlyerCells * kCell, width = 2 * kCell;
   mpm::Particles p;
@@ -62,56 +82,94 @@ FreeSurface flyer_plate(const materials::SolidMaterial& mat) {
   mpm::Simulation sim(grid, {mat}, std::move(p), opt);
   const double e0 = mpm::totals(sim.particles()).total();
   FreeSurface fs;
-  const double end = 7.0 * d / mat.eos.c0;  // arrival at 3d/Us, release at 5d/c, spall signal ~7d/c
-  while (sim.time() < end) {
+  while (sim.time() < end_time(mat)) {
     sim.step();
     fs.t.push_back(sim.time());
     fs.u.push_back(top_row_velocity(sim.particles()));
   }
-  // Plateau: the median of u_fs over the 0.5 µs after it first reaches 95 % of v (it rings by a few
-  // %). Pull-back: from the plateau to the first minimum after u_fs falls 5 % of v below it.
-  std::size_t k = 0;
-  while (fs.u[k] < 0.95 * kSpeed) ++k;
-  std::vector<double> plateau;
-  for (std::size_t i = k; i < fs.u.size() && fs.t[i] < fs.t[k] + 0.5e-6; ++i)
-    plateau.push_back(fs.u[i]);
-  std::nth_element(plateau.begin(), plateau.begin() + static_cast<long>(plateau.size() / 2),
-                   plateau.end());
-  fs.peak = plateau[plateau.size() / 2];
-  std::size_t m = k;
-  while (m + 1 < fs.u.size() && fs.u[m] > fs.peak - 0.05 * kSpeed) ++m;
-  while (m + 1 < fs.u.size() && fs.u[m + 1] <= fs.u[m]) ++m;
-  fs.pullback = fs.peak - fs.u[m];
+  read_pullback(fs);
   for (const auto& s : sim.particles().state) fs.max_damage = std::max(fs.max_damage, s.damage);
   fs.energy_drift = (mpm::totals(sim.particles()).total() - e0) / e0;
   return fs;
 }
 
+// The same impact in a 1D Lagrangian hydrocode, the classical staggered scheme of von Neumann &
+// Richtmyer (Wilkins, "Computer Simulation of Dynamic Phenomena", 1999, ch. 2): node velocities,
+// one material point per cell advanced by the same SolidMaterial::update as the MPM points (EOS,
+// artificial viscosity with ℓ = the cell size, energy, spall criterion), the same cell size and
+// Courant number. The free-surface velocity is the last node's. It separates what the MPM adds to
+// the pull-back (transfers, GIMP, particle sampling of the free face) from what any hydrocode with
+// this material update reads at this resolution.
+FreeSurface lagrangian_flyer_plate(const materials::SolidMaterial& mat) {
+  const int n = 4 * kFlyerCells;  // flyer + target, one mesh (the MPM bodies share one grid too)
+  std::vector<double> y(n + 1), u(n + 1, 0.0), node_mass(n + 1, 0.0);
+  std::vector<materials::PointState> cell(n, mat.initial_state());
+  for (int i = 0; i <= n; ++i) {
+    y[i] = (i - kFlyerCells) * kCell;
+    u[i] = i < kFlyerCells ? kSpeed : (i == kFlyerCells ? 0.5 * kSpeed : 0.0);
+    node_mass[i] = mat.eos.rho0 * kCell * ((i > 0) + (i < n)) / 2.0;
+  }
+  const double courant = mpm::SimulationOptions{}.courant;
+  FreeSurface fs;
+  double time = 0.0;
+  while (time < end_time(mat)) {
+    double fastest = 0.0;
+    for (int i = 0; i < n; ++i) fastest = std::max(fastest, cell[i].sound_speed + std::abs(u[i]));
+    const double dt = courant * kCell / fastest;
+    for (int i = 0; i <= n; ++i) {  // node force σ_yy(cell i) − σ_yy(cell i−1); σ = 0 outside
+      const double above = i < n ? cell[i].stress()(1, 1) : 0.0;
+      const double below = i > 0 ? cell[i - 1].stress()(1, 1) : 0.0;
+      u[i] += dt * (above - below) / node_mass[i];
+    }
+    for (int i = 0; i < n; ++i) {  // L over the cell's length at the start of the step: F stays exact
+      Mat3 l = Mat3::Zero();
+      l(1, 1) = (u[i + 1] - u[i]) / (y[i + 1] - y[i]);
+      mat.update(cell[i], mat.eos.rho0, l, dt, kCell);
+    }
+    for (int i = 0; i <= n; ++i) y[i] += dt * u[i];
+    time += dt;
+    fs.t.push_back(time);
+    fs.u.push_back(u[n]);
+  }
+  read_pullback(fs);
+  for (const auto& s : cell) fs.max_damage = std::max(fs.max_damage, s.damage);
+  return fs;
+}
+
 }  // namespace
 
-// σ_sp = 0.5 and 1 GPa, both below the ≈ 1.5 GPa tension the 200 m/s impact can reach. The
-// acoustic estimate reads low, measured 0.28 and 0.66 GPa here (0.69-0.72·σ_sp at 1 GPa with 40
-// or 80 cells per flyer at 170-200 m/s, so not a resolution effect; the same with 4 points per
-// cell): about σ_est ≈ 0.77·σ_sp − 0.10 GPa. The criterion fires at the right wave tension (the
-// intact neighbours of the first failed points are at −0.47 and −0.97 GPa), and confining the
-// failure to one cell does not change it; the relief reaches the free face ~100 ns early, which
-// the linear artificial viscosity, diffusing it ahead (C_L = 0.6 reads lower still), would
-// explain (examples/mpm_spall/README.md). Hence the tolerances: σ_est within [0.5, 1.1]·σ_sp,
-// and the estimate rising with σ_sp (its increase from 0.5 to 1 GPa within [0.6, 1.1]·0.5 GPa),
-// which a model failing at a fixed wrong stress, or not at all, would break.
+// σ_sp = 0.5 and 1 GPa, both below the ≈ 1.5 GPa tension the 200 m/s impact can reach. In the
+// continuum the acoustic estimate is exact here (the tension branch of eq. 6 is linear, so the
+// Riemann invariant σ + ρ0c0·u carries the spall-plane state to the free face unchanged), but at
+// 0.1 mm cells every hydrocode with this material update reads it low: the pull-back is a notch of
+// a few tens of ns that the artificial viscosity (acting on the spall signal, a compression wave)
+// and the failure of several cells at once fill in on the way to the face. The 1D Lagrangian
+// reference below reads 0.61 and 0.64·σ_sp; the independent examples/mpm_spall/hydrocode_1d.py
+// (its own EOS; --shear 25.94e9 for the c_L in q) 0.60 and 0.60·σ_sp at 0.1 mm, and 0.98 and
+// 0.97·σ_sp at 2.5 µm once these two are removed (examples/mpm_spall/README.md, "Against the
+// spall relation"). So the test pins the understood
+// value: the reference within [0.55, 0.70]·σ_sp, the MPM within 15 % of the reference and within
+// [0.53, 0.73]·σ_sp (measured 0.56 and 0.66), and the estimate rising with σ_sp.
 TEST(Spall, FreeSurfacePullbackMeasuresTheSpallStrength) {
   double estimate[2] = {0.0, 0.0};
   const double strengths[2] = {0.5e9, 1.0e9};
   for (int i = 0; i < 2; ++i) {
     const auto al = hydrodynamic_al(strengths[i]);
-    const FreeSurface fs = flyer_plate(al);
+    const FreeSurface fs = flyer_plate(al), ref = lagrangian_flyer_plate(al);
     EXPECT_NEAR(fs.peak, kSpeed, 0.03 * kSpeed);
+    EXPECT_NEAR(ref.peak, kSpeed, 0.03 * kSpeed);
     estimate[i] = 0.5 * al.eos.rho0 * al.eos.c0 * fs.pullback;
-    EXPECT_GT(estimate[i], 0.5 * strengths[i]);
-    EXPECT_LT(estimate[i], 1.1 * strengths[i]);
+    const double reference = 0.5 * al.eos.rho0 * al.eos.c0 * ref.pullback;
+    EXPECT_GT(reference, 0.55 * strengths[i]);
+    EXPECT_LT(reference, 0.70 * strengths[i]);
+    EXPECT_NEAR(estimate[i] / reference, 1.0, 0.15);
+    EXPECT_GT(estimate[i], 0.53 * strengths[i]);
+    EXPECT_LT(estimate[i], 0.73 * strengths[i]);
     EXPECT_EQ(fs.max_damage, 1.0);
+    EXPECT_EQ(ref.max_damage, 1.0);
     EXPECT_LT(std::abs(fs.energy_drift), 0.01);
     RecordProperty("sigma_est_" + std::to_string(i), std::to_string(estimate[i]));
+    RecordProperty("sigma_ref_" + std::to_string(i), std::to_string(reference));
     RecordProperty("energy_drift_" + std::to_string(i), std::to_string(fs.energy_drift));
   }
   const double rise = estimate[1] - estimate[0], expected = strengths[1] - strengths[0];
