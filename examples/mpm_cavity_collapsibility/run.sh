@@ -1,7 +1,8 @@
 #!/bin/sh
 # Collapsibility study (seed 000 §4.2.1, Fig 53): the weak-shock single-cavity case (case.toml)
-# for three cavity radii at σ_Y0 = 120 MPa and three initial yield stresses at r = 5 µm, then
-# collapsibility.png and collapsibility.csv (Φ at the end and averaged over 12–16 ns).
+# for six cavity radii 3.5–8 µm at σ_Y0 = 120 MPa and four initial yield stresses at r = 6.2 µm,
+# then collapsibility.png and collapsibility.csv (Φ at 10 ns, at the end (20 ns) and averaged
+# over 18–20 ns).
 #   examples/mpm_cavity_collapsibility/run.sh [RUNS_DIR]     (from the repository root)
 # Each run is about 10 s on one core. Generated case files go next to their run folders.
 set -eu
@@ -24,8 +25,8 @@ run_one() {  # radius_um yield_MPa
     "$bin" run "$runs/$name.toml" -o "$runs/$name" -j1 | tail -1
 }
 
-for r in 2 3.5 5; do run_one "$r" 120; done     # radius series at σ_Y0 = 120 MPa
-for y in 40 360; do run_one 5 "$y"; done        # yield series at r = 5 µm (120 MPa above)
+for r in 3.5 4.4 5.3 6.2 7.1 8; do run_one "$r" 120; done  # radius series at σ_Y0 = 120 MPa
+for y in 40 240 360; do run_one 6.2 "$y"; done             # yield series at r = 6.2 µm (and 120 MPa)
 
 /usr/bin/python3 python/shockfield_plot/mpm_study.py collapsibility "$runs"/r*um_Y*MPa \
-    --late 12e-9 --out "$here/collapsibility.png" --csv "$here/collapsibility.csv"
+    --late 18e-9 --at 10e-9 --out "$here/collapsibility.png" --csv "$here/collapsibility.csv"

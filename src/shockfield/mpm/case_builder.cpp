@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "shockfield/core/error.hpp"
 
@@ -19,6 +20,18 @@ void check_inside(const Config& t, const GridSpec& g, const Vec3& lo, const Vec3
              fmt::format("{} spans [{}, {}] m along {}, outside the grid [{}, {}] m (or empty)", what, lo[a], hi[a],
                          kAxes[a], g.origin[a], g.origin[a] + g.length(a)));
   }
+}
+
+// The lateral axes along which the body fills the periodic grid from side to side.
+PeriodicAxes filled_periodic_axes(const GridSpec& g, const Body& body, int axis) {
+  PeriodicAxes out{false, false, false};
+  for (int a = 0; a < g.dim; ++a) {
+    const double tol = 1e-9 * g.cell_size[a];
+    out[static_cast<std::size_t>(a)] = a != axis && g.periodic[static_cast<std::size_t>(a)] &&
+                                       std::abs(body.lo[a] - g.origin[a]) <= tol &&
+                                       std::abs(body.hi[a] - g.origin[a] - g.length(a)) <= tol;
+  }
+  return out;
 }
 
 Void mirrored(const Void& v, int axis, double plane) {
@@ -50,7 +63,8 @@ BuiltSample build_sample(const MpmCase& c, const Config& root) {
                                c.loading == LoadingKind::Wall ? "impact" : "(tensile)", c.grid.origin[axis]));
     std::vector<Void> voids;
     try {
-      if (c.bodies[k].pores) voids = place_voids(dim, body, *c.bodies[k].pores);
+      if (c.bodies[k].pores)
+        voids = place_voids(dim, body, *c.bodies[k].pores, filled_periodic_axes(c.grid, body, axis));
     } catch (const InputError& e) {
       t.fail("porosity", e.what());
     }

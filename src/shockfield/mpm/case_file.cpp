@@ -100,6 +100,7 @@ BodySpec read_body(const Config& b, const MpmCase& c, std::size_t index) {
     v.mean_radius = b.get_double("void_radius", Range::positive());
     v.radius_spread = b.get_double_or("void_radius_spread", 0.0, {0.0, 1.0, false, true});
     v.seed = static_cast<std::uint64_t>(b.get_int_or("seed", 1, Range::non_negative()));
+    v.cross_periodic_sides = b.get_bool_or("periodic_voids", true);
     s.pores = v;
   }
   if (b.has("cavity_radius") || b.has("cavity_depth")) {

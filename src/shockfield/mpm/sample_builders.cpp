@@ -26,11 +26,42 @@ double ball_volume(int dim, double r) {
   return dim == 2 ? std::numbers::pi * r * r : 4.0 / 3.0 * std::numbers::pi * r * r * r;
 }
 
-// Random sequential addition with a bucket grid of the largest diameter for overlap tests.
+// Calls fn(shift) for every lattice translation by −1, 0 or +1 period along each periodic axis
+// (period[a] > 0), the zero shift first.
+template <class Fn>
+void for_each_shift(const Vec3& period, Fn&& fn) {
+  for (int code = 0; code < 27; ++code) {
+    Vec3 shift = Vec3::Zero();
+    bool valid = true;
+    for (int a = 0, c = code; a < 3; ++a, c /= 3) {
+      const int step = c % 3 == 2 ? -1 : c % 3;  // 0, +1, −1
+      if (step != 0 && !(period[a] > 0.0)) valid = false;
+      shift[a] = step * period[a];
+    }
+    if (valid) fn(shift);
+  }
+}
+
+// Random sequential addition with a bucket grid of the largest diameter for overlap tests. Along
+// periodic axes a candidate is tested in each of its images, so stored centres stay in the body
+// and the minimum-image distance decides (a void is smaller than the period, so ±1 suffices).
 class VoidPacker {
  public:
-  VoidPacker(int dim, double bucket) : dim_(dim), bucket_(bucket) {}
+  VoidPacker(int dim, double bucket, const Vec3& period) : dim_(dim), bucket_(bucket), period_(period) {}
   bool fits(const Void& v) const {
+    bool ok = true;
+    for_each_shift(period_, [&](const Vec3& shift) { ok = ok && fits_here(Void{v.centre + shift, v.radius}); });
+    return ok;
+  }
+  void add(const Void& v) {
+    const auto c = key(v.centre);
+    buckets_[pack(c[0], c[1], c[2])].push_back(voids_.size());
+    voids_.push_back(v);
+  }
+  std::vector<Void> take() { return std::move(voids_); }
+
+ private:
+  bool fits_here(const Void& v) const {
     const auto c = key(v.centre);
     for (int dz = dim_ == 3 ? -1 : 0; dz <= (dim_ == 3 ? 1 : 0); ++dz)
       for (int dy = -1; dy <= 1; ++dy)
@@ -42,14 +73,6 @@ class VoidPacker {
         }
     return true;
   }
-  void add(const Void& v) {
-    const auto c = key(v.centre);
-    buckets_[pack(c[0], c[1], c[2])].push_back(voids_.size());
-    voids_.push_back(v);
-  }
-  std::vector<Void> take() { return std::move(voids_); }
-
- private:
   std::array<long, 3> key(const Vec3& x) const {
     return {static_cast<long>(std::floor(x[0] / bucket_)), static_cast<long>(std::floor(x[1] / bucket_)),
             static_cast<long>(std::floor(x[2] / bucket_))};
@@ -57,9 +80,25 @@ class VoidPacker {
   static long pack(long i, long j, long k) { return (i * 73856093L) ^ (j * 19349663L) ^ (k * 83492791L); }
   int dim_;
   double bucket_;
+  Vec3 period_;
   std::vector<Void> voids_;
   std::unordered_map<long, std::vector<std::size_t>> buckets_;
 };
+
+// The wrapped images of `voids` that reach into the body across a periodic side.
+std::vector<Void> periodic_images(int dim, const Body& body, const Vec3& period, const std::vector<Void>& voids) {
+  std::vector<Void> images;
+  for (const Void& v : voids)
+    for_each_shift(period, [&](const Vec3& shift) {
+      if (shift.isZero()) return;
+      const Void image{v.centre + shift, v.radius};
+      bool reaches = true;
+      for (int a = 0; a < dim; ++a)
+        reaches = reaches && image.centre[a] - image.radius < body.hi[a] && image.centre[a] + image.radius > body.lo[a];
+      if (reaches) images.push_back(image);
+    });
+  return images;
+}
 
 }  // namespace
 
@@ -89,7 +128,7 @@ BodyStats add_body(Particles& p, int dim, const Body& body, const materials::Sol
   return stats;
 }
 
-std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec) {
+std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec, const PeriodicAxes& periodic) {
   check_body(dim, body);
   // Random sequential addition jams at 0.547 (discs) and 0.384 (spheres) (Feder 1980; Torquato,
   // Random Heterogeneous Materials, 2002, §3.1): beyond it no placement succeeds.
@@ -103,9 +142,11 @@ std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec) {
     throw InputError(fmt::format("mpm porous sample: radius spread = {} (expected 0 <= spread < 1)", spec.radius_spread));
   const double r_max = spec.mean_radius * (1.0 + spec.radius_spread);
   double body_volume = 1.0;
+  Vec3 period = Vec3::Zero();  // > 0 along the axes where voids cross the sides
   for (int a = 0; a < dim; ++a) {
     const double extent = body.hi[a] - body.lo[a];
     body_volume *= extent;
+    if (spec.cross_periodic_sides && periodic[static_cast<std::size_t>(a)]) period[a] = extent;
     if (2.0 * r_max >= extent)
       throw InputError(fmt::format("mpm porous sample: voids of radius up to {} m do not fit the body, {} m along axis {}",
                                    r_max, extent, a));
@@ -127,7 +168,7 @@ std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec) {
     throw InputError(fmt::format("mpm porous sample: porosity {} of a {} m^{} body is less than one void of radius {} m",
                                  spec.porosity, body_volume, dim, spec.mean_radius));
   std::sort(radii.begin(), radii.end(), std::greater<>());  // large first packs better
-  VoidPacker packer(dim, 2.0 * r_max);
+  VoidPacker packer(dim, 2.0 * r_max, period);
   const std::size_t max_attempts = 2000 * radii.size() + 100000;
   std::size_t attempts = 0, placed = 0;
   for (double r : radii) {
@@ -135,7 +176,9 @@ std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec) {
     while (!ok && attempts < max_attempts) {
       ++attempts;
       Void v{Vec3::Zero(), r};
-      for (int a = 0; a < dim; ++a) v.centre[a] = body.lo[a] + r + unit(rng) * (body.hi[a] - body.lo[a] - 2.0 * r);
+      for (int a = 0; a < dim; ++a)  // over the whole period, or keeping r from the faces
+        v.centre[a] = period[a] > 0.0 ? body.lo[a] + unit(rng) * period[a]
+                                      : body.lo[a] + r + unit(rng) * (body.hi[a] - body.lo[a] - 2.0 * r);
       ok = packer.fits(v);
       if (ok) packer.add(v);
     }
@@ -145,7 +188,10 @@ std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec) {
                                    spec.mean_radius, spec.porosity, attempts));
     ++placed;
   }
-  return packer.take();
+  std::vector<Void> voids = packer.take();
+  const std::vector<Void> images = periodic_images(dim, body, period, voids);
+  voids.insert(voids.end(), images.begin(), images.end());
+  return voids;
 }
 
 Void cavity_at(int dim, const Body& body, double depth, double radius) {

@@ -4,6 +4,7 @@
 // Δ = 1 − ρ/ρ0, a single cavity at a given depth, and the two loadings: symmetric impact of two
 // bodies at ±v and impact on a rigid wall. The shock axis is the last one (y in 2D, z in 3D, as in
 // the seed); the lateral axes are periodic.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -34,7 +35,12 @@ struct VoidSpec {
   double mean_radius = 0.0;    ///< r [m]
   double radius_spread = 0.0;  ///< radii uniform in r(1 ± spread), spread in [0, 1)
   std::uint64_t seed = 1;
+  bool cross_periodic_sides = true;  ///< voids may cross the sides place_voids is told are periodic
 };
+
+/// Axes along which a body fills a periodic grid: the body's sides there are periodic images of
+/// each other, not free faces.
+using PeriodicAxes = std::array<bool, 3>;
 
 /// What add_body did; porosity() is the achieved Δ = 1 − added/lattice_points.
 struct BodyStats {
@@ -47,10 +53,14 @@ struct BodyStats {
 BodyStats add_body(Particles& p, int dim, const Body& body, const materials::SolidMaterial& mat,
                    const std::vector<Void>& voids = {});
 
-/// Random sequential placement of non-overlapping voids, each wholly inside the body, until their
-/// volume reaches porosity × body volume. InputError with the reason when that is impossible
+/// Random sequential placement of non-overlapping voids until their volume reaches porosity × body
+/// volume. Along the axes of `periodic` (when spec.cross_periodic_sides) a void centre is uniform
+/// over the whole period and a void may cross the side: the list then also holds its wrapped
+/// images (after the placed voids), and overlaps are checked against every image, so the void
+/// fraction is uniform up to the sides and the porosity counts each void once. Along the other
+/// axes each void lies wholly inside the body. InputError with the reason when that is impossible
 /// (porosity beyond the random-packing limit, voids larger than the body, placement jammed).
-std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec);
+std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec, const PeriodicAxes& periodic = {});
 
 /// One void of `radius` centred laterally in `body`, at `depth` above its low face along the shock
 /// axis (the seed's z of §4.2.2).
