@@ -97,7 +97,7 @@ void Simulation::stage(std::vector<double>& f, const RowOutput& output) {
     BgkRow row(model_, inversion_, lattice_, b_, settings_.tau);
     const int chunks = BgkRow::chunks(lattice_.nx);
 #pragma omp for schedule(static)
-    for (int t = 0; t < lattice_.ny * chunks; ++t)
+    for (int t = 0; t < BgkRow::blocks(lattice_.ny) * chunks; ++t)
       row.rhs(f.data(), t / chunks, t % chunks, spectral_ ? convection_.data() : nullptr, output);
   }
 }
