@@ -29,6 +29,11 @@ inline double runge_kutta_stage(double a, double base, double f, double dt, doub
   return a * base + (1.0 - a) * (f + dt * L);
 }
 
+/// out[i] = runge_kutta_stage(a, base[i], f[i], dt, L[i]) for i < n (out may be f), compiled
+/// like the fused stages of BgkRow (same SIMD clone), so the stored-L path gives the same bits.
+void runge_kutta_row(double a, const double* base, const double* f, double dt, const double* L,
+                     int n, double* out);
+
 class BgkRow {
  public:
   BgkRow(const VelocityModel& model, const MomentInversion& inversion, const Lattice& lattice,
@@ -47,6 +52,9 @@ class BgkRow {
            const RowOutput& output);
 
  private:
+  /// Prefetches into the cache what velocity k of row j will read first.
+  void prefetch_next_row(const double* f, int k, int j, int i0, int n,
+                         const RowOutput& output) const;
   /// ρ, u, T and f^eq of the n cells of the chunk starting at storage index c0.
   void equilibrium_chunk(const double* f, std::size_t c0, int n);
   /// L(f) of the n cells of row j from i0 on; face_y_ holds the y face values of row j − 1 (see
