@@ -97,7 +97,7 @@ void Simulation::stage(std::vector<double>& f, const RowOutput& output) {
     BgkRow row(model_, inversion_, lattice_, b_, settings_.tau);
     const int chunks = BgkRow::chunks(lattice_.nx);
 #pragma omp for schedule(static)
-    for (int t = 0; t < lattice_.ny * chunks; ++t)
+    for (int t = 0; t < BgkRow::blocks(lattice_.ny) * chunks; ++t)
       row.rhs(f.data(), t / chunks, t % chunks, spectral_ ? convection_.data() : nullptr, output);
   }
 }
@@ -122,10 +122,8 @@ void Simulation::step() {
       for (int j = 0; j < lattice_.ny; ++j)
         for (int k = 0; k < Q; ++k) {
           const std::size_t row = k * N + lattice_.at(0, j);
-          for (int i = 0; i < lattice_.nx; ++i) {
-            const std::size_t c = row + i;
-            out[c] = runge_kutta_stage(a, f_[c], in[c], dt, work_[c]);
-          }
+          runge_kutta_row(a, f_.data() + row, in.data() + row, dt, work_.data() + row, lattice_.nx,
+                          out.data() + row);
         }
     };
     combine(0.0, f_, f1_);

@@ -8,11 +8,12 @@
 #include <numbers>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/simd_clones.hpp"
 
 namespace shockfield::dbm {
 
 using Moments = Eigen::Matrix<double, kMoments, 1>;
-using Matrix = Eigen::Matrix<double, kMoments, kMoments>;
+using Matrix = Matrix16;
 
 namespace {
 
@@ -161,6 +162,42 @@ MomentInversion::MomentInversion(const VelocityModel& model) {
   if (!(error < 1e-12))
     throw RunError(
         fmt::format("velocity model {}: factored C^-1 is off by {:.3g}", model.name, error));
+  groups_ = group_weights(R, S, inverse);
+}
+
+std::vector<MomentInversion::GroupWeights> MomentInversion::group_weights(const Matrix& R,
+                                                                          const Matrix& S,
+                                                                          const Matrix& inverse) {
+  if (R.isIdentity()) return {};
+  std::vector<GroupWeights> groups(kMoments / 4);
+  Matrix S_form = Matrix::Zero(), R_form = Matrix::Zero();
+  for (int g = 0; g < kMoments / 4; ++g) {
+    const int a = 4 * g, bx = a + 1, by = a + 2, d = a + 3;
+    GroupWeights& w = groups[g];
+    w = {{S(a, 0), S(a, 3), S(a, 4), S(a, 13)},
+         {S(bx, 1), S(bx, 7), S(bx, 9), S(bx, 11)},
+         {S(d, 4), S(d, 13), S(d, 5), S(d, 14)},
+         R(a, a + 1),
+         R(a, a + 2)};
+    S_form(a, 0) = w.a[0], S_form(a, 3) = w.a[1];
+    S_form(a, 4) = S_form(a, 6) = w.a[2], S_form(a, 13) = S_form(a, 15) = w.a[3];
+    S_form(bx, 1) = S_form(by, 2) = w.b[0], S_form(bx, 7) = S_form(by, 10) = w.b[1];
+    S_form(bx, 9) = S_form(by, 8) = w.b[2], S_form(bx, 11) = S_form(by, 12) = w.b[3];
+    S_form(d, 4) = w.d[0], S_form(d, 6) = -w.d[0], S_form(d, 13) = w.d[1];
+    S_form(d, 15) = -w.d[1], S_form(d, 5) = w.d[2], S_form(d, 14) = w.d[3];
+    // Velocity r of the group: ê rotated by r·90°, (ex, ey) → (−ey, ex).
+    double ex = w.ex, ey = w.ey;
+    for (int r = 0; r < 4; ++r) {
+      R_form(a + r, a) = 1.0, R_form(a + r, bx) = ex, R_form(a + r, by) = ey;
+      R_form(a + r, d) = r % 2 == 0 ? 1.0 : -1.0;
+      const double x = ex;
+      ex = -ey, ey = x;
+    }
+  }
+  const double error =
+      (R_form * S_form - inverse).cwiseAbs().maxCoeff() / inverse.cwiseAbs().maxCoeff();
+  if (!(error < 1e-12)) return {};
+  return groups;
 }
 
 void MomentInversion::apply(const std::vector<Term>& terms, const double* in, int n, double* out) {
@@ -173,9 +210,34 @@ void MomentInversion::apply(const std::vector<Term>& terms, const double* in, in
   }
 }
 
-void MomentInversion::equilibria(const double* rho, const double* ux, const double* uy,
+SHOCKFIELD_SIMD_CLONES void MomentInversion::equilibria(const double* rho, const double* ux, const double* uy,
                                  const double* T, int n, double b, double* out,
                                  double* work) const {
+  if (!groups_.empty()) {
+    GroupWeights w[kMoments / 4];
+    std::copy(groups_.begin(), groups_.end(), w);
+#pragma omp simd
+    for (int i = 0; i < n; ++i) {
+      double m[kMoments];
+      put_equilibrium_moments(rho[i], ux[i], uy[i], T[i], b,
+                              [&](int q, double value) { m[q] = value; });
+      const double trace2 = m[4] + m[6], diff2 = m[4] - m[6];
+      const double trace4 = m[13] + m[15], diff4 = m[13] - m[15];
+#pragma GCC unroll 4
+      for (int g = 0; g < kMoments / 4; ++g) {
+        const GroupWeights& x = w[g];
+        const double a = x.a[0] * m[0] + x.a[1] * m[3] + x.a[2] * trace2 + x.a[3] * trace4;
+        const double bx = x.b[0] * m[1] + x.b[1] * m[7] + x.b[2] * m[9] + x.b[3] * m[11];
+        const double by = x.b[0] * m[2] + x.b[1] * m[10] + x.b[2] * m[8] + x.b[3] * m[12];
+        const double d = x.d[0] * diff2 + x.d[1] * diff4 + x.d[2] * m[5] + x.d[3] * m[14];
+        // ê·b of velocities 0 and 1 of the group (velocities 2, 3 have −ê).
+        const double p = x.ex * bx + x.ey * by, q = x.ex * by - x.ey * bx;
+        double* f = out + static_cast<std::size_t>(4 * g) * n + i;
+        f[0] = (a + d) + p, f[n] = (a - d) + q, f[2 * n] = (a + d) - p, f[3 * n] = (a - d) - q;
+      }
+    }
+    return;
+  }
   double* moments = work;
   double* modes = work + static_cast<std::size_t>(kMoments) * n;
 #pragma omp simd

@@ -16,6 +16,8 @@ namespace shockfield::dbm {
 /// M0 (1) + M1 (2) + M2,0 (1) + M2 (3) + M3 (4) + M3,1 (2) + M4,2 (3).
 inline constexpr int kMoments = 16;
 
+using Matrix16 = Eigen::Matrix<double, kMoments, kMoments>;
+
 /// Hydrodynamic state of one cell.
 struct Macro {
   double rho = 1.0, ux = 0.0, uy = 0.0, T = 1.0;
@@ -62,13 +64,15 @@ inline void put_equilibrium_moments(Real rho, Real ux, Real uy, Real T, double b
 Eigen::Matrix<double, kMoments, 1> equilibrium_moments(double rho, double ux, double uy, double T,
                                                        double b);
 
-/// ρ, u, T from the sums Σf, Σf v_x, Σf v_y and Σf (v² + η²)/2 of one cell (eqs. 20–22).
+/// ρ, u, T from the sums Σf, Σf v_x, Σf v_y and Σf (v² + η²)/2 of one cell (eqs. 20–22); one
+/// division per cell (1/b is loop-invariant in a loop over cells).
 inline Macro macro_from_sums(double rho, double jx, double jy, double e, double b) {
+  const double inv_rho = 1.0 / rho;
   Macro m;
   m.rho = rho;
-  m.ux = jx / rho;
-  m.uy = jy / rho;
-  m.T = (2.0 * e / rho - m.ux * m.ux - m.uy * m.uy) / b;
+  m.ux = jx * inv_rho;
+  m.uy = jy * inv_rho;
+  m.T = (2.0 * e * inv_rho - m.ux * m.ux - m.uy * m.uy) * (1.0 / b);
   return m;
 }
 
@@ -83,6 +87,11 @@ Macro macro_of(const VelocityModel& model, const double* f, std::size_t stride, 
 /// (−1)^r d (ê_r the unit vector of velocity r, R holds these weights) and S maps the moments to
 /// the modes a, b, d of each group; by symmetry each mode depends on a few moments only, so
 /// S·M costs 61 multiply-adds instead of 256. Other models use R = I, S = C⁻¹.
+///
+/// The same symmetry fixes the pattern of S: a_g takes M0, M3, M4 + M6 and M13 + M15; b_g takes
+/// (M1, M7, M9, M11) for x and, with the same weights, (M2, M10, M8, M12) for y; d_g takes
+/// M4 − M6, M13 − M15, M5 and M14. equilibria() applies C⁻¹ in this form, checked against C⁻¹ on
+/// construction, with every intermediate of a cell in registers (4 × 16 weights).
 class MomentInversion {
  public:
   explicit MomentInversion(const VelocityModel& model);
@@ -104,8 +113,17 @@ class MomentInversion {
   /// out_row[i] = Σ weight·in_column[i] over terms sorted by row (arrays of n, row-major).
   static void apply(const std::vector<Term>& terms, const double* in, int n, double* out);
 
+  /// Weights of the modes of one rotation group (see above) and ê of its first velocity.
+  struct GroupWeights {
+    double a[4], b[4], d[4], ex, ey;
+  };
+  /// The GroupWeights of a rotation-group model, or none when R·S in that form is not C⁻¹.
+  static std::vector<GroupWeights> group_weights(const Matrix16& R, const Matrix16& S,
+                                                 const Matrix16& inverse);
+
   std::vector<Term> modes_;    // nonzeros of S (moment → group mode)
   std::vector<Term> rebuild_;  // nonzeros of R (group mode → f_k)
+  std::vector<GroupWeights> groups_;
   double condition_ = 0.0;
 };
 
