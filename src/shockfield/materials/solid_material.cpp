@@ -25,18 +25,6 @@ double SolidMaterial::longitudinal_speed(const MieGruneisen::HugoniotPoint& h, d
   return std::sqrt(eos.sound_speed_squared(h, e) + 4.0 * strength.shear_modulus / (3.0 * h.rho));
 }
 
-namespace {
-
-// a += dt·(W·a − a·W) for a symmetric a and an antisymmetric W (the Jaumann terms of eq. 1):
-// a·W = −(W·a)ᵀ, so the increment is W·a + (W·a)ᵀ, symmetric by construction.
-[[gnu::always_inline]] inline void jaumann_rotate(Mat3& a, const Mat3& w, double dt) {
-  Mat3 wa;
-  wa.noalias() = w * a;
-  a += dt * (wa + wa.transpose());
-}
-
-}  // namespace
-
 PointState SolidMaterial::initial_state() const {
   PointState p;
   p.temperature = thermal.initial_temperature;
@@ -47,32 +35,63 @@ PointState SolidMaterial::initial_state() const {
 
 void SolidMaterial::update(PointState& p, double rho_ref, const Mat3& velocity_gradient, double dt,
                            double length) const {
+  // The 3×3 algebra is written out on scalars, in the order of operations of the Eigen
+  // expressions it replaces (so the results are the same bit for bit): Eigen's temporaries here
+  // were stored element by element and read back as 16-byte packets, which defeats store-to-load
+  // forwarding and cost ~40% of this function.
   const Mat3& l = velocity_gradient;
-  const double j_old = p.deformation.determinant();
-  p.deformation = (Mat3::Identity() + dt * l) * p.deformation;
-  const double j_new = p.deformation.determinant();
+  Mat3& f = p.deformation;
+  const double j_old = f.determinant();
+  {  // F ← (I + Δt·L)·F
+    double fn[3][3];
+    for (int r = 0; r < 3; ++r) {
+      const double a0 = (r == 0 ? 1.0 : 0.0) + dt * l(r, 0), a1 = (r == 1 ? 1.0 : 0.0) + dt * l(r, 1),
+                   a2 = (r == 2 ? 1.0 : 0.0) + dt * l(r, 2);
+      for (int c = 0; c < 3; ++c) fn[r][c] = a0 * f(0, c) + (a1 * f(1, c) + a2 * f(2, c));
+    }
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) f(r, c) = fn[r][c];
+  }
+  const double j_new = f.determinant();
   if (!(j_new > 0.0) || !std::isfinite(j_new))
     throw RunError(fmt::format("material '{}': a point was inverted (det F = {})", name, j_new));
   const double v_ref = 1.0 / rho_ref;
   const double v_old = j_old * v_ref, v_new = j_new * v_ref, dv = v_new - v_old;
   const double rho_new = 1.0 / v_new;
 
-  // Deviatoric part (eqs. 1-4) on the Jaumann-rotated stress: ṡ = Ws − sW + 2G(ė − ė^p).
-  Mat3 d, w;  // symmetric and antisymmetric parts of L, element by element
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) {
-      d(r, c) = 0.5 * (l(r, c) + l(c, r));
-      w(r, c) = 0.5 * (l(r, c) - l(c, r));
+  // Deviatoric part (eqs. 1-4) on the Jaumann-rotated stress: ṡ = Ws − sW + 2G(ė − ė^p), with
+  // D and W the symmetric and antisymmetric parts of L.
+  double d[3][3], w[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      d[r][c] = 0.5 * (l(r, c) + l(c, r));
+      w[r][c] = 0.5 * (l(r, c) - l(c, r));
     }
+  // a += Δt·(W·a − a·W) for a symmetric a: a·W = −(W·a)ᵀ, so the increment W·a + (W·a)ᵀ is
+  // symmetric by construction (formed once per pair of coefficients, no 3×3 temporary).
+  auto jaumann_rotate = [&](Mat3& a) {
+    auto wa = [&](int r, int c) { return w[r][0] * a(0, c) + (w[r][1] * a(1, c) + w[r][2] * a(2, c)); };
+    double inc[6];
+    for (int r = 0, k = 0; r < 3; ++r)
+      for (int c = r; c < 3; ++c) inc[k++] = dt * (wa(r, c) + wa(c, r));
+    for (int r = 0, k = 0; r < 3; ++r)
+      for (int c = r; c < 3; ++c, ++k) {
+        a(r, c) += inc[k];
+        if (c != r) a(c, r) += inc[k];
+      }
+  };
   J2Plasticity::State& dev = p.deviatoric;
-  jaumann_rotate(dev.s, w, dt);
-  if (strength.isotropic_fraction < 1.0) jaumann_rotate(dev.back_stress, w, dt);  // α ≡ 0 otherwise
+  jaumann_rotate(dev.s);
+  if (strength.isotropic_fraction < 1.0) jaumann_rotate(dev.back_stress);  // α ≡ 0 otherwise
   const Mat3 s_rotated = dev.s;
-  const Mat3 de = deviator(d) * dt;
+  const double trace_d = d[0][0] + (d[1][1] + d[2][2]);
+  Mat3 de;  // deviator of D·Δt
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) de(r, c) = (d[r][c] - (trace_d / 3.0) * (r == c ? 1.0 : 0.0)) * dt;
   const J2Plasticity::Increment plastic = strength.update(dev, de);
 
   // Artificial viscosity from the compression rate.
-  p.viscous_pressure = viscosity.pressure(rho_new, p.sound_speed, d.trace(), length);
+  p.viscous_pressure = viscosity.pressure(rho_new, p.sound_speed, trace_d, length);
 
   // Energy, de = v·s:ė dt − (P̄ + q)dv with P̄ the trapezoidal mean; P_new = a + b·e_new (eq. 5)
   // is linear in e, so the implicit trapezoidal rule is solved exactly. This makes the discrete

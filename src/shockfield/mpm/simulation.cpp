@@ -165,8 +165,8 @@ void Simulation::update_materials() {
   const double length = grid_.min_cell_size();
   std::size_t failed = particles_.size();
   std::string why;
-  transfer_.gradient(node_velocity_, [&](std::size_t p, const Mat3& l) {
-    particles_.velocity_gradient[p] = l;
+  transfer_.gradient(node_velocity_, particles_.velocity_gradient, [&](std::size_t p) {
+    const Mat3& l = particles_.velocity_gradient[p];
     const auto& mat = materials_[static_cast<std::size_t>(particles_.material[p])];
     try {
       mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], l, dt_, length);

@@ -49,17 +49,29 @@ struct J2Plasticity {
   /// The evaluation function: advance `state` by the traceless strain increment `de`. (Inline:
   /// it runs once per material-point update.)
   Increment update(State& state, const Mat3& de) const {
+    // Element by element on the coefficients (no Eigen temporaries, see solid_material.cpp).
     const double g = shear_modulus;
-    state.s += 2.0 * g * de;  // elastic trial, s = 2G·e^e
-    const Mat3 xi = state.s - state.back_stress;
+    double* s = state.s.data();
+    const bool kinematic = isotropic_fraction < 1.0;  // α ≡ 0 otherwise: ξ = s, α unchanged
+    const double* alpha = state.back_stress.data();
+    Mat3 xi;
+    for (int k = 0; k < 9; ++k) {
+      s[k] += 2.0 * g * de.data()[k];  // elastic trial, s = 2G·e^e
+      xi.data()[k] = kinematic ? s[k] - alpha[k] : s[k];
+    }
     const double xi_norm = xi.norm();
     const double f = std::sqrt(1.5) * xi_norm - yield_stress(state.plastic_strain);  // eq. 3
     Increment inc;
     if (f <= 0.0) return inc;
     inc.equivalent = f / (3.0 * g + tangent_modulus);
-    inc.plastic = (std::sqrt(1.5) * inc.equivalent / xi_norm) * xi;
-    state.s -= 2.0 * g * inc.plastic;
-    state.back_stress += (2.0 / 3.0) * (1.0 - isotropic_fraction) * tangent_modulus * inc.plastic;
+    const double scale = std::sqrt(1.5) * inc.equivalent / xi_norm;
+    const double hardening = (2.0 / 3.0) * (1.0 - isotropic_fraction) * tangent_modulus;
+    for (int k = 0; k < 9; ++k) {
+      const double dep = scale * xi.data()[k];
+      inc.plastic.data()[k] = dep;
+      s[k] -= 2.0 * g * dep;
+      if (kinematic) state.back_stress.data()[k] += hardening * dep;
+    }
     state.plastic_strain += inc.equivalent;
     return inc;
   }
