@@ -33,12 +33,22 @@ PointState SolidMaterial::initial_state() const {
   return p;
 }
 
-void SolidMaterial::update(PointState& p, double rho_ref, const Mat3& velocity_gradient, double dt,
-                           double length) const {
+void SolidMaterial::update(PointState& p, double rho_ref, const Mat3& velocity_gradient, double dt, double length,
+                           bool plane_strain) const {
+  if (plane_strain) update_coupled<2>(p, rho_ref, velocity_gradient, dt, length);
+  else update_coupled<3>(p, rho_ref, velocity_gradient, dt, length);
+}
+
+template <int N>
+void SolidMaterial::update_coupled(PointState& p, double rho_ref, const Mat3& velocity_gradient, double dt,
+                                   double length) const {
   // The 3×3 algebra is written out on scalars, in the order of operations of the Eigen
-  // expressions it replaces (so the results are the same bit for bit): Eigen's temporaries here
-  // were stored element by element and read back as 16-byte packets, which defeats store-to-load
-  // forwarding and cost ~40% of this function.
+  // expressions it replaces: Eigen's temporaries here were stored element by element and read
+  // back as 16-byte packets, which defeats store-to-load forwarding. With N = 2 (plane strain in
+  // x, y: L_iz = L_zi = 0) only the in-plane coefficients and the zz one of the deviators are
+  // formed; the others are zero and stay so (F_zz = 1), up to the sign of a zero.
+  constexpr auto coupled = [](int r, int c) { return N == 3 || (r < N && c < N); };
+  constexpr auto deviatoric = [](int r, int c) { return N == 3 || (r < N && c < N) || (r == 2 && c == 2); };
   const Mat3& l = velocity_gradient;
   Mat3& f = p.deformation;
   const double j_old = f.determinant();
@@ -47,10 +57,12 @@ void SolidMaterial::update(PointState& p, double rho_ref, const Mat3& velocity_g
     for (int r = 0; r < 3; ++r) {
       const double a0 = (r == 0 ? 1.0 : 0.0) + dt * l(r, 0), a1 = (r == 1 ? 1.0 : 0.0) + dt * l(r, 1),
                    a2 = (r == 2 ? 1.0 : 0.0) + dt * l(r, 2);
-      for (int c = 0; c < 3; ++c) fn[r][c] = a0 * f(0, c) + (a1 * f(1, c) + a2 * f(2, c));
+      for (int c = 0; c < 3; ++c)
+        if (coupled(r, c)) fn[r][c] = a0 * f(0, c) + (a1 * f(1, c) + a2 * f(2, c));
     }
     for (int c = 0; c < 3; ++c)
-      for (int r = 0; r < 3; ++r) f(r, c) = fn[r][c];
+      for (int r = 0; r < 3; ++r)
+        if (coupled(r, c)) f(r, c) = fn[r][c];
   }
   const double j_new = f.determinant();
   if (!(j_new > 0.0) || !std::isfinite(j_new))
@@ -61,33 +73,34 @@ void SolidMaterial::update(PointState& p, double rho_ref, const Mat3& velocity_g
 
   // Deviatoric part (eqs. 1-4) on the Jaumann-rotated stress: ṡ = Ws − sW + 2G(ė − ė^p), with
   // D and W the symmetric and antisymmetric parts of L.
-  double d[3][3], w[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      d[r][c] = 0.5 * (l(r, c) + l(c, r));
-      w[r][c] = 0.5 * (l(r, c) - l(c, r));
-    }
+  // (Formed from L where used: stored as arrays they became packed temporaries again.)
+  auto d = [&](int r, int c) { return 0.5 * (l(r, c) + l(c, r)); };
+  auto w = [&](int r, int c) { return 0.5 * (l(r, c) - l(c, r)); };
   // a += Δt·(W·a − a·W) for a symmetric a: a·W = −(W·a)ᵀ, so the increment W·a + (W·a)ᵀ is
-  // symmetric by construction (formed once per pair of coefficients, no 3×3 temporary).
+  // symmetric by construction (formed once per pair of coefficients, no 3×3 temporary). In
+  // plane strain W has no z couplings, so a_zz does not change.
   auto jaumann_rotate = [&](Mat3& a) {
-    auto wa = [&](int r, int c) { return w[r][0] * a(0, c) + (w[r][1] * a(1, c) + w[r][2] * a(2, c)); };
+    auto wa = [&](int r, int c) { return w(r, 0) * a(0, c) + (w(r, 1) * a(1, c) + w(r, 2) * a(2, c)); };
     double inc[6];
     for (int r = 0, k = 0; r < 3; ++r)
-      for (int c = r; c < 3; ++c) inc[k++] = dt * (wa(r, c) + wa(c, r));
+      for (int c = r; c < 3; ++c, ++k)
+        if (coupled(r, c)) inc[k] = dt * (wa(r, c) + wa(c, r));
     for (int r = 0, k = 0; r < 3; ++r)
-      for (int c = r; c < 3; ++c, ++k) {
-        a(r, c) += inc[k];
-        if (c != r) a(c, r) += inc[k];
-      }
+      for (int c = r; c < 3; ++c, ++k)
+        if (coupled(r, c)) {
+          a(r, c) += inc[k];
+          if (c != r) a(c, r) += inc[k];
+        }
   };
   J2Plasticity::State& dev = p.deviatoric;
   jaumann_rotate(dev.s);
   if (strength.isotropic_fraction < 1.0) jaumann_rotate(dev.back_stress);  // α ≡ 0 otherwise
   const Mat3 s_rotated = dev.s;
-  const double trace_d = d[0][0] + (d[1][1] + d[2][2]);
-  Mat3 de;  // deviator of D·Δt
+  const double trace_d = d(0, 0) + (d(1, 1) + d(2, 2));
+  Mat3 de = Mat3::Zero();  // deviator of D·Δt
   for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) de(r, c) = (d[r][c] - (trace_d / 3.0) * (r == c ? 1.0 : 0.0)) * dt;
+    for (int r = 0; r < 3; ++r)
+      if (deviatoric(r, c)) de(r, c) = (d(r, c) - (trace_d / 3.0) * (r == c ? 1.0 : 0.0)) * dt;
   const J2Plasticity::Increment plastic = strength.update(dev, de);
 
   // Artificial viscosity from the compression rate.
@@ -105,11 +118,11 @@ void SolidMaterial::update(PointState& p, double rho_ref, const Mat3& velocity_g
   p.pressure = a + b * e_new;
 
   // Temperature (eqs. 7-8) with the plastic work s:Δe^p per unit mass.
-  const double dwp = v_new * dev.s.cwiseProduct(plastic.plastic).sum();
+  const double dwp = plastic.equivalent > 0.0 ? v_new * dev.s.cwiseProduct(plastic.plastic).sum() : 0.0;
   p.plastic_work += dwp;
   p.temperature = thermal.advance(eos, v_old, v_new, p.temperature, dwp, p.shock_volume);
   p.sound_speed = longitudinal_speed(hugoniot, e_new);
-  spall.apply(p, dv, 0.5 * (v_old + v_new), de);
+  if (spall.enabled()) spall.apply(p, dv, 0.5 * (v_old + v_new), de);
   if (!std::isfinite(p.pressure) || !std::isfinite(p.temperature))
     throw RunError(fmt::format("material '{}': non-finite pressure or temperature (ρ = {} kg/m³)", name, rho_new));
 }
