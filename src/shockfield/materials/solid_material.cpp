@@ -79,7 +79,8 @@ void SolidMaterial::update_coupled(PointState& p, double rho_ref, const Mat3& ve
   // a += Δt·(W·a − a·W) for a symmetric a: a·W = −(W·a)ᵀ, so the increment W·a + (W·a)ᵀ is
   // symmetric by construction (formed once per pair of coefficients, no 3×3 temporary). In
   // plane strain W has no z couplings, so a_zz does not change.
-  auto jaumann_rotate = [&](Mat3& a) {
+  // `rotated` (if given) receives the rotated coefficients as they are formed.
+  auto jaumann_rotate = [&](Mat3& a, double* rotated) {
     auto wa = [&](int r, int c) { return w(r, 0) * a(0, c) + (w(r, 1) * a(1, c) + w(r, 2) * a(2, c)); };
     double inc[6];
     for (int r = 0, k = 0; r < 3; ++r)
@@ -90,18 +91,27 @@ void SolidMaterial::update_coupled(PointState& p, double rho_ref, const Mat3& ve
         if (coupled(r, c)) {
           a(r, c) += inc[k];
           if (c != r) a(c, r) += inc[k];
+          if (rotated) rotated[r + 3 * c] = a(r, c), rotated[c + 3 * r] = a(c, r);
         }
+    if (N == 2 && rotated) rotated[8] = a(2, 2);
   };
+  // The deviatoric state is updated in place and never copied as a whole: a coefficient stored
+  // and read back at once as part of a 16-byte packet (Eigen or memcpy copies) stalls store
+  // forwarding. (This file is compiled without auto-vectorisation for the same reason.)
   J2Plasticity::State& dev = p.deviatoric;
-  jaumann_rotate(dev.s);
-  if (strength.isotropic_fraction < 1.0) jaumann_rotate(dev.back_stress);  // α ≡ 0 otherwise
-  const Mat3 s_rotated = dev.s;
+  const bool kinematic = strength.isotropic_fraction < 1.0;  // α ≡ 0 otherwise
+  double s_rotated[9];
+  jaumann_rotate(dev.s, s_rotated);
+  if (kinematic) jaumann_rotate(dev.back_stress, nullptr);
   const double trace_d = d(0, 0) + (d(1, 1) + d(2, 2));
-  Mat3 de = Mat3::Zero();  // deviator of D·Δt
+  Mat3 de;  // deviator of D·Δt
   for (int c = 0; c < 3; ++c)
     for (int r = 0; r < 3; ++r)
-      if (deviatoric(r, c)) de(r, c) = (d(r, c) - (trace_d / 3.0) * (r == c ? 1.0 : 0.0)) * dt;
-  const J2Plasticity::Increment plastic = strength.update(dev, de);
+      de(r, c) = deviatoric(r, c) ? (d(r, c) - (trace_d / 3.0) * (r == c ? 1.0 : 0.0)) * dt : 0.0;
+  const J2Plasticity::Increment plastic = strength.update<N>(dev, de);
+  Mat3 s_sum;  // s before and after the return, for the trapezoidal work below
+  for (int k = 0; k < 9; ++k)
+    if (J2Plasticity::plane_coefficient<N>(k)) s_sum.data()[k] = s_rotated[k] + dev.s.data()[k];
 
   // Artificial viscosity from the compression rate.
   p.viscous_pressure = viscosity.pressure(rho_new, p.sound_speed, trace_d, length);
@@ -109,7 +119,7 @@ void SolidMaterial::update_coupled(PointState& p, double rho_ref, const Mat3& ve
   // Energy, de = v·s:ė dt − (P̄ + q)dv with P̄ the trapezoidal mean; P_new = a + b·e_new (eq. 5)
   // is linear in e, so the implicit trapezoidal rule is solved exactly. This makes the discrete
   // jump satisfy the Rankine-Hugoniot energy condition.
-  const double w_dev = 0.5 * (v_old + v_new) * 0.5 * (s_rotated + dev.s).cwiseProduct(de).sum();
+  const double w_dev = 0.5 * (v_old + v_new) * 0.5 * J2Plasticity::contract<N>(s_sum, de);
   const double b = eos.energy_coefficient();
   const MieGruneisen::HugoniotPoint hugoniot = eos.hugoniot(rho_new);
   const double a = hugoniot.ph - b * hugoniot.eh;
@@ -118,7 +128,7 @@ void SolidMaterial::update_coupled(PointState& p, double rho_ref, const Mat3& ve
   p.pressure = a + b * e_new;
 
   // Temperature (eqs. 7-8) with the plastic work s:Δe^p per unit mass.
-  const double dwp = plastic.equivalent > 0.0 ? v_new * dev.s.cwiseProduct(plastic.plastic).sum() : 0.0;
+  const double dwp = plastic.equivalent > 0.0 ? v_new * J2Plasticity::contract<N>(dev.s, plastic.plastic) : 0.0;
   p.plastic_work += dwp;
   p.temperature = thermal.advance(eos, v_old, v_new, p.temperature, dwp, p.shock_volume);
   p.sound_speed = longitudinal_speed(hugoniot, e_new);
