@@ -42,9 +42,10 @@ void SolidMaterial::update(PointState& p, double rho_ref, const Mat3& velocity_g
 template <int N>
 void SolidMaterial::update_coupled(PointState& p, double rho_ref, const Mat3& velocity_gradient, double dt,
                                    double length) const {
-  // The 3×3 algebra is written out on scalars, in the order of operations of the Eigen
-  // expressions it replaces: Eigen's temporaries here were stored element by element and read
-  // back as 16-byte packets, which defeats store-to-load forwarding. With N = 2 (plane strain in
+  // The 3×3 algebra is written out on scalars: Eigen's temporaries here were stored element by
+  // element and read back as 16-byte packets, which defeats store-to-load forwarding. Sums run
+  // in a fixed order (a0 + (a1 + a2) for the products), which reproduces the former Eigen code
+  // bit for bit in plane strain and to round-off in 3D. With N = 2 (plane strain in
   // x, y: L_iz = L_zi = 0) only the in-plane coefficients and the zz one of the deviators are
   // formed; the others are zero and stay so (F_zz = 1), up to the sign of a zero.
   constexpr auto coupled = [](int r, int c) { return N == 3 || (r < N && c < N); };
