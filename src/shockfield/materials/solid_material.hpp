@@ -48,8 +48,15 @@ struct SolidMaterial {
   /// Unstressed state at the reference density and the initial temperature.
   PointState initial_state() const;
   /// Advance a point with reference density rho_ref (= mass / initial volume) over dt with the
-  /// velocity gradient L; `length` is the artificial-viscosity length (the cell size).
-  void update(PointState& p, double rho_ref, const Mat3& velocity_gradient, double dt, double length) const;
+  /// velocity gradient L; `length` is the artificial-viscosity length (the cell size). With
+  /// `plane_strain` (2D in x, y: L has no z row or column) the out-of-plane couplings are skipped.
+  void update(PointState& p, double rho_ref, const Mat3& velocity_gradient, double dt, double length,
+              bool plane_strain = false) const;
+
+ private:
+  /// The update with the coupled axes 0..N−1 (N = 2: plane strain, N = 3: 3D).
+  template <int N>
+  void update_coupled(PointState& p, double rho_ref, const Mat3& velocity_gradient, double dt, double length) const;
 };
 
 }  // namespace shockfield::materials

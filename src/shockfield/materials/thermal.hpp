@@ -54,7 +54,7 @@ struct Thermal {
     } else {
       t = rk2(v_old, v_new, t, isentrope);
     }
-    return t + dwp / heat_capacity;  // eq. 8
+    return dwp != 0.0 ? t + dwp / heat_capacity : t;  // eq. 8 (no division for an elastic step)
   }
 };
 

@@ -64,8 +64,9 @@ class Grid {
   /// False when the particle itself is outside.
   bool fit(int axis, Weights1D& w) const {
     const auto a = static_cast<std::size_t>(axis);
-    if (!spec_.periodic[a] && w.base >= 0 && w.base + w.count <= nodes_[a]) return true;  // inside
-    return fit_edge(axis, w);
+    const bool inside = spec_.periodic[a] ? w.base >= 0 && w.base < nodes_[a]  // already wrapped
+                                          : w.base >= 0 && w.base + w.count <= nodes_[a];
+    return inside || fit_edge(axis, w);
   }
 
   /// Impose the rigid walls on nodal momenta: stick zeroes all components, slip the normal one.

@@ -163,13 +163,14 @@ void Simulation::grid_to_particles(bool remap) {
 void Simulation::update_materials() {
   // L_p = Σ_i v_i ⊗ ∇N_i(x_p), then the material update of the point with it.
   const double length = grid_.min_cell_size();
+  const bool plane_strain = grid_.dim() == 2;
   std::size_t failed = particles_.size();
   std::string why;
-  transfer_.gradient(node_velocity_, [&](std::size_t p, const Mat3& l) {
-    particles_.velocity_gradient[p] = l;
+  transfer_.gradient(node_velocity_, particles_.velocity_gradient, [&](std::size_t p) {
+    const Mat3& l = particles_.velocity_gradient[p];
     const auto& mat = materials_[static_cast<std::size_t>(particles_.material[p])];
     try {
-      mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], l, dt_, length);
+      mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], l, dt_, length, plane_strain);
     } catch (const RunError& e) {
 #pragma omp critical(mpm_material_failure)
       if (p < failed) {

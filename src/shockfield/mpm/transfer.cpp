@@ -15,7 +15,8 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
   }();
   stencils.resize(p.size());
   bin_of_.resize(p.size());
-  const GridSpec& spec = grid.spec();
+  const auto origin = grid.spec().origin;  // local copies: invariant in the loop (stores to the
+  const auto cell = grid.spec().cell_size;  // stencils cannot alias them), so 1/h is hoisted
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   std::ptrdiff_t lost = -1;
 #pragma omp parallel for schedule(static) reduction(max : lost)
@@ -23,7 +24,7 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
     const auto uq = static_cast<std::size_t>(q);
     Stencil<Dim>& s = stencils[uq];
     for (int a = 0; a < Dim; ++a) {
-      Weights1D w = Shape::evaluate(p.x[uq][a] - spec.origin[a], spec.cell_size[a], p.half_size[uq][a]);
+      Weights1D w = Shape::evaluate(p.x[uq][a] - origin[a], cell[a], p.half_size[uq][a]);
       if (!grid.fit(a, w)) lost = std::max(lost, q);
       const auto ua = static_cast<std::size_t>(a);
       s.base[ua] = w.base;

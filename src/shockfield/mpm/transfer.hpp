@@ -56,9 +56,12 @@ class Transfer {
   template <class F>
   void interpolate_and_remap(Grid& grid, const Particles& p, const std::vector<Vec3>& a, const std::vector<Vec3>& b,
                              F&& f) const;
-  /// For each particle p (in parallel): f(p, Σ_i a_i ⊗ ∇N_i(x_p)) for a nodal vector field a.
+  /// For each particle p (in parallel): out[p] = Σ_i a_i ⊗ ∇N_i(x_p) for a nodal vector field a,
+  /// then f(p). The gradients of a block of particles are stored before f runs on them, so f
+  /// reads out[p] long after it was written (read back at once, a 3×3 matrix stored element by
+  /// element and loaded as 16-byte packets stalls store-to-load forwarding).
   template <class F>
-  void gradient(const std::vector<Vec3>& a, F&& f) const;
+  void gradient(const std::vector<Vec3>& a, std::vector<Mat3>& out, F&& f) const;
   /// Generic transfers for other nodal fields (heat conduction): f(q, each) for every particle q,
   /// where each(g) calls g(i, N_i(x_q), ∇N_i(x_q)) for the nodes i of q's stencil (∇N as
   /// std::array<double, 3>, z component 0 in 2D). `scatter_each` visits the particles in the
@@ -291,16 +294,26 @@ void Transfer::gather_each(F&& f) const {
 }
 
 template <class F>
-void Transfer::gradient(const std::vector<Vec3>& va, F&& f) const {
-  each_particle([&](auto kernel, std::size_t q, const auto& s) {
+void Transfer::gradient(const std::vector<Vec3>& va, std::vector<Mat3>& out, F&& f) const {
+  constexpr std::size_t block = 32;  // particles whose gradients are stored before f runs on them
+  dispatch([&](auto kernel) {
     constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
-    Mat3 l = Mat3::Zero();
-    each_node<D, S>(s, nodes<D, S>(s), [&](std::size_t node, double, const std::array<double, 3>& g) {
-      const Vec3& v = va[node];
-      for (int r = 0; r < D; ++r)
-        for (int k = 0; k < D; ++k) l(r, k) += v[r] * g[static_cast<std::size_t>(k)];
-    });
-    f(q, l);
+    const auto& all = stencils<D>();
+    const auto blocks = static_cast<std::ptrdiff_t>((all.size() + block - 1) / block);
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t b = 0; b < blocks; ++b) {
+      const std::size_t first = static_cast<std::size_t>(b) * block, last = std::min(first + block, all.size());
+      for (std::size_t q = first; q < last; ++q) {
+        Mat3 l = Mat3::Zero();
+        each_node<D, S>(all[q], nodes<D, S>(all[q]), [&](std::size_t node, double, const std::array<double, 3>& g) {
+          const Vec3& v = va[node];
+          for (int r = 0; r < D; ++r)
+            for (int k = 0; k < D; ++k) l(r, k) += v[r] * g[static_cast<std::size_t>(k)];
+        });
+        out[q] = l;
+      }
+      for (std::size_t q = first; q < last; ++q) f(q);
+    }
   });
 }
 

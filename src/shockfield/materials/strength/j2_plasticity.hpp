@@ -47,21 +47,53 @@ struct J2Plasticity {
     return yield_stress0 + isotropic_fraction * tangent_modulus * plastic_strain;  // eq. 4
   }
   /// The evaluation function: advance `state` by the traceless strain increment `de`. (Inline:
-  /// it runs once per material-point update.)
+  /// it runs once per material-point update.) N = 2 for plane strain (x, y): only the
+  /// coefficients a plane-strain deviator can have (xx, yx, xy, yy, zz) are formed, the others
+  /// being zero. Coefficient by coefficient, so that a caller's local state stays in registers.
+  template <int N = 3>
   Increment update(State& state, const Mat3& de) const {
     const double g = shear_modulus;
-    state.s += 2.0 * g * de;  // elastic trial, s = 2G·e^e
-    const Mat3 xi = state.s - state.back_stress;
-    const double xi_norm = xi.norm();
+    double* s = state.s.data();
+    const bool kinematic = isotropic_fraction < 1.0;  // α ≡ 0 otherwise: ξ = s, α unchanged
+    const double* alpha = state.back_stress.data();
+    Mat3 xi;
+    for (int k = 0; k < 9; ++k) {
+      if (!plane_coefficient<N>(k)) continue;
+      s[k] += 2.0 * g * de.data()[k];  // elastic trial, s = 2G·e^e
+      xi.data()[k] = kinematic ? s[k] - alpha[k] : s[k];
+    }
+    const double xi_norm = std::sqrt(contract<N>(xi, xi));
     const double f = std::sqrt(1.5) * xi_norm - yield_stress(state.plastic_strain);  // eq. 3
     Increment inc;
     if (f <= 0.0) return inc;
     inc.equivalent = f / (3.0 * g + tangent_modulus);
-    inc.plastic = (std::sqrt(1.5) * inc.equivalent / xi_norm) * xi;
-    state.s -= 2.0 * g * inc.plastic;
-    state.back_stress += (2.0 / 3.0) * (1.0 - isotropic_fraction) * tangent_modulus * inc.plastic;
+    const double scale = std::sqrt(1.5) * inc.equivalent / xi_norm;
+    const double hardening = (2.0 / 3.0) * (1.0 - isotropic_fraction) * tangent_modulus;
+    for (int k = 0; k < 9; ++k) {
+      if (!plane_coefficient<N>(k)) continue;
+      const double dep = scale * xi.data()[k];
+      inc.plastic.data()[k] = dep;
+      s[k] -= 2.0 * g * dep;
+      if (kinematic) state.back_stress.data()[k] += hardening * dep;
+    }
     state.plastic_strain += inc.equivalent;
     return inc;
+  }
+
+  /// Whether coefficient k (column-major) of a deviator is formed: all for N = 3, and xx, yx,
+  /// xy, yy, zz in plane strain (N = 2).
+  template <int N>
+  static constexpr bool plane_coefficient(int k) {
+    return N == 3 || k == 0 || k == 1 || k == 3 || k == 4 || k == 8;
+  }
+  /// a:b = Σ a_ij b_ij over those coefficients, summed in the order of Eigen's vectorised
+  /// a.cwiseProduct(b).sum() (pairs of consecutive coefficients, then the two lanes, then the
+  /// ninth; the zero terms of plane strain dropped), on scalars.
+  template <int N = 3>
+  static double contract(const Mat3& a, const Mat3& b) {
+    auto t = [&](int k) { return a.data()[k] * b.data()[k]; };
+    if constexpr (N == 2) return ((t(0) + t(4)) + (t(1) + t(3))) + t(8);
+    else return (((t(0) + t(2)) + (t(4) + t(6))) + ((t(1) + t(3)) + (t(5) + t(7)))) + t(8);
   }
 };
 
