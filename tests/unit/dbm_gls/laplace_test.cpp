@@ -17,7 +17,6 @@
 // intercept 22% and e_T drifts by 5e-3 — the test fails (checked by hand).
 #include <gtest/gtest.h>
 
-#include <cstdio>
 
 #include "unit/dbm_gls/laplace_droplet.hpp"
 
