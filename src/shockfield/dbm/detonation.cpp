@@ -81,6 +81,7 @@ DetonationTubeResult run_detonation_tube(const DetonationTubeSetup& d) {
   for (int i = 0; i < l.nx; ++i) {
     const Macro m = sim.macro(i, 0);
     r.x.push_back(l.x(i));
+    r.rho.push_back(m.rho);
     r.p.push_back(m.rho * m.T);
     r.lambda.push_back(flow.lambda(i, 0));
     r.d2xx.push_back(tne.central[0][i]);

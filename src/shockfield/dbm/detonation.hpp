@@ -53,7 +53,7 @@ struct DetonationTubeSetup {
 struct DetonationTubeResult {
   double speed = 0.0;  ///< fitted front speed over the second half of the run
   ChapmanJouguet theory;
-  std::vector<double> x, p, lambda, d2xx;  ///< final line profile (d2xx = Δ*_2xx)
+  std::vector<double> x, rho, p, lambda, d2xx;  ///< final line profile (d2xx = Δ*_2xx)
 };
 
 DetonationTubeResult run_detonation_tube(const DetonationTubeSetup& setup);

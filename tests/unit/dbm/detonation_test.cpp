@@ -84,6 +84,18 @@ TEST(DbmDetonation, TneOppositeSignsAroundVonNeumannPeak) {
                 "mean %.5f max %.5f, behind mean %.6f\n",
                 o == &det ? "detonation" : "inert shock", o->speed, o->theory.speed, o->p[peak], o->x[peak],
                 o->lambda[peak], o->d2xx[peak], front_mean, front_max, behind);
+    // Where Δ*_2xx changes sign near the peak, against the maxima of p and ρ (examples/dbm_detonation).
+    const std::size_t rho_peak = std::max_element(o->rho.begin(), o->rho.end()) - o->rho.begin();
+    std::size_t zero = peak;  // first cell ahead of the pressure peak with Δ*_2xx ≥ 0
+    while (zero < front_end && o->d2xx[zero] < 0.0) ++zero;
+    const double dx = o->x[1] - o->x[0];
+    const double x_zero = o->x[zero] - dx * o->d2xx[zero] / (o->d2xx[zero] - o->d2xx[zero - 1]);
+    std::printf("  rho peak at x %.3f (%+d cells from the p peak); D*2xx = 0 at x %.4f (%+.2f cells from the p peak)\n",
+                o->x[rho_peak], static_cast<int>(rho_peak) - static_cast<int>(peak), x_zero,
+                (x_zero - o->x[peak]) / dx);
+    for (std::size_t i = peak - 3; i <= std::min(front_end, peak + 4); ++i)
+      std::printf("  x %.3f  rho %.4f  p %.4f  lambda %.3f  D*2xx %+.5f\n", o->x[i], o->rho[i], o->p[i], o->lambda[i],
+                  o->d2xx[i]);
     EXPECT_NEAR(o->speed, o->theory.speed, 0.03 * o->theory.speed) << "a detonation / shock near D_CJ";
     EXPECT_GT(front_mean, 0.0) << "compression in front of the peak";
     EXPECT_LT(std::abs(o->d2xx[peak]), 0.25 * front_max) << "near equilibrium at the peak";
