@@ -35,17 +35,24 @@ BoundaryKind boundary_kind(const std::string& name) {
 }
 
 namespace {
-// Velocity into the domain through a side, and back.
+// Velocity into the domain through a side (the normal velocity of a low side, minus it on a high side).
 double inward(const Macro& m, int axis, bool high) { return (high ? -1.0 : 1.0) * (axis == 0 ? m.ux : m.uy); }
 }  // namespace
 
 Macro subsonic_inflow_state(const Macro& imposed, const Macro& interior, int axis, bool high,
                             double gamma) {
-  // Riemann invariants J± = u_n ± 2c/(γ−1) with c² = γT (p = ρT); entropy s = p/ρ^γ = T/ρ^(γ−1).
+  // Riemann invariants J± = u_n ± 2c/(γ−1) of the 1D Euler equations (Toro, Riemann Solvers and
+  // Numerical Methods for Fluid Dynamics, 3rd ed., §3.1.3) with c² = γT (p = ρT); entropy
+  // s = p/ρ^γ = T/ρ^(γ−1). Incoming: J⁺ and s (and the tangential velocity); outgoing: J⁻.
   const double k = 2.0 / (gamma - 1.0);
   const double j_in = inward(imposed, axis, high) + k * std::sqrt(gamma * imposed.T);
   const double j_out = inward(interior, axis, high) - k * std::sqrt(gamma * interior.T);
   const double un = 0.5 * (j_in + j_out), c = (j_in - j_out) / (2.0 * k);
+  if (!(c > 0.0))
+    throw RunError(fmt::format(
+        "subsonic_inflow: the fluid next to the side leaves faster than the imposed state can follow "
+        "(outgoing invariant {:.4g} >= incoming {:.4g}): no positive sound speed at the side",
+        j_out, j_in));
   const double T = c * c / gamma;
   const double entropy = imposed.T / std::pow(imposed.rho, gamma - 1.0);
   Macro m = imposed;

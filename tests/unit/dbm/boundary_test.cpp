@@ -120,6 +120,10 @@ TEST(DbmBoundary, SubsonicInflowStateTakesIncomingInvariantsFromTheImposedState)
     EXPECT_NEAR(g.entropy, i.entropy, 1e-12);
     EXPECT_NEAR(g.j_out, f.j_out, 1e-12);
     EXPECT_EQ(axis == 0 ? ghost.uy : ghost.ux, -0.1) << "tangential velocity imposed";
+    // Fluid rushing in so fast that J_out ≥ J_in: no state with c > 0, the run stops.
+    Macro rushing = fluid;
+    (axis == 0 ? rushing.ux : rushing.uy) = high ? -20.0 : 20.0;
+    EXPECT_THROW(subsonic_inflow_state(in, rushing, axis, high, kGamma), RunError);
   }
 }
 
