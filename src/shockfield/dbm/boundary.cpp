@@ -1,8 +1,10 @@
 #include "shockfield/dbm/boundary.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "shockfield/core/error.hpp"
 
@@ -18,14 +20,55 @@ void Boundaries::check() const {
   }
 }
 
+const std::vector<std::string>& boundary_kind_names() {
+  static const std::vector<std::string> names{"periodic",        "outflow",    "inflow",
+                                              "subsonic_inflow", "reflecting", "wall"};
+  return names;
+}
+
 BoundaryKind boundary_kind(const std::string& name) {
-  if (name == "periodic") return BoundaryKind::periodic;
-  if (name == "outflow") return BoundaryKind::outflow;
-  if (name == "inflow") return BoundaryKind::inflow;
-  if (name == "reflecting") return BoundaryKind::reflecting;
-  if (name == "wall") return BoundaryKind::wall;
-  throw InputError(fmt::format(
-      "unknown boundary '{}' (expected periodic, outflow, inflow, reflecting or wall)", name));
+  const auto& names = boundary_kind_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+    throw InputError(fmt::format("unknown boundary '{}' (expected {})", name, fmt::join(names, ", ")));
+  return static_cast<BoundaryKind>(it - names.begin());
+}
+
+namespace {
+// Velocity into the domain through a side (the normal velocity of a low side, minus it on a high side).
+double inward(const Macro& m, int axis, bool high) { return (high ? -1.0 : 1.0) * (axis == 0 ? m.ux : m.uy); }
+}  // namespace
+
+Macro subsonic_inflow_state(const Macro& imposed, const Macro& interior, int axis, bool high,
+                            double gamma) {
+  // Riemann invariants J± = u_n ± 2c/(γ−1) of the 1D Euler equations (Toro, Riemann Solvers and
+  // Numerical Methods for Fluid Dynamics, 3rd ed., §3.1.3) with c² = γT (p = ρT); entropy
+  // s = p/ρ^γ = T/ρ^(γ−1). Incoming: J⁺ and s (and the tangential velocity); outgoing: J⁻.
+  const double k = 2.0 / (gamma - 1.0);
+  const double j_in = inward(imposed, axis, high) + k * std::sqrt(gamma * imposed.T);
+  const double j_out = inward(interior, axis, high) - k * std::sqrt(gamma * interior.T);
+  const double un = 0.5 * (j_in + j_out), c = (j_in - j_out) / (2.0 * k);
+  if (!(c > 0.0))
+    throw RunError(fmt::format(
+        "subsonic_inflow: the fluid next to the side leaves faster than the imposed state can follow "
+        "(outgoing invariant {:.4g} >= incoming {:.4g}): no positive sound speed at the side",
+        j_out, j_in));
+  const double T = c * c / gamma;
+  const double entropy = imposed.T / std::pow(imposed.rho, gamma - 1.0);
+  Macro m = imposed;
+  m.rho = std::pow(T / entropy, 1.0 / (gamma - 1.0));
+  m.T = T;
+  (axis == 0 ? m.ux : m.uy) = (high ? -1.0 : 1.0) * un;
+  return m;
+}
+
+void check_subsonic_inflow(const Macro& state, int axis, bool high, double gamma) {
+  const double un = inward(state, axis, high), c = std::sqrt(gamma * state.T);
+  if (!(un > 0.0 && un < c))
+    throw InputError(fmt::format(
+        "subsonic_inflow needs gas entering slower than sound: velocity into the domain {:.4g} "
+        "is not in (0, c = {:.4g}); use inflow for a supersonic stream, outflow for one leaving",
+        un, c));
 }
 
 GhostFiller::GhostFiller(const VelocityModel& model, const MomentInversion& inversion, double b,
@@ -38,6 +81,9 @@ GhostFiller::GhostFiller(const VelocityModel& model, const MomentInversion& inve
     if (kind_lo == BoundaryKind::reflecting || kind_hi == BoundaryKind::reflecting)
       mirror_[axis] = model.mirror(axis);
   }
+  for (int side = 0; side < 4; ++side)
+    if (boundaries_.side[side].kind == BoundaryKind::subsonic_inflow)
+      check_subsonic_inflow(boundaries_.side[side].state, side / 2, side % 2 == 1, (b + 2.0) / b);
 }
 
 Macro GhostFiller::moments_at(const std::vector<double>& f, std::size_t cell) const {
@@ -81,6 +127,13 @@ void GhostFiller::fill_side(std::vector<double>& f, int side) const {
                                  ghost_eq.data());
           for (int k = 0; k < Q; ++k) f[k * N + dst] = ghost_eq[k];
           break;
+        case BoundaryKind::subsonic_inflow: {
+          const Macro m = subsonic_inflow_state(bc.state, moments_at(f, cell(nearest)), axis, high,
+                                                (b_ + 2.0) / b_);
+          inversion_.equilibrium(m.rho, m.ux, m.uy, m.T, b_, ghost_eq.data());
+          for (int k = 0; k < Q; ++k) f[k * N + dst] = ghost_eq[k];
+          break;
+        }
         case BoundaryKind::reflecting:
           for (int k = 0; k < Q; ++k) f[k * N + dst] = f[mirror_[axis][k] * N + cell(mirror)];
           break;

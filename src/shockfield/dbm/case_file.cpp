@@ -70,18 +70,25 @@ InitialSpec read_initial(const Config& t, const Lattice& lattice) {
   return s;
 }
 
-Boundaries read_boundaries(const std::optional<Config>& t, bool gls) {
+Boundaries read_boundaries(const std::optional<Config>& t, bool gls, double gamma) {
   Boundaries b;
   if (!gls) b.side[0].kind = b.side[1].kind = BoundaryKind::outflow;
   if (!t) return b;
-  const std::vector<std::string> kinds{"periodic", "outflow", "inflow", "reflecting", "wall"};
+  const std::vector<std::string>& kinds = boundary_kind_names();
   for (std::size_t s = 0; s < 4; ++s) {
     const std::string& side = kSides[s];
     BoundarySide& bs = b.side[s];
     bs.kind = boundary_kind(t->get_choice_or(side, kinds, s < 2 && !gls ? "outflow" : "periodic"));
     if (gls && bs.kind != BoundaryKind::periodic)
       t->fail(side, "\"periodic\" for kind = \"gls\": its spatial derivatives are taken by FFT");
-    if (bs.kind == BoundaryKind::inflow) bs.state = read_state(t->table(side + "_state"));
+    if (feeds_gas(bs.kind)) bs.state = read_state(t->table(side + "_state"));
+    if (bs.kind == BoundaryKind::subsonic_inflow) {
+      try {
+        check_subsonic_inflow(bs.state, static_cast<int>(s / 2), s % 2 == 1, gamma);
+      } catch (const InputError& e) {
+        t->fail(side + "_state", e.what());
+      }
+    }
     if (bs.kind == BoundaryKind::wall) {
       const Config w = t->table(side + "_wall");
       bs.state = {1.0, w.get_double_or("u", 0.0), w.get_double_or("v", 0.0), w.get_double("T", Range::positive())};
@@ -163,7 +170,7 @@ DbmCase read_dbm_case(const Config& root) {
   const bool gls = is_gls(model);
   if (!gls) c.initial = read_initial(root.table("initial"), c.lattice);
   const std::optional<Config> boundary = root.optional_table("boundary");
-  c.boundaries = read_boundaries(boundary, gls);
+  c.boundaries = read_boundaries(boundary, gls, c.bgk.gamma);
   if (c.bgk.spectral_convection)
     for (const BoundarySide& s : c.boundaries.side)
       if (s.kind != BoundaryKind::periodic)

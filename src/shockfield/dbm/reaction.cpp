@@ -173,7 +173,7 @@ void ReactiveFlow::fill_lambda(const std::vector<double>& f, const std::vector<d
         if (kind == BoundaryKind::periodic) source = ((ghost % n) + n) % n;
         if (kind == BoundaryKind::outflow) source = high ? n - 1 : 0;
         auto cell = [&](int q) { return axis == 0 ? l.at(q, a) : l.at(a, q); };
-        lambda_[cell(ghost)] = kind == BoundaryKind::inflow ? inflow_lambda_ : lambda_[cell(source)];
+        lambda_[cell(ghost)] = feeds_gas(kind) ? inflow_lambda_ : lambda_[cell(source)];
       }
   }
 }

@@ -25,7 +25,7 @@ std::vector<NamedState> case_states(const DbmCase& c) {
   }
   const std::array<const char*, 4> sides{"x_low", "x_high", "y_low", "y_high"};
   for (std::size_t s = 0; s < 4; ++s)
-    if (c.boundaries.side[s].kind == BoundaryKind::inflow)
+    if (feeds_gas(c.boundaries.side[s].kind))
       states.push_back({fmt::format("boundary.{}_state", sides[s]), c.boundaries.side[s].state});
   if (c.exact_star) {
     const RiemannStar& r = *c.exact_star;
