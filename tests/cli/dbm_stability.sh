@@ -3,7 +3,11 @@
 # whose CJ state is too hot for speeds 1..4 is refused naming the state, the growth rate and the
 # remedy (exit 2, no run folder); "warn" runs it with the warning on stderr; a 2D time step beyond
 # the analysed limit is refused with the largest stable one; a stable case records the result
-# under [derived].
+# under [derived]; the von Neumann state of the detonation example held by an inflow at dx = 0.0025,
+# stable with first-order upwind but whose smooth modes grow (the run breaks down at t = 1.2), is
+# refused, while dx = 0.005 or tau = 1e-3 (runs that finish) pass, and so does a detonation at
+# dx = 0.0025 whose von Neumann state is only the peak of the front (structure.toml refined: it
+# finishes).
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -52,4 +56,31 @@ expect_error "$square" "model.stability_check" "with dt = 0.002" "largest stable
 run_expecting 0 "${square/courant = 0.8/courant = 0.5}"
 grep -q "linear_stability = 'stable'" "$WORK/out/config.resolved.toml" || fail "stable run lacks the derived verdict"
 grep -q "linear_stability_stable_time_step = 0.00144" "$WORK/out/config.resolved.toml" || fail "derived stable time step"
-echo "dbm_stability: hot CJ state refused and warned, bad key value, 2D time step refused, derived verdict"
+inert='method = "dbm"
+[grid]
+nx = 100
+dx = 0.0025
+[model]
+tau = 2e-3
+[initial]
+type = "uniform"
+state = { rho = 1.0, p = 0.6 }
+[boundary]
+x_low = "inflow"
+x_low_state = { rho = 2.269952, u = 0.894427, p = 2.029951 }
+[run]
+end_time = 3.0
+courant = 0.4'
+expect_error "$inert" "model.stability_check" "boundary.x_low_state (rho = 2.27, u = (0.8944, 0), T = 0.8943)" \
+  "smooth waves" "grows as exp(10.4 t)" "coarser grid or a smaller model.tau"
+peak="${inert/x_low = \"inflow\"/x_low = \"reflecting\"}"
+peak="${peak/x_low_state*p = 2.029951 \}/[reaction]
+kind = \"arrhenius\"
+heat_release = 0.6
+rate = 1.0
+ignition_temperature = 0.7}"
+for ok in "${inert/dx = 0.0025/dx = 0.005}" "${inert/tau = 2e-3/tau = 1e-3}" "$peak"; do
+  printf '%s\n' "$ok" > "$WORK/ok.toml"
+  "$SF" run --check "$WORK/ok.toml" > /dev/null || fail "refused: $ok"
+done
+echo "dbm_stability: hot CJ state refused and warned, bad key value, 2D time step refused, derived verdict, smooth modes of a held von Neumann state"

@@ -14,10 +14,10 @@ using ComplexVector16 = Eigen::Matrix<Complex, kMoments, 1>;
 
 /// The wave numbers θ = kΔ of one axis: [0, π] for x (A(−k) is the complex conjugate of A(k),
 /// same spectrum), [−π, π] for y on a 2D lattice.
-std::vector<double> wave_numbers(int resolution, bool full_axis) {
+std::vector<double> wave_numbers(int resolution, bool full_axis, double largest = std::numbers::pi) {
   std::vector<double> theta;
   const int lo = full_axis ? -resolution : 0;
-  for (int m = lo; m <= resolution; ++m) theta.push_back(std::numbers::pi * m / resolution);
+  for (int m = lo; m <= resolution; ++m) theta.push_back(largest * m / resolution);
   return theta;
 }
 
@@ -157,6 +157,17 @@ StabilityReport analyse_stability(const StabilityProblem& p, const Macro& state)
       }
   r.discrete_rate = std::log(r.amplification) / p.dt;
   r.stable_dt = largest_stable_dt(mu, p.dt, tolerance_rate(p.tau));
+  if (p.stencil != Stencil::first_order_upwind) return r;
+  // The smooth modes with the stencil NND has there, on a grid as fine as the full one's.
+  const std::vector<double> smooth_y =
+      p.two_dimensional ? wave_numbers(p.resolution, true, kSmoothTheta) : std::vector<double>{0.0};
+  r.smooth_rate = -INFINITY;
+  for (double ty : smooth_y)
+    for (double tx : wave_numbers(p.resolution, false, kSmoothTheta))
+      for (const Complex m : eigenvalues(generator(p, J, tx, ty, Stencil::second_order_upwind))) {
+        const double rate = std::log(std::abs(rk3_factor(p.dt * m))) / p.dt;
+        if (rate > r.smooth_rate) r.smooth_rate = rate, r.smooth_theta_x = tx, r.smooth_theta_y = ty;
+      }
   return r;
 }
 

@@ -51,6 +51,11 @@ struct StabilityProblem {
   int resolution = 32;  ///< wave numbers θ = kΔx per half axis, [0, π] (Nyquist) included
 };
 
+/// The smooth modes, |θ| ≤ π/4 on both axes (eight or more cells per wavelength): NND's minmod
+/// slope is Δ− there in all cells but those next to an extremum, so it is second-order upwind
+/// (docs/theory/dbm.md, "Smooth modes").
+inline constexpr double kSmoothTheta = 0.7853981633974483;
+
 struct StabilityReport {
   /// sup over all wave vectors of max Re λ(−i v·k + J), |k|τ in [1e-3, 1e4]: > 0 is an instability
   /// of the BGK model itself (continuous in space and time) at this state.
@@ -64,6 +69,10 @@ struct StabilityReport {
   double discrete_rate = 0.0;           ///< ln(amplification)/Δt, the growth rate of the run
   /// Largest Δt with no mode amplified by a step faster than it grows for Δt → 0 (bisection).
   double stable_dt = 0.0;
+  /// With the first-order upwind stencil only: ln ρ(G)/Δt over the smooth modes (|θ| ≤ kSmoothTheta)
+  /// with the second-order upwind stencil, and the θ of it (0 when not evaluated).
+  double smooth_rate = 0.0;
+  double smooth_theta_x = 0.0, smooth_theta_y = 0.0;
 };
 
 /// Growth rates below tolerance_rate(τ) count as neutral (the conserved modes at k → 0 are 0 to

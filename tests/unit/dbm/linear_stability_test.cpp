@@ -8,9 +8,11 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
+#include "shockfield/dbm/detonation_theory.hpp"
 #include "shockfield/dbm/simulation.hpp"
 
 namespace shockfield::dbm {
@@ -182,6 +184,7 @@ TEST(DbmLinearStability, UnlimitedSecondOrderUpwindIsNotWhatNndDoes) {
   StabilityProblem p = detonation_problem();
   const Macro state{0.92, 0.0, 0.0, 1.25};
   EXPECT_LT(analyse_stability(p, state).discrete_rate, tolerance_rate(p.tau));
+  EXPECT_LT(analyse_stability(p, state).smooth_rate, tolerance_rate(p.tau));  // its growth is not smooth
   p.stencil = Stencil::second_order_upwind;
   const double unlimited = analyse_stability(p, state).semi_discrete_rate;
   EXPECT_NEAR(unlimited, 9.2, 0.1);
@@ -189,6 +192,40 @@ TEST(DbmLinearStability, UnlimitedSecondOrderUpwindIsNotWhatNndDoes) {
   const double measured = measured_growth_rate(p, state, 4.0, &overall, Seed::smooth);
   EXPECT_LT(measured, 0.0);
   EXPECT_LT(overall, 1.0);
+}
+
+TEST(DbmLinearStability, SmoothModesOfTheMovingVonNeumannState) {
+  // The von Neumann state of examples/dbm_detonation (ρ0 = 1, p0 = 0.6, Q = 0.6) moving at u_vN:
+  // the BGK model is unstable there, first-order upwind damps every mode at τ = 2e-3 down to
+  // Δx = 0.0025, but the second-order upwind stencil NND uses on smooth modes lets kΔx ≈ 0.47
+  // grow at Δx = 0.0025, barely at 0.005 (docs/theory/dbm.md, "Smooth modes"). A periodic NND run
+  // (smooth seed, round-off) grows at 3.8 per unit time at Δx = 0.0025 — the limiter clips part of
+  // the second-order stencil's 10.4 — and decays at Δx = 0.005.
+  const GasState vn = chapman_jouguet({1.0, 0.0, 0.6}, 1.4, 0.6).von_neumann;
+  const Macro state{vn.rho, vn.u, 0.0, vn.p / vn.rho};
+  StabilityProblem p = detonation_problem();
+  std::vector<double> measured;
+  for (const double dx : {0.0025, 0.005}) {
+    p.dx = p.dy = dx, p.dt = 0.4 * dx / 4.0;  // courant = 0.4
+    const StabilityReport r = analyse_stability(p, state);
+    EXPECT_NEAR(r.model_rate, 16.8, 0.1);
+    EXPECT_LT(r.discrete_rate, tolerance_rate(p.tau)) << "dx = " << dx;  // what the check saw before
+    EXPECT_LT(r.smooth_theta_x, kSmoothTheta);
+    if (dx == 0.0025) {
+      EXPECT_NEAR(r.smooth_rate, 10.4, 0.1);
+    } else {
+      EXPECT_NEAR(r.smooth_rate, 0.27, 0.01);
+    }
+    double overall = 0.0;
+    measured.push_back(measured_growth_rate(p, state, 8.0, &overall, Seed::smooth));
+    const std::string result =
+        fmt::format("{} measured (growth {} overall), {} predicted smooth", measured.back(), overall, r.smooth_rate);
+    std::printf("dx = %g: %s\n", dx, result.c_str());
+    RecordProperty(fmt::format("dx{}", dx), result);
+  }
+  EXPECT_GT(measured[0], 3.0);
+  EXPECT_LT(measured[0], 10.4);
+  EXPECT_LT(measured[1], 0.0);
 }
 
 TEST(DbmLinearStability, LaxSpeedsStableOverTheLaxTemperatures) {
