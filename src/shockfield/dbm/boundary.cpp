@@ -73,7 +73,12 @@ void check_subsonic_inflow(const Macro& state, int axis, bool high, double gamma
 
 GhostFiller::GhostFiller(const VelocityModel& model, const MomentInversion& inversion, double b,
                          const Lattice& lattice, const Boundaries& boundaries)
-    : model_(model), inversion_(inversion), b_(b), lattice_(lattice), boundaries_(boundaries) {
+    : model_(model),
+      inversion_(inversion),
+      b_(b),
+      gamma_((b + 2.0) / b),
+      lattice_(lattice),
+      boundaries_(boundaries) {
   boundaries_.check();
   for (int axis = 0; axis < 2; ++axis) {
     const auto kind_lo = boundaries_.side[2 * axis].kind;
@@ -83,7 +88,7 @@ GhostFiller::GhostFiller(const VelocityModel& model, const MomentInversion& inve
   }
   for (int side = 0; side < 4; ++side)
     if (boundaries_.side[side].kind == BoundaryKind::subsonic_inflow)
-      check_subsonic_inflow(boundaries_.side[side].state, side / 2, side % 2 == 1, (b + 2.0) / b);
+      check_subsonic_inflow(boundaries_.side[side].state, side / 2, side % 2 == 1, gamma_);
 }
 
 Macro GhostFiller::moments_at(const std::vector<double>& f, std::size_t cell) const {
@@ -128,8 +133,7 @@ void GhostFiller::fill_side(std::vector<double>& f, int side) const {
           for (int k = 0; k < Q; ++k) f[k * N + dst] = ghost_eq[k];
           break;
         case BoundaryKind::subsonic_inflow: {
-          const Macro m = subsonic_inflow_state(bc.state, moments_at(f, cell(nearest)), axis, high,
-                                                (b_ + 2.0) / b_);
+          const Macro m = subsonic_inflow_state(bc.state, moments_at(f, cell(nearest)), axis, high, gamma_);
           inversion_.equilibrium(m.rho, m.ux, m.uy, m.T, b_, ghost_eq.data());
           for (int k = 0; k < Q; ++k) f[k * N + dst] = ghost_eq[k];
           break;

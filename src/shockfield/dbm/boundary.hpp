@@ -61,7 +61,7 @@ class GhostFiller {
 
   const VelocityModel& model_;
   const MomentInversion& inversion_;
-  double b_;
+  double b_, gamma_;  // degrees of freedom b and γ = (b + 2)/b
   Lattice lattice_;
   Boundaries boundaries_;
   std::array<std::vector<int>, 2> mirror_;
