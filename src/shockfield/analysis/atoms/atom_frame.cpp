@@ -47,12 +47,17 @@ AtomFrame frame_from_dump(const io::DumpFrame& dump, const std::string& source) 
   AtomFrame frame;
   frame.timestep = dump.timestep;
   frame.box = dump.box;
+  const std::string where = fmt::format("{} (timestep {})", source, dump.timestep);
   if (dump.natoms() > 0) {
-    frame.positions = dump.positions();
+    try {
+      frame.positions = dump.positions();
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: {}", where, e.what()));
+    }
     if (dump.has("type")) frame.types = dump.types();
     if (dump.has("id")) frame.ids = dump.ids();
   }
-  validate_frame(frame, fmt::format("{} (timestep {})", source, dump.timestep));
+  validate_frame(frame, where);
   return frame;
 }
 

@@ -1,0 +1,288 @@
+// `shockfield analyze atoms`: per-atom structure of atoms from LAMMPS dumps, LAMMPS data files or
+// shockfield MD run folders — coordination, conventional CNA (LAMMPS cna/atom), adaptive CNA
+// (Stukowski 2012), centro-symmetry (Kelchner et al. 1998) and bond-pair types (Honeycutt &
+// Andersen 1987), all over one neighbour pass per frame (analysis/atoms/). Writes each input's
+// frames again with the per-atom results appended as columns (OVITO colours by them) and
+// structures.csv with the counts and fractions per structure per frame. Docs: docs/analysis-atoms.md.
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "shockfield/analysis/atoms/structure_analysis.hpp"
+#include "shockfield/app/commands.hpp"
+#include "shockfield/core/error.hpp"
+#include "shockfield/io/csv_writer.hpp"
+#include "shockfield/io/lammps_data.hpp"
+#include "shockfield/io/lammps_dump.hpp"
+
+namespace shockfield::app {
+namespace {
+
+namespace fs = std::filesystem;
+namespace aa = shockfield::analysis::atoms;
+
+struct AtomsArgs {
+  std::vector<std::string> inputs;
+  std::string output = "analysis";
+  std::string format = "auto";
+  std::string data_boundary = "ppp";
+  std::optional<double> coordination, cna, bond_pairs;
+  bool adaptive_cna = false;
+  std::string csp;
+  int threads = 0;
+};
+
+enum class InputKind { dump, data };
+
+struct InputFile {
+  fs::path path;
+  InputKind kind;
+};
+
+bool looks_like_dump(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("{}: cannot be opened for reading", file.string()));
+  std::string line;
+  while (std::getline(in, line))
+    if (line.find_first_not_of(" \t\r") != std::string::npos) return line.rfind("ITEM:", 0) == 0;
+  throw InputError(fmt::format("{}: the file is empty", file.string()));
+}
+
+// The step number of a run folder's dumps/dump.<step>.<ext>, for ordering.
+long long step_of(const fs::path& file) {
+  const std::string name = file.filename().string();
+  const auto first = name.find('.'), second = name.find('.', first + 1);
+  try {
+    return std::stoll(name.substr(first + 1, second - first - 1));
+  } catch (const std::exception&) {
+    return -1;
+  }
+}
+
+std::vector<InputFile> expand_inputs(const AtomsArgs& a) {
+  std::vector<InputFile> files;
+  for (const std::string& input : a.inputs) {
+    const fs::path path(input);
+    if (fs::is_directory(path)) {
+      const fs::path dumps = path / "dumps";
+      if (!fs::is_directory(dumps))
+        throw InputError(fmt::format("{}: a folder but not a shockfield MD run folder (no dumps/ inside)", input));
+      std::vector<fs::path> series;
+      bool extxyz = false;
+      for (const auto& e : fs::directory_iterator(dumps)) {
+        if (e.path().extension() == ".lammpstrj") series.push_back(e.path());
+        extxyz = extxyz || e.path().extension() == ".xyz";
+      }
+      if (series.empty())
+        throw InputError(fmt::format("{}: no dumps/dump.*.lammpstrj in the run folder{}", input,
+                                     extxyz ? " (its dumps are extended XYZ, which analyze atoms does not read: run "
+                                              "with dump_format = \"lammps\")"
+                                            : ""));
+      std::sort(series.begin(), series.end(), [](const fs::path& x, const fs::path& y) { return step_of(x) < step_of(y); });
+      for (const auto& f : series) files.push_back({f, InputKind::dump});
+      continue;
+    }
+    if (path.extension() == ".gz")
+      throw InputError(fmt::format("{}: gzip-compressed dumps are not read yet; decompress it first (gunzip -k)", input));
+    if (path.extension() == ".xyz" || path.extension() == ".extxyz")
+      throw InputError(fmt::format("{}: extended XYZ input is not read yet (the io/ library only writes it); "
+                                   "convert it to a LAMMPS dump", input));
+    InputKind kind = InputKind::dump;
+    if (a.format == "data" || (a.format == "auto" && !looks_like_dump(path))) kind = InputKind::data;
+    files.push_back({path, kind});
+  }
+  return files;
+}
+
+aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
+  aa::StructureAnalyses s;
+  if (a.coordination) s.coordination = aa::Coordination{*a.coordination};
+  if (a.cna) s.cna = aa::ConventionalCna{*a.cna};
+  if (a.bond_pairs) s.bond_pairs = aa::BondPairAnalysis{*a.bond_pairs};
+  if (!a.csp.empty()) s.centro_symmetry = aa::CentroSymmetry{aa::CentroSymmetry::parse_neighbors(a.csp, "--csp")};
+  if (a.adaptive_cna || s.empty()) s.adaptive_cna = aa::AdaptiveCna{};
+  return s;
+}
+
+std::vector<double> codes(const std::vector<aa::Structure>& s) {
+  std::vector<double> out(s.size());
+  std::transform(s.begin(), s.end(), out.begin(), [](aa::Structure t) { return double(aa::structure_code(t)); });
+  return out;
+}
+
+// Appends the per-atom results to the dump frame as columns coord, cna, acna, csp, bpa.
+void append_columns(io::DumpFrame& dump, const aa::StructureAnalysisResult& r, std::size_t natoms) {
+  if (natoms == 0) return;
+  if (!r.coordination.empty()) dump.set_column("coord", {r.coordination.begin(), r.coordination.end()});
+  if (r.cna) dump.set_column("cna", codes(r.cna->structure));
+  if (r.adaptive_cna) dump.set_column("acna", codes(r.adaptive_cna->structure));
+  if (!r.centro_symmetry.empty()) dump.set_column("csp", r.centro_symmetry);
+  if (r.bond_pairs) dump.set_column("bpa", codes(r.bond_pairs->structure));
+}
+
+// structures.csv columns: frame, timestep, atoms, then <method>_<structure> counts and
+// <method>_<structure>_fraction for each structure method asked for (cna, acna, bpa).
+std::vector<std::string> summary_columns(const aa::StructureAnalyses& s) {
+  std::vector<std::string> columns{"frame", "timestep", "atoms"};
+  for (const auto& [method, on] : {std::pair{"cna", s.cna.has_value()}, std::pair{"acna", s.adaptive_cna.has_value()},
+                                   std::pair{"bpa", s.bond_pairs.has_value()}}) {
+    if (!on) continue;
+    for (aa::Structure t : aa::kStructures) columns.push_back(fmt::format("{}_{}", method, aa::structure_name(t)));
+    for (aa::Structure t : aa::kStructures) columns.push_back(fmt::format("{}_{}_fraction", method, aa::structure_name(t)));
+  }
+  return columns;
+}
+
+std::vector<double> summary_row(std::size_t frame, long long timestep, std::size_t natoms,
+                                const aa::StructureAnalysisResult& r) {
+  std::vector<double> row{double(frame), double(timestep), double(natoms)};
+  auto add = [&row](const aa::StructureCounts& counts) {
+    for (aa::Structure t : aa::kStructures) row.push_back(double(counts.of(t)));
+    for (aa::Structure t : aa::kStructures) row.push_back(counts.fraction(t));
+  };
+  if (r.cna) add(r.cna->counts);
+  if (r.adaptive_cna) add(r.adaptive_cna->counts);
+  if (r.bond_pairs) add(r.bond_pairs->counts);
+  return row;
+}
+
+// Outputs go to <name>.partial and are renamed when every input has been analysed; on an error
+// the partial files (and the output folder, when this command created it) are removed, so
+// nothing half-written is left.
+class PendingOutputs {
+ public:
+  explicit PendingOutputs(const fs::path& folder) : folder_(folder), created_(!fs::exists(folder)) {
+    fs::create_directories(folder);
+  }
+  fs::path add(const fs::path& name) {
+    const fs::path final_path = folder_ / name;
+    if (std::find(finals_.begin(), finals_.end(), final_path) != finals_.end())
+      throw InputError(fmt::format("two inputs would both be written to {}; give inputs with different file names",
+                                   final_path.string()));
+    finals_.push_back(final_path);
+    return final_path.string() + ".partial";
+  }
+  void commit() {
+    for (const auto& f : finals_) fs::rename(f.string() + ".partial", f);
+    finals_.clear();
+    created_ = false;
+  }
+  ~PendingOutputs() {
+    std::error_code ec;
+    for (const auto& f : finals_) fs::remove(f.string() + ".partial", ec);
+    if (created_) fs::remove(folder_, ec);  // only when empty
+  }
+
+ private:
+  fs::path folder_;
+  bool created_;
+  std::vector<fs::path> finals_;
+};
+
+aa::AtomFrame frame_of_data(const io::DataFile& data, const std::string& source) {
+  aa::AtomFrame frame;
+  frame.box = data.box;
+  frame.positions.assign(data.atoms.x.begin(), data.atoms.x.begin() + static_cast<std::ptrdiff_t>(data.atoms.nlocal));
+  for (std::size_t i = 0; i < data.atoms.nlocal; ++i) frame.types.push_back(data.atoms.type[i] + 1);
+  frame.ids = data.atoms.id;
+  aa::validate_frame(frame, source);
+  return frame;
+}
+
+void run_atoms(const AtomsArgs& a) {
+  if (a.threads > 0) omp_set_num_threads(a.threads);
+  const aa::StructureAnalyses analyses = analyses_of(a);
+  std::array<geometry::Boundary, 3> boundary{};
+  if (a.data_boundary.size() != 3)
+    throw InputError(fmt::format("--data-boundary: expected three of p, f, s (e.g. ppf), got '{}'", a.data_boundary));
+  for (int d = 0; d < 3; ++d) boundary[d] = geometry::parse_boundary(std::string(1, a.data_boundary[d]), "--data-boundary");
+  const auto files = expand_inputs(a);
+  if (files.empty()) throw InputError("analyze atoms: no input given");
+
+  const fs::path out_dir(a.output);
+  PendingOutputs pending(out_dir);
+  io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
+  std::size_t frame_index = 0, total_atoms = 0;
+  for (const InputFile& input : files) {
+    const std::string source = input.path.string();
+    fs::path name = input.path.filename();
+    if (input.kind == InputKind::data) name.replace_extension(".dump");
+    if (fs::exists(out_dir / name) && fs::equivalent(out_dir / name, input.path))
+      throw InputError(fmt::format("{}: the output folder holds the input itself; choose another --output", source));
+    io::DumpWriter writer(pending.add(name), io::DumpWriteOptions{true});
+    std::vector<io::DumpFrame> dumps;
+    std::vector<aa::AtomFrame> frames;
+    if (input.kind == InputKind::data) {
+      const io::DataFile data = io::read_data(input.path, boundary);
+      dumps.push_back(io::make_dump_frame(0, data.box, data.atoms, {"id", "type", "x", "y", "z"}));
+      frames.push_back(frame_of_data(data, source));
+    } else {
+      dumps = io::read_dump(input.path);
+      if (dumps.empty()) throw InputError(fmt::format("{}: no frame in the dump file", source));
+    }
+    for (std::size_t f = 0; f < dumps.size(); ++f) {
+      const aa::AtomFrame frame = input.kind == InputKind::data ? frames[f] : aa::frame_from_dump(dumps[f], source);
+      if (frame.size() == 0)
+        throw InputError(fmt::format("{}: the frame of timestep {} has no atoms", source, frame.timestep));
+      const auto result = aa::analyze_structure(frame, analyses);
+      append_columns(dumps[f], result, frame.size());
+      writer.write(dumps[f]);
+      summary.row(summary_row(frame_index++, frame.timestep, frame.size(), result));
+      total_atoms += frame.size();
+    }
+  }
+  pending.commit();
+  std::printf("analysed %zu frames (%zu atoms) from %zu files; wrote %s/structures.csv and the annotated dumps\n",
+              frame_index, total_atoms, files.size(), out_dir.string().c_str());
+}
+
+}  // namespace
+
+void add_analyze_atoms_command(CLI::App* analyze) {
+  auto a = std::make_shared<AtomsArgs>();
+  CLI::App* cmd = analyze->add_subcommand(
+      "atoms",
+      "Per-atom structure of atoms (Xu et al. (2015) §3.2.3, §4.4): coordination, conventional CNA\n"
+      "(LAMMPS cna/atom codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other), adaptive CNA without a cutoff\n"
+      "(Stukowski 2012, the same codes), centro-symmetry parameter (Kelchner et al. 1998, LAMMPS\n"
+      "centro/atom's pairing) and the atom type from Honeycutt-Andersen bond pairs, all from one\n"
+      "neighbour pass per frame. With no analysis option, adaptive CNA. Writes OUTPUT/<input name>\n"
+      "(each input's frames with the results appended as columns coord, cna, acna, csp, bpa; a data\n"
+      "file becomes <stem>.dump) and OUTPUT/structures.csv (frame, timestep, atoms, then per method\n"
+      "the count and fraction of each structure). Inputs: LAMMPS text dumps (one file or several,\n"
+      "frames in order; orthogonal boxes), LAMMPS data files (atom style atomic), shockfield MD run\n"
+      "folders (their dumps/dump.*.lammpstrj in step order). Outputs appear only when every input\n"
+      "was read and analysed. See docs/analysis-atoms.md.");
+  cmd->add_option("inputs", a->inputs, "Dump files, data files or MD run folders")->required()->check(CLI::ExistingPath);
+  cmd->add_option("-o,--output", a->output, "Output folder (created if missing)")->capture_default_str();
+  cmd->add_option("--format", a->format,
+                  "Input file format: auto (a file whose first line starts with ITEM: is a dump, else a data "
+                  "file), dump or data")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "dump", "data"}));
+  cmd->add_option("--data-boundary", a->data_boundary,
+                  "Boundaries of data-file boxes (data files do not store them), one of p f s per axis")
+      ->capture_default_str();
+  cmd->add_option("--coordination", a->coordination, "Coordination number: neighbours closer than this cutoff (Å)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--cna", a->cna,
+                  "Conventional CNA with this cutoff (Å), as LAMMPS cna/atom: 0.854 a for fcc, 1.207 a for bcc")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--adaptive-cna", a->adaptive_cna, "Adaptive CNA (no cutoff; the default analysis)");
+  cmd->add_option("--csp", a->csp, "Centro-symmetry parameter with N neighbours: fcc (12), bcc (8) or an even N");
+  cmd->add_option("--bond-pairs", a->bond_pairs,
+                  "Atom type from Honeycutt-Andersen bond-pair indices of bonds shorter than this cutoff (Å)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("-j,--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->callback([a] { run_atoms(*a); });
+}
+
+}  // namespace shockfield::app
