@@ -49,6 +49,16 @@ awk -F, 'NR == 2 && $3 != 256 { exit 1 } NR == 3 && ($3 != 432 || $5 != 96) { ex
   || fail "run folder rows: $(cat "$WORK/runout/structures.csv")"
 echo "ok: run folder in step order"
 
+# Clusters: the non-fcc (a-CNA) atoms around the 6 Å void of the 300 K fixture are one shell of
+# 122 atoms centred on the void's centre (the box centre, 14.46 Å), within 0.1 Å.
+"$SF" analyze atoms "$F/cu_void_300K.dump" --clusters 3.0858 --cluster-select 'acna:!fcc' --cluster-min-size 5 \
+  -o "$WORK/void" > /dev/null
+[ "$(wc -l < "$WORK/void/clusters.csv")" -eq 2 ] || fail "void clusters: $(cat "$WORK/void/clusters.csv")"
+awk -F, 'NR == 2 { d = 0; for (k = 5; k <= 7; ++k) d += ($k - 14.46) ^ 2; exit !($4 == 122 && d < 0.01) }' \
+  "$WORK/void/clusters.csv" || fail "void cluster: $(sed -n 2p "$WORK/void/clusters.csv")"
+grep -q "ITEM: ATOMS id type x y z c_cna c_csp c_coord acna cluster" "$WORK/void/cu_void_300K.dump" || fail "no cluster column"
+echo "ok: void-surface cluster"
+
 # rejected PATTERN -- ARGS...: must exit 2 with PATTERN in the message and leave no output folder.
 rejected() {
   local pattern="$1"; shift 2
@@ -84,6 +94,9 @@ rejected "triclinic box" -- "$WORK/triclinic.dump"
 gzip -c "$F/cu_fcc_perfect.dump" > "$WORK/cu.dump.gz"
 rejected "cu.dump.gz: gzip-compressed dumps are not read yet" -- "$WORK/cu.dump.gz"
 rejected "--csp: expected fcc, bcc or an even neighbour count" -- "$F/cu_fcc_perfect.dump" --csp 7
+rejected "--cluster-select 'cna:hcp': selecting by cna needs --cna" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select cna:hcp
+rejected "expected cna|acna|bpa:[!]fcc|hcp|bcc|ico|other, or csp>NUMBER" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select acna:diamond
+rejected "--clusters and --cluster-select go together" -- "$F/cu_fcc_perfect.dump" --clusters 3
 mkdir -p "$WORK/notrun"
 rejected "notrun: a folder but not a shockfield MD run folder" -- "$WORK/notrun"
 echo "all analyze atoms checks passed"

@@ -36,6 +36,9 @@ struct AtomsArgs {
   std::optional<double> coordination, cna, bond_pairs;
   bool adaptive_cna = false;
   std::string csp;
+  std::optional<double> clusters;
+  std::string cluster_select;
+  std::size_t cluster_min_size = 1;
   int threads = 0;
 };
 
@@ -101,6 +104,48 @@ std::vector<InputFile> expand_inputs(const AtomsArgs& a) {
   return files;
 }
 
+// --cluster-select: "<cna|acna|bpa>:<structure>", "<method>:!<structure>" (every other type) or
+// "csp><value>"; the analysis it reads must be on (acna is switched on by it).
+aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s) {
+  const std::string what = fmt::format("--cluster-select '{}'", spec);
+  if (spec.rfind("csp>", 0) == 0) {
+    if (!s.centro_symmetry) throw InputError(what + ": selecting by csp needs --csp");
+    double threshold = 0;
+    try {
+      std::size_t used = 0;
+      threshold = std::stod(spec.substr(4), &used);
+      if (used != spec.size() - 4) throw std::invalid_argument(spec);
+    } catch (const std::exception&) {
+      throw InputError(what + ": expected csp>NUMBER (Å²)");
+    }
+    return [threshold](const aa::StructureAnalysisResult& r) {
+      std::vector<bool> out(r.centro_symmetry.size());
+      for (std::size_t i = 0; i < out.size(); ++i) out[i] = r.centro_symmetry[i] > threshold;
+      return out;
+    };
+  }
+  const auto colon = spec.find(':');
+  const std::string method = spec.substr(0, colon);
+  std::string name = colon == std::string::npos ? "" : spec.substr(colon + 1);
+  const bool negate = !name.empty() && name[0] == '!';
+  if (negate) name.erase(0, 1);
+  const auto structure = std::find_if(aa::kStructures.begin(), aa::kStructures.end(),
+                                      [&](aa::Structure t) { return aa::structure_name(t) == name; });
+  if (structure == aa::kStructures.end() || (method != "cna" && method != "acna" && method != "bpa"))
+    throw InputError(what + ": expected cna|acna|bpa:[!]fcc|hcp|bcc|ico|other, or csp>NUMBER");
+  if (method == "cna" && !s.cna) throw InputError(what + ": selecting by cna needs --cna");
+  if (method == "bpa" && !s.bond_pairs) throw InputError(what + ": selecting by bpa needs --bond-pairs");
+  if (method == "acna") s.adaptive_cna = aa::AdaptiveCna{};
+  const aa::Structure wanted = *structure;
+  return [method, wanted, negate](const aa::StructureAnalysisResult& r) {
+    const auto& types = method == "cna" ? r.cna->structure : method == "acna" ? r.adaptive_cna->structure
+                                                                             : r.bond_pairs->structure;
+    std::vector<bool> out(types.size());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = (types[i] == wanted) != negate;
+    return out;
+  };
+}
+
 aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   aa::StructureAnalyses s;
   if (a.coordination) s.coordination = aa::Coordination{*a.coordination};
@@ -108,6 +153,12 @@ aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   if (a.bond_pairs) s.bond_pairs = aa::BondPairAnalysis{*a.bond_pairs};
   if (!a.csp.empty()) s.centro_symmetry = aa::CentroSymmetry{aa::CentroSymmetry::parse_neighbors(a.csp, "--csp")};
   if (a.adaptive_cna || s.empty()) s.adaptive_cna = aa::AdaptiveCna{};
+  if (a.clusters.has_value() != !a.cluster_select.empty())
+    throw InputError("--clusters and --cluster-select go together: the cutoff and which atoms to cluster");
+  if (a.clusters) {
+    s.select = parse_selection(a.cluster_select, s);
+    s.clusters = aa::DefectClusters{*a.clusters, a.cluster_min_size};
+  }
   return s;
 }
 
@@ -125,6 +176,30 @@ void append_columns(io::DumpFrame& dump, const aa::StructureAnalysisResult& r, s
   if (r.adaptive_cna) dump.set_column("acna", codes(r.adaptive_cna->structure));
   if (!r.centro_symmetry.empty()) dump.set_column("csp", r.centro_symmetry);
   if (r.bond_pairs) dump.set_column("bpa", codes(r.bond_pairs->structure));
+  if (r.clusters) {
+    std::vector<double> cluster(natoms);
+    for (std::size_t i = 0; i < natoms; ++i) cluster[i] = r.clusters->cluster_of[i] + 1;
+    dump.set_column("cluster", std::move(cluster));
+  }
+}
+
+// clusters.csv: one row per cluster per frame.
+const std::vector<std::string> kClusterColumns{
+    "frame", "timestep", "cluster", "size", "x", "y", "z", "a", "b", "c", "axis1_x", "axis1_y", "axis1_z",
+    "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y", "axis3_z", "ellipsoid_volume", "ellipsoid_surface",
+    "atomic_volume"};
+
+void write_clusters(io::CsvWriter& out, std::size_t frame, long long timestep, const aa::ClusterResult& r) {
+  for (std::size_t k = 0; k < r.clusters.size(); ++k) {
+    const aa::Cluster& c = r.clusters[k];
+    std::vector<double> row{double(frame), double(timestep), double(k + 1), double(c.size)};
+    for (int d = 0; d < 3; ++d) row.push_back(c.centre[d]);
+    for (int d = 0; d < 3; ++d) row.push_back(c.semi_axes[d]);
+    for (int axis = 0; axis < 3; ++axis)
+      for (int d = 0; d < 3; ++d) row.push_back(c.axes(d, axis));
+    row.insert(row.end(), {c.ellipsoid_volume, c.ellipsoid_surface, c.atomic_volume});
+    out.row(row);
+  }
 }
 
 // structures.csv columns: frame, timestep, atoms, then <method>_<structure> counts and
@@ -209,6 +284,8 @@ void run_atoms(const AtomsArgs& a) {
   const fs::path out_dir(a.output);
   PendingOutputs pending(out_dir);
   io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
+  io::CsvWriter clusters;
+  if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), kClusterColumns);
   std::size_t frame_index = 0, total_atoms = 0;
   for (const InputFile& input : files) {
     const std::string source = input.path.string();
@@ -234,6 +311,7 @@ void run_atoms(const AtomsArgs& a) {
       const auto result = aa::analyze_structure(frame, analyses);
       append_columns(dumps[f], result, frame.size());
       writer.write(dumps[f]);
+      if (result.clusters) write_clusters(clusters, frame_index, frame.timestep, *result.clusters);
       summary.row(summary_row(frame_index++, frame.timestep, frame.size(), result));
       total_atoms += frame.size();
     }
@@ -254,9 +332,10 @@ void add_analyze_atoms_command(CLI::App* analyze) {
       "(Stukowski 2012, the same codes), centro-symmetry parameter (Kelchner et al. 1998, LAMMPS\n"
       "centro/atom's pairing) and the atom type from Honeycutt-Andersen bond pairs, all from one\n"
       "neighbour pass per frame. With no analysis option, adaptive CNA. Writes OUTPUT/<input name>\n"
-      "(each input's frames with the results appended as columns coord, cna, acna, csp, bpa; a data\n"
-      "file becomes <stem>.dump) and OUTPUT/structures.csv (frame, timestep, atoms, then per method\n"
-      "the count and fraction of each structure). Inputs: LAMMPS text dumps (one file or several,\n"
+      "(each input's frames with the results appended as columns coord, cna, acna, csp, bpa, cluster;\n"
+      "a data file becomes <stem>.dump), OUTPUT/structures.csv (frame, timestep, atoms, then per\n"
+      "method the count and fraction of each structure) and, with --clusters, OUTPUT/clusters.csv\n"
+      "(Xu et al. (2015) §4.4.2's central-moment method). Inputs: LAMMPS text dumps (one file or several,\n"
       "frames in order; orthogonal boxes), LAMMPS data files (atom style atomic), shockfield MD run\n"
       "folders (their dumps/dump.*.lammpstrj in step order). Outputs appear only when every input\n"
       "was read and analysed. See docs/analysis-atoms.md.");
@@ -279,6 +358,17 @@ void add_analyze_atoms_command(CLI::App* analyze) {
   cmd->add_option("--csp", a->csp, "Centro-symmetry parameter with N neighbours: fcc (12), bcc (8) or an even N");
   cmd->add_option("--bond-pairs", a->bond_pairs,
                   "Atom type from Honeycutt-Andersen bond-pair indices of bonds shorter than this cutoff (Å)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--clusters", a->clusters,
+                  "Cluster the atoms of --cluster-select: connected when closer than this cutoff (Å); writes "
+                  "OUTPUT/clusters.csv (size, centre, central-moment ellipsoid semi-axes a >= b >= c and axes, "
+                  "ellipsoid volume and surface, atomic volume) and the column cluster (1, 2, ... by size; 0: none)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--cluster-select", a->cluster_select,
+                  "Which atoms to cluster: cna|acna|bpa:TYPE or :!TYPE (TYPE fcc hcp bcc ico other), or csp>VALUE "
+                  "(Å²); e.g. acna:hcp, acna:!fcc");
+  cmd->add_option("--cluster-min-size", a->cluster_min_size, "Drop clusters with fewer atoms")
+      ->capture_default_str()
       ->check(CLI::PositiveNumber);
   cmd->add_option("-j,--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
       ->check(CLI::NonNegativeNumber);
