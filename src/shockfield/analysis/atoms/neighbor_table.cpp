@@ -53,8 +53,7 @@ NeighborTable::NeighborTable(const AtomFrame& frame, const NeighborRequest& requ
   neighbors_ = std::move(list.neighbors);
   reach_.assign(nlocal_, cutoff);
 
-  // Nearest first; ties (exact in perfect lattices) by owner, then by entry, so the order depends
-  // on the positions only.
+  // Each atom's neighbours nearest first (sort_nearest).
   const auto n = static_cast<std::ptrdiff_t>(nlocal_);
 #pragma omp parallel
   {
