@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/app/commands.hpp"
@@ -48,6 +49,24 @@ struct InputFile {
   fs::path path;
   InputKind kind;
 };
+
+// The frames of a dump file; a .gz file is decompressed by the system's gzip (gzip -dc) into
+// memory first (read_dump holds every frame in memory anyway).
+std::vector<io::DumpFrame> read_dump_file(const fs::path& file) {
+  if (file.extension() != ".gz") return io::read_dump(file);
+  const std::string name = file.string();
+  if (name.find('\'') != std::string::npos)
+    throw InputError(fmt::format("{}: a .gz file name with a quote cannot be passed to gzip; rename it", name));
+  FILE* pipe = popen(("gzip -dc -- '" + name + "' 2>/dev/null").c_str(), "r");
+  if (!pipe) throw InputError(fmt::format("{}: cannot start gzip to decompress it", name));
+  std::string text;
+  char buffer[1 << 16];
+  for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) text.append(buffer, got);
+  if (pclose(pipe) != 0)
+    throw InputError(fmt::format("{}: gzip -dc failed: not a gzip file, or a truncated or corrupt one", name));
+  std::istringstream in(text);
+  return io::read_dump(in, name);
+}
 
 bool looks_like_dump(const fs::path& file) {
   std::ifstream in(file);
@@ -92,8 +111,10 @@ std::vector<InputFile> expand_inputs(const AtomsArgs& a) {
       for (const auto& f : series) files.push_back({f, InputKind::dump});
       continue;
     }
-    if (path.extension() == ".gz")
-      throw InputError(fmt::format("{}: gzip-compressed dumps are not read yet; decompress it first (gunzip -k)", input));
+    if (path.extension() == ".gz") {  // a gzip-compressed dump (LAMMPS dump custom/gz, or gzip'ed later)
+      files.push_back({path, InputKind::dump});
+      continue;
+    }
     if (path.extension() == ".xyz" || path.extension() == ".extxyz")
       throw InputError(fmt::format("{}: extended XYZ input is not read yet (the io/ library only writes it); "
                                    "convert it to a LAMMPS dump", input));
@@ -291,6 +312,7 @@ void run_atoms(const AtomsArgs& a) {
     const std::string source = input.path.string();
     fs::path name = input.path.filename();
     if (input.kind == InputKind::data) name.replace_extension(".dump");
+    if (name.extension() == ".gz") name.replace_extension();  // written uncompressed
     if (fs::exists(out_dir / name) && fs::equivalent(out_dir / name, input.path))
       throw InputError(fmt::format("{}: the output folder holds the input itself; choose another --output", source));
     io::DumpWriter writer(pending.add(name), io::DumpWriteOptions{true});
@@ -301,7 +323,7 @@ void run_atoms(const AtomsArgs& a) {
       dumps.push_back(io::make_dump_frame(0, data.box, data.atoms, {"id", "type", "x", "y", "z"}));
       frames.push_back(frame_of_data(data, source));
     } else {
-      dumps = io::read_dump(input.path);
+      dumps = read_dump_file(input.path);
       if (dumps.empty()) throw InputError(fmt::format("{}: no frame in the dump file", source));
     }
     for (std::size_t f = 0; f < dumps.size(); ++f) {
@@ -335,10 +357,11 @@ void add_analyze_atoms_command(CLI::App* analyze) {
       "(each input's frames with the results appended as columns coord, cna, acna, csp, bpa, cluster;\n"
       "a data file becomes <stem>.dump), OUTPUT/structures.csv (frame, timestep, atoms, then per\n"
       "method the count and fraction of each structure) and, with --clusters, OUTPUT/clusters.csv\n"
-      "(Xu et al. (2015) §4.4.2's central-moment method). Inputs: LAMMPS text dumps (one file or several,\n"
-      "frames in order; orthogonal boxes), LAMMPS data files (atom style atomic), shockfield MD run\n"
-      "folders (their dumps/dump.*.lammpstrj in step order). Outputs appear only when every input\n"
-      "was read and analysed. See docs/analysis-atoms.md.");
+      "(Xu et al. (2015) §4.4.2's central-moment method). \n"
+      "Inputs: LAMMPS text dumps (one file or several, frames in order; orthogonal boxes; .gz\n"
+      "through gzip, written back uncompressed), LAMMPS data files (atom style atomic), shockfield\n"
+      "MD run folders (their dumps/dump.*.lammpstrj in step order). Outputs appear only when every\n"
+      "input was read and analysed. See docs/analysis-atoms.md.");
   cmd->add_option("inputs", a->inputs, "Dump files, data files or MD run folders")->required()->check(CLI::ExistingPath);
   cmd->add_option("-o,--output", a->output, "Output folder (created if missing)")->capture_default_str();
   cmd->add_option("--format", a->format,
