@@ -64,5 +64,11 @@ TEST(NeighborTable, WidensForAtomsShortOfTheCount) {
     EXPECT_NEAR(table.delta(last, table.of(last)[k]).squaredNorm(), d2[k], 1e-12) << k;
 }
 
+TEST(NeighborTable, EmptyFrame) {
+  const NeighborTable table(AtomFrame{}, {3.0, 12});
+  EXPECT_EQ(table.size(), 0u);
+  EXPECT_EQ(table.entries(), 0u);
+}
+
 }  // namespace
 }  // namespace shockfield::analysis::atoms

@@ -41,15 +41,16 @@ NeighborTable::NeighborTable(const AtomFrame& frame, const NeighborRequest& requ
   if (request.cutoff < 0 || request.min_neighbors < 0 || (request.cutoff == 0 && request.min_neighbors == 0))
     throw InputError(fmt::format("neighbour request needs a positive cutoff or neighbour count (got cutoff {}, "
                                  "count {})", request.cutoff, request.min_neighbors));
+  offset_.assign(1, 0);
+  if (nlocal_ == 0) return;  // nothing to search
   const double cutoff = std::max(request.cutoff, density_cutoff(frame, request.min_neighbors));
   md::Atoms atoms = owned_atoms(frame);
-  if (nlocal_ > 0) md::rebuild_ghosts(atoms, frame.box, cutoff);
+  md::rebuild_ghosts(atoms, frame.box, cutoff);
   points_ = std::move(atoms.x);
   ghost_owner_ = std::move(atoms.ghost_owner);
   geometry::NeighborList list;
   geometry::build_neighbor_list(points_, nlocal_, cutoff, /*half=*/false, list);
   offset_ = std::move(list.offset);
-  if (offset_.empty()) offset_.assign(1, 0);
   neighbors_ = std::move(list.neighbors);
   reach_.assign(nlocal_, cutoff);
 
