@@ -9,6 +9,8 @@ namespace shockfield::app {
 void add_run_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
+/// `analyze atoms`, attached to the analyze subcommand by add_analyze_command.
+void add_analyze_atoms_command(CLI::App* analyze);
 void add_hugoniot_command(CLI::App& app);
 
 }  // namespace shockfield::app
