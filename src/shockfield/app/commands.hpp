@@ -10,5 +10,6 @@ void add_run_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 void add_hugoniot_command(CLI::App& app);
+void add_analyze_geometry_command(CLI::App& analyze);
 
 }  // namespace shockfield::app
