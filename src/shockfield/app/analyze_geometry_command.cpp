@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
@@ -13,6 +14,7 @@
 #include "shockfield/geometry/delaunay_clusters.hpp"
 #include "shockfield/geometry/delaunay_output.hpp"
 #include "shockfield/geometry/point_file.hpp"
+#include "shockfield/geometry/rolling_ball.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -26,6 +28,7 @@ struct GeometryArgs {
   int dimension = 3;
   int frame = 0;
   double cluster_distance = 0.0;  // 0: no clusters
+  double ball_radius = 0.0;       // 0: no rolling-ball surface (3D only)
   std::string rule = "both";
   bool check = false;
   bool no_mesh = false;
@@ -47,6 +50,13 @@ void run_geometry(const GeometryArgs& a) {
       clusterings.emplace_back("single_linkage",
                                sg::single_linkage_clusters<N>(division, a.cluster_distance));
   }
+  std::optional<sg::TriangleSurface> surface;
+  if (a.ball_radius > 0.0) {
+    if constexpr (N == 3)
+      surface = sg::rolling_ball_surface(division, a.ball_radius);
+    else
+      throw InputError("--ball-radius: the rolling-ball surface needs --dimension 3");
+  }
   // Everything is computed: only now create the output folder.
   fs::create_directories(a.output);
   const fs::path out(a.output);
@@ -62,6 +72,14 @@ void run_geometry(const GeometryArgs& a) {
       division.duplicates, division.simplices.size(), N == 2 ? "area" : "volume",
       sg::total_volume<N>(division));
   if (a.check) summary += "check passed\n";
+  if (surface) {
+    sg::write_surface_vtp(out / "surface.vtp", surface->points, surface->triangles);
+    summary += fmt::format(
+        "surface_triangles {}\nsurface_area {:.12g}\nsurface_volume {:.12g}\n"
+        "surface_euler_characteristic {}\nsurface_manifold {}\n",
+        surface->triangles.size(), surface->area, surface->volume, surface->euler_characteristic,
+        surface->manifold ? "yes" : "no");
+  }
   for (const auto& [name, c] : clusterings) {
     std::size_t largest = 0;
     for (std::size_t s : c.size) largest = std::max(largest, s);
@@ -70,8 +88,9 @@ void run_geometry(const GeometryArgs& a) {
   }
   std::ofstream(out / "summary.txt") << summary;
   std::fputs(summary.c_str(), stdout);
-  std::printf("wrote %s%s%s in %s\n", a.no_mesh ? "" : "delaunay.vtu, ",
-              clusterings.empty() ? "" : "clusters.csv, ", "summary.txt", a.output.c_str());
+  std::printf("wrote %s%s%ssummary.txt in %s\n", a.no_mesh ? "" : "delaunay.vtu, ",
+              clusterings.empty() ? "" : "clusters.csv, ", surface ? "surface.vtp, " : "",
+              a.output.c_str());
 }
 
 }  // namespace
@@ -85,7 +104,8 @@ void add_analyze_geometry_command(CLI::App& analyze) {
       "such as lattices is triangulated validly; duplicate points are merged). Writes\n"
       "OUTPUT/delaunay.vtu (ParaView; cell data volume, point data cluster labels),\n"
       "OUTPUT/clusters.csv (index, coordinates, one label column per rule) when\n"
-      "--cluster-distance is given, and OUTPUT/summary.txt. Input: CSV/text (x,y[,z] by header\n"
+      "--cluster-distance is given, OUTPUT/surface.vtp with --ball-radius (rolling-ball\n"
+      "surface), and OUTPUT/summary.txt. Input: CSV/text (x,y[,z] by header\n"
       "name or the first columns), .xyz (count, comment, 'species x y z' lines) or a LAMMPS text\n"
       "dump. See docs/geometry-giso.md.");
   cmd->add_option("points", a->input, "Point file (.csv/.txt, .xyz, or a LAMMPS dump)")
@@ -107,6 +127,11 @@ void add_analyze_geometry_command(CLI::App& analyze) {
                   "face-connected sets), single-linkage (Delaunay edges shorter than d), or both")
       ->capture_default_str()
       ->check(CLI::IsMember({"seed", "single-linkage", "both"}));
+  cmd->add_option("-r,--ball-radius", a->ball_radius,
+                  "Radius of the rolling ball (3D): writes surface.vtp, the closed, outward "
+                  "oriented surface the ball touches rolled from outside, with its area, "
+                  "enclosed volume and Euler characteristic in summary.txt")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--check", a->check,
                 "Check the division exactly (orientation, neighbour links, empty circumspheres) "
                 "before writing");

@@ -55,6 +55,37 @@ void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivisio
   if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
 }
 
+void write_surface_vtp(const std::filesystem::path& file,
+                       const std::vector<std::array<double, 3>>& points,
+                       const std::vector<std::array<std::int32_t, 3>>& triangles) {
+  // Only the points the triangles use, renumbered.
+  std::vector<std::int32_t> index(points.size(), -1);
+  std::vector<std::int32_t> used;
+  for (const auto& t : triangles)
+    for (std::int32_t v : t)
+      if (index[v] < 0) {
+        index[v] = static_cast<std::int32_t>(used.size());
+        used.push_back(v);
+      }
+  auto out = open_for_writing(file);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PolyData>\n";
+  out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfPolys=\"{}\">\n", used.size(),
+                     triangles.size());
+  out << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+         "format=\"ascii\">\n";
+  for (std::int32_t v : used)
+    out << fmt::format("{:.17g} {:.17g} {:.17g}\n", points[v][0], points[v][1], points[v][2]);
+  out << "        </DataArray>\n      </Points>\n      <Polys>\n";
+  out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (const auto& t : triangles) out << index[t[0]] << ' ' << index[t[1]] << ' ' << index[t[2]] << '\n';
+  out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
+         "format=\"ascii\">\n";
+  for (std::size_t c = 0; c < triangles.size(); ++c) out << 3 * (c + 1) << '\n';
+  out << "        </DataArray>\n      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
+}
+
 template <int N>
 void write_clusters_csv(const std::filesystem::path& file, const DelaunayDivision<N>& d,
                         const std::vector<std::pair<std::string, const PointClusters*>>& clusterings) {

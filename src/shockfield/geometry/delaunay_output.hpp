@@ -1,7 +1,7 @@
 #pragma once
 // Files of a Delaunay division for ParaView and scripts: the mesh as VTK XML UnstructuredGrid
 // (.vtu, ASCII; triangles or tetrahedra, cell data "volume", optional point data arrays) and
-// per-point cluster labels as CSV.
+// per-point cluster labels as CSV; triangle surfaces as .vtp.
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -18,6 +18,11 @@ using PointArrays = std::vector<std::pair<std::string, std::vector<double>>>;
 template <int N>
 void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivision<N>& d,
                         const PointArrays& point_data = {});
+
+/// A triangle surface as VTK XML PolyData (.vtp, ASCII polygons) for ParaView.
+void write_surface_vtp(const std::filesystem::path& file,
+                       const std::vector<std::array<double, 3>>& points,
+                       const std::vector<std::array<std::int32_t, 3>>& triangles);
 
 /// CSV: index,x,y[,z],<one column per named clustering>; the header names the columns.
 template <int N>
