@@ -345,9 +345,9 @@ void run_atoms(const AtomsArgs& a) {
 
 }  // namespace
 
-void add_analyze_atoms_command(CLI::App* analyze) {
+void add_analyze_atoms_command(CLI::App& analyze) {
   auto a = std::make_shared<AtomsArgs>();
-  CLI::App* cmd = analyze->add_subcommand(
+  CLI::App* cmd = analyze.add_subcommand(
       "atoms",
       "Per-atom structure of atoms (Xu et al. (2015) §3.2.3, §4.4): coordination, conventional CNA\n"
       "(LAMMPS cna/atom codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other), adaptive CNA without a cutoff\n"

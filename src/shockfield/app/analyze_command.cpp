@@ -382,7 +382,8 @@ void add_analyze_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   stats->callback([tc, bins] { run_stats(*tc, *bins); });
-  add_analyze_atoms_command(analyze);
+  add_analyze_atoms_command(*analyze);
+  add_analyze_geometry_command(*analyze);
 }
 
 }  // namespace shockfield::app

@@ -10,7 +10,8 @@ void add_run_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 /// `analyze atoms`, attached to the analyze subcommand by add_analyze_command.
-void add_analyze_atoms_command(CLI::App* analyze);
+void add_analyze_atoms_command(CLI::App& analyze);
 void add_hugoniot_command(CLI::App& app);
+void add_analyze_geometry_command(CLI::App& analyze);
 
 }  // namespace shockfield::app

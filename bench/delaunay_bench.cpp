@@ -1,0 +1,125 @@
+// GISO benchmark (bench/RESULTS.md "## GISO"): Delaunay division and SHT queries.
+//   delaunay_bench generate DIM N FILE   uniform random points in the unit cube, CSV (seeded)
+//   delaunay_bench delaunay DIM FILE     time of our Delaunay division of the points of FILE
+//   delaunay_bench queries N Q           nearest and radius query rates of the SHT beside
+//                                        nanoflann's kd-tree on the same N points, Q queries;
+//                                        the answers are compared (must be equal)
+// bench/delaunay_compare.sh runs these beside CGAL (cgal_delaunay_peer) and SciPy/Qhull.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <nanoflann.hpp>
+#include <random>
+#include <string>
+
+#include "shockfield/geometry/delaunay.hpp"
+#include "shockfield/geometry/point_file.hpp"
+#include "shockfield/geometry/space_tree.hpp"
+#include "shockfield/geometry/space_tree_queries.hpp"
+
+namespace sg = shockfield::geometry;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::vector<std::array<double, 3>> uniform(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::array<double, 3>> p(n);
+  for (auto& x : p) x = {u(rng), u(rng), u(rng)};
+  return p;
+}
+
+template <int N>
+int delaunay(const std::string& file) {
+  const auto pts = sg::read_points<N>(file);
+  const auto t0 = Clock::now();
+  const auto d = sg::delaunay_division<N>(pts, file);
+  std::printf("shockfield %dd points %zu simplices %zu seconds %.3f\n", N, pts.size(),
+              d.simplices.size(), seconds_since(t0));
+  return 0;
+}
+
+struct Cloud {  // nanoflann's dataset adaptor
+  const std::vector<std::array<double, 3>>& p;
+  std::size_t kdtree_get_point_count() const { return p.size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t k) const { return p[i][k]; }
+  template <class B>
+  bool kdtree_get_bbox(B&) const { return false; }
+};
+
+int queries(std::size_t n, std::size_t q) {
+  const auto pts = uniform(n, 1), qs = uniform(q, 2);
+  const double r = std::cbrt(30.0 / (4.18879 * n));  // about 30 points per ball
+  auto t0 = Clock::now();
+  auto adaptor = sg::points_adaptor<3>(n, [&](std::size_t i, int k) { return pts[i][k]; });
+  const auto tree = sg::SpaceTree<3, decltype(adaptor)>::with_all(adaptor);
+  const double sht_build = seconds_since(t0);
+  t0 = Clock::now();
+  const Cloud cloud{pts};
+  using Kd = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud,
+                                                  3, std::uint32_t>;
+  Kd kd(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  const double kd_build = seconds_since(t0);
+  std::vector<double> sht_nn(q), kd_nn(q);
+  t0 = Clock::now();
+  for (std::size_t i = 0; i < q; ++i) sht_nn[i] = sg::nearest<3>(tree, qs[i]).distance;
+  const double sht_nearest = seconds_since(t0);
+  t0 = Clock::now();
+  for (std::size_t i = 0; i < q; ++i) {
+    std::uint32_t idx;
+    double d2;
+    kd.knnSearch(qs[i].data(), 1, &idx, &d2);
+    kd_nn[i] = std::sqrt(d2);
+  }
+  const double kd_nearest = seconds_since(t0);
+  std::size_t sht_found = 0, kd_found = 0;
+  t0 = Clock::now();
+  for (std::size_t i = 0; i < q; ++i) sht_found += sg::within_radius<3>(tree, qs[i], r).size();
+  const double sht_radius = seconds_since(t0);
+  t0 = Clock::now();
+  std::vector<std::pair<std::uint32_t, double>> found;  // nanoflann 1.4 (Debian 12)
+  for (std::size_t i = 0; i < q; ++i)
+    kd_found += kd.radiusSearch(qs[i].data(), r * r, found, nanoflann::SearchParams(32, 0.0f, false));
+  const double kd_radius = seconds_since(t0);
+  std::size_t mismatches = 0;
+  for (std::size_t i = 0; i < q; ++i) mismatches += sht_nn[i] != kd_nn[i];
+  std::printf("points %zu queries %zu radius %.5g\n", n, q, r);
+  std::printf("build: sht %.3f s, nanoflann %.3f s\n", sht_build, kd_build);
+  std::printf("nearest: sht %.3g /s, nanoflann %.3g /s, ratio %.2f, mismatches %zu\n",
+              q / sht_nearest, q / kd_nearest, kd_nearest / sht_nearest, mismatches);
+  std::printf("radius: sht %.3g /s, nanoflann %.3g /s, ratio %.2f, found %zu vs %zu\n",
+              q / sht_radius, q / kd_radius, kd_radius / sht_radius, sht_found, kd_found);
+  return mismatches == 0 && sht_found == kd_found ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  try {
+    if (mode == "generate" && argc == 5) {
+      const int dim = std::stoi(argv[2]);
+      std::ofstream out(argv[4]);
+      out << (dim == 2 ? "x,y\n" : "x,y,z\n");
+      for (const auto& p : uniform(std::stoull(argv[3]), 7))
+        out << (dim == 2 ? fmt::format("{:.17g},{:.17g}\n", p[0], p[1])
+                         : fmt::format("{:.17g},{:.17g},{:.17g}\n", p[0], p[1], p[2]));
+      return 0;
+    }
+    if (mode == "delaunay" && argc == 4) return argv[2][0] == '2' ? delaunay<2>(argv[3]) : delaunay<3>(argv[3]);
+    if (mode == "queries" && argc == 4) return queries(std::stoull(argv[2]), std::stoull(argv[3]));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  std::fprintf(stderr,
+               "usage: delaunay_bench generate DIM N FILE | delaunay DIM FILE | queries N Q\n");
+  return 2;
+}

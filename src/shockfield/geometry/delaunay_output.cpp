@@ -1,0 +1,114 @@
+// Delaunay mesh and cluster files (delaunay_output.hpp).
+#include "shockfield/geometry/delaunay_output.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+#include "shockfield/core/error.hpp"
+
+namespace shockfield::geometry {
+namespace {
+
+std::ofstream open_for_writing(const std::filesystem::path& file) {
+  std::ofstream out(file);
+  if (!out) throw InputError(fmt::format("{}: cannot open for writing", file.string()));
+  return out;
+}
+
+}  // namespace
+
+template <int N>
+void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivision<N>& d,
+                        const PointArrays& point_data) {
+  auto out = open_for_writing(file);
+  const std::size_t np = d.points.size(), nc = d.simplices.size();
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n";
+  out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", np, nc);
+  out << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+         "format=\"ascii\">\n";
+  for (const auto& p : d.points)
+    out << fmt::format("{:.17g} {:.17g} {:.17g}\n", p[0], p[1], N == 3 ? p[N - 1] : 0.0);
+  out << "        </DataArray>\n      </Points>\n      <Cells>\n";
+  out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (const auto& s : d.simplices) {
+    for (int i = 0; i <= N; ++i) out << s[i] << (i < N ? ' ' : '\n');
+  }
+  out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
+         "format=\"ascii\">\n";
+  for (std::size_t c = 0; c < nc; ++c) out << (c + 1) * (N + 1) << '\n';
+  out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
+         "format=\"ascii\">\n";
+  const int vtk_type = N == 2 ? 5 : 10;  // VTK_TRIANGLE, VTK_TETRA
+  for (std::size_t c = 0; c < nc; ++c) out << vtk_type << '\n';
+  out << "        </DataArray>\n      </Cells>\n      <CellData Scalars=\"volume\">\n";
+  out << "        <DataArray type=\"Float64\" Name=\"volume\" format=\"ascii\">\n";
+  for (std::size_t c = 0; c < nc; ++c) out << fmt::format("{:.12g}\n", simplex_volume<N>(d, c));
+  out << "        </DataArray>\n      </CellData>\n      <PointData>\n";
+  for (const auto& [name, values] : point_data) {
+    out << fmt::format("        <DataArray type=\"Float64\" Name=\"{}\" format=\"ascii\">\n", name);
+    for (double v : values) out << fmt::format("{:.12g}\n", v);
+    out << "        </DataArray>\n";
+  }
+  out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+  if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
+}
+
+void write_surface_vtp(const std::filesystem::path& file,
+                       const std::vector<std::array<double, 3>>& points,
+                       const std::vector<std::array<std::int32_t, 3>>& triangles) {
+  // Only the points the triangles use, renumbered.
+  std::vector<std::int32_t> index(points.size(), -1);
+  std::vector<std::int32_t> used;
+  for (const auto& t : triangles)
+    for (std::int32_t v : t)
+      if (index[v] < 0) {
+        index[v] = static_cast<std::int32_t>(used.size());
+        used.push_back(v);
+      }
+  auto out = open_for_writing(file);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PolyData>\n";
+  out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfPolys=\"{}\">\n", used.size(),
+                     triangles.size());
+  out << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+         "format=\"ascii\">\n";
+  for (std::int32_t v : used)
+    out << fmt::format("{:.17g} {:.17g} {:.17g}\n", points[v][0], points[v][1], points[v][2]);
+  out << "        </DataArray>\n      </Points>\n      <Polys>\n";
+  out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (const auto& t : triangles) out << index[t[0]] << ' ' << index[t[1]] << ' ' << index[t[2]] << '\n';
+  out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
+         "format=\"ascii\">\n";
+  for (std::size_t c = 0; c < triangles.size(); ++c) out << 3 * (c + 1) << '\n';
+  out << "        </DataArray>\n      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
+}
+
+template <int N>
+void write_clusters_csv(const std::filesystem::path& file, const DelaunayDivision<N>& d,
+                        const std::vector<std::pair<std::string, const PointClusters*>>& clusterings) {
+  auto out = open_for_writing(file);
+  out << "index," << (N == 2 ? "x,y" : "x,y,z");
+  for (const auto& [name, c] : clusterings) out << ',' << name;
+  out << '\n';
+  for (std::size_t i = 0; i < d.points.size(); ++i) {
+    out << i;
+    for (double x : d.points[i]) out << fmt::format(",{:.17g}", x);
+    for (const auto& [name, c] : clusterings) out << ',' << c->label[i];
+    out << '\n';
+  }
+  if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
+}
+
+template void write_delaunay_vtu<2>(const std::filesystem::path&, const DelaunayDivision<2>&,
+                                    const PointArrays&);
+template void write_delaunay_vtu<3>(const std::filesystem::path&, const DelaunayDivision<3>&,
+                                    const PointArrays&);
+template void write_clusters_csv<2>(const std::filesystem::path&, const DelaunayDivision<2>&,
+                                    const std::vector<std::pair<std::string, const PointClusters*>>&);
+template void write_clusters_csv<3>(const std::filesystem::path&, const DelaunayDivision<3>&,
+                                    const std::vector<std::pair<std::string, const PointClusters*>>&);
+
+}  // namespace shockfield::geometry

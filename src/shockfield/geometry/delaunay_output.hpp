@@ -1,0 +1,32 @@
+#pragma once
+// Files of a Delaunay division for ParaView and scripts: the mesh as VTK XML UnstructuredGrid
+// (.vtu, ASCII; triangles or tetrahedra, cell data "volume", optional point data arrays) and
+// per-point cluster labels as CSV; triangle surfaces as .vtp.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "shockfield/geometry/delaunay.hpp"
+#include "shockfield/geometry/delaunay_clusters.hpp"
+
+namespace shockfield::geometry {
+
+/// Point data arrays: name and one value per point.
+using PointArrays = std::vector<std::pair<std::string, std::vector<double>>>;
+
+template <int N>
+void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivision<N>& d,
+                        const PointArrays& point_data = {});
+
+/// A triangle surface as VTK XML PolyData (.vtp, ASCII polygons) for ParaView.
+void write_surface_vtp(const std::filesystem::path& file,
+                       const std::vector<std::array<double, 3>>& points,
+                       const std::vector<std::array<std::int32_t, 3>>& triangles);
+
+/// CSV: index,x,y[,z],<one column per named clustering>; the header names the columns.
+template <int N>
+void write_clusters_csv(const std::filesystem::path& file, const DelaunayDivision<N>& d,
+                        const std::vector<std::pair<std::string, const PointClusters*>>& clusterings);
+
+}  // namespace shockfield::geometry

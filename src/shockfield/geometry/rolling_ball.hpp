@@ -1,0 +1,37 @@
+#pragma once
+// The rolling-ball surface of a 3D point set (Xu et al. 2015 §3.2.3, "Rolling-ball method for
+// finding interfaces"): the triangles whose three points a ball of radius r, rolled over the points
+// from outside, touches at once. Computed here from the Delaunay division rather than by the seed's
+// pivot searches (MS1/MS3/CS1, not implemented): an empty ball of radius r can sit at the
+// circumcentre of a tetrahedron whose circumradius exceeds r, and can move between two neighbouring
+// tetrahedra along the Voronoi edge of their common face when every point of that edge stays at
+// least r from the face's vertices (the smallest distance on the edge is the face's circumradius
+// when the edge crosses the face's plane, else the smaller circumradius at its ends). The balls
+// reachable from infinity form the exterior E; the surface is every face across which a ball in E
+// is stopped, oriented with its normal towards E — where the ball stops on a face it touches the
+// face's three vertices, as the seed's rolling ball does. As the boundary of a set of cells (a face
+// blocked between two cells of E counts once from each side), the surface is always closed.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "shockfield/geometry/delaunay.hpp"
+
+namespace shockfield::geometry {
+
+struct TriangleSurface {
+  std::vector<std::array<double, 3>> points;  ///< the division's points (indices below refer here)
+  std::vector<std::array<std::int32_t, 3>> triangles;  ///< normals (right-hand rule) point outwards
+  double area = 0.0;
+  double volume = 0.0;  ///< enclosed volume (divergence theorem over the oriented triangles)
+  std::int64_t euler_characteristic = 0;  ///< V − E + F of the triangles
+  /// Every edge on exactly two triangles, once in each direction (edge-manifold, consistently oriented).
+  bool manifold = false;
+};
+
+/// The surface touched by a ball of radius `radius` rolled from outside. Throws InputError for a
+/// radius that is not positive and finite, and when the ball passes everywhere between the points
+/// (no surface: the radius is too small for the point spacing).
+TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius);
+
+}  // namespace shockfield::geometry

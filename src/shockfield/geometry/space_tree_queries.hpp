@@ -1,0 +1,70 @@
+#pragma once
+// Proximity queries on the SHT, built on its two generic searches: the seed's minimum searcher
+// MS2 (nearest object to a point, Xu et al. 2015 §3.2.3 (II)) and its k-nearest generalisation,
+// and a radius query as a conditional search. Distances are to an object's bounding box (0 inside
+// it), which for points is the distance to the point. MS2's range functions use the cube's box
+// rather than its circumsphere (m(b) = distance to the box <= the seed's |c_b − r_o| − √3 d_b),
+// a tighter bound with the same meaning.
+#include <cmath>
+#include <vector>
+
+#include "shockfield/geometry/space_tree.hpp"
+
+namespace shockfield::geometry {
+
+/// Squared distance from q to the box of object id.
+template <int N, class Tree>
+double box_distance2(const Tree& tree, typename Tree::Id id, const std::array<double, N>& q) {
+  std::array<double, N> lo, hi;
+  tree.objects().bounds(id, lo, hi);
+  double d2 = 0.0;
+  for (int k = 0; k < N; ++k) {
+    const double d = std::max({lo[k] - q[k], q[k] - hi[k], 0.0});
+    d2 += d * d;
+  }
+  return d2;
+}
+
+struct Neighbour {
+  double distance;
+  std::uint32_t id;
+};
+
+/// The k objects nearest to q, nearest first (MS2 for k = 1).
+template <int N, class Tree>
+std::vector<Neighbour> k_nearest(const Tree& tree, const std::array<double, N>& q, std::size_t k) {
+  const auto found = tree.minimum_search(
+      k,
+      [&](const TreeCube<N>& cube) {
+        return std::pair{cube.distance2_to(q), cube.farthest2_from(q)};
+      },
+      [&](typename Tree::Id id) { return box_distance2<N>(tree, id, q); });
+  std::vector<Neighbour> out;
+  out.reserve(found.size());
+  for (const auto& f : found) out.push_back({std::sqrt(f.value), f.id});
+  return out;
+}
+
+/// The nearest object to q (MS2); distance +inf and id 0 for an empty tree.
+template <int N, class Tree>
+Neighbour nearest(const Tree& tree, const std::array<double, N>& q) {
+  const auto found = k_nearest<N>(tree, q, 1);
+  return found.empty() ? Neighbour{std::numeric_limits<double>::infinity(), 0} : found.front();
+}
+
+/// Every object whose box comes within distance r of q (<= r), in no particular order.
+template <int N, class Tree>
+std::vector<std::uint32_t> within_radius(const Tree& tree, const std::array<double, N>& q,
+                                         double r) {
+  std::vector<std::uint32_t> out;
+  const double r2 = r * r;
+  tree.conditional_search([&](const TreeCube<N>& cube) { return cube.distance2_to(q) <= r2; },
+                          [&](typename Tree::Id id) { return box_distance2<N>(tree, id, q) <= r2; },
+                          [&](typename Tree::Id id) {
+                            out.push_back(id);
+                            return true;
+                          });
+  return out;
+}
+
+}  // namespace shockfield::geometry

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# `shockfield analyze geometry`: the Delaunay division of the 8 corners of a unit cube plus its
+# centre (total volume 1 exactly, every tetrahedron checked), clusters of two separated pairs
+# (seed rule 1 cluster, single linkage 2), the rolling-ball surface of the cube (its hull: 12
+# triangles, area 6, volume 1, χ = 2), a LAMMPS dump and an .xyz file as input, and bad input
+# (NaN coordinate, fewer points than a simplex, coplanar points in 3D, collinear in 2D, a ball
+# radius too small to find a surface): one clear
+# message, exit code 2, no output folder.
+source "$(dirname "$0")/lib.bash"
+set -e
+printf 'x,y,z\n0,0,0\n1,0,0\n0,1,0\n1,1,0\n0,0,1\n1,0,1\n0,1,1\n1,1,1\n0.5,0.5,0.5\n' > "$WORK/cube.csv"
+"$SF" analyze geometry "$WORK/cube.csv" --check -o "$WORK/cube" > "$WORK/stdout"
+grep -q "^total_volume 1$" "$WORK/cube/summary.txt" || fail "cube volume: $(cat "$WORK/cube/summary.txt")"
+grep -q "^check passed$" "$WORK/cube/summary.txt" || fail "no check line"
+grep -q "^simplices 12$" "$WORK/cube/summary.txt" || fail "cube + centre is 12 tetrahedra: $(cat "$WORK/cube/summary.txt")"
+grep -q 'NumberOfCells="12"' "$WORK/cube/delaunay.vtu" || fail "vtu cell count"
+echo "ok: cube"
+"$SF" analyze geometry "$WORK/cube.csv" -r 5 --no-mesh -o "$WORK/ball" > /dev/null
+for want in "surface_triangles 12" "surface_area 6" "surface_volume 1" "surface_euler_characteristic 2" "surface_manifold yes"; do
+  grep -qx "$want" "$WORK/ball/summary.txt" || fail "rolling ball: no '$want' in $(cat "$WORK/ball/summary.txt")"
+done
+grep -q 'NumberOfPolys="12"' "$WORK/ball/surface.vtp" || fail "surface.vtp polygon count"
+echo "ok: rolling-ball surface of the cube"
+printf '0 0\n0.1 0\n5 0.05\n5.1 0.05\n' > "$WORK/pairs.txt"
+"$SF" analyze geometry "$WORK/pairs.txt" --dimension 2 -d 1 -o "$WORK/pairs" > /dev/null
+grep -q "^seed_rule_clusters 1$" "$WORK/pairs/summary.txt" || fail "seed rule: $(cat "$WORK/pairs/summary.txt")"
+grep -q "^single_linkage_clusters 2$" "$WORK/pairs/summary.txt" || fail "single linkage"
+[ "$(sed -n 4p "$WORK/pairs/clusters.csv")" = "2,5,0.050000000000000003,0,1" ] || fail "clusters.csv row: $(sed -n 4p "$WORK/pairs/clusters.csv")"
+echo "ok: clusters"
+cat > "$WORK/atoms.dump" <<'DUMP'
+ITEM: TIMESTEP
+0
+ITEM: NUMBER OF ATOMS
+5
+ITEM: BOX BOUNDS pp pp pp
+0 2
+0 2
+0 2
+ITEM: ATOMS id type x y z
+1 1 0 0 0
+2 1 1 0 0
+3 1 0 1 0
+4 1 0 0 1
+5 1 1 1 1
+DUMP
+"$SF" analyze geometry "$WORK/atoms.dump" -o "$WORK/dump" --no-mesh > /dev/null
+grep -q "^points 5$" "$WORK/dump/summary.txt" || fail "dump points"
+[ ! -e "$WORK/dump/delaunay.vtu" ] || fail "--no-mesh wrote a mesh"
+printf '4\ncomment\nCu 0 0 0\nCu 1 0 0\nCu 0 1 0\nCu 0 0 1\n' > "$WORK/tet.xyz"
+"$SF" analyze geometry "$WORK/tet.xyz" -o "$WORK/xyz" > /dev/null
+grep -q "^total_volume 0.166666666667$" "$WORK/xyz/summary.txt" || fail "xyz volume: $(cat "$WORK/xyz/summary.txt")"
+echo "ok: dump and xyz input"
+# bad FILE PATTERN [OPTIONS...]: analyze geometry FILE exits 2 naming PATTERN, writes nothing.
+bad() {
+  local file="$WORK/$1" pattern="$2" code=0; shift 2
+  "$SF" analyze geometry "$file" "$@" -o "$WORK/out" > /dev/null 2> "$WORK/stderr" || code=$?
+  [ $code -eq 2 ] && grep -qF -- "$pattern" "$WORK/stderr" && [ ! -e "$WORK/out" ] ||
+    fail "$1: exit $code, wanted 2 with '$pattern' and no output folder: $(cat "$WORK/stderr")"
+  echo "ok: $(head -c 150 "$WORK/stderr")"
+}
+printf 'x,y,z\n0,0,0\n1,0,nan\n0,1,0\n0,0,1\n' > "$WORK/nan.csv"
+bad nan.csv "nan.csv:3: expected coordinate z (a finite number), got 'nan'"
+printf '0,0,0\n1,0,0\n0,1,0\n' > "$WORK/three.csv"
+bad three.csv "3 distinct points; a 3D Delaunay division needs at least 4"
+printf '0,0,0\n1,0,0\n0,1,0\n1,1,0\n2,3,0\n' > "$WORK/flat.csv"
+bad flat.csv "all 5 distinct points lie on one plane"
+printf '0,0\n1,1\n2,2\n' > "$WORK/line.csv"
+bad line.csv "all 3 distinct points lie on one line" --dimension 2
+printf '0,0,0\n1,0\n' > "$WORK/short.csv"
+bad short.csv "short.csv:2: expected at least 3 values per line, got 2"
+bad cube.csv "a ball of radius 0.001 passes between the points everywhere" -r 0.001
+bad pairs.txt "--ball-radius: the rolling-ball surface needs --dimension 3" --dimension 2 -r 1

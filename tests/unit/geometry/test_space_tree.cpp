@@ -1,0 +1,212 @@
+// The SHT against brute force: nearest (MS2), k-nearest and radius queries on 10^5 points
+// (uniform, Gaussian blobs, on a sphere), on spheres whose radii spread over four decades (a
+// custom minimum search: distance to the sphere), in 1D, 2D and 3D; and random insert/remove
+// sequences with the invariant checker after every operation. Tolerance: none — the tree computes
+// the same doubles as the brute force, so results must be identical.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "shockfield/geometry/space_tree.hpp"
+#include "shockfield/geometry/space_tree_queries.hpp"
+
+namespace shockfield::geometry {
+namespace {
+
+template <int N>
+using Points = std::vector<std::array<double, N>>;
+
+template <int N>
+auto adaptor_of(const Points<N>& pts) {
+  return points_adaptor<N>(pts.size(), [&pts](std::size_t i, int k) { return pts[i][k]; });
+}
+
+template <int N>
+double dist2(const std::array<double, N>& a, const std::array<double, N>& b) {
+  double s = 0;
+  for (int k = 0; k < N; ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
+  return s;
+}
+
+enum class Cloud { Uniform, Blobs, Sphere };
+
+template <int N>
+Points<N> make_cloud(Cloud kind, std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g;
+  Points<N> pts(n);
+  Points<N> centres(20);
+  for (auto& c : centres)
+    for (double& x : c) x = u(rng);
+  for (std::size_t i = 0; i < n; ++i) {
+    auto& p = pts[i];
+    if (kind == Cloud::Uniform) {
+      for (double& x : p) x = u(rng);
+    } else if (kind == Cloud::Blobs) {
+      const auto& c = centres[i % centres.size()];
+      const double w = 1e-3 * std::pow(10.0, 2.0 * (i % 3));  // blob widths 1e-3, 0.1, 10
+      for (int k = 0; k < N; ++k) p[k] = c[k] + w * g(rng);
+    } else {
+      double r2 = 0;
+      for (double& x : p) {
+        x = g(rng);
+        r2 += x * x;
+      }
+      for (double& x : p) x /= std::sqrt(r2);
+    }
+  }
+  return pts;
+}
+
+template <int N>
+void check_queries(const Points<N>& pts, std::size_t queries, std::uint64_t seed) {
+  const auto adaptor = adaptor_of<N>(pts);
+  const auto tree = SpaceTree<N, decltype(adaptor)>::with_all(adaptor);
+  ASSERT_EQ(tree.check(), "");
+  ASSERT_EQ(tree.size(), pts.size());
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, pts.size() - 1);
+  std::normal_distribution<double> g;
+  std::vector<double> d2(pts.size());
+  for (std::size_t t = 0; t < queries; ++t) {
+    std::array<double, N> q = pts[pick(rng)];
+    for (double& x : q) x += 0.01 * g(rng);
+    for (std::size_t i = 0; i < pts.size(); ++i) d2[i] = dist2<N>(q, pts[i]);
+    const auto nn = nearest<N>(tree, q);
+    const std::size_t best = std::min_element(d2.begin(), d2.end()) - d2.begin();
+    ASSERT_EQ(nn.distance, std::sqrt(d2[best])) << "query " << t;
+    const std::size_t k = 8;
+    const auto knn = k_nearest<N>(tree, q, k);
+    std::vector<double> sorted = d2;
+    std::partial_sort(sorted.begin(), sorted.begin() + k, sorted.end());
+    ASSERT_EQ(knn.size(), k);
+    for (std::size_t j = 0; j < k; ++j) ASSERT_EQ(knn[j].distance, std::sqrt(sorted[j]));
+    const double r = std::sqrt(sorted[k * 4]);  // a radius holding about 33 points
+    auto in = within_radius<N>(tree, q, r);
+    std::sort(in.begin(), in.end());
+    std::vector<std::uint32_t> expected;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (d2[i] <= r * r) expected.push_back(static_cast<std::uint32_t>(i));
+    ASSERT_EQ(in, expected) << "query " << t;
+  }
+}
+
+TEST(SpaceTree, QueriesEqualBruteForceOnUniformBlobsAndSphere3D) {
+  for (Cloud c : {Cloud::Uniform, Cloud::Blobs, Cloud::Sphere})
+    check_queries<3>(make_cloud<3>(c, 100000, 3 + int(c)), 60, 5);
+}
+
+TEST(SpaceTree, QueriesEqualBruteForceIn1DAnd2D) {
+  check_queries<1>(make_cloud<1>(Cloud::Blobs, 20000, 8), 100, 9);
+  check_queries<2>(make_cloud<2>(Cloud::Uniform, 50000, 10), 100, 11);
+  check_queries<2>(make_cloud<2>(Cloud::Sphere, 20000, 12), 100, 13);
+}
+
+// Spheres with radii from 1e-4 to 1: placed by size, found by a minimum search whose value is the
+// distance to the sphere's surface (0 inside) and a radius query on their boxes.
+TEST(SpaceTree, SpheresOverFourDecadesOfSize) {
+  struct Spheres {
+    Points<3> centre;
+    std::vector<double> radius;
+    std::size_t size() const { return centre.size(); }
+    void bounds(std::size_t i, std::array<double, 3>& lo, std::array<double, 3>& hi) const {
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = centre[i][k] - radius[i];
+        hi[k] = centre[i][k] + radius[i];
+      }
+    }
+  } s;
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(0.0, 10.0), decade(-4.0, 0.0);
+  for (int i = 0; i < 20000; ++i) {
+    s.centre.push_back({u(rng), u(rng), u(rng)});
+    s.radius.push_back(std::pow(10.0, decade(rng)));
+  }
+  const auto tree = SpaceTree<3, Spheres>::with_all(s);
+  ASSERT_EQ(tree.check(), "");
+  auto surface_distance = [&](std::uint32_t i, const std::array<double, 3>& q) {
+    return std::max(std::sqrt(dist2<3>(q, s.centre[i])) - s.radius[i], 0.0);
+  };
+  for (int t = 0; t < 100; ++t) {
+    const std::array<double, 3> q{u(rng), u(rng), u(rng)};
+    const auto found = tree.minimum_search(
+        3,
+        [&](const TreeCube<3>& c) {
+          return std::pair{std::sqrt(c.distance2_to(q)), std::sqrt(c.farthest2_from(q))};
+        },
+        [&](std::uint32_t i) { return surface_distance(i, q); });
+    std::vector<double> all;
+    for (std::uint32_t i = 0; i < s.size(); ++i) all.push_back(surface_distance(i, q));
+    std::sort(all.begin(), all.end());
+    ASSERT_EQ(found.size(), 3u);
+    for (int j = 0; j < 3; ++j) ASSERT_EQ(found[j].value, all[j]) << "query " << t;
+    auto in = within_radius<3>(tree, q, 0.3);
+    std::sort(in.begin(), in.end());
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t i = 0; i < s.size(); ++i)
+      if (box_distance2<3>(tree, i, q) <= 0.09) expected.push_back(i);
+    ASSERT_EQ(in, expected);
+  }
+}
+
+TEST(SpaceTree, InsertRemoveSequencesKeepInvariants) {
+  Points<3> pts = make_cloud<3>(Cloud::Blobs, 3000, 31);
+  // Some duplicates and far outliers (the root must grow).
+  for (int i = 0; i < 40; ++i) pts.push_back(pts[i]);
+  pts.push_back({1e3, -1e3, 5e2});
+  pts.push_back({-1e4, 2, 3});
+  const auto adaptor = adaptor_of<3>(pts);
+  SpaceTree<3, decltype(adaptor)> tree(adaptor, {.bucket = 4});
+  std::mt19937_64 rng(32);
+  std::uniform_int_distribution<std::uint32_t> pick(0, pts.size() - 1);
+  std::vector<bool> held(pts.size(), false);
+  std::size_t count = 0;
+  for (int op = 0; op < 6000; ++op) {
+    const std::uint32_t id = pick(rng);
+    if (held[id]) {
+      ASSERT_TRUE(tree.remove(id));
+      --count;
+    } else {
+      tree.insert(id);
+      ++count;
+    }
+    held[id] = !held[id];
+    ASSERT_EQ(tree.size(), count);
+    ASSERT_EQ(tree.check(), "") << "after operation " << op;
+    ASSERT_EQ(tree.contains(id), held[id]);
+    if (op % 500 == 0 && count > 0) {
+      // The nearest held point equals brute force over the held points.
+      const std::array<double, 3> q{0.5, 0.5, 0.5};
+      double best = 1e300;
+      for (std::size_t i = 0; i < pts.size(); ++i)
+        if (held[i]) best = std::min(best, dist2<3>(q, pts[i]));
+      ASSERT_EQ(nearest<3>(tree, q).distance, std::sqrt(best));
+    }
+  }
+  for (std::uint32_t i = 0; i < pts.size(); ++i) {
+    if (held[i]) {
+      ASSERT_TRUE(tree.remove(i));
+    }
+  }
+  EXPECT_EQ(tree.size(), 0u);
+  EXPECT_EQ(tree.check(), "");
+  EXPECT_FALSE(tree.remove(0));
+  // Memory follows the objects held: an emptied tree keeps no cubes.
+  EXPECT_EQ(tree.cube_count(), 0u);
+}
+
+TEST(SpaceTree, RejectsNonFiniteAndDoubleInsert) {
+  Points<2> pts{{0, 0}, {std::nan(""), 1}};
+  const auto adaptor = adaptor_of<2>(pts);
+  SpaceTree<2, decltype(adaptor)> tree(adaptor);
+  tree.insert(0);
+  EXPECT_THROW(tree.insert(0), InputError);
+  EXPECT_THROW(tree.insert(1), InputError);
+  EXPECT_THROW(tree.insert(2), InputError);
+}
+
+}  // namespace
+}  // namespace shockfield::geometry
