@@ -321,9 +321,11 @@ void run_stats(const Common& c, std::size_t bins) {
 void add_analyze_command(CLI::App& app) {
   CLI::App* analyze = app.add_subcommand(
       "analyze",
-      "Analyse grid fields (temperature, density, pressure, ...): Minkowski functionals against\n"
-      "threshold and time, morphological similarity of two processes, field statistics.\n"
-      "Seed 000 §3.1 and §4.1.2; docs/analysis-minkowski.md.");
+      "Analyse what a run produces. Grid fields (temperature, density, pressure, ...): Minkowski\n"
+      "functionals against threshold and time, morphological similarity of two processes, field\n"
+      "statistics (Xu et al. 2015, §3.1 and §4.1.2; docs/analysis-minkowski.md). Atoms: per-atom\n"
+      "structure and defect clusters (analyze atoms; docs/analysis-atoms.md). Point sets: Delaunay\n"
+      "division, clusters and surfaces (analyze geometry; docs/geometry-giso.md).");
   analyze->require_subcommand(1);
 
   auto mc = std::make_shared<Common>();

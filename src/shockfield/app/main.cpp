@@ -11,7 +11,8 @@ int main(int argc, char** argv) {
       "shockfield " SHOCKFIELD_VERSION
       " - shock response of heterogeneous materials, from atoms to the sample.\n"
       "Simulate with molecular dynamics (md), the material point method (mpm), peridynamics (pd);\n"
-      "analyse the fields that come out (analyze); sweep shock Hugoniots (hugoniot).\n"
+      "analyse the fields, atoms and point sets that come out (analyze); sweep shock Hugoniots\n"
+      "(hugoniot).\n"
       "Run `shockfield SUBCOMMAND --help` for each subcommand's options.",
       "shockfield"};
   app.require_subcommand(1);
