@@ -7,6 +7,9 @@
 #    one frame forever; DBM series_interval below dt wrote identical rows: now refused before the
 #    run (exit 2) with the key and the number of rows or frames; PD without a given time step
 #    writes at most one row per step.
+#  - a shock front that reaches the free end wrote nan into hugoniot_<stage>.toml with no reason
+#    and `shockfield hugoniot` then stopped reading its own file (exit 2); now the file has no
+#    nan and says why, and the sweep stops with that reason (exit 3).
 #  - DBM courant = 1.0 (documented valid) was refused by round-off with no file or key; GLS
 #    noise = 0 stopped the run after its folder was created: now refused by key, no folder.
 source "$(dirname "$0")/lib.bash"
@@ -27,7 +30,7 @@ mpm=$(cat "$ROOT/tests/cli/cases/mpm_tiny.toml")
 printf '%s\n' "${mpm/end_time = 40e-9/end_time = 1e300}" > "$WORK/case.toml"
 rm -rf "$WORK/out"
 set +e
-timeout 20 "$SF" run "$WORK/case.toml" --output "$WORK/out" -q 2> "$WORK/stderr"
+timeout -s KILL 20 "$SF" run "$WORK/case.toml" --output "$WORK/out" -q 2> "$WORK/stderr"
 code=$?
 set -e
 [ $code -eq 2 ] || fail "mpm end_time = 1e300: exit $code, expected 2 (refused): $(head -c 300 "$WORK/stderr")"
@@ -58,4 +61,19 @@ run_expecting 0 "$fine"
 rows=$(($(wc -l < "$WORK/out/series.csv") - 1))
 [ "$rows" -le 139 ] || fail "pd series_interval below dt wrote $rows rows for 138 steps"
 echo "ok: pd series_interval below dt wrote $rows rows for 138 steps"
+# A 43 Å sample the 5 km/s front crosses in 0.8 ps, driven for 1.2 ps.
+sed -e 's/^repeat = \[8, 8, 50\]/repeat = [3, 3, 12]/' -e 's/^steps = 1000/steps = 100/' -e 's/^steps = 2500/steps = 1200/' \
+  -e 's/^profile_every = 100/profile_every = 50/' -e '/^dump_/d' -e 's/^checkpoint_every = 1000/checkpoint_every = 0/' \
+  "$ROOT/examples/md_shock_piston/case.toml" > "$WORK/piston.toml"
+set +e
+"$SF" hugoniot "$WORK/piston.toml" --speeds 1.0 --output "$WORK/sweep" -q > /dev/null 2> "$WORK/stderr"
+code=$?
+set -e
+[ $code -eq 3 ] || fail "hugoniot with the front at the free end: exit $code, expected 3: $(cat "$WORK/stderr")"
+grep -q "reached the free end of the sample.*make the sample longer or the stage shorter" "$WORK/stderr" ||
+  fail "the sweep does not say why: $(cat "$WORK/stderr")"
+toml="$WORK/sweep/up_1.00/hugoniot_shock.toml"
+! grep -qi "nan" "$toml" || fail "$toml holds nan: $(cat "$toml")"
+grep -q "^complete = false" "$toml" || fail "$toml does not say it is incomplete"
+echo "ok: $(head -c 200 "$WORK/stderr")"
 echo "fault_run_diagnoses: blow-ups diagnosed, output bounded, documented values valid"
