@@ -4,7 +4,8 @@
 # with exit 3 and a message naming the file it could not write, leave no half-written
 # checkpoint, and keep its previous checkpoint whole: after space is freed (the tmpfs remounted
 # larger), --resume finishes the run and its outputs are byte for byte those of an
-# uninterrupted run on a roomy disk.
+# uninterrupted run on a roomy disk. `analyze` and a PD [homogeneous] run on a full disk stop
+# with exit 3 naming the file too.
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -62,4 +63,24 @@ sed -e 's/^end_time = 0.2/end_time = 0.05/' -e 's/^series_interval = 0.01/series
   -e 's/^profile_interval = 0.05/field_interval = 0.0005\ncheckpoint_every = 10/' \
   "$ROOT/examples/dbm_sod/case.toml" > "$WORK/dbm.toml"
 full_disk_then_resume dbm 800k "$WORK/dbm.toml" series.csv grid.pvd
+# Writers outside the time-stepping runs, on a disk with no space left: `analyze` and a PD
+# [homogeneous] compression used to exit 0 with truncated files.
+mount -o remount,size=300k "$DISK"
+dd if=/dev/zero of="$DISK/filler" bs=1k count=400 2> /dev/null || true
+expect_full_disk() {
+  local what="$1"
+  shift
+  set +e
+  "$@" > /dev/null 2> "$WORK/err"
+  local code=$?
+  set -e
+  [ $code -eq 3 ] || fail "$what: exit $code on a full disk, expected 3: $(cat "$WORK/err")"
+  grep -qF "$DISK/" "$WORK/err" && grep -q "No space left on device" "$WORK/err" ||
+    fail "$what: the message names no file or reason: $(cat "$WORK/err")"
+  echo "ok: $what stopped on the full disk: $(head -c 160 "$WORK/err")"
+}
+expect_full_disk "analyze" "$SF" analyze minkowski "$ROOT/tests/fixtures/analysis/fields/series.pvd" -t 50 --no-plot \
+  -o "$DISK/analyze"
+expect_full_disk "pd [homogeneous]" "$SF" run "$ROOT/examples/pd_ofhc_compression/ofhc_compression.toml" \
+  --output "$DISK/homogeneous" -q
 echo "fault_full_disk: every method stops with exit 3 naming the file and resumes bitwise"
