@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 
 #include "shockfield/analysis/field_reader.hpp"
@@ -19,6 +18,7 @@
 #include "shockfield/analysis/spectral_statistics.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/io/checked_file.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -194,11 +194,10 @@ Table functionals(const std::vector<sa::GridField>& fields, std::span<const doub
   return t;
 }
 
-std::ofstream open_output(const Common& c, const std::string& name) {
+// Every write checked: a full disk stops the command with exit 3 naming the file.
+io::CheckedOutput open_output(const Common& c, const std::string& name) {
   fs::create_directories(c.output);
-  std::ofstream out(fs::path(c.output) / name);
-  if (!out) throw InputError(fmt::format("{}: cannot write", (fs::path(c.output) / name).string()));
-  return out;
+  return io::CheckedOutput(fs::path(c.output) / name);
 }
 
 void plot(const Common& c, const char* kind, const std::string& csv) {
@@ -312,6 +311,7 @@ void run_stats(const Common& c, std::size_t bins) {
         *stream << fmt::format("{},{},{:.10g},{:.10g},{}\n", in.files[i], times[i], profile.x[j],
                                profile.values[j], profile.count[j]);
   }
+  for (auto* out : {&stats, &hist, &sk, &corr}) out->close();
   std::printf("wrote stats.csv, histogram.csv, structure_factor.csv, correlation.csv in %s\n",
               c.output.c_str());
 }

@@ -3,11 +3,21 @@
 // k·interval and is written at the first step at or past it. `count` is the number of frames
 // written so far (checkpointed by each method), so a resumed run continues the same schedule.
 // Also the [output] keys of that schedule, shared by the mpm, pd and dbm case files.
+//
+// What a run writes is bounded before it starts: end_time / interval is the number of rows or
+// frames a schedule can write, and the case reader refuses an interval that would write more
+// than max_series_rows rows or max_frames frames, naming the key and the count. At most one
+// frame is written per step (frames due at one step would be identical copies).
 #include <optional>
 
 #include "shockfield/core/config.hpp"
 
 namespace shockfield {
+
+/// Most series rows a run may write (about 100 MB of CSV).
+inline constexpr double max_series_rows = 1e6;
+/// Most profiles or field frames a run may write.
+inline constexpr double max_frames = 1e5;
 
 /// The output schedule of a time-stepping run ([output] keys of the same names).
 struct OutputIntervals {
@@ -24,16 +34,23 @@ struct OutputKinds {
   bool fields = false;
 };
 
-/// Reads the schedule keys of [output] (absent table: the defaults), validated.
+/// Reads the schedule keys of [output] (absent table: the defaults), validated, including the
+/// bounds on the number of rows and frames above.
 OutputIntervals read_output_intervals(const std::optional<Config>& output, double end_time,
                                       OutputKinds kinds);
 
-/// Calls write(k) for every frame k = count, count+1, ... due by time `t`, advancing `count`.
-/// An interval of 0 means no output.
+/// With `dt` the (fixed) time step of a run: refuses an interval of [output] that is shorter
+/// than one step, naming the key (every step would write the same frame again).
+void check_intervals_against_step(const Config& output, const OutputIntervals& s, double dt);
+
+/// Writes frame k = count if it is due by time `t`, then advances `count` past every frame due
+/// by `t` (those would repeat the one just written). An interval of 0 means no output.
 template <class Count, class Write>
 void write_due_frames(Count& count, double interval, double t, Write&& write) {
-  if (interval <= 0) return;
-  for (; static_cast<double>(count) * interval <= t; ++count) write(count);
+  if (interval <= 0 || static_cast<double>(count) * interval > t) return;
+  write(count);
+  do ++count;
+  while (static_cast<double>(count) * interval <= t);
 }
 
 }  // namespace shockfield

@@ -2,9 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-
 #include "shockfield/core/error.hpp"
+#include "shockfield/io/checked_file.hpp"
 
 namespace shockfield {
 
@@ -31,13 +30,7 @@ void prepare_run_folder(const std::filesystem::path& folder, const RunOptions& o
 }
 
 void write_file_atomically(const std::filesystem::path& file, const std::string& text) {
-  const auto tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) throw RunError(fmt::format("cannot write '{}'", tmp));
-    out << text;
-  }
-  std::filesystem::rename(tmp, file);
+  io::replace_file(file, text);
 }
 
 }  // namespace shockfield

@@ -11,7 +11,8 @@ namespace shockfield {
 std::filesystem::path run_folder_path(const RunOptions& options);
 /// Creates (or, with --overwrite, empties) the folder; with --resume it must exist.
 void prepare_run_folder(const std::filesystem::path& folder, const RunOptions& options);
-/// Writes text to folder/name through a temporary file and a rename (never half-written).
+/// Writes text to `file` through a temporary file and a rename (never half-written); every
+/// write checked (io/checked_file): RunError naming the file when one fails.
 void write_file_atomically(const std::filesystem::path& file, const std::string& text);
 
 }  // namespace shockfield

@@ -12,6 +12,9 @@
 namespace shockfield::dbm {
 namespace {
 
+// Most steps a run may take (an end_time that needs more is refused, not cast past long long).
+constexpr long long max_dbm_steps = 1'000'000'000;
+
 const std::array<std::string, 4> kSides{"x_low", "x_high", "y_low", "y_high"};
 
 // ρ, u, v and T or p (p = ρT) of an inline table such as { rho = 1.0, u = 0.0, p = 1.0 }.
@@ -110,13 +113,21 @@ void read_run(const Config& t, const Config& model, DbmCase& c) {
   const double vmax = c.model.max_speed(), dx = c.lattice.dx;
   const double wanted = t.has("dt") ? t.get_double("dt", Range::positive())
                                     : t.get_double_or("courant", 0.4, {0.0, 1.0, true, false}) * dx / vmax;
-  if (vmax * wanted / dx > BgkSettings::max_courant)
+  if (t.has("dt") && vmax * wanted / dx > BgkSettings::max_courant)
     t.fail("dt", fmt::format("{} gives the Courant number max|v| dt/dx = {:.3g} > {} (max|v| = {}): the convection is "
                              "unstable; use dt <= {:.4g}",
                              wanted, vmax * wanted / dx, BgkSettings::max_courant, vmax,
                              BgkSettings::max_courant * dx / vmax));
-  c.steps = static_cast<long long>(std::ceil(c.end_time / wanted - 1e-9));
+  const double steps = std::ceil(c.end_time / wanted - 1e-9);
+  if (!(steps <= static_cast<double>(max_dbm_steps)))
+    t.fail("end_time", fmt::format("{} at dt = {:.4g} takes {:.4g} steps, more than the {} a run may take; use a "
+                                   "shorter end_time or a larger dx",
+                                   c.end_time, wanted, steps, max_dbm_steps));
+  c.steps = static_cast<long long>(steps);
   c.bgk.dt = c.end_time / static_cast<double>(c.steps);
+  // end_time / steps can exceed the wanted dt by round-off; one more step keeps a Courant number
+  // at the limit (courant = 1.0, documented valid) valid instead of refused by the solver.
+  while (vmax * c.bgk.dt / dx > BgkSettings::max_courant) c.bgk.dt = c.end_time / static_cast<double>(++c.steps);
   if (c.bgk.dt / c.bgk.tau > BgkSettings::max_dt_over_tau)
     model.fail("tau", fmt::format("{} is too small for dt = {:.4g}: dt/tau = {:.3g} > {} makes the explicit collision "
                                   "term unstable; use tau >= {:.4g} or a smaller dt",
@@ -129,6 +140,7 @@ DbmOutputSpec read_output(const std::optional<Config>& t, const DbmCase& c) {
   static_cast<OutputIntervals&>(s) = read_output_intervals(t, c.end_time, {.profiles = true, .fields = true});
   s.profile_row = c.lattice.ny / 2;
   if (!t) return s;
+  check_intervals_against_step(*t, s, c.bgk.dt);
   s.profile_row = static_cast<int>(t->get_int_or("profile_row", s.profile_row, Range::closed(0, c.lattice.ny - 1)));
   return s;
 }

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/io/hdf5_file.hpp"
+#include "shockfield/io/checkpoint_file.hpp"
 
 namespace shockfield::dbm {
 namespace {
@@ -14,24 +14,22 @@ constexpr double kFormatVersion = 1;
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters,
                       const std::vector<double>* reactant) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    io::Hdf5File h5(tmp, io::Hdf5File::Mode::create);
-    h5.set_attribute("format_version", kFormatVersion);
-    h5.set_attribute("step", static_cast<double>(sim.steps()));
-    h5.set_attribute("time", sim.time());
-    h5.set_attribute("series", static_cast<double>(counters.series));
-    h5.set_attribute("profiles", static_cast<double>(counters.profiles));
-    h5.set_attribute("fields", static_cast<double>(counters.fields));
-    const std::vector<double>& f = sim.f();
-    h5.write("f", f, {static_cast<hsize_t>(sim.model().size()), f.size() / static_cast<std::size_t>(sim.model().size())});
-    if (reactant) h5.write("reactant", *reactant, {static_cast<hsize_t>(reactant->size())});
-  }
-  std::filesystem::rename(tmp, file);
+  io::CheckpointWriter h5(file);
+  h5.set_attribute("format_version", kFormatVersion);
+  h5.set_attribute("step", static_cast<double>(sim.steps()));
+  h5.set_attribute("time", sim.time());
+  h5.set_attribute("series", static_cast<double>(counters.series));
+  h5.set_attribute("profiles", static_cast<double>(counters.profiles));
+  h5.set_attribute("fields", static_cast<double>(counters.fields));
+  const std::vector<double>& f = sim.f();
+  h5.write("f", f, {static_cast<hsize_t>(sim.model().size()), f.size() / static_cast<std::size_t>(sim.model().size())});
+  if (reactant) h5.write("reactant", *reactant, {static_cast<hsize_t>(reactant->size())});
+  h5.commit();
 }
 
 OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, std::vector<double>* reactant) {
-  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  const io::CheckpointReader checkpoint(file);
+  const io::Hdf5File& h5 = checkpoint.h5();
   const std::string name = file.string();
   if (h5.attribute("format_version") != kFormatVersion)
     throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", name,

@@ -1,7 +1,8 @@
 #pragma once
 // DBM checkpoints (HDF5): the distributions f, the clock and the output counters, so that a
 // resumed run continues bitwise as if never stopped (same thread count; the model keeps no other
-// state between steps). Written to a temporary file and renamed.
+// state between steps). Written through
+// io/checkpoint_file: checksummed, verified, then renamed; read only after its checksum matches.
 #include <cstdint>
 #include <filesystem>
 

@@ -39,7 +39,8 @@ Quench read_quench(const Config& initial, const GlsSettings& gls) {
   const double max_density = eos_max_density(gls.eos);
   q.rho0 = initial.get_double("rho0", {0.0, max_density, true, true});
   q.T = initial.get_double("T", Range::positive());
-  q.noise = initial.get_double_or("noise", 0.01, {0.0, 1.0, false, true});
+  // noise > 0: a uniform quench is a steady state of the model and never separates (nothing to measure).
+  q.noise = initial.get_double_or("noise", 0.01, {0.0, 1.0, true, true});
   q.seed = static_cast<std::uint64_t>(initial.get_int_or("seed", 1, Range::non_negative()));
   if (q.rho0 * (1.0 + q.noise) >= max_density)
     initial.fail("noise", fmt::format("rho0 (1 + noise) = {} reaches the EOS limit {} (excluded volume)",

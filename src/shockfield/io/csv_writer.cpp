@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <sstream>
+#include <fstream>
 
 #include "shockfield/core/error.hpp"
 
@@ -18,11 +18,16 @@ CsvWriter::CsvWriter(const std::filesystem::path& file, std::vector<std::string>
     std::getline(in, line);  // header
     while (std::getline(in, line)) {
       if (line.empty()) continue;
-      if (std::stod(line.substr(0, line.find(','))) <= *resume_from) kept.push_back(line);
+      double first = 0;
+      try {
+        first = std::stod(line.substr(0, line.find(',')));
+      } catch (const std::exception&) {
+        throw InputError(fmt::format("{}: row '{}' does not start with a number; cannot resume it", file.string(), line));
+      }
+      if (first <= *resume_from) kept.push_back(line);
     }
   }
-  out_.open(file, std::ios::trunc);
-  if (!out_) throw RunError(fmt::format("cannot write '{}'", file.string()));
+  out_ = CheckedOutput(file);
   for (std::size_t i = 0; i < columns_.size(); ++i) out_ << (i ? "," : "") << columns_[i];
   out_ << '\n';
   for (const auto& line : kept) out_ << line << '\n';
@@ -35,7 +40,9 @@ void CsvWriter::row(const std::vector<double>& values) {
     if (i) line += ',';
     line += fmt::format("{:.10g}", values[i]);
   }
-  out_ << line << '\n' << std::flush;
+  line += '\n';
+  out_.write(line);
+  out_.flush();
 }
 
 }  // namespace shockfield::io

@@ -1,11 +1,13 @@
 #pragma once
 // Time-series CSV: a header line of column names, then one row per record, flushed at once so
-// a stopped run keeps every row written. Opening in append mode (restart) keeps the old rows up
+// a stopped run keeps every row written; a failed write throws RunError naming the file
+// (io/checked_file). Opening in append mode (restart) keeps the old rows up
 // to a given value of the first column.
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
+
+#include "shockfield/io/checked_file.hpp"
 
 namespace shockfield::io {
 
@@ -22,7 +24,7 @@ class CsvWriter {
   const std::vector<std::string>& columns() const { return columns_; }
 
  private:
-  std::ofstream out_;
+  CheckedOutput out_;
   std::vector<std::string> columns_;
 };
 

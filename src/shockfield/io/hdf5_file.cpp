@@ -6,43 +6,108 @@
 
 namespace shockfield::io {
 namespace {
+
+// Closes an HDF5 identifier when it goes out of scope; `ok()` says whether it was created.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  hid_t get() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+  /// Closes now and reports whether HDF5 did.
+  bool close() {
+    const herr_t status = close_(id_);
+    id_ = -1;
+    return status >= 0;
+  }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
 template <class T>
 void write_dataset(hid_t file, const std::string& path, const std::string& name, const std::vector<T>& data,
                    std::vector<hsize_t> shape, hid_t type) {
   if (shape.empty()) shape = {static_cast<hsize_t>(data.size())};
-  const hid_t space = H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr);
-  const hid_t set = H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  const herr_t status = set < 0 ? -1 : H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
-  if (set >= 0) H5Dclose(set);
-  H5Sclose(space);
-  if (status < 0) throw RunError(fmt::format("{}: cannot write dataset '{}'", path, name));
+  Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose);
+  Handle set(space.ok() ? H5Dcreate2(file, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1,
+             H5Dclose);
+  const bool written = set.ok() && H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) >= 0;
+  if (!written || !set.close() || !space.close())
+    throw RunError(fmt::format("{}: cannot write dataset '{}'", path, name));
 }
 
 template <class T>
-std::vector<T> read_dataset(hid_t file, const std::string& path, const std::string& name, hid_t type) {
-  const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
-  if (set < 0) throw InputError(fmt::format("{}: checkpoint has no dataset '{}'", path, name));
-  const hid_t space = H5Dget_space(set);
-  const hssize_t n = H5Sget_simple_extent_npoints(space);
+std::vector<T> read_dataset(hid_t file, const std::string& path, const std::string& name, hid_t type,
+                            std::uintmax_t bytes_on_disk) {
+  Handle set(H5Lexists(file, name.c_str(), H5P_DEFAULT) > 0 ? H5Dopen2(file, name.c_str(), H5P_DEFAULT) : -1, H5Dclose);
+  if (!set.ok()) throw InputError(fmt::format("{}: checkpoint has no dataset '{}'", path, name));
+  Handle space(H5Dget_space(set.get()), H5Sclose);
+  const hssize_t n = space.ok() ? H5Sget_simple_extent_npoints(space.get()) : -1;
+  Handle stored(H5Dget_type(set.get()), H5Tclose);
+  if (n < 0 || !stored.ok() || H5Tget_size(stored.get()) != sizeof(T))
+    throw InputError(fmt::format("{}: dataset '{}' is damaged (no size or the wrong type)", path, name));
+  if (static_cast<std::uintmax_t>(n) > bytes_on_disk / sizeof(T))
+    throw InputError(fmt::format("{}: dataset '{}' claims {} values, more than the file's {} bytes hold (damaged)",
+                                 path, name, n, bytes_on_disk));
   std::vector<T> out(static_cast<std::size_t>(n));
-  const herr_t status = H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
-  H5Sclose(space);
-  H5Dclose(set);
-  if (status < 0) throw InputError(fmt::format("{}: cannot read dataset '{}'", path, name));
+  if (H5Dread(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+    throw InputError(fmt::format("{}: cannot read dataset '{}'", path, name));
   return out;
 }
+
+void write_attribute(hid_t file, const std::string& path, const std::string& name, hid_t type, const void* value) {
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attr(space.ok() ? H5Acreate2(file, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT) : -1, H5Aclose);
+  const bool written = attr.ok() && H5Awrite(attr.get(), type, value) >= 0;
+  if (!written || !attr.close() || !space.close())
+    throw RunError(fmt::format("{}: cannot write attribute '{}'", path, name));
+}
+
+hid_t open_file(const std::string& path, Hdf5File::Mode mode) {
+  if (mode == Hdf5File::Mode::read) return H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (mode == Hdf5File::Mode::create) return H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // In memory, never written to disk by HDF5 (backing_store = 0), grown 1 MiB at a time.
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (!access.ok() || H5Pset_fapl_core(access.get(), 1 << 20, 0) < 0) return -1;
+  return H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
+}
+
 }  // namespace
 
 Hdf5File::Hdf5File(const std::filesystem::path& file, Mode mode) : path_(file.string()) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr noise
-  file_ = mode == Mode::create ? H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)
-                               : H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file_ < 0)
-    throw InputError(fmt::format("{}: cannot {} HDF5 file", path_, mode == Mode::create ? "create" : "open"));
+  file_ = open_file(path_, mode);
+  std::error_code size_error;
+  bytes_on_disk_ = mode == Mode::read ? std::filesystem::file_size(file, size_error) : UINTMAX_MAX;
+  if (size_error) bytes_on_disk_ = 0;
+  if (file_ >= 0) return;
+  if (mode == Mode::read) throw InputError(fmt::format("{}: cannot open HDF5 file", path_));
+  throw RunError(fmt::format("{}: cannot create HDF5 file", path_));
 }
 
 Hdf5File::~Hdf5File() {
   if (file_ >= 0) H5Fclose(file_);
+}
+
+void Hdf5File::close() {
+  const hid_t f = file_;
+  file_ = -1;
+  if (f >= 0 && H5Fclose(f) < 0) throw RunError(fmt::format("{}: closing the HDF5 file failed", path_));
+}
+
+std::vector<unsigned char> Hdf5File::image() const {
+  if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) throw RunError(fmt::format("{}: cannot flush the HDF5 file", path_));
+  const ssize_t size = H5Fget_file_image(file_, nullptr, 0);
+  std::vector<unsigned char> bytes(size > 0 ? static_cast<std::size_t>(size) : 0);
+  if (size <= 0 || H5Fget_file_image(file_, bytes.data(), bytes.size()) != size)
+    throw RunError(fmt::format("{}: cannot take the image of the HDF5 file", path_));
+  return bytes;
 }
 
 void Hdf5File::write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> shape) {
@@ -52,49 +117,44 @@ void Hdf5File::write(const std::string& name, const std::vector<std::int64_t>& d
   write_dataset(file_, path_, name, data, std::move(shape), H5T_NATIVE_INT64);
 }
 std::vector<double> Hdf5File::read_doubles(const std::string& name) const {
-  return read_dataset<double>(file_, path_, name, H5T_NATIVE_DOUBLE);
+  return read_dataset<double>(file_, path_, name, H5T_NATIVE_DOUBLE, bytes_on_disk_);
 }
 std::vector<std::int64_t> Hdf5File::read_ints(const std::string& name) const {
-  return read_dataset<std::int64_t>(file_, path_, name, H5T_NATIVE_INT64);
+  return read_dataset<std::int64_t>(file_, path_, name, H5T_NATIVE_INT64, bytes_on_disk_);
 }
 bool Hdf5File::has(const std::string& name) const { return H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0; }
+bool Hdf5File::has_attribute(const std::string& name) const { return H5Aexists(file_, name.c_str()) > 0; }
 
 void Hdf5File::set_attribute(const std::string& name, double value) {
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attr = H5Acreate2(file_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attr, H5T_NATIVE_DOUBLE, &value);
-  H5Aclose(attr);
-  H5Sclose(space);
+  write_attribute(file_, path_, name, H5T_NATIVE_DOUBLE, &value);
 }
 
 void Hdf5File::set_attribute(const std::string& name, const std::string& value) {
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, value.size() + 1);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attr = H5Acreate2(file_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attr, type, value.c_str());
-  H5Aclose(attr);
-  H5Sclose(space);
-  H5Tclose(type);
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  if (!type.ok() || H5Tset_size(type.get(), value.size() + 1) < 0)
+    throw RunError(fmt::format("{}: cannot write attribute '{}'", path_, name));
+  write_attribute(file_, path_, name, type.get(), value.c_str());
 }
 
 double Hdf5File::attribute(const std::string& name) const {
-  const hid_t attr = H5Aopen(file_, name.c_str(), H5P_DEFAULT);
-  if (attr < 0) throw InputError(fmt::format("{}: checkpoint has no attribute '{}'", path_, name));
+  Handle attr(has_attribute(name) ? H5Aopen(file_, name.c_str(), H5P_DEFAULT) : -1, H5Aclose);
+  if (!attr.ok()) throw InputError(fmt::format("{}: checkpoint has no attribute '{}'", path_, name));
   double value = 0;
-  H5Aread(attr, H5T_NATIVE_DOUBLE, &value);
-  H5Aclose(attr);
+  if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0)
+    throw InputError(fmt::format("{}: cannot read attribute '{}'", path_, name));
   return value;
 }
 
 std::string Hdf5File::string_attribute(const std::string& name) const {
-  const hid_t attr = H5Aopen(file_, name.c_str(), H5P_DEFAULT);
-  if (attr < 0) throw InputError(fmt::format("{}: checkpoint has no attribute '{}'", path_, name));
-  const hid_t type = H5Aget_type(attr);
-  std::string value(H5Tget_size(type), '\0');
-  H5Aread(attr, type, value.data());
-  H5Tclose(type);
-  H5Aclose(attr);
+  Handle attr(has_attribute(name) ? H5Aopen(file_, name.c_str(), H5P_DEFAULT) : -1, H5Aclose);
+  if (!attr.ok()) throw InputError(fmt::format("{}: checkpoint has no attribute '{}'", path_, name));
+  Handle type(H5Aget_type(attr.get()), H5Tclose);
+  const std::size_t size = type.ok() ? H5Tget_size(type.get()) : 0;
+  if (size == 0 || size > bytes_on_disk_ || H5Tget_class(type.get()) != H5T_STRING)
+    throw InputError(fmt::format("{}: attribute '{}' is not a string", path_, name));
+  std::string value(size, '\0');
+  if (H5Aread(attr.get(), type.get(), value.data()) < 0)
+    throw InputError(fmt::format("{}: cannot read attribute '{}'", path_, name));
   value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
   return value;
 }

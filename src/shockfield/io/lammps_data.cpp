@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/line_reader.hpp"
 
 namespace shockfield::io {
@@ -210,8 +211,7 @@ DataFile read_data(const std::filesystem::path& file, const std::array<geometry:
 
 void write_data(const std::filesystem::path& file, const geometry::Box& box, const md::Atoms& atoms,
                 const DataWriteOptions& options) {
-  std::ofstream out(file);
-  if (!out) throw InputError(fmt::format("{}: cannot open data file for writing", file.string()));
+  CheckedOutput out(file);
   fmt::memory_buffer buf;
   auto it = std::back_inserter(buf);
   // Layout of LAMMPS write_data (WriteData::header, atoms, velocities).
@@ -236,8 +236,8 @@ void write_data(const std::filesystem::path& file, const geometry::Box& box, con
     for (std::size_t i = 0; i < atoms.nlocal; ++i)
       fmt::format_to(it, "{} {} {} {}\n", atoms.id[i], atoms.v[i].x(), atoms.v[i].y(), atoms.v[i].z());
   }
-  out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
-  if (!out) throw RunError(fmt::format("{}: writing the data file failed", file.string()));
+  out.write({buf.data(), buf.size()});
+  out.close();
 }
 
 }  // namespace shockfield::io

@@ -277,15 +277,11 @@ void write_dump_frame(std::ostream& out, const DumpFrame& frame, const DumpWrite
 }
 
 DumpWriter::DumpWriter(const std::filesystem::path& file, DumpWriteOptions options)
-    : file_(file), out_(file), options_(options) {
-  if (!out_) throw InputError(fmt::format("{}: cannot open dump file for writing", file.string()));
-}
+    : file_(file), out_(file), options_(options) {}
 
 void DumpWriter::write(const DumpFrame& frame) {
-  write_dump_frame(out_, frame, options_);
+  write_dump_frame(out_.stream(), frame, options_);
   out_.flush();
-  if (!out_) throw RunError(fmt::format("{}: writing the dump frame of timestep {} failed",
-                                        file_.string(), frame.timestep));
 }
 
 }  // namespace shockfield::io

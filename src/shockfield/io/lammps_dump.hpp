@@ -22,6 +22,7 @@
 
 #include "shockfield/core/types.hpp"
 #include "shockfield/geometry/box.hpp"
+#include "shockfield/io/checked_file.hpp"
 #include "shockfield/md/atoms.hpp"
 
 namespace shockfield::io {
@@ -86,7 +87,7 @@ class DumpWriter {
 
  private:
   std::filesystem::path file_;
-  std::ofstream out_;
+  CheckedOutput out_;
   DumpWriteOptions options_;
 };
 

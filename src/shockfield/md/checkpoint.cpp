@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/io/hdf5_file.hpp"
+#include "shockfield/io/checkpoint_file.hpp"
 #include "shockfield/md/force_evaluation.hpp"
 
 namespace shockfield::md {
@@ -36,46 +36,44 @@ void set_box(geometry::Box& b, const std::vector<double>& d) {
 }  // namespace
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const CheckpointPosition& where) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    io::Hdf5File h5(tmp, io::Hdf5File::Mode::create);
-    const Atoms& a = sim.atoms;
-    const std::size_t n = a.nlocal;
-    const auto n3 = std::vector<hsize_t>{n, 3};
-    h5.set_attribute("format_version", kFormatVersion);
-    h5.set_attribute("step", static_cast<double>(sim.step));
-    h5.set_attribute("time", sim.time);
-    h5.set_attribute("neighbor_rebuilds", static_cast<double>(sim.rebuilds));
-    h5.set_attribute("steps_since_rebuild", static_cast<double>(sim.steps_since_rebuild));
-    h5.set_attribute("stage", static_cast<double>(where.stage));
-    h5.set_attribute("stage_step", static_cast<double>(where.stage_step));
-    h5.set_attribute("boundary", sim.box.boundary_codes());
-    h5.write("x", flatten(a.x, n), n3);
-    h5.write("v", flatten(a.v, n), n3);
-    h5.write("f", flatten(a.f, n), n3);
-    h5.write("x_rebuild", flatten(sim.positions_at_rebuild(), n), n3);
-    std::vector<std::int64_t> image(3 * n), type(n), mask(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      for (int d = 0; d < 3; ++d) image[3 * i + d] = a.image[i][d];
-      type[i] = a.type[i];
-      mask[i] = a.mask[i];
-    }
-    h5.write("image", image, n3);
-    h5.write("id", a.id);
-    h5.write("type", type);
-    h5.write("mask", mask);
-    h5.write("box", box_data(sim.box));
-    h5.write("box_rebuild", box_data(sim.box_at_rebuild()));
-    for (std::size_t k = 0; k < sim.fixes.size(); ++k) {
-      auto state = sim.fixes[k]->state();
-      if (!state.empty()) h5.write(fmt::format("fix{}_{}", k, sim.fixes[k]->name()), state);
-    }
+  io::CheckpointWriter h5(file);
+  const Atoms& a = sim.atoms;
+  const std::size_t n = a.nlocal;
+  const auto n3 = std::vector<hsize_t>{n, 3};
+  h5.set_attribute("format_version", kFormatVersion);
+  h5.set_attribute("step", static_cast<double>(sim.step));
+  h5.set_attribute("time", sim.time);
+  h5.set_attribute("neighbor_rebuilds", static_cast<double>(sim.rebuilds));
+  h5.set_attribute("steps_since_rebuild", static_cast<double>(sim.steps_since_rebuild));
+  h5.set_attribute("stage", static_cast<double>(where.stage));
+  h5.set_attribute("stage_step", static_cast<double>(where.stage_step));
+  h5.set_attribute("boundary", sim.box.boundary_codes());
+  h5.write("x", flatten(a.x, n), n3);
+  h5.write("v", flatten(a.v, n), n3);
+  h5.write("f", flatten(a.f, n), n3);
+  h5.write("x_rebuild", flatten(sim.positions_at_rebuild(), n), n3);
+  std::vector<std::int64_t> image(3 * n), type(n), mask(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < 3; ++d) image[3 * i + d] = a.image[i][d];
+    type[i] = a.type[i];
+    mask[i] = a.mask[i];
   }
-  std::filesystem::rename(tmp, file);
+  h5.write("image", image, n3);
+  h5.write("id", a.id);
+  h5.write("type", type);
+  h5.write("mask", mask);
+  h5.write("box", box_data(sim.box));
+  h5.write("box_rebuild", box_data(sim.box_at_rebuild()));
+  for (std::size_t k = 0; k < sim.fixes.size(); ++k) {
+    auto state = sim.fixes[k]->state();
+    if (!state.empty()) h5.write(fmt::format("fix{}_{}", k, sim.fixes[k]->name()), state);
+  }
+  h5.commit();
 }
 
 CheckpointPosition read_checkpoint_header(const std::filesystem::path& file) {
-  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  const io::CheckpointReader checkpoint(file);
+  const io::Hdf5File& h5 = checkpoint.h5();
   if (h5.attribute("format_version") != kFormatVersion)
     throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", file.string(),
                                  h5.attribute("format_version"), kFormatVersion));
@@ -83,7 +81,8 @@ CheckpointPosition read_checkpoint_header(const std::filesystem::path& file) {
 }
 
 void read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
-  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  const io::CheckpointReader checkpoint(file);
+  const io::Hdf5File& h5 = checkpoint.h5();
   Atoms& a = sim.atoms;
   const auto id = h5.read_ints("id");
   const std::size_t n = id.size();

@@ -3,7 +3,8 @@
 // atoms (positions, velocities, image counts, ids, types, groups), box, clock, the positions and
 // box of the last neighbour-list build (so the resumed run rebuilds the identical list and sums
 // forces in the identical order: bitwise restart with the same thread count), the fixes' state
-// and where in the stage list the run was. Written to a temporary file and renamed.
+// and where in the stage list the run was. Written through
+// io/checkpoint_file: checksummed, verified, then renamed; read only after its checksum matches.
 #include <filesystem>
 #include <vector>
 

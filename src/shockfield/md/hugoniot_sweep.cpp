@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -74,13 +73,13 @@ SweepPoint run_one(const HugoniotSweepSettings& s, double speed, const fs::path&
     std::printf("up = %g km/s: reusing the finished run in %s\n", speed, folder.string().c_str());
   }
   const Config h = Config::load(hugoniot);
+  if (!h.get_bool("complete"))
+    throw RunError(fmt::format("{}: no complete Hugoniot state at piston speed {} km/s ({})", hugoniot.string(), speed,
+                               h.get_string("note")));
   SweepPoint p;
   p.piston = h.get_double("piston_speed_km_s");
   p.up = h.get_double("up_km_s");
   p.us = h.get_double("us_km_s");
-  if (!std::isfinite(p.us) || !std::isfinite(p.up))
-    throw RunError(fmt::format("{}: no Hugoniot state at piston speed {} km/s ({})", hugoniot.string(), speed,
-                               h.get_string("note")));
   p.pressure = h.get_double("pressure_GPa");
   p.pressure_rh = h.get_double("pressure_rankine_hugoniot_GPa");
   p.density = h.get_double("density_g_cc");

@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
 
 #include "shockfield/core/units.hpp"
+#include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/extxyz.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 #include "shockfield/md/diagnostics/profiles.hpp"
@@ -117,9 +117,10 @@ void RunOutput::write_dump(const Simulation& sim) const {
     if (is_computed(f)) frame.set_column(f, computed_column(sim, f));
   const std::string ext = spec_.dump_format == "extxyz" ? "xyz" : "lammpstrj";
   const fs::path file = folder_ / "dumps" / fmt::format("dump.{}.{}", sim.step, ext);
-  std::ofstream out(file);
-  if (spec_.dump_format == "extxyz") io::write_extxyz_frame(out, frame, sim.atoms.type_names);
-  else io::write_dump_frame(out, frame, {spec_.dump_full_precision});
+  io::CheckedOutput out(file);
+  if (spec_.dump_format == "extxyz") io::write_extxyz_frame(out.stream(), frame, sim.atoms.type_names);
+  else io::write_dump_frame(out.stream(), frame, {spec_.dump_full_precision});
+  out.close();
 }
 
 }  // namespace shockfield::md

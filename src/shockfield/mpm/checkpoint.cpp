@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/io/hdf5_file.hpp"
+#include "shockfield/io/checkpoint_file.hpp"
 
 namespace shockfield::mpm {
 namespace {
@@ -33,38 +33,36 @@ void unpack(const std::vector<double>& d, std::size_t n, const std::string& name
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters,
                       const std::vector<double>& cavity_state) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    io::Hdf5File h5(tmp, io::Hdf5File::Mode::create);
-    const Particles& p = sim.particles();
-    const std::size_t n = p.size();
-    h5.set_attribute("format_version", kFormatVersion);
-    h5.set_attribute("step", static_cast<double>(sim.step_count()));
-    h5.set_attribute("time", sim.time());
-    h5.set_attribute("dt", sim.last_time_step());
-    h5.set_attribute("series", static_cast<double>(counters.series));
-    h5.set_attribute("fields", static_cast<double>(counters.fields));
-    h5.set_attribute("histograms", static_cast<double>(counters.histograms));
-    h5.write("x", pack<3>(n, [&](std::size_t i) { return p.x[i]; }), {n, 3});
-    h5.write("v", pack<3>(n, [&](std::size_t i) { return p.v[i]; }), {n, 3});
-    h5.write("L", pack<9>(n, [&](std::size_t i) { return p.velocity_gradient[i]; }), {n, 9});
-    h5.write("F", pack<9>(n, [&](std::size_t i) { return p.state[i].deformation; }), {n, 9});
-    h5.write("s", pack<9>(n, [&](std::size_t i) { return p.state[i].deviatoric.s; }), {n, 9});
-    h5.write("back_stress", pack<9>(n, [&](std::size_t i) { return p.state[i].deviatoric.back_stress; }), {n, 9});
-    h5.write("scalars", pack<kScalars>(n, [&](std::size_t i) {
-               const auto& s = p.state[i];
-               return Eigen::Matrix<double, kScalars, 1>(
-                   (Eigen::Matrix<double, kScalars, 1>() << s.deviatoric.plastic_strain, s.pressure, s.viscous_pressure,
-                    s.energy, s.temperature, s.shock_volume, s.plastic_work, s.sound_speed, p.mass[i], s.damage)
-                       .finished());
-             }), {n, kScalars});
-    if (!cavity_state.empty()) h5.write("cavity", cavity_state);
-  }
-  std::filesystem::rename(tmp, file);
+  io::CheckpointWriter h5(file);
+  const Particles& p = sim.particles();
+  const std::size_t n = p.size();
+  h5.set_attribute("format_version", kFormatVersion);
+  h5.set_attribute("step", static_cast<double>(sim.step_count()));
+  h5.set_attribute("time", sim.time());
+  h5.set_attribute("dt", sim.last_time_step());
+  h5.set_attribute("series", static_cast<double>(counters.series));
+  h5.set_attribute("fields", static_cast<double>(counters.fields));
+  h5.set_attribute("histograms", static_cast<double>(counters.histograms));
+  h5.write("x", pack<3>(n, [&](std::size_t i) { return p.x[i]; }), {n, 3});
+  h5.write("v", pack<3>(n, [&](std::size_t i) { return p.v[i]; }), {n, 3});
+  h5.write("L", pack<9>(n, [&](std::size_t i) { return p.velocity_gradient[i]; }), {n, 9});
+  h5.write("F", pack<9>(n, [&](std::size_t i) { return p.state[i].deformation; }), {n, 9});
+  h5.write("s", pack<9>(n, [&](std::size_t i) { return p.state[i].deviatoric.s; }), {n, 9});
+  h5.write("back_stress", pack<9>(n, [&](std::size_t i) { return p.state[i].deviatoric.back_stress; }), {n, 9});
+  h5.write("scalars", pack<kScalars>(n, [&](std::size_t i) {
+             const auto& s = p.state[i];
+             return Eigen::Matrix<double, kScalars, 1>(
+                 (Eigen::Matrix<double, kScalars, 1>() << s.deviatoric.plastic_strain, s.pressure, s.viscous_pressure,
+                  s.energy, s.temperature, s.shock_volume, s.plastic_work, s.sound_speed, p.mass[i], s.damage)
+                     .finished());
+           }), {n, kScalars});
+  if (!cavity_state.empty()) h5.write("cavity", cavity_state);
+  h5.commit();
 }
 
 OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, std::vector<double>& cavity_state) {
-  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  const io::CheckpointReader checkpoint(file);
+  const io::Hdf5File& h5 = checkpoint.h5();
   const std::string f = file.string();
   if (h5.attribute("format_version") != kFormatVersion)
     throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", f, h5.attribute("format_version"),

@@ -1,8 +1,8 @@
 #pragma once
 // MPM checkpoints (HDF5): every particle array and constitutive state, the clock, the output
 // counters and the cavity tracker, so that a resumed run continues bitwise as if never stopped
-// (same thread count; the solver keeps no other state between steps). Written to a temporary
-// file and renamed.
+// (same thread count; the solver keeps no other state between steps). Written through
+// io/checkpoint_file: checksummed, verified, then renamed; read only after its checksum matches.
 #include <cstdint>
 #include <filesystem>
 #include <vector>

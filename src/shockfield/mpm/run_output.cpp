@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 
 #include "shockfield/analysis/field_statistics.hpp"
+#include "shockfield/io/checked_file.hpp"
 #include "shockfield/mpm/diagnostics.hpp"
 
 namespace shockfield::mpm {
@@ -183,7 +183,7 @@ void RunOutput::write_histograms(const Simulation& sim, std::size_t index) {
   const double lo = case_.diagnostics.histogram_all ? -INFINITY : case_.diagnostics.windows.bottom;
   const double hi = case_.diagnostics.histogram_all ? INFINITY : lo + case_.diagnostics.windows.heights.at(0);
   const auto names = quantity_names(dim);
-  std::ofstream out(folder_ / "histograms" / fmt::format("hist_{}.csv", index));
+  io::CheckedOutput out(folder_ / "histograms" / fmt::format("hist_{}.csv", index));
   out << fmt::format("# t = {:.17g} s, particles with {} <= x[{}] < {} m\n", sim.time(), lo, axis, hi);
   out << "quantity,bin_lo,bin_hi,count,mean,std,skewness,kurtosis\n";
   for (std::size_t q = 0; q < names.size(); ++q) {
@@ -200,6 +200,7 @@ void RunOutput::write_histograms(const Simulation& sim, std::size_t index) {
       out << fmt::format("{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", names[q], h.edges[b], h.edges[b + 1],
                          h.counts[b], m.mean, m.std, m.skewness, m.kurtosis);
   }
+  out.close();
 }
 
 }  // namespace shockfield::mpm

@@ -97,7 +97,9 @@ PdCase read_pd_case(const Config& root) {
   const Config loading = root.table("loading");
   loading.get_choice_or("type", {"impact"}, "impact");
   c.impact_speed = loading.get_double("speed", Range::positive());
-  c.output = read_output(root.optional_table("output"), c.solver.end_time);
+  const auto output = root.optional_table("output");
+  c.output = read_output(output, c.solver.end_time);
+  if (output && c.solver.time_step) check_intervals_against_step(*output, c.output, *c.solver.time_step);
   return c;
 }
 

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/io/hdf5_file.hpp"
+#include "shockfield/io/checkpoint_file.hpp"
 
 namespace shockfield::pd {
 namespace {
@@ -30,25 +30,23 @@ std::vector<Vec3> unflatten(const std::vector<double>& d, std::size_t n, const s
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const std::vector<double>& model_state,
                       const OutputCounters& counters) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    io::Hdf5File h5(tmp, io::Hdf5File::Mode::create);
-    const hsize_t n = sim.cloud().size();
-    h5.set_attribute("format_version", kFormatVersion);
-    h5.set_attribute("step", static_cast<double>(sim.step_count()));
-    h5.set_attribute("time", sim.time());
-    h5.set_attribute("series", static_cast<double>(counters.series));
-    h5.set_attribute("profiles", static_cast<double>(counters.profiles));
-    h5.write("y", flatten(sim.positions()), {n, 3});
-    h5.write("v", flatten(sim.velocities()), {n, 3});
-    h5.write("force_density", flatten(sim.force_density()), {n, 3});
-    h5.write("model_state", model_state);
-  }
-  std::filesystem::rename(tmp, file);
+  io::CheckpointWriter h5(file);
+  const hsize_t n = sim.cloud().size();
+  h5.set_attribute("format_version", kFormatVersion);
+  h5.set_attribute("step", static_cast<double>(sim.step_count()));
+  h5.set_attribute("time", sim.time());
+  h5.set_attribute("series", static_cast<double>(counters.series));
+  h5.set_attribute("profiles", static_cast<double>(counters.profiles));
+  h5.write("y", flatten(sim.positions()), {n, 3});
+  h5.write("v", flatten(sim.velocities()), {n, 3});
+  h5.write("force_density", flatten(sim.force_density()), {n, 3});
+  h5.write("model_state", model_state);
+  h5.commit();
 }
 
 OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, std::vector<double>& model_state) {
-  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  const io::CheckpointReader checkpoint(file);
+  const io::Hdf5File& h5 = checkpoint.h5();
   const std::string f = file.string();
   if (h5.attribute("format_version") != kFormatVersion)
     throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", f, h5.attribute("format_version"),

@@ -1,8 +1,8 @@
 #pragma once
 // PD checkpoints (HDF5): positions, velocities, the force density of the last evaluation, the
 // force model's saved state (F and material state per point), the clock and the output counters,
-// so that a resumed run continues bitwise as if never stopped (same thread count). Written to a
-// temporary file and renamed.
+// so that a resumed run continues bitwise as if never stopped (same thread count). Written through
+// io/checkpoint_file: checksummed, verified, then renamed; read only after its checksum matches.
 #include <cstdint>
 #include <filesystem>
 #include <vector>

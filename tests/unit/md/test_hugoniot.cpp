@@ -63,3 +63,29 @@ TEST(Hugoniot, SaysWhyWhenThereIsNoShock) {
   EXPECT_TRUE(std::isnan(h.us));
   EXPECT_FALSE(h.note.empty());
 }
+
+// Regression (issue 14): a front that runs into the free end left hugoniot_<stage>.toml with
+// `nan` values (no bins ahead of it) and no reason; `shockfield hugoniot` then failed reading it.
+TEST(Hugoniot, SaysTheFrontReachedTheFreeEndAndWritesNoNan) {
+  const double us = 50.0, up = 15.0, rho0 = 8.9;
+  // 170 Å: the front (50 Å/ps) reaches the free end at t = 3.4 ps, just after the fit window
+  // (t >= 3 ps of 0..10 ps) opens, so fewer than 3 profiles of the window see a steady shock.
+  const HugoniotState h = extract_hugoniot(square_wave(us, up, rho0, 2.0, 170.0), 2, +1, up, 0.0, 0.0);
+  EXPECT_FALSE(h.complete());
+  EXPECT_NE(h.note.find("reached the free end"), std::string::npos) << h.note;
+  EXPECT_NE(h.note.find("make the sample longer or the stage shorter"), std::string::npos) << h.note;
+  const std::string toml = hugoniot_toml(h);
+  EXPECT_EQ(toml.find("nan"), std::string::npos) << toml;
+  EXPECT_NE(toml.find("complete = false"), std::string::npos) << toml;
+}
+
+TEST(Hugoniot, FitStopsWhereTheFrontReachesTheFreeEnd) {
+  // 400 Å: the end is reached at t = 8 ps; the window's profiles before it give the exact state.
+  const double us = 50.0, up = 15.0, rho0 = 8.9;
+  const HugoniotState h = extract_hugoniot(square_wave(us, up, rho0, 2.0, 400.0), 2, +1, up, 0.0, 0.0);
+  EXPECT_TRUE(h.complete()) << h.note;
+  EXPECT_NEAR(h.us, 5.0, 0.02);
+  EXPECT_NEAR(h.density0, rho0, 1e-12);
+  EXPECT_NE(h.note.find("reached the free end"), std::string::npos) << h.note;
+  EXPECT_NE(hugoniot_toml(h).find("complete = true"), std::string::npos);
+}

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 #include "shockfield/core/units.hpp"
 
@@ -43,18 +44,26 @@ HugoniotState extract_hugoniot(const std::vector<Profile>& frames, int axis, int
   double st = 0, sx = 0, stt = 0, stx = 0;
   int n = 0;
   double rho = 0, up = 0, temp = 0, press = 0, rho0 = 0, weight = 0, weight0 = 0;
+  double reached_end_at = NAN;  // time of the first profile whose front is at the free end
   for (const Profile& p : frames) {
     if (p.time < t_fit) continue;
     const double front = front_position(p, axis, side, piston_speed);
     if (!std::isfinite(front)) continue;
-    st += p.time; sx += front; stt += p.time * p.time; stx += p.time * front;
-    ++n;
     const double wall = wall0 + side * piston_speed * (p.time - wall_t0);
     const double width = p.bins.size() > 1 ? std::abs(p.bins[1].position - p.bins[0].position) : 1.0;
     // The free end of the sample (partly filled bins, surface relaxation) is not bulk.
     double far_end = side > 0 ? -1e300 : 1e300;
     for (const ProfileBin& b : p.bins)
       if (b.count > 0) far_end = side > 0 ? std::max(far_end, b.position) : std::min(far_end, b.position);
+    // A front within the margin of the free end has no undisturbed material ahead of it; from
+    // then on the free surface moves and a release wave runs back: no later profile is a
+    // steady shock.
+    if (side * (far_end - front) <= margin_bins * width) {
+      reached_end_at = p.time;
+      break;
+    }
+    st += p.time; sx += front; stt += p.time * p.time; stx += p.time * front;
+    ++n;
     for (const ProfileBin& b : p.bins) {
       if (b.count == 0) continue;
       const double from_wall = side * (b.position - wall), to_front = side * (front - b.position);
@@ -71,8 +80,15 @@ HugoniotState extract_hugoniot(const std::vector<Profile>& frames, int axis, int
     }
   }
   s.frames = n;
+  const std::string free_end =
+      std::isfinite(reached_end_at)
+          ? fmt::format("the shock front reached the free end of the sample at t = {} ps: make the sample longer or "
+                        "the stage shorter",
+                        reached_end_at)
+          : "";
   if (n < 3) {
-    s.note = "the front was found in fewer than 3 profiles of the fit window";
+    s.note = free_end.empty() ? "the front was found in fewer than 3 profiles of the fit window"
+                              : free_end + " (fewer than 3 profiles of the fit window came before)";
     return s;
   }
   const double denom = n * stt - st * st;
@@ -90,18 +106,34 @@ HugoniotState extract_hugoniot(const std::vector<Profile>& frames, int axis, int
     // ρ [g/cm³] · U [km/s] · U [km/s] = GPa.
     s.pressure_rh = s.density0 * s.us * s.up;
     s.density_rh = s.density0 * s.us / (s.us - s.up);
+  } else if (s.note.empty()) {
+    s.note = "no undisturbed bins ahead of the front (initial density unknown): make the sample longer or the stage "
+             "shorter";
   }
+  if (!free_end.empty() && s.note.empty()) s.note = free_end + "; the fit uses the profiles before it";
+  if (!s.complete() && s.note.empty()) s.note = "a value of the Hugoniot state is not finite";
   return s;
 }
 
+bool HugoniotState::complete() const {
+  for (double v : {us, up, piston_speed, pressure, pressure_rh, density, density_rh, density0, temperature})
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
 std::string hugoniot_toml(const HugoniotState& s) {
-  return fmt::format(
-      "# Hugoniot state from the binned profiles (see docs/md.md, 'Shock diagnostics').\n"
-      "us_km_s = {}\nup_km_s = {}\npiston_speed_km_s = {}\npressure_GPa = {}\n"
-      "pressure_rankine_hugoniot_GPa = {}\ndensity_g_cc = {}\ndensity_rankine_hugoniot_g_cc = {}\n"
-      "density0_g_cc = {}\ntemperature_K = {}\nframes_in_fit = {}\nnote = \"{}\"\n",
-      s.us, s.up, s.piston_speed, s.pressure, s.pressure_rh, s.density, s.density_rh, s.density0,
-      s.temperature, s.frames, s.note);
+  // TOML has no "missing": a value that could not be measured is left out (never written as
+  // nan), `complete` says whether all are there and `note` why not.
+  std::string text = "# Hugoniot state from the binned profiles (see docs/md.md, 'Shock diagnostics').\n";
+  const std::pair<const char*, double> values[] = {
+      {"us_km_s", s.us}, {"up_km_s", s.up}, {"piston_speed_km_s", s.piston_speed}, {"pressure_GPa", s.pressure},
+      {"pressure_rankine_hugoniot_GPa", s.pressure_rh}, {"density_g_cc", s.density},
+      {"density_rankine_hugoniot_g_cc", s.density_rh}, {"density0_g_cc", s.density0},
+      {"temperature_K", s.temperature}};
+  for (const auto& [key, value] : values)
+    if (std::isfinite(value)) text += fmt::format("{} = {}\n", key, value);
+  text += fmt::format("frames_in_fit = {}\ncomplete = {}\nnote = \"{}\"\n", s.frames, s.complete(), s.note);
+  return text;
 }
 
 }  // namespace shockfield::md

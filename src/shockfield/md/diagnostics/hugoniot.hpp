@@ -26,17 +26,23 @@ struct HugoniotState {
   double temperature = NAN;   ///< K
   int frames = 0;             ///< profiles used in the fit window
   std::string note;           ///< why a value is missing, if one is
+  /// Every value finite (a state the sweep can use); otherwise `note` says why not.
+  bool complete() const;
 };
 
 /// Front position (Å) in one profile, NaN when no bin exceeds half the piston speed.
 double front_position(const Profile& profile, int axis, int side, double piston_speed);
 
 /// `piston_speed` in Å/ps along side·axis, `wall(t)` the piston position, frames in time order.
-/// The fit window is the last (1 − skip_fraction) of the frames' time span.
+/// The fit window is the last (1 − skip_fraction) of the frames' time span; it ends at the first
+/// profile whose front is within `margin_bins` of the free end (then the note says the front
+/// reached the free end: make the sample longer or the stage shorter).
 HugoniotState extract_hugoniot(const std::vector<Profile>& frames, int axis, int side,
                                double piston_speed, double wall0, double wall_t0,
                                double skip_fraction = 0.3, int margin_bins = 3);
 
+/// The state as TOML: finite values only (a missing one is left out, never written as nan),
+/// `complete` and `note`.
 std::string hugoniot_toml(const HugoniotState& s);
 
 }  // namespace shockfield::md

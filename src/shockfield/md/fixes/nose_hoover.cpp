@@ -1,7 +1,10 @@
 #include "shockfield/md/fixes/nose_hoover.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
+#include "shockfield/core/error.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/md/simulation.hpp"
 #include "shockfield/md/velocity.hpp"
@@ -61,6 +64,15 @@ std::size_t NoseHooverChain::restore(const std::vector<double>& s, std::size_t k
   return k;
 }
 
+void check_extended_energy(const Simulation& sim, const char* fix, double energy, double dof, double temperature) {
+  const double scale = dof * boltz * temperature;
+  if (std::isfinite(energy) && std::abs(energy) <= runaway_factor * scale) return;
+  throw RunError(fmt::format("step {}: the {} thermostat ran away: its variables hold {:.3g} eV, more than {:.0e} "
+                             "N_f k_B T = {:.3g} eV (the conserved energy blows up while the atoms stay finite); "
+                             "the time step ({} ps) is probably too large for the damping time of this fix",
+                             sim.step, fix, energy, runaway_factor, runaway_factor * scale, sim.dt));
+}
+
 void scale_group_velocities(Atoms& atoms, std::uint32_t group_bit, double factor) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < atoms.nlocal; ++i)
@@ -78,6 +90,7 @@ void FixNoseHoover::initial_integrate(Simulation& sim) {
 void FixNoseHoover::final_integrate(Simulation& sim) {
   FixNve::final_integrate(sim);
   integrate_chain(sim);
+  check_extended_energy(sim, "nvt", chain_.energy(), chain_.degrees_of_freedom(), chain_.temperature());
 }
 
 void FixNoseHoover::integrate_chain(Simulation& sim) {

@@ -5,6 +5,7 @@
 // kick; the atoms' velocities are scaled by exp(−½Δt η̇₁). Thermostat masses
 // Q₁ = N_f k_B T / ω², Q_k = k_B T / ω² with ω = 1/τ. The chain energy
 // N_f k_B T η₁ + Σ_{k>1} k_B T η_k + Σ ½ Q_k η̇_k² enters the conserved quantity.
+#include "shockfield/core/units.hpp"
 #include "shockfield/md/atoms.hpp"
 #include "shockfield/md/fixes/nve.hpp"
 
@@ -26,6 +27,8 @@ class NoseHooverChain {
   /// returns the index after them.
   void save(std::vector<double>& s) const;
   std::size_t restore(const std::vector<double>& s, std::size_t k);
+  double degrees_of_freedom() const { return dof_; }
+  double temperature() const { return kt_ / units::metal::boltz; }
 
  private:
   double kt_, period_;
@@ -48,6 +51,15 @@ class FixNoseHoover : public FixNve {
   void integrate_chain(Simulation& sim);
   NoseHooverChain chain_;
 };
+
+/// The run-time diagnosis of a thermostat or barostat that ran away: RunError when the energy
+/// its extended variables hold (`energy`, eV) is not finite or exceeds runaway_factor · N_f k_B T
+/// of the atoms it couples to. A time step too large for the chain blows the system up while
+/// the velocity scaling keeps every atom finite and slow, so the atoms' checks never fire; only
+/// the conserved quantity shows it (3e22 eV for 256 atoms at dt = 0.1 ps).
+void check_extended_energy(const Simulation& sim, const char* fix, double energy, double dof, double temperature);
+/// A legitimate run's thermostat holds a few N_f k_B T; a million is a runaway.
+inline constexpr double runaway_factor = 1e6;
 
 /// Scales the velocities of a group's atoms by `factor`.
 void scale_group_velocities(Atoms& atoms, std::uint32_t group_bit, double factor);

@@ -1,0 +1,136 @@
+#include "shockfield/io/checkpoint_file.hpp"
+
+#include <fmt/format.h>
+
+#include <sstream>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/io/checked_file.hpp"
+
+namespace shockfield::io {
+namespace {
+
+constexpr const char* kChecksum = "checksum";
+constexpr const char* kItems = "checksum_items";
+
+Hdf5File open_checkpoint(const std::filesystem::path& file) {
+  try {
+    return Hdf5File(file, Hdf5File::Mode::read);
+  } catch (const InputError&) {
+    throw InputError(fmt::format("{}: damaged or truncated checkpoint (not a readable HDF5 file)", file.string()));
+  }
+}
+
+// Recomputes the checksum of an open checkpoint from its item list.
+std::string recompute(const Hdf5File& h5) {
+  PayloadChecksum sum;
+  std::istringstream items(h5.string_attribute(kItems));
+  std::string line;
+  while (std::getline(items, line)) {
+    if (line.size() < 3 || line[1] != ' ') throw InputError(fmt::format("{}: bad checksum item list", h5.path()));
+    const char kind = line[0];
+    const std::string name = line.substr(2);
+    if (kind == 'f') {
+      const double v = h5.attribute(name);
+      sum.add(kind, name, &v, sizeof v);
+    } else if (kind == 's') {
+      const std::string v = h5.string_attribute(name);
+      sum.add(kind, name, v.data(), v.size());
+    } else if (kind == 'd') {
+      const auto v = h5.read_doubles(name);
+      sum.add(kind, name, v.data(), v.size() * sizeof(double));
+    } else if (kind == 'i') {
+      const auto v = h5.read_ints(name);
+      sum.add(kind, name, v.data(), v.size() * sizeof(std::int64_t));
+    } else {
+      throw InputError(fmt::format("{}: bad checksum item kind '{}'", h5.path(), kind));
+    }
+  }
+  return sum.hex();
+}
+
+void verify(const Hdf5File& h5) {
+  if (!h5.has_attribute(kChecksum) || !h5.has_attribute(kItems))
+    throw InputError(fmt::format("{}: checkpoint has no checksum (damaged, or written by a shockfield older than "
+                                 "checksummed checkpoints); it cannot be trusted for --resume",
+                                 h5.path()));
+  std::string computed;
+  try {
+    computed = recompute(h5);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("damaged or truncated checkpoint: {}", e.what()));
+  }
+  const std::string stored = h5.string_attribute(kChecksum);
+  if (computed != stored)
+    throw InputError(fmt::format("{}: damaged checkpoint: checksum {} of its contents, {} stored", h5.path(), computed,
+                                 stored));
+}
+
+}  // namespace
+
+void PayloadChecksum::mix(const void* data, std::size_t bytes) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < bytes; ++i) hash_ = (hash_ ^ p[i]) * 1099511628211ull;  // FNV-1a 64-bit prime
+}
+
+void PayloadChecksum::add(char kind, const std::string& name, const void* data, std::size_t bytes) {
+  items_ += fmt::format("{} {}\n", kind, name);
+  mix(&kind, 1);
+  mix(name.data(), name.size() + 1);  // with its terminating NUL, so names cannot run into data
+  const auto count = static_cast<std::uint64_t>(bytes);
+  mix(&count, sizeof count);
+  mix(data, bytes);
+}
+
+std::string PayloadChecksum::hex() const { return fmt::format("{:016x}", hash_); }
+
+CheckpointWriter::CheckpointWriter(std::filesystem::path file)
+    : file_(std::move(file)), h5_(file_, Hdf5File::Mode::memory) {}
+
+void CheckpointWriter::set_attribute(const std::string& name, double value) {
+  h5_.set_attribute(name, value);
+  sum_.add('f', name, &value, sizeof value);
+}
+
+void CheckpointWriter::set_attribute(const std::string& name, const std::string& value) {
+  h5_.set_attribute(name, value);
+  sum_.add('s', name, value.data(), value.size());
+}
+
+void CheckpointWriter::write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> shape) {
+  h5_.write(name, data, std::move(shape));
+  sum_.add('d', name, data.data(), data.size() * sizeof(double));
+}
+
+void CheckpointWriter::write(const std::string& name, const std::vector<std::int64_t>& data,
+                             std::vector<hsize_t> shape) {
+  h5_.write(name, data, std::move(shape));
+  sum_.add('i', name, data.data(), data.size() * sizeof(std::int64_t));
+}
+
+void CheckpointWriter::commit() {
+  h5_.set_attribute(kItems, sum_.items());
+  h5_.set_attribute(kChecksum, sum_.hex());
+  const std::vector<unsigned char> bytes = h5_.image();
+  h5_.close();
+  const std::filesystem::path tmp = file_.string() + ".tmp";
+  try {
+    write_file_checked(tmp, {reinterpret_cast<const char*>(bytes.data()), bytes.size()}, true);
+  } catch (const RunError& e) {
+    throw RunError(fmt::format("{}: cannot write the checkpoint ({}); the previous checkpoint is kept", file_.string(),
+                               e.what()));
+  }
+  try {
+    verify(open_checkpoint(tmp));
+  } catch (const InputError& e) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw RunError(fmt::format("{}: the new checkpoint did not read back ({}); the previous one is kept",
+                               file_.string(), e.what()));
+  }
+  rename_checked(tmp, file_, true);
+}
+
+CheckpointReader::CheckpointReader(const std::filesystem::path& file) : h5_(open_checkpoint(file)) { verify(h5_); }
+
+}  // namespace shockfield::io

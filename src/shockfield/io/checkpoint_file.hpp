@@ -1,0 +1,63 @@
+#pragma once
+// The one way every method writes and reads its checkpoint (HDF5, io/hdf5_file):
+//
+//   write: the file is built in memory, with a 64-bit FNV-1a checksum over every attribute and
+//          dataset (name, length and bytes, in the order written) stored as the attributes
+//          `checksum` and `checksum_items`; its bytes go to <file>.tmp with checked writes and
+//          an fsync; the temporary file is read back and its checksum verified; only then is
+//          it renamed over <file> and the folder fsynced. Until that rename the previous
+//          checkpoint is untouched; on any failure the temporary file is removed and RunError
+//          names it (exit 3).
+//   read:  the file is opened and its checksum verified before anything is used; a truncated or
+//          damaged checkpoint (or one written without a checksum) is refused by name with
+//          InputError (exit 2), never read as zeros.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shockfield/io/hdf5_file.hpp"
+
+namespace shockfield::io {
+
+/// Checksum over the items of a checkpoint (FNV-1a, 64 bit: Fowler, Noll and Vo's hash).
+class PayloadChecksum {
+ public:
+  /// Adds one item: its kind letter and name, its byte count, its bytes.
+  void add(char kind, const std::string& name, const void* data, std::size_t bytes);
+  std::string hex() const;
+  const std::string& items() const { return items_; }
+
+ private:
+  void mix(const void* data, std::size_t bytes);
+  std::uint64_t hash_ = 14695981039346656037ull;  // FNV-1a 64-bit offset basis
+  std::string items_;                             // "<kind> <name>\n" per item, in order
+};
+
+class CheckpointWriter {
+ public:
+  explicit CheckpointWriter(std::filesystem::path file);
+  void set_attribute(const std::string& name, double value);
+  void set_attribute(const std::string& name, const std::string& value);
+  void write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> shape = {});
+  void write(const std::string& name, const std::vector<std::int64_t>& data, std::vector<hsize_t> shape = {});
+  /// Writes, verifies and renames (see the top of this file). Nothing reaches `file` before.
+  void commit();
+
+ private:
+  std::filesystem::path file_;
+  Hdf5File h5_;
+  PayloadChecksum sum_;
+};
+
+class CheckpointReader {
+ public:
+  /// Opens `file` and verifies its checksum; InputError naming the file when it does not match.
+  explicit CheckpointReader(const std::filesystem::path& file);
+  const Hdf5File& h5() const { return h5_; }
+
+ private:
+  Hdf5File h5_;
+};
+
+}  // namespace shockfield::io
