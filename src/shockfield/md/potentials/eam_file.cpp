@@ -137,6 +137,11 @@ EamGrid read_grid(Records& in) {
                         g.nrho, g.nr, in.max_values() * kMinValueBytes));
   if (!(g.drho > 0) || !(g.dr > 0) || !(g.cut > 0))
     in.fail(fmt::format("expected drho, dr and cutoff > 0, found {}, {}, {}", g.drho, g.dr, g.cut));
+  // The tables' extents (Nrho - 1) drho and (Nr - 1) dr size the common grid: an infinite one
+  // (dr = 1e308) would overflow its integer count.
+  if (!std::isfinite(g.nrho * g.drho) || !std::isfinite(g.nr * g.dr))
+    in.fail(fmt::format("the tables' extents Nrho drho = {} x {} and Nr dr = {} x {} are not finite",
+                        g.nrho, g.drho, g.nr, g.dr));
   if (g.cut > kMaxCutoff)
     in.fail(fmt::format("cutoff {} Å is beyond {} Å, longer than any EAM potential's", g.cut, kMaxCutoff));
   // The tables reach r = (Nr - 1) dr; files commonly put the cutoff one step further, at Nr dr.
