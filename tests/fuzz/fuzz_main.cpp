@@ -94,6 +94,7 @@ struct Tally {
   std::map<std::string, std::size_t> kinds;
   std::size_t failures = 0, total = 0;
   double slowest = 0;
+  std::string slowest_label;
 };
 
 // Puts one file through a target in a fresh work folder; reports and saves a failure.
@@ -111,7 +112,7 @@ void run_one(const shockfield::fuzz::Target& t, const fs::path& original, const 
   const Outcome out = t.run(file, work);
   ++tally.total;
   ++tally.kinds[shockfield::fuzz::kind_name(out.kind)];
-  tally.slowest = std::max(tally.slowest, out.seconds);
+  if (out.seconds > tally.slowest) tally.slowest = out.seconds, tally.slowest_label = label;
   auto p = problem(out, original.filename().string(), t.carrier);
   if (!p && must_refuse && out.kind != Outcome::Kind::input_error && out.kind != Outcome::Kind::run_error)
     p = fmt::format("{}: a corpus input must be refused (exit 2) or diagnosed (exit 3)",
@@ -131,7 +132,8 @@ void run_one(const shockfield::fuzz::Target& t, const fs::path& original, const 
 void print_tally(const std::string& name, const Tally& t, const std::string& what) {
   std::string kinds;
   for (const auto& [k, n] : t.kinds) kinds += fmt::format("{}{} {}", kinds.empty() ? "" : ", ", n, k);
-  fmt::print("fuzz {}: {} {}: {}; {} failures; slowest {:.2f} s\n", name, t.total, what, kinds, t.failures, t.slowest);
+  fmt::print("fuzz {}: {} {}: {}; {} failures; slowest {:.2f} s ({})\n", name, t.total, what, kinds,
+             t.failures, t.slowest, t.slowest_label.substr(0, 160));
 }
 
 }  // namespace

@@ -13,7 +13,7 @@
 namespace shockfield::fuzz {
 
 struct Limits {
-  double seconds = 20;                       ///< wall time of one input
+  double seconds = 30;                       ///< wall time of one input
   std::uintmax_t output_bytes = 64u << 20;   ///< everything the child writes to its work folder
   /// Address space of the child (RLIMIT_AS), so that a count trusted too far fails fast as
   /// std::bad_alloc instead of swapping the machine; not set under AddressSanitizer, which

@@ -182,6 +182,8 @@ TEST_F(BadInput, GridStepsAndCutoffMustFitTheTable) {
   expect_input_error([&] { read_funcfl(file); }, {"dr.eam:3:", "beyond the tabulated range"});
   file = write("cut.eam", kPotentials / "Cu_u3.eam", -1, "4.9499999999999886e+00", "1e300");
   expect_input_error([&] { read_funcfl(file); }, {"cut.eam:3:", "cutoff 1e+300"});
+  file = write("dr308.eam", kPotentials / "Cu_u3.eam", -1, "1.0000000000000009e-02", "1e308");
+  expect_input_error([&] { read_funcfl(file); }, {"dr308.eam:3:", "are not finite"});  // Nr dr = inf
   file = write("drho.eam", kPotentials / "Cu_u3.eam", -1, "5.0100200400801306e-04", "-inf");
   expect_input_error([&] { read_funcfl(file); }, {"drho.eam:3:", "finite number in drho"});
 }
