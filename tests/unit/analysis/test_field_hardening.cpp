@@ -2,8 +2,11 @@
 // extents and offsets beyond the file (issue 14): each is an InputError naming the file.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "support/scratch_path.hpp"
 
 #include "shockfield/analysis/field_reader.hpp"
 #include "shockfield/core/error.hpp"
@@ -13,7 +16,9 @@ namespace sa = shockfield::analysis;
 namespace {
 
 std::string field_error(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
+  const auto dir = shockfield::testing::scratch_path("shockfield_field_hardening");
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / name).string();
   std::ofstream(path, std::ios::binary) << text;
   try {
     sa::read_grid_field(path);

@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "support/scratch_path.hpp"
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/lammps_data.hpp"
@@ -16,8 +19,15 @@ namespace {
 
 const std::string kHead = "title\n\n2 atoms\n1 atom types\n\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n\nMasses\n\n1 1.0\n\nAtoms\n\n";
 
+// A folder of this test process (ctest runs tests side by side).
+std::string scratch(const std::string& name) {
+  const auto dir = shockfield::testing::scratch_path("shockfield_io_hardening");
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
 std::string data_error(const std::string& text) {
-  const std::string path = ::testing::TempDir() + "hard.data";
+  const std::string path = scratch("hard.data");
   std::ofstream(path) << text;
   try {
     read_data(path);
@@ -40,7 +50,7 @@ TEST(DataHardening, FarCoordinatesInAPeriodicBoxWrapOrAreRefusedAtOnce) {
     EXPECT_NE(e.find("hard.data:16: atom 1"), std::string::npos) << e;
     EXPECT_NE(e.find("cannot be wrapped"), std::string::npos) << e;
   }
-  const std::string path = ::testing::TempDir() + "far.data";
+  const std::string path = scratch("far.data");
   std::ofstream(path) << kHead + "1 1 1000000003.5 1 1 0 0 0\n2 1 2 2 2\n";
   const DataFile d = read_data(path);
   EXPECT_DOUBLE_EQ(d.atoms.x[0].x(), 3.5);
