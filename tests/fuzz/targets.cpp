@@ -78,8 +78,7 @@ Target eam_target(const Context& c, const std::string& name, const fs::path& inp
 // input, and every mutant resumes a copy of the folder.
 fs::path checkpoint_base(const Context& c) {
   const fs::path base = c.work / "checkpoint_base";
-  if (fs::exists(base / "out/checkpoint.h5")) return base;
-  fs::remove_all(base);
+  fs::remove_all(base);  // made anew by every fuzz run: the binary (and its format) may have changed
   fs::create_directories(base);
   write_text(base / "case.toml", EamCase{"eam", "Cu", "3.615", false}.text(c, kPotentials / "Cu_u3.eam"));
   const Outcome o = run_case(c, base / "case.toml", base, {"--stop-after", "10"});
