@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -39,7 +40,27 @@ double parse_number(const std::string& token, const std::string& where) {
   }
   if (used == 0 || trim(token.substr(used)) != "")
     throw InputError(fmt::format("{}: '{}' is not a number", where, token));
+  if (std::isinf(v)) throw InputError(fmt::format("{}: '{}' is infinite; expected a finite number", where, token));
   return v;
+}
+
+// A number that must be finite: grid geometry (origin, spacing, extents), times, offsets. NaN
+// stands for a void cell only among the values.
+double finite_number(const std::string& token, const std::string& where) {
+  const double v = parse_number(token, where);
+  if (std::isnan(v)) throw InputError(fmt::format("{}: '{}' is not a finite number", where, token));
+  return v;
+}
+
+// The cell count of a grid, refused when it exceeds the bytes of the file (each value takes at
+// least one): checked before anything is sized by the dimensions, which could also overflow.
+std::size_t checked_cells(const std::array<std::size_t, 3>& n, std::size_t file_bytes,
+                          const std::string& where) {
+  const double cells = static_cast<double>(n[0]) * static_cast<double>(n[1]) * static_cast<double>(n[2]);
+  if (cells > static_cast<double>(file_bytes))
+    throw InputError(fmt::format("{}: a grid of {} x {} x {} values cannot fit in a file of {} bytes",
+                                 where, n[0], n[1], n[2], file_bytes));
+  return n[0] * n[1] * n[2];
 }
 
 // Stores `value` (NaN = void) as the next cell.
@@ -76,7 +97,7 @@ class Tokens {
   double number(const char* what) {
     const std::string t = next();
     if (t.empty()) throw InputError(fmt::format("{}: {} expected, the file ends", where(), what));
-    return parse_number(t, where());
+    return finite_number(t, where());
   }
   std::size_t count(const char* what) {
     const double v = number(what);
@@ -128,10 +149,10 @@ GridField read_csv(const std::string& path, const std::string& text) {
       std::istringstream c(t.substr(1));
       std::string key, eq;
       c >> key >> eq;
-      if (key == "spacing") f.spacing.fill(parse_number(trim(c.str().substr(c.tellg())), where));
+      if (key == "spacing") f.spacing.fill(finite_number(trim(c.str().substr(c.tellg())), where));
       if (key == "origin")
         for (auto& o : f.origin)
-          o = parse_number(
+          o = finite_number(
               [&] {
                 std::string s;
                 c >> s;
@@ -197,7 +218,7 @@ GridField read_legacy_vtk(const std::string& path, const std::string& text,
     } else if (word == "point_data" || word == "cell_data") {
       cell_data = word == "cell_data";
       const std::size_t count = in.count("number of values");
-      if (dims[0] * dims[1] * dims[2] == 0)
+      if (checked_cells(dims, text.size(), in.where()) == 0)
         throw InputError(fmt::format("{}: {} before DIMENSIONS", in.where(), word));
       for (int a = 0; a < 3; ++a)
         f.n[a] = cell_data ? std::max<std::size_t>(dims[a], 2) - 1 : dims[a];
@@ -246,7 +267,7 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
     const std::string given = xml_attribute(tag, key);
     Tokens t(given, path, line_at(text, image));
     for (double& v : *values)
-      if (const std::string token = t.next(); !token.empty()) v = parse_number(token, t.where());
+      if (const std::string token = t.next(); !token.empty()) v = finite_number(token, t.where());
   }
   for (auto pos = markup.find("<DataArray", image); pos != std::string::npos;
        pos = markup.find("<DataArray", pos + 1)) {
@@ -264,9 +285,14 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
     const bool cell =
         cell_pos != std::string::npos && (point_pos == std::string::npos || cell_pos > point_pos);
     for (int a = 0; a < 3; ++a) {
-      const auto points = static_cast<std::size_t>(std::max(0.0, e[2 * a + 1] - e[2 * a] + 1));
-      f.n[a] = cell ? std::max<std::size_t>(points, 2) - 1 : points;
+      const double points = std::max(0.0, e[2 * a + 1] - e[2 * a] + 1);
+      if (points > static_cast<double>(text.size()) || points != std::floor(points))
+        throw InputError(fmt::format("{}: WholeExtent {} {} along {} is not a whole number of points "
+                                     "that fits in the file", where(image), e[2 * a], e[2 * a + 1], "xyz"[a]));
+      f.n[a] = cell ? std::max<std::size_t>(static_cast<std::size_t>(points), 2) - 1
+                    : static_cast<std::size_t>(points);
     }
+    checked_cells(f.n, text.size(), where(image));
     const auto body = markup.find('>', pos) + 1;
     if (format == "ascii") {
       Tokens values(markup.substr(body, markup.find("</DataArray>", body) - body), path,
@@ -278,13 +304,18 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
       if (format == "binary")
         values = b.inline_values(body, f.size());
       else if (format == "appended")
-        values = b.appended_values(parse_number(xml_attribute(da, "offset"), where(pos)), f.size());
+        values = b.appended_values(finite_number(xml_attribute(da, "offset"), where(pos)), f.size());
       else
         throw InputError(
             fmt::format("{}: DataArray '{}' has format=\"{}\"; expected ascii, "
                         "binary or appended",
                         where(pos), name, format));
-      for (const double v : values) push(f, v);
+      for (const double v : values) {
+        if (std::isinf(v))
+          throw InputError(fmt::format("{}: DataArray '{}' holds an infinite value; expected finite "
+                                       "numbers (NaN for void cells)", where(pos), name));
+        push(f, v);
+      }
     }
     return f;
   }
@@ -304,7 +335,7 @@ std::vector<SeriesEntry> read_pvd(const std::filesystem::path& pvd) {
     const std::string where = fmt::format("{}:{}", pvd.string(), line_at(text, pos));
     const std::string file = xml_attribute(tag, "file"), time = xml_attribute(tag, "timestep");
     if (file.empty()) throw InputError(fmt::format("{}: <DataSet> without a file", where));
-    out.push_back({time.empty() ? double(out.size()) : parse_number(time, where),
+    out.push_back({time.empty() ? double(out.size()) : finite_number(time, where),
                    (pvd.parent_path() / file).string()});
   }
   if (out.empty()) throw InputError(fmt::format("{}: no <DataSet> entries", pvd.string()));

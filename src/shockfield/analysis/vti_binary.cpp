@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -129,6 +130,8 @@ std::vector<double> decode(const VtiBinary& a, std::size_t count,
     if (swap) std::reverse(bytes.begin(), bytes.end());
     return bytes;
   };
+  if (count > a.text.size())  // every value takes at least a byte: also keeps count * size exact
+    throw InputError(fmt::format("{}: {} values cannot fit in a file of {} bytes", where, count, a.text.size()));
   const std::size_t header_size = header == "UInt64" ? 8 : 4;
   const std::string h = native(take(header_size));
   if (h.size() < header_size)
@@ -170,9 +173,10 @@ std::vector<double> VtiBinary::appended_values(double offset, std::size_t count)
         fmt::format("{}: DataArray '{}' is appended but the file has no "
                     "<AppendedData> … _ section",
                     where, name));
-  if (!(offset >= 0.0) || offset != static_cast<double>(static_cast<std::size_t>(offset)))
-    throw InputError(fmt::format("{}: DataArray '{}' has offset {}; expected a whole number >= 0",
-                                 where, name, offset));
+  // Range first: the cast of an offset beyond size_t would be undefined.
+  if (!(offset >= 0.0 && offset <= static_cast<double>(text.size())) || offset != std::floor(offset))
+    throw InputError(fmt::format("{}: DataArray '{}' has offset {}; expected a whole number from 0 "
+                                 "to the file's size, {} bytes", where, name, offset, text.size()));
   std::size_t pos = underscore + 1 + static_cast<std::size_t>(offset);
   const std::string encoding = xml_attribute(appended, "encoding");
   if (encoding == "base64") {

@@ -9,9 +9,18 @@
 namespace shockfield {
 
 bool Range::contains(double v) const {
-  if (std::isnan(v)) return false;
+  if (!std::isfinite(v)) return false;  // NaN and +-inf: every range holds finite numbers only
   if (lo_open ? !(v > lo) : !(v >= lo)) return false;
   if (hi_open ? !(v < hi) : !(v <= hi)) return false;
+  return true;
+}
+
+bool Range::contains(long long v) const {
+  // Compared in long double, whose 64-bit mantissa holds every long long exactly: a double
+  // would round 2^63 - 1 up to 2^63 and let it pass a bound of 9.2e18.
+  const long double x = static_cast<long double>(v);
+  if (lo_open ? !(x > lo) : !(x >= lo)) return false;
+  if (hi_open ? !(x < hi) : !(x <= hi)) return false;
   return true;
 }
 
@@ -122,7 +131,7 @@ long long Config::get_int(std::string_view key, Range range) const {
   mark(key);
   auto i = n->as_integer();
   if (!i) fail(key, fmt::format("expected an integer {}", range.describe()));
-  if (!range.contains(static_cast<double>(i->get())))
+  if (!range.contains(static_cast<long long>(i->get())))
     fail(key, fmt::format("expected an integer {}, got {}", range.describe(), i->get()));
   record(key, i->get());
   return i->get();
@@ -191,7 +200,7 @@ std::vector<long long> Config::get_ints(std::string_view key, std::size_t count,
   toml::array rec;
   for (const auto& e : *a) {
     auto i = e.as_integer();
-    if (!i || !range.contains(static_cast<double>(i->get())))
+    if (!i || !range.contains(static_cast<long long>(i->get())))
       fail(key, fmt::format("expected {} {}", what, range.describe()));
     out.push_back(i->get());
     rec.push_back(i->get());

@@ -24,7 +24,10 @@ struct Range {
   static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
   static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
   static Range closed(double a, double b) { return {a, b, false, false}; }
+  /// False for NaN and +-inf whatever the bounds ("a finite number").
   bool contains(double v) const;
+  /// An integer compared exactly (no rounding to double at the bounds).
+  bool contains(long long v) const;
   std::string describe() const;
 };
 

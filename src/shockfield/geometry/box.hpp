@@ -25,7 +25,11 @@ struct Box {
   double volume() const { const Vec3 l = length(); return l.x() * l.y() * l.z(); }
   bool periodic(int d) const { return boundary[d] == Boundary::periodic; }
   bool contains(const Vec3& x) const;
-  /// Maps x into the box along periodic dimensions and updates its image counts.
+  /// Maps x into the box along periodic dimensions and updates its image counts, in constant
+  /// time (by floor, whatever the distance). False, with x and image unchanged, when x is not
+  /// finite or its image count would leave the range of int.
+  [[nodiscard]] bool try_wrap(Vec3& x, std::array<int, 3>& image) const;
+  /// try_wrap(), throwing RunError (the run blew up) when it fails.
   void wrap(Vec3& x, std::array<int, 3>& image) const;
   /// Shortest periodic image of a separation vector.
   Vec3 minimum_image(Vec3 d) const;

@@ -1,8 +1,10 @@
 #include "shockfield/io/lammps_data.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <fmt/format.h>
 #include <fstream>
+#include <limits>
 #include <unordered_map>
 
 #include "shockfield/core/error.hpp"
@@ -13,12 +15,18 @@ namespace shockfield::io {
 namespace {
 
 const char* const axis_name = "xyz";
+constexpr long long kMinAtomRowBytes = 10;
+// Far more types than any potential maps; bounds the per-type arrays sized from the header.
+constexpr long long kMaxAtomTypes = 100000;
 
 // Reader following the layout rules of LAMMPS read_data (docs of `read_data`).
 class DataReader {
  public:
   DataReader(const std::filesystem::path& file, const std::array<geometry::Boundary, 3>& boundary)
       : r_(file) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(file, ec);
+    file_bytes_ = ec ? 0 : static_cast<long long>(size);
     out_.box.boundary = boundary;
   }
 
@@ -79,14 +87,16 @@ class DataReader {
       if (natoms_ < 0) r_.fail("expected a number of atoms >= 0");
     } else if (w.size() == 3 && w[1] == "atom" && w[2] == "types") {
       ntypes_ = r_.to_int(w[0], "the number of atom types");
-      if (ntypes_ < 1) r_.fail("expected a number of atom types >= 1");
+      if (ntypes_ < 1 || ntypes_ > kMaxAtomTypes)
+        r_.fail(fmt::format("expected a number of atom types in 1..{}, got {}", kMaxAtomTypes, ntypes_));
     } else if (w.size() == 4 && w[2].size() == 3 && w[2].substr(1) == "lo" && w[3].size() == 3 &&
                w[3].substr(1) == "hi" && w[2][0] == w[3][0] && w[2][0] >= 'x' && w[2][0] <= 'z') {
       const int d = w[2][0] - 'x';
       out_.box.lo[d] = r_.to_double(w[0], fmt::format("{}lo", w[2][0]));
       out_.box.hi[d] = r_.to_double(w[1], fmt::format("{}hi", w[2][0]));
-      if (!(out_.box.lo[d] < out_.box.hi[d]))
-        r_.fail(fmt::format("expected {0}lo < {0}hi, got {1} {2}", w[2][0], out_.box.lo[d], out_.box.hi[d]));
+      if (!(out_.box.lo[d] < out_.box.hi[d]) || !std::isfinite(out_.box.hi[d] - out_.box.lo[d]))
+        r_.fail(fmt::format("expected {0}lo < {0}hi with a finite length, got {1} {2}", w[2][0],
+                            out_.box.lo[d], out_.box.hi[d]));
       have_box[d] = true;
     } else if (w.size() == 6 && w[3] == "xy") {
       r_.fail("triclinic box (xy xz yz) is not supported: shockfield boxes are orthogonal");
@@ -157,6 +167,11 @@ class DataReader {
     if (!style.empty() && style[0] != "atomic")
       r_.fail(fmt::format("atom style '{}' is not supported: expected 'Atoms # atomic'", style[0]));
     if (have_atoms_) r_.fail("second Atoms section");
+    // Each atom needs a row of at least kMinAtomRowBytes ("1 1 0 0 0\n"): a larger count cannot
+    // be in the file (refused before its rows are read).
+    if (natoms_ > file_bytes_ / kMinAtomRowBytes)
+      r_.fail(fmt::format("the header declares {} atoms, which cannot fit in a file of {} bytes",
+                          natoms_, file_bytes_));
     have_atoms_ = true;
     read_rows(natoms_, "Atoms", [&] { atom_row(); });
   }
@@ -172,17 +187,27 @@ class DataReader {
     std::array<int, 3> image{0, 0, 0};
     for (int d = 0; d < 3; ++d) {
       x[d] = r_.to_double(w[2 + d], std::string(1, axis_name[d]));
-      if (w.size() == 8) image[d] = static_cast<int>(r_.to_int(w[5 + d], fmt::format("i{}", axis_name[d])));
+      if (w.size() == 8) image[d] = image_flag(w[5 + d], d);
     }
     const geometry::Box& box = out_.box;
     for (int d = 0; d < 3; ++d)
       if (!box.periodic(d) && (x[d] < box.lo[d] || x[d] > box.hi[d]))
         r_.fail(fmt::format("atom {} at {} = {} is outside the non-periodic box {}lo {}hi = [{}, {}]",
                             id, axis_name[d], x[d], axis_name[d], axis_name[d], box.lo[d], box.hi[d]));
-    box.wrap(x, image);
+    if (!box.try_wrap(x, image))
+      r_.fail(fmt::format("atom {} at ({}, {}, {}) with image flags {} {} {} cannot be wrapped into the "
+                          "periodic box: it is more than 2^31 box lengths away", id, x[0], x[1], x[2],
+                          image[0], image[1], image[2]));
     if (!index_.emplace(id, out_.atoms.nlocal).second) r_.fail(fmt::format("duplicate atom id {}", id));
     out_.atoms.add(x, type - 1, id);
     out_.atoms.image.back() = image;
+  }
+
+  int image_flag(std::string_view w, int d) const {
+    const long long n = r_.to_int(w, fmt::format("the image flag i{}", axis_name[d]));
+    if (n < std::numeric_limits<int>::min() || n > std::numeric_limits<int>::max())
+      r_.fail(fmt::format("image flag i{} = {} is outside the range of a 32-bit int", axis_name[d], n));
+    return static_cast<int>(n);
   }
 
   void velocity_row() {
@@ -196,6 +221,7 @@ class DataReader {
 
   LineReader r_;
   DataFile out_;
+  long long file_bytes_ = 0;
   long long natoms_ = -1, ntypes_ = -1;
   bool have_atoms_ = false;
   std::unordered_map<long long, std::size_t> index_;

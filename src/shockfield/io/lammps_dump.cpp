@@ -4,12 +4,17 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <functional>
+#include <limits>
 #include <set>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/line_reader.hpp"
 
 namespace shockfield::io {
+
+std::string DumpFrame::where() const {
+  return fmt::format("{}{}dump frame of timestep {}", source, source.empty() ? "" : ": ", timestep);
+}
 
 std::optional<std::size_t> DumpFrame::find(std::string_view name) const {
   const auto it = std::find(columns.begin(), columns.end(), name);
@@ -19,8 +24,8 @@ std::optional<std::size_t> DumpFrame::find(std::string_view name) const {
 
 const std::vector<double>& DumpFrame::column(std::string_view name) const {
   const auto c = find(name);
-  if (!c) throw InputError(fmt::format("dump frame of timestep {} has no column '{}' (columns: {})",
-                                       timestep, name, fmt::join(columns, " ")));
+  if (!c) throw InputError(fmt::format("{} has no column '{}' (columns: {})",
+                                       where(), name, fmt::join(columns, " ")));
   return values[*c];
 }
 
@@ -36,18 +41,29 @@ void DumpFrame::set_column(const std::string& name, std::vector<double> data) {
   values.push_back(std::move(data));
 }
 
-std::vector<std::int64_t> DumpFrame::ids() const {
-  const auto& c = column("id");
-  std::vector<std::int64_t> out(c.size());
-  std::transform(c.begin(), c.end(), out.begin(), [](double v) { return std::llround(v); });
+namespace {
+// The values of an integer column as integers; InputError for a value that is not a whole number
+// in [lo, hi] (a converted 1e300 would overflow the integer).
+template <class Int>
+std::vector<Int> whole_numbers(const DumpFrame& frame, std::string_view name, double lo, double hi) {
+  const auto& c = frame.column(name);
+  std::vector<Int> out(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (!(c[i] >= lo && c[i] <= hi) || c[i] != std::floor(c[i]))
+      throw InputError(fmt::format("{}: row {} has {} = {}; expected a whole "
+                                   "number in [{}, {}]", frame.where(), i + 1, name, c[i], lo, hi));
+    out[i] = static_cast<Int>(c[i]);
+  }
   return out;
+}
+}  // namespace
+
+std::vector<std::int64_t> DumpFrame::ids() const {
+  return whole_numbers<std::int64_t>(*this, "id", 0, 9.0e18);  // < 2^63
 }
 
 std::vector<int> DumpFrame::types() const {
-  const auto& c = column("type");
-  std::vector<int> out(c.size());
-  std::transform(c.begin(), c.end(), out.begin(), [](double v) { return static_cast<int>(std::lround(v)); });
-  return out;
+  return whole_numbers<int>(*this, "type", 1, std::numeric_limits<int>::max());
 }
 
 std::vector<Vec3> DumpFrame::positions() const {
@@ -66,8 +82,8 @@ std::vector<Vec3> DumpFrame::positions() const {
     }
     return out;
   }
-  throw InputError(fmt::format("dump frame of timestep {} has no positions (x y z, xu yu zu or "
-                               "xs ys zs); columns: {}", timestep, fmt::join(columns, " ")));
+  throw InputError(fmt::format("{} has no positions (x y z, xu yu zu or "
+                               "xs ys zs); columns: {}", where(), fmt::join(columns, " ")));
 }
 
 bool is_integer_column(std::string_view name) {
@@ -175,14 +191,16 @@ void read_atoms(LineReader& r, DumpFrame& frame, long long natoms) {
   }
   if (frame.columns.empty()) r.fail("expected column names after ITEM: ATOMS (e.g. 'id type x y z')");
   const std::size_t ncols = frame.columns.size();
-  frame.values.assign(ncols, std::vector<double>(static_cast<std::size_t>(natoms)));
+  // Rows are appended as they are read, never sized from the count: a count larger than the
+  // file ends in "unexpected end of file", not in an allocation failure.
+  frame.values.assign(ncols, {});
   for (long long i = 0; i < natoms; ++i) {
     r.require_next(fmt::format("atom row {} of {} at timestep {}", i + 1, natoms, frame.timestep));
     const auto w = r.words();
     if (w.size() != ncols)
       r.fail(fmt::format("expected {} values ({}), got {}", ncols, fmt::join(frame.columns, " "), w.size()));
     for (std::size_t c = 0; c < ncols; ++c)
-      frame.values[c][static_cast<std::size_t>(i)] = r.to_double(w[c], "column '" + frame.columns[c] + "'");
+      frame.values[c].push_back(r.to_double(w[c], "column '" + frame.columns[c] + "'"));
   }
 }
 
@@ -216,6 +234,7 @@ std::vector<DumpFrame> read_dump(std::istream& in, const std::string& name) {
       if (!have_step || natoms < 0 || !have_box)
         r.fail("ITEM: ATOMS before the frame's ITEM: TIMESTEP, NUMBER OF ATOMS and BOX BOUNDS");
       read_atoms(r, frame, natoms);
+      frame.source = name;
       frames.push_back(std::move(frame));
       frame = DumpFrame{};
       have_step = have_box = false;

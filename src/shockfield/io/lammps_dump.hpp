@@ -40,6 +40,10 @@ struct DumpFrame {
   std::array<std::string, 3> bounds{"pp", "pp", "pp"};
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;
+  std::string source;  ///< the file the frame was read from ("" if made in memory), for messages
+
+  /// "file: dump frame of timestep N", the subject of the frame's error messages.
+  std::string where() const;
 
   std::size_t natoms() const { return values.empty() ? 0 : values.front().size(); }
   /// Index of a column, or nullopt.

@@ -20,11 +20,15 @@ const std::vector<std::string>& known_dump_fields() {
 
 namespace {
 
+// More steps than any run can take (10^12 steps of 1 fs are a millisecond, years of computing);
+// the bound keeps the step counters and their sum far from overflowing.
+constexpr double kMaxTotalSteps = 1e12;
+
 StageSpec read_stage(const Config& t, std::size_t index) {
   StageSpec s;
   s.name = t.get_string_or("name", fmt::format("stage{}", index + 1));
   s.ensemble = t.get_choice_or("ensemble", {"nve", "langevin", "nvt", "npt", "minimize"}, "nve");
-  s.steps = s.ensemble == "minimize" ? 0 : t.get_int("steps", Range::non_negative());
+  s.steps = s.ensemble == "minimize" ? 0 : t.get_int("steps", Range::closed(0, kMaxTotalSteps));
   s.group = t.get_string_or("group", "all");
   if (s.ensemble == "langevin" || s.ensemble == "nvt" || s.ensemble == "npt") {
     s.temperature = t.get_double("temperature", Range::positive());
@@ -119,7 +123,14 @@ MdCase read_md_case(const Config& root) {
 
   const auto stages = root.tables("stage");
   if (stages.empty()) root.fail("stage", "at least one [[stage]] table (what the run does)");
-  for (std::size_t k = 0; k < stages.size(); ++k) c.stages.push_back(read_stage(stages[k], k));
+  long long total = 0;
+  for (std::size_t k = 0; k < stages.size(); ++k) {
+    c.stages.push_back(read_stage(stages[k], k));
+    total += c.stages.back().steps;  // each <= 10^12: no overflow before the check below
+    if (total > kMaxTotalSteps)
+      stages[k].fail("steps", fmt::format("the stages up to this one add up to {} steps; expected at "
+                                          "most {:.0e} in all", total, kMaxTotalSteps));
+  }
   return c;
 }
 

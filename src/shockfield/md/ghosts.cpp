@@ -1,8 +1,14 @@
 #include "shockfield/md/ghosts.hpp"
 
 #include <cmath>
+#include <fmt/format.h>
+
+#include "shockfield/core/error.hpp"
 
 namespace shockfield::md {
+namespace {
+constexpr double kMaxGhostLayers = 8;
+}  // namespace
 
 void rebuild_ghosts(Atoms& atoms, const geometry::Box& box, double cutoff) {
   atoms.clear_ghosts();
@@ -10,7 +16,13 @@ void rebuild_ghosts(Atoms& atoms, const geometry::Box& box, double cutoff) {
   for (int d = 0; d < 3; ++d) {
     if (!box.periodic(d)) continue;
     const double length = box.hi[d] - box.lo[d];
-    const int layers = static_cast<int>(std::ceil(cutoff / length));
+    const double needed = std::ceil(cutoff / length);
+    // Each layer copies every atom again: beyond a few layers the box is degenerate, not small.
+    if (!(needed <= kMaxGhostLayers))
+      throw RunError(fmt::format("the periodic box is {} Å long along {}, less than 1/{} of the "
+                                 "interaction range {} Å (cutoff + skin): ghost images cannot be built",
+                                 length, "xyz"[d], kMaxGhostLayers, cutoff));
+    const int layers = static_cast<int>(needed);
     const std::size_t n = atoms.size();  // owned + ghosts of earlier dimensions
     for (int layer = 1; layer <= layers; ++layer) {
       for (int side = -1; side <= 1; side += 2) {

@@ -119,7 +119,7 @@ TEST(FieldReader, MalformedCsvNamesFileAndLine) {
   expect_error(write_temp("slices.csv", "1,2\n3,4\n\n5,6\n"), "slices.csv:4: slice 2 has 1 rows");
   expect_error(write_temp("spacing.csv", "# spacing = wide\n1\n"), "spacing.csv:1: 'wide'");
   expect_error(write_temp("empty.csv", "# nothing\n"), "empty field");
-  expect_error(write_temp("inf.csv", "1,inf\n"), "value inf at cell (x=1, y=0, z=0)");
+  expect_error(write_temp("inf.csv", "1,inf\n"), "inf.csv:1: 'inf' is infinite; expected a finite number");
 }
 
 TEST(FieldReader, MalformedLegacyVtkNamesFileAndLine) {

@@ -1,6 +1,9 @@
 // Case-file validation: every failure names the file, key and line; defaults are recorded.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <limits>
+
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
 
@@ -90,4 +93,31 @@ TEST(Range, DescribesItself) {
   EXPECT_EQ(Range::closed(1, 2).describe(), "in [1, 2]");
   EXPECT_FALSE(Range::positive().contains(0.0));
   EXPECT_TRUE(Range::non_negative().contains(0.0));
+}
+
+// Issue 14: +-inf passed the default Range although it reads "a finite number"; integers near
+// 2^63 were compared after rounding to double.
+TEST(Range, NonFiniteNumbersAreOutsideEveryRange) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const Range& r : {Range{}, Range::positive(), Range::non_negative()}) {
+    EXPECT_FALSE(r.contains(inf)) << r.describe();
+    EXPECT_FALSE(r.contains(-inf)) << r.describe();
+    EXPECT_FALSE(r.contains(std::numeric_limits<double>::quiet_NaN())) << r.describe();
+  }
+  EXPECT_TRUE(Range{}.contains(1e300));
+  const Config c = Config::parse("a = inf\nb = -inf\nc = nan\n", "case.toml");
+  for (const char* key : {"a", "b", "c"})
+    EXPECT_NE(error_of([&] { c.get_double(key); }).find("case.toml:"), std::string::npos) << key;
+}
+
+TEST(Range, IntegersAreComparedExactly) {
+  // 9223372036854775807 rounds to 9.223372036854775808e18 as a double, which equals the bound.
+  const Range r = Range::closed(0, 9223372036854775808.0 - 2048.0);  // the double below 2^63
+  EXPECT_FALSE(r.contains(9223372036854775807LL));
+  EXPECT_TRUE(r.contains(9223372036854773760LL));  // the bound itself
+  const Config c = Config::parse("n = 9223372036854775807\n", "case.toml");
+  EXPECT_NE(error_of([&] { c.get_int("n", Range::closed(0, 1e12)); }).find("case.toml:1: key 'n'"),
+            std::string::npos);
+  EXPECT_NE(error_of([] { Config::parse("n = 99999999999999999999\n", "case.toml"); }).find("case.toml:1"),
+            std::string::npos);
 }

@@ -158,6 +158,51 @@ TEST_F(BadInput, UnknownStyleAndUnmixableLj) {
       {"potential.pair", "type pair 1 2", "none for type 2"});
 }
 
+// Values a mutation fuzzer found crashing or hanging a run after the file was accepted
+// (issue 14): non-finite values, masses, grid steps and cutoffs out of range, and counts larger
+// than the file. Each is now refused where it is read, naming the file and line.
+TEST_F(BadInput, NonFiniteTableValuesAreRefused) {
+  for (const char* bad : {"nan", "inf", "-inf", "Infinity"}) {
+    const auto file = write("nonfinite.eam", kPotentials / "Cu_u3.eam", -1, "-3.1561636903424350e-01", bad);
+    expect_input_error([&] { read_funcfl(file); }, {"nonfinite.eam:4:", "finite number in F(rho)", bad});
+  }
+}
+
+TEST_F(BadInput, MassOutOfRangeIsRefused) {
+  for (const char* bad : {"inf", "1e-300", "0", "-63.55"}) {
+    const auto file = write("mass.eam", kPotentials / "Cu_u3.eam", -1, "63.550", bad);
+    expect_input_error([&] { read_funcfl(file); }, {"mass.eam:2:", "mass"});
+  }
+}
+
+TEST_F(BadInput, GridStepsAndCutoffMustFitTheTable) {
+  // dr = 1e-300: the tables end at 5e-298 Å, far inside the cutoff (a radial index of 1e300
+  // overflowed the int cast of the force kernel).
+  auto file = write("dr.eam", kPotentials / "Cu_u3.eam", -1, "1.0000000000000009e-02", "1e-300");
+  expect_input_error([&] { read_funcfl(file); }, {"dr.eam:3:", "beyond the tabulated range"});
+  file = write("cut.eam", kPotentials / "Cu_u3.eam", -1, "4.9499999999999886e+00", "1e300");
+  expect_input_error([&] { read_funcfl(file); }, {"cut.eam:3:", "cutoff 1e+300"});
+  file = write("dr308.eam", kPotentials / "Cu_u3.eam", -1, "1.0000000000000009e-02", "1e308");
+  expect_input_error([&] { read_funcfl(file); }, {"dr308.eam:3:", "are not finite"});  // Nr dr = inf
+  file = write("drho.eam", kPotentials / "Cu_u3.eam", -1, "5.0100200400801306e-04", "-inf");
+  expect_input_error([&] { read_funcfl(file); }, {"drho.eam:3:", "finite number in drho"});
+}
+
+TEST_F(BadInput, TableLongerThanTheFileIsRefusedBeforeAllocating) {
+  const auto file = write("count.eam", kPotentials / "Cu_u3.eam", -1, "  500  5.01", "  2000000000  5.01");
+  expect_input_error([&] { read_funcfl(file); }, {"count.eam:3:", "cannot fit in a file of"});
+}
+
+TEST_F(BadInput, TinyDensityStepTabulatesWithoutOverflow) {
+  // drho = 1e-300 is finite and positive: the file is accepted; the embedding lookup clamps
+  // rho/drho = 1e300 before its int cast (UBSan found the unclamped cast).
+  const auto file = write("drho.eam", kPotentials / "Cu_u3.eam", -1, "5.0100200400801306e-04", "1e-300");
+  const auto f = read_funcfl(file);
+  const auto t = tabulate_funcfl({f}, {0});
+  EXPECT_EQ(t.nrho, 499);  // int(rhomax / drho + 0.5) with rhomax = (Nrho - 1) drho, as file2array()
+  EXPECT_EQ(t.drho, 1e-300);
+}
+
 TEST(Spline, ReproducesACubicInsideTheTable) {
   // interpolate() is exact for polynomials its 5-point slopes differentiate exactly (cubics) on
   // the inner intervals; check value and derivative at the middle of one interval.

@@ -14,6 +14,13 @@ namespace {
 constexpr std::size_t kDensityStride = 8;
 constexpr std::size_t kForceStride = 16;  // 13 used, padded to two cache lines
 
+// LAMMPS's m = max(1, min(int(p), last)) with p clamped before the cast, so that a huge or NaN
+// p (a NaN position, a tiny grid step) gives a valid row instead of an overflowing cast.
+inline int table_interval(double p, int last) {
+  if (!(p >= 1.0)) return 1;
+  return p < last ? static_cast<int>(p) : last;
+}
+
 // The radial table position of PairEAM::compute(): 1-based interval m and fraction p.
 struct RadialPoint {
   std::size_t row;  // m - 1
@@ -21,8 +28,7 @@ struct RadialPoint {
 };
 inline RadialPoint radial_point(double r, double rdr, int nr) {
   double p = r * rdr + 1.0;
-  int m = static_cast<int>(p);
-  m = std::min(m, nr - 1);
+  const int m = table_interval(p, nr - 1);
   p -= m;
   p = std::min(p, 1.0);
   return {static_cast<std::size_t>(m - 1), p};
@@ -37,7 +43,7 @@ struct DensityKernel {
   const double cutsq, rdr;
   const int nr, ntypes;
   bool operator()(int i, int j, double rsq, double& to_i, double& to_j) const {
-    if (rsq >= cutsq) return false;
+    if (!(rsq < cutsq)) return false;  // NaN distances too
     const auto [row, p] = radial_point(std::sqrt(rsq), rdr, nr);
     const auto pair = static_cast<std::size_t>(type[i] * ntypes + type[j]);
     const double* c = rows + (pair * static_cast<std::size_t>(nr) + row) * kDensityStride;
@@ -54,7 +60,7 @@ struct ForceKernel {
   const double cutsq, rdr;
   const int nr, ntypes;
   bool operator()(int i, int j, double rsq, double& fpair, double& energy) const {
-    if (rsq >= cutsq) return false;
+    if (!(rsq < cutsq)) return false;  // NaN distances too
     const double r = std::sqrt(rsq);
     const auto [row, p] = radial_point(r, rdr, nr);
     const auto pair = static_cast<std::size_t>(type[i] * ntypes + type[j]);
@@ -134,10 +140,9 @@ void EamPotential::compute(Atoms& atoms, const geometry::NeighborList& list, For
 #pragma omp for schedule(static)
     for (std::ptrdiff_t i = 0; i < nlocal; ++i) {
       const double rho = rho_[static_cast<std::size_t>(i)];
-      // LAMMPS: p = rho/drho + 1, m = max(1, min(int p, nrho-1)); clamping p before the cast
-      // gives the same m and cannot overflow the integer.
+      // LAMMPS: p = rho/drho + 1, m = max(1, min(int p, nrho-1)).
       double p = rho * rdrho + 1.0;
-      const int m = static_cast<int>(std::clamp(p, 1.0, static_cast<double>(t.nrho - 1)));
+      const int m = table_interval(p, t.nrho - 1);
       p -= m;
       p = std::min(p, 1.0);
       const int table = t.type2frho[static_cast<std::size_t>(atoms.type[static_cast<std::size_t>(i)])];

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
@@ -15,6 +17,13 @@ namespace {
 // The smallest table length the 4-point interpolation and the spline accept without reading
 // outside the table (pair_eam.cpp file2array() uses entries k-1..k+2 with 2 <= k <= n-2).
 constexpr int kMinTableLength = 5;
+// Each tabulated value takes at least two bytes (a digit and a separator): a longer table cannot
+// be in the file, and is refused before anything is sized by it.
+constexpr std::uintmax_t kMinValueBytes = 2;
+// Sane bounds: EAM cutoffs are a few Å (the longest in LAMMPS's potentials folder is 10.1 Å);
+// atomic masses lie between hydrogen's 1.008 and about 300 amu.
+constexpr double kMaxCutoff = 100.0;
+constexpr double kMinMass = 1e-3, kMaxMass = 1e4;
 
 std::vector<std::string> split(const std::string& text) {
   std::istringstream in(text);
@@ -28,7 +37,13 @@ class Records {
  public:
   explicit Records(const std::filesystem::path& file) : name_(file.string()), in_(file) {
     if (!in_) throw InputError(fmt::format("{}: cannot open EAM potential file", name_));
+    std::error_code ec;
+    bytes_ = std::filesystem::file_size(file, ec);
+    if (ec) bytes_ = 0;
   }
+
+  /// The most values a table of this file can hold.
+  std::uintmax_t max_values() const { return bytes_ / kMinValueBytes; }
 
   [[noreturn]] void fail(const std::string& message) const {
     throw InputError(fmt::format("{}:{}: {}", name_, line_number_, message));
@@ -79,6 +94,7 @@ class Records {
     const auto [end, ec] = std::from_chars(first, word.data() + word.size(), value);
     if (ec != std::errc() || end != word.data() + word.size())
       fail(fmt::format("expected a number in {}, found '{}'", what, word));
+    if (!std::isfinite(value)) fail(fmt::format("expected a finite number in {}, found '{}'", what, word));
     return value;
   }
 
@@ -100,6 +116,7 @@ class Records {
 
   std::string name_;
   std::ifstream in_;
+  std::uintmax_t bytes_ = 0;
   int line_number_ = 0;
 };
 
@@ -115,8 +132,23 @@ EamGrid read_grid(Records& in) {
   if (g.nrho < kMinTableLength || g.nr < kMinTableLength)
     in.fail(fmt::format("expected Nrho and Nr >= {}, found Nrho = {}, Nr = {}", kMinTableLength,
                         g.nrho, g.nr));
+  if (static_cast<std::uintmax_t>(std::max(g.nrho, g.nr)) > in.max_values())
+    in.fail(fmt::format("tables of Nrho = {} and Nr = {} values cannot fit in a file of {} bytes",
+                        g.nrho, g.nr, in.max_values() * kMinValueBytes));
   if (!(g.drho > 0) || !(g.dr > 0) || !(g.cut > 0))
     in.fail(fmt::format("expected drho, dr and cutoff > 0, found {}, {}, {}", g.drho, g.dr, g.cut));
+  // The tables' extents (Nrho - 1) drho and (Nr - 1) dr size the common grid: an infinite one
+  // (dr = 1e308) would overflow its integer count.
+  if (!std::isfinite(g.nrho * g.drho) || !std::isfinite(g.nr * g.dr))
+    in.fail(fmt::format("the tables' extents Nrho drho = {} x {} and Nr dr = {} x {} are not finite",
+                        g.nrho, g.drho, g.nr, g.dr));
+  if (g.cut > kMaxCutoff)
+    in.fail(fmt::format("cutoff {} Å is beyond {} Å, longer than any EAM potential's", g.cut, kMaxCutoff));
+  // The tables reach r = (Nr - 1) dr; files commonly put the cutoff one step further, at Nr dr.
+  const double table_end = g.nr * g.dr;
+  if (g.cut > table_end * (1 + 1e-9))
+    in.fail(fmt::format("cutoff {} Å lies beyond the tabulated range Nr dr = {} x {} = {} Å", g.cut,
+                        g.nr, g.dr, table_end));
   return g;
 }
 
@@ -124,7 +156,9 @@ double read_mass(Records& in, const std::string& what) {
   const auto w = in.words(2, fmt::format("the line 'Z mass ...' of {}", what));
   in.to_int(w[0], fmt::format("atomic number Z of {}", what));
   const double mass = in.to_double(w[1], fmt::format("the mass of {}", what));
-  if (!(mass > 0)) in.fail(fmt::format("expected a positive mass for {}, found {}", what, mass));
+  if (!(mass >= kMinMass && mass <= kMaxMass))
+    in.fail(fmt::format("expected an atomic mass in [{}, {}] amu for {}, found {}", kMinMass, kMaxMass,
+                        what, mass));
   return mass;
 }
 

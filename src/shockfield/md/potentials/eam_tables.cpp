@@ -15,8 +15,8 @@ std::vector<double> resample(const std::vector<double>& f, double fdelta, int n,
   for (int m = 1; m <= n; ++m) {
     const double x = (m - 1) * delta;
     double p = x / fdelta + 1.0;
-    int k = static_cast<int>(p);
-    k = std::max(std::min(k, nf - 2), 2);
+    // k = clamp(int(p), 2, nf - 2), clamped before the cast so that no p overflows it.
+    const int k = !(p >= 2.0) ? 2 : p < nf - 2 ? static_cast<int>(p) : nf - 2;
     p -= k;
     p = std::min(p, 2.0);
     const double c1 = -sixth * p * (p - 1.0) * (p - 2.0);
