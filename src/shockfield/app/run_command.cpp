@@ -6,6 +6,7 @@
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/run_options.hpp"
 #include "shockfield/dbm/run_case.hpp"
 #include "shockfield/md/run_case.hpp"
@@ -15,12 +16,11 @@
 namespace shockfield::app {
 namespace {
 
-using Runner = void (*)(const Config&, const RunOptions&);
-
-// Explicit registry of the methods `run` knows, by the case file's `method` value.
-const std::map<std::string, Runner>& runners() {
-  static const std::map<std::string, Runner> table{
-      {"dbm", &dbm::run_case}, {"md", &md::run_case}, {"mpm", &mpm::run_case}, {"pd", &pd::run_case}};
+// Explicit registry of the methods `run` knows, by the case file's `method` value: each entry is
+// the method's plug-in factory (core/method.hpp), run by the one run driver.
+const std::map<std::string, MethodFactory>& methods() {
+  static const std::map<std::string, MethodFactory> table{
+      {"dbm", &dbm::make_method}, {"md", &md::make_method}, {"mpm", &mpm::make_method}, {"pd", &pd::make_method}};
   return table;
 }
 
@@ -28,9 +28,9 @@ void run(const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const Config root = Config::load(options.case_file);
   std::vector<std::string> names;
-  for (const auto& [name, runner] : runners()) names.push_back(name);
+  for (const auto& [name, factory] : methods()) names.push_back(name);
   const std::string method = root.get_choice("method", names);
-  runners().at(method)(root, options);
+  run_method(root, options, methods().at(method));
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ struct OutputIntervals {
   double profile_interval = 0.0;   ///< line profiles every ...; 0: only the last
   double field_interval = 0.0;     ///< grid/particle frames every ...; 0: none
   long long checkpoint_every = 0;  ///< checkpoint every ... steps; 0: only at the end or on a stop
+  long long thermo_every = 0;      ///< thermo table row every ... steps; 0: about ten rows per run
 };
 
 /// Which of the optional frame kinds a method writes (the keys of the others stay unknown, so a
@@ -27,6 +28,10 @@ struct OutputKinds {
 /// Reads the schedule keys of [output] (absent table: the defaults), validated.
 OutputIntervals read_output_intervals(const std::optional<Config>& output, double end_time,
                                       OutputKinds kinds);
+
+/// The thermo table's interval: `requested` (thermo_every) if positive, else about ten rows over
+/// the `total_steps` of the whole run (not of a resumed part, so a resumed run keeps the schedule).
+long long thermo_interval(long long requested, long long total_steps);
 
 /// Calls write(k) for every frame k = count, count+1, ... due by time `t`, advancing `count`.
 /// An interval of 0 means no output.
