@@ -4,9 +4,13 @@
 // exceptions: InputError and RunError become one message on stderr and a non-zero exit code.
 #include <CLI/CLI.hpp>
 
+#include <string>
+#include <vector>
+
 namespace shockfield::app {
 
-void add_run_command(CLI::App& app);
+/// `command_line` is the program's argv, recorded in each run's provenance.
+void add_run_command(CLI::App& app, const std::vector<std::string>& command_line);
 void add_plot_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 /// `analyze atoms`, attached to the analyze subcommand by add_analyze_command.

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
       "shockfield"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "shockfield " SHOCKFIELD_VERSION);
-  shockfield::app::add_run_command(app);
+  shockfield::app::add_run_command(app, std::vector<std::string>(argv, argv + argc));
   shockfield::app::add_plot_command(app);
   shockfield::app::add_hugoniot_command(app);
   shockfield::app::add_analyze_command(app);

@@ -6,6 +6,7 @@
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/run_options.hpp"
 #include "shockfield/dbm/run_case.hpp"
 #include "shockfield/md/run_case.hpp"
@@ -15,28 +16,28 @@
 namespace shockfield::app {
 namespace {
 
-using Runner = void (*)(const Config&, const RunOptions&);
-
-// Explicit registry of the methods `run` knows, by the case file's `method` value.
-const std::map<std::string, Runner>& runners() {
-  static const std::map<std::string, Runner> table{
-      {"dbm", &dbm::run_case}, {"md", &md::run_case}, {"mpm", &mpm::run_case}, {"pd", &pd::run_case}};
+// Explicit registry of the methods `run` knows, by the case file's `method` value: each entry is
+// the method's plug-in factory (core/method.hpp), run by the one run driver.
+const std::map<std::string, MethodFactory>& methods() {
+  static const std::map<std::string, MethodFactory> table{
+      {"dbm", &dbm::make_method}, {"md", &md::make_method}, {"mpm", &mpm::make_method}, {"pd", &pd::make_method}};
   return table;
 }
 
 void run(const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
-  const Config root = Config::load(options.case_file);
+  const Config root = Config::load(options.case_file, options.overrides);
   std::vector<std::string> names;
-  for (const auto& [name, runner] : runners()) names.push_back(name);
+  for (const auto& [name, factory] : methods()) names.push_back(name);
   const std::string method = root.get_choice("method", names);
-  runners().at(method)(root, options);
+  run_method(root, options, methods().at(method));
 }
 
 }  // namespace
 
-void add_run_command(CLI::App& app) {
+void add_run_command(CLI::App& app, const std::vector<std::string>& command_line) {
   auto options = std::make_shared<RunOptions>();
+  options->command_line = command_line;
   CLI::App* cmd = app.add_subcommand(
       "run",
       "Run a simulation described by a TOML case file.\n"
@@ -59,6 +60,13 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--stop-after", options->stop_after,
                   "Stop after this many steps as Ctrl-C would (checkpoint, exit code 130)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--set", options->overrides,
+                  "Set a case-file value, as if edited in the file: --set KEY=VALUE with a dotted\n"
+                  "key (md.timestep, stage[1].steps) and a TOML value (1.5, 10, true, '\"text\"',\n"
+                  "[1, 2]); repeatable; checked like the file's, recorded in config.resolved.toml\n"
+                  "(docs/run-inputs.md)")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
   cmd->add_flag("--check", options->validate_only,
                 "Only validate the case file (and the files it names), then exit");
   cmd->callback([options] { run(*options); });

@@ -71,7 +71,8 @@ void Config::mark(std::string_view key) const { shared_->read_keys.insert(key_pa
 void Config::fail(std::string_view key, const std::string& expectation) const {
   const toml::node* n = key.empty() ? nullptr : node(key);
   std::string where = shared_->file;
-  if (n && n->source().begin.line > 0) where += fmt::format(":{}", n->source().begin.line);
+  if (const std::string* set = override_for(key_path(key))) where += fmt::format(" (from --set {})", *set);
+  else if (n && n->source().begin.line > 0) where += fmt::format(":{}", n->source().begin.line);
   throw InputError(fmt::format("{}: key '{}': {}", where, key_path(key), expectation));
 }
 
@@ -105,6 +106,7 @@ template <class T>
 void Config::record(std::string_view key, const T& value) const {
   table_at(shared_->resolved, path_).insert_or_assign(std::string(key), value);
 }
+template void Config::record<std::string>(std::string_view, const std::string&) const;  // config_case.cpp
 
 double Config::number(std::string_view key, const toml::node& n, Range range) const {
   double v = 0;
@@ -295,35 +297,45 @@ std::vector<Config> Config::tables(std::string_view key) const {
 }
 
 void Config::derive(const std::string& key, double value) const {
+  check_replayed(key, toml::value<double>(value));
   table_at(shared_->resolved, "derived").insert_or_assign(key, value);
 }
 void Config::derive(const std::string& key, long long value) const {
+  check_replayed(key, toml::value<std::int64_t>(value));
   table_at(shared_->resolved, "derived").insert_or_assign(key, value);
 }
 void Config::derive(const std::string& key, const std::string& value) const {
+  check_replayed(key, toml::value<std::string>(value));
   table_at(shared_->resolved, "derived").insert_or_assign(key, value);
 }
 
 namespace {
+// `origin(key, node)` says where an unknown key came from ("line 3", "from --set a.b=1").
+template <class Origin>
 void collect_unknown(const toml::table& t, const std::string& prefix,
-                     const std::set<std::string>& read, std::vector<std::string>& out) {
+                     const std::set<std::string>& read, const Origin& origin,
+                     std::vector<std::string>& out) {
   for (const auto& [k, v] : t) {
     const std::string full = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     if (!read.count(full)) {
-      out.push_back(fmt::format("'{}' (line {})", full, v.source().begin.line));
+      out.push_back(fmt::format("'{}' ({})", full, origin(full, v)));
       continue;
     }
-    if (auto sub = v.as_table()) collect_unknown(*sub, full, read, out);
+    if (auto sub = v.as_table()) collect_unknown(*sub, full, read, origin, out);
     if (auto arr = v.as_array(); arr && arr->is_array_of_tables())
       for (std::size_t i = 0; i < arr->size(); ++i)
-        collect_unknown(*(*arr)[i].as_table(), fmt::format("{}[{}]", full, i), read, out);
+        collect_unknown(*(*arr)[i].as_table(), fmt::format("{}[{}]", full, i), read, origin, out);
   }
 }
 }  // namespace
 
 void Config::check_unknown_keys() const {
   std::vector<std::string> unknown;
-  collect_unknown(shared_->root, "", shared_->read_keys, unknown);
+  const auto origin = [this](const std::string& key, const toml::node& v) {
+    if (const std::string* set = override_for(key, true)) return "from --set " + *set;
+    return fmt::format("line {}", v.source().begin.line);
+  };
+  collect_unknown(shared_->root, "", shared_->read_keys, origin, unknown);
   if (unknown.empty()) return;
   std::string list;
   for (std::size_t i = 0; i < unknown.size(); ++i) list += (i ? ", " : "") + unknown[i];
@@ -334,9 +346,13 @@ void Config::check_unknown_keys() const {
 
 std::string Config::resolved_toml() const {
   std::ostringstream out;
-  out << "# Resolved configuration: every value the run used, defaults included, and the derived\n"
-         "# values under [derived].\n";
-  out << shared_->resolved << "\n";
+  out << "# Resolved configuration: every value the run used, defaults included, the derived\n"
+         "# values under [derived] and where the run came from under [provenance]. It can be run\n"
+         "# again as a case file: its [derived] values are then checked against a fresh derivation.\n";
+  for (const auto& [key, text] : shared_->overrides) out << "# --set " << text << "\n";
+  toml::table resolved = shared_->resolved;
+  if (shared_->provenance) resolved.insert_or_assign("provenance", *shared_->provenance);
+  out << resolved << "\n";
   return out.str();
 }
 

@@ -23,6 +23,7 @@ class Logger {
  private:
   std::ofstream file_;
   bool echo_ = true;
+  bool terminal_ = false;
 };
 
 }  // namespace shockfield

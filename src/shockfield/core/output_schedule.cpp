@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shockfield {
@@ -36,6 +37,7 @@ OutputIntervals read_output_intervals(const std::optional<Config>& output, doubl
     bound_count(t, "field_interval", s.field_interval, end_time, max_frames, "field frames");
   }
   s.checkpoint_every = t.get_int_or("checkpoint_every", 0, Range::non_negative());
+  s.thermo_every = t.get_int_or("thermo_every", 0, Range::non_negative());
   return s;
 }
 
@@ -47,6 +49,10 @@ void check_intervals_against_step(const Config& output, const OutputIntervals& s
       output.fail(key, fmt::format("{} is shorter than the time step dt = {:.6g}: every step would write the same "
                                    "output again; use {} >= {:.6g}",
                                    interval, dt, key, dt));
+}
+
+long long thermo_interval(long long requested, long long total_steps) {
+  return requested > 0 ? requested : std::max(1LL, (total_steps + 9) / 10);
 }
 
 }  // namespace shockfield

@@ -25,6 +25,7 @@ struct OutputIntervals {
   double profile_interval = 0.0;   ///< line profiles every ...; 0: only the last
   double field_interval = 0.0;     ///< grid/particle frames every ...; 0: none
   long long checkpoint_every = 0;  ///< checkpoint every ... steps; 0: only at the end or on a stop
+  long long thermo_every = 0;      ///< thermo table row every ... steps; 0: about ten rows per run
 };
 
 /// Which of the optional frame kinds a method writes (the keys of the others stay unknown, so a
@@ -38,6 +39,10 @@ struct OutputKinds {
 /// bounds on the number of rows and frames above.
 OutputIntervals read_output_intervals(const std::optional<Config>& output, double end_time,
                                       OutputKinds kinds);
+
+/// The thermo table's interval: `requested` (thermo_every) if positive, else about ten rows over
+/// the `total_steps` of the whole run (not of a resumed part, so a resumed run keeps the schedule).
+long long thermo_interval(long long requested, long long total_steps);
 
 /// With `dt` the (fixed) time step of a run: refuses an interval of [output] that is shorter
 /// than one step, naming the key (every step would write the same frame again).

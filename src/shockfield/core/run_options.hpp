@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace shockfield {
 
@@ -16,6 +17,8 @@ struct RunOptions {
   bool validate_only = false;                    ///< check the case file and stop
   long long stop_after = 0;                      ///< stop as on Ctrl-C after this many steps (0: never)
   std::optional<double> piston_speed;            ///< Å/ps: replaces the speed of every [stage.piston]
+  std::vector<std::string> overrides;            ///< --set KEY=VALUE, in command-line order
+  std::vector<std::string> command_line;         ///< argv of the program, for provenance
 };
 
 }  // namespace shockfield

@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <chrono>
+#include <optional>
+
 #include "shockfield/core/error.hpp"
-#include "shockfield/core/interrupt.hpp"
-#include "shockfield/core/logger.hpp"
-#include "shockfield/core/progress.hpp"
+#include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/run_folder.hpp"
-#include "shockfield/core/run_session.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/lammps_data.hpp"
@@ -111,12 +111,13 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   if (s.deform_rate) sim.fixes.push_back(std::make_unique<FixDeform>(*s.deform_rate, sim.box, sim.time));
 }
 
-void report_hugoniot(const Simulation& sim, const RunOutput& output, const OutputSpec& spec,
+// The Hugoniot state of a piston stage from its profiles (hugoniot.hpp), written and logged.
+std::optional<HugoniotState> report_hugoniot(const Simulation& sim, const RunOutput& output, const OutputSpec& spec,
                      const StageSpec& stage, const fs::path& folder, Logger& log) {
   const FixPiston* piston = nullptr;
   for (const auto& fix : sim.fixes)
     if (auto* p = dynamic_cast<const FixPiston*>(fix.get())) piston = p;
-  if (!piston || spec.profile_every == 0) return;
+  if (!piston || spec.profile_every == 0) return std::nullopt;
   std::vector<Profile> frames;
   for (Profile& p : read_profiles_csv(output.profiles_file()))
     if (p.time >= piston->start_time() - 1e-12) frames.push_back(std::move(p));
@@ -133,113 +134,216 @@ void report_hugoniot(const Simulation& sim, const RunOutput& output, const Outpu
            "(rho0 Us Up = {:.2f}), rho = {:.3f} g/cc, T = {:.0f} K -> {}{}",
            stage.name, h.us, h.up, h.piston_speed, h.pressure, h.pressure_rh, h.density, h.temperature,
            file.string(), h.note.empty() ? "" : " (" + h.note + ")");
+  return h;
 }
 
-}  // namespace
 
-void run_case(const Config& root, const RunOptions& options) {
-  Prepared p = prepare(root, options);
-  if (options.validate_only) {
-    std::printf("%s: valid md case (%zu atoms, %zu stage(s))\n", options.case_file.string().c_str(),
-                p.system.atoms.nlocal, p.md.stages.size());
-    return;
-  }
-  RunSession run = open_run_session(root, options, "md", fmt::format("{} atoms", p.system.atoms.nlocal));
-  const fs::path& folder = run.folder;
-  const fs::path& checkpoint = run.checkpoint;
-  Logger& log = run.log;
+// Molecular dynamics as a plug-in of the run driver. The stages of the case run in order: a
+// minimisation stage runs whole when it begins; a dynamic stage sets up its fixes and forces,
+// then advance() makes its steps; a stage ends (final output, Hugoniot) lazily, at the next
+// advance() or at the end of the run, so that the checkpoint position {stage, steps done} means
+// what it always meant.
+class MdMethod final : public Method {
+ public:
+  MdMethod(const Config& root, const RunOptions& options)
+      : p_(prepare(root, options)), atoms_(p_.system.atoms.nlocal) {}
 
-  Simulation sim(p.system.box, std::move(p.system.atoms), std::move(p.potential), p.md.timestep, p.md.skin);
-  sim.neighbor_every = p.md.neighbor_every;
-  sim.neighbor_delay = p.md.neighbor_delay;
-  sim.neighbor_check = p.md.neighbor_check;
-  CheckpointPosition start{};
-  std::optional<std::int64_t> resume_step;
-  if (options.resume) {
-    if (!fs::exists(checkpoint)) throw InputError(fmt::format("--resume: no checkpoint in '{}'", folder.string()));
-    start = read_checkpoint_header(checkpoint);
-  } else {
-    if (p.md.temperature) create_velocities(sim.atoms, *p.md.temperature, p.md.seed);
-    for (std::size_t k = 0; k < p.md.velocity_adds.size(); ++k)
-      add_velocity(sim.atoms, p.md.velocity_adds[k].velocity, p.add_groups[k]);
+  std::string name() const override { return "md"; }
+  std::string size_text() const override { return fmt::format("{} atoms", atoms_); }
+  std::string check_text() const override {
+    return fmt::format("md case ({} atoms, {} stage(s))", atoms_, p_.md.stages.size());
   }
 
-  clear_stop_request();
-  install_stop_handlers();
-  std::int64_t steps_this_session = 0;
-  std::optional<RunOutput> output;
-  for (auto k = static_cast<std::size_t>(start.stage); k < p.md.stages.size(); ++k) {
-    const StageSpec& stage = p.md.stages[k];
-    add_stage_fixes(sim, stage, p.stage_groups[k], p.md.seed + k);
-    std::int64_t done = 0;
-    const bool resuming_here = options.resume && k == static_cast<std::size_t>(start.stage);
-    if (resuming_here) {
-      read_checkpoint(checkpoint, sim);
-      resume_step = sim.step;
-      done = start.stage_step;
-      log.info("resumed from {} at step {} (stage '{}', {} of {} steps done)", checkpoint.string(), sim.step,
-               stage.name, done, stage.steps);
-    }
-    if (!output) output.emplace(folder, p.md.output, resume_step);
-    const auto want_per_atom = [&](std::int64_t step) { return output->needs_per_atom(step); };
+  void start(RunContext& run) override {
+    build(run);
+    if (p_.md.temperature) create_velocities(sim_->atoms, *p_.md.temperature, p_.md.seed);
+    for (std::size_t k = 0; k < p_.md.velocity_adds.size(); ++k)
+      add_velocity(sim_->atoms, p_.md.velocity_adds[k].velocity, p_.add_groups[k]);
+    output_.emplace(run.folder, p_.md.output, std::nullopt);
+    begin_pending();
+  }
+  void resume(RunContext& run) override {
+    build(run);
+    const CheckpointPosition start = read_checkpoint_header(run.checkpoint);
+    k_ = static_cast<std::size_t>(start.stage);
+    if (k_ >= stages().size()) return;  // finished
+    add_fixes();
+    read_checkpoint(run.checkpoint, *sim_);
+    done_ = start.stage_step;
+    output_.emplace(run.folder, p_.md.output, sim_->step);
+    begin_stage(/*fixes_added=*/true, /*mid_stage=*/done_ > 0);
+    begin_pending();
+  }
 
+  bool finished() const override { return steps_left() == 0; }
+  void advance() override {
+    while (done_ >= stages()[k_].steps) finish_stage();
+    sim_->advance(want_per_atom_);
+    ++done_;
+  }
+  void check_health() override { sim_->check_health(); }
+  void write_outputs() override { output_->write(*sim_); }
+  std::int64_t step() const override { return sim_->step; }
+  std::string position() const override {
+    if (k_ >= stages().size()) return " (all stages done)";
+    return fmt::format(" (stage '{}', {} of {} steps done)", stages()[k_].name, done_, stages()[k_].steps);
+  }
+  std::int64_t steps_left() const override {
+    if (k_ >= stages().size()) return 0;
+    std::int64_t left = stages()[k_].steps - done_;
+    for (std::size_t j = k_ + 1; j < stages().size(); ++j) left += stages()[j].steps;
+    return left;
+  }
+  std::int64_t checkpoint_every() const override { return p_.md.output.checkpoint_every; }
+  // At the end the position is the last stage with all its steps done (when it is dynamic), so
+  // that a resume with more steps in it continues the run.
+  void write_checkpoint(const fs::path& file) override {
+    const std::size_t n = stages().size();
+    CheckpointPosition where{static_cast<std::int64_t>(k_), done_};
+    if (k_ >= n) where = stages().back().ensemble == "minimize" ? CheckpointPosition{static_cast<std::int64_t>(n), 0}
+                                                                 : CheckpointPosition{static_cast<std::int64_t>(n - 1),
+                                                                                      stages().back().steps};
+    md::write_checkpoint(file, *sim_, where);
+  }
+  void write_final_outputs() override {
+    while (k_ < stages().size()) finish_stage();
+    io::write_data(run_->folder / "final.data", sim_->box, sim_->atoms);
+  }
+  void log_results(double) override {
+    run_->log.info("finished: {} steps; final configuration in {}", sim_->step, (run_->folder / "final.data").string());
+  }
+
+  std::vector<std::string> thermo_columns() const override {
+    return {"Step", "Time", "Temp", "PotEng", "KinEng", "TotEng", "Press"};
+  }
+  std::vector<double> thermo_values() const override {
+    const ThermoState t = sim_->thermo();
+    return {static_cast<double>(sim_->step), sim_->time, t.temperature, t.potential, t.kinetic,
+            t.potential + t.kinetic, t.pressure};
+  }
+  std::int64_t thermo_every() const override { return p_.md.output.thermo_every; }
+  bool writes_thermo_csv() const override { return true; }
+  double work_items() const override { return static_cast<double>(atoms_); }
+  std::string work_item_name() const override { return "atom"; }
+  double ns_per_step() const override { return p_.md.timestep * 1e-3; }
+
+  double time() const override { return sim_->time; }
+  std::string time_unit() const override { return "ps"; }
+  // The Hugoniot state of every piston stage ended in this session and the final energies.
+  Json results() const override {
+    Json hugoniot = Json::array();
+    for (const auto& [stage, h] : hugoniot_)
+      hugoniot.push(Json::object()
+                        .set("stage", stage)
+                        .set("shock_speed_km_s", h.us)
+                        .set("particle_speed_km_s", h.up)
+                        .set("piston_speed_km_s", h.piston_speed)
+                        .set("pressure_GPa", h.pressure)
+                        .set("pressure_rankine_hugoniot_GPa", h.pressure_rh)
+                        .set("density_g_cc", h.density)
+                        .set("density_rankine_hugoniot_g_cc", h.density_rh)
+                        .set("initial_density_g_cc", h.density0)
+                        .set("temperature_K", h.temperature)
+                        .set("note", h.note));
+    const ThermoState t = sim_->thermo();
+    return Json::object()
+        .set("hugoniot", std::move(hugoniot))
+        .set("final", Json::object()
+                          .set("temperature_K", t.temperature)
+                          .set("potential_energy_eV", t.potential)
+                          .set("kinetic_energy_eV", t.kinetic)
+                          .set("total_energy_eV", t.potential + t.kinetic)
+                          .set("pressure_bar", t.pressure)
+                          .set("volume_A3", t.volume));
+  }
+  // The steps of the last stage (a longer last stage continues a finished run) and the output
+  // schedule.
+  std::vector<std::string> resume_safe_keys() const override {
+    return {fmt::format("stage[{}].steps", stages().size() - 1), "output.thermo_every", "output.checkpoint_every",
+            "output.dump_every", "output.profile_every"};
+  }
+
+ private:
+  const std::vector<StageSpec>& stages() const { return p_.md.stages; }
+  void build(RunContext& run) {
+    run_ = &run;
+    sim_.emplace(p_.system.box, std::move(p_.system.atoms), std::move(p_.potential), p_.md.timestep, p_.md.skin);
+    sim_->neighbor_every = p_.md.neighbor_every;
+    sim_->neighbor_delay = p_.md.neighbor_delay;
+    sim_->neighbor_check = p_.md.neighbor_check;
+    want_per_atom_ = [this](std::int64_t step) { return output_->needs_per_atom(step); };
+  }
+  void add_fixes() { add_stage_fixes(*sim_, stages()[k_], p_.stage_groups[k_], p_.md.seed + k_); }
+
+  // Stage k_ begins: a minimisation runs whole (and k_ moves on); a dynamic stage sets up its
+  // fixes and forces unless it is resumed in its middle.
+  void begin_stage(bool fixes_added, bool mid_stage) {
+    const StageSpec& stage = stages()[k_];
+    Simulation& sim = *sim_;
+    if (!fixes_added) add_fixes();
     if (stage.ensemble == "minimize") {
       const MinimizeResult r = minimize_fire(sim, stage.minimize);
       const Vec3 l = sim.box.length();
-      log.info("[{}] FIRE minimisation: {} after {} iterations; E = {:.10g} eV ({:.10g} eV/atom), max |f| = {:.3g} eV/A, "
-               "P = {:.3g} {:.3g} {:.3g} bar, box {:.10g} {:.10g} {:.10g} A",
-               stage.name, r.reason, r.iterations, r.energy, r.energy / static_cast<double>(sim.atoms.nlocal),
-               r.max_force, r.pressure.x(), r.pressure.y(), r.pressure.z(), l.x(), l.y(), l.z());
-      sim.setup(want_per_atom(sim.step));
-      output->write(sim, true);
-      if (stop_requested()) {
-        write_checkpoint(checkpoint, sim, {static_cast<std::int64_t>(k), 0});
-        throw StopRequested(fmt::format("stopped during minimisation '{}'; checkpoint {}", stage.name, checkpoint.string()));
-      }
-      continue;
+      run_->log.info("[{}] FIRE minimisation: {} after {} iterations; E = {:.10g} eV ({:.10g} eV/atom), max |f| = "
+                     "{:.3g} eV/A, P = {:.3g} {:.3g} {:.3g} bar, box {:.10g} {:.10g} {:.10g} A",
+                     stage.name, r.reason, r.iterations, r.energy, r.energy / static_cast<double>(sim.atoms.nlocal),
+                     r.max_force, r.pressure.x(), r.pressure.y(), r.pressure.z(), l.x(), l.y(), l.z());
+      sim.setup(want_per_atom_(sim.step));
+      output_->write(sim, true);
+      ++k_;
+      return;
     }
-
-    if (!resuming_here) {
-      sim.setup(want_per_atom(sim.step));
+    if (!mid_stage) {
+      sim.setup(want_per_atom_(sim.step));
       for (auto& fix : sim.fixes) fix->setup(sim);
-      output->write(sim, true);
+      output_->write(sim, true);
     }
-    log.info("[{}] {} steps, ensemble {}, dt = {} ps{}{}", stage.name, stage.steps, stage.ensemble, sim.dt,
-             stage.piston ? fmt::format(", piston {} km/s", stage.piston->speed * units::metal::A_per_ps_to_km_per_s) : "",
-             stage.deform_rate ? ", deforming" : "");
-    Progress progress(stage.name, done, stage.steps - done, !options.quiet);
-    try {
-      for (; done < stage.steps; ++done) {
-        sim.advance(want_per_atom);
-        sim.check_health();
-        output->write(sim);
-        ++steps_this_session;
-        const CheckpointPosition here{static_cast<std::int64_t>(k), done + 1};
-        if (p.md.output.checkpoint_every > 0 && sim.step % p.md.output.checkpoint_every == 0)
-          write_checkpoint(checkpoint, sim, here);
-        progress.update(done + 1);
-        if (stop_requested() || (options.stop_after > 0 && steps_this_session == options.stop_after)) {
-          progress.finish(done + 1);
-          write_checkpoint(checkpoint, sim, here);
-          log.info("stopped at step {}: checkpoint written to {}", sim.step, checkpoint.string());
-          throw StopRequested(fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
-                                          sim.step, options.case_file.string(), folder.string()));
-        }
-      }
-    } catch (const RunError& e) {
-      log.info("run stopped: {}", e.what());
-      log.info("the output written so far is kept in {}", folder.string());
-      throw;
-    }
-    progress.finish(stage.steps);
-    log.info("[{}] done at step {} ({:.1f} steps/s, {} neighbour rebuilds)", stage.name, sim.step,
-             progress.rate(stage.steps), sim.rebuilds);
-    output->write(sim, true);
-    report_hugoniot(sim, *output, p.md.output, stage, folder, log);
+    run_->log.info("[{}] {} steps, ensemble {}, dt = {} ps{}{}", stage.name, stage.steps, stage.ensemble, sim.dt,
+                   stage.piston ? fmt::format(", piston {} km/s", stage.piston->speed * units::metal::A_per_ps_to_km_per_s)
+                                : "",
+                   stage.deform_rate ? ", deforming" : "");
+    started_ = true;
+    stage_first_ = done_;
+    stage_clock_ = std::chrono::steady_clock::now();
   }
-  write_checkpoint(checkpoint, sim, {static_cast<std::int64_t>(p.md.stages.size()), 0});
-  io::write_data(folder / "final.data", sim.box, sim.atoms);
-  log.info("finished: {} steps; final configuration in {}", sim.step, (folder / "final.data").string());
+  void begin_pending() {
+    while (k_ < stages().size() && !started_) begin_stage(false, false);
+  }
+  // The started stage k_ ends (its last output and Hugoniot) and the next ones begin.
+  void finish_stage() {
+    const StageSpec& stage = stages()[k_];
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_clock_).count();
+    run_->log.info("[{}] done at step {} ({:.1f} steps/s, {} neighbour rebuilds)", stage.name, sim_->step,
+                   seconds > 0 ? static_cast<double>(done_ - stage_first_) / seconds : 0.0, sim_->rebuilds);
+    output_->write(*sim_, true);
+    if (auto h = report_hugoniot(*sim_, *output_, p_.md.output, stage, run_->folder, run_->log))
+      hugoniot_.emplace_back(stage.name, *h);
+    started_ = false;
+    ++k_;
+    done_ = 0;
+    begin_pending();
+  }
+
+  Prepared p_;  ///< its system and potential move into sim_ when the run starts
+  std::size_t atoms_;
+  std::optional<Simulation> sim_;
+  std::optional<RunOutput> output_;
+  std::function<bool(std::int64_t)> want_per_atom_;
+  std::vector<std::pair<std::string, HugoniotState>> hugoniot_;  ///< stages ended in this session
+  RunContext* run_ = nullptr;
+  std::size_t k_ = 0;           ///< current stage
+  std::int64_t done_ = 0;       ///< steps done in it
+  bool started_ = false;        ///< stage k_ has begun
+  std::int64_t stage_first_ = 0;
+  std::chrono::steady_clock::time_point stage_clock_;
+};
+
+}  // namespace
+
+std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options) {
+  return std::make_unique<MdMethod>(root, options);
 }
+
+void run_case(const Config& root, const RunOptions& options) { run_method(root, options, &make_method); }
 
 }  // namespace shockfield::md

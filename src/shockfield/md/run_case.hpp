@@ -1,11 +1,17 @@
 #pragma once
-// `method = "md"`: reads and validates an MD case file, builds the system, runs the stages it
-// lists and writes the run folder.
+// `method = "md"`: molecular dynamics as a plug-in of the run driver (core/method.hpp): reads and
+// validates an MD case file, builds the system and runs the stages it lists.
+#include <memory>
+
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/method.hpp"
 #include "shockfield/core/run_options.hpp"
 
 namespace shockfield::md {
 
+/// Reads, validates and derives the case (the factory of the run driver's registry).
+std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options);
+/// Runs the case through the run driver.
 void run_case(const Config& root, const RunOptions& options);
 
 }  // namespace shockfield::md

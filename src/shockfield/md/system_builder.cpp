@@ -99,9 +99,7 @@ BuiltSystem from_lattice(const Config& lat) {
 }
 
 BuiltSystem from_data_file(const Config& system) {
-  // Relative to the case file's folder (Config::file() is the case file's path).
-  const std::filesystem::path case_dir = std::filesystem::path(system.file()).parent_path();
-  const std::filesystem::path file = case_dir / system.get_string("data_file");
+  const std::filesystem::path file = system.get_input_file("data_file");  // relative to the case file
   const auto boundary = read_boundary(system);
   io::DataFile data = io::read_data(file, boundary);
   BuiltSystem sys{data.box, std::move(data.atoms), {}};

@@ -4,17 +4,16 @@
 #include <omp.h>
 
 #include <cmath>
-#include <cstdio>
+#include <optional>
+#include <utility>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/core/interrupt.hpp"
-#include "shockfield/core/logger.hpp"
-#include "shockfield/core/progress.hpp"
 #include "shockfield/core/output_schedule.hpp"
-#include "shockfield/core/run_session.hpp"
+#include "shockfield/core/run_driver.hpp"
 #include "shockfield/mpm/case_builder.hpp"
 #include "shockfield/mpm/case_file.hpp"
 #include "shockfield/mpm/checkpoint.hpp"
+#include "shockfield/mpm/diagnostics.hpp"
 #include "shockfield/mpm/run_output.hpp"
 
 namespace shockfield::mpm {
@@ -23,23 +22,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Prepared {
-  MpmCase c;
-  BuiltSample sample;
-  double first_dt = 0.0;
-};
-
 // Resolved values the run echoes under [derived] (seed §2.2.2 step; shock state of the linear
 // Us-Up Hugoniot for the loading speed).
-void derive(const Config& root, const Prepared& p, const Simulation& sim) {
-  const MpmCase& c = p.c;
+void derive(const Config& root, const MpmCase& c, const BuiltSample& sample, const Simulation& sim, double first_dt) {
   root.derive("particles", static_cast<long long>(sim.particles().size()));
   root.derive("grid_nodes", static_cast<long long>(sim.grid().size()));
-  root.derive("time_step_initial_s", p.first_dt);
-  root.derive("estimated_steps", static_cast<long long>(std::ceil(c.end_time / p.first_dt)));
-  for (std::size_t k = 0; k < p.sample.stats.size(); ++k)
+  root.derive("time_step_initial_s", first_dt);
+  root.derive("estimated_steps", static_cast<long long>(std::ceil(c.end_time / first_dt)));
+  for (std::size_t k = 0; k < sample.stats.size(); ++k)
     if (c.bodies[k].pores || c.bodies[k].cavity)
-      root.derive(fmt::format("body{}_porosity", k), p.sample.stats[k].porosity());
+      root.derive(fmt::format("body{}_porosity", k), sample.stats[k].porosity());
   for (const auto& m : c.materials) {
     root.derive(m.name + "_longitudinal_speed_m_s", m.longitudinal_speed(m.eos.rho0, 0.0));
     root.derive(m.name + "_bulk_sound_speed_m_s", m.eos.c0);
@@ -54,139 +46,216 @@ void derive(const Config& root, const Prepared& p, const Simulation& sim) {
   root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
 }
 
-// NaN, negative density: the step that went wrong is named, the outputs are kept.
-void check_health(const Simulation& sim) {
-  const Particles& p = sim.particles();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double rho = p.density(i);
-    if (!p.x[i].allFinite() || !p.v[i].allFinite() || !std::isfinite(p.state[i].pressure))
-      throw RunError(fmt::format("mpm: particle {} has a non-finite position, velocity or pressure at t = {} s (step {})",
-                                 i, sim.time(), sim.step_count()));
-    if (!(rho > 0.0))
-      throw RunError(fmt::format("mpm: particle {} has density {} kg/m^3 at t = {} s (step {})", i, rho, sim.time(),
-                                 sim.step_count()));
-  }
-}
-
-// One step; a fixed time step is checked against the CFL limit Δx/max(c_p + |v_p|) (and the
-// diffusion limit with heat conduction) first.
-void advance(Simulation& sim, const MpmCase& c, double max_dt) {
-  if (c.time_step) {
-    const double limit = sim.stable_time_step();  // courant = 1 for fixed steps
-    if (*c.time_step > limit)
-      throw RunError(fmt::format("mpm: time_step {} s is beyond the CFL limit {} s = dx / max(c + |v|) (or dx²/(2dα) "
-                                 "with heat_conduction) at t = {} s "
-                                 "(step {}); lower [solver] time_step or drop it for the adaptive step",
-                                 *c.time_step, limit, sim.time(), sim.step_count()));
-    max_dt = std::min(max_dt, *c.time_step);
-  }
-  sim.step(max_dt);
-}
-
-}  // namespace
-
-void run_case(const Config& root, const RunOptions& options) {
-  Prepared p;
-  p.c = read_mpm_case(root);
-  p.sample = build_sample(p.c, root);
+// The sample, built once the whole case file was read (every key known).
+BuiltSample build_checked_sample(const MpmCase& c, const Config& root) {
+  BuiltSample sample = build_sample(c, root);
   root.check_unknown_keys();
-  const MpmCase& c = p.c;
-  Simulation sim(c.grid, c.materials, std::move(p.sample.particles), c.options);
-  p.first_dt = c.time_step.value_or(sim.stable_time_step());
-  if (c.time_step && *c.time_step > sim.stable_time_step())
-    root.table("solver").fail("time_step", fmt::format("{} s is beyond the CFL limit {} s = dx / max(c + |v|) (or "
-                                                       "dx²/(2dα) with heat_conduction) of the initial state", *c.time_step, sim.stable_time_step()));
-  derive(root, p, sim);
-  if (options.validate_only) {
-    std::printf("%s: valid mpm case (%zu particles, %zu grid nodes, dt %.3g s)\n", options.case_file.string().c_str(),
-                sim.particles().size(), sim.grid().size(), p.first_dt);
-    return;
+  return sample;
+}
+
+// The material point method as a plug-in of the run driver: adaptive (or fixed, CFL-checked)
+// steps shortened to land on every output time and on end_time.
+class MpmMethod final : public Method {
+ public:
+  MpmMethod(const Config& root, const RunOptions&)
+      : c_(read_mpm_case(root)), sample_(build_checked_sample(c_, root)),
+        sim_(c_.grid, c_.materials, std::move(sample_.particles), c_.options),
+        first_dt_(c_.time_step.value_or(sim_.stable_time_step())), tol_(1e-9 * c_.end_time) {
+    if (c_.time_step && *c_.time_step > sim_.stable_time_step())
+      root.table("solver").fail("time_step", fmt::format("{} s is beyond the CFL limit {} s = dx / max(c + |v|) (or "
+                                                         "dx²/(2dα) with heat_conduction) of the initial state",
+                                                         *c_.time_step, sim_.stable_time_step()));
+    derive(root, c_, sample_, sim_, first_dt_);
   }
 
-  RunSession run = open_run_session(
-      root, options, "mpm",
-      fmt::format("{} particles, {} grid nodes, {}D", sim.particles().size(), sim.grid().size(), c.grid.dim));
-  const fs::path& folder = run.folder;
-  const fs::path& checkpoint = run.checkpoint;
-  Logger& log = run.log;
+  std::string name() const override { return "mpm"; }
+  std::string size_text() const override {
+    return fmt::format("{} particles, {} grid nodes, {}D", sim_.particles().size(), sim_.grid().size(), c_.grid.dim);
+  }
+  std::string check_text() const override {
+    return fmt::format("mpm case ({} particles, {} grid nodes, dt {:.3g} s)", sim_.particles().size(),
+                       sim_.grid().size(), first_dt_);
+  }
 
-  std::optional<CavityTracker> tracker;
-  if (p.sample.cavity) tracker.emplace(c.grid.dim, *p.sample.cavity, p.sample.cavity_spacing);
-  OutputCounters counters;
-  std::optional<ResumePoint> resume;
-  if (options.resume) {
-    if (!fs::exists(checkpoint)) throw InputError(fmt::format("--resume: no checkpoint in '{}'", folder.string()));
+  void start(RunContext& run) override {
+    open(run, std::nullopt, make_tracker());
+    write_due();
+    log_plan();
+  }
+  void resume(RunContext& run) override {
+    std::optional<CavityTracker> tracker = make_tracker();
     std::vector<double> cavity_state;
-    counters = read_checkpoint(checkpoint, sim, cavity_state);
+    counters_ = read_checkpoint(run.checkpoint, sim_, cavity_state);
     if (tracker && !cavity_state.empty()) tracker->restore(cavity_state);
-    resume = ResumePoint{sim.step_count(), sim.time()};
-    log.info("resumed from {} at step {}, t = {} s", checkpoint.string(), sim.step_count(), sim.time());
+    open(run, ResumePoint{sim_.step_count(), sim_.time()}, std::move(tracker));
+    if (!finished()) log_plan();
   }
-  RunOutput output(folder, c, std::move(tracker), resume);
+
+  bool finished() const override { return !(sim_.time() < c_.end_time - tol_); }
+
+  // One step; a fixed time step is checked against the CFL limit Δx/max(c_p + |v_p|) (and the
+  // diffusion limit with heat conduction) first.
+  void advance() override {
+    double max_dt = next_event() - sim_.time();
+    if (c_.time_step) {
+      const double limit = sim_.stable_time_step();  // courant = 1 for fixed steps
+      if (*c_.time_step > limit)
+        throw RunError(fmt::format("mpm: time_step {} s is beyond the CFL limit {} s = dx / max(c + |v|) (or "
+                                   "dx²/(2dα) with heat_conduction) at t = {} s (step {}); lower [solver] time_step "
+                                   "or drop it for the adaptive step",
+                                   *c_.time_step, limit, sim_.time(), sim_.step_count()));
+      max_dt = std::min(max_dt, *c_.time_step);
+    }
+    sim_.step(max_dt);
+  }
+
+  // NaN, negative density: the step that went wrong is named, the outputs are kept.
+  void check_health() override {
+    const Particles& p = std::as_const(sim_).particles();  // the non-const accessor drops the cached fastest speed
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double rho = p.density(i);
+      if (!p.x[i].allFinite() || !p.v[i].allFinite() || !std::isfinite(p.state[i].pressure))
+        throw RunError(fmt::format("mpm: particle {} has a non-finite position, velocity or pressure at t = {} s "
+                                   "(step {})", i, sim_.time(), sim_.step_count()));
+      if (!(rho > 0.0))
+        throw RunError(fmt::format("mpm: particle {} has density {} kg/m^3 at t = {} s (step {})", i, rho,
+                                   sim_.time(), sim_.step_count()));
+    }
+  }
+
+  void write_outputs() override { write_due(); }
+  std::int64_t step() const override { return sim_.step_count(); }
+  std::string position() const override { return fmt::format(" (t = {} s)", sim_.time()); }
+  double fraction_done() const override { return (sim_.time() - start_time_) / (c_.end_time - start_time_); }
+  std::int64_t steps_left() const override {
+    return static_cast<std::int64_t>(std::ceil((c_.end_time - sim_.time()) / first_dt_));
+  }
+  std::int64_t checkpoint_every() const override { return c_.output.checkpoint_every; }
+  void write_checkpoint(const fs::path& file) override {
+    mpm::write_checkpoint(file, sim_, counters_, output_->cavity() ? output_->cavity()->state() : std::vector<double>{});
+  }
+
+  std::string write_failure_state() override {
+    io::VtkArray density{"density", 1, {}};
+    std::vector<double> xyz;
+    for (const Vec3& x : sim_.particles().x) xyz.insert(xyz.end(), {x[0], x[1], x[2]});
+    for (std::size_t i = 0; i < sim_.particles().size(); ++i) density.values.push_back(sim_.particles().density(i));
+    io::write_vtp(folder_ / "failure.vtp", xyz, {density}, io::VtkEncoding::Ascii);
+    return "particles at the failure: failure.vtp";
+  }
+
+  void log_results(double steps_per_second) override {
+    const Totals t = totals(sim_.particles());
+    log_->info("finished: t = {} s after {} steps ({:.3g} particle-steps/s); energy {} J, momentum ({}, {}, {}) kg m/s",
+               sim_.time(), sim_.step_count(), steps_per_second * static_cast<double>(sim_.particles().size()),
+               t.total(), t.momentum[0], t.momentum[1], t.momentum[2]);
+  }
+
+  std::vector<std::string> thermo_columns() const override {
+    return {"Step", "Time", "Dt", "KinEng", "IntEng", "TotEng", "MaxPress", "MaxTemp"};
+  }
+  std::vector<double> thermo_values() const override {
+    const Particles& p = sim_.particles();
+    const Totals t = totals(p);
+    double pmax = -INFINITY, tmax = -INFINITY;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      pmax = std::max(pmax, p.state[i].pressure), tmax = std::max(tmax, p.state[i].temperature);
+    return {static_cast<double>(sim_.step_count()), sim_.time(), sim_.last_time_step(), t.kinetic, t.internal,
+            t.total(), pmax, tmax};
+  }
+  std::int64_t thermo_every() const override {
+    return thermo_interval(c_.output.thermo_every, static_cast<long long>(std::ceil(c_.end_time / first_dt_)));
+  }
+  double work_items() const override { return static_cast<double>(sim_.particles().size()); }
+  std::string work_item_name() const override { return "particle"; }
+
+  double time() const override { return sim_.time(); }
+  std::string time_unit() const override { return "s"; }
+  // Energies and momentum, and the means over all particles and over each bottom window of
+  // [diagnostics] (the series.csv columns) at the current time.
+  Json results() const override {
+    const Particles& p = sim_.particles();
+    const Totals t = totals(p);
+    const std::vector<std::string> names = quantity_names(c_.grid.dim);
+    const auto means = [&](const WindowStats& w) {
+      Json m = Json::object();
+      for (std::size_t q = 0; q < names.size() && q < w.mean.size(); ++q) m.set(names[q], w.mean[q]);
+      return m;
+    };
+    Json windows = Json::array();
+    const double y1 = c_.diagnostics.windows.bottom, area = window_cross_section(c_.grid);
+    for (double h : c_.diagnostics.windows.heights)
+    {
+      const WindowStats w = window_stats(p, c_.grid.dim, y1, y1 + h, area);
+      windows.push(Json::object().set("bottom_m", y1).set("height_m", h).set("particles", static_cast<long long>(w.count))
+                       .set("bulk_density_kg_m3", w.bulk_density).set("means", means(w)));
+    }
+    return Json::object()
+        .set("kinetic_energy_J", t.kinetic)
+        .set("internal_energy_J", t.internal)
+        .set("total_energy_J", t.total())
+        .set("momentum", Json::Array{t.momentum[0], t.momentum[1], t.momentum[2]})
+        .set("means_all_particles", means(window_stats(p, c_.grid.dim, -INFINITY, INFINITY, 1.0)))
+        .set("bottom_windows", std::move(windows));
+  }
+  std::vector<std::string> resume_safe_keys() const override {
+    return {"solver.end_time", "output.*_interval", "output.thermo_every", "output.checkpoint_every"};
+  }
+
+ private:
+  std::optional<CavityTracker> make_tracker() const {
+    std::optional<CavityTracker> tracker;
+    if (sample_.cavity) tracker.emplace(c_.grid.dim, *sample_.cavity, sample_.cavity_spacing);
+    return tracker;
+  }
+  void open(RunContext& run, std::optional<ResumePoint> resume, std::optional<CavityTracker> tracker) {
+    folder_ = run.folder;
+    log_ = &run.log;
+    output_.emplace(run.folder, c_, std::move(tracker), resume);
+    start_time_ = sim_.time();
+  }
+  void log_plan() const {
+    log_->info("running to t = {} s; initial dt = {} s (about {} steps)", c_.end_time, first_dt_, steps_left());
+  }
 
   // Output schedule: series row k at k·series_interval, field frame k at k·field_interval, the
   // listed histogram times. Steps are shortened to land on each of them (and on end_time).
-  const double tol = 1e-9 * c.end_time;
-  const auto& hist_times = c.diagnostics.histogram_times;
-  auto next_event = [&] {
-    double next = std::min(c.end_time, static_cast<double>(counters.series) * c.output.series_interval);
-    if (c.output.field_interval > 0) next = std::min(next, static_cast<double>(counters.fields) * c.output.field_interval);
-    if (static_cast<std::size_t>(counters.histograms) < hist_times.size())
-      next = std::min(next, hist_times[static_cast<std::size_t>(counters.histograms)]);
+  double next_event() const {
+    const auto& hist = c_.diagnostics.histogram_times;
+    double next = std::min(c_.end_time, static_cast<double>(counters_.series) * c_.output.series_interval);
+    if (c_.output.field_interval > 0)
+      next = std::min(next, static_cast<double>(counters_.fields) * c_.output.field_interval);
+    if (static_cast<std::size_t>(counters_.histograms) < hist.size())
+      next = std::min(next, hist[static_cast<std::size_t>(counters_.histograms)]);
     return next;
-  };
-  auto write_due = [&] {
-    const double t = sim.time() + tol;
-    write_due_frames(counters.series, c.output.series_interval, t, [&](auto) { output.write_series(sim); });
-    write_due_frames(counters.fields, c.output.field_interval, t, [&](auto) { output.write_fields(sim); });
-    for (; static_cast<std::size_t>(counters.histograms) < hist_times.size() &&
-           hist_times[static_cast<std::size_t>(counters.histograms)] <= t;
-         ++counters.histograms)
-      output.write_histograms(sim, static_cast<std::size_t>(counters.histograms));
-  };
-  auto cavity_state = [&] { return output.cavity() ? output.cavity()->state() : std::vector<double>{}; };
-
-  clear_stop_request();
-  install_stop_handlers();
-  if (!options.resume) write_due();
-  const long first = sim.step_count();
-  const auto remaining = static_cast<std::int64_t>(std::ceil((c.end_time - sim.time()) / p.first_dt));
-  Progress progress("mpm", first, remaining, !options.quiet);
-  const double start_time = sim.time();
-  log.info("running to t = {} s; initial dt = {} s (about {} steps)", c.end_time, p.first_dt, remaining);
-  try {
-    while (sim.time() < c.end_time - tol) {
-      advance(sim, c, next_event() - sim.time());
-      check_health(sim);
-      write_due();
-      progress.update(sim.step_count(), (sim.time() - start_time) / (c.end_time - start_time));
-      if (c.output.checkpoint_every > 0 && sim.step_count() % c.output.checkpoint_every == 0)
-        write_checkpoint(checkpoint, sim, counters, cavity_state());
-      if (stop_requested() || (options.stop_after > 0 && sim.step_count() - first == options.stop_after)) {
-        progress.finish(sim.step_count());
-        write_checkpoint(checkpoint, sim, counters, cavity_state());
-        log.info("stopped at step {} (t = {} s): checkpoint written to {}", sim.step_count(), sim.time(), checkpoint.string());
-        throw StopRequested(fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
-                                        sim.step_count(), options.case_file.string(), folder.string()));
-      }
-    }
-  } catch (const RunError& e) {
-    log.info("run stopped: {}", e.what());
-    io::VtkArray none{"density", 1, {}};
-    std::vector<double> xyz;
-    for (const Vec3& x : sim.particles().x) xyz.insert(xyz.end(), {x[0], x[1], x[2]});
-    for (std::size_t i = 0; i < sim.particles().size(); ++i) none.values.push_back(sim.particles().density(i));
-    io::write_vtp(folder / "failure.vtp", xyz, {none}, io::VtkEncoding::Ascii);
-    log.info("the output written so far is kept in {}; particles at the failure: failure.vtp", folder.string());
-    throw;
   }
-  progress.finish(sim.step_count());
-  write_checkpoint(checkpoint, sim, counters, cavity_state());
-  const Totals t = totals(sim.particles());
-  log.info("finished: t = {} s after {} steps ({:.3g} particle-steps/s); energy {} J, momentum ({}, {}, {}) kg m/s",
-           sim.time(), sim.step_count(),
-           progress.rate(sim.step_count()) * static_cast<double>(sim.particles().size()), t.total(), t.momentum[0],
-           t.momentum[1], t.momentum[2]);
+  void write_due() {
+    const double t = sim_.time() + tol_;
+    const auto& hist = c_.diagnostics.histogram_times;
+    write_due_frames(counters_.series, c_.output.series_interval, t, [&](auto) { output_->write_series(sim_); });
+    write_due_frames(counters_.fields, c_.output.field_interval, t, [&](auto) { output_->write_fields(sim_); });
+    for (; static_cast<std::size_t>(counters_.histograms) < hist.size() &&
+           hist[static_cast<std::size_t>(counters_.histograms)] <= t;
+         ++counters_.histograms)
+      output_->write_histograms(sim_, static_cast<std::size_t>(counters_.histograms));
+  }
+
+  MpmCase c_;
+  BuiltSample sample_;
+  Simulation sim_;
+  double first_dt_, tol_, start_time_ = 0.0;
+  OutputCounters counters_;
+  std::optional<RunOutput> output_;
+  fs::path folder_;
+  Logger* log_ = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options) {
+  return std::make_unique<MpmMethod>(root, options);
 }
+
+void run_case(const Config& root, const RunOptions& options) { run_method(root, options, &make_method); }
 
 }  // namespace shockfield::mpm

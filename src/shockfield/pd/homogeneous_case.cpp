@@ -5,11 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/core/progress.hpp"
-#include "shockfield/core/run_session.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/pd/crystal_case.hpp"
 
@@ -64,70 +61,121 @@ void write_grain_summary(const fs::path& file, const CrystalMaterial& m,
   }
 }
 
-}  // namespace
-
-void run_homogeneous(const Config& root, const RunOptions& options) {
-  const Config material = root.table("material");
-  if (material.get_choice_or("model", {"j2", "crystal", "pmb", "lps"}, "j2") != "crystal")
-    material.fail("model", "[homogeneous] drives the crystal law: model = \"crystal\"");
-  const CrystalSpec spec = read_crystal(material);
-  if (spec.polycrystal)
-    material.fail("orientation", "[homogeneous] is one material point: orientation = \"direction\", \"euler\" or "
-                                 "\"random\" (with taylor_grains), not \"random_grains\"");
-  const HomogeneousSpec h = read_homogeneous(root.table("homogeneous"));
-  root.check_unknown_keys();
-  if (options.resume || options.stop_after > 0)
-    throw InputError("--resume and --stop-after: a [homogeneous] run keeps no checkpoint (it takes seconds); "
-                     "run it again with --overwrite");
-  const CrystalMaterial& m = spec.base;
-  const auto grains = static_cast<long long>(m.aggregate.orientations.size());
-  const long long steps = h.path.steps();
-  root.derive("grains", grains);
-  root.derive("steps", steps);
-  root.derive("time_step_s", h.path.end_strain / h.path.strain_rate / static_cast<double>(steps));
-  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
-  if (options.validate_only) {
-    std::printf("%s: valid pd [homogeneous] case (%lld grains, %lld steps)\n", options.case_file.string().c_str(),
-                grains, steps);
-    return;
+// One material point driven along eq. 44 as a plug-in of the run driver: the whole compression
+// is one advance() (it takes seconds and keeps no checkpoint).
+class HomogeneousMethod final : public Method {
+ public:
+  HomogeneousMethod(const Config& root, const RunOptions& options) {
+    const Config material = root.table("material");
+    if (material.get_choice_or("model", {"j2", "crystal", "pmb", "lps"}, "j2") != "crystal")
+      material.fail("model", "[homogeneous] drives the crystal law: model = \"crystal\"");
+    spec_ = read_crystal(material);
+    if (spec_.polycrystal)
+      material.fail("orientation", "[homogeneous] is one material point: orientation = \"direction\", \"euler\" or "
+                                   "\"random\" (with taylor_grains), not \"random_grains\"");
+    h_ = read_homogeneous(root.table("homogeneous"));
+    root.check_unknown_keys();
+    if (options.resume || options.stop_after > 0)
+      throw InputError("--resume and --stop-after: a [homogeneous] run keeps no checkpoint (it takes seconds); "
+                       "run it again with --overwrite");
+    grains_ = static_cast<long long>(spec_.base.aggregate.orientations.size());
+    steps_ = h_.path.steps();
+    root.derive("grains", grains_);
+    root.derive("steps", steps_);
+    root.derive("time_step_s", h_.path.end_strain / h_.path.strain_rate / static_cast<double>(steps_));
+    root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
   }
 
-  RunSession run = open_run_session(root, options, "pd",
-                                    fmt::format("homogeneous compression (eq. 44), {} grains", grains));
-  std::vector<std::string> grain_columns{"strain"};
-  for (long long g = 0; g < grains; ++g) grain_columns.push_back(fmt::format("grain_{}_Pa", g));
-  io::CsvWriter curve(run.folder / "stress_strain.csv",
-                      {"strain", "time_s", "taylor_axial_Pa", "grain_sd_Pa", "grain_min_Pa", "grain_max_Pa",
-                       "mean_accumulated_slip"});
-  io::CsvWriter per_grain(run.folder / "grains.csv", grain_columns);
-  Progress progress("pd homogeneous", 0, steps, !options.quiet);
-  std::vector<double> axial(static_cast<std::size_t>(grains));
-  long long rows = 0;
-  double widest = 0.0, widest_at = 0.0, taylor = 0.0;
-  // Loading along x, as in every pd run: eq. 44 with the seed's axis 3 taken as x.
-  const materials::CompressionObserver observe = [&](long long k, double t, double strain,
-                                                     const materials::TaylorAggregate::State& state,
-                                                     const std::vector<Mat3>& sigma, const Mat3& average) {
-    for (std::size_t g = 0; g < sigma.size(); ++g) axial[g] = materials::axial_stress(sigma[g], 0);
-    taylor = materials::axial_stress(average, 0);
-    const Spread s = spread(axial);
-    if (s.max - s.min > widest) widest = s.max - s.min, widest_at = strain;
-    progress.update(k);
-    if (k != steps && std::abs(strain) + 1e-12 < static_cast<double>(rows) * h.output_increment) return;
-    ++rows;
-    curve.row({strain, t, taylor, s.sd, s.min, s.max, materials::TaylorAggregate::accumulated_slip(state)});
-    std::vector<double> row{strain};
-    row.insert(row.end(), axial.begin(), axial.end());
-    per_grain.row(row);
-  };
-  const auto final_state = materials::compress_aggregate(m.aggregate, h.path, observe, 0);
-  progress.finish(steps);
-  write_grain_summary(run.folder / "grain_summary.csv", m, final_state, axial);
-  const Spread end = spread(axial);
-  run.log.info("finished: ε = {} after {} steps; Taylor axial stress {:.4g} MPa (eq. 45 of ⟨σ⟩, eq. 43); grains "
-               "from {:.4g} to {:.4g} MPa (sd {:.3g} MPa); widest soft-hard spread {:.4g} MPa at ε = {:.3g}",
-               h.path.end_strain, steps, taylor / 1e6, end.min / 1e6, end.max / 1e6, end.sd / 1e6, widest / 1e6,
-               widest_at);
+  std::string name() const override { return "pd"; }
+  std::string size_text() const override {
+    return fmt::format("homogeneous compression (eq. 44), {} grains", grains_);
+  }
+  std::string check_text() const override {
+    return fmt::format("pd [homogeneous] case ({} grains, {} steps)", grains_, steps_);
+  }
+  void start(RunContext& run) override { run_ = &run; }
+  void resume(RunContext& run) override { run_ = &run; }  // refused by the constructor
+  bool finished() const override { return done_ == steps_; }
+
+  void advance() override {
+    const fs::path& folder = run_->folder;
+    std::vector<std::string> grain_columns{"strain"};
+    for (long long g = 0; g < grains_; ++g) grain_columns.push_back(fmt::format("grain_{}_Pa", g));
+    io::CsvWriter curve(folder / "stress_strain.csv",
+                        {"strain", "time_s", "taylor_axial_Pa", "grain_sd_Pa", "grain_min_Pa", "grain_max_Pa",
+                         "mean_accumulated_slip"});
+    io::CsvWriter per_grain(folder / "grains.csv", grain_columns);
+    axial_.assign(static_cast<std::size_t>(grains_), 0.0);
+    long long rows = 0;
+    // Loading along x, as in every pd run: eq. 44 with the seed's axis 3 taken as x.
+    const materials::CompressionObserver observe = [&](long long k, double t, double strain,
+                                                       const materials::TaylorAggregate::State& state,
+                                                       const std::vector<Mat3>& sigma, const Mat3& average) {
+      for (std::size_t g = 0; g < sigma.size(); ++g) axial_[g] = materials::axial_stress(sigma[g], 0);
+      taylor_ = materials::axial_stress(average, 0);
+      const Spread s = spread(axial_);
+      if (s.max - s.min > widest_) widest_ = s.max - s.min, widest_at_ = strain;
+      if (k != steps_ && std::abs(strain) + 1e-12 < static_cast<double>(rows) * h_.output_increment) return;
+      ++rows;
+      curve.row({strain, t, taylor_, s.sd, s.min, s.max, materials::TaylorAggregate::accumulated_slip(state)});
+      std::vector<double> row{strain};
+      row.insert(row.end(), axial_.begin(), axial_.end());
+      per_grain.row(row);
+    };
+    const auto final_state = materials::compress_aggregate(spec_.base.aggregate, h_.path, observe, 0);
+    write_grain_summary(folder / "grain_summary.csv", spec_.base, final_state, axial_);
+    done_ = steps_;
+  }
+
+  void write_outputs() override {}
+  std::int64_t step() const override { return done_; }
+  std::string position() const override { return fmt::format(" (strain {})", done_ == steps_ ? h_.path.end_strain : 0.0); }
+  std::int64_t steps_left() const override { return steps_ - done_; }
+  std::int64_t checkpoint_every() const override { return 0; }
+  void write_checkpoint(const fs::path&) override {}
+  void log_results(double) override {
+    const Spread end = spread(axial_);
+    run_->log.info("finished: ε = {} after {} steps; Taylor axial stress {:.4g} MPa (eq. 45 of ⟨σ⟩, eq. 43); grains "
+                   "from {:.4g} to {:.4g} MPa (sd {:.3g} MPa); widest soft-hard spread {:.4g} MPa at ε = {:.3g}",
+                   h_.path.end_strain, steps_, taylor_ / 1e6, end.min / 1e6, end.max / 1e6, end.sd / 1e6,
+                   widest_ / 1e6, widest_at_);
+  }
+  std::vector<std::string> thermo_columns() const override { return {"Step", "Strain", "TaylorAxial", "GrainSpread"}; }
+  std::vector<double> thermo_values() const override {
+    const Spread s = axial_.empty() ? Spread{} : spread(axial_);
+    return {static_cast<double>(done_), done_ == steps_ ? h_.path.end_strain : 0.0, taylor_, s.max - s.min};
+  }
+  std::int64_t thermo_every() const override { return steps_; }
+  double work_items() const override { return static_cast<double>(grains_); }
+  std::string work_item_name() const override { return "grain"; }
+  double time() const override { return done_ == steps_ ? h_.path.end_strain / h_.path.strain_rate : 0.0; }
+  std::string time_unit() const override { return "s"; }
+  Json results() const override {
+    const Spread s = axial_.empty() ? Spread{} : spread(axial_);
+    return Json::object()
+        .set("end_strain", h_.path.end_strain)
+        .set("taylor_axial_stress_Pa", taylor_)
+        .set("grain_axial_stress_min_Pa", s.min)
+        .set("grain_axial_stress_max_Pa", s.max)
+        .set("grain_axial_stress_sd_Pa", s.sd)
+        .set("widest_spread_Pa", widest_)
+        .set("widest_spread_strain", widest_at_);
+  }
+  std::vector<std::string> resume_safe_keys() const override { return {}; }  // no checkpoint
+
+ private:
+  CrystalSpec spec_;
+  HomogeneousSpec h_;
+  long long grains_ = 0, steps_ = 0, done_ = 0;
+  RunContext* run_ = nullptr;
+  std::vector<double> axial_;
+  double widest_ = 0.0, widest_at_ = 0.0, taylor_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<Method> make_homogeneous_method(const Config& root, const RunOptions& options) {
+  return std::make_unique<HomogeneousMethod>(root, options);
 }
 
 }  // namespace shockfield::pd

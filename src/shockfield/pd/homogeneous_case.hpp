@@ -4,7 +4,10 @@
 // compression of seed 004 eq. 44 (Taylor assumption), the simple-compression test of seed 004
 // §4.1 / Fig. 5 (annealed OFHC copper, Table 1, 50 random orientations). No lattice, no waves: the
 // same [material] as a shock run, driven homogeneously. Keys and outputs: docs/pd.md.
+#include <memory>
+
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/method.hpp"
 #include "shockfield/core/run_options.hpp"
 #include "shockfield/materials/strength/crystal_compression.hpp"
 
@@ -17,7 +20,7 @@ struct HomogeneousSpec {
 };
 HomogeneousSpec read_homogeneous(const Config& t);
 
-/// Runs a case whose root has [homogeneous] (after run_case saw it).
-void run_homogeneous(const Config& root, const RunOptions& options);
+/// The run driver's plug-in for a case whose root has [homogeneous] (pd::make_method sends it here).
+std::unique_ptr<Method> make_homogeneous_method(const Config& root, const RunOptions& options);
 
 }  // namespace shockfield::pd

@@ -5,17 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <variant>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/core/interrupt.hpp"
-#include "shockfield/core/logger.hpp"
-#include "shockfield/core/progress.hpp"
 #include "shockfield/core/output_schedule.hpp"
-#include "shockfield/core/run_session.hpp"
+#include "shockfield/core/run_driver.hpp"
 #include "shockfield/pd/bar_impact.hpp"
 #include "shockfield/pd/bond_force.hpp"
 #include "shockfield/pd/case_file.hpp"
@@ -138,103 +135,139 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
   return run;
 }
 
-void run_with(const Config& root, const RunOptions& options, const PdCase& c, const PointCloud& cloud,
-              const Family& family, ModelRun m) {
-  Simulation sim(cloud, family, std::move(m.force), {m.density});
-  const double stable = sim.stable_step();
-  const double dt = c.solver.time_step.value_or(c.solver.safety * stable);
-  if (dt > stable)
-    root.table("solver").fail("time_step", fmt::format("{} s is beyond the stable step {} s of this body and horizon "
-                                                       "(velocity-Verlet would blow up); lower it or drop it",
-                                                       dt, stable));
-  derive_common(root, c, sim, dt);
-  if (m.derive) m.derive(root);
-  if (options.validate_only) {
-    std::printf("%s: valid pd case (%zu points, %zu bonds, dt %.3g s)\n", options.case_file.string().c_str(),
-                cloud.size(), family.bonds(), dt);
-    return;
+// Peridynamics as a plug-in of the run driver: velocity-Verlet with a fixed step to end_time
+// (the last step lands on it), rows and profiles at the first step at or past k·interval.
+class PdMethod final : public Method {
+ public:
+  PdMethod(const Config& root, const PdCase& c)
+      : c_(c), cloud_(lattice_cloud(c_.body.dim, c_.body.counts, c_.body.spacing)),
+        family_(build_family(cloud_, c_.body.horizon(), c_.body.correction)),
+        model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, family_); }, c_.material)),
+        sim_(cloud_, family_, std::move(model_.force), {model_.density}), stable_(sim_.stable_step()),
+        dt_(c_.solver.time_step.value_or(c_.solver.safety * stable_)), tol_(1e-9 * dt_) {
+    if (dt_ > stable_)
+      root.table("solver").fail("time_step", fmt::format("{} s is beyond the stable step {} s of this body and horizon "
+                                                         "(velocity-Verlet would blow up); lower it or drop it",
+                                                         dt_, stable_));
+    derive_common(root, c_, sim_, dt_);
+    if (model_.derive) model_.derive(root);
+    model_.fields.damage = [this] { return sim_.model().damage(); };
   }
 
-  RunSession run = open_run_session(root, options, "pd",
-                                    fmt::format("{} points, {} bonds, {}D", cloud.size(), family.bonds(), c.body.dim));
-  const fs::path& folder = run.folder;
-  const fs::path& checkpoint = run.checkpoint;
-  Logger& log = run.log;
+  std::string name() const override { return "pd"; }
+  std::string size_text() const override {
+    return fmt::format("{} points, {} bonds, {}D", cloud_.size(), family_.bonds(), c_.body.dim);
+  }
+  std::string check_text() const override {
+    return fmt::format("pd case ({} points, {} bonds, dt {:.3g} s)", cloud_.size(), family_.bonds(), dt_);
+  }
 
-  OutputCounters counters;
-  std::optional<ResumePoint> resume;
-  if (options.resume) {
-    if (!fs::exists(checkpoint)) throw InputError(fmt::format("--resume: no checkpoint in '{}'", folder.string()));
+  void start(RunContext& run) override {
+    set_impact_velocity(sim_, c_.impact_speed);
+    sim_.setup();
+    open(run, std::nullopt);
+    write_due();
+  }
+  void resume(RunContext& run) override {
     std::vector<double> state;
-    counters = read_checkpoint(checkpoint, sim, state);
-    m.restore(state);
-    resume = ResumePoint{sim.step_count(), counters.profiles};
-    log.info("resumed from {} at step {}, t = {} s", checkpoint.string(), sim.step_count(), sim.time());
-  } else {
-    set_impact_velocity(sim, c.impact_speed);
-    sim.setup();
+    counters_ = read_checkpoint(run.checkpoint, sim_, state);
+    model_.restore(state);
+    open(run, ResumePoint{sim_.step_count(), counters_.profiles});
   }
-  m.fields.damage = [&sim] { return sim.model().damage(); };
-  RunOutput output(folder, std::move(m.fields), resume);
-
-  // Rows at the first step at or past k·interval (the step is fixed).
-  const double tol = 1e-9 * dt;
-  auto write_due = [&] {
-    const double t = sim.time() + tol;
-    write_due_frames(counters.series, c.output.series_interval, t, [&](auto) { output.write_series(sim); });
-    write_due_frames(counters.profiles, c.output.profile_interval, t, [&](auto k) { output.write_profile(sim, k); });
-  };
-  auto save = [&] { write_checkpoint(checkpoint, sim, m.save(), counters); };
-
-  clear_stop_request();
-  install_stop_handlers();
-  if (!options.resume) write_due();
-  const long long first = sim.step_count();
-  const auto remaining = static_cast<long long>(std::ceil((c.solver.end_time - sim.time()) / dt - 1e-9));
-  Progress progress("pd", first, remaining, !options.quiet);
-  log.info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
-           c.solver.end_time, dt, dt / stable, stable);
-  try {
-    while (sim.time() < c.solver.end_time - tol) {
-      sim.step(std::min(dt, c.solver.end_time - sim.time()));
-      write_due();
-      progress.update(sim.step_count());
-      if (c.output.checkpoint_every > 0 && sim.step_count() % c.output.checkpoint_every == 0) save();
-      if (stop_requested() || (options.stop_after > 0 && sim.step_count() - first == options.stop_after)) {
-        progress.finish(sim.step_count());
-        save();
-        log.info("stopped at step {} (t = {} s): checkpoint written to {}", sim.step_count(), sim.time(),
-                 checkpoint.string());
-        throw StopRequested(fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
-                                        sim.step_count(), options.case_file.string(), folder.string()));
-      }
-    }
-  } catch (const RunError& e) {
-    log.info("run stopped: {}", e.what());
-    output.write_profile(sim, counters.profiles);
-    log.info("the output written so far is kept in {}; the points at the failure: profiles/profile_{}.csv",
-             folder.string(), counters.profiles);
-    throw;
+  bool finished() const override { return !(sim_.time() < c_.solver.end_time - tol_); }
+  void advance() override { sim_.step(std::min(dt_, c_.solver.end_time - sim_.time())); }
+  void write_outputs() override { write_due(); }
+  std::int64_t step() const override { return sim_.step_count(); }
+  std::string position() const override { return fmt::format(" (t = {} s)", sim_.time()); }
+  std::int64_t steps_left() const override {
+    return static_cast<std::int64_t>(std::ceil((c_.solver.end_time - sim_.time()) / dt_ - 1e-9));
   }
-  progress.finish(sim.step_count());
-  if (c.output.profile_interval == 0.0) output.write_profile(sim, counters.profiles++);
-  save();
-  const Vec3 p = sim.momentum();
-  log.info("finished: t = {} s after {} steps ({:.3g} bond-updates/s); kinetic energy {} J, momentum ({}, {}, {})",
-           sim.time(), sim.step_count(), progress.rate(sim.step_count()) * static_cast<double>(family.bonds()),
-           sim.kinetic_energy(), p[0], p[1], p[2]);
-}
+  std::int64_t checkpoint_every() const override { return c_.output.checkpoint_every; }
+  void write_checkpoint(const fs::path& file) override {
+    pd::write_checkpoint(file, sim_, model_.save(), counters_);
+  }
+  std::string write_failure_state() override {
+    output_->write_profile(sim_, counters_.profiles);
+    return fmt::format("the points at the failure: profiles/profile_{}.csv", counters_.profiles);
+  }
+  void write_final_outputs() override {
+    if (c_.output.profile_interval == 0.0) output_->write_profile(sim_, counters_.profiles++);
+  }
+  void log_results(double steps_per_second) override {
+    const Vec3 p = sim_.momentum();
+    log_->info("finished: t = {} s after {} steps ({:.3g} bond-updates/s); kinetic energy {} J, momentum ({}, {}, {})",
+               sim_.time(), sim_.step_count(), steps_per_second * static_cast<double>(family_.bonds()),
+               sim_.kinetic_energy(), p[0], p[1], p[2]);
+  }
+
+  std::vector<std::string> thermo_columns() const override {
+    return {"Step", "Time", "KinEng", "Px", "MeanDamage", "Broken"};
+  }
+  std::vector<double> thermo_values() const override {
+    const std::vector<double> damage = model_.fields.damage();
+    double mean = 0.0, broken = 0.0;
+    for (double d : damage) mean += d, broken += d > 0.0 ? 1.0 : 0.0;
+    if (!damage.empty()) mean /= static_cast<double>(damage.size());
+    return {static_cast<double>(sim_.step_count()), sim_.time(), sim_.kinetic_energy(), sim_.momentum()[0], mean,
+            broken};
+  }
+  std::int64_t thermo_every() const override {
+    return thermo_interval(c_.output.thermo_every,
+                           static_cast<long long>(std::ceil(c_.solver.end_time / dt_ - 1e-9)));
+  }
+  double work_items() const override { return static_cast<double>(cloud_.size()); }
+  std::string work_item_name() const override { return "point"; }
+
+  double time() const override { return sim_.time(); }
+  std::string time_unit() const override { return "s"; }
+  Json results() const override {
+    const std::vector<double> values = thermo_values();
+    const Vec3 p = sim_.momentum();
+    return Json::object()
+        .set("kinetic_energy_J", values[2])
+        .set("momentum", Json::Array{p[0], p[1], p[2]})
+        .set("mean_damage", values[4])
+        .set("damaged_points", static_cast<long long>(values[5]));
+  }
+  std::vector<std::string> resume_safe_keys() const override {
+    return {"solver.end_time", "output.*_interval", "output.thermo_every", "output.checkpoint_every"};
+  }
+
+ private:
+  void open(RunContext& run, std::optional<ResumePoint> resume) {
+    log_ = &run.log;
+    output_.emplace(run.folder, model_.fields, resume);
+    if (!finished())
+      log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
+                 c_.solver.end_time, dt_, dt_ / stable_, stable_);
+  }
+  void write_due() {
+    const double t = sim_.time() + tol_;
+    write_due_frames(counters_.series, c_.output.series_interval, t, [&](auto) { output_->write_series(sim_); });
+    write_due_frames(counters_.profiles, c_.output.profile_interval, t,
+                     [&](auto k) { output_->write_profile(sim_, k); });
+  }
+
+  PdCase c_;
+  PointCloud cloud_;
+  Family family_;
+  ModelRun model_;
+  Simulation sim_;
+  double stable_, dt_, tol_;
+  OutputCounters counters_;
+  std::optional<RunOutput> output_;
+  Logger* log_ = nullptr;
+};
 
 }  // namespace
 
-void run_case(const Config& root, const RunOptions& options) {
-  if (root.has("homogeneous")) return run_homogeneous(root, options);
+std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options) {
+  if (root.has("homogeneous")) return make_homogeneous_method(root, options);
   const PdCase c = read_pd_case(root);
   root.check_unknown_keys();
-  const PointCloud cloud = lattice_cloud(c.body.dim, c.body.counts, c.body.spacing);
-  const Family family = build_family(cloud, c.body.horizon(), c.body.correction);
-  std::visit([&](const auto& m) { run_with(root, options, c, cloud, family, make_model(root, c, m, cloud, family)); },
-             c.material);
+  return std::make_unique<PdMethod>(root, c);
 }
+
+void run_case(const Config& root, const RunOptions& options) { run_method(root, options, &make_method); }
 
 }  // namespace shockfield::pd

@@ -1,12 +1,18 @@
 #pragma once
-// `shockfield run` for method = "pd": validate the whole case file, build the body, its families
-// and the force model, create the run folder and run velocity-Verlet to end_time with output,
-// checkpoints and resume.
+// `method = "pd"`: peridynamics as a plug-in of the run driver (core/method.hpp): validates the
+// whole case file, builds the body, its families and the force model, and runs velocity-Verlet
+// to end_time with output, checkpoints and resume (a [homogeneous] case: homogeneous_case.hpp).
+#include <memory>
+
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/method.hpp"
 #include "shockfield/core/run_options.hpp"
 
 namespace shockfield::pd {
 
+/// Reads, validates and derives the case (the factory of the run driver's registry).
+std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options);
+/// Runs the case through the run driver.
 void run_case(const Config& root, const RunOptions& options);
 
 }  // namespace shockfield::pd

@@ -28,7 +28,7 @@ auto read_for_key(const Config& table, std::string_view key, Read&& read) {
 
 std::unique_ptr<Potential> make_funcfl(const Config& table, const std::filesystem::path& case_dir,
                                        int ntypes) {
-  const auto path = find_potential_file(table, "file", table.get_string("file"), case_dir);
+  const auto path = find_potential_file(table, "file", case_dir);
   std::vector<FuncflFile> files{read_for_key(table, "file", [&] { return read_funcfl(path); })};
   // pair_coeff * * file: every type uses the one file.
   auto tables = tabulate_funcfl(files, std::vector<int>(static_cast<std::size_t>(ntypes), 0));
@@ -38,7 +38,7 @@ std::unique_ptr<Potential> make_funcfl(const Config& table, const std::filesyste
 
 std::unique_ptr<Potential> make_setfl(const Config& table, const std::filesystem::path& case_dir,
                                       int ntypes, bool finnis_sinclair) {
-  const auto path = find_potential_file(table, "file", table.get_string("file"), case_dir);
+  const auto path = find_potential_file(table, "file", case_dir);
   const auto file = read_for_key(table, "file", [&] { return read_setfl(path, finnis_sinclair); });
   const auto elements = table.get_strings("elements");
   const std::string available = fmt::format("{}", fmt::join(file.elements, " "));
@@ -117,22 +117,8 @@ std::optional<double> potential_type_mass(const Potential& potential, int t) {
 }
 
 std::filesystem::path find_potential_file(const Config& table, std::string_view key,
-                                          const std::string& name,
                                           const std::filesystem::path& case_dir) {
-  const std::filesystem::path given(name);
-  std::vector<std::filesystem::path> tried;
-  if (given.is_absolute()) {
-    tried.push_back(given);
-  } else {
-    tried.push_back(case_dir / given);
-    tried.push_back(lammps_potential_dir / given);
-  }
-  for (const auto& p : tried)
-    if (std::filesystem::is_regular_file(p)) return p;
-  std::vector<std::string> shown;
-  for (const auto& p : tried) shown.push_back(p.string());
-  table.fail(key, fmt::format("potential file '{}' not found; looked in: {}", name,
-                              fmt::join(shown, ", ")));
+  return table.get_input_file(key, {case_dir, lammps_potential_dir});
 }
 
 }  // namespace shockfield::md::potentials

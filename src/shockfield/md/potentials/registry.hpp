@@ -48,10 +48,10 @@ std::vector<std::string> potential_styles();
 /// The mass the potential file gives atom type t (0-based), if the potential has masses (EAM).
 std::optional<double> potential_type_mass(const Potential& potential, int t);
 
-/// `name` if absolute, else case_dir/name, else lammps_potential_dir/name; fails on `key` of
-/// `table` listing the places it looked when none exists.
+/// The file named by string `key` of `table`: as given if absolute, else case_dir/name, else
+/// lammps_potential_dir/name; fails on `key` listing the places it looked when none exists. Read
+/// through Config::get_input_file, so the file reaches the run's provenance.
 std::filesystem::path find_potential_file(const Config& table, std::string_view key,
-                                          const std::string& name,
                                           const std::filesystem::path& case_dir);
 
 }  // namespace shockfield::md::potentials

@@ -1,0 +1,101 @@
+#include "shockfield/dbm/run_output.hpp"
+
+#include <fmt/format.h>
+
+#include "shockfield/dbm/detonation.hpp"
+#include "shockfield/dbm/tne.hpp"
+
+namespace shockfield::dbm {
+
+namespace fs = std::filesystem;
+
+namespace {
+// Indices of Δ*_2 xx and Δ*_(3,1) x in TneFields (order of kTneNames).
+constexpr int kD2xx = 0, kD31x = 7;
+}  // namespace
+
+RunOutput::RunOutput(const fs::path& folder, const DbmOutputSpec& spec, const Simulation* resumed,
+                     const OutputCounters& counters, const ReactiveFlow* reaction,
+                     const std::optional<ReactionSpec>& spec_reaction, GlsRunPart* gls)
+    : folder_(folder), row_(spec.profile_row), reaction_(reaction), spec_reaction_(spec_reaction), gls_(gls) {
+  const double keep_step = resumed ? static_cast<double>(resumed->steps()) : 0.0;
+  const double keep_profile = static_cast<double>(counters.profiles) - 1.0;
+  std::vector<std::string> series_columns =
+      gls ? GlsRunPart::series_columns() : std::vector<std::string>{"step", "time", "rho", "ux", "uy", "T", "D"};
+  if (reaction_) series_columns.insert(series_columns.end(), {"lambda", "chemical_energy", "total_energy", "front_x"});
+  series_ = io::CsvWriter(folder / "series.csv", series_columns, resumed ? &keep_step : nullptr);
+  fs::create_directories(folder / "profiles");
+  index_ = io::CsvWriter(folder / "profiles" / "index.csv", {"profile", "step", "time"},
+                         resumed ? &keep_profile : nullptr);
+  if (spec.field_interval > 0.0) {
+    fs::create_directories(folder / "fields");
+    const double keep_time = resumed ? resumed->time() : 0.0;
+    grid_pvd_ = io::PvdSeries(folder / "grid.pvd", resumed ? &keep_time : nullptr);
+  }
+}
+
+void RunOutput::write_series(const Simulation& sim) {
+  if (gls_) return series_.row(gls_->series_row(sim));
+  const Lattice& l = sim.lattice();
+  double rho = 0, ux = 0, uy = 0, T = 0;
+  for (int j = 0; j < l.ny; ++j)
+    for (int i = 0; i < l.nx; ++i) {
+      const Macro m = sim.macro(i, j);
+      rho += m.rho, ux += m.ux, uy += m.uy, T += m.T;
+    }
+  const double n = static_cast<double>(l.nx) * l.ny;
+  std::vector<double> row{static_cast<double>(sim.steps()), sim.time(), rho / n, ux / n, uy / n, T / n,
+                          tne_measures(sim).mean_strength};
+  if (reaction_) {  // [reaction]: mean λ, Q·Σφ, E + Q·Σφ and the tracked front (detonation.hpp)
+    double lambda = 0.0;
+    for (int j = 0; j < l.ny; ++j)
+      for (int i = 0; i < l.nx; ++i) lambda += reaction_->lambda(i, j);
+    const double chemical = reaction_->chemical_energy();
+    row.insert(row.end(), {lambda / n, chemical, sim.totals()[3] + chemical,
+                           pressure_front(sim, row_, spec_reaction_->front_pressure())});
+  }
+  series_.row(row);
+}
+
+void RunOutput::write_profile(const Simulation& sim, std::int64_t index) {
+  const TneFields tne = tne_measures(sim);
+  const Lattice& l = sim.lattice();
+  std::vector<std::string> columns{"x", "rho", "ux", "uy", "p", "T", "D2xx", "D31x"};
+  if (reaction_) columns.insert(columns.end(), {"lambda", "omega"});
+  io::CsvWriter csv(folder_ / "profiles" / fmt::format("profile_{}.csv", index), columns);
+  for (int i = 0; i < l.nx; ++i) {
+    const Macro m = sim.macro(i, row_);
+    const std::size_t cell = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * row_;
+    std::vector<double> row{l.x(i), m.rho, m.ux, m.uy, m.rho * m.T, m.T, tne.central[kD2xx][cell], tne.central[kD31x][cell]};
+    if (reaction_) row.insert(row.end(), {reaction_->lambda(i, row_), reaction_->consumption(i, row_)});
+    csv.row(row);
+  }
+  index_.row({static_cast<double>(index), static_cast<double>(sim.steps()), sim.time()});
+}
+
+void RunOutput::write_fields(const Simulation& sim) {
+  const Lattice& l = sim.lattice();
+  const std::size_t n = static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(l.ny);
+  io::VtkImage img;
+  img.points = {static_cast<std::size_t>(l.nx), static_cast<std::size_t>(l.ny), 1};
+  img.origin = {l.x(0), l.y(0), 0.0};
+  img.spacing = {l.dx, l.dy, 1.0};
+  std::vector<double> rho(n), u(3 * n), T(n);
+  for (int j = 0; j < l.ny; ++j)
+    for (int i = 0; i < l.nx; ++i) {
+      const Macro m = sim.macro(i, j);
+      const std::size_t c = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(j);
+      rho[c] = m.rho, u[3 * c] = m.ux, u[3 * c + 1] = m.uy, T[c] = m.T;
+    }
+  img.point_data = {{"rho", 1, std::move(rho)}, {"velocity", 3, std::move(u)}, {"T", 1, std::move(T)}};
+  if (gls_) {
+    for (io::VtkArray& a : gls_->field_arrays()) img.point_data.push_back(std::move(a));
+  } else {
+    img.point_data.push_back({"D", 1, tne_measures(sim).strength});
+  }
+  const std::string file = fmt::format("fields/grid_{:09d}.vti", sim.steps());
+  io::write_vti(folder_ / file, img, io::VtkEncoding::Ascii);
+  grid_pvd_.add(sim.time(), file);
+}
+
+}  // namespace shockfield::dbm
