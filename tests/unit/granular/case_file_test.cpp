@@ -163,3 +163,21 @@ TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
 
 }  // namespace
 }  // namespace shockfield::granular
+
+namespace shockfield::granular {
+namespace {
+
+TEST(GranularCase, ExampleCaseFilesAreValid) {
+  for (const char* name : {"horizontal_soliton.toml", "column_weak.toml", "column_light_impurity.toml"}) {
+    const Config root = Config::load(std::filesystem::path("../examples/granular_chain") / name);
+    root.get_choice("method", {"granular"});
+    EXPECT_NO_THROW({
+      const GranularCase c = read_granular_case(root);
+      root.check_unknown_keys();
+      build_simulation(c);
+    }) << name;
+  }
+}
+
+}  // namespace
+}  // namespace shockfield::granular
