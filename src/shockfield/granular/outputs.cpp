@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "shockfield/granular/signal.hpp"
 
 namespace shockfield::granular {
@@ -74,6 +77,23 @@ void RunOutputs::write_due(const Simulation& sim, OutputCounters& n) {
       const SignalFront f = measure_signal(sim);
       if (f.valid) signal_.row({t, f.sample.position, f.sample.depth, f.sample.velocity, f.sample.force, f.sample.width});
     });
+}
+
+std::vector<std::pair<std::string, double>> summary_results(const Simulation& sim, double initial_total) {
+  const Thermo t = sim.thermo();
+  double max_speed = 0.0, max_force = sim.wall_force();
+  for (double v : sim.velocity()) max_speed = std::max(max_speed, std::abs(v));
+  for (double f : sim.contact_force()) max_force = std::max(max_force, f);
+  const double scale = std::max(std::abs(initial_total), std::abs(t.external_work));
+  return {{"time", t.time},
+          {"steps", static_cast<double>(t.step)},
+          {"kinetic", t.kinetic},
+          {"potential", t.potential},
+          {"total", t.total},
+          {"energy_error", scale > 0 ? std::abs(t.total - t.external_work - initial_total) / scale : 0.0},
+          {"signal_depth", t.signal_depth},
+          {"max_speed", max_speed},
+          {"max_contact_force", max_force}};
 }
 
 }  // namespace shockfield::granular

@@ -11,6 +11,7 @@
 // A row due at time k·interval is written at the first step at or past it (core/output_schedule).
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "shockfield/granular/case_file.hpp"
@@ -36,5 +37,11 @@ class RunOutputs {
   std::vector<std::size_t> field_grains_;
   io::CsvWriter series_, probes_, force_field_, velocity_field_, signal_;
 };
+
+/// A run's key results (for summary.json), by name: time, steps, kinetic, potential, total
+/// energies [J], energy_error (|total − external work − initial total| / max(initial total,
+/// external work), the integrator's error without damping), signal_depth [m], max_speed [m/s],
+/// max_contact_force [N] (largest |v| and F_k now).
+std::vector<std::pair<std::string, double>> summary_results(const Simulation& sim, double initial_total);
 
 }  // namespace shockfield::granular

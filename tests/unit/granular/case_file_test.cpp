@@ -146,6 +146,14 @@ TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
   EXPECT_EQ(header.rfind("time,velocity_0,force_0,overlap_0,velocity_100", 0), 0u) << header;
   EXPECT_TRUE(std::filesystem::exists(dir / "spacetime_force.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "signal.csv"));
+  // The summary: damping (γ = 1e-3 N·s/m) removes a little energy, so the error is small but
+  // not round-off; the signal is below the top.
+  const auto summary = summary_results(resumed, build_simulation(c).thermo().total);
+  ASSERT_EQ(summary.size(), 9u);
+  EXPECT_EQ(summary[1].first, "steps");
+  EXPECT_EQ(summary[1].second, 600.0);
+  EXPECT_LT(summary[5].second, 0.1);
+  EXPECT_GT(summary[6].second, 0.0);
   // A checkpoint of another chain is refused with the file named.
   const GranularCase other = read_granular_case([&] {
     const Config r = with(replace(kColumn, "grains = 200", "grains = 201"));
