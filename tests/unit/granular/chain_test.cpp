@@ -189,3 +189,28 @@ TEST(GranularChain, ViscousDampingOnlyRemovesEnergyAndAWallReflectsTheWave) {
 
 }  // namespace
 }  // namespace shockfield::granular
+
+namespace shockfield::granular {
+namespace {
+
+TEST(GranularChain, HealthCheckStopsARunWhoseContactsOutgrewTheStep) {
+  // A state compressed far beyond what the step was chosen for (contact 10 overlapping by
+  // 1e-4 m, ~50 times the impulse's bound) makes the stiffest contact need a smaller step.
+  ChainSpec s;
+  s.grains = 30;
+  s.radius = 5e-3;
+  const Chain c = build_chain(s);
+  const Impulse kick{Impulse::Kind::velocity, 0.1, 1, {}, {}};
+  Simulation sim(c, kick, std::nullopt, 0.9);
+  EXPECT_NO_THROW(sim.health_check());
+  std::vector<double> w(c.size(), 0.0);
+  for (std::size_t i = 0; i <= 10; ++i) w[i] = 1e-4;
+  sim.restore(w, sim.velocity(), sim.force(), sim.contact_force(), 0, 0.0, 0.0);
+  EXPECT_THROW(sim.health_check(), RunError);
+  w[3] = std::nan("");
+  sim.restore(w, sim.velocity(), sim.force(), sim.contact_force(), 0, 0.0, 0.0);
+  EXPECT_THROW(sim.health_check(), RunError);
+}
+
+}  // namespace
+}  // namespace shockfield::granular
