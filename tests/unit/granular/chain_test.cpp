@@ -20,6 +20,14 @@ ChainSpec steel_column(long long n) {
           .impurities = {{10, 0.3, 1.0, 1.0}, {20, 1.0, 1.7, 1.0}, {30, 1.0, 1.0, 4.0}}};
 }
 
+// Touching steel spheres on a horizontal line, no wall.
+ChainSpec horizontal(long long n, double radius) {
+  ChainSpec s;
+  s.grains = n;
+  s.radius = radius;
+  return s;
+}
+
 TEST(GranularChain, HertzKappaMatchesTheClosedFormsForEqualSpheresAndAFlatWall) {
   // Equal spheres: E* = E/(2(1-ν²)), R* = R/2; sphere on a rigid flat: E* = E/(1-ν²), R* = R.
   const double E = 200e9, nu = 0.3, R = 2e-3, inf = INFINITY;
@@ -97,9 +105,7 @@ TEST(GranularChain, StableStepBoundHoldsDuringTheRun) {
 }
 
 double max_energy_drift(double dt_fraction, long long steps_per_unit) {
-  ChainSpec s;
-  s.grains = 60;
-  s.radius = 5e-3;
+  ChainSpec s = horizontal(60, 5e-3);
   const Chain c = build_chain(s);
   const Impulse kick{Impulse::Kind::velocity, 0.1, 1, {}, {}};
   Simulation sim(c, kick, dt_fraction * Simulation::stable_step(c, kick));
@@ -126,21 +132,13 @@ TEST(GranularChain, VelocityVerletConservesEnergyTo1e8WithTheErrorFallingAsDtSqu
   EXPECT_NEAR(coarse / fine, 4.0, 0.8);
 }
 
-}  // namespace
-}  // namespace shockfield::granular
-
-namespace shockfield::granular {
-namespace {
-
 TEST(GranularChain, ForceHistoryDeliversItsImpulseAndWork) {
   // A triangular push of 0.5 N over 20 µs on the top grain of a free horizontal chain: the
   // chain's momentum is the push's impulse J = ½·0.5 N·20 µs (velocity Verlet conserves momentum
   // exactly and the push enters as a trapezoid rule, which is exact for a piecewise-linear force
   // sampled at its nodes: 1e-12 relative), and the total energy equals the work done by the
   // push (the work's trapezoid rule is second order: 1e-6 relative at this step).
-  ChainSpec s;
-  s.grains = 200;
-  s.radius = 5e-3;
+  ChainSpec s = horizontal(200, 5e-3);
   const Impulse push{Impulse::Kind::force, 0.0, 1, {0.0, 1e-5, 2e-5}, {0.0, 0.5, 0.0}};
   Simulation sim(build_chain(s), push, 1e-8);
   while (sim.time() < 1e-4) sim.step();
@@ -156,9 +154,7 @@ TEST(GranularChain, ViscousDampingOnlyRemovesEnergyAndAWallReflectsTheWave) {
   // With γ > 0 the total energy never rises (beyond Verlet's O(Δt²) wiggle, 1e-9 relative here)
   // and ends well below the impulse's; without γ an elastic wall sends the wave back with the
   // energy intact (1e-6: Verlet at a coarser step than the conservation test).
-  ChainSpec s;
-  s.grains = 40;
-  s.radius = 5e-3;
+  ChainSpec s = horizontal(40, 5e-3);
   s.wall = WallKind::elastic;
   s.wall_youngs_modulus = 70e9;
   s.wall_poisson_ratio = 0.33;
@@ -187,18 +183,10 @@ TEST(GranularChain, ViscousDampingOnlyRemovesEnergyAndAWallReflectsTheWave) {
   EXPECT_GT(elastic[2], 0.0);
 }
 
-}  // namespace
-}  // namespace shockfield::granular
-
-namespace shockfield::granular {
-namespace {
-
 TEST(GranularChain, HealthCheckStopsARunWhoseContactsOutgrewTheStep) {
   // A state compressed far beyond what the step was chosen for (contact 10 overlapping by
   // 1e-4 m, ~50 times the impulse's bound) makes the stiffest contact need a smaller step.
-  ChainSpec s;
-  s.grains = 30;
-  s.radius = 5e-3;
+  ChainSpec s = horizontal(30, 5e-3);
   const Chain c = build_chain(s);
   const Impulse kick{Impulse::Kind::velocity, 0.1, 1, {}, {}};
   Simulation sim(c, kick, std::nullopt, 0.9);
