@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/json.hpp"
 #include "shockfield/core/logger.hpp"
 #include "shockfield/core/run_options.hpp"
 
@@ -100,6 +101,17 @@ class Method {
   virtual double ns_per_step() const { return 0.0; }
   /// Phases the method timed itself (seconds, cumulated over the session).
   virtual std::vector<PhaseTime> phase_times() const { return {}; }
+
+  // ---- summary.json and --resume.
+  /// Simulated time and its unit ("ps", "s", "1" for lattice units).
+  virtual double time() const = 0;
+  virtual std::string time_unit() const = 0;
+  /// The method's key results for summary.json's "results" (docs/summary-json.md), at any point
+  /// of the run (also when it stopped or failed).
+  virtual Json results() const = 0;
+  /// Case keys (key_matches patterns, case_diff.hpp) that --resume may find changed: the end of
+  /// the run and the output schedule. Any other change is refused.
+  virtual std::vector<std::string> resume_safe_keys() const = 0;
 };
 
 /// Reads, validates and derives a method's case (before the run folder exists).

@@ -5,11 +5,17 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
+#include "shockfield/core/case_diff.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/interrupt.hpp"
 #include "shockfield/core/progress.hpp"
+#include "shockfield/core/provenance.hpp"
+#include "shockfield/core/run_folder.hpp"
 #include "shockfield/core/run_session.hpp"
+#include "shockfield/core/run_summary.hpp"
 #include "shockfield/core/run_thermo.hpp"
 
 namespace shockfield {
@@ -21,21 +27,44 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// Wall time of the driver's phases over this session.
-struct Timers {
-  double step = 0.0, output = 0.0, checkpoint = 0.0;
-};
+// The case stored beside the checkpoint, which --resume compares with the case it is given.
+fs::path stored_case_path(const fs::path& folder) { return folder / "checkpoint.case.toml"; }
 
-void log_performance(Logger& log, const Method& m, std::int64_t steps, double wall, const Timers& t) {
-  const double rate = wall > 0 ? static_cast<double>(steps) / wall : 0.0;
-  std::string line = fmt::format("performance: {} steps in {} ({:.4g} steps/s, {:.4g} {}-steps/s", steps,
-                                 format_duration(wall), rate, rate * m.work_items(), m.work_item_name());
+// --resume: the changes between the case stored at the checkpoint and the one given; refused
+// (InputError listing every changed key) unless all are in the method's safe list.
+std::vector<CaseChange> check_resume_case(const Config& root, const RunOptions& options, const Method& m) {
+  const fs::path stored = stored_case_path(run_folder_path(options));
+  if (!fs::exists(stored)) return {};
+  std::ifstream in(stored);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::vector<CaseChange> changes = diff_cases(text.str(), root.case_toml());
+  const std::vector<std::string> safe = m.resume_safe_keys();
+  const auto is_safe = [&](const CaseChange& c) {
+    return std::any_of(safe.begin(), safe.end(), [&](const std::string& p) { return key_matches(c.key, p); });
+  };
+  if (std::all_of(changes.begin(), changes.end(), is_safe)) return changes;
+  std::string list, allowed;
+  for (const CaseChange& c : changes)
+    list += fmt::format("\n  {}: {} -> {}{}", c.key, c.before, c.after, is_safe(c) ? " (safe)" : "");
+  for (const std::string& p : safe) allowed += (allowed.empty() ? "" : ", ") + p;
+  throw InputError(fmt::format("--resume: the case differs from the one the checkpoint was written with ({}) in "
+                               "keys a resumed run cannot change:{}\nsafe to change on resume: {}; undo the edit, "
+                               "or start a new run with --overwrite or --output",
+                               stored.string(), list, allowed));
+}
+
+void log_performance(Logger& log, const Method& m, const RunTally& t) {
+  const double rate = t.wall_seconds > 0 ? static_cast<double>(t.steps) / t.wall_seconds : 0.0;
+  std::string line = fmt::format("performance: {} steps in {} ({:.4g} steps/s, {:.4g} {}-steps/s", t.steps,
+                                 format_duration(t.wall_seconds), rate, rate * m.work_items(), m.work_item_name());
   if (m.ns_per_step() > 0) line += fmt::format(", {:.4g} ns/day", rate * m.ns_per_step() * 86400.0);
   log.line(line + ")");
-  std::string phases = fmt::format("wall time: step {:.3g} s", t.step);
+  std::string phases = fmt::format("wall time: step {:.3g} s", t.step_seconds);
   for (const PhaseTime& p : m.phase_times()) phases += fmt::format(" (of which {} {:.3g} s)", p.name, p.seconds);
-  phases += fmt::format(", output {:.3g} s, checkpoint {:.3g} s, other {:.3g} s", t.output, t.checkpoint,
-                        std::max(0.0, wall - t.step - t.output - t.checkpoint));
+  phases += fmt::format(", output {:.3g} s, checkpoint {:.3g} s, other {:.3g} s", t.output_seconds,
+                        t.checkpoint_seconds,
+                        std::max(0.0, t.wall_seconds - t.step_seconds - t.output_seconds - t.checkpoint_seconds));
   log.line(phases);
 }
 
@@ -44,14 +73,28 @@ void log_performance(Logger& log, const Method& m, std::int64_t steps, double wa
 void run_method(const Config& root, const RunOptions& options, const MethodFactory& make_method) {
   std::unique_ptr<Method> method = make_method(root, options);
   Method& m = *method;
+  root.check_replayed_derived();
   if (options.validate_only) {
     std::printf("%s: valid %s\n", options.case_file.string().c_str(), m.check_text().c_str());
     return;
   }
-  RunSession session = open_run_session(root, options, m.name(), m.size_text());
+  const std::vector<CaseChange> changes = options.resume ? check_resume_case(root, options, m) : std::vector<CaseChange>{};
+  Provenance provenance = collect_provenance(options.command_line, root.input_files());
+  root.set_provenance(provenance_toml(provenance));
+  RunSession session = open_run_session(root, options, m.name(), m.size_text(), provenance_lines(provenance),
+                                        !changes.empty());
   RunContext run{session.folder, session.checkpoint, session.log, options};
   Logger& log = session.log;
+  for (const CaseChange& c : changes)
+    log.info("resume: {} changed from {} to {} (a safe change; config.resolved.toml rewritten)", c.key, c.before,
+             c.after);
   const Clock::time_point wall_start = Clock::now();
+  RunTally tally;
+  const auto summary = [&](const std::string& status, const std::string& message) {
+    tally.wall_seconds = seconds_since(wall_start);
+    provenance.end_time = iso8601_utc_now();
+    write_run_summary(run.folder, options.case_file, m, status, message, tally, provenance);
+  };
   if (options.resume) {
     if (!fs::exists(run.checkpoint))
       throw InputError(fmt::format("--resume: no checkpoint in '{}'", run.folder.string()));
@@ -70,23 +113,24 @@ void run_method(const Config& root, const RunOptions& options, const MethodFacto
   install_stop_handlers();
   const std::int64_t first = m.step();
   Progress progress(m.name(), first, m.steps_left(), !options.quiet);
-  Timers timers;
   const auto save = [&] {
     const Clock::time_point t0 = Clock::now();
     m.write_checkpoint(run.checkpoint);
-    timers.checkpoint += seconds_since(t0);
+    write_file_atomically(stored_case_path(run.folder), root.case_toml());
+    tally.checkpoint_seconds += seconds_since(t0);
   };
   try {
     while (!m.finished()) {
       Clock::time_point t0 = Clock::now();
       m.advance();
       m.check_health();
-      timers.step += seconds_since(t0);
+      tally.step_seconds += seconds_since(t0);
       t0 = Clock::now();
       m.write_outputs();
       thermo.at_step();
-      timers.output += seconds_since(t0);
+      tally.output_seconds += seconds_since(t0);
       const std::int64_t step = m.step();
+      tally.steps = step - first;
       if (m.checkpoint_every() > 0 && step % m.checkpoint_every() == 0) save();
       progress.update(step, m.fraction_done());
       if (stop_requested() || (options.stop_after > 0 && step - first == options.stop_after)) {
@@ -95,23 +139,28 @@ void run_method(const Config& root, const RunOptions& options, const MethodFacto
         save();
         log.info("stopped at step {}{}: checkpoint written to {}{}", step, m.position(), run.checkpoint.string(),
                  wrote.empty() ? "" : ", " + wrote);
-        throw StopRequested(fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
-                                        step, options.case_file.string(), run.folder.string()));
+        const std::string message = fmt::format(
+            "stopped at step {}; continue with: shockfield run {} --output {} --resume", step,
+            options.case_file.string(), run.folder.string());
+        summary("stopped", message);
+        throw StopRequested(message);
       }
     }
   } catch (const RunError& e) {
     log.info("run stopped: {}", e.what());
     const std::string wrote = m.write_failure_state();
     log.info("the output written so far is kept in {}{}", run.folder.string(), wrote.empty() ? "" : "; " + wrote);
+    summary("failed", e.what());
     throw;
   }
   progress.finish(m.step());
   m.write_final_outputs();
   thermo.at_end();
   save();
-  const double wall = seconds_since(wall_start);
+  tally.wall_seconds = seconds_since(wall_start);
   m.log_results(progress.rate(m.step()));
-  log_performance(log, m, m.step() - first, wall, timers);
+  log_performance(log, m, tally);
+  summary("finished", "");
 }
 
 }  // namespace shockfield

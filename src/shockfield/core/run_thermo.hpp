@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "shockfield/core/method.hpp"
+#include "shockfield/core/thermo_table.hpp"
 #include "shockfield/io/csv_writer.hpp"
 
 namespace shockfield {
@@ -25,7 +26,7 @@ class RunThermo {
   RunContext& run_;
   const Method& method_;
   std::int64_t every_ = 1, last_row_step_ = -1;
-  std::vector<std::size_t> widths_;
+  ThermoTable table_;
   io::CsvWriter csv_;
 };
 

@@ -150,6 +150,29 @@ class DbmMethod final : public Method {
   double work_items() const override { return static_cast<double>(c_.lattice.nx) * c_.lattice.ny; }
   std::string work_item_name() const override { return "cell"; }
 
+  double time() const override { return sim_.time(); }
+  std::string time_unit() const override { return "1"; }
+  // Domain totals, the mean TNE strength and the means of the central TNE measures (eq. 35 and
+  // its components), and for [reaction] the chemical energy and the tracked front.
+  Json results() const override {
+    const auto total = sim_.totals();
+    const TneFields tne = tne_measures(sim_);
+    Json means = Json::object();
+    for (std::size_t k = 0; k < tne.mean_central.size(); ++k) means.set(kTneNames[k], tne.mean_central[k]);
+    Json r = Json::object();
+    r.set("mass", total[0]).set("momentum", Json::Array{total[1], total[2]}).set("energy", total[3]);
+    r.set("mean_tne_strength_D", tne.mean_strength).set("mean_tne_central", std::move(means));
+    if (reaction_) {
+      r.set("chemical_energy", reaction_->chemical_energy());
+      r.set("front_x", pressure_front(sim_, c_.output.profile_row, c_.reaction->front_pressure()));
+    }
+    return r;
+  }
+  // end_time is not safe: dt is set so that a whole number of steps lands on it.
+  std::vector<std::string> resume_safe_keys() const override {
+    return {"output.*_interval", "output.thermo_every", "output.checkpoint_every"};
+  }
+
  private:
   std::vector<double>* reactant() { return reaction_ ? &reaction_->reactant_density() : nullptr; }
   void open(RunContext& run, bool resumed) {

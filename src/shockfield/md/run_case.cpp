@@ -195,8 +195,15 @@ class MdMethod final : public Method {
     return left;
   }
   std::int64_t checkpoint_every() const override { return p_.md.output.checkpoint_every; }
+  // At the end the position is the last stage with all its steps done (when it is dynamic), so
+  // that a resume with more steps in it continues the run.
   void write_checkpoint(const fs::path& file) override {
-    md::write_checkpoint(file, *sim_, {static_cast<std::int64_t>(k_), k_ < stages().size() ? done_ : 0});
+    const std::size_t n = stages().size();
+    CheckpointPosition where{static_cast<std::int64_t>(k_), done_};
+    if (k_ >= n) where = stages().back().ensemble == "minimize" ? CheckpointPosition{static_cast<std::int64_t>(n), 0}
+                                                                 : CheckpointPosition{static_cast<std::int64_t>(n - 1),
+                                                                                      stages().back().steps};
+    md::write_checkpoint(file, *sim_, where);
   }
   void write_final_outputs() override {
     while (k_ < stages().size()) finish_stage();
@@ -219,6 +226,42 @@ class MdMethod final : public Method {
   double work_items() const override { return static_cast<double>(atoms_); }
   std::string work_item_name() const override { return "atom"; }
   double ns_per_step() const override { return p_.md.timestep * 1e-3; }
+
+  double time() const override { return sim_->time; }
+  std::string time_unit() const override { return "ps"; }
+  // The Hugoniot state of every piston stage ended in this session and the final energies.
+  Json results() const override {
+    Json hugoniot = Json::array();
+    for (const auto& [stage, h] : hugoniot_)
+      hugoniot.push(Json::object()
+                        .set("stage", stage)
+                        .set("shock_speed_km_s", h.us)
+                        .set("particle_speed_km_s", h.up)
+                        .set("piston_speed_km_s", h.piston_speed)
+                        .set("pressure_GPa", h.pressure)
+                        .set("pressure_rankine_hugoniot_GPa", h.pressure_rh)
+                        .set("density_g_cc", h.density)
+                        .set("density_rankine_hugoniot_g_cc", h.density_rh)
+                        .set("initial_density_g_cc", h.density0)
+                        .set("temperature_K", h.temperature)
+                        .set("note", h.note));
+    const ThermoState t = sim_->thermo();
+    return Json::object()
+        .set("hugoniot", std::move(hugoniot))
+        .set("final", Json::object()
+                          .set("temperature_K", t.temperature)
+                          .set("potential_energy_eV", t.potential)
+                          .set("kinetic_energy_eV", t.kinetic)
+                          .set("total_energy_eV", t.potential + t.kinetic)
+                          .set("pressure_bar", t.pressure)
+                          .set("volume_A3", t.volume));
+  }
+  // The steps of the last stage (a longer last stage continues a finished run) and the output
+  // schedule.
+  std::vector<std::string> resume_safe_keys() const override {
+    return {fmt::format("stage[{}].steps", stages().size() - 1), "output.thermo_every", "output.checkpoint_every",
+            "output.dump_every", "output.profile_every"};
+  }
 
  private:
   const std::vector<StageSpec>& stages() const { return p_.md.stages; }
@@ -273,7 +316,8 @@ class MdMethod final : public Method {
     run_->log.info("[{}] done at step {} ({:.1f} steps/s, {} neighbour rebuilds)", stage.name, sim_->step,
                    seconds > 0 ? static_cast<double>(done_ - stage_first_) / seconds : 0.0, sim_->rebuilds);
     output_->write(*sim_, true);
-    report_hugoniot(*sim_, *output_, p_.md.output, stage, run_->folder, run_->log);
+    if (auto h = report_hugoniot(*sim_, *output_, p_.md.output, stage, run_->folder, run_->log))
+      hugoniot_.emplace_back(stage.name, *h);
     started_ = false;
     ++k_;
     done_ = 0;
@@ -285,6 +329,7 @@ class MdMethod final : public Method {
   std::optional<Simulation> sim_;
   std::optional<RunOutput> output_;
   std::function<bool(std::int64_t)> want_per_atom_;
+  std::vector<std::pair<std::string, HugoniotState>> hugoniot_;  ///< stages ended in this session
   RunContext* run_ = nullptr;
   std::size_t k_ = 0;           ///< current stage
   std::int64_t done_ = 0;       ///< steps done in it

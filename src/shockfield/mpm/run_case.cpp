@@ -12,6 +12,7 @@
 #include "shockfield/mpm/case_builder.hpp"
 #include "shockfield/mpm/case_file.hpp"
 #include "shockfield/mpm/checkpoint.hpp"
+#include "shockfield/mpm/diagnostics.hpp"
 #include "shockfield/mpm/run_output.hpp"
 
 namespace shockfield::mpm {
@@ -166,6 +167,39 @@ class MpmMethod final : public Method {
   }
   double work_items() const override { return static_cast<double>(sim_.particles().size()); }
   std::string work_item_name() const override { return "particle"; }
+
+  double time() const override { return sim_.time(); }
+  std::string time_unit() const override { return "s"; }
+  // Energies and momentum, and the means over all particles and over each bottom window of
+  // [diagnostics] (the series.csv columns) at the current time.
+  Json results() const override {
+    const Particles& p = sim_.particles();
+    const Totals t = totals(p);
+    const std::vector<std::string> names = quantity_names(c_.grid.dim);
+    const auto means = [&](const WindowStats& w) {
+      Json m = Json::object();
+      for (std::size_t q = 0; q < names.size() && q < w.mean.size(); ++q) m.set(names[q], w.mean[q]);
+      return m;
+    };
+    Json windows = Json::array();
+    const double y1 = c_.diagnostics.windows.bottom, area = window_cross_section(c_.grid);
+    for (double h : c_.diagnostics.windows.heights)
+    {
+      const WindowStats w = window_stats(p, c_.grid.dim, y1, y1 + h, area);
+      windows.push(Json::object().set("bottom_m", y1).set("height_m", h).set("particles", static_cast<long long>(w.count))
+                       .set("bulk_density_kg_m3", w.bulk_density).set("means", means(w)));
+    }
+    return Json::object()
+        .set("kinetic_energy_J", t.kinetic)
+        .set("internal_energy_J", t.internal)
+        .set("total_energy_J", t.total())
+        .set("momentum", Json::Array{t.momentum[0], t.momentum[1], t.momentum[2]})
+        .set("means_all_particles", means(window_stats(p, c_.grid.dim, -INFINITY, INFINITY, 1.0)))
+        .set("bottom_windows", std::move(windows));
+  }
+  std::vector<std::string> resume_safe_keys() const override {
+    return {"solver.end_time", "output.*_interval", "output.thermo_every", "output.checkpoint_every"};
+  }
 
  private:
   std::optional<CavityTracker> make_tracker() const {

@@ -17,12 +17,6 @@ namespace {
 
 std::string window_label(double h) { return fmt::format("h{:g}um", h * 1e6); }
 
-double cross_section(const GridSpec& g) {
-  double s = 1.0;
-  for (int a = 0; a + 1 < g.dim; ++a) s *= g.length(a);
-  return s;
-}
-
 void append_window(std::vector<double>& row, const WindowStats& w) {
   row.push_back(static_cast<double>(w.count));
   row.push_back(w.bulk_density);
@@ -83,7 +77,7 @@ void RunOutput::write_series(const Simulation& sim) {
   const WindowStats all = window_stats(p, dim, -inf, inf, 1.0);
   row.insert(row.end(), {t.kinetic, t.internal, t.total(), top});
   row.insert(row.end(), all.gradients.begin(), all.gradients.end());
-  const double area = cross_section(case_.grid);
+  const double area = window_cross_section(case_.grid);
   const double y1 = case_.diagnostics.windows.bottom;
   for (double h : case_.diagnostics.windows.heights) append_window(row, window_stats(p, dim, y1, y1 + h, area));
   for (double h : case_.diagnostics.windows.heights)
@@ -200,6 +194,12 @@ void RunOutput::write_histograms(const Simulation& sim, std::size_t index) {
       out << fmt::format("{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", names[q], h.edges[b], h.edges[b + 1],
                          h.counts[b], m.mean, m.std, m.skewness, m.kurtosis);
   }
+}
+
+double window_cross_section(const GridSpec& g) {
+  double s = 1.0;
+  for (int a = 0; a + 1 < g.dim; ++a) s *= g.length(a);
+  return s;
 }
 
 }  // namespace shockfield::mpm

@@ -47,6 +47,9 @@ class RunOutput {
   io::PvdSeries grid_pvd_, particles_pvd_;
 };
 
+/// The lateral measure of a measurement window (width in 2D, area in 3D; 1 in 1D) [m^(dim-1)].
+double window_cross_section(const GridSpec& g);
+
 /// Particle data projected to the grid nodes with the linear shape functions (eq. 9), mass
 /// weighted: temperature, pressure, density, specific plastic work, velocity, and the nodal mass
 /// density Σ m_p N_i / V_cell. Nodes no particle reaches are NaN (void).

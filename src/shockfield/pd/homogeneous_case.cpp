@@ -148,6 +148,20 @@ class HomogeneousMethod final : public Method {
   std::int64_t thermo_every() const override { return steps_; }
   double work_items() const override { return static_cast<double>(grains_); }
   std::string work_item_name() const override { return "grain"; }
+  double time() const override { return done_ == steps_ ? h_.path.end_strain / h_.path.strain_rate : 0.0; }
+  std::string time_unit() const override { return "s"; }
+  Json results() const override {
+    const Spread s = axial_.empty() ? Spread{} : spread(axial_);
+    return Json::object()
+        .set("end_strain", h_.path.end_strain)
+        .set("taylor_axial_stress_Pa", taylor_)
+        .set("grain_axial_stress_min_Pa", s.min)
+        .set("grain_axial_stress_max_Pa", s.max)
+        .set("grain_axial_stress_sd_Pa", s.sd)
+        .set("widest_spread_Pa", widest_)
+        .set("widest_spread_strain", widest_at_);
+  }
+  std::vector<std::string> resume_safe_keys() const override { return {}; }  // no checkpoint
 
  private:
   CrystalSpec spec_;

@@ -218,12 +218,28 @@ class PdMethod final : public Method {
   double work_items() const override { return static_cast<double>(cloud_.size()); }
   std::string work_item_name() const override { return "point"; }
 
+  double time() const override { return sim_.time(); }
+  std::string time_unit() const override { return "s"; }
+  Json results() const override {
+    const std::vector<double> values = thermo_values();
+    const Vec3 p = sim_.momentum();
+    return Json::object()
+        .set("kinetic_energy_J", values[2])
+        .set("momentum", Json::Array{p[0], p[1], p[2]})
+        .set("mean_damage", values[4])
+        .set("damaged_points", static_cast<long long>(values[5]));
+  }
+  std::vector<std::string> resume_safe_keys() const override {
+    return {"solver.end_time", "output.*_interval", "output.thermo_every", "output.checkpoint_every"};
+  }
+
  private:
   void open(RunContext& run, std::optional<ResumePoint> resume) {
     log_ = &run.log;
     output_.emplace(run.folder, model_.fields, resume);
-    log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
-               c_.solver.end_time, dt_, dt_ / stable_, stable_);
+    if (!finished())
+      log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
+                 c_.solver.end_time, dt_, dt_ / stable_, stable_);
   }
   void write_due() {
     const double t = sim_.time() + tol_;
