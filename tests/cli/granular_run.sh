@@ -35,6 +35,39 @@ grep -Eq "^ +Step +Time +KinEng +PotEng +TotEng +ExtWork +SigDepth +SigSpeed$" "
 grep -q "^time_step = " "$WORK/run/config.resolved.toml" || fail "derived time step missing"
 grep -q "finished: t = .* after 617 steps" "$WORK/run/log.txt" || fail "log.txt has no closing line"
 
+# summary.json: valid, with granular's results. The energy error without damping is Verlet's at
+# 0.05 of the stable step (measured 4.2e-6; < 1e-5); damping (1e-3 N·s/m) removes more (2.5e-4).
+CHECK="/usr/bin/python3 $ROOT/tests/cli/check_summary.py"
+$CHECK "$WORK/run/summary.json" --method granular --status finished > /dev/null ||
+  fail "summary.json: $($CHECK "$WORK/run/summary.json")"
+"$SF" run "$case" --output "$WORK/undamped" -q --set chain.damping=0.0 > /dev/null
+/usr/bin/python3 - "$WORK/run/summary.json" "$WORK/undamped/summary.json" <<'PY' || fail "summary.json results"
+import json, sys
+damped, undamped = (json.load(open(f))["results"] for f in sys.argv[1:])
+keys = ["time_s", "steps", "kinetic_J", "potential_J", "total_J", "energy_error", "signal_depth_m",
+        "max_speed_m_s", "max_contact_force_N"]
+assert list(damped) == keys, list(damped)
+assert damped["steps"] == 617 and abs(damped["time_s"] - 617 * 1.622912869456014e-07) < 1e-15, damped
+assert undamped["energy_error"] < 1e-5, undamped["energy_error"]
+assert damped["energy_error"] > 10 * undamped["energy_error"], (damped["energy_error"], undamped["energy_error"])
+assert 0 < damped["signal_depth_m"] < 200 * 4e-3 and damped["max_speed_m_s"] > 0
+PY
+
+# --resume: a stopped run's summary says so; a changed chain is refused with the key listed, a
+# later end time continues the run.
+set +e
+"$SF" run "$case" --output "$WORK/split" -q --stop-after 100 > /dev/null 2>&1
+set -e
+$CHECK "$WORK/split/summary.json" --method granular --status stopped > /dev/null || fail "no valid stopped summary"
+run_resume() { "$SF" run "$case" --output "$WORK/split" -q --resume "$@" > /dev/null 2> "$WORK/resume.txt"; }
+set +e
+run_resume --set chain.grains=201
+code=$?
+set -e
+[ $code -eq 2 ] && grep -q "chain.grains: 200 -> 201" "$WORK/resume.txt" || fail "unsafe resume edit: $(cat "$WORK/resume.txt")"
+run_resume --set run.end_time=1.2e-4 || fail "a later end time refused: $(cat "$WORK/resume.txt")"
+grep -q "finished: t = .* after 740 steps" "$WORK/split/log.txt" || fail "the extended run did not reach 740 steps"
+
 # --set is the same as editing the file: bitwise identical outputs.
 sed 's/^velocity = 0.05$/velocity = 0.06/' "$case" > "$WORK/edited.toml"
 grep -q "velocity = 0.06" "$WORK/edited.toml" || fail "the edit did not apply"

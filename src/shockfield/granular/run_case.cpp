@@ -80,10 +80,10 @@ class GranularMethod final : public Method {
   double work_items() const override { return static_cast<double>(sim_.size()); }
   std::string work_item_name() const override { return "grain"; }
 
-  double time() const { return sim_.time(); }
-  std::string time_unit() const { return "s"; }
+  double time() const override { return sim_.time(); }
+  std::string time_unit() const override { return "s"; }
   /// summary_results (outputs.hpp) with the units in the key names (docs/granular.md).
-  Json results() const {
+  Json results() const override {
     static constexpr const char* kUnits[] = {"_s", "", "_J", "_J", "_J", "", "_m", "_m_s", "_N"};
     const auto values = summary_results(sim_, initial_total_);
     Json out = Json::object();
@@ -96,7 +96,7 @@ class GranularMethod final : public Method {
     }
     return out;
   }
-  std::vector<std::string> resume_safe_keys() const {
+  std::vector<std::string> resume_safe_keys() const override {
     return {"run.end_time", "output.*_interval", "output.thermo_every", "output.checkpoint_every"};
   }
 
