@@ -17,6 +17,8 @@ case "$method" in
   dbm) case_file="$cases/dbm_sod.toml"; stop=17
        files="series.csv profiles/index.csv profiles/profile_1.csv profiles/profile_2.csv grid.pvd
               fields/grid_000000040.vti thermo.csv" ;;
+  granular) case_file="$cases/granular_tiny.toml"; stop=123
+            files="series.csv probes.csv spacetime_force.csv spacetime_velocity.csv signal.csv thermo.csv" ;;
   *) fail "unknown method '$method'" ;;
 esac
 "$SF" run "$case_file" --output "$WORK/straight" -q > /dev/null

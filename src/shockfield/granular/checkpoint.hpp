@@ -1,0 +1,27 @@
+#pragma once
+// Granular checkpoints (HDF5, io/hdf5_file.hpp): displacements, velocities, the grain and contact
+// forces of the last evaluation, the clock, the force history's work and the output counters, so
+// that a resumed run continues bitwise as if never stopped. Written to a temporary file and
+// renamed.
+#include <cstdint>
+#include <filesystem>
+
+#include "shockfield/granular/simulation.hpp"
+
+namespace shockfield::granular {
+
+/// How far the output schedule had got.
+struct OutputCounters {
+  std::int64_t series = 0;     ///< thermo rows written
+  std::int64_t probes = 0;     ///< probe rows written
+  std::int64_t spacetime = 0;  ///< space–time rows written
+  std::int64_t signal = 0;     ///< signal measurements written
+};
+
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters);
+
+/// Restores `sim` (built from the same case) and returns the counters. InputError when the
+/// checkpoint does not fit the case.
+OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim);
+
+}  // namespace shockfield::granular

@@ -1,0 +1,99 @@
+#include "shockfield/granular/outputs.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "shockfield/granular/signal.hpp"
+
+namespace shockfield::granular {
+namespace {
+
+std::vector<std::string> grain_columns(const std::vector<std::size_t>& grains, const char* prefix) {
+  std::vector<std::string> out{"time"};
+  for (std::size_t g : grains) out.push_back(fmt::format("{}_{}", prefix, g));
+  return out;
+}
+
+// The force below grain i (contact (i, i+1), or the wall's for the last grain) and its overlap.
+double force_below(const Simulation& sim, std::size_t i) {
+  return i + 1 < sim.size() ? sim.contact_force()[i] : sim.wall_force();
+}
+double overlap_below(const Simulation& sim, std::size_t i) {
+  return i + 1 < sim.size() ? sim.overlap(i) : (sim.chain().has_wall ? sim.wall_overlap() : 0.0);
+}
+
+}  // namespace
+
+std::vector<std::string> RunOutputs::thermo_columns() {
+  return {"time", "step", "kinetic", "potential", "total", "external_work", "signal_depth"};
+}
+
+std::vector<double> RunOutputs::thermo_values(const Thermo& t) {
+  return {t.time, static_cast<double>(t.step), t.kinetic, t.potential, t.total, t.external_work, t.signal_depth};
+}
+
+RunOutputs::RunOutputs(const std::filesystem::path& folder, const OutputSpec& spec, const Simulation& sim,
+                       const double* resume_from)
+    : spec_(spec) {
+  series_ = io::CsvWriter(folder / "series.csv", thermo_columns(), resume_from);
+  if (!spec_.probes.empty()) {
+    std::vector<std::string> cols{"time"};
+    for (std::size_t g : spec_.probes)
+      for (const char* q : {"velocity", "force", "overlap"}) cols.push_back(fmt::format("{}_{}", q, g));
+    probes_ = io::CsvWriter(folder / "probes.csv", cols, resume_from);
+  }
+  if (spec_.schedule.field_interval > 0) {
+    for (std::size_t g = 0; g < sim.size(); g += static_cast<std::size_t>(spec_.spacetime_stride)) field_grains_.push_back(g);
+    force_field_ = io::CsvWriter(folder / "spacetime_force.csv", grain_columns(field_grains_, "force"), resume_from);
+    velocity_field_ = io::CsvWriter(folder / "spacetime_velocity.csv", grain_columns(field_grains_, "velocity"), resume_from);
+  }
+  if (spec_.signal_interval > 0)
+    signal_ = io::CsvWriter(folder / "signal.csv", {"time", "position", "depth", "velocity", "force", "width"}, resume_from);
+}
+
+void RunOutputs::write_due(const Simulation& sim, OutputCounters& n) {
+  const double t = sim.time();
+  write_due_frames(n.series, spec_.schedule.series_interval, t, [&](auto) { series_.row(thermo_values(sim.thermo())); });
+  if (probes_.is_open())
+    write_due_frames(n.probes, spec_.probe_interval, t, [&](auto) {
+      std::vector<double> row{t};
+      for (std::size_t g : spec_.probes) row.insert(row.end(), {sim.velocity()[g], force_below(sim, g), overlap_below(sim, g)});
+      probes_.row(row);
+    });
+  if (force_field_.is_open())
+    write_due_frames(n.spacetime, spec_.schedule.field_interval, t, [&](auto) {
+      std::vector<double> force{t}, velocity{t};
+      for (std::size_t g : field_grains_) {
+        force.push_back(force_below(sim, g) - sim.rest_force(g));
+        velocity.push_back(sim.velocity()[g]);
+      }
+      force_field_.row(force);
+      velocity_field_.row(velocity);
+    });
+  if (signal_.is_open())
+    write_due_frames(n.signal, spec_.signal_interval, t, [&](auto) {
+      const SignalFront f = measure_signal(sim);
+      if (f.valid) signal_.row({t, f.sample.position, f.sample.depth, f.sample.velocity, f.sample.force, f.sample.width});
+    });
+}
+
+std::vector<std::pair<std::string, double>> summary_results(const Simulation& sim, double initial_total) {
+  const Thermo t = sim.thermo();
+  double max_speed = 0.0, max_force = sim.wall_force();
+  for (double v : sim.velocity()) max_speed = std::max(max_speed, std::abs(v));
+  for (double f : sim.contact_force()) max_force = std::max(max_force, f);
+  const double scale = std::max(std::abs(initial_total), std::abs(t.external_work));
+  return {{"time", t.time},
+          {"steps", static_cast<double>(t.step)},
+          {"kinetic", t.kinetic},
+          {"potential", t.potential},
+          {"total", t.total},
+          {"energy_error", scale > 0 ? std::abs(t.total - t.external_work - initial_total) / scale : 0.0},
+          {"signal_depth", t.signal_depth},
+          {"max_speed", max_speed},
+          {"max_contact_force", max_force}};
+}
+
+}  // namespace shockfield::granular

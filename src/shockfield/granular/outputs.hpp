@@ -1,0 +1,47 @@
+#pragma once
+// The scheduled outputs of a granular run, CSV files in the run folder (columns in
+// docs/granular.md):
+//   series.csv                  thermo rows (time, step, energies, signal depth) every series_interval;
+//   probes.csv                  velocity, force and overlap of the chosen grains every probe_interval;
+//   spacetime_force.csv,
+//   spacetime_velocity.csv      one row per field_interval: the dynamic contact force F_k − F⁰_k and
+//                               the grain velocity of every spacetime_stride-th grain (grain index × time);
+//   signal.csv                  the leading peak's position, depth, velocity, force and width
+//                               (signal.hpp) every signal_interval.
+// A row due at time k·interval is written at the first step at or past it (core/output_schedule).
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "shockfield/granular/case_file.hpp"
+#include "shockfield/granular/checkpoint.hpp"
+#include "shockfield/granular/simulation.hpp"
+#include "shockfield/io/csv_writer.hpp"
+
+namespace shockfield::granular {
+
+class RunOutputs {
+ public:
+  /// Opens the files; with `resume_from`, keeps the rows up to that time (a resumed run).
+  RunOutputs(const std::filesystem::path& folder, const OutputSpec& spec, const Simulation& sim,
+             const double* resume_from = nullptr);
+  /// Writes every row due by sim.time(), advancing the counters.
+  void write_due(const Simulation& sim, OutputCounters& counters);
+
+  static std::vector<std::string> thermo_columns();
+  static std::vector<double> thermo_values(const Thermo& t);
+
+ private:
+  OutputSpec spec_;
+  std::vector<std::size_t> field_grains_;
+  io::CsvWriter series_, probes_, force_field_, velocity_field_, signal_;
+};
+
+/// A run's key results (for summary.json), by name: time, steps, kinetic, potential, total
+/// energies [J], energy_error (|total − external work − initial total| / max(initial total,
+/// external work), the integrator's error without damping), signal_depth [m], max_speed [m/s],
+/// max_contact_force [N] (largest |v| and F_k now).
+std::vector<std::pair<std::string, double>> summary_results(const Simulation& sim, double initial_total);
+
+}  // namespace shockfield::granular
