@@ -12,6 +12,7 @@
 #include "shockfield/md/run_case.hpp"
 #include "shockfield/mpm/run_case.hpp"
 #include "shockfield/pd/run_case.hpp"
+#include "shockfield/phasefield/run_case.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -20,7 +21,8 @@ namespace {
 // the method's plug-in factory (core/method.hpp), run by the one run driver.
 const std::map<std::string, MethodFactory>& methods() {
   static const std::map<std::string, MethodFactory> table{
-      {"dbm", &dbm::make_method}, {"md", &md::make_method}, {"mpm", &mpm::make_method}, {"pd", &pd::make_method}};
+      {"dbm", &dbm::make_method}, {"md", &md::make_method}, {"mpm", &mpm::make_method}, {"pd", &pd::make_method},
+      {"phasefield", &phasefield::make_method}};
   return table;
 }
 
@@ -46,7 +48,7 @@ void add_run_command(CLI::App& app, const std::vector<std::string>& command_line
       "folder with log.txt, config.resolved.toml, thermo.csv, dumps and checkpoints.\n"
       "Ctrl-C or SIGTERM writes a checkpoint and stops; --resume continues from it.\n"
       "Case-file keys: docs/md.md (method = \"md\"), docs/mpm.md (\"mpm\"), docs/pd.md (\"pd\"),\n"
-      "docs/dbm.md (\"dbm\").");
+      "docs/dbm.md (\"dbm\"), docs/phasefield.md (\"phasefield\").");
   cmd->add_option("case", options->case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->output,
                   "Run folder (default: runs/<case file name without .toml>)");
