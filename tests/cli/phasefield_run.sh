@@ -29,6 +29,7 @@ echo "phasefield stop/resume: bitwise identical"
 
 good=$(sed -e '/^#/d' "$case_file")
 expect_error "${good/scheme = \"spectral\"/scheme = \"explicit\"}" "time.dt" "at most 0.9 dx^2/(2 dim D)"
+expect_error "${good/dt = 0.1/dt = 4.0}" "time.dt" "at most 1/max(a, 1 - a) = 1.66667"
 expect_error "${good/D = 1.0/D = -1.0}" "model.D"
 expect_error "${good/D = 1.0/D = nan}" "model.D"
 expect_error "${good/a = 0.4/a = 0.4

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shockfield::phasefield {
@@ -50,6 +51,8 @@ std::vector<Domain> read_domains(const Config& t, const Grid& g) {
 
 }  // namespace
 
+double reaction_step_limit(const Model& model) { return 1.0 / std::max(model.a, 1.0 - model.a); }
+
 PhasefieldCase read_phasefield_case(const Config& root) {
   PhasefieldCase c;
   c.grid = read_grid(root.table("grid"));
@@ -65,6 +68,13 @@ PhasefieldCase read_phasefield_case(const Config& root) {
     time.fail("dt", fmt::format("at most 0.9 dx^2/(2 dim D) = {:.6g} for scheme = \"explicit\" (the stability limit "
                                 "is {:.6g}); use a smaller dt or scheme = \"spectral\"",
                                 0.9 * limit, limit));
+  // The reaction term is explicit in both schemes: about a well ξ* the update is
+  // δξ ← (1 − dt f″(ξ*)) δξ, f″(0) = a, f″(1) = 1 − a, unstable (oscillating) beyond 2/f″. Half of
+  // that keeps the wells monotone (1 − dt f″ ≥ 0): dt ≤ 1/max(a, 1 − a).
+  if (c.dt > reaction_step_limit(c.model))
+    time.fail("dt", fmt::format("at most 1/max(a, 1 - a) = {:.6g}: the reaction term f'(xi) is explicit, and a larger "
+                                "step overshoots the wells (dt f''(well) > 1)",
+                                reaction_step_limit(c.model)));
   c.end_time = time.get_double("end_time", Range::positive());
   c.steps = static_cast<long long>(std::ceil(c.end_time / c.dt - 1e-9));
   const auto initial = root.optional_table("initial");

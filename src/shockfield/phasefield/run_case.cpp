@@ -30,6 +30,7 @@ void derive(const Config& root, const PhasefieldCase& c) {
   root.derive("nodes", static_cast<long long>(c.grid.size()));
   root.derive("steps", c.steps);
   root.derive("explicit_time_step_limit", c.grid.explicit_limit(c.model.D));
+  root.derive("reaction_time_step_limit", reaction_step_limit(c.model));
   root.derive("front_speed_c0", c.model.front_speed());
   root.derive("front_length", c.model.front_length());
   root.derive("nodes_per_front_length", c.model.front_length() / c.grid.dx);

@@ -1,6 +1,6 @@
-// The curvature law of the well-posed model (docs/theory/phasefield.md): an hcp disc moves at
-// Ṙ = c₀ − D/R, so at a = 1/2 R² = R₀² − 2Dt, and for a < 1/2 the critical radius R* = D/c₀
-// separates shrinking from growing discs.
+// The curvature law of the well-posed model (docs/theory/phasefield.md): an hcp disc (sphere)
+// moves at Ṙ = c₀ − (n − 1)D/R, so at a = 1/2 R² = R₀² − 2(n − 1)Dt, and for a < 1/2 the critical
+// radius R* = D/c₀ separates shrinking from growing discs.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,6 +39,28 @@ TEST(PhasefieldCurvature, DiscAtEqualWellsShrinksAsRSquaredLinear) {
     for (int k = 0; k < 200; ++k) s.step();
     const double R = disc_radius(s), exact = std::sqrt(R0 * R0 - 2 * m.D * s.time());
     worst = std::max(worst, std::abs(R / exact - 1));
+  }
+  EXPECT_LT(worst, 0.01);
+  RecordProperty("max_relative_radius_error", std::to_string(worst));
+}
+
+// 3D, spectral: a sphere at a = 1/2 follows R² = R₀² − 4Dt. D = 1/2 (l = 1), dx = l/2 (the
+// spectral Laplacian resolves the tanh profile: its spectrum at the Nyquist mode is ~e^{−2π²}),
+// R₀ = 8 l on a periodic 24 l box, dt = 0.05, until R = 0.75 R₀; R from Σ ξ dV = 4πR³/3 (the profile's
+// share of the volume is O(l²R), not cancelled as in 2D: part of the measured 0.35 %; with dt
+// halved 0.33 %). Tolerance 1 % (the issue's).
+TEST(PhasefieldCurvature, SphereAtEqualWellsShrinksAsRSquaredLinear) {
+  const Model m{0.5, 0.5};
+  const Grid g{3, {48, 48, 48}, 0.5};
+  Solver s(g, m, Scheme::spectral, 0.05);
+  const double c = 0.5 * g.length(0);
+  s.field() = initial_field(g, m, {Domain{Domain::Kind::sphere, {c, c, c}, {8.0, 8.0, 8.0}}});
+  const auto radius = [&] { return std::cbrt(s.measures().integral / (4.0 / 3.0 * std::numbers::pi)); };
+  const double R0 = radius(), t_end = (1 - 0.75 * 0.75) * R0 * R0 / (4 * m.D);
+  double worst = 0;
+  while (s.time() < t_end) {
+    for (int k = 0; k < 20; ++k) s.step();
+    worst = std::max(worst, std::abs(radius() / std::sqrt(R0 * R0 - 4 * m.D * s.time()) - 1));
   }
   EXPECT_LT(worst, 0.01);
   RecordProperty("max_relative_radius_error", std::to_string(worst));
