@@ -13,6 +13,7 @@
 #include "shockfield/md/run_case.hpp"
 #include "shockfield/mpm/run_case.hpp"
 #include "shockfield/pd/run_case.hpp"
+#include "shockfield/phasefield/run_case.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -22,7 +23,8 @@ namespace {
 const std::map<std::string, MethodFactory>& methods() {
   static const std::map<std::string, MethodFactory> table{
       {"dbm", &dbm::make_method}, {"md", &md::make_method}, {"mpm", &mpm::make_method}, {"pd", &pd::make_method},
-      {"granular", &granular::make_method}};
+      {"granular", &granular::make_method},
+      {"phasefield", &phasefield::make_method}};
   return table;
 }
 
@@ -48,7 +50,7 @@ void add_run_command(CLI::App& app, const std::vector<std::string>& command_line
       "folder with log.txt, config.resolved.toml, thermo.csv, dumps and checkpoints.\n"
       "Ctrl-C or SIGTERM writes a checkpoint and stops; --resume continues from it.\n"
       "Case-file keys: docs/md.md (method = \"md\"), docs/mpm.md (\"mpm\"), docs/pd.md (\"pd\"),\n"
-      "docs/dbm.md (\"dbm\"), docs/granular.md (\"granular\").");
+      "docs/dbm.md (\"dbm\"), docs/granular.md (\"granular\"), docs/phasefield.md (\"phasefield\").");
   cmd->add_option("case", options->case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->output,
                   "Run folder (default: runs/<case file name without .toml>)");

@@ -1,0 +1,88 @@
+#include "shockfield/phasefield/case_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shockfield::phasefield {
+namespace {
+
+Grid read_grid(const Config& t) {
+  Grid g;
+  g.dim = static_cast<int>(t.get_int("dimensions", Range::closed(1, 3)));
+  const auto cells = t.get_ints("nodes", static_cast<std::size_t>(g.dim), Range::closed(3, 1 << 14));
+  for (int d = 0; d < g.dim; ++d) g.n[d] = static_cast<int>(cells[d]);
+  g.dx = t.get_double("spacing", Range::positive());
+  return g;
+}
+
+std::array<double, 3> point(const Config& t, const char* key, const Grid& g, Range range = {}) {
+  const auto v = t.get_doubles(key, static_cast<std::size_t>(g.dim), range);
+  std::array<double, 3> p{0, 0, 0};
+  for (int d = 0; d < g.dim; ++d) p[d] = v[d];
+  return p;
+}
+
+std::vector<Domain> read_domains(const Config& t, const Grid& g) {
+  std::vector<Domain> out;
+  for (const Config& s : t.tables("sphere")) {
+    const double R = s.get_double("radius", Range::positive());
+    out.push_back({Domain::Kind::sphere, point(s, "center", g), {R, R, R}});
+  }
+  for (const Config& s : t.tables("ellipsoid"))
+    out.push_back({Domain::Kind::ellipsoid, point(s, "center", g), point(s, "semi_axes", g, Range::positive())});
+  for (const Config& s : t.tables("slab")) {
+    Domain d{Domain::Kind::slab, point(s, "center", g), {s.get_double("half_width", Range::positive()), 0, 0}};
+    d.normal = point(s, "normal", g);
+    if (d.normal[0] == 0 && d.normal[1] == 0 && d.normal[2] == 0) s.fail("normal", "a non-zero vector");
+    out.push_back(d);
+  }
+  if (const auto r = t.optional_table("random")) {
+    RandomNuclei n;
+    n.count = r->get_int("count", Range::closed(1, 1e7));
+    n.radius = r->get_double("radius", Range::positive());
+    n.seed = static_cast<std::uint64_t>(r->get_int_or("seed", 1, Range::non_negative()));
+    const auto nuclei = random_domains(g, n);
+    out.insert(out.end(), nuclei.begin(), nuclei.end());
+  }
+  return out;
+}
+
+}  // namespace
+
+double reaction_step_limit(const Model& model) { return 1.0 / std::max(model.a, 1.0 - model.a); }
+
+PhasefieldCase read_phasefield_case(const Config& root) {
+  PhasefieldCase c;
+  c.grid = read_grid(root.table("grid"));
+  const Config model = root.table("model");
+  c.model.a = model.get_double("a", Range::closed(0.0, 1.0));
+  c.model.D = model.get_double("D", Range::positive());
+  const Config time = root.table("time");
+  c.scheme = scheme_from_name(time.get_choice_or("scheme", {"explicit", "spectral"}, "spectral"));
+  const double limit = c.grid.explicit_limit(c.model.D);
+  c.dt = time.get_double("dt", Range::positive());
+  // Forward Euler is unstable beyond dx²/(2 dim D); 0.9 of it keeps a margin for the reaction term.
+  if (c.scheme == Scheme::explicit_euler && c.dt > 0.9 * limit)
+    time.fail("dt", fmt::format("at most 0.9 dx^2/(2 dim D) = {:.6g} for scheme = \"explicit\" (the stability limit "
+                                "is {:.6g}); use a smaller dt or scheme = \"spectral\"",
+                                0.9 * limit, limit));
+  // The reaction term is explicit in both schemes: about a well ξ* the update is
+  // δξ ← (1 − dt f″(ξ*)) δξ, f″(0) = a, f″(1) = 1 − a, unstable (oscillating) beyond 2/f″. Half of
+  // that keeps the wells monotone (1 − dt f″ ≥ 0): dt ≤ 1/max(a, 1 − a).
+  if (c.dt > reaction_step_limit(c.model))
+    time.fail("dt", fmt::format("at most 1/max(a, 1 - a) = {:.6g}: the reaction term f'(xi) is explicit, and a larger "
+                                "step overshoots the wells (dt f''(well) > 1)",
+                                reaction_step_limit(c.model)));
+  c.end_time = time.get_double("end_time", Range::positive());
+  c.steps = static_cast<long long>(std::ceil(c.end_time / c.dt - 1e-9));
+  const auto initial = root.optional_table("initial");
+  if (initial) c.domains = read_domains(*initial, c.grid);
+  if (c.domains.empty()) root.fail("initial", "at least one [[initial.sphere]], [[initial.ellipsoid]], "
+                                              "[[initial.slab]] or [initial.random]");
+  c.output = read_output_intervals(root.optional_table("output"), c.end_time, {false, true});
+  return c;
+}
+
+}  // namespace shockfield::phasefield

@@ -1,0 +1,20 @@
+#pragma once
+// Phase-field checkpoints (HDF5, io/hdf5_file): ξ, the clock and the output counters — all a step
+// needs — so a resumed run continues bitwise. Written to a temporary file and renamed.
+#include <cstdint>
+#include <filesystem>
+
+#include "shockfield/phasefield/solver.hpp"
+
+namespace shockfield::phasefield {
+
+struct OutputCounters {
+  std::int64_t series = 0;  ///< series rows written (row k at k·series_interval)
+  std::int64_t frames = 0;  ///< field frames written
+};
+
+void write_checkpoint(const std::filesystem::path& file, const Solver& solver, const OutputCounters& counters);
+/// Restores ξ and the clock; InputError when the checkpoint does not fit the case's grid.
+OutputCounters read_checkpoint(const std::filesystem::path& file, Solver& solver);
+
+}  // namespace shockfield::phasefield

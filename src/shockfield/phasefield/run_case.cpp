@@ -1,0 +1,162 @@
+#include "shockfield/phasefield/run_case.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/io/csv_writer.hpp"
+#include "shockfield/io/vtk_xml.hpp"
+#include "shockfield/phasefield/case_file.hpp"
+#include "shockfield/phasefield/checkpoint.hpp"
+
+namespace shockfield::phasefield {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Radius of the n-ball with the hcp volume V = Σ ξ dV (n = 1: the half length of a slab).
+double equivalent_radius(double volume, int dim) {
+  if (dim == 1) return 0.5 * volume;
+  if (dim == 2) return std::sqrt(volume / std::numbers::pi);
+  return std::cbrt(volume / (4.0 / 3.0 * std::numbers::pi));
+}
+
+void derive(const Config& root, const PhasefieldCase& c) {
+  root.derive("nodes", static_cast<long long>(c.grid.size()));
+  root.derive("steps", c.steps);
+  root.derive("explicit_time_step_limit", c.grid.explicit_limit(c.model.D));
+  root.derive("reaction_time_step_limit", reaction_step_limit(c.model));
+  root.derive("front_speed_c0", c.model.front_speed());
+  root.derive("front_length", c.model.front_length());
+  root.derive("nodes_per_front_length", c.model.front_length() / c.grid.dx);
+  if (c.grid.dim > 1 && c.model.front_speed() > 0)
+    root.derive("critical_radius", c.model.critical_radius(c.grid.dim));
+  root.derive("initial_domains", static_cast<long long>(c.domains.size()));
+  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
+}
+
+// The well-posed Ginzburg–Landau model (docs/theory/phasefield.md) as a plug-in of the run driver:
+// a whole number of steps of dt; series rows and frames at the first step at or past k·interval.
+class PhasefieldMethod final : public Method {
+ public:
+  explicit PhasefieldMethod(const PhasefieldCase& c)
+      : c_(c), solver_(c_.grid, c_.model, c_.scheme, c_.dt), tol_(1e-9 * c_.dt) {}
+
+  std::string name() const override { return "phasefield"; }
+  std::string size_text() const override {
+    const auto& n = c_.grid.n;
+    return fmt::format("{} nodes ({}D: {} x {} x {}), {} scheme, a {}, D {}", c_.grid.size(), c_.grid.dim, n[0], n[1],
+                       n[2], scheme_name(c_.scheme), c_.model.a, c_.model.D);
+  }
+  std::string check_text() const override {
+    return fmt::format("phasefield case ({} nodes, {} domains, {} steps, dt {:.3g})", c_.grid.size(),
+                       c_.domains.size(), c_.steps, c_.dt);
+  }
+
+  void start(RunContext& run) override {
+    solver_.field() = initial_field(c_.grid, c_.model, c_.domains);
+    open(run, false);
+    write_due();
+  }
+  void resume(RunContext& run) override {
+    counters_ = read_checkpoint(run.checkpoint, solver_);
+    open(run, true);
+  }
+  bool finished() const override { return solver_.steps() >= c_.steps; }
+  void advance() override { solver_.step(); }
+  void check_health() override {
+    for (const double v : solver_.field())
+      if (!std::isfinite(v) || v < -1.0 || v > 2.0)
+        throw RunError(fmt::format("xi = {} at step {} (t = {}): the step is unstable", v, solver_.steps(),
+                                   solver_.time()));
+  }
+  void write_outputs() override { write_due(); }
+  std::int64_t step() const override { return solver_.steps(); }
+  std::string position() const override { return fmt::format(" (t = {})", solver_.time()); }
+  double fraction_done() const override { return solver_.time() / c_.end_time; }
+  std::int64_t steps_left() const override { return c_.steps - solver_.steps(); }
+  std::int64_t checkpoint_every() const override { return c_.output.checkpoint_every; }
+  void write_checkpoint(const fs::path& file) override { phasefield::write_checkpoint(file, solver_, counters_); }
+  void write_final_outputs() override {
+    if (c_.output.field_interval == 0.0) write_frame(counters_.frames++);
+  }
+  void log_results(double steps_per_second) override {
+    const FieldMeasures m = solver_.measures();
+    run_->log.info("finished: t = {} after {} steps ({:.3g} node-steps/s); hcp volume {} (fraction xi > 1/2: {}), "
+                   "equivalent radius {}, free energy {}",
+                   solver_.time(), solver_.steps(), steps_per_second * work_items(), m.integral,
+                   m.fraction_above_half, equivalent_radius(m.integral, c_.grid.dim), m.free_energy);
+  }
+
+  std::vector<std::string> thermo_columns() const override {
+    return {"Step", "Time", "FreeEng", "HcpVol", "HcpFrac", "Radius"};
+  }
+  std::vector<double> thermo_values() const override {
+    const FieldMeasures m = solver_.measures();
+    return {static_cast<double>(solver_.steps()), solver_.time(), m.free_energy, m.integral, m.fraction_above_half,
+            equivalent_radius(m.integral, c_.grid.dim)};
+  }
+  std::int64_t thermo_every() const override { return thermo_interval(c_.output.thermo_every, c_.steps); }
+  double work_items() const override { return static_cast<double>(c_.grid.size()); }
+  std::string work_item_name() const override { return "node"; }
+
+ private:
+  void open(RunContext& run, bool resumed) {
+    run_ = &run;
+    const double keep_step = static_cast<double>(solver_.steps()), keep_time = solver_.time();
+    series_ = io::CsvWriter(run.folder / "series.csv",
+                            {"step", "time", "volume_fraction", "free_energy", "hcp_volume", "equivalent_radius"},
+                            resumed ? &keep_step : nullptr);
+    fs::create_directories(run.folder / "fields");
+    pvd_ = io::PvdSeries(run.folder / "fields.pvd", resumed ? &keep_time : nullptr);
+    if (!finished())
+      run.log.info("running to t = {} in {} steps of dt = {} ({} scheme; explicit limit {:.4g}; c0 = {:.6g})",
+                   c_.end_time, c_.steps, c_.dt, scheme_name(c_.scheme), c_.grid.explicit_limit(c_.model.D),
+                   c_.model.front_speed());
+  }
+  void write_due() {
+    const double t = solver_.time() + tol_;
+    write_due_frames(counters_.series, c_.output.series_interval, t, [&](auto) { write_row(); });
+    write_due_frames(counters_.frames, c_.output.field_interval, t, [&](auto k) { write_frame(k); });
+  }
+  void write_row() {
+    const FieldMeasures m = solver_.measures();
+    series_.row({static_cast<double>(solver_.steps()), solver_.time(), m.fraction_above_half, m.free_energy,
+                 m.integral, equivalent_radius(m.integral, c_.grid.dim)});
+  }
+  void write_frame(std::int64_t k) {
+    io::VtkImage image;
+    for (int d = 0; d < 3; ++d) {
+      image.points[d] = static_cast<std::size_t>(c_.grid.n[d]);
+      image.spacing[d] = c_.grid.dx;
+    }
+    image.point_data.push_back({"xi", 1, solver_.field()});
+    const std::string file = fmt::format("fields/xi_{}.vti", k);
+    io::write_vti(run_->folder / file, image, io::VtkEncoding::Base64);
+    pvd_.add(solver_.time(), file);
+  }
+
+  PhasefieldCase c_;
+  Solver solver_;
+  double tol_;
+  OutputCounters counters_;
+  io::CsvWriter series_;
+  io::PvdSeries pvd_;
+  RunContext* run_ = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<Method> make_method(const Config& root, const RunOptions&) {
+  const PhasefieldCase c = read_phasefield_case(root);
+  root.check_unknown_keys();
+  derive(root, c);
+  return std::make_unique<PhasefieldMethod>(c);
+}
+
+}  // namespace shockfield::phasefield
