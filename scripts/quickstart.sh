@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds shockfield and runs the main example: porous aluminium hitting a rigid wall at 1000 m/s
-# (material point method, seed 000 §4.1.1, Fig 19). Leaves the run folder runs/mpm_porous_al/
+# (material point method, Xu et al. (2015) §4.1.1, Fig 19). Leaves the run folder runs/mpm_porous_al/
 # (log, resolved configuration, window time series, VTK fields and particles for ParaView,
 # checkpoint) and the picture runs/mpm_porous_al/porous.png.
 set -euo pipefail

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Plots the profiles written by tests/validation/pd_bar_waves.cpp (PdBarSlow.*):
-  pd_elastic_30.png   30 m/s elastic wave, plain correspondence vs Riemann-corrected (seed 004 Fig. 3)
-  pd_front_width.png  300 m/s two-wave profiles for ΔX and δ (seed 004 Fig. 4)
+  pd_elastic_30.png   30 m/s elastic wave, plain correspondence vs Riemann-corrected (Liu et al. 2025, Fig. 3)
+  pd_front_width.png  300 m/s two-wave profiles for ΔX and δ (Liu et al. 2025, Fig. 4)
 Usage: SHOCKFIELD_PD_OUT=/tmp/shockfield_pd test_validation --gtest_filter='PdBarSlow*'
        python3 docs/theory/pd_plot.py /tmp/shockfield_pd docs/theory"""
 import csv

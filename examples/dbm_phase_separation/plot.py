@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Pictures, curves and the table of examples/dbm_phase_separation (seed 000 §4.3, Figs. 63-64).
+"""Pictures, curves and the table of examples/dbm_phase_separation (Xu et al. 2015, §4.3, Figs. 63-64).
 
 usage: plot.py RUNS K1 K2 ...   (RUNS/K<K>/ are the run folders of run.sh)
 Writes patterns.png (density at three times per K), curves.png (L, D, R against t),

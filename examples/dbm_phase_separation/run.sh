@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Thermal phase separation for several surface-tension coefficients K (seed 000 §4.3, Figs. 63-64):
+# Thermal phase separation for several surface-tension coefficients K (Xu et al. 2015, §4.3, Figs. 63-64):
 # one run of case.toml per K, then plot.py (pictures, curves, table). 64 x 64 cells, t = 2.5 each;
 # about 30-40 s of CPU per run on this machine (runs go two at a time).
 set -euo pipefail

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Collapsibility study (seed 000 §4.2.1, Fig 53): the weak-shock single-cavity case (case.toml)
+# Collapsibility study (Xu et al. 2015, §4.2.1, Fig 53): the weak-shock single-cavity case (case.toml)
 # for six cavity radii 3.5–8 µm at σ_Y0 = 120 MPa and four initial yield stresses at r = 6.2 µm,
 # then collapsibility.png and collapsibility.csv (Φ at 10 ns, at the end (20 ns) and averaged
 # over 18–20 ns).

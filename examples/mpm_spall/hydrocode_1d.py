@@ -4,7 +4,7 @@
 The flyer-plate set-up of tests/unit/mpm/test_spall.cpp (flyer d = 4 mm at v = 200 m/s onto a
 3d target, the seed's aluminium made hydrodynamic) solved with the classical staggered von
 Neumann-Richtmyer scheme (Wilkins, "Computer Simulation of Dynamic Phenomena", 1999, ch. 2): node
-velocities, cell densities and energies, the same Mie-Grüneisen EOS (seed 000 eqs. 5-6, tension
+velocities, cell densities and energies, the same Mie-Grüneisen EOS (Xu et al. 2015, eqs. 5-6, tension
 branch included), the same bulk artificial viscosity q = ρℓ(C_Q·ℓ·(∂u/∂x)² − C_L·c·∂u/∂x) in
 compression only (c the bulk speed, or the longitudinal one with --shear as in the MPM's
 PointState::sound_speed), the same trapezoidal energy update, and the same instantaneous spall criterion

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Tensile loading of a single cavity (seed 000 §4.2.2): case.toml at 100 m/s and a copy at
+# Tensile loading of a single cavity (Xu et al. 2015, §4.2.2): case.toml at 100 m/s and a copy at
 # 400 m/s, then cavity.png (existing helper: temperature snapshot and Φ against time) and
 # pressure.png (this folder: particle pressure at chosen times, where the tension is highest).
 #   examples/mpm_tensile_cavity/run.sh [RUNS_DIR]     (from the repository root)

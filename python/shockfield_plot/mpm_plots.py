@@ -27,7 +27,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-SEED_250NS = {"density": 3140.0, "pressure": 16.7e9, "temperature": 432.0}  # seed 000 §4.1.1, Fig 19
+SEED_250NS = {"density": 3140.0, "pressure": 16.7e9, "temperature": 432.0}  # Xu et al. (2015) §4.1.1, Fig 19
 
 
 def read_series(run):

@@ -3,8 +3,7 @@
 
   mpm_study.py collapsibility RUN_DIR [RUN_DIR ...] [--late T] [--at T] [--out FILE] [--csv FILE]
       Cavity collapsibility Φ = (A0 − A)/A0 (series.csv column `collapsibility`) of single-cavity
-      runs against the initial cavity radius and against the initial yield stress (seed 000
-      Fig 53 (b), (d)). The radius and yield stress of each run are read from its
+      runs against the initial cavity radius and against the initial yield stress (Xu et al. 2015, Fig 53 (b), (d)). The radius and yield stress of each run are read from its
       config.resolved.toml. The radius panel takes the runs at the most common yield stress, the
       yield panel the runs at the most common radius. Φ is shown at the last row and averaged
       over t ≥ T (default: the last quarter of the run), and with --at also at an earlier time
@@ -100,7 +99,7 @@ def collapsibility(runs, late, at, out, csv_out):
     ax[2].set_title("Φ against time")
     ax[2].grid(alpha=0.3)
     ax[2].legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    fig.suptitle("Single-cavity collapsibility (seed 000 Fig 53 (b), (d))")
+    fig.suptitle("Single-cavity collapsibility (Xu et al. 2015, Fig 53 (b), (d))")
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     print(f"wrote {out}")

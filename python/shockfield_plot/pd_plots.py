@@ -3,7 +3,7 @@
 
   pd_plots.py bar RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
       axial compression -sigma_xx and plastic measure against x at every profile time, one
-      column per run (seed 004 Fig. 3), with the run's derived HEL and impact stress as dashed
+      column per run (Liu et al. 2025, Fig. 3), with the run's derived HEL and impact stress as dashed
       lines.
 
   pd_plots.py crystal RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
@@ -13,7 +13,7 @@
       and 2% of its plateau, scanning from the resting end) and mean slip behind the plastic wave.
 
   pd_plots.py compression RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
-      a [homogeneous] run (seed 004 Fig. 5): every grain's axial compression against the
+      a [homogeneous] run (Liu et al. 2025, Fig. 5): every grain's axial compression against the
       compressive strain, the band mean ± SD, and the Taylor average (eq. 43); below, the
       soft-hard spread (max − min over the grains) and the SD against strain; prints the
       strains where the spread and the SD peak and where the spread first reaches 100 MPa.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The collapsibility study of examples/mpm_cavity_collapsibility (seed 000 §4.2.1, Fig 53) at
+# The collapsibility study of examples/mpm_cavity_collapsibility (Xu et al. 2015, §4.2.1, Fig 53) at
 # twice its cell size (1 µm cells, 0.5 µm spacing, under 1 s of CPU a run): Φ = (A0 − A)/A0 at
 # the end (20 ns) must fall with the cavity radius (4.4 → 8 µm at σ_Y0 = 120 MPa) and with the
 # initial yield stress (40 → 360 MPa at r = 6.2 µm), by margins the full-resolution study

@@ -1,4 +1,4 @@
-// Seed 004 Figs. 3-4 on the 1D impact bar (slow studies, label "slow"): the 30 m/s profiles with
+// Liu et al. (2025) Figs. 3-4 on the 1D impact bar (slow studies, label "slow"): the 30 m/s profiles with
 // and without the Riemann correction, and the 300 m/s wave-front width against ΔX and δ.
 // Profiles go to $SHOCKFIELD_PD_OUT (default /tmp/shockfield_pd) for docs/theory/pd_plot.py.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #pragma once
-// Local configurations of a thresholded grid field (seed 000 §3.1: "it can be calculated in a local
+// Local configurations of a thresholded grid field (Xu et al. 2015, §3.1: "it can be calculated in a local
 // way via the additivity relation"). Every Minkowski functional of {Θ ≥ Θ_th} on the lattice is a
 // sum over all 2×2 (2D) or 2×2×2 (3D) blocks of cells of a weight that depends only on which cells
 // of the block are white (its configuration, one of 16 or 256). Bit b of a configuration is block

@@ -1,5 +1,5 @@
 #pragma once
-// Common statistics of a field's non-void cells (seed 000 §3.1, scheme (i): "the mean value and
+// Common statistics of a field's non-void cells (Xu et al. 2015, §3.1, scheme (i): "the mean value and
 // fluctuations"): mean, standard deviation, skewness, kurtosis, histogram.
 #include <cstddef>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// A scalar field Θ(x) on a regular grid (seed 000 §3.1: "fields and structures based on ordered
+// A scalar field Θ(x) on a regular grid (Xu et al. 2015, §3.1: "fields and structures based on ordered
 // points"). Values are stored x fastest: index = x + nx * (y + ny * z); a 2D field has nz = 1
 // (a 3D grid of a single voxel layer sets single_layer_3d).
 // Cells may be marked void (no material, e.g. an empty bin of a particle field): a void cell has

@@ -1,5 +1,5 @@
 #pragma once
-// Minkowski functionals of the white set {Θ ≥ Θ_th} of a grid field (seed 000 §3.1, eqs. 32–33;
+// Minkowski functionals of the white set {Θ ≥ Θ_th} of a grid field (Xu et al. 2015, §3.1, eqs. 32–33;
 // used in §4.1.2, Figs. 32–45), for every threshold from one pass over the field.
 //
 // Estimators (docs/analysis-minkowski.md):

@@ -1,5 +1,5 @@
 #pragma once
-// Structural and dynamic similarity of patterns (seed 000 §3.1, Figs. 3–4; applied in §4.1.2,
+// Structural and dynamic similarity of patterns (Xu et al. 2015, §3.1, Figs. 3–4; applied in §4.1.2,
 // Figs. 42–45). A pattern is a point in the (D + 1)-dimensional space of its Minkowski
 // functionals; two patterns are the closer the more alike they are.
 //   d   = √(Σ_i (F_i,2 − F_i,1)²)                (§3.1, 2D: F = (A, L, χ))

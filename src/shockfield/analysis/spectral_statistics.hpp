@@ -1,5 +1,5 @@
 #pragma once
-// Rheological statistics of a field (seed 000 §3.1, scheme (ii)): spatial correlation function,
+// Rheological statistics of a field (Xu et al. 2015, §3.1, scheme (ii)): spatial correlation function,
 // structure factor S(k) and the characteristic domain size R from its first moment. The field is
 // taken as periodic; void cells count as the mean (δΘ = 0).
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// Rotation (curl) and divergence of a vector field given as component grids (seed 000 §3.1:
+// Rotation (curl) and divergence of a vector field given as component grids (Xu et al. 2015, §3.1:
 // fields may be velocity components), by second-order central differences; at the faces of an
 // open grid, first-order one-sided differences. A result cell is void when a cell it uses is void.
 #include <array>

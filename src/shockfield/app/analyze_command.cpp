@@ -1,5 +1,5 @@
 // `shockfield analyze minkowski|similarity|stats`: morphology and statistics of grid fields
-// (seed 000 §3.1, §4.1.2). Reads CSV grids and VTK image data (analysis/field_reader.hpp), writes
+// (Xu et al. 2015, §3.1, §4.1.2). Reads CSV grids and VTK image data (analysis/field_reader.hpp), writes
 // CSV and, for minkowski and similarity, a PNG through python/shockfield_plot (/usr/bin/python3 +
 // matplotlib; skipped with a warning when that fails). Docs: docs/analysis-minkowski.md.
 #include <fmt/format.h>

@@ -44,7 +44,7 @@ void run_geometry(const GeometryArgs& a) {
   }
   std::vector<std::pair<std::string, sg::PointClusters>> clusterings;
   if (a.cluster_distance > 0.0) {
-    if (a.rule == "seed" || a.rule == "both")
+    if (a.rule == "xu2015" || a.rule == "both")
       clusterings.emplace_back("seed_rule", sg::seed_rule_clusters<N>(division, a.cluster_distance));
     if (a.rule == "single-linkage" || a.rule == "both")
       clusterings.emplace_back("single_linkage",
@@ -123,10 +123,10 @@ void add_analyze_geometry_command(CLI::App& analyze) {
                   "no clusters without it")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--cluster-rule", a->rule,
-                  "seed (Xu et al.: remove simplices whose shortest edge is longer than d, "
+                  "xu2015 (the rule of Xu et al. 2015: remove simplices whose shortest edge is longer than d, "
                   "face-connected sets), single-linkage (Delaunay edges shorter than d), or both")
       ->capture_default_str()
-      ->check(CLI::IsMember({"seed", "single-linkage", "both"}));
+      ->check(CLI::IsMember({"xu2015", "single-linkage", "both"}));
   cmd->add_option("-r,--ball-radius", a->ball_radius,
                   "Radius of the rolling ball (3D): writes surface.vtp, the closed, outward "
                   "oriented surface the ball touches rolled from outside, with its area, "

@@ -51,7 +51,7 @@ void add_plot_command(CLI::App& app) {
       "  hugoniot  Us against Up of a `shockfield hugoniot` sweep folder with the fitted line and\n"
       "            the experimental one -> RUN/hugoniot.png\n"
       "  porous    MPM: bottom-window mean density, pressure, temperature, u_y against time beside\n"
-      "            the seed's values, and particle temperatures at the last frame -> RUN/porous.png\n"
+      "            Xu et al.'s (2015) values, and particle temperatures at the last frame -> RUN/porous.png\n"
       "  cavity    MPM: particles around the cavity by temperature, cavity area and collapsibility\n"
       "            against time -> RUN/cavity.png");
   cmd->add_option("kind", o->kind, "What to plot")

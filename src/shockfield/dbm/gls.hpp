@@ -1,5 +1,5 @@
 #pragma once
-// The GLS liquid–vapour discrete Boltzmann model (Gonnella, Lamura, Sofonea; seed 000 §2.3.2) as
+// The GLS liquid–vapour discrete Boltzmann model (Gonnella, Lamura, Sofonea; Xu et al. (2015) §2.3.2) as
 // the force term of the BGK equation (eq. 13):
 //   I_k = −[A + B·(v_k − u) + (C + C_q)(v_k − u)²] f_k^eq                        (eq. 14)
 //   A = −2(C + C_q)T                                                              (eq. 15)

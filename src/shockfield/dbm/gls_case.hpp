@@ -1,5 +1,5 @@
 #pragma once
-// The GLS liquid–vapour part of a dbm case file (seed 000 eqs. 13–19, §4.3): [model] kind = "gls"
+// The GLS liquid–vapour part of a dbm case file (Xu et al. 2015, eqs. 13–19, §4.3): [model] kind = "gls"
 // with its equation of state, K, ζ, q, and [initial] type = "quench" (a homogeneous state at rest
 // with seeded density noise). Kept apart from the compressible reader so each model's keys live
 // in one place (docs/dbm.md, "Liquid–vapour (GLS) runs").

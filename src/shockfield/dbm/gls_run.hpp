@@ -1,6 +1,6 @@
 #pragma once
 // The GLS liquid–vapour part of a `method = "dbm"` run (docs/dbm.md): the force installed on the
-// simulation, the quench start, the phase-separation series (seed 000 §4.3: D, D^F, D^G of eqs.
+// simulation, the quench start, the phase-separation series (Xu et al. 2015, §4.3: D, D^F, D^G of eqs.
 // 29–31 and 35, L(t), R(t), density range, largest |u|, mass, e_T), the D fields of the frames,
 // and summary.csv with t_SD and D_max (peak of D(t)) and the peak of L(t), read back from
 // series.csv so a resumed run summarises the whole history.

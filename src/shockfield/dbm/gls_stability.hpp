@@ -1,5 +1,5 @@
 #pragma once
-// Largest stable time step of the FFT-GLS model (seed 000 eqs. 13–18) under third-order
+// Largest stable time step of the FFT-GLS model (Xu et al. 2015, eqs. 13–18) under third-order
 // Runge–Kutta, from the linear modes at the largest resolved wavenumber k_N = π/Δx:
 //   free streaming (spectral v·∇f):       λ = i v_max k_N
 //   capillary (Korteweg) waves:           λ = i k_e sqrt(c² + Kρ_l k_e²),  c² = 2T (γ = 2)

@@ -1,5 +1,5 @@
 #pragma once
-// Thermal phase separation of the GLS model (seed 000 §4.3): a homogeneous state quenched into the
+// Thermal phase separation of the GLS model (Xu et al. 2015, §4.3): a homogeneous state quenched into the
 // two-phase region with density noise, and the diagnostics over time — the TNE strength D(t)
 // (eq. 35, domain mean of the net central measures, with its force and gradient parts, eqs.
 // 29–31), the boundary length L(t) of the density field at a threshold (Minkowski functional,

@@ -34,7 +34,6 @@ void derive(const Config& root, const DbmCase& c, const Simulation& sim) {
   root.derive("steps", c.steps);
   root.derive("courant", c.model.max_speed() * c.bgk.dt / c.lattice.dx);
   root.derive("dt_over_tau", c.bgk.dt / c.bgk.tau);
-  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
   if (c.exact_star) {
     root.derive("exact_p_star", c.exact_star->p);
     root.derive("exact_u_star", c.exact_star->u);

@@ -1,5 +1,5 @@
 #pragma once
-// The compressible BGK discrete Boltzmann model (seed 000 §2.3.4):
+// The compressible BGK discrete Boltzmann model (Xu et al. 2015, §2.3.4):
 //   ∂f_k/∂t + v_k·∇f_k = −(f_k − f_k^eq)/τ (+ an optional source, e.g. the GLS force term),
 // f^eq = C⁻¹·M^eq (eqs. 20–26), convection by NND (or by FFT on a fully periodic lattice, as the
 // FFT-GLS model of seed refs 34–35 does so that the ideal-gas pressure carried by v·∇f and the

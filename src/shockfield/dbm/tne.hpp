@@ -1,5 +1,5 @@
 #pragma once
-// Thermodynamic non-equilibrium (TNE) measures of the DBM (seed 000 §2.3.4, §4.3):
+// Thermodynamic non-equilibrium (TNE) measures of the DBM (Xu et al. 2015, §2.3.4, §4.3):
 //   Δ_n  = M_n(f) − M_n^eq(f^eq)        (eq. 27), moments with v,
 //   Δ*_n = M*_n(f) − M*_n^eq(f^eq)       central moments with v − u (TNE only),
 // for n = 2, 3, (3,1), (4,2), as fields and domain averages, and the TNE strength

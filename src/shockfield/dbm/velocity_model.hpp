@@ -1,5 +1,5 @@
 #pragma once
-// Discrete velocity models of the compressible DBM (seed 000 §2.3.4). A model is a set of Q
+// Discrete velocity models of the compressible DBM (Xu et al. 2015, §2.3.4). A model is a set of Q
 // velocities v_ki with an extra internal-energy variable η_ki per velocity (for an adjustable
 // specific-heat ratio γ = (b+2)/b, b = 2 + I extra degrees of freedom). f^eq is obtained from the
 // seven kinetic moment relations (eqs. 20–26) as f^eq = C⁻¹·M^eq; the model is usable only when

@@ -2,7 +2,7 @@
 // Tensile (spall) failure of a material point: the instantaneous spall-strength criterion with a
 // damage variable (the "hydrodynamic tensile limit" of hydrocodes; Antoun, Seaman, Curran,
 // Kanel, Razorenov & Utkin, "Spall Fracture", Springer 2003, §1.3 and §2.2; Wilkins,
-// "Computer Simulation of Dynamic Phenomena", Springer 1999, ch. 8). Seed 000 §4.2.2: the
+// "Computer Simulation of Dynamic Phenomena", Springer 1999, ch. 8). Xu et al. (2015) §4.2.2: the
 // rarefactions that meet inside a shocked body open new cavities.
 //
 //   D: 0 → 1  once the mean stress tr σ/3 = −(P + q) falls below −σ_spall

@@ -1,5 +1,5 @@
 #pragma once
-// Temperature of a material point (seed 000, §2.2.1): heating by shock compression along the
+// Temperature of a material point (Xu et al. 2015, §2.2.1): heating by shock compression along the
 // Hugoniot (eq. 7) and by plastic work (eq. 8), in increments as the seed suggests.
 //
 //   dT_H/dV = c0²λ(V0 − V)² / (c_v[(λ−1)V0 − λV]³) − (γ/V)·T          (eq. 7)

@@ -1,7 +1,6 @@
 #include "shockfield/md/run_case.hpp"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <chrono>
 #include <optional>
@@ -91,7 +90,6 @@ Prepared prepare(const Config& root, const RunOptions& options) {
   long long total = 0;
   for (const auto& s : p.md.stages) total += s.steps;
   root.derive("total_steps", total);
-  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
   return p;
 }
 

@@ -25,7 +25,7 @@ Vec3 read_vec(const Config& t, std::string_view key, int dim, Range range = {}) 
   return out;
 }
 
-// A library material with per-key overrides (seed 000 §4.1 parameters by default).
+// A library material with per-key overrides (Xu et al. 2015, §4.1 parameters by default).
 materials::SolidMaterial read_material(const Config& t) {
   materials::SolidMaterial m;
   const std::string base = t.get_choice("library", materials::material_names());

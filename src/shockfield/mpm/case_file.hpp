@@ -16,7 +16,7 @@
 
 namespace shockfield::mpm {
 
-/// How the bodies are set in motion (seed 000 §4.1 and §4.2).
+/// How the bodies are set in motion (Xu et al. 2015, §4.1 and §4.2).
 enum class LoadingKind {
   Wall,       ///< bodies move at −speed onto a rigid wall at the low face of the shock axis
   Symmetric,  ///< the bodies at +speed hit their mirror image above at −speed

@@ -1,5 +1,5 @@
 #pragma once
-// Size of one cavity over time (seed 000 §4.2, Figs 53, 59, 62): area (2D) or volume (3D),
+// Size of one cavity over time (Xu et al. 2015, §4.2, Figs 53, 59, 62): area (2D) or volume (3D),
 // horizontal and vertical sizes, collapsibility Φ = (A0 − A)/A0, and the largest upward velocity
 // of the material above it and downward velocity below it.
 //

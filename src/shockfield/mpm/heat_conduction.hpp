@@ -1,5 +1,5 @@
 #pragma once
-// Explicit heat conduction of the material point method (seed 000, §2.2.1: "optional heat
+// Explicit heat conduction of the material point method (Xu et al. 2015, §2.2.1: "optional heat
 // conduction with the given k"), the standard MPM heat transfer (Tao et al.; Zhang, Chen & Liu,
 // "The Material Point Method"), on the stencils of the step's Transfer:
 //   C_i  = Σ_p m_p c_v,p N_ip                       nodal heat capacity (lumped)

@@ -1,5 +1,5 @@
 #pragma once
-// Material points (seed 000, §2.2.2): each carries mass m_p, position x_p, velocity v_p and the
+// Material points (Xu et al. 2015, §2.2.2): each carries mass m_p, position x_p, velocity v_p and the
 // constitutive state. Kinematic fields are structure-of-arrays; the constitutive state is one
 // materials::PointState per point because the material update reads and writes all of it at
 // once. In 2D (plane strain) z components are zero and the volume is per metre of thickness.

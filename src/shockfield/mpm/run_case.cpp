@@ -1,7 +1,6 @@
 #include "shockfield/mpm/run_case.hpp"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <cmath>
 #include <optional>
@@ -43,7 +42,6 @@ void derive(const Config& root, const MpmCase& c, const BuiltSample& sample, con
     root.derive("hugoniot_pressure_Pa", eos.rho0 * us * up);
     root.derive("hugoniot_density_kg_m3", eos.rho0 * us / (us - up));
   }
-  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
 }
 
 // The sample, built once the whole case file was read (every key known).

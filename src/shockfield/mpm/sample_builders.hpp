@@ -1,5 +1,5 @@
 #pragma once
-// Samples for the seed's MPM studies (seed 000, §4.1-4.2): solid blocks, porous bodies with
+// Samples for the seed's MPM studies (Xu et al. 2015, §4.1-4.2): solid blocks, porous bodies with
 // random non-overlapping circular (2D) or spherical (3D) voids at a target porosity
 // Δ = 1 − ρ/ρ0, a single cavity at a given depth, and the two loadings: symmetric impact of two
 // bodies at ±v and impact on a rigid wall. The shock axis is the last one (y in 2D, z in 3D, as in

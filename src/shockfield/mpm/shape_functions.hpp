@@ -1,6 +1,6 @@
 #pragma once
 // Grid shape functions of the material point method, one axis at a time. The 2D bilinear and 3D
-// trilinear functions of seed 000 eq. 9, N_i = (1/8)(1 + ξξ_i)(1 + ηη_i)(1 + ζζ_i), are tensor
+// trilinear functions of Xu et al. (2015) eq. 9, N_i = (1/8)(1 + ξξ_i)(1 + ηη_i)(1 + ζζ_i), are tensor
 // products of the 1D hat N(r) = 1 − |r|/h; the GIMP option (uniform GIMP, Bardenhagen & Kober,
 // CMES 5 (2004) 477, eq. 39) convolves the hat with the particle's box of half-width l_p < h/2,
 // which removes most of the cell-crossing noise of the linear functions.

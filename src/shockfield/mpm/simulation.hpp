@@ -1,5 +1,5 @@
 #pragma once
-// The material point method simulation (seed 000, §2.2.2): owns its grid, particles and
+// The material point method simulation (Xu et al. 2015, §2.2.2): owns its grid, particles and
 // materials, and its explicit time loop. One step (MUSL, Sulsky, Zhou & Schreyer, Comput. Phys.
 // Commun. 87 (1995) 236; USL as an option):
 //   1. Δt = C·Δx_min / max_p(c_p + |v_p|)                        (stable step, seed §2.2.2)

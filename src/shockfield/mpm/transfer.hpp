@@ -1,5 +1,5 @@
 #pragma once
-// Particle ↔ grid transfers of the material point method (seed 000, §2.2.2):
+// Particle ↔ grid transfers of the material point method (Xu et al. 2015, §2.2.2):
 //   m_i = Σ_p m_p N_i(x_p),   m_i v_i = Σ_p m_p v_p N_i(x_p),
 //   f_i^int = −Σ_p V_p σ_p·∇N_i(x_p)   (V_p = m_p/ρ_p)                       (eq. 12)
 //   v̄_p = Σ_i N_i(x_p) v_i,   L_p = Σ_i v_i ⊗ ∇N_i(x_p)                      (grid → particles)

@@ -1,8 +1,8 @@
 #pragma once
 // The peridynamics case file (method = "pd"), read and validated completely before anything runs.
 // Keys are documented in docs/pd.md; every value goes through Config so that an error names the
-// file, the key and its line. SI units. The body is a regular lattice (seed 004 §1) loaded by the
-// impact of its left half on its right half (seed 004 Fig. 2).
+// file, the key and its line. SI units. The body is a regular lattice (Liu et al. 2025, §1) loaded by the
+// impact of its left half on its right half (Liu et al. 2025, Fig. 2).
 #include <array>
 #include <optional>
 #include <string>
@@ -51,7 +51,7 @@ using LpsSpec = BondSpec<LpsModel>;
 
 struct PdCase {
   BodySpec body;
-  /// model = "j2" (seed 004 §3.1), "crystal", "pmb" or "lps"
+  /// model = "j2" (Liu et al. 2025, §3.1), "crystal", "pmb" or "lps"
   std::variant<SmallStrainJ2, CrystalSpec, PmbSpec, LpsSpec> material;
   SolverSpec solver;
   double impact_speed = 0.0;  ///< left half at +v, right half at rest [m/s]

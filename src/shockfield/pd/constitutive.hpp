@@ -1,7 +1,7 @@
 #pragma once
 // Constitutive models the correspondence force (correspondence.hpp) evaluates at every point:
 // each is a small type with its State and one update from the old and new non-local deformation
-// gradient F (seed 004 eq. 8) to the Cauchy stress σ. A model also tells the force how to turn σ
+// gradient F (Liu et al. 2025, eq. 8) to the Cauchy stress σ. A model also tells the force how to turn σ
 // into the first Piola-Kirchhoff stress (eq. 10, P = det(F)·σ·F⁻ᵀ, or P = σ for small strain)
 // and its wave speeds for the Riemann correction and the stable step.
 #include <concepts>

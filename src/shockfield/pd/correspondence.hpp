@@ -1,5 +1,5 @@
 #pragma once
-// Non-ordinary state-based (correspondence) peridynamics, seed 004 eqs. 1-8, with the Riemann
+// Non-ordinary state-based (correspondence) peridynamics, Liu et al. (2025) eqs. 1-8, with the Riemann
 // correction of eqs. 9-17 and a zero-energy-mode penalty.
 //
 //   K_i = Σ_j ω β V_j ξ⊗ξ                                  (eq. 7)

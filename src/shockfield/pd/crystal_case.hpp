@@ -1,8 +1,8 @@
 #pragma once
 // [material] model = "crystal" of a PD case file (docs/pd.md): the crystal viscoplastic law of
-// seed 004 eqs. 18-41 with Table 1 (OFHC copper) defaults, and the orientation of the body: a
+// Liu et al. (2025) eqs. 18-41 with Table 1 (OFHC copper) defaults, and the orientation of the body: a
 // single crystal loaded along a crystal direction or given Bunge Euler angles, a polycrystal
-// whose grains are slabs of 8-12 lattice planes across x with random orientations (seed 004 §4.2),
+// whose grains are slabs of 8-12 lattice planes across x with random orientations (Liu et al. 2025, §4.2),
 // or N_g grains per point under the Taylor assumption (eqs. 42-43), copies of one orientation or
 // random ones shared by every point.
 #include <array>

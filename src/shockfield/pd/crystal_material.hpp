@@ -1,5 +1,5 @@
 #pragma once
-// The crystal viscoplastic law (materials/strength/crystal_viscoplasticity.hpp, seed 004 eqs.
+// The crystal viscoplastic law (materials/strength/crystal_viscoplasticity.hpp, Liu et al. (2025) eqs.
 // 18-41, Algorithm 1) as a correspondence material (constitutive.hpp): each point holds N_g grains
 // of orientations g (crystal → sample) that share its deformation gradient, and its stress is
 // their Taylor average (eqs. 42-43; N_g = 1 is a single crystal, or one grain of a polycrystal).

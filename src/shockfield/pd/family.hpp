@@ -1,5 +1,5 @@
 #pragma once
-// Families (seed 004 eq. 5): every point x' with |x' − x| ≤ δ, found with the shared cell list and
+// Families (Liu et al. 2025, eq. 5): every point x' with |x' − x| ≤ δ, found with the shared cell list and
 // stored in CSR form (offsets / neighbours), each bond listed from both ends as LAMMPS's
 // fix PERI_NEIGH does. Per bond: reference length r0 = |ξ| and the partial-volume factor β that
 // weights the neighbour's volume V_j at the horizon edge.

@@ -1,6 +1,6 @@
 #pragma once
 // The interface between the time integrator (simulation.hpp) and a peridynamic force law: the
-// force density L of seed 004 eq. 1 at every point from the current positions y and velocities v.
+// force density L of Liu et al. (2025) eq. 1 at every point from the current positions y and velocities v.
 // Implementations (bond_force.hpp: PMB, LPS; correspondence.hpp) are templates over small model
 // types; this virtual call happens once per step, never per bond.
 #include <string>

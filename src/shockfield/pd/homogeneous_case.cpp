@@ -83,7 +83,6 @@ class HomogeneousMethod final : public Method {
     root.derive("grains", grains_);
     root.derive("steps", steps_);
     root.derive("time_step_s", h_.path.end_strain / h_.path.strain_rate / static_cast<double>(steps_));
-    root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
   }
 
   std::string name() const override { return "pd"; }

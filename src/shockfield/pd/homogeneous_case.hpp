@@ -1,7 +1,7 @@
 #pragma once
 // `method = "pd"` with a [homogeneous] table: one material point of the crystal law whose N_g
 // grains (the [material] orientation keys with taylor_grains) all follow the isochoric
-// compression of seed 004 eq. 44 (Taylor assumption), the simple-compression test of seed 004
+// compression of Liu et al. (2025) eq. 44 (Taylor assumption), the simple-compression test of Liu et al. (2025)
 // §4.1 / Fig. 5 (annealed OFHC copper, Table 1, 50 random orientations). No lattice, no waves: the
 // same [material] as a shock run, driven homogeneously. Keys and outputs: docs/pd.md.
 #include <memory>

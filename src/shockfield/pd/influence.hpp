@@ -1,5 +1,5 @@
 #pragma once
-// Influence function ω⟨ξ⟩ of the bond weights (seed 004 eqs. 6-8), chosen by name:
+// Influence function ω⟨ξ⟩ of the bond weights (Liu et al. 2025, eqs. 6-8), chosen by name:
 //   constant  ω = 1
 //   inverse   ω = 1/|ξ|          (LAMMPS peri/lps; units 1/m, which cancel in K⁻¹ and in m)
 //   conical   ω = 1 − |ξ|/δ

@@ -1,5 +1,5 @@
 #pragma once
-// A peridynamic body as a point cloud (seed 004 §1): reference positions x and the volume V of
+// A peridynamic body as a point cloud (Liu et al. 2025, §1): reference positions x and the volume V of
 // each point, in 1, 2 or 3 dimensions. In fewer than three dimensions the unused coordinates are
 // zero and "volume" is a length (1D: per unit cross-section area) or an area (2D: per unit
 // thickness), so stresses keep their units of Pa.

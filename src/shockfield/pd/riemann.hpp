@@ -1,6 +1,6 @@
 #pragma once
 // Interface pressure of a Riemann problem between two points by Dukowicz's non-iterative
-// two-shock approximation (J. Comput. Phys. 61 (1985) 119-137), as seed 004 eq. 15 uses it.
+// two-shock approximation (J. Comput. Phys. 61 (1985) 119-137), as Liu et al. (2025) eq. 15 uses it.
 //
 // Each side is joined to the interface state (p*, u*) by a shock with impedance
 // W = ρ(a + s|u* − u|) (the linear Us-Up Hugoniot, used for rarefactions as well):

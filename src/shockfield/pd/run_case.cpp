@@ -1,7 +1,6 @@
 #include "shockfield/pd/run_case.hpp"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -34,10 +33,9 @@ void derive_common(const Config& root, const PdCase& c, const Simulation& sim, d
   root.derive("stable_time_step_s", sim.stable_step());
   root.derive("time_step_s", dt);
   root.derive("steps", static_cast<long long>(std::ceil(c.solver.end_time / dt - 1e-9)));
-  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
 }
 
-// J2: the uniaxial-strain wave speeds and stresses of the symmetric impact (seed 004 §3.1:
+// J2: the uniaxial-strain wave speeds and stresses of the symmetric impact (Liu et al. 2025, §3.1:
 // c_L = √(M/ρ), c_p = √(K/ρ), σ_HEL = M·Y/(2G), elastic state ρ c_L v/2, two-wave plastic state
 // σ_HEL + ρ c_p (v/2 − u_HEL)).
 void derive_material(const Config& root, const PdCase& c, const std::vector<SmallStrainJ2>& materials,

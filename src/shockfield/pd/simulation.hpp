@@ -1,6 +1,6 @@
 #pragma once
 // A peridynamic run: the body (points, families), its density, a force model and the
-// velocity-Verlet loop of seed 004 eq. 1, ρ·ü = L + b, with hooks at named stages (as md/ and
+// velocity-Verlet loop of Liu et al. (2025) eq. 1, ρ·ü = L + b, with hooks at named stages (as md/ and
 // mpm/ do). Motion is restricted to the body's dimension (a 1D bar moves along x only: the
 // lateral "pulley" constraint of the seed's Fig. 2).
 //

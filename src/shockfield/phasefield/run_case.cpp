@@ -1,7 +1,6 @@
 #include "shockfield/phasefield/run_case.hpp"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <cmath>
 #include <numbers>
@@ -37,7 +36,6 @@ void derive(const Config& root, const PhasefieldCase& c) {
   if (c.grid.dim > 1 && c.model.front_speed() > 0)
     root.derive("critical_radius", c.model.critical_radius(c.grid.dim));
   root.derive("initial_domains", static_cast<long long>(c.domains.size()));
-  root.derive("openmp_threads", static_cast<long long>(omp_get_max_threads()));
 }
 
 // The well-posed Ginzburg–Landau model (docs/theory/phasefield.md) as a plug-in of the run driver:
@@ -104,6 +102,21 @@ class PhasefieldMethod final : public Method {
   std::int64_t thermo_every() const override { return thermo_interval(c_.output.thermo_every, c_.steps); }
   double work_items() const override { return static_cast<double>(c_.grid.size()); }
   std::string work_item_name() const override { return "node"; }
+
+  double time() const override { return solver_.time(); }
+  std::string time_unit() const override { return "1"; }
+  // The hcp domain totals of the last step (docs/phasefield.md, outputs).
+  Json results() const override {
+    const FieldMeasures m = solver_.measures();
+    Json r = Json::object();
+    r.set("hcp_volume", m.integral).set("volume_fraction", m.fraction_above_half);
+    r.set("equivalent_radius", equivalent_radius(m.integral, c_.grid.dim)).set("free_energy", m.free_energy);
+    r.set("front_speed_c0", c_.model.front_speed());
+    return r;
+  }
+  std::vector<std::string> resume_safe_keys() const override {
+    return {"time.end_time", "output.*_interval", "output.thermo_every", "output.checkpoint_every"};
+  }
 
  private:
   void open(RunContext& run, bool resumed) {

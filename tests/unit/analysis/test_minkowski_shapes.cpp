@@ -54,7 +54,7 @@ TEST(MinkowskiShapes, DiskAnnulusAndSeveralDisks2D) {
 }
 
 TEST(MinkowskiShapes, BlackDropInWhiteIsMinusOneOnlyWhenTheSurroundingDoesNotCount) {
-  // Seed 000 §3.1: "χ = −1 in the case with only black drop in a large white lattice".
+  // Xu et al. (2015) §3.1: "χ = −1 in the case with only black drop in a large white lattice".
   auto drop = disk(48, 10.0, 23.6, 24.2);
   for (auto& v : drop.values) v = 1.0 - v;
   sa::MinkowskiOptions o;

@@ -1,4 +1,4 @@
-// Structural and dynamic similarity (seed 000 §3.1) and the threshold search of §4.1.2 (Fig. 43).
+// Structural and dynamic similarity (Xu et al. 2015, §3.1) and the threshold search of §4.1.2 (Fig. 43).
 #include <gtest/gtest.h>
 
 #include <cmath>

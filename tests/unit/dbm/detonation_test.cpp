@@ -1,4 +1,4 @@
-// Planar detonation with the reactive DBM against Chapman–Jouguet theory (seed 000 §2.3.3, §4.3):
+// Planar detonation with the reactive DBM against Chapman–Jouguet theory (Xu et al. 2015, §2.3.3, §4.3):
 // the CJ and von Neumann states satisfy the Rankine–Hugoniot relations; the measured front speed is
 // within 2% of D_CJ (issue 6); Δ*_2xx is positive in the shock in front of the von Neumann
 // pressure peak (compression) and negative in the reaction zone behind it (thermal expansion from

@@ -1,5 +1,5 @@
 // Reactive DBM (reaction.hpp): the chemical source against its definition and against the
-// homogeneous-reactor ODE, conservation of E + Qφ (seed 000 §2.3.3; Yan et al. 2013), and the
+// homogeneous-reactor ODE, conservation of E + Qφ (Xu et al. 2015, §2.3.3; Yan et al. 2013), and the
 // reactant transport's consistency with the DBM mass flux.
 #include <gtest/gtest.h>
 

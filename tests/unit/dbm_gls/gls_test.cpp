@@ -1,4 +1,4 @@
-// GLS liquid–vapour DBM (seed 000 eqs. 13–18, 27–31): the force term's moments against the
+// GLS liquid–vapour DBM (Xu et al. 2015, eqs. 13–18, 27–31): the force term's moments against the
 // continuum forces written out independently, a flat liquid slab whose coexistence densities must
 // match the Maxwell equal-area construction (issue 6: vdW at T/T_c = 0.9, ρ_l/ρ_c = 1.6573,
 // ρ_v/ρ_c = 0.4257, within 1%), mass and total energy e_T conserved, the Δ = Δ^F + Δ^G split,

@@ -1,4 +1,4 @@
-// Laplace law Δp = σ/R of the GLS liquid–vapour model (seed 000 §2.3.2, eqs. 13–19; issue 6),
+// Laplace law Δp = σ/R of the GLS liquid–vapour model (Xu et al. 2015, §2.3.2, eqs. 13–19; issue 6),
 // the default-suite version of tests/validation/slow/test_dbm_laplace.cpp: van der Waals
 // droplets (T = 0.9, K = 1e-3) of initial radius 0.45, 0.6, 0.75 in a periodic box of 2 on 48²
 // (Δx = 1/24, the ≈ 0.27-wide interface spans ~6.5 cells), τ = 5e-4 and a heat conductivity

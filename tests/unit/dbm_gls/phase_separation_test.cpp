@@ -1,4 +1,4 @@
-// Phase-separation diagnostics of the GLS model (seed 000 §4.3): the quench initial state, one
+// Phase-separation diagnostics of the GLS model (Xu et al. 2015, §4.3): the quench initial state, one
 // sample of D, L, R against quantities computed here independently, and t_SD / D_max from the
 // peak of D(t). The long K study is not a unit test (see docs/theory/dbm.md for its status).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Mie-Grüneisen EOS (seed 000 eqs. 5-6), temperature (eqs. 7-8) and artificial viscosity.
+// Mie-Grüneisen EOS (Xu et al. 2015, eqs. 5-6), temperature (eqs. 7-8) and artificial viscosity.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// J2 radial return (seed 000 eqs. 3-4), the combined point update, and the material library.
+// J2 radial return (Xu et al. 2015, eqs. 3-4), the combined point update, and the material library.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Seed 000 aluminium (§4.1) in symmetric impact at ±1000 m/s: the steady shock state, energy and
+// Xu et al. (2015) aluminium (§4.1) in symmetric impact at ±1000 m/s: the steady shock state, energy and
 // momentum conservation, and independence of the thread count.
 #include <gtest/gtest.h>
 #include <omp.h>

@@ -1,4 +1,4 @@
-// Shape functions (seed 000 eq. 9, GIMP), grid walls, and the sample builders of §4.1-4.2.
+// Shape functions (Xu et al. 2015, eq. 9, GIMP), grid walls, and the sample builders of §4.1-4.2.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Porous bodies with periodic lateral sides (seed 000 §4.1: a periodic porous sample): voids cross
+// Porous bodies with periodic lateral sides (Xu et al. 2015, §4.1: a periodic porous sample): voids cross
 // the periodic sides as wrapped images, so the void fraction is the same next to a side as in the
 // interior, no void overlaps another's periodic image, and the porosity counts each void once.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Correspondence model (seed 004 eqs. 1-8) with and without the Riemann correction (eqs. 9-17)
+// Correspondence model (Liu et al. 2025, eqs. 1-8) with and without the Riemann correction (eqs. 9-17)
 // on the seed's 1D impact bar (Fig. 2), ΔX = 10 µm, δ = 3ΔX.
 #include <gtest/gtest.h>
 

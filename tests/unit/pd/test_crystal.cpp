@@ -1,4 +1,4 @@
-// Crystal viscoplasticity (seed 004 eqs. 18-41, Algorithm 1), lattice geometry and Taylor
+// Crystal viscoplasticity (Liu et al. 2025, eqs. 18-41, Algorithm 1), lattice geometry and Taylor
 // homogenisation (eqs. 42-43) with the seed's Table 1 (annealed OFHC copper).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Simple compression of crystal aggregates under the Taylor assumption (seed 004 §4.1, eqs.
+// Simple compression of crystal aggregates under the Taylor assumption (Liu et al. 2025, §4.1, eqs.
 // 42-45): the isochoric path of eq. 44, the axial stress of eq. 45, and the aggregate's stress
 // against analytic values: the Voigt average of an orientation set that averages a fourth-rank
 // tensor isotropically, cubic symmetry, and the Schmid ratio of [111] to [100] flow stress.

@@ -1,4 +1,4 @@
-// Dukowicz's two-shock interface pressure (seed 004 eq. 15).
+// Dukowicz's two-shock interface pressure (Liu et al. 2025, eq. 15).
 #include <gtest/gtest.h>
 
 #include "shockfield/pd/riemann.hpp"

@@ -1,4 +1,4 @@
-// Taylor homogenisation in a shock run (seed 004 eqs. 42-43): a 1D OFHC copper bar (Table 1,
+// Taylor homogenisation in a shock run (Liu et al. 2025, eqs. 42-43): a 1D OFHC copper bar (Table 1,
 // ΔX = 10 µm, δ = 3ΔX, Riemann-corrected) hit at 100 m/s whose points each hold N_g grains.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The seed's porous aluminium case (seed 000 §4.1, Fig 19: Δ = 0.029, r = 50 µm, 2 × 5 mm, slip
+// The seed's porous aluminium case (Xu et al. 2015, §4.1, Fig 19: Δ = 0.029, r = 50 µm, 2 × 5 mm, slip
 // wall at 1000 m/s; examples/mpm_porous_al/case.toml) at 20 µm and 10 µm cells (void radius 2.5
 // and 5 cells), bottom window [100, 900] µm at 250 ns, beside the seed's 3.14 g/cm³, 16.7 GPa and
 // 432 K. Density and pressure: within 2 % and 5 % of the seed at both resolutions (the seed's

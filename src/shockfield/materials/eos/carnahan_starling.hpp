@@ -1,5 +1,5 @@
 #pragma once
-// Carnahan–Starling equation of state, seed 000 eq. 19, in the reduced units of the GLS discrete
+// Carnahan–Starling equation of state, Xu et al. (2015) eq. 19, in the reduced units of the GLS discrete
 // Boltzmann model: P = ρT(1 + η + η² − η³)/(1 − η)³ − aρ², η = bρ/4. Its critical point has no
 // closed form; dbm/coexistence.hpp finds it numerically.
 #include <string>

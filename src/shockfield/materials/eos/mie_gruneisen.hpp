@@ -1,6 +1,5 @@
 #pragma once
-// Mie-Grüneisen equation of state referenced to the linear Us-Up shock Hugoniot (seed 000,
-// §2.2.1, eqs. 5-6). SI units: density kg/m³, specific internal energy J/kg, pressure Pa.
+// Mie-Grüneisen equation of state referenced to the linear Us-Up shock Hugoniot (Xu et al. 2015, // §2.2.1, eqs. 5-6). SI units: density kg/m³, specific internal energy J/kg, pressure Pa.
 //
 //   P(ρ, e) = P_H(V) + (γ/V)·[e − E_H(V)],   γ/V = ργ = ρ0γ0            (eq. 5)
 //   P_H = ρ0c0²η / (1 − λη)²  for V ≤ V0 (η = 1 − V/V0 ≥ 0)              (eq. 6, compression)

@@ -1,5 +1,5 @@
 #pragma once
-// Simple compression of a crystal aggregate under the Taylor assumption (seed 004 §4.1, Fig. 5):
+// Simple compression of a crystal aggregate under the Taylor assumption (Liu et al. 2025, §4.1, Fig. 5):
 // every grain follows the same isochoric deformation gradient of eq. 44 and the aggregate's
 // stress is their volume average (eq. 43). This is the material-point test the seed holds the
 // crystal law of Table 1 against (annealed OFHC copper, Kalidindi, Bronkhorst & Anand 1992).

@@ -1,5 +1,5 @@
 #pragma once
-// Crystal geometry for the crystal viscoplastic law (seed 004 §2.3): slip systems by name and
+// Crystal geometry for the crystal viscoplastic law (Liu et al. 2025, §2.3): slip systems by name and
 // orientations as Bunge Euler angles.
 //
 // Bunge (z-x-z) convention: the rotation g = R_z(φ1)·R_x(Φ)·R_z(φ2) takes crystal axes to sample

@@ -1,5 +1,5 @@
 #pragma once
-// Taylor homogenisation (seed 004 eqs. 42-43): N_g grains at one material point share its
+// Taylor homogenisation (Liu et al. 2025, eqs. 42-43): N_g grains at one material point share its
 // deformation gradient, and the point's Cauchy stress is the volume average of the grains'
 // stresses, ⟨σ⟩ = Σ v_g σ^g, with equal volumes v_g = 1/N_g (eq. 43). Stress equilibrium between
 // the grains is not enforced (the Taylor assumption).

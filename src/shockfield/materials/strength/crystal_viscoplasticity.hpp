@@ -1,5 +1,5 @@
 #pragma once
-// Finite-deformation crystal viscoplasticity, seed 004 eqs. 18-41 and Algorithm 1 (Kalidindi,
+// Finite-deformation crystal viscoplasticity, Liu et al. (2025) eqs. 18-41 and Algorithm 1 (Kalidindi,
 // Bronkhorst & Anand, JMPS 40 (1992) 537; explicit update after Dumoulin et al., Comput. Mater.
 // Sci. 46 (2009) 785), one grain per State. Everything is computed in the crystal frame of the
 // grain; `orientation` g (crystal → sample, crystal_lattice.hpp) rotates F in and σ out.
@@ -33,7 +33,7 @@
 namespace shockfield::materials {
 
 enum class HardeningLaw {
-  sech2,  ///< seed 004 eq. 40, driven by the accumulated slip γ_tot
+  sech2,  ///< Liu et al. (2025) eq. 40, driven by the accumulated slip γ_tot
   power,  ///< Kalidindi, Bronkhorst & Anand 1992, driven by each system's own g^β
 };
 
@@ -50,7 +50,7 @@ struct CrystalViscoplasticity {
   double substep_factor = 0.5;  ///< κ of the sub-increment limit
   std::vector<SlipSystem> systems = fcc_slip_systems();
 
-  /// Seed 004 Table 1 (annealed OFHC copper, from Kalidindi et al. 1992).
+  /// Liu et al. (2025) Table 1 (annealed OFHC copper, from Kalidindi et al. 1992).
   static CrystalViscoplasticity ofhc_copper();
   /// InputError naming the parameter when one is out of range; `where` prefixes it.
   void validate(const std::string& where) const;

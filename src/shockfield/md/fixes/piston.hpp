@@ -3,7 +3,7 @@
 // `position` and moves into the material at constant speed u_p. After the drift, every atom
 // found behind the wall is reflected off it: x ← 2w − x, v ← 2u_p − v along the axis. The
 // reflected atoms move at up to 2u_p − v, so the material ahead is driven at u_p and a shock
-// runs ahead of the wall (000 §4.4: shock loading of EAM metals). Tracks the work done by the
+// runs ahead of the wall (Xu et al. 2015, §4.4: shock loading of EAM metals). Tracks the work done by the
 // wall for the conserved-quantity column.
 #include "shockfield/md/fix.hpp"
 
