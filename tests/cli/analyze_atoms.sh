@@ -80,7 +80,7 @@ rejected() {
 head -9 "$F/cu_fcc_perfect.dump" > "$WORK/header"
 # missing position columns
 { sed 's/^ITEM: ATOMS .*/ITEM: ATOMS id type c_cna/' "$WORK/header"; awk 'NR > 9 { print $1, $2, $6 }' "$F/cu_fcc_perfect.dump"; } > "$WORK/nopos.dump"
-rejected "nopos.dump (timestep 0): dump frame of timestep 0 has no positions (x y z, xu yu zu or xs ys zs)" -- "$WORK/nopos.dump"
+rejected "nopos.dump: dump frame of timestep 0 has no positions (x y z, xu yu zu or xs ys zs)" -- "$WORK/nopos.dump"
 # duplicate ids
 { cat "$WORK/header"; awk 'NR > 9 { if ($1 == 7) $1 = 3; print }' "$F/cu_fcc_perfect.dump"; } > "$WORK/dup.dump"
 rejected "dup.dump (timestep 0): atom id 3 appears twice" -- "$WORK/dup.dump"

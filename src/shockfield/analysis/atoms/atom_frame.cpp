@@ -49,11 +49,7 @@ AtomFrame frame_from_dump(const io::DumpFrame& dump, const std::string& source) 
   frame.box = dump.box;
   const std::string where = fmt::format("{} (timestep {})", source, dump.timestep);
   if (dump.natoms() > 0) {
-    try {
-      frame.positions = dump.positions();
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("{}: {}", where, e.what()));
-    }
+    frame.positions = dump.positions();  // its error names the dump file and the timestep
     if (dump.has("type")) frame.types = dump.types();
     if (dump.has("id")) frame.ids = dump.ids();
   }
