@@ -22,10 +22,7 @@ grep -q "critical_radius = 7.07" "$WORK/straight/config.resolved.toml" || fail "
 awk -F, 'NR > 2 && $4 > prev + 1e-12 * (prev < 0 ? -prev : prev) { bad = 1 } NR > 1 { prev = $4 } END { exit bad }' \
   "$WORK/straight/series.csv" || fail "free energy increased in series.csv"
 
-stop_then_resume "$case_file" "$WORK/split" 23
-grep -q "resumed from .* at step 23" "$WORK/split/log.txt" || fail "the resumed run did not start at the checkpoint"
-same_files "$WORK/straight" "$WORK/split" series.csv fields.pvd fields/xi_3.vti thermo.csv
-echo "phasefield stop/resume: bitwise identical"
+# Stop and resume: cli.stop_resume.phasefield (tests/cli/stop_resume.sh).
 
 good=$(sed -e '/^#/d' "$case_file")
 expect_error "${good/scheme = \"spectral\"/scheme = \"explicit\"}" "time.dt" "at most 0.9 dx^2/(2 dim D)"
