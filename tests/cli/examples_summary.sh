@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Every example's case file runs through the driver and leaves a summary.json that passes the
+# schema (tests/cli/check_summary.py): each case is run for two steps (--stop-after 2: exit 130,
+# status "stopped"); a pd [homogeneous] case keeps no checkpoint, so it runs whole (seconds).
+source "$(dirname "$0")/lib.bash"
+set -e
+count=0
+for case_file in "$ROOT"/examples/*/*.toml; do
+  out="$WORK/$(basename "$(dirname "$case_file")")_$(basename "$case_file" .toml)"
+  limit=(--stop-after 2)
+  grep -q '^\[homogeneous\]' "$case_file" && limit=()
+  set +e
+  "$SF" run "$case_file" --output "$out" -q "${limit[@]}" > "$WORK/stdout" 2> "$WORK/stderr"
+  code=$?
+  set -e
+  [ $code -eq 130 ] || [ $code -eq 0 ] || fail "$case_file: exit $code: $(tail -c 400 "$WORK/stderr")"
+  status=stopped
+  [ $code -eq 0 ] && status=finished
+  /usr/bin/python3 "$ROOT/tests/cli/check_summary.py" "$out/summary.json" --status "$status" \
+    || fail "$case_file: summary.json does not pass the schema"
+  rm -rf "$out"
+  count=$((count + 1))
+done
+[ $count -ge 20 ] || fail "only $count example case files found"
+echo "examples_summary: $count example case files, each summary.json valid"
