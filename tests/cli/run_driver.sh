@@ -26,6 +26,9 @@ done
 grep -q '"hugoniot"' "$WORK/tiny_cu/summary.json" && grep -q "ns/day" "$WORK/tiny_cu/log.txt" || fail "md summary"
 grep -q "Step .*Temp .*PotEng .*KinEng .*TotEng .*Press" "$WORK/tiny_cu/log.txt" || fail "md thermo table header"
 grep -q "sha256 [0-9a-f]\{64\}" "$WORK/tiny_cu/log.txt" || fail "the potential file's checksum is not logged"
+# MD times its step phases: force and neighbour-rebuild seconds are positive (the run rebuilds).
+grep -qE "^wall time: step .* \(of which force [0-9.e+-]+ s, neighbour (0\.0*[1-9]|[1-9])[0-9.e+-]* s, ghosts" "$WORK/tiny_cu/log.txt" \
+  || fail "md phase times (force, neighbour, ghosts) missing from the performance summary"
 echo "ok: summary.json valid, provenance and performance logged for md, mpm, pd, dbm"
 
 # --set equals editing the file, bitwise.

@@ -61,7 +61,10 @@ void log_performance(Logger& log, const Method& m, const RunTally& t) {
   if (m.ns_per_step() > 0) line += fmt::format(", {:.4g} ns/day", rate * m.ns_per_step() * 86400.0);
   log.line(line + ")");
   std::string phases = fmt::format("wall time: step {:.3g} s", t.step_seconds);
-  for (const PhaseTime& p : m.phase_times()) phases += fmt::format(" (of which {} {:.3g} s)", p.name, p.seconds);
+  const std::vector<PhaseTime> parts = m.phase_times();
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    phases += fmt::format("{}{} {:.3g} s{}", k == 0 ? " (of which " : ", ", parts[k].name, parts[k].seconds,
+                          k + 1 == parts.size() ? ")" : "");
   phases += fmt::format(", output {:.3g} s, checkpoint {:.3g} s, other {:.3g} s", t.output_seconds,
                         t.checkpoint_seconds,
                         std::max(0.0, t.wall_seconds - t.step_seconds - t.output_seconds - t.checkpoint_seconds));

@@ -224,6 +224,9 @@ class MdMethod final : public Method {
   double work_items() const override { return static_cast<double>(atoms_); }
   std::string work_item_name() const override { return "atom"; }
   double ns_per_step() const override { return p_.md.timestep * 1e-3; }
+  std::vector<PhaseTime> phase_times() const override {
+    return {{"force", sim_->force_seconds}, {"neighbour", sim_->neighbor_seconds}, {"ghosts", sim_->ghost_seconds}};
+  }
 
   double time() const override { return sim_->time; }
   std::string time_unit() const override { return "ps"; }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "shockfield/core/error.hpp"
@@ -80,11 +81,21 @@ bool Simulation::needs_rebuild() const {
   return false;
 }
 
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+}  // namespace
+
 void Simulation::compute_forces(bool per_atom) {
   ++steps_since_rebuild;
-  if (needs_rebuild()) rebuild();
+  const Clock::time_point t0 = Clock::now();
+  const bool rebuilding = needs_rebuild();
+  if (rebuilding) rebuild();
   else atoms.update_ghost_positions(box);
+  const Clock::time_point t1 = Clock::now();
+  (rebuilding ? neighbor_seconds : ghost_seconds) += seconds_between(t0, t1);
   evaluate_forces(atoms, *potential, list, forces, per_atom);
+  force_seconds += seconds_between(t1, Clock::now());
 }
 
 void Simulation::setup(bool per_atom) {

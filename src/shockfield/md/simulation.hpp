@@ -49,6 +49,9 @@ class Simulation {
   int neighbor_delay = 0;
   bool neighbor_check = true;
   std::int64_t steps_since_rebuild = 0;
+  /// Wall seconds of the step phases (the run's performance summary, LAMMPS's Pair/Neigh/Comm):
+  /// force evaluation, neighbour-list rebuilds (with their ghosts), ghost position updates.
+  double force_seconds = 0, neighbor_seconds = 0, ghost_seconds = 0;
 
   /// Wraps, rebuilds ghosts and list, and computes forces (per-atom tallies if asked).
   void setup(bool per_atom);
