@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
 
@@ -15,6 +14,7 @@
 #include "shockfield/geometry/delaunay_output.hpp"
 #include "shockfield/geometry/point_file.hpp"
 #include "shockfield/geometry/rolling_ball.hpp"
+#include "shockfield/io/checked_file.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -86,7 +86,7 @@ void run_geometry(const GeometryArgs& a) {
     summary += fmt::format("{}_clusters {}\n{}_largest {}\n", name, c.count, name, largest);
     if (name == "seed_rule") summary += fmt::format("seed_rule_shared_points {}\n", c.shared_points);
   }
-  std::ofstream(out / "summary.txt") << summary;
+  io::replace_file(out / "summary.txt", summary);
   std::fputs(summary.c_str(), stdout);
   std::printf("wrote %s%s%ssummary.txt in %s\n", a.no_mesh ? "" : "delaunay.vtu, ",
               clusterings.empty() ? "" : "clusters.csv, ", surface ? "surface.vtp, " : "",

@@ -3,25 +3,14 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-
-#include "shockfield/core/error.hpp"
+#include "shockfield/io/checked_file.hpp"
 
 namespace shockfield::geometry {
-namespace {
-
-std::ofstream open_for_writing(const std::filesystem::path& file) {
-  std::ofstream out(file);
-  if (!out) throw InputError(fmt::format("{}: cannot open for writing", file.string()));
-  return out;
-}
-
-}  // namespace
 
 template <int N>
 void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivision<N>& d,
                         const PointArrays& point_data) {
-  auto out = open_for_writing(file);
+  io::CheckedOutput out(file);  // a failed write stops with RunError naming the file
   const std::size_t np = d.points.size(), nc = d.simplices.size();
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
          "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n";
@@ -52,7 +41,7 @@ void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivisio
     out << "        </DataArray>\n";
   }
   out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-  if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
+  out.close();
 }
 
 void write_surface_vtp(const std::filesystem::path& file,
@@ -67,7 +56,7 @@ void write_surface_vtp(const std::filesystem::path& file,
         index[v] = static_cast<std::int32_t>(used.size());
         used.push_back(v);
       }
-  auto out = open_for_writing(file);
+  io::CheckedOutput out(file);  // a failed write stops with RunError naming the file
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
          "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PolyData>\n";
   out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfPolys=\"{}\">\n", used.size(),
@@ -83,13 +72,13 @@ void write_surface_vtp(const std::filesystem::path& file,
          "format=\"ascii\">\n";
   for (std::size_t c = 0; c < triangles.size(); ++c) out << 3 * (c + 1) << '\n';
   out << "        </DataArray>\n      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
+  out.close();
 }
 
 template <int N>
 void write_clusters_csv(const std::filesystem::path& file, const DelaunayDivision<N>& d,
                         const std::vector<std::pair<std::string, const PointClusters*>>& clusterings) {
-  auto out = open_for_writing(file);
+  io::CheckedOutput out(file);  // a failed write stops with RunError naming the file
   out << "index," << (N == 2 ? "x,y" : "x,y,z");
   for (const auto& [name, c] : clusterings) out << ',' << name;
   out << '\n';
@@ -99,7 +88,7 @@ void write_clusters_csv(const std::filesystem::path& file, const DelaunayDivisio
     for (const auto& [name, c] : clusterings) out << ',' << c->label[i];
     out << '\n';
   }
-  if (!out) throw InputError(fmt::format("{}: write failed", file.string()));
+  out.close();
 }
 
 template void write_delaunay_vtu<2>(const std::filesystem::path&, const DelaunayDivision<2>&,
