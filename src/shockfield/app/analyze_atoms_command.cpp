@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
+#include "shockfield/app/analyze_atoms_burgers.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/csv_writer.hpp"
@@ -40,6 +41,7 @@ struct AtomsArgs {
   std::optional<double> clusters;
   std::string cluster_select;
   std::size_t cluster_min_size = 1;
+  BurgersArgs burgers;
   int threads = 0;
 };
 
@@ -307,6 +309,11 @@ void run_atoms(const AtomsArgs& a) {
   io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
   io::CsvWriter clusters;
   if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), kClusterColumns);
+  std::optional<BurgersAnalysis> burgers;
+  if (a.burgers.any()) {
+    burgers.emplace(a.burgers, analyses.clusters.has_value());
+    burgers->open(pending.add("burgers.csv"));
+  }
   std::size_t frame_index = 0, total_atoms = 0;
   for (const InputFile& input : files) {
     const std::string source = input.path.string();
@@ -332,15 +339,18 @@ void run_atoms(const AtomsArgs& a) {
         throw InputError(fmt::format("{}: the frame of timestep {} has no atoms", source, frame.timestep));
       const auto result = aa::analyze_structure(frame, analyses);
       append_columns(dumps[f], result, frame.size());
+      if (burgers) burgers->analyze(frame_index, frame, result.clusters ? &*result.clusters : nullptr, dumps[f]);
       writer.write(dumps[f]);
       if (result.clusters) write_clusters(clusters, frame_index, frame.timestep, *result.clusters);
       summary.row(summary_row(frame_index++, frame.timestep, frame.size(), result));
       total_atoms += frame.size();
     }
   }
+  if (burgers) burgers->close();
   pending.commit();
   std::printf("analysed %zu frames (%zu atoms) from %zu files; wrote %s/structures.csv and the annotated dumps\n",
               frame_index, total_atoms, files.size(), out_dir.string().c_str());
+  if (burgers) std::printf("%zu Burgers circuits in %s/burgers.csv\n", burgers->circuits(), out_dir.string().c_str());
 }
 
 }  // namespace
@@ -357,7 +367,8 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       "(each input's frames with the results appended as columns coord, cna, acna, csp, bpa, cluster;\n"
       "a data file becomes <stem>.dump), OUTPUT/structures.csv (frame, timestep, atoms, then per\n"
       "method the count and fraction of each structure) and, with --clusters, OUTPUT/clusters.csv\n"
-      "(Xu et al. (2015) §4.4.2's central-moment method). \n"
+      "(Xu et al. (2015) §4.4.2's central-moment method); with --burgers-*, OUTPUT/burgers.csv (Burgers\n"
+      "vectors of fcc dislocations by the Frank scheme of Xu et al. (2015) §3.2.3, FS/RH).\n"
       "Inputs: LAMMPS text dumps (one file or several, frames in order; orthogonal boxes; .gz\n"
       "through gzip, written back uncompressed), LAMMPS data files (atom style atomic), shockfield\n"
       "MD run folders (their dumps/dump.*.lammpstrj in step order). Outputs appear only when every\n"
@@ -393,6 +404,7 @@ void add_analyze_atoms_command(CLI::App& analyze) {
   cmd->add_option("--cluster-min-size", a->cluster_min_size, "Drop clusters with fewer atoms")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  add_burgers_options(*cmd, a->burgers);
   cmd->add_option("-j,--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
       ->check(CLI::NonNegativeNumber);
   cmd->callback([a] { run_atoms(*a); });

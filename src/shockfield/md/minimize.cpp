@@ -35,11 +35,18 @@ void scale_box(Simulation& sim, int d, double new_length) {
   sim.box.hi[d] = sim.box.lo[d] + new_length;
 }
 
+// Forces of the atoms outside the moving group are zero: they neither move nor count in max |f|.
+void hold_frozen(Atoms& a, std::uint32_t group) {
+  for (std::size_t i = 0; i < a.nlocal; ++i)
+    if (!(a.mask[i] & group)) a.f[i].setZero();
+}
+
 }  // namespace
 
 MinimizeResult minimize_fire(Simulation& sim, const MinimizeSettings& s) {
   Atoms& a = sim.atoms;
   sim.setup(false);
+  hold_frozen(a, s.group);
   double total_mass = 0;
   for (std::size_t i = 0; i < a.nlocal; ++i) total_mass += a.mass_of(i);
   // A box length drags all atoms; a mass of a tenth of the crystal keeps its motion comparable
@@ -109,6 +116,7 @@ MinimizeResult minimize_fire(Simulation& sim, const MinimizeSettings& s) {
       scale_box(sim, d, sim.box.length()[d] + dt * box_v[d]);
     }
     sim.compute_forces(false);
+    hold_frozen(a, s.group);
   }
   r.reason = "maximum number of iterations reached";
   return r;

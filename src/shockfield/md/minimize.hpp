@@ -4,8 +4,11 @@
 // generalised force ∂(−H)/∂L_d = (P_dd − P_target)·V/L_d (enthalpy H = E + P_target V) and a
 // fictitious mass; atoms follow a length change affinely. Stops when the largest atomic force is
 // below `force_tolerance`, every relaxed P_dd is within `pressure_tolerance` of the target, or
-// after `max_iterations`.
+// after `max_iterations`. Atoms outside `group` are held where they are (their forces are set to
+// zero, as LAMMPS `fix setforce 0.0 0.0 0.0` on them during `minimize`): a frozen shell keeps a
+// defect's far field in place.
 #include <array>
+#include <cstdint>
 #include <string>
 
 #include "shockfield/md/simulation.hpp"
@@ -19,6 +22,7 @@ struct MinimizeSettings {
   std::array<bool, 3> relax_box{false, false, false};
   double target_pressure = 0.0;        ///< bar
   double max_timestep_factor = 10.0;   ///< FIRE Δt_max = factor · Δt
+  std::uint32_t group = 1;             ///< mask bit(s) of the atoms that move; bit 0 = all
 };
 
 struct MinimizeResult {

@@ -283,7 +283,9 @@ class MdMethod final : public Method {
     Simulation& sim = *sim_;
     if (!fixes_added) add_fixes();
     if (stage.ensemble == "minimize") {
-      const MinimizeResult r = minimize_fire(sim, stage.minimize);
+      MinimizeSettings settings = stage.minimize;
+      settings.group = p_.stage_groups[k_];
+      const MinimizeResult r = minimize_fire(sim, settings);
       const Vec3 l = sim.box.length();
       run_->log.info("[{}] FIRE minimisation: {} after {} iterations; E = {:.10g} eV ({:.10g} eV/atom), max |f| = "
                      "{:.3g} eV/A, P = {:.3g} {:.3g} {:.3g} bar, box {:.10g} {:.10g} {:.10g} A",
