@@ -101,7 +101,7 @@ head -c 800 "$WORK/cu.dump.gz" > "$WORK/cut.dump.gz"  # the whole file is ~1.7 k
 rejected "cut.dump.gz: gzip -dc failed: not a gzip file, or a truncated or corrupt one" -- "$WORK/cut.dump.gz"
 rejected "--csp: expected fcc, bcc or an even neighbour count" -- "$F/cu_fcc_perfect.dump" --csp 7
 rejected "--cluster-select 'cna:hcp': selecting by cna needs --cna" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select cna:hcp
-rejected "expected cna|acna|bpa:[!]fcc|hcp|bcc|ico|other, or csp>NUMBER" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select acna:diamond
+rejected "expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other)" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select acna:diamond
 rejected "--clusters and --cluster-select go together" -- "$F/cu_fcc_perfect.dump" --clusters 3
 mkdir -p "$WORK/notrun"
 rejected "notrun: a folder but not a shockfield MD run folder" -- "$WORK/notrun"

@@ -127,8 +127,9 @@ std::vector<InputFile> expand_inputs(const AtomsArgs& a) {
   return files;
 }
 
-// --cluster-select: "<cna|acna|bpa>:<structure>", "<method>:!<structure>" (every other type) or
-// "csp><value>"; the analysis it reads must be on (acna is switched on by it).
+// --cluster-select: "<cna|acna|bpa>:<structure>[,<structure>...]" (any of them),
+// "<method>:!<structure>[,...]" (none of them) or "csp><value>"; the analysis it reads must be on
+// (acna is switched on by it).
 aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s) {
   const std::string what = fmt::format("--cluster-select '{}'", spec);
   if (spec.rfind("csp>", 0) == 0) {
@@ -149,22 +150,30 @@ aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnaly
   }
   const auto colon = spec.find(':');
   const std::string method = spec.substr(0, colon);
-  std::string name = colon == std::string::npos ? "" : spec.substr(colon + 1);
-  const bool negate = !name.empty() && name[0] == '!';
-  if (negate) name.erase(0, 1);
-  const auto structure = std::find_if(aa::kStructures.begin(), aa::kStructures.end(),
-                                      [&](aa::Structure t) { return aa::structure_name(t) == name; });
-  if (structure == aa::kStructures.end() || (method != "cna" && method != "acna" && method != "bpa"))
-    throw InputError(what + ": expected cna|acna|bpa:[!]fcc|hcp|bcc|ico|other, or csp>NUMBER");
+  std::string names = colon == std::string::npos ? "" : spec.substr(colon + 1);
+  const bool negate = !names.empty() && names[0] == '!';
+  if (negate) names.erase(0, 1);
+  const std::string expected = what + ": expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), or csp>NUMBER";
+  if (method != "cna" && method != "acna" && method != "bpa") throw InputError(expected);
+  std::vector<aa::Structure> listed;  // the structures named (a comma-separated list)
+  for (std::size_t begin = 0; begin <= names.size();) {
+    const std::size_t end = std::min(names.find(',', begin), names.size());
+    const std::string name = names.substr(begin, end - begin);
+    const auto structure = std::find_if(aa::kStructures.begin(), aa::kStructures.end(),
+                                        [&](aa::Structure t) { return aa::structure_name(t) == name; });
+    if (structure == aa::kStructures.end()) throw InputError(expected);
+    listed.push_back(*structure);
+    begin = end + 1;
+  }
   if (method == "cna" && !s.cna) throw InputError(what + ": selecting by cna needs --cna");
   if (method == "bpa" && !s.bond_pairs) throw InputError(what + ": selecting by bpa needs --bond-pairs");
   if (method == "acna") s.adaptive_cna = aa::AdaptiveCna{};
-  const aa::Structure wanted = *structure;
-  return [method, wanted, negate](const aa::StructureAnalysisResult& r) {
+  return [method, listed, negate](const aa::StructureAnalysisResult& r) {
     const auto& types = method == "cna" ? r.cna->structure : method == "acna" ? r.adaptive_cna->structure
                                                                              : r.bond_pairs->structure;
     std::vector<bool> out(types.size());
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = (types[i] == wanted) != negate;
+    for (std::size_t i = 0; i < out.size(); ++i)
+      out[i] = (std::find(listed.begin(), listed.end(), types[i]) != listed.end()) != negate;
     return out;
   };
 }
@@ -399,8 +408,9 @@ void add_analyze_atoms_command(CLI::App& analyze) {
                   "ellipsoid volume and surface, atomic volume) and the column cluster (1, 2, ... by size; 0: none)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--cluster-select", a->cluster_select,
-                  "Which atoms to cluster: cna|acna|bpa:TYPE or :!TYPE (TYPE fcc hcp bcc ico other), or csp>VALUE "
-                  "(Å²); e.g. acna:hcp, acna:!fcc");
+                  "Which atoms to cluster: cna|acna|bpa:TYPE[,TYPE...] (any of them) or :!TYPE[,TYPE...] (none of "
+                  "them; TYPE fcc hcp bcc ico other), or csp>VALUE (Å²); e.g. acna:hcp, acna:!fcc, acna:!fcc,hcp "
+                  "(dislocation cores)");
   cmd->add_option("--cluster-min-size", a->cluster_min_size, "Drop clusters with fewer atoms")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

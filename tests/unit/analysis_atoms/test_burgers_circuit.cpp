@@ -71,6 +71,27 @@ TEST(BurgersCircuit, PerfectScrewFsRh) {
   EXPECT_EQ(around(frame, crystal, c, 9.0, -Vec3::UnitZ()).sixths, Vec3i(-3, 3, 0));
 }
 
+// A shocked sample is compressed: with the unstrained lattice constant, ±10% homogeneous strain
+// along any box axis leaves every step within the reliability bound and b unchanged.
+TEST(BurgersCircuit, ScrewUnderTenPercentStrain) {
+  const auto crystal = crystal_of(kScrewOrient);
+  for (int axis = 0; axis < 3; ++axis)
+    for (double strain : {-0.1, 0.1}) {
+      auto frame = testing::oriented_cu(kScrewOrient, {8, 6, 4}, {S, S, P});
+      const Vec3 c0 = middle(frame) + Vec3(0.31, 0.23, 0);
+      testing::add_volterra(frame, c0.x(), c0.y(), 0, kCuLattice / std::numbers::sqrt2);
+      Vec3 stretch = Vec3::Ones();
+      stretch[axis] += strain;
+      for (Vec3& p : frame.positions) p = frame.box.lo + (p - frame.box.lo).cwiseProduct(stretch);
+      frame.box.hi = frame.box.lo + frame.box.length().cwiseProduct(stretch);
+      testing::fit_box(frame);
+      const Vec3 c = frame.box.lo + (c0 - frame.box.lo).cwiseProduct(stretch);
+      const auto r = around(frame, crystal, c, 9.0);
+      EXPECT_EQ(r.sixths, Vec3i(3, -3, 0)) << "axis " << axis << " strain " << strain;
+      EXPECT_TRUE(r.reliable) << "axis " << axis << " strain " << strain << ": " << r.max_step_error;
+    }
+}
+
 TEST(BurgersCircuit, PerfectEdgeFsRh) {
   auto frame = testing::oriented_cu(kEdgeOrient, {16, 8, 2}, {S, S, P});
   const Vec3 c = middle(frame) + Vec3(0.27, 0.41, 0);

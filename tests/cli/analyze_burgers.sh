@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# `shockfield analyze atoms --burgers-*` end to end: a Cu edge dislocation from the Volterra field
+# (examples/md_dislocation_burgers), relaxed by the MD minimiser with its outer shell held,
+# dissociates into two Shockley partials. The Frank-scheme circuits must give: a/2[1-10] around
+# both (the Volterra b, FS/RH), a/6[1-21] and a/6[2-1-1] around each partial found from the
+# core-atom clusters, their sum the perfect vector; and 0 for a circuit in the perfect crystal
+# before the dislocation is put in. Then bad options, each exit 2 with a message naming it.
+source "$(dirname "$0")/lib.bash"
+set -e
+PY=/usr/bin/python3
+EX="$ROOT/examples/md_dislocation_burgers"
+cp "$EX/case.toml" "$EX/make_dislocation.py" "$WORK/"
+(cd "$WORK" && $PY make_dislocation.py --output dislocation.data > /dev/null)
+"$SF" run "$WORK/case.toml" -o "$WORK/relax" -j 1 -q > /dev/null
+grep -q "force and pressure tolerances met" "$WORK/relax/log.txt" || fail "minimisation did not converge: $(grep FIRE "$WORK/relax/log.txt")"
+"$SF" analyze atoms "$WORK/relax" --clusters 3.0 --cluster-select 'acna:!fcc,hcp' --cluster-min-size 10 \
+  --burgers-orient '1 -1 0,1 1 1,-1 -1 2' --burgers-lattice 3.615 \
+  --burgers-line 0.37,1.04,8.85:0,0,1:25 --burgers-clusters -o "$WORK/an" > "$WORK/stdout"
+grep -q "3 Burgers circuits" "$WORK/stdout" || fail "circuit count: $(cat "$WORK/stdout")"
+B="$WORK/an/burgers.csv"
+head -1 "$B" | grep -q "^frame,timestep,circuit,source,atoms,centre_x" || fail "burgers.csv header: $(head -1 "$B")"
+row() { awk -F, -v k="$1" 'NR > 1 && $3 == k { print $13 ";" $14 ";" $22 ";" $4 ";" $6 }' "$B"; }
+[[ "$(row 1)" == "[1 -1 0]/2;perfect a/2<110>;1;line 1;"* ]] || fail "circuit around both partials: $(row 1)"
+partials="$(row 2 | cut -d';' -f1-3) $(row 3 | cut -d';' -f1-3)"
+[[ "$partials" == *"[1 -2 1]/6;Shockley a/6<112>;1"* && "$partials" == *"[2 -1 -1]/6;Shockley a/6<112>;1"* ]] \
+  || fail "partials: $partials"
+# The partials sit on either side of the core, 20-45 Å apart (Cu_u3's stacking-fault ribbon).
+sep=$(awk -F, 'NR > 1 && $3 > 1 { x[$3] = $6 } END { d = x[2] - x[3]; print (d < 0 ? -d : d) }' "$B")
+awk -v d="$sep" 'BEGIN { exit !(d > 20 && d < 45) }' || fail "partial separation $sep Å"
+awk -F, 'NR > 1 { s1 += $15; s2 += $16; s3 += $17 } END { exit !(s1 == 6 && s2 == -6 && s3 == 0) }' "$B" \
+  || fail "sum of all three rows is not 2 × [3 -3 0]/6"
+grep -q "burgers_circuit" "$WORK/an/dump.0.lammpstrj" || fail "no burgers_circuit column in the dump"
+echo "ok: relaxed edge dislocation: a/2[1-10] = a/6[1-21] + a/6[2-1-1], partials $sep Å apart"
+
+# A circuit through given atom ids in the perfect crystal closes: b = 0.
+{
+  echo "fcc"; echo; echo "4 atoms"; echo "1 atom types"; echo
+  echo "0 3.615 xlo xhi"; echo "0 3.615 ylo yhi"; echo "0 3.615 zlo zhi"; echo
+  echo "Atoms # atomic"; echo
+  echo "1 1 0 0 0"; echo "2 1 1.8075 1.8075 0"; echo "3 1 1.8075 0 1.8075"; echo "4 1 0 1.8075 1.8075"
+} > "$WORK/fcc.data"
+"$SF" analyze atoms "$WORK/fcc.data" --burgers-ids 1,2,3 --burgers-ids 1,2,4,3 -o "$WORK/ids" > /dev/null
+awk -F, 'NR > 1 && $13 != "0" { bad++ } END { exit bad > 0 || NR != 3 }' "$WORK/ids/burgers.csv" \
+  || fail "id circuits in a perfect crystal: $(cat "$WORK/ids/burgers.csv")"
+echo "ok: id circuits in perfect fcc give 0"
+
+bad() {  # bad PATTERN ARGS...: exit 2, the message contains PATTERN, no output folder
+  local pattern="$1"; shift
+  set +e
+  "$SF" analyze atoms "$WORK/fcc.data" "$@" -o "$WORK/bad" > /dev/null 2> "$WORK/stderr"
+  local code=$?
+  set -e
+  [ $code -eq 2 ] || fail "exit $code for $*: $(cat "$WORK/stderr")"
+  grep -qF -- "$pattern" "$WORK/stderr" || fail "message for $* lacks '$pattern': $(cat "$WORK/stderr")"
+  [ ! -e "$WORK/bad" ] || fail "output left behind for $*"
+  echo "ok: $(head -c 150 "$WORK/stderr")"
+}
+bad "--burgers-line '1,2:0,0,1:5'" --burgers-line 1,2:0,0,1:5
+bad "the axis is the zero vector" --burgers-line 1,2,3:0,0,0:5
+bad "not orthogonal" --burgers-orient '1 0 0,1 1 0,0 0 1' --burgers-ids 1,2,3
+bad "needs --clusters" --burgers-clusters
+bad "no atom with id 9" --burgers-ids 1,2,9
+bad "not a finite number" --burgers-line 1,2,nan:0,0,1:5
