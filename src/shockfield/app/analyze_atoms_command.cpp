@@ -18,6 +18,7 @@
 
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/app/analyze_atoms_burgers.hpp"
+#include "shockfield/app/analyze_atoms_tracks.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/csv_writer.hpp"
@@ -42,6 +43,7 @@ struct AtomsArgs {
   std::string cluster_select;
   std::size_t cluster_min_size = 1;
   BurgersArgs burgers;
+  TrackArgs track;
   int threads = 0;
 };
 
@@ -318,6 +320,13 @@ void run_atoms(const AtomsArgs& a) {
   io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
   io::CsvWriter clusters;
   if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), kClusterColumns);
+  std::optional<TrackOutput> tracks;
+  fs::path tracks_file, growth_file;
+  if (a.track.track) {
+    tracks.emplace(a.track, analyses.clusters.has_value());
+    tracks_file = pending.add("tracks.csv");
+    growth_file = pending.add("growth.csv");
+  }
   std::optional<BurgersAnalysis> burgers;
   if (a.burgers.any()) {
     burgers.emplace(a.burgers, analyses.clusters.has_value());
@@ -348,6 +357,7 @@ void run_atoms(const AtomsArgs& a) {
         throw InputError(fmt::format("{}: the frame of timestep {} has no atoms", source, frame.timestep));
       const auto result = aa::analyze_structure(frame, analyses);
       append_columns(dumps[f], result, frame.size());
+      if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);
       if (burgers) burgers->analyze(frame_index, frame, result.clusters ? &*result.clusters : nullptr, dumps[f]);
       writer.write(dumps[f]);
       if (result.clusters) write_clusters(clusters, frame_index, frame.timestep, *result.clusters);
@@ -356,6 +366,7 @@ void run_atoms(const AtomsArgs& a) {
     }
   }
   if (burgers) burgers->close();
+  if (tracks) tracks->write(tracks_file, growth_file);
   pending.commit();
   std::printf("analysed %zu frames (%zu atoms) from %zu files; wrote %s/structures.csv and the annotated dumps\n",
               frame_index, total_atoms, files.size(), out_dir.string().c_str());
@@ -377,7 +388,8 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       "a data file becomes <stem>.dump), OUTPUT/structures.csv (frame, timestep, atoms, then per\n"
       "method the count and fraction of each structure) and, with --clusters, OUTPUT/clusters.csv\n"
       "(Xu et al. (2015) §4.4.2's central-moment method); with --burgers-*, OUTPUT/burgers.csv (Burgers\n"
-      "vectors of fcc dislocations by the Frank scheme of Xu et al. (2015) §3.2.3, FS/RH).\n"
+      "vectors of fcc dislocations by the Frank scheme of Xu et al. (2015) §3.2.3, FS/RH); with --track,\n"
+      "OUTPUT/tracks.csv and OUTPUT/growth.csv (clusters followed in time, growth laws, Fig 72).\n"
       "Inputs: LAMMPS text dumps (one file or several, frames in order; orthogonal boxes; .gz\n"
       "through gzip, written back uncompressed), LAMMPS data files (atom style atomic), shockfield\n"
       "MD run folders (their dumps/dump.*.lammpstrj in step order). Outputs appear only when every\n"
@@ -414,6 +426,7 @@ void add_analyze_atoms_command(CLI::App& analyze) {
   cmd->add_option("--cluster-min-size", a->cluster_min_size, "Drop clusters with fewer atoms")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  add_track_options(*cmd, a->track);
   add_burgers_options(*cmd, a->burgers);
   cmd->add_option("-j,--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
       ->check(CLI::NonNegativeNumber);

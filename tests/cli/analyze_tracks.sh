@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# `shockfield analyze atoms --track`: a dump series of a Cu crystal in which a disordered sphere
+# (atoms displaced at random by up to 0.45 Å, adaptive CNA "other") grows as R = 0.5 t^0.5 Å
+# (t in timesteps) must be one track whose fitted growth laws are L ~ t^0.5, A ~ t, V ~ t^1.5
+# (Xu et al. (2015) Fig 72). Tolerances: the random displacements decide which atoms at the
+# sphere's edge are "other" (a fraction of a shell either way); measured L 0.493, A 0.980,
+# V 1.479 with 6 frames; the bounds are ±0.04 on L, ±0.08 on A and ±0.12 on V (about five times
+# the measured deviation, for other random draws). Then bad options.
+source "$(dirname "$0")/lib.bash"
+set -e
+/usr/bin/python3 - "$WORK" <<'PY'
+import sys
+import numpy as np
+a, n = 3.615, 12
+cells = np.stack(np.meshgrid(*[np.arange(n)] * 3, indexing="ij"), -1).reshape(-1, 3)
+basis = np.array([[0, 0, 0], [.5, .5, 0], [.5, 0, .5], [0, .5, .5]])
+x = ((cells[:, None, :] + basis[None]).reshape(-1, 3) * a)
+L, c = n * a, np.full(3, n * a / 2)
+rng = np.random.default_rng(5)
+for t in (100, 200, 300, 500, 700, 1000):
+    r = 0.5 * np.sqrt(t)
+    inside = np.linalg.norm(x - c, axis=1) < r
+    y = x + inside[:, None] * rng.uniform(-0.45, 0.45, x.shape)
+    with open(f"{sys.argv[1]}/grow.{t}.dump", "w") as f:
+        f.write(f"ITEM: TIMESTEP\n{t}\nITEM: NUMBER OF ATOMS\n{len(y)}\nITEM: BOX BOUNDS pp pp pp\n")
+        f.write(f"0 {L}\n0 {L}\n0 {L}\nITEM: ATOMS id type x y z\n")
+        for i, p in enumerate(y, 1):
+            f.write(f"{i} 1 {p[0]:.6f} {p[1]:.6f} {p[2]:.6f}\n")
+PY
+files=()
+for t in 100 200 300 500 700 1000; do files+=("$WORK/grow.$t.dump"); done
+"$SF" analyze atoms "${files[@]}" --clusters 3.0 --cluster-select acna:other --cluster-min-size 20 --track \
+  --timestep-size 0.002 -o "$WORK/an" > "$WORK/stdout"
+grep -q "^track 1 (6 frames" "$WORK/stdout" || fail "track summary: $(cat "$WORK/stdout")"
+[ "$(awk -F, 'NR > 1 { print $1 }' "$WORK/an/tracks.csv" | sort -u)" = "1" ] || fail "more than one track: $(cat "$WORK/an/tracks.csv")"
+[ "$(wc -l < "$WORK/an/tracks.csv")" -eq 7 ] || fail "tracks.csv rows: $(cat "$WORK/an/tracks.csv")"
+awk -F, 'NR == 2 && ($4 < 0.19 || $4 > 0.21) { exit 1 }' "$WORK/an/tracks.csv" || fail "time column (100 × 0.002): $(sed -n 2p "$WORK/an/tracks.csv")"
+k() { awk -F, -v q="$1" '$2 == q { print $3 }' "$WORK/an/growth.csv"; }
+awk -v l="$(k L)" -v v="$(k V)" -v s="$(k A)" 'BEGIN { exit !(l > 0.46 && l < 0.54 && s > 0.92 && s < 1.08 && v > 1.38 && v < 1.62) }' \
+  || fail "growth exponents L $(k L) A $(k A) V $(k V)"
+grep -q " track" "$WORK/an/grow.1000.dump" || fail "no track column"
+echo "ok: one track, L ~ t^$(k L), A ~ t^$(k A), V ~ t^$(k V)"
+
+set +e
+"$SF" analyze atoms "$WORK/grow.100.dump" --track -o "$WORK/bad" > /dev/null 2> "$WORK/stderr"
+code=$?
+set -e
+[ $code -eq 2 ] && grep -q "needs --clusters" "$WORK/stderr" && [ ! -e "$WORK/bad" ] || fail "--track without --clusters: exit $code, $(cat "$WORK/stderr")"
+echo "ok: $(cat "$WORK/stderr")"
