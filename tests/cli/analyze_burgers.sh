@@ -32,6 +32,20 @@ awk -F, 'NR > 1 { s1 += $15; s2 += $16; s3 += $17 } END { exit !(s1 == 6 && s2 =
 grep -q "burgers_circuit" "$WORK/an/dump.0.lammpstrj" || fail "no burgers_circuit column in the dump"
 echo "ok: relaxed edge dislocation: a/2[1-10] = a/6[1-21] + a/6[2-1-1], partials $sep Å apart"
 
+# Excess energy and profiles on the same relaxed run: e0 (median pe of the fcc atoms) is Cu_u3's
+# cohesive energy −3.54 eV within the relaxed elastic field's 0.005 eV; across y (the glide-plane
+# normal) the hcp fraction is non-zero only in the bins of the two faulted (111) layers, the
+# fractions of each bin sum to 1, and the bins hold every atom.
+"$SF" analyze atoms "$WORK/relax" --excess-energy auto --profile y:2.087 -o "$WORK/prof" > "$WORK/stdout"
+e0=$(sed -n 's/.*e0 = \([-0-9.e]*\) eV.*/\1/p' "$WORK/stdout")
+awk -v e="$e0" 'BEGIN { exit !(e > -3.545 && e < -3.535) }' || fail "e0 = $e0: $(cat "$WORK/stdout")"
+P="$WORK/prof/profiles.csv"
+awk -F, 'NR > 1 { n += $7; s = $8 + $9 + $10 + $11 + $12; if ($7 > 0 && (s < 0.999999 || s > 1.000001)) bad++;
+                  if ($9 > 0 && ($6 < -3 || $6 > 4)) far++ }
+         END { exit !(n == 9556 && bad == 0 && far == 0) }' "$P" || fail "profiles.csv: $(head -3 "$P")"
+grep -q " excess$" <(sed -n 9p "$WORK/prof/dump.0.lammpstrj") || fail "no excess column"
+echo "ok: excess energy e0 = $e0 eV; hcp only in the faulted layers of the y profile"
+
 # A circuit through given atom ids in the perfect crystal closes: b = 0.
 {
   echo "fcc"; echo; echo "4 atoms"; echo "1 atom types"; echo
@@ -61,3 +75,8 @@ bad "not orthogonal" --burgers-orient '1 0 0,1 1 0,0 0 1' --burgers-ids 1,2,3
 bad "needs --clusters" --burgers-clusters
 bad "no atom with id 9" --burgers-ids 1,2,9
 bad "not a finite number" --burgers-line 1,2,nan:0,0,1:5
+bad "needs a per-atom potential energy column" --excess-energy auto
+bad "expected AXIS:WIDTH" --profile q:5
+bad "bin width must be a number > 0" --profile z:-1
+bad "is not a finite number" --profile z:abc
+bad "expected auto or a reference energy in eV): 'cohesive' is not a finite number" --excess-energy cohesive

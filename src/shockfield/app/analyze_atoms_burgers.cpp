@@ -7,6 +7,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "shockfield/app/option_values.hpp"
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::app {
@@ -14,34 +15,10 @@ namespace {
 
 namespace aa = shockfield::analysis::atoms;
 
-// Splits on `sep`, keeping empty fields (so that "1,,2" is an error, not "1,2").
-std::vector<std::string> split(const std::string& text, char sep) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(text);
-  while (std::getline(in, part, sep)) parts.push_back(part);
-  if (!text.empty() && text.back() == sep) parts.emplace_back();
-  return parts;
-}
-
-double number(const std::string& text, const std::string& what) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  const auto rest = text.find_first_not_of(" ", used);
-  if (used == 0 || rest != std::string::npos || !std::isfinite(v))
-    throw InputError(fmt::format("{}: '{}' is not a finite number", what, text));
-  return v;
-}
-
 Vec3 vector3(const std::string& text, const std::string& what) {
-  const auto parts = split(text, ',');
+  const auto parts = split_fields(text, ',');
   if (parts.size() != 3) throw InputError(fmt::format("{}: expected three numbers x,y,z, got '{}'", what, text));
-  return {number(parts[0], what), number(parts[1], what), number(parts[2], what)};
+  return {finite_number(parts[0], what), finite_number(parts[1], what), finite_number(parts[2], what)};
 }
 
 // The median nearest-neighbour distance × √2: the fcc lattice constant of a mostly fcc frame.
@@ -93,7 +70,7 @@ void add_burgers_options(CLI::App& cmd, BurgersArgs& a) {
 BurgersAnalysis::BurgersAnalysis(const BurgersArgs& args, bool clusters_on) : args_(args) {
   if (args.around_clusters && !clusters_on)
     throw InputError("--burgers-clusters needs --clusters and --cluster-select (which defect atoms form the lines)");
-  const auto rows = split(args.orient, ',');
+  const auto rows = split_fields(args.orient, ',');
   if (rows.size() != 3) throw InputError(fmt::format("--burgers-orient: expected 'i j k,i j k,i j k', got '{}'", args.orient));
   for (int d = 0; d < 3; ++d) {
     std::istringstream in(rows[static_cast<std::size_t>(d)]);
@@ -106,10 +83,10 @@ BurgersAnalysis::BurgersAnalysis(const BurgersArgs& args, bool clusters_on) : ar
   aa::CrystalFrame::from_orient(orient_, args.lattice.value_or(1.0), "--burgers-orient");  // validates now
   for (const std::string& line : args.lines) {
     const std::string what = fmt::format("--burgers-line '{}'", line);
-    const auto parts = split(line, ':');
+    const auto parts = split_fields(line, ':');
     if (parts.size() != 3) throw InputError(what + ": expected x,y,z:ax,ay,az:radius");
     const Vec3 axis = vector3(parts[1], what);
-    const double radius = number(parts[2], what);
+    const double radius = finite_number(parts[2], what);
     if (!(axis.norm() > 0)) throw InputError(what + ": the axis is the zero vector");
     if (!(radius > 0)) throw InputError(what + ": the radius must be > 0");
     line_points_.emplace_back(vector3(parts[0], what), axis);
@@ -117,8 +94,8 @@ BurgersAnalysis::BurgersAnalysis(const BurgersArgs& args, bool clusters_on) : ar
   }
   for (const std::string& ids : args.id_circuits) {
     std::vector<std::int64_t> circuit;
-    for (const std::string& id : split(ids, ',')) {
-      const double v = number(id, fmt::format("--burgers-ids '{}'", ids));
+    for (const std::string& id : split_fields(ids, ',')) {
+      const double v = finite_number(id, fmt::format("--burgers-ids '{}'", ids));
       if (v != std::floor(v) || std::abs(v) > 9e15) throw InputError(fmt::format("--burgers-ids '{}': '{}' is not an atom id", ids, id));
       circuit.push_back(static_cast<std::int64_t>(v));
     }

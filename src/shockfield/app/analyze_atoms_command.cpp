@@ -18,6 +18,7 @@
 
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/app/analyze_atoms_burgers.hpp"
+#include "shockfield/app/analyze_atoms_profiles.hpp"
 #include "shockfield/app/analyze_atoms_tracks.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
@@ -44,6 +45,7 @@ struct AtomsArgs {
   std::size_t cluster_min_size = 1;
   BurgersArgs burgers;
   TrackArgs track;
+  ProfileArgs profile;
   int threads = 0;
 };
 
@@ -320,6 +322,8 @@ void run_atoms(const AtomsArgs& a) {
   io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
   io::CsvWriter clusters;
   if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), kClusterColumns);
+  ProfileOutput profiles(a.profile, analyses);
+  if (profiles.profiles()) profiles.open(pending.add("profiles.csv"));
   std::optional<TrackOutput> tracks;
   fs::path tracks_file, growth_file;
   if (a.track.track) {
@@ -346,6 +350,7 @@ void run_atoms(const AtomsArgs& a) {
     if (input.kind == InputKind::data) {
       const io::DataFile data = io::read_data(input.path, boundary);
       dumps.push_back(io::make_dump_frame(0, data.box, data.atoms, {"id", "type", "x", "y", "z"}));
+      dumps.back().source = source;  // messages about the frame name the data file
       frames.push_back(frame_of_data(data, source));
     } else {
       dumps = read_dump_file(input.path);
@@ -357,6 +362,7 @@ void run_atoms(const AtomsArgs& a) {
         throw InputError(fmt::format("{}: the frame of timestep {} has no atoms", source, frame.timestep));
       const auto result = aa::analyze_structure(frame, analyses);
       append_columns(dumps[f], result, frame.size());
+      if (profiles.profiles() || profiles.excess()) profiles.add(frame_index, frame, result, dumps[f]);
       if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);
       if (burgers) burgers->analyze(frame_index, frame, result.clusters ? &*result.clusters : nullptr, dumps[f]);
       writer.write(dumps[f]);
@@ -366,6 +372,7 @@ void run_atoms(const AtomsArgs& a) {
     }
   }
   if (burgers) burgers->close();
+  profiles.close();
   if (tracks) tracks->write(tracks_file, growth_file);
   pending.commit();
   std::printf("analysed %zu frames (%zu atoms) from %zu files; wrote %s/structures.csv and the annotated dumps\n",
@@ -426,6 +433,7 @@ void add_analyze_atoms_command(CLI::App& analyze) {
   cmd->add_option("--cluster-min-size", a->cluster_min_size, "Drop clusters with fewer atoms")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  add_profile_options(*cmd, a->profile);
   add_track_options(*cmd, a->track);
   add_burgers_options(*cmd, a->burgers);
   cmd->add_option("-j,--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
