@@ -20,6 +20,7 @@
 #include "shockfield/app/analyze_atoms_burgers.hpp"
 #include "shockfield/app/analyze_atoms_profiles.hpp"
 #include "shockfield/app/analyze_atoms_tracks.hpp"
+#include "shockfield/app/analyze_atoms_voids.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/csv_writer.hpp"
@@ -46,6 +47,7 @@ struct AtomsArgs {
   BurgersArgs burgers;
   TrackArgs track;
   ProfileArgs profile;
+  VoidArgs voids;
   int threads = 0;
 };
 
@@ -322,6 +324,7 @@ void run_atoms(const AtomsArgs& a) {
   io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
   io::CsvWriter clusters;
   if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), kClusterColumns);
+  VoidOutput voids(a.voids, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
   ProfileOutput profiles(a.profile, analyses);
   if (profiles.profiles()) profiles.open(pending.add("profiles.csv"));
   std::optional<TrackOutput> tracks;
@@ -363,6 +366,7 @@ void run_atoms(const AtomsArgs& a) {
       const auto result = aa::analyze_structure(frame, analyses);
       append_columns(dumps[f], result, frame.size());
       if (profiles.profiles() || profiles.excess()) profiles.add(frame_index, frame, result, dumps[f]);
+      if (voids.on()) voids.add(frame_index, frame);
       if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);
       if (burgers) burgers->analyze(frame_index, frame, result.clusters ? &*result.clusters : nullptr, dumps[f]);
       writer.write(dumps[f]);
@@ -373,10 +377,12 @@ void run_atoms(const AtomsArgs& a) {
   }
   if (burgers) burgers->close();
   profiles.close();
+  voids.close();
   if (tracks) tracks->write(tracks_file, growth_file);
   pending.commit();
   std::printf("analysed %zu frames (%zu atoms) from %zu files; wrote %s/structures.csv and the annotated dumps\n",
               frame_index, total_atoms, files.size(), out_dir.string().c_str());
+  if (voids.on()) std::printf("%zu voids in %s/voids.csv\n", voids.voids(), out_dir.string().c_str());
   if (burgers) std::printf("%zu Burgers circuits in %s/burgers.csv\n", burgers->circuits(), out_dir.string().c_str());
 }
 
@@ -434,6 +440,7 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   add_profile_options(*cmd, a->profile);
+  add_void_options(*cmd, a->voids);
   add_track_options(*cmd, a->track);
   add_burgers_options(*cmd, a->burgers);
   cmd->add_option("-j,--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")

@@ -42,81 +42,86 @@ P3 triangle_circumcentre(const P3& v0, const P3& v1, const P3& v2) {
   return add_scaled(v0, cross(w, n), 0.5 / dot(n, n));
 }
 
-}  // namespace
-
-TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius) {
-  if (!(radius > 0.0) || !std::isfinite(radius))
-    throw InputError(fmt::format("rolling-ball radius must be a positive finite length, got {}", radius));
-  const auto& S = d.simplices;
-  const auto& X = d.points;
-  const std::size_t ns = S.size();
-  std::vector<P3> centre(ns);
-  for (std::size_t t = 0; t < ns; ++t)
-    centre[t] = tet_circumcentre(X[S[t][0]], X[S[t][1]], X[S[t][2]], X[S[t][3]]);
-  auto circumradius = [&](std::size_t t) { return std::sqrt(dot(sub(centre[t], X[S[t][0]]), sub(centre[t], X[S[t][0]]))); };
-  // Face i of tet t, ordered so that its normal points out of t (orient(face, v_i) > 0 means
-  // the right-hand normal of the face points away from v_i).
-  auto outward_face = [&](std::size_t t, int i) {
+// The ball's moves over one division: circumcentres of the tetrahedra and whether a ball of
+// radius r passes a face.
+class BallPassage {
+ public:
+  BallPassage(const DelaunayDivision<3>& d, double radius) : d_(d), radius_(radius), centre_(d.simplices.size()) {
+    if (!(radius > 0.0) || !std::isfinite(radius))
+      throw InputError(fmt::format("rolling-ball radius must be a positive finite length, got {}", radius));
+    const auto& S = d.simplices;
+    const auto& X = d.points;
+    for (std::size_t t = 0; t < S.size(); ++t)
+      centre_[t] = tet_circumcentre(X[S[t][0]], X[S[t][1]], X[S[t][2]], X[S[t][3]]);
+  }
+  double circumradius(std::size_t t) const {
+    const P3 r = sub(centre_[t], d_.points[d_.simplices[t][0]]);
+    return std::sqrt(dot(r, r));
+  }
+  /// Face i of tet t, ordered so that its normal points out of t (orient(face, v_i) > 0 means the
+  /// right-hand normal of the face points away from v_i).
+  std::array<std::int32_t, 3> outward_face(std::size_t t, int i) const {
+    const auto& X = d_.points;
     std::array<std::int32_t, 3> f;
     for (int j = 0, r = 0; j < 4; ++j)
-      if (j != i) f[r++] = S[t][j];
-    if (orient<3>({X[f[0]].data(), X[f[1]].data(), X[f[2]].data(), X[S[t][i]].data()}) < 0)
+      if (j != i) f[r++] = d_.simplices[t][j];
+    if (orient<3>({X[f[0]].data(), X[f[1]].data(), X[f[2]].data(), X[d_.simplices[t][i]].data()}) < 0)
       std::swap(f[1], f[2]);
     return f;
-  };
-  // Can a ball of radius r move through face i of t (to its neighbour, or to infinity)? The
-  // Voronoi edge of the face runs along its normal through the face's circumcentre q.
-  auto passable = [&](std::size_t t, int i) {
+  }
+  /// Can the ball move through face i of t (to its neighbour, or to infinity)? The Voronoi edge of
+  /// the face runs along its normal through the face's circumcentre q.
+  bool passable(std::size_t t, int i) const {
+    const auto& X = d_.points;
     const auto f = outward_face(t, i);
     const P3 q = triangle_circumcentre(X[f[0]], X[f[1]], X[f[2]]);
     const double rho = std::sqrt(dot(sub(q, X[f[0]]), sub(q, X[f[0]])));
     const P3 nu = cross(sub(X[f[1]], X[f[0]]), sub(X[f[2]], X[f[0]]));  // out of t
-    const double ht = dot(sub(centre[t], q), nu);
-    const std::int32_t n = d.neighbours[t][i];
-    const double hn = n < 0 ? INFINITY : dot(sub(centre[n], q), nu);
+    const double ht = dot(sub(centre_[t], q), nu);
+    const std::int32_t n = d_.neighbours[t][i];
+    const double hn = n < 0 ? INFINITY : dot(sub(centre_[n], q), nu);
     const bool crosses_plane = std::min(ht, hn) <= 0.0 && std::max(ht, hn) >= 0.0;
-    const double least = crosses_plane ? rho
-                                       : std::min(circumradius(t), n < 0 ? INFINITY : circumradius(n));
-    return least > radius;
-  };
-  // The exterior E: flood from infinity (the hull faces) through passable faces.
-  std::vector<char> exterior(ns, 0);
-  std::vector<std::int32_t> stack;
-  for (std::size_t t = 0; t < ns; ++t)
-    for (int i = 0; i < 4; ++i)
-      if (d.neighbours[t][i] < 0 && !exterior[t] && passable(t, i)) {
-        exterior[t] = 1;
-        stack.push_back(static_cast<std::int32_t>(t));
-      }
-  while (!stack.empty()) {
-    const std::int32_t t = stack.back();
-    stack.pop_back();
-    for (int i = 0; i < 4; ++i) {
-      const std::int32_t n = d.neighbours[t][i];
-      if (n >= 0 && !exterior[n] && passable(t, i)) {
-        exterior[n] = 1;
-        stack.push_back(n);
+    const double least = crosses_plane ? rho : std::min(circumradius(t), n < 0 ? INFINITY : circumradius(n));
+    return least > radius_;
+  }
+  /// Marks with `label` every cell a ball reaches from the cells already on `stack`.
+  void flood(std::vector<std::int32_t>& stack, std::vector<std::int32_t>& region, std::int32_t label) const {
+    while (!stack.empty()) {
+      const std::int32_t t = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 4; ++i) {
+        const std::int32_t n = d_.neighbours[t][i];
+        if (n >= 0 && region[n] == kNone && passable(t, i)) {
+          region[n] = label;
+          stack.push_back(n);
+        }
       }
     }
   }
-  // Faces where a ball of E is stopped, normal towards E.
-  TriangleSurface s;
-  s.points = X;
-  for (std::size_t t = 0; t < ns; ++t)
-    for (int i = 0; i < 4; ++i) {
-      const std::int32_t n = d.neighbours[t][i];
-      if (n >= 0 && n < static_cast<std::int32_t>(t)) continue;  // each face once
-      const bool in_t = exterior[t], in_n = n < 0 || exterior[n];
-      if (!in_t && !in_n) continue;
-      const bool open = passable(t, i);
-      auto f = outward_face(t, i);  // normal towards n
-      if (in_n && (!in_t || !open)) s.triangles.push_back(f);
-      if (in_t && (!in_n || !open)) s.triangles.push_back({f[0], f[2], f[1]});
-    }
-  if (s.triangles.empty())
-    throw InputError(fmt::format("a ball of radius {} passes between the points everywhere and "
-                                 "touches no surface: give a larger radius",
-                                 radius));
+  /// The exterior (label 0): the cells reached from infinity through the hull faces; the others kNone.
+  std::vector<std::int32_t> exterior() const {
+    std::vector<std::int32_t> region(d_.simplices.size(), kNone);
+    std::vector<std::int32_t> stack;
+    for (std::size_t t = 0; t < region.size(); ++t)
+      for (int i = 0; i < 4; ++i)
+        if (d_.neighbours[t][i] < 0 && region[t] == kNone && passable(t, i)) {
+          region[t] = 0;
+          stack.push_back(static_cast<std::int32_t>(t));
+        }
+    flood(stack, region, 0);
+    return region;
+  }
+  static constexpr std::int32_t kNone = -1;
+
+ private:
+  const DelaunayDivision<3>& d_;
+  double radius_;
+  std::vector<P3> centre_;
+};
+
+// Area, enclosed volume, Euler characteristic and edge-manifoldness of the triangles.
+void measure(TriangleSurface& s) {
+  const auto& X = s.points;
   std::map<std::pair<std::int32_t, std::int32_t>, int> directed;
   std::vector<char> used(X.size(), 0);
   for (const auto& f : s.triangles) {
@@ -140,7 +145,85 @@ TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius
   const auto vertices = std::count(used.begin(), used.end(), 1);
   s.euler_characteristic = static_cast<std::int64_t>(vertices) - static_cast<std::int64_t>(edges) +
                            static_cast<std::int64_t>(s.triangles.size());
+}
+
+// Solid angle at vertex p of the tetrahedron (p, a, b, c) (Van Oosterom & Strackee 1983):
+// tan(ω/2) = |A·(B×C)| / (|A||B||C| + (A·B)|C| + (A·C)|B| + (B·C)|A|), A = a − p, ...
+double vertex_solid_angle(const P3& p, const P3& a, const P3& b, const P3& c) {
+  const P3 A = sub(a, p), B = sub(b, p), C = sub(c, p);
+  const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B)), lc = std::sqrt(dot(C, C));
+  const double denominator = la * lb * lc + dot(A, B) * lc + dot(A, C) * lb + dot(B, C) * la;
+  return 2.0 * std::atan2(std::abs(dot(A, cross(B, C))), denominator);
+}
+
+}  // namespace
+
+TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius) {
+  const BallPassage ball(d, radius);
+  const std::vector<std::int32_t> region = ball.exterior();
+  // Faces where a ball of E is stopped, normal towards E.
+  TriangleSurface s;
+  s.points = d.points;
+  for (std::size_t t = 0; t < d.simplices.size(); ++t)
+    for (int i = 0; i < 4; ++i) {
+      const std::int32_t n = d.neighbours[t][i];
+      if (n >= 0 && n < static_cast<std::int32_t>(t)) continue;  // each face once
+      const bool in_t = region[t] == 0, in_n = n < 0 || region[n] == 0;
+      if (!in_t && !in_n) continue;
+      const bool open = ball.passable(t, i);
+      auto f = ball.outward_face(t, i);  // normal towards n
+      if (in_n && (!in_t || !open)) s.triangles.push_back(f);
+      if (in_t && (!in_n || !open)) s.triangles.push_back({f[0], f[2], f[1]});
+    }
+  if (s.triangles.empty())
+    throw InputError(fmt::format("a ball of radius {} passes between the points everywhere and "
+                                 "touches no surface: give a larger radius",
+                                 radius));
+  measure(s);
   return s;
+}
+
+std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double radius) {
+  const BallPassage ball(d, radius);
+  std::vector<std::int32_t> region = ball.exterior();
+  std::vector<Cavity> cavities;
+  std::vector<std::int32_t> stack;
+  for (std::size_t t = 0; t < region.size(); ++t) {
+    if (region[t] != BallPassage::kNone || !(ball.circumradius(t) > radius)) continue;
+    const auto label = static_cast<std::int32_t>(cavities.size()) + 1;
+    region[t] = label;
+    stack.push_back(static_cast<std::int32_t>(t));
+    ball.flood(stack, region, label);
+    cavities.emplace_back();
+  }
+  for (Cavity& c : cavities) c.surface.points = d.points;
+  for (std::size_t t = 0; t < region.size(); ++t) {
+    if (region[t] <= 0) continue;
+    Cavity& c = cavities[static_cast<std::size_t>(region[t] - 1)];
+    ++c.cells;
+    const double v = simplex_volume<3>(d, t);
+    for (int k = 0; k < 3; ++k) {
+      double mean = 0;
+      for (int j = 0; j < 4; ++j) mean += 0.25 * d.points[d.simplices[t][j]][k];
+      c.centroid[k] += v * mean;
+    }
+    c.cell_volume += v;
+    const auto& q = d.simplices[t];
+    for (int j = 0; j < 4; ++j)
+      c.vertex_solid_angle += vertex_solid_angle(d.points[q[j]], d.points[q[(j + 1) % 4]], d.points[q[(j + 2) % 4]],
+                                                 d.points[q[(j + 3) % 4]]);
+    for (int i = 0; i < 4; ++i) {  // faces where the ball is stopped, normal out of the cavity
+      const std::int32_t n = d.neighbours[t][i];
+      if (n >= 0 && region[n] == region[t] && ball.passable(t, i)) continue;
+      c.surface.triangles.push_back(ball.outward_face(t, i));
+    }
+  }
+  for (Cavity& c : cavities) {
+    for (double& x : c.centroid) x /= c.cell_volume;
+    measure(c.surface);
+  }
+  std::stable_sort(cavities.begin(), cavities.end(), [](const Cavity& a, const Cavity& b) { return a.cell_volume > b.cell_volume; });
+  return cavities;
 }
 
 }  // namespace shockfield::geometry

@@ -29,6 +29,28 @@ struct TriangleSurface {
   bool manifold = false;
 };
 
+/// A cavity: a set of tetrahedra where a ball of the radius can sit and move, not reachable from
+/// outside — a void inside the point set (a vacancy cluster, a void in a crystal). Its surface
+/// is where the ball is stopped (the triangles of the atoms it touches), normals out of the
+/// cavity, so `surface.volume` is the cavity's volume (the polyhedron through the centres of the
+/// atoms around it, equal to `cell_volume`).
+struct Cavity {
+  TriangleSurface surface;
+  std::size_t cells = 0;
+  double cell_volume = 0.0;                  ///< sum of the cavity's tetrahedra
+  std::array<double, 3> centroid{0, 0, 0};  ///< volume-weighted
+  /// Σ over the cavity's tetrahedra of the solid angles at their vertices (sr): ω_i/4π of the
+  /// space around point i is cavity, so Σ_i Ω_i ω_i/4π is the share of the surrounding points'
+  /// own (Voronoi) volumes Ω_i inside the cavity's polyhedron.
+  double vertex_solid_angle = 0.0;
+};
+
+/// Every cavity of a ball of radius `radius`, largest first: the connected sets (through faces the
+/// ball passes) of tetrahedra with circumradius > radius that the ball cannot reach from outside.
+/// InputError for a radius that is not positive and finite. A cavity open to the outside (through
+/// the convex hull) is part of the exterior and not listed.
+std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double radius);
+
 /// The surface touched by a ball of radius `radius` rolled from outside. Throws InputError for a
 /// radius that is not positive and finite, and when the ball passes everywhere between the points
 /// (no surface: the radius is too small for the point spacing).

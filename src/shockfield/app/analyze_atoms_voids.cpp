@@ -1,0 +1,73 @@
+#include "shockfield/app/analyze_atoms_voids.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/geometry/delaunay.hpp"
+#include "shockfield/geometry/delaunay_output.hpp"
+#include "shockfield/geometry/rolling_ball.hpp"
+
+namespace shockfield::app {
+
+void add_void_options(CLI::App& cmd, VoidArgs& a) {
+  cmd.add_option("--voids", a.probe,
+                 "Voids: the cavities of the atoms' Delaunay division for a ball of this radius (Å; larger than the "
+                 "crystal's interstitial holes, e.g. 0.6 a for fcc), regions the ball moves in without reaching the "
+                 "outside; writes OUTPUT/voids.csv (per frame and void: volume and area of the surface through "
+                 "the centres of the atoms around it, centre, equivalent radius) and OUTPUT/voids_<timestep>.vtp")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--voids-atomic-volume", a.atomic_volume,
+                 "Volume per atom of the crystal (Å³) for the voids' missing_volume; default: (box volume − the voids' "
+                 "volumes) / atoms, right for a periodic box (give it for a sample with free surfaces)")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--voids-min-volume", a.min_volume, "Leave out voids smaller than this (Å³; a vacancy is about one atomic volume)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+}
+
+VoidOutput::VoidOutput(const VoidArgs& args, std::function<std::filesystem::path(const std::filesystem::path&)> add_file)
+    : args_(args), add_file_(std::move(add_file)) {
+  if (!on()) return;
+  csv_ = io::CheckedOutput(add_file_("voids.csv"));
+  csv_.write("frame,timestep,void,cells,volume,area,equivalent_radius,missing_volume,missing_radius,x,y,z,surface_atoms,euler_characteristic,manifold\n");
+}
+
+void VoidOutput::add(std::size_t frame_index, const analysis::atoms::AtomFrame& frame) {
+  std::vector<std::array<double, 3>> points(frame.size());
+  for (std::size_t i = 0; i < frame.size(); ++i) points[i] = {frame.positions[i].x(), frame.positions[i].y(), frame.positions[i].z()};
+  const auto division = geometry::delaunay_division<3>(std::move(points), fmt::format("the atoms of timestep {}", frame.timestep));
+  const auto cavities = geometry::rolling_ball_cavities(division, *args_.probe);
+  double cavity_volume = 0;
+  for (const geometry::Cavity& c : cavities) cavity_volume += c.surface.volume;
+  const double omega = args_.atomic_volume.value_or((frame.box.volume() - cavity_volume) / static_cast<double>(frame.size()));
+  std::vector<std::array<std::int32_t, 3>> triangles;
+  std::size_t number = 0;
+  for (const geometry::Cavity& c : cavities) {
+    if (c.surface.volume < args_.min_volume) continue;
+    std::vector<char> on_surface(division.points.size(), 0);
+    for (const auto& t : c.surface.triangles)
+      for (std::int32_t v : t) on_surface[static_cast<std::size_t>(v)] = 1;
+    // The missing atoms' volume: the polyhedron less the surface atoms' own cells' share in it.
+    const double missing = c.surface.volume - omega * c.vertex_solid_angle / (4.0 * std::numbers::pi);
+    auto radius = [](double v) { return std::cbrt(3.0 * std::max(v, 0.0) / (4.0 * std::numbers::pi)); };
+    csv_ << fmt::format("{},{},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{},{}\n", frame_index,
+                        frame.timestep, ++number, c.cells, c.surface.volume, c.surface.area, radius(c.surface.volume),
+                        missing, radius(missing), c.centroid[0], c.centroid[1], c.centroid[2],
+                        std::count(on_surface.begin(), on_surface.end(), 1), c.surface.euler_characteristic,
+                        c.surface.manifold ? 1 : 0);
+    triangles.insert(triangles.end(), c.surface.triangles.begin(), c.surface.triangles.end());
+  }
+  csv_.flush();
+  voids_ += number;
+  geometry::write_surface_vtp(add_file_(fmt::format("voids_{}.vtp", frame.timestep)), division.points, triangles);
+}
+
+void VoidOutput::close() {
+  if (csv_.is_open()) csv_.close();
+}
+
+}  // namespace shockfield::app
