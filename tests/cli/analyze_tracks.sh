@@ -8,24 +8,17 @@
 # the measured deviation, for other random draws). Then bad options.
 source "$(dirname "$0")/lib.bash"
 set -e
-/usr/bin/python3 - "$WORK" <<'PY'
+/usr/bin/python3 - "$WORK" "$ROOT/tests/cli" <<'PY'
 import sys
 import numpy as np
+sys.path.insert(0, sys.argv[2])
+from fcc_frames import fcc_sites, write_dump
 a, n = 3.615, 12
-cells = np.stack(np.meshgrid(*[np.arange(n)] * 3, indexing="ij"), -1).reshape(-1, 3)
-basis = np.array([[0, 0, 0], [.5, .5, 0], [.5, 0, .5], [0, .5, .5]])
-x = ((cells[:, None, :] + basis[None]).reshape(-1, 3) * a)
-L, c = n * a, np.full(3, n * a / 2)
+x, L = fcc_sites(a, n), n * a
 rng = np.random.default_rng(5)
 for t in (100, 200, 300, 500, 700, 1000):
-    r = 0.5 * np.sqrt(t)
-    inside = np.linalg.norm(x - c, axis=1) < r
-    y = x + inside[:, None] * rng.uniform(-0.45, 0.45, x.shape)
-    with open(f"{sys.argv[1]}/grow.{t}.dump", "w") as f:
-        f.write(f"ITEM: TIMESTEP\n{t}\nITEM: NUMBER OF ATOMS\n{len(y)}\nITEM: BOX BOUNDS pp pp pp\n")
-        f.write(f"0 {L}\n0 {L}\n0 {L}\nITEM: ATOMS id type x y z\n")
-        for i, p in enumerate(y, 1):
-            f.write(f"{i} 1 {p[0]:.6f} {p[1]:.6f} {p[2]:.6f}\n")
+    inside = np.linalg.norm(x - L / 2, axis=1) < 0.5 * np.sqrt(t)
+    write_dump(f"{sys.argv[1]}/grow.{t}.dump", x + inside[:, None] * rng.uniform(-0.45, 0.45, x.shape), L, t)
 PY
 files=()
 for t in 100 200 300 500 700 1000; do files+=("$WORK/grow.$t.dump"); done

@@ -8,21 +8,15 @@
 # by 0.24 Å: its missing volume is 9% below the removed atoms' (bounds 80-100%). Then bad input.
 source "$(dirname "$0")/lib.bash"
 set -e
-/usr/bin/python3 - "$WORK" <<'PY'
+/usr/bin/python3 - "$WORK" "$ROOT/tests/cli" <<'PY'
 import sys
 import numpy as np
+sys.path.insert(0, sys.argv[2])
+from fcc_frames import fcc_sites, write_dump
 a, n = 3.615, 8
-cells = np.stack(np.meshgrid(*[np.arange(n)] * 3, indexing="ij"), -1).reshape(-1, 3)
-basis = np.array([[0, 0, 0], [.5, .5, 0], [.5, 0, .5], [0, .5, .5]])
-x = (cells[:, None, :] + basis[None]).reshape(-1, 3) * a
-L = n * a
+x, L = fcc_sites(a, n), n * a
 for R in (6, 8, 10):
-    keep = np.linalg.norm(x - L / 2, axis=1) > R
-    with open(f"{sys.argv[1]}/void{R}.dump", "w") as f:
-        f.write(f"ITEM: TIMESTEP\n{R}\nITEM: NUMBER OF ATOMS\n{keep.sum()}\nITEM: BOX BOUNDS pp pp pp\n")
-        f.write(f"0 {L}\n0 {L}\n0 {L}\nITEM: ATOMS id type x y z\n")
-        for i, p in enumerate(x[keep], 1):
-            f.write(f"{i} 1 {p[0]:.8f} {p[1]:.8f} {p[2]:.8f}\n")
+    write_dump(f"{sys.argv[1]}/void{R}.dump", x[np.linalg.norm(x - L / 2, axis=1) > R], L, R)
 PY
 "$SF" analyze atoms "$WORK/void6.dump" "$WORK/void8.dump" "$WORK/void10.dump" --voids 2.17 -o "$WORK/v" > "$WORK/stdout"
 grep -q "^3 voids in" "$WORK/stdout" || fail "void count: $(cat "$WORK/stdout")"
