@@ -136,10 +136,10 @@ class Run:
         """profiles.csv (md), else profiles/index.csv (pd, dbm: one profile file per row)."""
         return self.table("profiles" if (self.folder / "profiles.csv").is_file() else "profiles/index")
 
-    def frames(self):
+    def frames(self, array=""):
         """Iterates over the run's frames in time order: the grid fields of its .pvd series of .vti
-        files (mpm, dbm, phasefield) or its LAMMPS dumps (md, granular). InputError when it has
-        neither."""
+        files (mpm, dbm, phasefield; ``array`` names the data array, default the first) or its
+        LAMMPS dumps (md, granular). InputError when it has neither."""
         dumps = sorted(self.folder.glob("dumps/*.lammpstrj"), key=_step_of) or sorted(
             self.folder.glob("*.lammpstrj"), key=_step_of)
         if dumps:
@@ -157,7 +157,7 @@ class Run:
         if not series:
             raise InputError(f"{self.folder}: this {self.method} run has no dumps and no .pvd of .vti fields")
         for time, file in core.read_series(str(series[0])):
-            values, _, spacing, origin = core.read_field(file, "")
+            values, _, spacing, origin = core.read_field(file, array)
             yield Frame(time=time, data=values, file=file, extra={"spacing": spacing, "origin": origin})
 
     def __repr__(self):
