@@ -1,6 +1,6 @@
 # The Python side (docs/python.md): the `shockfield` package (python/shockfield, pure Python plus
 # the pybind11 module shockfield._core built from the same library) and the plot helpers
-# (python/shockfield_plot). The package is assembled in BUILD/python (PYTHONPATH for the tests)
+# (python/shockfield_plot). Both are assembled in BUILD/python (PYTHONPATH for the tests)
 # and installed to SHOCKFIELD_PYTHON_INSTALL_DIR under the prefix.
 #
 # Which Python: Debian's /usr/bin/python3 when it exists (it sees Debian's numpy), else python3
@@ -30,11 +30,11 @@ set(SHOCKFIELD_PYTHON_INSTALL_DIR "${shockfield_python_dir}" CACHE STRING
   "Where the Python packages go, relative to the install prefix")
 
 set(SHOCKFIELD_PYTHON_BUILD_DIR ${CMAKE_BINARY_DIR}/python)
-file(GLOB shockfield_python_files CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/python/shockfield/*.py
-  ${CMAKE_SOURCE_DIR}/python/shockfield/*.pyi ${CMAKE_SOURCE_DIR}/python/shockfield/py.typed)
+file(GLOB_RECURSE shockfield_python_files CONFIGURE_DEPENDS RELATIVE ${CMAKE_SOURCE_DIR}/python
+  ${CMAKE_SOURCE_DIR}/python/shockfield/*.py ${CMAKE_SOURCE_DIR}/python/shockfield/*.pyi
+  ${CMAKE_SOURCE_DIR}/python/shockfield/py.typed ${CMAKE_SOURCE_DIR}/python/shockfield_plot/*.py)
 foreach(file ${shockfield_python_files})
-  get_filename_component(name ${file} NAME)
-  configure_file(${file} ${SHOCKFIELD_PYTHON_BUILD_DIR}/shockfield/${name} COPYONLY)
+  configure_file(${CMAKE_SOURCE_DIR}/python/${file} ${SHOCKFIELD_PYTHON_BUILD_DIR}/${file} COPYONLY)
 endforeach()
 
 set(SHOCKFIELD_PYTHON_MODULE OFF)
@@ -62,11 +62,16 @@ if(SHOCKFIELD_PYTHON_MODULE)
   list(TRANSFORM shockfield_python_library_sources PREPEND ${CMAKE_SOURCE_DIR}/src/shockfield/analysis/)
   list(TRANSFORM shockfield_python_library_sources APPEND .cpp)
   file(GLOB shockfield_binding_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/python/src/*.cpp)
-  pybind11_add_module(shockfield_python MODULE ${shockfield_binding_sources} ${shockfield_python_library_sources})
+  # NO_EXTRAS: no LTO (the library is built without it, and its serial link is slow on CI).
+  pybind11_add_module(shockfield_python MODULE NO_EXTRAS ${shockfield_binding_sources} ${shockfield_python_library_sources})
   target_include_directories(shockfield_python PRIVATE ${CMAKE_SOURCE_DIR}/src)
   target_compile_definitions(shockfield_python PRIVATE SHOCKFIELD_VERSION="${PROJECT_VERSION}")
   target_link_libraries(shockfield_python PRIVATE OpenMP::OpenMP_CXX fmt::fmt PkgConfig::FFTW3 shockfield_warnings)
-  set_target_properties(shockfield_python PROPERTIES OUTPUT_NAME _core
+  # Hidden symbols and no semantic interposition: calls inside the analysis sources stay direct
+  # and inlinable, as in the (non-PIC) library.
+  target_compile_options(shockfield_python PRIVATE -fno-semantic-interposition)
+  set_target_properties(shockfield_python PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
+    OUTPUT_NAME _core
     LIBRARY_OUTPUT_DIRECTORY ${SHOCKFIELD_PYTHON_BUILD_DIR}/shockfield)
   set_property(SOURCE ${CMAKE_SOURCE_DIR}/src/shockfield/app/version_text.cpp APPEND PROPERTY COMPILE_DEFINITIONS
     "SHOCKFIELD_PYTHON_MODULE_FOR=\"Python ${Python_VERSION} at ${Python_EXECUTABLE}, pybind11 ${pybind11_VERSION}\"")

@@ -13,6 +13,8 @@ import pathlib
 import subprocess
 import sys
 import tempfile
+import threading
+import time
 import unittest
 
 import numpy as np
@@ -119,6 +121,34 @@ class AgainstTheCommandLine(unittest.TestCase):
         self.assertIsNone(void)
 
 
+class Threads(unittest.TestCase):
+    def test_gil_released_and_threads_honoured(self):
+        f = shockfield.analysis.gaussian_random_field((1024, 1024), 4.0, seed=3)
+        one = shockfield.analysis.minkowski(f, count=64, threads=1)
+        two = shockfield.analysis.minkowski(f, count=64, threads=2)
+        for name in one.dtype.names:  # sums of integer block counts: independent of threads
+            self.assertTrue(np.array_equal(one[name], two[name], equal_nan=True), name)
+        # While a worker thread is inside minkowski, this thread keeps running (the GIL is
+        # released): it wakes from 1 ms sleeps many times. Holding the GIL would leave it asleep
+        # until the call returned (a few ticks at most).
+        done, ticks, spent = threading.Event(), 0, []
+
+        def work():
+            t0 = time.perf_counter()
+            shockfield.analysis.minkowski(f, count=256, threads=1)
+            spent.append(time.perf_counter() - t0)
+            done.set()
+
+        worker = threading.Thread(target=work)
+        worker.start()
+        while not done.is_set():
+            ticks += 1
+            time.sleep(0.001)
+        worker.join()
+        self.assertGreater(ticks, 10, f"{ticks} ticks during a {spent[0]:.3f} s call")
+        print(f"ok: {ticks} ticks of this thread during a {spent[0]:.3f} s minkowski call in another")
+
+
 class BadArrays(unittest.TestCase):
     def test_refusals(self):
         good = np.zeros((8, 8))
@@ -155,6 +185,10 @@ class BadArrays(unittest.TestCase):
         void[:, :4] = True
         m = shockfield.analysis.minkowski(f, thresholds=[0.5], void=void)
         self.assertEqual(m["A"][0], 0.5)
+        # The next call reuses this thread's grid: nothing of the mask or the size may stay.
+        self.assertEqual(shockfield.analysis.minkowski(f, thresholds=[0.5])["A"][0], 1.0)
+        self.assertEqual(shockfield.analysis.minkowski(np.ones((4, 4)), thresholds=[0.5])["A"][0], 1.0)
+        self.assertEqual(shockfield.analysis.minkowski(f, thresholds=[0.5], spacing=2.0)["L"][0], 0.0)
 
 
 if __name__ == "__main__":

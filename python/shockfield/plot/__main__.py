@@ -1,0 +1,19 @@
+"""``python -m shockfield.plot KIND RUN [--out PNG]`` (kinds: shockfield.plot.KINDS)."""
+
+import argparse
+import sys
+
+from ..errors import InputError
+from . import KINDS, plot
+
+parser = argparse.ArgumentParser(prog="python -m shockfield.plot", description=__doc__,
+                                 epilog="; ".join(f"{k}: {what}" for k, (_, what) in KINDS.items()))
+parser.add_argument("kind")
+parser.add_argument("run")
+parser.add_argument("--out")
+args = parser.parse_args()
+try:
+    print("wrote", plot(args.kind, args.run, args.out))
+except InputError as error:
+    print(f"error: {error}", file=sys.stderr)
+    sys.exit(2)
