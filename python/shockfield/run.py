@@ -48,8 +48,8 @@ def read_csv(path):
 @dataclass
 class Frame:
     """One output frame: ``time`` (the method's unit), ``step`` (None for fields), ``data`` (a
-    field as an array shaped (ny, nx) or (nz, ny, nx), void cells NaN; atoms as a structured array
-    of the dump's columns), ``file``, and for dumps ``box`` ((3, 2) bounds)."""
+    field as an array shaped (ny, nx) or (nz, ny, nx), void cells NaN; atoms or a pd profile as a
+    structured array of the file's columns), ``file``, and for dumps ``box`` ((3, 2) bounds)."""
     time: float
     data: np.ndarray
     file: str
@@ -136,13 +136,24 @@ class Run:
         """profiles.csv (md), else profiles/index.csv (pd, dbm: one profile file per row)."""
         return self.table("profiles" if (self.folder / "profiles.csv").is_file() else "profiles/index")
 
-    def frames(self, array=""):
-        """Iterates over the run's frames in time order: the grid fields of its .pvd series of .vti
-        files (mpm, dbm, phasefield; ``array`` names the data array, default the first) or its
-        LAMMPS dumps (md, granular). InputError when it has neither."""
+    def frames(self, array="", kind=None):
+        """Iterates over the run's frames in time order, of ``kind`` (default: the first the run
+        has): "dumps" (md's LAMMPS dumps, structured arrays of their columns), "fields" (the grid
+        fields of its .pvd of .vti files: mpm, dbm, phasefield; ``array`` names the data array,
+        default the first) or "profiles" (pd, dbm: profiles/profile_<k>.csv as structured arrays
+        at the times of profiles/index.csv). InputError naming its tables when it has none."""
         dumps = sorted(self.folder.glob("dumps/*.lammpstrj"), key=_step_of) or sorted(
             self.folder.glob("*.lammpstrj"), key=_step_of)
-        if dumps:
+        series = [p for p in sorted(self.folder.glob("*.pvd")) if ".vti" in p.read_text()]
+        index = self.folder / "profiles" / "index.csv"
+        available = [k for k, present in (("dumps", dumps), ("fields", series), ("profiles", index.is_file()))
+                     if present]
+        if kind is None and available:
+            kind = available[0]
+        if kind not in available:
+            raise InputError(f"{self.folder}: this {self.method} run has no {kind or 'frames'} (it has: "
+                             f"{', '.join(available) or 'no frames'}); its tables: {', '.join(self.tables()) or 'none'}")
+        if kind == "dumps":
             # Steps to time: the method's [<method>] timestep (md: ps), when it has a fixed one.
             timestep = self.config.get(self.method, {}).get("timestep")
             for path in dumps:
@@ -150,15 +161,18 @@ class Run:
                     if time is None and timestep is not None:
                         time = step * timestep
                     yield Frame(time=time, data=atoms, file=str(path), step=step, box=box)
-            return
-        from . import analysis
-        core = analysis._require_core()
-        series = [p for p in sorted(self.folder.glob("*.pvd")) if ".vti" in p.read_text()]
-        if not series:
-            raise InputError(f"{self.folder}: this {self.method} run has no dumps and no .pvd of .vti fields")
-        for time, file in core.read_series(str(series[0])):
-            values, _, spacing, origin = core.read_field(file, array)
-            yield Frame(time=time, data=values, file=file, extra={"spacing": spacing, "origin": origin})
+        elif kind == "profiles":
+            table = read_csv(index)
+            time_column = "time_s" if "time_s" in table.dtype.names else "time"
+            for row in table:
+                file = self.folder / "profiles" / f"profile_{int(row['profile'])}.csv"
+                yield Frame(time=float(row[time_column]), data=read_csv(file), file=str(file), step=int(row["step"]))
+        else:
+            from . import analysis
+            core = analysis._require_core()
+            for time, file in core.read_series(str(series[0])):
+                values, _, spacing, origin = core.read_field(file, array)
+                yield Frame(time=time, data=values, file=file, extra={"spacing": spacing, "origin": origin})
 
     def __repr__(self):
         status = self.summary.get("status") if self.summary else "no summary"

@@ -101,6 +101,30 @@ class Cases(unittest.TestCase):
         self.assertIn("series.csv", str(caught.exception))
         print("ok: from_dict + set + check + run (mpm),", len(frames), "field frames;", caught.exception)
 
+    def test_every_method_opens(self):
+        expected = {"pd_tiny": "profiles", "dbm_sod": "profiles", "phasefield_tiny": "fields", "granular_tiny": None}
+        for name, frames in expected.items():
+            run = shockfield.Case.load(CASES / f"{name}.toml").run(output=self.dir / name, threads=1, quiet=True)
+            self.assertEqual(run.summary["status"], "finished", name)
+            self.assertGreater(len(run.thermo), 1, name)
+            self.assertGreater(len(run.series), 1, name)
+            if frames is None:
+                with self.assertRaises(shockfield.InputError) as caught:
+                    next(run.frames())
+                self.assertIn("its tables: ", str(caught.exception))
+                continue
+            got = list(run.frames(kind=frames))
+            self.assertGreaterEqual(len(got), 2, name)
+            self.assertTrue(all(a.time < b.time for a, b in zip(got, got[1:])), name)
+            if name == "pd_tiny":
+                self.assertIn("sxx_Pa", got[-1].data.dtype.names)
+                self.assertEqual([f.step for f in run.frames()], [f.step for f in got])  # pd: profiles first
+            elif name == "dbm_sod":
+                self.assertEqual(next(run.frames()).data.dtype, np.float64)  # dbm: fields first
+            else:
+                self.assertEqual(got[-1].data.dtype, np.float64)
+        print("ok: pd, dbm, phasefield, granular run folders open with their tables and frames")
+
     def test_run_errors(self):
         with self.assertRaises(shockfield.InputError) as caught:
             shockfield.Run.open(self.dir)
