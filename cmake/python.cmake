@@ -17,14 +17,16 @@ option(SHOCKFIELD_BUILD_PYTHON "Build the Python module (needs pybind11)" ON)
 
 set(Python_EXECUTABLE "${SHOCKFIELD_PYTHON_EXECUTABLE}")
 find_package(Python 3.8 QUIET COMPONENTS Interpreter Development.Module)
+# Under lib/, not the multiarch CMAKE_INSTALL_LIBDIR (lib/x86_64-linux-gnu for /usr), where no
+# interpreter looks; python/shockfield/case.py finds PREFIX/bin from there.
 if(Python_Interpreter_FOUND)
-  set(shockfield_python_dir "${CMAKE_INSTALL_LIBDIR}/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/site-packages")
+  set(shockfield_python_dir "lib/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/site-packages")
   # Debian's interpreters look in dist-packages under /usr/local and /usr.
   if(Python_EXECUTABLE MATCHES "^/usr/bin/")
     string(REPLACE "site-packages" "dist-packages" shockfield_python_dir "${shockfield_python_dir}")
   endif()
 else()
-  set(shockfield_python_dir "${CMAKE_INSTALL_LIBDIR}/python3/site-packages")
+  set(shockfield_python_dir "lib/python3/site-packages")
 endif()
 set(SHOCKFIELD_PYTHON_INSTALL_DIR "${shockfield_python_dir}" CACHE STRING
   "Where the Python packages go, relative to the install prefix")

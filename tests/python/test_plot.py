@@ -30,8 +30,12 @@ class Plot(unittest.TestCase):
         cls.tmp.cleanup()
 
     def test_generic_kinds(self):
-        for kind in ("thermo", "series"):
-            self.assertTrue(is_png(shockfield.plot.plot(kind, self.mpm.folder)), kind)
+        self.assertTrue(is_png(shockfield.plot.plot("thermo", self.mpm.folder)))
+        out = shockfield.plot.plot("series", self.mpm.folder, columns=["bottom_h200um_pressure_mean"])
+        self.assertTrue(is_png(out))
+        with self.assertRaises(shockfield.InputError) as caught:
+            shockfield.plot.plot("series", self.mpm.folder, columns=["pressure"])
+        self.assertIn("has no column pressure; its columns: ", str(caught.exception))
 
     def test_wrong_kind_is_refused(self):
         with self.assertRaises(shockfield.InputError) as caught:
@@ -48,7 +52,8 @@ class Plot(unittest.TestCase):
         self.assertEqual(p.returncode, 2)
         self.assertIn("Kinds for this run", p.stderr)
         out = pathlib.Path(self.tmp.name) / "t.png"
-        p = subprocess.run([sys.executable, "-m", "shockfield.plot", "thermo", str(self.mpm.folder), "--out", str(out)],
+        p = subprocess.run([sys.executable, "-m", "shockfield.plot", "thermo", str(self.mpm.folder), "--out", str(out),
+                            "--columns", "MaxTemp,TotEng"],
                            capture_output=True, text=True)
         self.assertEqual(p.returncode, 0, p.stderr)
         self.assertTrue(is_png(out))

@@ -27,15 +27,25 @@ def kinds_for(method):
     return [k for k, (methods, _) in KINDS.items() if methods is None or method in methods]
 
 
-def _columns_figure(run, table, x_name, title_what, out):
+MAX_PANELS = 12
+
+
+def _columns_figure(run, table, x_name, title_what, out, columns=None):
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     names = [n for n in table.dtype.names if n != x_name and table.dtype[n].kind == "f"]
+    if columns:
+        unknown = [c for c in columns if c not in names]
+        if unknown:
+            raise InputError(f"{run.folder}: {title_what} has no column {', '.join(unknown)}; "
+                             f"its columns: {', '.join(names)}")
+        names = list(columns)
     if not names:
         raise InputError(f"{run.folder}: {title_what} has no numeric column besides {x_name}")
+    names = names[:MAX_PANELS]
     cols = min(4, len(names))
     rows = (len(names) + cols - 1) // cols
     fig, axes = plt.subplots(rows, cols, figsize=(3.6 * cols, 2.6 * rows), squeeze=False)
@@ -51,9 +61,11 @@ def _columns_figure(run, table, x_name, title_what, out):
     plt.close(fig)
 
 
-def plot(kind, folder, out=None):
+def plot(kind, folder, out=None, columns=None):
     """Draws ``kind`` of the run in ``folder`` to ``out`` (default FOLDER/KIND.png); returns the
-    PNG's path. InputError for an unknown kind or a run of a method the kind does not draw."""
+    PNG's path. ``columns``: for thermo and series, the columns to draw (default the first
+    MAX_PANELS numeric ones). InputError for an unknown kind, an unknown column or a run of a
+    method the kind does not draw."""
     if kind not in KINDS:
         raise InputError(f"plot: unknown kind '{kind}'; expected one of {', '.join(KINDS)}")
     run = Run.open(folder)
@@ -64,11 +76,11 @@ def plot(kind, folder, out=None):
     out = str(out or run.folder / f"{kind}.png")
     if kind == "thermo":
         table = run.thermo
-        _columns_figure(run, table, table.dtype.names[0], "thermo.csv", out)
+        _columns_figure(run, table, table.dtype.names[0], "thermo.csv", out, columns)
     elif kind == "series":
         table = run.series
         x = "time_s" if "time_s" in table.dtype.names else table.dtype.names[0]
-        _columns_figure(run, table, x, "series.csv", out)
+        _columns_figure(run, table, x, "series.csv", out, columns)
     elif kind == "profiles":
         from shockfield_plot import md_plots
         md_plots.plot_profiles(str(run.folder), out, run.config.get("output", {}).get("profile_axis", "z"))

@@ -11,9 +11,10 @@ parser = argparse.ArgumentParser(prog="python -m shockfield.plot", description=_
 parser.add_argument("kind")
 parser.add_argument("run")
 parser.add_argument("--out")
+parser.add_argument("--columns", help="thermo, series: comma-separated columns to draw")
 args = parser.parse_args()
 try:
-    print("wrote", plot(args.kind, args.run, args.out))
+    print("wrote", plot(args.kind, args.run, args.out, args.columns.split(",") if args.columns else None))
 except InputError as error:
     print(f"error: {error}", file=sys.stderr)
     sys.exit(2)
