@@ -1,7 +1,7 @@
 // `shockfield analyze minkowski|similarity|stats`: morphology and statistics of grid fields
 // (Xu et al. 2015, §3.1, §4.1.2). Reads CSV grids and VTK image data (analysis/field_reader.hpp), writes
-// CSV and, for minkowski and similarity, a PNG through python/shockfield_plot (/usr/bin/python3 +
-// matplotlib; skipped with a warning when that fails). Docs: docs/analysis-minkowski.md.
+// CSV and, for minkowski and similarity, a PNG through shockfield_plot (app/python_helpers.hpp;
+// skipped with a warning when that fails). Docs: docs/analysis-minkowski.md.
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -17,6 +17,7 @@
 #include "shockfield/analysis/similarity.hpp"
 #include "shockfield/analysis/spectral_statistics.hpp"
 #include "shockfield/app/commands.hpp"
+#include "shockfield/app/python_helpers.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/checked_file.hpp"
 
@@ -204,9 +205,14 @@ void plot(const Common& c, const char* kind, const std::string& csv) {
   if (c.no_plot) return;
   const fs::path dir(c.output);
   const std::string png = (dir / (std::string(kind) + ".png")).string();
-  const std::string cmd =
-      fmt::format("PYTHONPATH='{}/python' /usr/bin/python3 -m shockfield_plot {} '{}' '{}'",
-                  SHOCKFIELD_SOURCE_DIR, kind, (dir / csv).string(), png);
+  std::string cmd;
+  try {
+    cmd = python_command(fmt::format("-m shockfield_plot {} {} {}", kind,
+                                     shell_quote((dir / csv).string()), shell_quote(png)));
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "warning: no plot (%s); the CSV is written\n", e.what());
+    return;
+  }
   if (std::system(cmd.c_str()) != 0)
     std::fprintf(stderr, "warning: no plot (%s failed); the CSV is written\n", cmd.c_str());
   else

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "shockfield/app/commands.hpp"
+#include "shockfield/app/sweep_command.hpp"
 #include "shockfield/core/error.hpp"
 
 int main(int argc, char** argv) {
@@ -12,15 +13,17 @@ int main(int argc, char** argv) {
       " - shock response of heterogeneous materials, from atoms to the sample.\n"
       "Simulate with molecular dynamics (md), the material point method (mpm), peridynamics (pd);\n"
       "analyse the fields, atoms and point sets that come out (analyze); sweep shock Hugoniots\n"
-      "(hugoniot).\n"
+      "(hugoniot); run a case for several values of its keys (sweep). `--version` names the build.\n"
       "Run `shockfield SUBCOMMAND --help` for each subcommand's options.",
       "shockfield"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "shockfield " SHOCKFIELD_VERSION);
+  app.set_version_flag("--version", shockfield::app::version_text,
+                       "Print the version, git commit, compiler and library versions, then exit");
   shockfield::app::add_run_command(app, std::vector<std::string>(argv, argv + argc));
   shockfield::app::add_plot_command(app);
   shockfield::app::add_hugoniot_command(app);
   shockfield::app::add_analyze_command(app);
+  shockfield::app::add_sweep_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

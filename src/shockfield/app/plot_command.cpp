@@ -1,11 +1,12 @@
 // `shockfield plot KIND RUN_DIR`: PNG figures of a run folder, drawn by the Python helpers in
-// python/shockfield_plot/ (md_plots.py, mpm_plots.py) with Debian's matplotlib (/usr/bin/python3).
+// shockfield_plot (md_plots.py, mpm_plots.py), found and run as app/python_helpers.hpp says.
 #include <fmt/format.h>
 
 #include <cstdlib>
 #include <filesystem>
 
 #include "shockfield/app/commands.hpp"
+#include "shockfield/app/python_helpers.hpp"
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::app {
@@ -18,22 +19,14 @@ struct PlotOptions {
   std::string axis = "z";
 };
 
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 void plot(const PlotOptions& o) {
   const bool md = o.kind == "profiles" || o.kind == "thermo" || o.kind == "hugoniot";
-  const std::filesystem::path script = std::filesystem::path(SHOCKFIELD_SOURCE_DIR) / "python" /
-                                       "shockfield_plot" / (md ? "md_plots.py" : "mpm_plots.py");
-  if (!std::filesystem::exists(script))
-    throw InputError(fmt::format("plot helper not found at {}", script.string()));
   if (!std::filesystem::is_directory(o.run)) throw InputError(fmt::format("'{}' is not a run folder", o.run));
-  std::string cmd = fmt::format("/usr/bin/python3 {} {} {}", quote(script.string()), o.kind, quote(o.run));
-  if (o.kind == "profiles") cmd += " --axis " + o.axis;
-  if (!o.out.empty()) cmd += " --out " + quote(o.out);
+  std::string args = fmt::format("-m shockfield_plot.{} {} {}", md ? "md_plots" : "mpm_plots", o.kind,
+                                 shell_quote(o.run));
+  if (o.kind == "profiles") args += " --axis " + o.axis;
+  if (!o.out.empty()) args += " --out " + shell_quote(o.out);
+  const std::string cmd = python_command(args);
   if (std::system(cmd.c_str()) != 0)
     throw RunError("the plot helper failed (is python3-matplotlib installed? scripts/install-deps.sh installs it)");
 }

@@ -10,6 +10,7 @@
 #include "shockfield/core/run_options.hpp"
 #include "shockfield/dbm/run_case.hpp"
 #include "shockfield/granular/run_case.hpp"
+#include "shockfield/io/checked_file.hpp"
 #include "shockfield/md/run_case.hpp"
 #include "shockfield/mpm/run_case.hpp"
 #include "shockfield/pd/run_case.hpp"
@@ -28,13 +29,16 @@ const std::map<std::string, MethodFactory>& methods() {
   return table;
 }
 
-void run(const RunOptions& options) {
+// `resolved_file`: with --check, where the resolved case (every value read, defaults and
+// [derived]) goes, as config.resolved.toml would hold it (the Python module's Case.check()).
+void run(const RunOptions& options, const std::string& resolved_file) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const Config root = Config::load(options.case_file, options.overrides);
   std::vector<std::string> names;
   for (const auto& [name, factory] : methods()) names.push_back(name);
   const std::string method = root.get_choice("method", names);
   run_method(root, options, methods().at(method));
+  if (!resolved_file.empty()) io::replace_file(resolved_file, root.resolved_toml());
 }
 
 }  // namespace
@@ -73,7 +77,11 @@ void add_run_command(CLI::App& app, const std::vector<std::string>& command_line
       ->allow_extra_args(false);
   cmd->add_flag("--check", options->validate_only,
                 "Only validate the case file (and the files it names), then exit");
-  cmd->callback([options] { run(*options); });
+  auto resolved_file = std::make_shared<std::string>();
+  cmd->add_option("--write-resolved", *resolved_file,
+                  "With --check: write the resolved case (defaults and [derived] included) to this file")
+      ->needs("--check");
+  cmd->callback([options, resolved_file] { run(*options, *resolved_file); });
 }
 
 }  // namespace shockfield::app

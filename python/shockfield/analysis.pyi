@@ -1,0 +1,23 @@
+"""Type stubs of shockfield.analysis (docstrings in analysis.py)."""
+
+from typing import Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+Field = npt.NDArray[np.float64]
+
+def minkowski(field: Field, thresholds: Optional[Sequence[float]] = None, count: Optional[int] = None,
+              boundary: str = "periodic", connectivity: int = 8, adjacency: int = 26,
+              dimension: Optional[int] = None, spacing: Union[float, Sequence[float]] = 1.0,
+              void: Optional[npt.NDArray[np.bool_]] = None, threads: int = 0) -> np.ndarray: ...
+def similarity(reference: Sequence[Field], reference_threshold: float, candidate: Sequence[Field],
+               times: Sequence[float], thresholds: Optional[Sequence[float]] = None, count: Optional[int] = None,
+               t1: Optional[float] = None, t2: Optional[float] = None, boundary: str = "periodic",
+               connectivity: int = 8, adjacency: int = 26, dimension: Optional[int] = None,
+               spacing: Union[float, Sequence[float]] = 1.0, threads: int = 0) -> dict[str, object]: ...
+def statistics(field: Field, bins: int = 64, dimension: Optional[int] = None,
+               spacing: Union[float, Sequence[float]] = 1.0, void: Optional[npt.NDArray[np.bool_]] = None,
+               threads: int = 0) -> dict[str, object]: ...
+def gaussian_random_field(shape: Sequence[int], correlation_length: float, seed: int = 1) -> Field: ...
