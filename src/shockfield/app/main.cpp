@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
       " - shock response of heterogeneous materials, from atoms to the sample.\n"
       "Simulate with molecular dynamics (md), the material point method (mpm), peridynamics (pd);\n"
       "analyse the fields, atoms and point sets that come out (analyze); sweep shock Hugoniots\n"
-      "(hugoniot).\n"
+      "(hugoniot); carry what one scale measured to the next as a material file (bridge).\n"
       "Run `shockfield SUBCOMMAND --help` for each subcommand's options.",
       "shockfield"};
   app.require_subcommand(1);
@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   shockfield::app::add_plot_command(app);
   shockfield::app::add_hugoniot_command(app);
   shockfield::app::add_analyze_command(app);
+  shockfield::app::add_bridge_command(app, std::vector<std::string>(argv, argv + argc));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -223,8 +223,9 @@ void write_bridged_material(const fs::path& file, bool update, const std::string
       if (const auto v = old.get(k.name)) all[k.name] = *v;
     const toml::table raw = toml::parse_file(file.string());
     for (const char* section : kSections)
-      if (const auto* note = raw.at_path(std::string(section) + ".note").as_string())
-        all_notes[std::string(section) + ".note"] = note->get();
+      if (const toml::table* t = raw[section].as_table())
+        for (const auto& [key, v] : *t)
+          if (const auto* text = v.as_string()) all_notes[fmt::format("{}.{}", section, key.str())] = text->get();
     provenance = old.provenance();
     // The sections this bridge writes are replaced whole: no stale value of an older fit stays.
     for (const auto& [key, v] : values) {

@@ -80,7 +80,8 @@ IsotropicModuli cubic_average(double c11, double c12, double c44, std::string_vi
 
 /// Text of a material file: `name`, the numeric values of `values` (dotted keys of
 /// material_keys(), written per section with their unit and meaning as comments), the string
-/// notes of `notes` (dotted "section.note" keys) and [provenance] as given.
+/// values of `notes` (dotted "section.key": note, eos.model, elasticity.average) and
+/// [provenance] as given.
 std::string material_file_text(const std::string& name, const std::map<std::string, double>& values,
                                const std::map<std::string, std::string>& notes, const toml::table& provenance);
 
@@ -88,8 +89,8 @@ std::string material_file_text(const std::string& name, const std::map<std::stri
 /// UTC) and shockfield_version.
 toml::table bridge_provenance_entry(const std::vector<std::string>& command_line);
 
-/// Writes a material file for `bridge`: with `update` and an existing file, its values, notes
-/// and provenance entries are kept except those this bridge gives; its [provenance.<bridge>]
+/// Writes a material file for `bridge`: with `update` and an existing file, its values, strings
+/// and provenance entries are kept except the sections this bridge gives (replaced whole); its [provenance.<bridge>]
 /// becomes `entry`. The file is replaced atomically (io::replace_file).
 void write_bridged_material(const std::filesystem::path& file, bool update, const std::string& name,
                             const std::string& bridge, const std::map<std::string, double>& values,
