@@ -30,7 +30,7 @@ PY
 "$SF" bridge hugoniot-to-eos "$WORK/sweep" -o "$WORK/eos.toml" --quadratic no > /dev/null
 "$SF" bridge elastic --constants "$ROOT/tests/fixtures/lammps_elastic/results.toml" --mass 63.546 -o "$WORK/eos.toml" \
   --update > /dev/null
-read -r _ us p p_rh rho < <($PY "$ROOT/tests/cli/bridge/mpm_hugoniot.py" "$SF" "$WORK/eos.toml" "$WORK/mpm" 1.0 --yield 120e6)
+read -r _ us p p_rh rho < <($PY "$ROOT/examples/bridge_cu_atoms_to_plate/mpm_hugoniot.py" "$SF" "$WORK/eos.toml" "$WORK/mpm" 1.0 --yield 120e6)
 read -r md_us md_rho < <($PY - "$WORK/sweep/up_2/hugoniot_shock.toml" <<'PY'
 import sys, tomllib
 h = tomllib.load(open(sys.argv[1], "rb"))
@@ -68,7 +68,7 @@ series_interval = 1e-7
 profile_interval = 0.5e-7
 CASE
   "$SF" run "$WORK/pd_$name.toml" --output "$WORK/pd_$name" -q > /dev/null
-  measured=$($PY "$ROOT/tests/cli/bridge/pd_front_speed.py" "$WORK/pd_$name" 2.0)
+  measured=$($PY "$ROOT/examples/bridge_cu_atoms_to_plate/pd_front_speed.py" "$WORK/pd_$name" 2.0)
   expected=$($PY - "$WORK/cu.toml" "$name" <<'PY'
 import sys, tomllib
 e = tomllib.load(open(sys.argv[1], "rb"))["elasticity"]
