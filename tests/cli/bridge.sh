@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `shockfield bridge` (docs/bridges.md): hugoniot-to-eos on synthetic MD Hugoniot run folders with
 # known c0, s (recovered within 3 of the fit's stated standard errors; a quadratic sweep switches
-# the fit to quadratic by the |s2| > 3σ criterion), elastic from stored constants (the LAMMPS
+# the fit to quadratic by the |s2| > 3σ criterion), Γ0 from two MD runs against LAMMPS, elastic from stored constants (the LAMMPS
 # fixture) and from a short MD run of Cu_u3.eam, both written into one material file that an MPM
 # and a PD case then read; bad input refused naming the file and key.
 source "$(dirname "$0")/lib.bash"
@@ -60,6 +60,21 @@ echo "quadratic: s2 = $s2 +- $s2e s/m (8e-5)"
 within "$s2" 8e-5 "$s2e" 3 || fail "s2 = $s2 +- $s2e not within 3 sigma of 8e-5"
 "$SF" bridge hugoniot-to-eos "$WORK/quad" -o "$WORK/quad_lin.toml" --quadratic no > /dev/null
 [ "$(value "$WORK/quad_lin.toml" provenance.hugoniot_to_eos.fit.model)" = linear ] || fail "--quadratic no"
+
+# Γ0 from MD (--gamma0-md): the thermal pressure of Cu_u3.eam at constant volume, against LAMMPS
+# doing the same (tests/fixtures/lammps_gruneisen, Γ = 1.819 ± 0.041): both are Langevin averages,
+# so they agree within 3 of their combined standard errors.
+sweep "$WORK/gmd" 3.90 1.55 0.0 0.02 4
+cp "$ROOT/examples/bridge_cu_atoms_to_plate/md_piston.toml" "$WORK/gmd/up_0.67/config.resolved.toml"
+"$SF" bridge hugoniot-to-eos "$WORK/gmd" -o "$WORK/gmd.toml" --gamma0-md --gamma0-md-steps 2000 > /dev/null
+g=$(value "$WORK/gmd.toml" provenance.hugoniot_to_eos.fit.gamma_md)
+ge=$(value "$WORK/gmd.toml" provenance.hugoniot_to_eos.fit.gamma_md_stderr)
+lg=$(value "$ROOT/tests/fixtures/lammps_gruneisen/results.toml" gamma)
+lge=$(value "$ROOT/tests/fixtures/lammps_gruneisen/results.toml" gamma_stderr)
+echo "gamma from MD: $g +- $ge (LAMMPS $lg +- $lge)"
+within "$g" "$lg" "$(python3 -c "import math, sys; print(math.hypot(*map(float, sys.argv[1:])))" "$ge" "$lge")" 3 \
+  || fail "MD Gruneisen $g +- $ge differs from LAMMPS $lg +- $lge"
+grep -q "from MD: Gamma = V dP/dE" "$WORK/gmd.toml" || fail "the file does not say gamma0 is from MD"
 
 # elastic from the LAMMPS fixture's constants, written into the same file.
 "$SF" bridge elastic --constants "$ROOT/tests/fixtures/lammps_elastic/results.toml" --mass 63.546 -o "$f" --update \

@@ -3,21 +3,31 @@
 // in a material file. U_s = c0 + s·U_p by least squares with the standard errors and covariance
 // of c0 and s (Press et al., Numerical Recipes, 3rd ed., §15.2 and §15.4: C = σ²(XᵀX)⁻¹ with
 // σ² = χ²/(n − p)); a quadratic U_s = c0 + s·U_p + s2·U_p² when asked, or (--quadratic auto)
-// when the data demand it: n ≥ 4 and |s2| > 3σ(s2). ρ0 is the MD density ahead of the shock;
-// Γ0 is not measured by these runs and is taken from a library material (said in the file).
+// when the data demand it: n ≥ 4 and |s2| > 3σ(s2). ρ0 is the MD density ahead of the shock.
+// Γ0 is not on the Hugoniot: with --gamma0-md it is measured from the thermal pressure of the same
+// potential and crystal at constant volume, Γ = V·ΔP/ΔE from two Langevin (NVT) runs at one
+// volume and two temperatures (the definition Γ = V(∂P/∂E)_V), else taken from a library
+// material; the file says which.
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/run_options.hpp"
 #include "shockfield/core/sha256.hpp"
+#include "shockfield/core/units.hpp"
+#include "shockfield/io/checked_file.hpp"
 #include "shockfield/materials/library.hpp"
 #include "shockfield/materials/material_file.hpp"
+#include "shockfield/md/run_case.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -30,6 +40,9 @@ struct EosOptions {
   std::string quadratic = "auto";
   std::string gamma0_library = "copper";
   std::optional<double> gamma0;
+  bool gamma0_md = false;
+  std::vector<double> gamma0_temperatures{300.0, 600.0};
+  long long gamma0_steps = 4000;
 };
 
 struct RunPoint {
@@ -116,6 +129,95 @@ PolyFit fit_poly(const std::vector<RunPoint>& pts, int terms) {
   return f;
 }
 
+// Γ from MD: the first sweep run's resolved case as a periodic 4×4×4-cell crystal (same potential,
+// lattice and a0: the sweep's initial volume) held at each temperature by Langevin dynamics;
+// P and E averaged over the second half. Γ = V·(P2 − P1)/(E2 − E1); standard errors of the means
+// from 10 blocks, propagated.
+struct GammaMd {
+  double gamma = 0, stderr = 0, density = 0;  ///< Γ, σ_Γ, ρ [kg/m³] of the runs
+  toml::array runs;                           ///< per temperature: folder, T, P, E
+};
+GammaMd measure_gamma_md(const EosOptions& o, const RunPoint& first, const std::vector<std::string>& command_line) {
+  toml::table base = toml::parse_file((first.folder / "config.resolved.toml").string());
+  for (const char* drop : {"derived", "provenance", "stage", "output"}) base.erase(drop);
+  toml::table* lattice = base.at_path("system.lattice").as_table();
+  if (!lattice) throw InputError(fmt::format("{}: --gamma0-md needs a [system.lattice] crystal", first.folder.string()));
+  lattice->insert_or_assign("boundary", "ppp");
+  lattice->insert_or_assign("repeat", toml::array{4, 4, 4});
+  GammaMd g;
+  std::vector<std::array<double, 5>> means;  // T, P [bar], σP, E [eV], σE
+  double volume = 0;
+  for (double temperature : o.gamma0_temperatures) {
+    toml::table c = base;
+    c.insert_or_assign("velocity", toml::table{{"temperature", temperature}});
+    c.insert_or_assign("output", toml::table{{"thermo_every", 10}});
+    toml::array stages;
+    stages.push_back(toml::table{{"name", "nvt"}, {"ensemble", "langevin"}, {"temperature", temperature},
+                                 {"damping", 0.1}, {"steps", o.gamma0_steps}});
+    c.insert_or_assign("stage", stages);
+    const fs::path folder = fs::path(o.out.file).replace_extension("").string() + fmt::format("_gamma0/T_{:.0f}", temperature);
+    fs::create_directories(folder);
+    std::ostringstream text;
+    text << c << "\n";
+    io::replace_file(folder / "case.toml", text.str());
+    RunOptions r;
+    r.case_file = folder / "case.toml";
+    r.output = folder / "run";
+    r.overwrite = true;
+    r.quiet = true;
+    r.threads = 1;  // 256 atoms: threads cost more than they save
+    r.command_line = command_line;
+    const Config root = Config::load(r.case_file, {});
+    root.get_choice("method", {"md"});
+    md::run_case(root, r);
+    const Config derived = Config::load(folder / "run" / "config.resolved.toml").table("derived");
+    const double rho = derived.get_double("density_g_cc") * 1e3;
+    g.density = rho;
+    // thermo.csv: the second half of the rows, in 10 blocks.
+    std::ifstream in(folder / "run" / "thermo.csv");
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> names;
+    for (std::stringstream ss(line); std::getline(ss, line, ',');) names.push_back(line);
+    const auto col = [&](const char* n) { return std::find(names.begin(), names.end(), n) - names.begin(); };
+    std::vector<double> p, e;
+    std::string row;
+    while (std::getline(in, row)) {
+      std::vector<double> v;
+      for (std::stringstream ss(row); std::getline(ss, line, ',');) v.push_back(std::strtod(line.c_str(), nullptr));
+      p.push_back(v[static_cast<std::size_t>(col("press_bar"))]);
+      e.push_back(v[static_cast<std::size_t>(col("etotal_eV"))]);
+      volume = v[static_cast<std::size_t>(col("volume_A3"))];
+    }
+    const std::size_t start = p.size() / 2, block = (p.size() - start) / 10;
+    if (block < 2) throw RunError(fmt::format("{}: too few thermo rows for the averages", folder.string()));
+    std::array<double, 5> m{temperature, 0, 0, 0, 0};
+    for (int k = 0; k < 2; ++k) {
+      const std::vector<double>& x = k == 0 ? p : e;
+      std::vector<double> blocks(10, 0.0);
+      for (std::size_t b = 0; b < 10; ++b)
+        for (std::size_t i = 0; i < block; ++i) blocks[b] += x[start + b * block + i] / static_cast<double>(block);
+      double mean = 0, var = 0;
+      for (double v : blocks) mean += v / 10.0;
+      for (double v : blocks) var += (v - mean) * (v - mean) / 9.0;
+      m[static_cast<std::size_t>(1 + 2 * k)] = mean;
+      m[static_cast<std::size_t>(2 + 2 * k)] = std::sqrt(var / 10.0);
+    }
+    means.push_back(m);
+    g.runs.push_back(toml::table{{"folder", (folder / "run").string()},
+                                 {"config_sha256", sha256_file_hex(folder / "run" / "config.resolved.toml")},
+                                 {"temperature_K", temperature}, {"pressure_bar", m[1]}, {"pressure_stderr_bar", m[2]},
+                                 {"energy_eV", m[3]}, {"energy_stderr_eV", m[4]}});
+  }
+  const auto& a = means.front();
+  const auto& b = means.back();
+  const double dp = (b[1] - a[1]) / units::metal::nktv2p, de = b[3] - a[3];  // eV/Å³, eV
+  const double sdp = std::hypot(a[2], b[2]) / units::metal::nktv2p, sde = std::hypot(a[4], b[4]);
+  g.gamma = volume * dp / de;
+  g.stderr = std::abs(g.gamma) * std::hypot(sdp / dp, sde / de);
+  return g;
+}
+
 std::string sources(const std::vector<RunPoint>& pts) {
   std::string s;
   for (const RunPoint& p : pts) s += (s.empty() ? "" : ", ") + p.hugoniot.string();
@@ -154,12 +256,22 @@ void run(const EosOptions& o, const std::vector<std::string>& command_line) {
   double rho0 = 0, rho_var = 0;
   for (const RunPoint& p : pts) rho0 += p.rho0 / static_cast<double>(pts.size());
   for (const RunPoint& p : pts) rho_var += (p.rho0 - rho0) * (p.rho0 - rho0) / static_cast<double>(pts.size() - 1);
-  const double gamma0 = o.gamma0 ? *o.gamma0 : materials::make_material(o.gamma0_library).eos.gamma0;
-  const std::string gamma_note =
+  double gamma0 = o.gamma0 ? *o.gamma0 : materials::make_material(o.gamma0_library).eos.gamma0;
+  std::string gamma_note =
       o.gamma0 ? fmt::format("gamma0 = {} given on the command line (--gamma0), not measured by these MD runs", gamma0)
                : fmt::format("gamma0 = {} of the library material '{}' (docs/references.md), not measured by these MD "
                              "runs; rho*gamma = rho0*gamma0",
                              gamma0, o.gamma0_library);
+  std::optional<GammaMd> gmd;
+  if (o.gamma0_md) {
+    gmd = measure_gamma_md(o, pts.front(), command_line);
+    gamma0 = gmd->gamma * gmd->density / rho0;  // ργ = ρ0γ0: from the runs' density to rho0
+    gamma_note = fmt::format("gamma0 = {:.4f} +- {:.4f} from MD: Gamma = V dP/dE at constant volume, two Langevin runs "
+                             "of the same potential and crystal at {} K and {} K (rho = {:.1f} kg/m^3), scaled by "
+                             "rho*gamma = rho0*gamma0",
+                             gamma0, gmd->stderr * gmd->density / rho0, o.gamma0_temperatures.front(),
+                             o.gamma0_temperatures.back(), gmd->density);
+  }
 
   std::map<std::string, double> values{{"eos.rho0", rho0}, {"eos.c0", c0 * 1e3}, {"eos.s", s}, {"eos.gamma0", gamma0}};
   if (use_quad) values["eos.s2"] = fit.coef(2) * 1e-3;  // s/km → s/m
@@ -190,6 +302,13 @@ void run(const EosOptions& o, const std::vector<std::string>& command_line) {
     f.insert("quadratic_s2_over_sigma", quad_ratio);
   }
   if (use_quad) f.insert("s2_stderr_s_m", std::sqrt(fit.cov(2, 2)) * 1e-3);
+  if (gmd) {
+    f.insert("gamma0_stderr", gmd->stderr * gmd->density / rho0);
+    f.insert("gamma_md", gmd->gamma);  // at the runs' density
+    f.insert("gamma_md_stderr", gmd->stderr);
+    f.insert("gamma_md_density_kg_m3", gmd->density);
+    f.insert("gamma0_md_runs", gmd->runs);
+  }
   entry.insert("fit", f);
   materials::write_bridged_material(o.out.file, o.out.update, o.out.name, "hugoniot_to_eos", values, {{"eos.note", gamma_note}},
                                     entry);
@@ -217,8 +336,9 @@ void add_bridge_hugoniot_to_eos_command(CLI::App& bridge, const std::vector<std:
       "writes [eos] rho0 (MD density ahead of the shock), c0, s, gamma0 with the fit's standard\n"
       "errors and c0-s covariance, every input folder and the SHA-256 of its config.resolved.toml in\n"
       "[provenance.hugoniot_to_eos]. --quadratic auto (default) adds s2 Up^2 when n >= 4 and\n"
-      "|s2| > 3 sigma(s2); MPM reads only linear fits. gamma0 is not measured by the sweep: it is\n"
-      "taken from a library material (--gamma0-library) or --gamma0, and the file says so. Refused:\n"
+      "|s2| > 3 sigma(s2); MPM reads only linear fits. gamma0 is not on the Hugoniot: --gamma0-md\n"
+      "measures it by MD (Gamma = V dP/dE at constant volume, two Langevin runs), else it is taken\n"
+      "from a library material (--gamma0-library) or --gamma0; the file says which. Refused:\n"
       "fewer than three speeds, folders of another method, s < 0, c0 outside (0, max Us].\n"
       "Example: shockfield bridge hugoniot-to-eos runs/cu_hugoniot -o cu_md.toml");
   cmd->add_option("runs", o->inputs, "MD Hugoniot run folders or `shockfield hugoniot` sweep folders")->required();
@@ -230,6 +350,18 @@ void add_bridge_hugoniot_to_eos_command(CLI::App& bridge, const std::vector<std:
       ->check(CLI::IsMember(materials::material_names()))
       ->capture_default_str();
   cmd->add_option("--gamma0", o->gamma0, "gamma0 to write instead of the library's")->check(CLI::Range(0.0, 10.0));
+  cmd->add_flag("--gamma0-md", o->gamma0_md,
+                "Measure gamma0 by MD: Gamma = V dP/dE from two Langevin runs of the first run's potential and "
+                "crystal (periodic, 4x4x4 cells, its initial volume) at two temperatures; runs go to "
+                "<output>_gamma0/");
+  cmd->add_option("--gamma0-md-temperatures", o->gamma0_temperatures, "The two temperatures, K")
+      ->expected(2)
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--gamma0-md-steps", o->gamma0_steps, "Steps of each run (1 fs each)")
+      ->check(CLI::Range(200, 10000000))
+      ->capture_default_str();
   cmd->callback([o, command_line] { run(*o, command_line); });
 }
 
