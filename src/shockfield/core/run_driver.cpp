@@ -54,6 +54,32 @@ std::vector<CaseChange> check_resume_case(const Config& root, const RunOptions& 
                                stored.string(), list, allowed));
 }
 
+// --resume: an input file (potential, material file, data) whose SHA-256 differs from the one
+// the run's config.resolved.toml recorded when it started is refused like a changed case key.
+void check_resume_inputs(const RunOptions& options, const Provenance& now) {
+  const fs::path resolved = run_folder_path(options) / "config.resolved.toml";
+  if (!fs::exists(resolved)) return;
+  toml::table before;
+  try {
+    before = toml::parse_file(resolved.string());
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("--resume: {} is not TOML ({}); start a new run with --overwrite or --output",
+                                 resolved.string(), e.description()));
+  }
+  const toml::array* files = before.at_path("provenance.input_files").as_array();
+  if (!files) return;
+  for (const InputFileRecord& f : now.input_files)
+    for (const toml::node& n : *files) {
+      const toml::table* t = n.as_table();
+      if (!t || t->at_path("path").value_or(std::string()) != f.path) continue;
+      const std::string hash = t->at_path("sha256").value_or(std::string());
+      if (hash != f.sha256)
+        throw InputError(fmt::format("--resume: input file {} changed since the run started (sha256 {} in {}, now "
+                                     "{}); restore it, or start a new run with --overwrite or --output",
+                                     f.path, hash, resolved.string(), f.sha256));
+    }
+}
+
 void log_performance(Logger& log, const Method& m, const RunTally& t) {
   const double rate = t.wall_seconds > 0 ? static_cast<double>(t.steps) / t.wall_seconds : 0.0;
   std::string line = fmt::format("performance: {} steps in {} ({:.4g} steps/s, {:.4g} {}-steps/s", t.steps,
@@ -83,6 +109,7 @@ void run_method(const Config& root, const RunOptions& options, const MethodFacto
   }
   const std::vector<CaseChange> changes = options.resume ? check_resume_case(root, options, m) : std::vector<CaseChange>{};
   Provenance provenance = collect_provenance(options.command_line, root.input_files());
+  if (options.resume) check_resume_inputs(options, provenance);
   root.set_provenance(provenance_toml(provenance));
   RunSession session = open_run_session(root, options, m.name(), m.size_text(), provenance_lines(provenance),
                                         !changes.empty());

@@ -12,5 +12,7 @@ inline constexpr double nktv2p = 1.6021765e6;    ///< eV/Å³ → bar
 inline constexpr double amu_per_A3_to_g_per_cc = 1.66053904;  ///< amu/Å³ → g/cm³
 inline constexpr double A_per_ps_to_km_per_s = 0.1;  ///< Å/ps → km/s
 inline constexpr double bar_to_GPa = 1.0e-4;
+inline constexpr double eV_to_J = 1.6021765e-19;     ///< the eV of nktv2p
+inline constexpr double amu_to_kg = 1.66053904e-27;  ///< the amu of amu_per_A3_to_g_per_cc
 
 }  // namespace shockfield::units::metal

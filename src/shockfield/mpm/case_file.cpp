@@ -7,6 +7,7 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/materials/library.hpp"
+#include "shockfield/materials/material_file.hpp"
 
 namespace shockfield::mpm {
 namespace {
@@ -25,35 +26,54 @@ Vec3 read_vec(const Config& t, std::string_view key, int dim, Range range = {}) 
   return out;
 }
 
-// A library material with per-key overrides (Xu et al. 2015, §4.1 parameters by default).
-materials::SolidMaterial read_material(const Config& t) {
+// A library material or a material file (materials/material_file.hpp), with per-key overrides
+// (Xu et al. 2015, §4.1 parameters by default).
+materials::SolidMaterial read_material(const Config& t, std::vector<std::string>& notes) {
   materials::SolidMaterial m;
-  const std::string base = t.get_choice("library", materials::material_names());
-  m = materials::make_material(base);
+  const std::optional<materials::MaterialFile> file = materials::open_material_file(t);
+  if (file && t.has("library")) t.fail("library", "give either library = \"...\" or file = \"...\", not both");
+  if (!file) m = materials::make_material(t.get_choice("library", materials::material_names()));
   m.name = t.get_string("name");
-  auto over = [&](std::string_view key, double& field, Range range) { field = t.get_double_or(key, field, range); };
-  over("rho0", m.eos.rho0, Range::positive());
-  over("c0", m.eos.c0, Range::positive());
-  over("lambda", m.eos.lambda, Range::closed(0.0, 10.0));
-  over("gamma0", m.eos.gamma0, Range::closed(0.0, 10.0));
+  const materials::MaterialFile* f = file ? &*file : nullptr;
+  const std::string needed_by = fmt::format("the MPM material '{}'", m.name);
+  // From the case, else the material file, else the library's value (fallback nullopt: required).
+  auto over = [&](std::string_view key, double& field, Range range, std::initializer_list<std::string_view> file_keys,
+                  bool required) {
+    field = materials::case_or_file(t, key, f, file_keys, required && f ? std::nullopt : std::optional(field), range,
+                                    needed_by);
+  };
+  over("rho0", m.eos.rho0, Range::positive(), {"eos.rho0"}, true);
+  over("c0", m.eos.c0, Range::positive(), {"eos.c0"}, true);
+  over("lambda", m.eos.lambda, Range::closed(0.0, 10.0), {"eos.s"}, true);
+  over("gamma0", m.eos.gamma0, Range::closed(0.0, 10.0), {"eos.gamma0"}, true);
+  if (f && f->get("eos.s2").value_or(0.0) != 0.0)
+    t.fail("file", fmt::format("{}: eos.s2 = {} s/m: the MPM's Mie-Gruneisen EOS is linear in Up (s2 = 0); write the "
+                               "material with a linear fit (shockfield bridge hugoniot-to-eos --quadratic no)",
+                               f->path().string(), *f->get("eos.s2")));
   if (t.has("young") || t.has("poisson")) {
     const double young = t.get_double("young", Range::positive());
     const double nu = t.get_double("poisson", {-1.0, 0.5, true, true});
     m.strength.shear_modulus = young / (2.0 * (1.0 + nu));
+  } else if (f) {
+    m.strength.shear_modulus = f->get("elasticity.shear").value_or(0.0);
+    if (!f->get("elasticity.shear"))
+      f->missing("elasticity.shear", needed_by, fmt::format("young and poisson in {} of {}", t.path(), t.file()));
   }
-  over("yield_stress", m.strength.yield_stress0, Range::non_negative());
-  over("tangent_modulus", m.strength.tangent_modulus, Range::non_negative());
-  over("isotropic_fraction", m.strength.isotropic_fraction, Range::closed(0.0, 1.0));
-  over("heat_capacity", m.thermal.heat_capacity, Range::positive());
-  over("conductivity", m.thermal.conductivity, Range::non_negative());
-  over("initial_temperature", m.thermal.initial_temperature, Range::positive());
-  over("viscosity_quadratic", m.viscosity.quadratic, Range::non_negative());
-  over("viscosity_linear", m.viscosity.linear, Range::non_negative());
-  over("spall_strength", m.spall.strength, Range::non_negative());
+  over("yield_stress", m.strength.yield_stress0, Range::non_negative(), {"strength.yield_stress"}, true);
+  over("tangent_modulus", m.strength.tangent_modulus, Range::non_negative(), {"strength.tangent_modulus"}, false);
+  over("isotropic_fraction", m.strength.isotropic_fraction, Range::closed(0.0, 1.0), {}, false);
+  over("heat_capacity", m.thermal.heat_capacity, Range::positive(), {"thermal.heat_capacity"}, true);
+  over("conductivity", m.thermal.conductivity, Range::non_negative(), {"thermal.conductivity"}, false);
+  over("initial_temperature", m.thermal.initial_temperature, Range::positive(), {"thermal.initial_temperature"}, false);
+  over("viscosity_quadratic", m.viscosity.quadratic, Range::non_negative(), {}, false);
+  over("viscosity_linear", m.viscosity.linear, Range::non_negative(), {}, false);
+  over("spall_strength", m.spall.strength, Range::non_negative(), {"spall.strength"}, false);
+  if (f)
+    for (const std::string& line : f->summary_lines()) notes.push_back(fmt::format("'{}' from {}", m.name, line));
   try {
     m.validate();
   } catch (const InputError& e) {
-    t.fail("library", e.what());
+    t.fail(f ? "file" : "library", e.what());
   }
   return m;
 }
@@ -161,9 +181,9 @@ MpmCase read_mpm_case(const Config& root) {
   }
 
   const auto materials = root.tables("material");
-  if (materials.empty()) root.fail("material", "expected at least one [[material]] (name, library, overrides)");
+  if (materials.empty()) root.fail("material", "expected at least one [[material]] (name, library or file, overrides)");
   for (const Config& m : materials) {
-    c.materials.push_back(read_material(m));
+    c.materials.push_back(read_material(m, c.material_notes));
     if (std::count(c.material_names.begin(), c.material_names.end(), c.materials.back().name))
       m.fail("name", fmt::format("material name \"{}\" is used twice", c.materials.back().name));
     c.material_names.push_back(c.materials.back().name);

@@ -62,6 +62,7 @@ struct MpmCase {
   double end_time = 0.0;            ///< [s]
   std::vector<materials::SolidMaterial> materials;
   std::vector<std::string> material_names;  ///< the case's names, parallel to `materials`
+  std::vector<std::string> material_notes;  ///< material files used: path, SHA-256, provenance (for the log)
   std::vector<BodySpec> bodies;
   LoadingKind loading = LoadingKind::None;
   double speed = 0.0;                ///< loading speed [m/s]

@@ -213,6 +213,7 @@ class MpmMethod final : public Method {
     start_time_ = sim_.time();
   }
   void log_plan() const {
+    for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
     log_->info("running to t = {} s; initial dt = {} s (about {} steps)", c_.end_time, first_dt_, steps_left());
   }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/materials/material_file.hpp"
 
 namespace shockfield::pd {
 namespace {
@@ -55,29 +56,51 @@ const std::vector<ModelKey>& model_keys() {
 
 // Density and critical-stretch damage of a bond model (LAMMPS s00 and α).
 template <class Law>
-BondSpec<Law> read_bond(const Config& t, Law law) {
-  BondSpec<Law> s{law, t.get_double("density", Range::positive()), {}};
+BondSpec<Law> read_bond(const Config& t, double density, Law law) {
+  BondSpec<Law> s{law, density, {}};
   s.damage.s00 = t.get_double("critical_stretch", Range::positive());
   s.damage.alpha = t.get_double_or("alpha", 0.25, Range::non_negative());
   return s;
 }
 
-std::variant<SmallStrainJ2, CrystalSpec, PmbSpec, LpsSpec> read_material(const Config& t) {
+// Young's modulus and Poisson's ratio from the case, else from a material file's isotropic K, G:
+// E = 9KG/(3K + G), ν = (3K − 2G)/(2(3K + G)).
+std::pair<double, double> young_poisson(const Config& t, const materials::MaterialFile* f) {
+  const Range poisson{-1.0, 0.5, true, true};
+  if (!f || t.has("young") || t.has("poisson")) return {t.get_double("young", Range::positive()), t.get_double("poisson", poisson)};
+  const std::string needed_by = "[material] model = \"j2\"";
+  const std::string alternative = fmt::format("young and poisson in [material] of {}", t.file());
+  const auto k = f->get("elasticity.bulk"), g = f->get("elasticity.shear");
+  if (!k) f->missing("elasticity.bulk", needed_by, alternative);
+  if (!g) f->missing("elasticity.shear", needed_by, alternative);
+  return {t.get_double_or("young", 9.0 * *k * *g / (3.0 * *k + *g), Range::positive()),
+          t.get_double_or("poisson", (3.0 * *k - 2.0 * *g) / (2.0 * (3.0 * *k + *g)), poisson)};
+}
+
+std::variant<SmallStrainJ2, CrystalSpec, PmbSpec, LpsSpec> read_material(const Config& t, std::vector<std::string>& notes) {
   const std::string model = t.get_choice_or("model", {"j2", "crystal", "pmb", "lps"}, "j2");
   for (const ModelKey& k : model_keys())
     if (t.has(k.key) && std::find(k.models.begin(), k.models.end(), model) == k.models.end())
       t.fail(k.key, fmt::format("not a parameter of model = \"{}\" (only of model = \"{}\")", model,
                                 fmt::join(k.models, "\" or \"")));
-  if (model == "crystal") return read_crystal(t);
-  if (model == "pmb") return read_bond(t, PmbModel{t.get_double("micromodulus", Range::positive())});
+  const std::optional<materials::MaterialFile> file = materials::open_material_file(t);
+  const materials::MaterialFile* f = file ? &*file : nullptr;
+  if (f) notes = f->summary_lines();
+  const std::string needed_by = fmt::format("[material] model = \"{}\"", model);
+  const auto value = [&](std::string_view key, std::initializer_list<std::string_view> file_keys,
+                         std::optional<double> fallback, Range range) {
+    return materials::case_or_file(t, key, f, file_keys, fallback, range, needed_by);
+  };
+  if (model == "crystal") return read_crystal(t, f);
+  const double density = value("density", {"elasticity.density", "eos.rho0"}, {}, Range::positive());
+  if (model == "pmb") return read_bond(t, density, PmbModel{t.get_double("micromodulus", Range::positive())});
   if (model == "lps")
-    return read_bond(t, LpsModel{t.get_double("bulk", Range::positive()), t.get_double("shear", Range::positive())});
-  const double density = t.get_double("density", Range::positive());
-  const double young = t.get_double("young", Range::positive());
-  const double poisson = t.get_double("poisson", {-1.0, 0.5, true, true});
-  const double yield = t.get_double("yield_stress", Range::positive());
-  const double hardening = t.get_double_or("hardening", 0.0, Range::non_negative());
-  const double slope = t.get_double_or("hugoniot_slope", 0.0, Range::closed(0.0, 10.0));
+    return read_bond(t, density, LpsModel{value("bulk", {"elasticity.bulk"}, {}, Range::positive()),
+                                          value("shear", {"elasticity.shear"}, {}, Range::positive())});
+  const auto [young, poisson] = young_poisson(t, f);
+  const double yield = value("yield_stress", {"strength.yield_stress"}, {}, Range::positive());
+  const double hardening = value("hardening", {"strength.tangent_modulus"}, 0.0, Range::non_negative());
+  const double slope = value("hugoniot_slope", {"eos.s"}, 0.0, Range::closed(0.0, 10.0));
   try {
     return SmallStrainJ2::from_young(density, young, poisson, yield, hardening, slope);
   } catch (const InputError& e) {
@@ -104,7 +127,7 @@ OutputSpec read_output(const std::optional<Config>& o, double end_time) {
 PdCase read_pd_case(const Config& root) {
   PdCase c;
   c.body = read_body(root.table("body"));
-  c.material = read_material(root.table("material"));
+  c.material = read_material(root.table("material"), c.material_notes);
   if (auto* lps = std::get_if<LpsSpec>(&c.material)) lps->law.dim = c.body.dim;  // the 1D/2D/3D LPS
   c.solver = read_solver(root.table("solver"));
   const Config loading = root.table("loading");

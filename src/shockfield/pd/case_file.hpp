@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/output_schedule.hpp"
@@ -56,6 +57,7 @@ struct PdCase {
   SolverSpec solver;
   double impact_speed = 0.0;  ///< left half at +v, right half at rest [m/s]
   OutputSpec output;
+  std::vector<std::string> material_notes;  ///< the material file used: path, SHA-256, provenance (for the log)
 };
 
 /// Reads [body], [material], [solver], [loading] and [output].

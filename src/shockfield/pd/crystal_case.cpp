@@ -21,10 +21,12 @@ Mat3 random_orientation(std::uint64_t seed, std::uint64_t k) {
 
 }  // namespace
 
-CrystalSpec read_crystal(const Config& t) {
+CrystalSpec read_crystal(const Config& t, const materials::MaterialFile* file) {
   CrystalSpec s;
   CrystalMaterial& m = s.base;
-  m.density = t.get_double("density", Range::positive());
+  const std::string needed_by = "[material] model = \"crystal\"";
+  m.density = materials::case_or_file(t, "density", file, {"elasticity.density", "eos.rho0"}, {}, Range::positive(),
+                                      needed_by);
   materials::CrystalViscoplasticity& c = m.aggregate.crystal;
   const std::string systems = t.get_string_or("slip_systems", "fcc");
   try {
@@ -32,10 +34,17 @@ CrystalSpec read_crystal(const Config& t) {
   } catch (const InputError& e) {
     t.fail("slip_systems", e.what());
   }
-  auto over = [&](std::string_view key, double& field, Range range) { field = t.get_double_or(key, field, range); };
+  // From the case, else the material file, else Table 1 (with a material file, its elastic
+  // constants are required: a file without them would silently run Table 1's copper).
+  auto over = [&](std::string_view key, double& field, Range range, std::initializer_list<std::string_view> file_keys = {},
+                  bool required_with_file = false) {
+    const materials::MaterialFile* f = file_keys.size() ? file : nullptr;
+    field = materials::case_or_file(t, key, f, file_keys, f && required_with_file ? std::nullopt : std::optional(field),
+                                    range, needed_by);
+  };
   over("reference_rate", c.reference_rate, Range::positive());  // γ̇0, eq. 37
   over("rate_sensitivity", c.rate_sensitivity, {0.0, 1.0, true, false});  // m
-  over("g0", c.initial_resistance, Range::positive());  // eqs. 38-41
+  over("g0", c.initial_resistance, Range::positive(), {"strength.g0"});  // eqs. 38-41
   over("g_s", c.saturation_resistance, Range::positive());
   over("h0", c.hardening, Range::non_negative());
   over("q", c.latent_ratio, Range::non_negative());
@@ -43,16 +52,16 @@ CrystalSpec read_crystal(const Config& t) {
                         ? materials::HardeningLaw::power
                         : materials::HardeningLaw::sech2;
   over("hardening_exponent", c.hardening_exponent, Range::positive());  // a (power law only)
-  over("c11", c.c11, Range::positive());  // eqs. 31-32
-  over("c12", c.c12, {});
-  over("c44", c.c44, Range::positive());
+  over("c11", c.c11, Range::positive(), {"elasticity.c11"}, true);  // eqs. 31-32
+  over("c12", c.c12, {}, {"elasticity.c12"}, true);
+  over("c44", c.c44, Range::positive(), {"elasticity.c44"}, true);
   over("substep_factor", c.substep_factor, {0.0, 2.0, true, true});
   try {
     c.validate("crystal");
   } catch (const InputError& e) {
     t.fail("g0", e.what());
   }
-  m.slope = t.get_double_or("hugoniot_slope", 0.0, Range::closed(0.0, 10.0));
+  m.slope = materials::case_or_file(t, "hugoniot_slope", file, {"eos.s"}, 0.0, Range::closed(0.0, 10.0), needed_by);
   const std::string kind =
       t.get_choice_or("orientation", {"direction", "euler", "random", "random_grains"}, "direction");
   const auto grains = static_cast<std::size_t>(t.get_int_or("taylor_grains", 1, Range::closed(1, 10000)));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "shockfield/core/config.hpp"
+#include "shockfield/materials/material_file.hpp"
 #include "shockfield/pd/crystal_material.hpp"
 #include "shockfield/pd/point_cloud.hpp"
 
@@ -22,8 +23,9 @@ struct CrystalSpec {
   std::uint64_t seed = 1;                ///< stream of the grain sizes and orientations
 };
 
-/// Reads the crystal keys of [material] (model = "crystal" already read).
-CrystalSpec read_crystal(const Config& t);
+/// Reads the crystal keys of [material] (model = "crystal" already read); density, c11, c12, c44,
+/// g0 and hugoniot_slope not given in the case come from `file` when it has them.
+CrystalSpec read_crystal(const Config& t, const materials::MaterialFile* file = nullptr);
 
 struct CrystalBody {
   std::vector<CrystalMaterial> materials;  ///< one for a single crystal, else one per point

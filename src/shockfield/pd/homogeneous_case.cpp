@@ -69,7 +69,8 @@ class HomogeneousMethod final : public Method {
     const Config material = root.table("material");
     if (material.get_choice_or("model", {"j2", "crystal", "pmb", "lps"}, "j2") != "crystal")
       material.fail("model", "[homogeneous] drives the crystal law: model = \"crystal\"");
-    spec_ = read_crystal(material);
+    const std::optional<materials::MaterialFile> file = materials::open_material_file(material);
+    spec_ = read_crystal(material, file ? &*file : nullptr);
     if (spec_.polycrystal)
       material.fail("orientation", "[homogeneous] is one material point: orientation = \"direction\", \"euler\" or "
                                    "\"random\" (with taylor_grains), not \"random_grains\"");

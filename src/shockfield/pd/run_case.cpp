@@ -234,6 +234,7 @@ class PdMethod final : public Method {
  private:
   void open(RunContext& run, std::optional<ResumePoint> resume) {
     log_ = &run.log;
+    for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
     output_.emplace(run.folder, model_.fields, resume);
     if (!finished())
       log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",

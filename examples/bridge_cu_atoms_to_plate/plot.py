@@ -1,0 +1,79 @@
+"""bridge_cu.png of the bridge example, and the table of its README: the MD Us-Up points, the
+bridged linear fit, the MPM shocked states on the bridged EOS and the experimental copper Hugoniot
+(Marsh 1980: Us = 3.940 + 1.489 Up km/s); the PD elastic front speeds on the bridged cubic
+constants against sqrt(C_L/rho); the share of the wall time each scale took.
+Usage: plot.py OUT PNG [--check] (OUT: the folder run.sh wrote). With --check, exits 1 unless the
+issue's round-trip bounds hold: MPM Us, P (against the MD Rankine-Hugoniot P) and rho within 2% of
+every MD point, PD front speeds within 1% of sqrt(C_L/rho)."""
+import csv
+import sys
+import tomllib
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+out, png = sys.argv[1], sys.argv[2]
+check = "--check" in sys.argv[3:]
+worst = {"mpm": 0.0, "pd": 0.0}
+md = list(csv.DictReader(open(f"{out}/md_sweep/hugoniot_sweep.csv")))
+md_up = np.array([float(r["up_km_s"]) for r in md])
+md_us = np.array([float(r["us_km_s"]) for r in md])
+md_err = np.array([float(r["us_stderr_km_s"]) for r in md])
+md_p = np.array([float(r["pressure_GPa"]) for r in md])
+md_prh = np.array([float(r["pressure_rankine_hugoniot_GPa"]) for r in md])
+md_rho = np.array([float(r["density_g_cc"]) * 1e3 for r in md])
+mpm = np.loadtxt(f"{out}/mpm_states.txt", ndmin=2)  # up us P P_RH rho
+material = tomllib.load(open(f"{out}/cu_md.toml", "rb"))
+eos, el = material["eos"], material["elasticity"]
+fit = material["provenance"]["hugoniot_to_eos"]["fit"]
+c0, s = eos["c0"] / 1e3, eos["s"]
+pd = {line.split()[0]: float(line.split()[1]) for line in open(f"{out}/pd_speeds.txt")}
+c11, c12, c44, rho = el["c11"], el["c12"], el["c44"], el["density"]
+cl = {"100": c11, "110": (c11 + c12 + 2 * c44) / 2, "111": (c11 + 2 * c12 + 4 * c44) / 3}
+times = {line.split()[0]: float(line.split()[1]) for line in open(f"{out}/timings.txt")}
+total = sum(times.values())
+
+print(f"bridged EOS: c0 = {c0:.3f} +- {fit['c0_stderr_m_s'] / 1e3:.3f} km/s, s = {s:.3f} +- {fit['s_stderr']:.3f}"
+      f" (Marsh 1980 copper: 3.940, 1.489); rho0 = {eos['rho0']:.0f} kg/m^3")
+print("| Up (km/s) | MD Us | MPM Us | dUs | MD P_RH | MD P (virial) | MPM P | dP (vs P_RH) | MD rho | MPM rho | drho |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
+for k in range(len(md_up)):
+    u, us_m, p_m, _, rho_m = mpm[k]
+    worst["mpm"] = max(worst["mpm"], abs(us_m / md_us[k] - 1), abs(p_m / md_prh[k] - 1), abs(rho_m / md_rho[k] - 1))
+    print(f"| {md_up[k]:.3f} | {md_us[k]:.3f} | {us_m:.3f} | {100 * (us_m / md_us[k] - 1):+.2f}% | {md_prh[k]:.2f} | "
+          f"{md_p[k]:.2f} | {p_m:.2f} | {100 * (p_m / md_prh[k] - 1):+.2f}% | {md_rho[k]:.0f} | {rho_m:.0f} | "
+          f"{100 * (rho_m / md_rho[k] - 1):+.2f}% |")
+for d in ("100", "110", "111"):
+    ref = np.sqrt(cl[d] / rho)
+    worst["pd"] = max(worst["pd"], abs(pd[d] / ref - 1))
+    print(f"PD [{d}]: front {pd[d]:.1f} m/s, sqrt(C_L/rho) = {ref:.1f} m/s ({100 * (pd[d] / ref - 1):+.2f}%)")
+print("wall time: " + ", ".join(f"{k} {v:.0f} s ({100 * v / total:.0f}%)" for k, v in times.items()))
+
+fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.3), gridspec_kw={"width_ratios": [1.6, 1]})
+up = np.linspace(0.0, 1.1 * md_up.max(), 50)
+a.plot(up, 3.940 + 1.489 * up, "k--", label="experiment, Cu (Marsh 1980)")
+a.plot(up, c0 + s * up, "C0-", label=f"bridged fit: c0 = {c0:.2f} km/s, s = {s:.2f}")
+a.errorbar(md_up, md_us, yerr=md_err, fmt="o", color="C0", label="MD, Cu_u3.eam [100]")
+a.plot(mpm[:, 0], mpm[:, 1], "s", mfc="none", color="C3", ms=9, label="MPM impact on the bridged EOS")
+a.set_xlabel("particle velocity Up (km/s)")
+a.set_ylabel("shock speed Us (km/s)")
+a.legend(fontsize=8)
+a.set_title("Hugoniot: atoms -> EOS -> plate impact", fontsize=10)
+dirs = ["100", "110", "111"]
+x = np.arange(3)
+b.bar(x - 0.18, [np.sqrt(cl[d] / rho) / 1e3 for d in dirs], 0.36, label="sqrt(C_L/rho), MD constants")
+b.bar(x + 0.18, [pd[d] / 1e3 for d in dirs], 0.36, label="PD crystal bar, front")
+b.set_xticks(x, [f"[{d}]" for d in dirs])
+b.set_ylim(3.5, 5.6)
+b.set_ylabel("longitudinal speed (km/s)")
+b.legend(fontsize=8, loc="upper left")
+b.set_title("elastic waves: atoms -> cubic C_ij -> PD", fontsize=10)
+fig.suptitle("wall time: " + ", ".join(f"{k} {100 * v / total:.0f}%" for k, v in times.items())
+             + f" of {total:.0f} s", fontsize=9)
+fig.tight_layout()
+fig.savefig(png, dpi=110)
+if check and (worst["mpm"] > 0.02 or worst["pd"] > 0.01):
+    sys.exit(f"round trip outside the bounds: MPM {100 * worst['mpm']:.2f}% (2%), PD {100 * worst['pd']:.2f}% (1%)")
