@@ -14,3 +14,13 @@ inline constexpr double A_per_ps_to_km_per_s = 0.1;  ///< Å/ps → km/s
 inline constexpr double bar_to_GPa = 1.0e-4;
 
 }  // namespace shockfield::units::metal
+
+namespace shockfield::units::si {
+
+inline constexpr double eV = 1.602176634e-19;     ///< J (exact, SI 2019)
+inline constexpr double amu = 1.66053906660e-27;  ///< kg (CODATA 2018)
+inline constexpr double boltz = 1.380649e-23;     ///< Boltzmann constant, J/K (exact, SI 2019)
+inline constexpr double hbar = 1.054571817e-34;   ///< reduced Planck constant, J·s (exact)
+inline constexpr double angstrom = 1e-10;         ///< m
+
+}  // namespace shockfield::units::si
