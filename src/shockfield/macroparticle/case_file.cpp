@@ -97,6 +97,18 @@ LangevinSpec read_langevin(const Config& t, const PairLaw& law) {
   return s;
 }
 
+PlasticRoute read_plasticity(const Config& t) {
+  PlasticRoute r;
+  r.yield_strain = t.get_double("yield_strain", {0.0, 0.2, true, false});
+  r.hardening = t.get_doubles_or("hardening", {0.0});
+  if (r.hardening.size() > 8) t.fail("hardening", "at most 8 polynomial coefficients h_1 ... h_8");
+  if (r.hardening[0] < 0 || r.hardening[0] >= 1)
+    t.fail("hardening", fmt::format("h_1 = {} must be in [0, 1): the plastic route's slope as a fraction of the "
+                                    "elastic stiffness k", r.hardening[0]));
+  r.limit_strain = t.get_double_or("limit_strain", 0.3, {r.yield_strain, 1.0, true, false});
+  return r;
+}
+
 }  // namespace
 
 MacroparticleCase read_macroparticle_case(const Config& root) {
@@ -113,6 +125,7 @@ MacroparticleCase read_macroparticle_case(const Config& root) {
   const PairLaw& law = c.law;
   c.loading = read_loading(root.optional_table("loading"));
   if (const auto t = root.optional_table("langevin")) c.langevin = read_langevin(*t, law);
+  if (const auto t = root.optional_table("plasticity")) c.plasticity = read_plasticity(*t);
 
   const Config run = root.table("run");
   const double stable = law.stable_time_step();

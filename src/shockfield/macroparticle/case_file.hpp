@@ -11,6 +11,7 @@
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/macroparticle/parameters.hpp"
+#include "shockfield/macroparticle/plastic_bonds.hpp"
 
 namespace shockfield::macroparticle {
 
@@ -49,6 +50,7 @@ struct MacroparticleCase {
   SpecimenSpec specimen;
   LoadingSpec loading;
   std::optional<LangevinSpec> langevin;
+  std::optional<PlasticRoute> plasticity;  ///< [plasticity]: the bond law of eq 16
   double dt = 0;             ///< s
   long long steps = 0;
   OutputSpec output;

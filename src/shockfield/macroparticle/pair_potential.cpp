@@ -1,6 +1,7 @@
 #include "shockfield/macroparticle/pair_potential.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <cmath>
 
@@ -34,7 +35,46 @@ void MacroparticlePotential::check_types(const md::Atoms& atoms) const {
     throw InputError(fmt::format("pair style macroparticle: one particle type, the system has {}", atoms.ntypes()));
 }
 
+void MacroparticlePotential::set_plasticity(const PlasticRoute& route, std::shared_ptr<BondTable> table) {
+  plastic_.emplace(p_, q_, route);
+  bonds_ = std::move(table);
+}
+
+void MacroparticlePotential::compute_plastic(md::Atoms& atoms, const geometry::NeighborList& list,
+                                             md::ForceResult& out) {
+  const double cutsq = cutoff_ * cutoff_;
+  const PlasticBondLaw* law = &*plastic_;
+  const BondTable* table = bonds_.get();
+  auto* pending = bonds_->pending(omp_get_max_threads()).data();
+  const std::int64_t* id = atoms.id.data();
+  const int* owner = atoms.ghost_owner.data();
+  const auto nlocal = static_cast<int>(atoms.nlocal);
+  auto kernel = [=](int i, int j, double rsq, double& fpair, double& energy) {
+    if (rsq >= cutsq) return false;
+    const double r = std::sqrt(rsq);
+    const std::int64_t idj = j < nlocal ? id[j] : id[owner[j - nlocal]];
+    const std::uint64_t key = BondTable::key(id[i], idj);
+    const BondState* known = table->find(key);
+    double tension;
+    if (!known && law->elastic_band(r)) {
+      tension = law->elastic_tension(r);
+      energy = law->elastic_energy(r);
+    } else {
+      BondState s = known ? *known : law->initial();
+      if (law->evaluate(r, s, tension, energy)) pending[omp_get_thread_num()].emplace_back(key, s);
+    }
+    fpair = -tension / r;  // force on i = −T (x_i − x_j)/r
+    return true;
+  };
+  md::potentials::accumulate_pair_forces(atoms, list, kernel, out, scratch_);
+  bonds_->apply_pending();
+}
+
 void MacroparticlePotential::compute(md::Atoms& atoms, const geometry::NeighborList& list, md::ForceResult& out) {
+  if (plastic_) {
+    compute_plastic(atoms, list, out);
+    return;
+  }
   const double cutsq = cutoff_ * cutoff_;
   const double scale = p_ * q_ / (q_ - p_);
   const double ep = q_ / (q_ - p_), eq = p_ / (q_ - p_);

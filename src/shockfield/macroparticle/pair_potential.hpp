@@ -6,8 +6,13 @@
 // for r below the cutoff, which lies between the first (r0) and second (√2 r0) neighbour shells of
 // the fcc packing, so that each particle has the 12 bonds eq 10 shares its energy among. The
 // energy is not shifted: a bulk particle has φ = −6D = −P_atom exactly (eq 10). Integer
-// exponents (all of Table 1) take a multiply-only path as fast as lj/cut's.
+// exponents (all of Table 1) take a multiply-only path as fast as lj/cut's. With a plastic route
+// (plastic_bonds.hpp) every pair outside the elastic band follows its bond state instead.
+#include <memory>
+#include <optional>
 #include <string>
+
+#include "shockfield/macroparticle/plastic_bonds.hpp"
 
 #include "shockfield/md/potential.hpp"
 #include "shockfield/md/potentials/pair_loop.hpp"
@@ -18,6 +23,8 @@ class MacroparticlePotential final : public md::Potential {
  public:
   /// Exponents p < q, cutoff in units of r0 (1 < cutoff < √2).
   MacroparticlePotential(double p, double q, double cutoff);
+  /// The plastic pair law of eq 16 with its bond states in `table`.
+  void set_plasticity(const PlasticRoute& route, std::shared_ptr<BondTable> table);
 
   std::string style() const override { return "macroparticle"; }
   double cutoff() const override { return cutoff_; }
@@ -28,7 +35,11 @@ class MacroparticlePotential final : public md::Potential {
   double q() const { return q_; }
 
  private:
+  void compute_plastic(md::Atoms& atoms, const geometry::NeighborList& list, md::ForceResult& out);
+
   double p_, q_, cutoff_;
+  std::optional<PlasticBondLaw> plastic_;
+  std::shared_ptr<BondTable> bonds_;
   md::potentials::ThreadScratch scratch_;
 };
 

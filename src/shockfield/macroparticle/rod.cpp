@@ -113,6 +113,11 @@ Rod::Rod(const MacroparticleCase& c)
   } else {
     sim_.fixes.push_back(std::make_unique<md::FixNve>(kFreeBit));
   }
+  if (c.plasticity) {
+    bonds_ = std::make_shared<BondTable>();
+    static_cast<MacroparticlePotential&>(*sim_.potential).set_plasticity(*c.plasticity, bonds_);
+    sim_.fixes.push_back(std::make_unique<FixBondHistory>(bonds_));
+  }
   if (loaded)
     sim_.fixes.push_back(std::make_unique<FixLoadedLayers>(kBottomBit, kTopBit, 0.5 * rate * length0_, c.loading.clamped));
   sim_.setup(false);

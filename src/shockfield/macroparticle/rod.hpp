@@ -6,6 +6,7 @@
 // integrated by md's fix nve or fix langevin; and the measures of the loaded rod: strain of the
 // loaded layers, virial stress of the whole rod, lateral strain of its middle half.
 #include <cstdint>
+#include <memory>
 
 #include "shockfield/macroparticle/case_file.hpp"
 #include "shockfield/macroparticle/reduced_units.hpp"
@@ -42,9 +43,12 @@ class Rod {
   RodMeasures measure() const;
   /// σ_zz of each particle, Pa: −(its half of the pair virials)/(r0³/√2); needs per-atom tallies.
   std::vector<double> particle_stress() const;
+  /// The bond states of the plastic law (null without [plasticity]).
+  const BondTable* bonds() const { return bonds_.get(); }
 
  private:
   ReducedUnits units_;
+  std::shared_ptr<BondTable> bonds_;
   md::Simulation sim_;
   double length0_ = 0;     ///< L₀ between the loaded layers, engine units
   double volume0_ = 0;     ///< N r0³/√2, engine units

@@ -90,6 +90,10 @@ class MacroparticleMethod final : public Method {
     out.set("kinetic_J", m.kinetic);
     out.set("potential_J", m.potential);
     out.set("temperature_K", m.temperature);
+    if (const BondTable* bonds = rod_.bonds()) {
+      out.set("plastic_bonds", static_cast<long long>(bonds->size()));
+      out.set("broken_bonds", static_cast<long long>(bonds->broken()));
+    }
     return out;
   }
   std::vector<std::string> resume_safe_keys() const override {

@@ -82,10 +82,12 @@ TEST(MacroparticleDynamics, LangevinHoldsTheTemperatureWithMaxwellianVelocities)
 std::vector<Vec3> run_with_threads(int threads) {
   omp_set_num_threads(threads);
   const MacroparticleCase c = fixture::read_case(
-      fixture::rod(4, 4, 40.0, 0.0005, "dt = 1e-7") + "[langevin]\ntemperature = 1e17\nfriction = 0.05\nseed = 3\n");
+      fixture::rod(4, 4, 40.0, 0.0005, "dt = 1e-7") + "[langevin]\ntemperature = 1e17\nfriction = 0.05\nseed = 3\n"
+      "[plasticity]\nyield_strain = 0.0001\nhardening = [0.1]\n");
   Rod rod(c);
   for (long long s = 0; s < c.steps; ++s) rod.advance(s % 50 == 0);
   omp_set_num_threads(1);
+  EXPECT_GT(rod.bonds()->size(), 100u);  // the plastic bond table is in play
   return {rod.sim().atoms.x.begin(), rod.sim().atoms.x.begin() + static_cast<long>(rod.size())};
 }
 
@@ -94,7 +96,8 @@ TEST(MacroparticleDynamics, OneAndTwoThreadsAgree) {
   ASSERT_EQ(one.size(), two.size());
   double worst = 0;
   for (std::size_t i = 0; i < one.size(); ++i) worst = std::max(worst, (one[i] - two[i]).norm());
-  // The random forces are keyed on (seed, step, particle id), not on threads; the only
+  // The random forces are keyed on (seed, step, particle id) and the bond table on particle ids,
+  // not on threads; the only
   // difference is the order of the pair-force sums of md's pair loop (round-off, 1e-16 of a
   // force), grown over 125 steps of an elastic (non-chaotic) rod: 1e-10 r0 is far above it.
   EXPECT_LT(worst, 1e-10);
