@@ -87,13 +87,17 @@ LangevinSpec read_langevin(const Config& t, const PairLaw& law) {
     if (t.has("debye_temperature") || t.has("zeta_cg"))
       t.fail("friction", "give either friction (γ, kg/s) or debye_temperature with zeta_cg (eq 22), not both");
     s.friction = t.get_double("friction", Range::non_negative());
-  } else {
+  } else if (t.has("debye_temperature")) {
     // Eq 22: α^macro = ζ_CG m (π/6) ω_D, ω_D = k_B θ_D/ħ.
     const double theta = t.get_double("debye_temperature", Range::positive());
     const double zeta = t.get_double_or("zeta_cg", 1.0, Range::positive());
     const double omega_d = units::si::boltz * theta / units::si::hbar;
     s.friction = zeta * law.atomic_mass * std::numbers::pi / 6.0 * omega_d;
   }
+  s.pair_viscosity = t.get_double_or("pair_viscosity", 0.0, Range::non_negative());
+  if (s.friction == 0 && s.pair_viscosity == 0)
+    t.fail("friction", "the bath has no dissipation: give friction (eq 9), debye_temperature (eq 22) or "
+                       "pair_viscosity (eq 8) > 0");
   return s;
 }
 
@@ -139,6 +143,12 @@ MacroparticleCase read_macroparticle_case(const Config& root) {
                                 fmt::format("the friction γ = {:.4g} kg/s damps a particle (M = {:.4g} kg) within "
                                             "{:.3g} time steps; expected γΔt/M <= 0.5", c.langevin->friction,
                                             law.particle_mass, law.particle_mass / (c.langevin->friction * c.dt)));
+  // Eq 8 over 12 bonds acts like a friction of up to 12μ (a particle against its neighbours).
+  if (c.langevin && 12.0 * c.langevin->pair_viscosity * c.dt / law.particle_mass > 0.5)
+    root.table("langevin").fail("pair_viscosity", fmt::format("μ = {:.4g} kg/s over 12 bonds damps a particle (M = {:.4g} kg) "
+                                                              "within {:.3g} time steps; expected 12μΔt/M <= 0.5",
+                                                              c.langevin->pair_viscosity, law.particle_mass,
+                                                              law.particle_mass / (12.0 * c.langevin->pair_viscosity * c.dt)));
   if (c.loading.mode == LoadingSpec::Mode::none) {
     c.steps = run.get_int("steps", Range::closed(0, 1e12));
   } else {

@@ -33,6 +33,7 @@ struct LoadingSpec {
 struct LangevinSpec {
   double temperature = 0;    ///< K
   double friction = 0;       ///< γ = α^macro, kg/s (eq 22)
+  double pair_viscosity = 0; ///< μ of eq 8, kg/s
   double eta_cg = 1;         ///< η_CG of eq 21
   std::uint64_t seed = 1;
 };

@@ -7,6 +7,7 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/macroparticle/loaded_layers.hpp"
+#include "shockfield/macroparticle/pair_dissipation.hpp"
 #include "shockfield/macroparticle/pair_potential.hpp"
 #include "shockfield/md/fixes/langevin.hpp"
 #include "shockfield/md/fixes/nve.hpp"
@@ -104,15 +105,19 @@ Rod::Rod(const MacroparticleCase& c)
 
   sim_.box = p.box;
   sim_.atoms = std::move(p.atoms);
+  // Eq 21's η_CG scales the random forces, i.e. the bath temperature by η_CG²; γ and μ in engine
+  // units are γτ/M and μτ/M.
+  const double bath = c.langevin ? c.langevin->temperature * std::pow(c.langevin->eta_cg, 2) / units_.temperature() : 0.0;
+  const double per_engine_friction = units_.time() / units_.mass;
   if (c.langevin && c.langevin->friction > 0) {
-    // γ in engine units is γτ/M; fix langevin's damping time is M/γ. Eq 21's η_CG scales the
-    // random force, i.e. the bath temperature by η_CG².
-    const double damping = units_.mass / (c.langevin->friction * units_.time());
-    const double temperature = c.langevin->temperature * c.langevin->eta_cg * c.langevin->eta_cg / units_.temperature();
-    sim_.fixes.push_back(std::make_unique<md::FixLangevin>(temperature, damping, c.langevin->seed, kFreeBit));
+    const double damping = 1.0 / (c.langevin->friction * per_engine_friction);  // fix langevin's M/γ
+    sim_.fixes.push_back(std::make_unique<md::FixLangevin>(bath, damping, c.langevin->seed, kFreeBit));
   } else {
     sim_.fixes.push_back(std::make_unique<md::FixNve>(kFreeBit));
   }
+  if (c.langevin && c.langevin->pair_viscosity > 0)
+    sim_.fixes.push_back(std::make_unique<FixPairDissipation>(c.langevin->pair_viscosity * per_engine_friction, bath,
+                                                              c.langevin->seed, c.cutoff));
   if (c.plasticity) {
     bonds_ = std::make_shared<BondTable>();
     static_cast<MacroparticlePotential&>(*sim_.potential).set_plasticity(*c.plasticity, bonds_);
