@@ -18,5 +18,5 @@ for ratio in 0.5 1 2 4; do
 done
 # Fig 6: tension and compression to 5 % with the plastic pair law (n_phi = 4, n_h = 8).
 "$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/tension"
-"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/compression" --set loading.mode=compression
+"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/compression" --set 'loading.mode="compression"'
 /usr/bin/python3 "$here/plot.py" "$out" "$here"

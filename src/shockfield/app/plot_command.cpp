@@ -1,5 +1,6 @@
 // `shockfield plot KIND RUN_DIR`: PNG figures of a run folder, drawn by the Python helpers in
-// python/shockfield_plot/ (md_plots.py, mpm_plots.py) with Debian's matplotlib (/usr/bin/python3).
+// python/shockfield_plot/ (md_plots.py, mpm_plots.py, macroparticle_plots.py) with Debian's
+// matplotlib (/usr/bin/python3).
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -26,8 +27,8 @@ std::string quote(const std::string& s) {
 
 void plot(const PlotOptions& o) {
   const bool md = o.kind == "profiles" || o.kind == "thermo" || o.kind == "hugoniot";
-  const std::filesystem::path script = std::filesystem::path(SHOCKFIELD_SOURCE_DIR) / "python" /
-                                       "shockfield_plot" / (md ? "md_plots.py" : "mpm_plots.py");
+  const char* helper = md ? "md_plots.py" : o.kind == "stress-strain" ? "macroparticle_plots.py" : "mpm_plots.py";
+  const std::filesystem::path script = std::filesystem::path(SHOCKFIELD_SOURCE_DIR) / "python" / "shockfield_plot" / helper;
   if (!std::filesystem::exists(script))
     throw InputError(fmt::format("plot helper not found at {}", script.string()));
   if (!std::filesystem::is_directory(o.run)) throw InputError(fmt::format("'{}' is not a run folder", o.run));
@@ -53,10 +54,12 @@ void add_plot_command(CLI::App& app) {
       "  porous    MPM: bottom-window mean density, pressure, temperature, u_y against time beside\n"
       "            Xu et al.'s (2015) values, and particle temperatures at the last frame -> RUN/porous.png\n"
       "  cavity    MPM: particles around the cavity by temperature, cavity area and collapsibility\n"
-      "            against time -> RUN/cavity.png");
+      "            against time -> RUN/cavity.png\n"
+      "  stress-strain  macroparticle: stress against strain of a loaded rod, from thermo.csv\n"
+      "            -> RUN/stress-strain.png");
   cmd->add_option("kind", o->kind, "What to plot")
       ->required()
-      ->check(CLI::IsMember({"profiles", "thermo", "hugoniot", "porous", "cavity"}));
+      ->check(CLI::IsMember({"profiles", "thermo", "hugoniot", "porous", "cavity", "stress-strain"}));
   cmd->add_option("run", o->run, "Run folder")->required();
   cmd->add_option("-o,--out", o->out, "PNG file (default RUN/<kind>.png)");
   cmd->add_option("--axis", o->axis, "Shock axis of MD profiles (default z)")->check(CLI::IsMember({"x", "y", "z"}));
