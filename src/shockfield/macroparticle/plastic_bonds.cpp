@@ -37,12 +37,14 @@ bool PlasticBondLaw::stiff_branch(double t, double guess, double& s) const {
   double lo = 0.5, hi = r_inflection_;
   while (elastic_tension(lo) > t) lo *= 0.5;
   s = std::clamp(guess, lo, hi);
-  for (int it = 0; it < 60; ++it) {
+  // The guess is the last step's solution, a few ulps to 1e-6 away: Newton converges in 1–3
+  // steps; stop when the tension matches to round-off (1e-14 of the route tension's scale k).
+  for (int it = 0; it < 40; ++it) {
     const double f = elastic_tension(s) - t;
+    if (std::abs(f) <= 1e-14 * k_) return true;
     if (f > 0) hi = s; else lo = s;
     double next = s - f / elastic_curvature(s);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - s) <= 1e-15 * s) { s = next; return true; }
     s = next;
   }
   return true;
