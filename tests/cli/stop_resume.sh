@@ -19,6 +19,8 @@ case "$method" in
               fields/grid_000000040.vti thermo.csv" ;;
   granular) case_file="$cases/granular_tiny.toml"; stop=123
             files="series.csv probes.csv spacetime_force.csv spacetime_velocity.csv signal.csv thermo.csv" ;;
+  macroparticle) case_file="$cases/macroparticle_tiny.toml"; stop=123
+                 files="thermo.csv dumps/dump.250.lammpstrj particles.pvd particles/particles_250.vtp" ;;
   phasefield) case_file="$cases/phasefield_tiny.toml"; stop=23; files="series.csv fields.pvd fields/xi_3.vti thermo.csv" ;;
   *) fail "unknown method '$method'" ;;
 esac

@@ -1,5 +1,6 @@
 // `shockfield plot KIND RUN_DIR`: PNG figures of a run folder, drawn by the Python helpers in
-// shockfield_plot (md_plots.py, mpm_plots.py), found and run as app/python_helpers.hpp says.
+// shockfield_plot (md_plots.py, mpm_plots.py, macroparticle_plots.py), found and run as
+// app/python_helpers.hpp says.
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -22,8 +23,8 @@ struct PlotOptions {
 void plot(const PlotOptions& o) {
   const bool md = o.kind == "profiles" || o.kind == "thermo" || o.kind == "hugoniot";
   if (!std::filesystem::is_directory(o.run)) throw InputError(fmt::format("'{}' is not a run folder", o.run));
-  std::string args = fmt::format("-m shockfield_plot.{} {} {}", md ? "md_plots" : "mpm_plots", o.kind,
-                                 shell_quote(o.run));
+  const char* helper = md ? "md_plots" : o.kind == "stress-strain" ? "macroparticle_plots" : "mpm_plots";
+  std::string args = fmt::format("-m shockfield_plot.{} {} {}", helper, o.kind, shell_quote(o.run));
   if (o.kind == "profiles") args += " --axis " + o.axis;
   if (!o.out.empty()) args += " --out " + shell_quote(o.out);
   const std::string cmd = python_command(args);
@@ -46,10 +47,12 @@ void add_plot_command(CLI::App& app) {
       "  porous    MPM: bottom-window mean density, pressure, temperature, u_y against time beside\n"
       "            Xu et al.'s (2015) values, and particle temperatures at the last frame -> RUN/porous.png\n"
       "  cavity    MPM: particles around the cavity by temperature, cavity area and collapsibility\n"
-      "            against time -> RUN/cavity.png");
+      "            against time -> RUN/cavity.png\n"
+      "  stress-strain  macroparticle: stress against strain of a loaded rod, from thermo.csv\n"
+      "            -> RUN/stress-strain.png");
   cmd->add_option("kind", o->kind, "What to plot")
       ->required()
-      ->check(CLI::IsMember({"profiles", "thermo", "hugoniot", "porous", "cavity"}));
+      ->check(CLI::IsMember({"profiles", "thermo", "hugoniot", "porous", "cavity", "stress-strain"}));
   cmd->add_option("run", o->run, "Run folder")->required();
   cmd->add_option("-o,--out", o->out, "PNG file (default RUN/<kind>.png)");
   cmd->add_option("--axis", o->axis, "Shock axis of MD profiles (default z)")->check(CLI::IsMember({"x", "y", "z"}));

@@ -11,6 +11,7 @@
 #include "shockfield/dbm/run_case.hpp"
 #include "shockfield/granular/run_case.hpp"
 #include "shockfield/io/checked_file.hpp"
+#include "shockfield/macroparticle/run_case.hpp"
 #include "shockfield/md/run_case.hpp"
 #include "shockfield/mpm/run_case.hpp"
 #include "shockfield/pd/run_case.hpp"
@@ -24,7 +25,7 @@ namespace {
 const std::map<std::string, MethodFactory>& methods() {
   static const std::map<std::string, MethodFactory> table{
       {"dbm", &dbm::make_method}, {"md", &md::make_method}, {"mpm", &mpm::make_method}, {"pd", &pd::make_method},
-      {"granular", &granular::make_method},
+      {"granular", &granular::make_method}, {"macroparticle", &macroparticle::make_method},
       {"phasefield", &phasefield::make_method}};
   return table;
 }
@@ -54,7 +55,8 @@ void add_run_command(CLI::App& app, const std::vector<std::string>& command_line
       "folder with log.txt, config.resolved.toml, thermo.csv, dumps and checkpoints.\n"
       "Ctrl-C or SIGTERM writes a checkpoint and stops; --resume continues from it.\n"
       "Case-file keys: docs/md.md (method = \"md\"), docs/mpm.md (\"mpm\"), docs/pd.md (\"pd\"),\n"
-      "docs/dbm.md (\"dbm\"), docs/granular.md (\"granular\"), docs/phasefield.md (\"phasefield\").");
+      "docs/dbm.md (\"dbm\"), docs/granular.md (\"granular\"), docs/phasefield.md (\"phasefield\"),\n"
+      "docs/macroparticle.md (\"macroparticle\").");
   cmd->add_option("case", options->case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->output,
                   "Run folder (default: runs/<case file name without .toml>)");

@@ -16,3 +16,13 @@ inline constexpr double eV_to_J = 1.6021765e-19;     ///< the eV of nktv2p
 inline constexpr double amu_to_kg = 1.66053904e-27;  ///< the amu of amu_per_A3_to_g_per_cc
 
 }  // namespace shockfield::units::metal
+
+namespace shockfield::units::si {
+
+inline constexpr double eV = 1.602176634e-19;     ///< J (exact, SI 2019)
+inline constexpr double amu = 1.66053906660e-27;  ///< kg (CODATA 2018)
+inline constexpr double boltz = 1.380649e-23;     ///< Boltzmann constant, J/K (exact, SI 2019)
+inline constexpr double hbar = 1.054571817e-34;   ///< reduced Planck constant, J·s (exact)
+inline constexpr double angstrom = 1e-10;         ///< m
+
+}  // namespace shockfield::units::si

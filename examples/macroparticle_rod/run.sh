@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The aluminium rod of Saitoh et al.: E and ν against division (Figs 4, 5) and the plastic
+# stress–strain curves in tension and compression (Fig 6). Usage: run.sh [SHOCKFIELD] [OUT]
+# (defaults: build/release/shockfield of the repository, runs/macroparticle_rod). About 15 min on
+# one core; FINEST=8 skips the n_phi = 16 rods (about 3 min).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+sf="${1:-$root/build/release/shockfield}"
+out="${2:-$root/runs/macroparticle_rod}"
+finest="${FINEST:-16}"
+mkdir -p "$out"
+divisions="2 4 8"
+[ "$finest" -ge 16 ] && divisions="$divisions 16"
+# Figs 4 and 5: n_h/n_phi = 1/2, 1, 2, 4 (n_h >= 1), 0.1 % strain at T = 0 in 4000 steps.
+for ratio in 0.5 1 2 4; do
+  /usr/bin/python3 "$here/study.py" "$sf" "$out/elastic" "$ratio" $divisions
+done
+# Fig 6: tension and compression to 5 % with the plastic pair law (n_phi = 4, n_h = 8).
+"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/tension"
+"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/compression" --set 'loading.mode="compression"'
+/usr/bin/python3 "$here/plot.py" "$out" "$here"

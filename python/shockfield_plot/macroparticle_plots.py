@@ -1,0 +1,41 @@
+#!/usr/bin/python3
+"""Figures of macroparticle run folders (docs/macroparticle.md), used by `shockfield plot`.
+
+  macroparticle_plots.py stress-strain RUN_DIR [RUN_DIR ...] [--out FILE]
+      |stress| against |strain| of the loaded rods (thermo.csv columns Strain, Stress), one
+      curve per run labelled by its folder name -> RUN_DIR/stress-strain.png
+"""
+import argparse, csv, os
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+
+def stress_strain(runs, out, title="macroparticle rods"):
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for run in runs:
+        rows = list(csv.DictReader(open(os.path.join(run, "thermo.csv"))))
+        strain = np.array([float(r["Strain"]) for r in rows])
+        stress = np.array([float(r["Stress"]) for r in rows])
+        ax.plot(np.abs(strain) * 100, np.abs(stress) / 1e6, label=os.path.basename(os.path.normpath(run)))
+    ax.set_xlabel("|strain of the loaded layers| (%)")
+    ax.set_ylabel("|virial stress σ_zz| (MPa)")
+    ax.set_title(title)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("kind", choices=["stress-strain"])
+    ap.add_argument("runs", nargs="+")
+    ap.add_argument("--out")
+    a = ap.parse_args()
+    stress_strain(a.runs, a.out or os.path.join(a.runs[0], "stress-strain.png"))
+
+
+if __name__ == "__main__":
+    main()

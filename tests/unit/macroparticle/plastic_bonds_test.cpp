@@ -1,0 +1,114 @@
+// The plastic pair law of eq 16 (Fig 2) on one bond, in reduced units (r0 = D = 1, k = pq):
+// continuity of tension and energy where the bond yields and where it unloads, unloading on the
+// shifted elastic curve, reloading onto the route where it left it, energy = ∫ T dr along any
+// path (the route's and the shifted curves' energies are consistent), breaking beyond the limit,
+// and the table's round trip through a checkpoint vector.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "shockfield/macroparticle/plastic_bonds.hpp"
+
+namespace shockfield::macroparticle {
+namespace {
+
+const PlasticRoute kRoute{0.01, {0.1, 0.5}, 0.2};
+
+struct Walk {
+  PlasticBondLaw law{4, 9, kRoute};
+  BondState s = law.initial();
+  double t = 0, e = 0;
+  void at(double r) { law.evaluate(r, s, t, e); }
+};
+
+TEST(MacroparticlePlasticBond, ElasticInsideTheBandAndContinuousAtYield) {
+  Walk w;
+  w.at(1.005);
+  EXPECT_DOUBLE_EQ(w.t, w.law.elastic_tension(1.005));
+  EXPECT_DOUBLE_EQ(w.s.shift, 0.0);
+  w.at(1.01 - 1e-9);
+  const double t_below = w.t, e_below = w.e;
+  w.at(1.01 + 1e-9);
+  EXPECT_NEAR(w.t, t_below, 1e-6);  // slopes k and 0.1k over 2e-9
+  EXPECT_NEAR(w.e, e_below, 1e-9);
+  EXPECT_GT(w.s.shift, 0.0);
+}
+
+TEST(MacroparticlePlasticBond, RouteFollowsItsPolynomialAndUnloadsOnTheShiftedCurve) {
+  Walk w;
+  for (double r = 1.0; r <= 1.03; r += 1e-4) w.at(r);
+  const double ru = 1.03;
+  w.at(ru);
+  const double u = ru - 1.01;
+  // T_P = T_E(r_y) + k (h1 u + h2 u²), k = 36.
+  EXPECT_NEAR(w.t, w.law.elastic_tension(1.01) + 36.0 * (0.1 * u + 0.5 * u * u), 1e-12);
+  const double t_route = w.t, e_route = w.e, shift = w.s.shift;
+  EXPECT_NEAR(w.law.elastic_tension(ru - shift), t_route, 1e-12);  // Δr0 makes the force continuous
+  // Unload: the shifted elastic curve φ_E(r − Δr0) + C_φ, continuous at r_u.
+  w.at(ru - 1e-9);
+  EXPECT_NEAR(w.t, t_route, 1e-6);
+  EXPECT_NEAR(w.e, e_route, 1e-9);
+  w.at(1.02);
+  EXPECT_DOUBLE_EQ(w.s.shift, shift);
+  EXPECT_NEAR(w.t, w.law.elastic_tension(1.02 - shift), 1e-14);
+  // The tension vanishes at r0 + Δr0: the permanent set of the bond.
+  w.at(1.0 + shift);
+  EXPECT_NEAR(w.t, 0.0, 1e-12);
+  // Reloading meets the route where it left it.
+  w.at(ru);
+  EXPECT_NEAR(w.t, t_route, 1e-9);
+  EXPECT_NEAR(w.e, e_route, 1e-9);
+}
+
+TEST(MacroparticlePlasticBond, EnergyIsTheWorkOfTheTensionAlongAnyPath) {
+  // Out along the route, back below r0 into the compression route, out again: the energy change
+  // equals the trapezoid integral of T dr. Along a route the energy follows the curve the bond
+  // came on, which differs from the route's tension by O(k h) within a step: an error of
+  // O(k h²) per step, ~k h·(route length) ≈ 36·1e-5·0.1 = 4e-5 in all; allow 1e-4.
+  Walk w;
+  std::vector<double> path;
+  for (double r = 1.0; r < 1.04; r += 1e-5) path.push_back(r);
+  for (double r = 1.04; r > 0.97; r -= 1e-5) path.push_back(r);
+  for (double r = 0.97; r < 1.02; r += 1e-5) path.push_back(r);
+  w.at(path[0]);
+  double work = 0, t_prev = w.t, e_start = w.e;
+  for (std::size_t k = 1; k < path.size(); ++k) {
+    w.at(path[k]);
+    work += 0.5 * (w.t + t_prev) * (path[k] - path[k - 1]);
+    t_prev = w.t;
+  }
+  EXPECT_NEAR(w.e - e_start, work, 1e-4);
+  EXPECT_GT(std::abs(work), 0.01);
+  EXPECT_LT(w.s.r_min, 0.99);   // it went through the compression route
+  EXPECT_GT(w.s.r_max, 1.039);
+}
+
+TEST(MacroparticlePlasticBond, BreaksBeyondTheLimit) {
+  Walk w;
+  for (double r = 1.0; r < 1.25; r += 1e-3) w.at(r);
+  EXPECT_TRUE(w.s.broken);
+  const double e = w.e;
+  w.at(1.05);
+  EXPECT_EQ(w.t, 0.0);
+  EXPECT_EQ(w.e, e);
+}
+
+TEST(MacroparticlePlasticBond, TableSurvivesACheckpointVector) {
+  BondTable a;
+  a.pending(2)[1].emplace_back(BondTable::key(7, 3), BondState{0.01, -0.2, 1.03, 0.99, false, 1.03});
+  a.apply_pending();
+  a.pending(1)[0].emplace_back(BondTable::key(1, 4000000000LL), BondState{0.02, 0.1, 1.2, 0.99, true, -1});
+  a.apply_pending();
+  BondTable b;
+  b.restore(a.flatten());
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b.broken(), 1u);
+  const BondState* s = b.find(BondTable::key(3, 7));
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->shift, 0.01);
+  EXPECT_EQ(s->offset, -0.2);
+  EXPECT_EQ(b.flatten(), a.flatten());
+}
+
+}  // namespace
+}  // namespace shockfield::macroparticle
