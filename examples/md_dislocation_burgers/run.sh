@@ -10,7 +10,7 @@ out="$here/../../runs/md_dislocation_burgers"
 rm -rf "$out"
 mkdir -p "$out"
 cd "$here"
-$PY make_dislocation.py --output dislocation.data
+sh prepare.sh
 "$SF" run case.toml -o "$out/relax" -j 1 > "$out/run.log"
 "$SF" analyze atoms "$out/relax" --clusters 3.0 --cluster-select 'acna:!fcc,hcp' --cluster-min-size 10 \
   --burgers-orient '1 -1 0,1 1 1,-1 -1 2' --burgers-lattice 3.615 \

@@ -2,10 +2,20 @@
 # Every example's case file runs through the driver and leaves a summary.json that passes the
 # schema (tests/cli/check_summary.py): each case is run for two steps (--stop-after 2: exit 130,
 # status "stopped"); a pd [homogeneous] case keeps no checkpoint, so it runs whole (seconds).
+# An example whose inputs are generated (a prepare.sh beside its cases) is copied and prepared
+# first, so the source tree is left as it is.
 source "$(dirname "$0")/lib.bash"
 set -e
 count=0
+for example in "$ROOT"/examples/*/; do
+  [ -f "$example/prepare.sh" ] || continue
+  copy="$WORK/prepared/$(basename "$example")"
+  mkdir -p "$copy" && cp -r "$example"/. "$copy"/
+  sh "$copy/prepare.sh" > /dev/null || fail "$example/prepare.sh failed"
+done
 for case_file in "$ROOT"/examples/*/*.toml; do
+  prepared="$WORK/prepared/$(basename "$(dirname "$case_file")")"
+  [ -d "$prepared" ] && case_file="$prepared/$(basename "$case_file")"
   out="$WORK/$(basename "$(dirname "$case_file")")_$(basename "$case_file" .toml)"
   limit=(--stop-after 2)
   grep -q '^\[homogeneous\]' "$case_file" && limit=()
