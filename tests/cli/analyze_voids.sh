@@ -17,6 +17,8 @@ a, n = 3.615, 8
 x, L = fcc_sites(a, n), n * a
 for R in (6, 8, 10):
     write_dump(f"{sys.argv[1]}/void{R}.dump", x[np.linalg.norm(x - L / 2, axis=1) > R], L, R)
+d = x - L * np.round(x / L)  # the void of radius 6 around the corner, across every periodic face
+write_dump(f"{sys.argv[1]}/corner.dump", x[np.linalg.norm(d, axis=1) > 6], L, 0)
 PY
 "$SF" analyze atoms "$WORK/void6.dump" "$WORK/void8.dump" "$WORK/void10.dump" --voids 2.17 -o "$WORK/v" > "$WORK/stdout"
 grep -q "^3 voids in" "$WORK/stdout" || fail "void count: $(cat "$WORK/stdout")"
@@ -29,6 +31,13 @@ awk -F, 'NR > 1 { n = ($2 == 6 ? 79 : $2 == 8 ? 177 : 369); expected = n * 3.615
          END { exit bad > 0 }' "$V" || fail "voids: $(cat "$V")"
 for t in 6 8 10; do [ -s "$WORK/v/voids_$t.vtp" ] || fail "no voids_$t.vtp"; grep -q "<Polys>" "$WORK/v/voids_$t.vtp" || fail "voids_$t.vtp has no polygons"; done
 echo "ok: static voids R = 6, 8, 10 Å: missing volume within 3% of the removed atoms'"
+
+# The same void of R = 6 Å centred on the box corner, cut by all three periodic faces: found once
+# and whole (periodic images within --voids-margin join the division), the same missing volume.
+"$SF" analyze atoms "$WORK/corner.dump" --voids 2.17 -o "$WORK/corner" > /dev/null
+awk -F, -v ref="$(awk -F, '$2 == 6 { print $8 }' "$V")" 'NR > 1 { rows++; if ($8 < 0.999 * ref || $8 > 1.001 * ref || $14 != 2) bad++ }
+         END { exit bad > 0 || rows != 1 }' "$WORK/corner/voids.csv" || fail "corner void: $(cat "$WORK/corner/voids.csv")"
+echo "ok: a void across the periodic faces is found once, whole"
 
 "$SF" analyze atoms "$ROOT/tests/fixtures/lammps_structure/cu_void_300K.dump" --voids 2.17 -o "$WORK/t" > /dev/null
 awk -F, 'NR > 1 { r = $8 / (79 * 3.615^3 / 4); c = ($10 - 14.46)^2 + ($11 - 14.46)^2 + ($12 - 14.46)^2;

@@ -24,6 +24,11 @@ void add_void_options(CLI::App& cmd, VoidArgs& a) {
                  "Volume per atom of the crystal (Å³) for the voids' missing_volume; default: (box volume − the voids' "
                  "volumes) / atoms, right for a periodic box (give it for a sample with free surfaces)")
       ->check(CLI::PositiveNumber);
+  cmd.add_option("--voids-margin", a.margin,
+                 "Periodic images of the atoms within this distance (Å) of the faces join the division, so that a "
+                 "void across a periodic face is found whole (default 15, at most half the box; a larger void "
+                 "across a face needs a larger margin)")
+      ->check(CLI::PositiveNumber);
   cmd.add_option("--voids-min-volume", a.min_volume, "Leave out voids smaller than this (Å³; a vacancy is about one atomic volume)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
@@ -36,11 +41,52 @@ VoidOutput::VoidOutput(const VoidArgs& args, std::function<std::filesystem::path
   csv_.write("frame,timestep,void,cells,volume,area,equivalent_radius,missing_volume,missing_radius,x,y,z,surface_atoms,euler_characteristic,manifold\n");
 }
 
+// The atoms and, along periodic dimensions, their images within `margin` of the faces, so that
+// a void across a periodic face is closed in the (non-periodic) division.
+std::vector<std::array<double, 3>> with_images(const analysis::atoms::AtomFrame& frame, double margin) {
+  std::vector<std::array<double, 3>> points;
+  const geometry::Box& box = frame.box;
+  for (const Vec3& x0 : frame.positions) {
+    Vec3 x = x0;
+    for (int d = 0; d < 3; ++d)
+      if (box.periodic(d)) x[d] -= box.length()[d] * std::floor((x[d] - box.lo[d]) / box.length()[d]);
+    for (int sx = -1; sx <= 1; ++sx)
+      for (int sy = -1; sy <= 1; ++sy)
+        for (int sz = -1; sz <= 1; ++sz) {
+          const int shift[3] = {sx, sy, sz};
+          Vec3 image = x;
+          bool keep = true;
+          for (int d = 0; d < 3 && keep; ++d) {
+            if (shift[d] == 0) continue;
+            image[d] += shift[d] * box.length()[d];
+            keep = box.periodic(d) && image[d] >= box.lo[d] - margin && image[d] < box.hi[d] + margin;
+          }
+          if (keep) points.push_back({image.x(), image.y(), image.z()});
+        }
+  }
+  return points;
+}
+
 void VoidOutput::add(std::size_t frame_index, const analysis::atoms::AtomFrame& frame) {
-  std::vector<std::array<double, 3>> points(frame.size());
-  for (std::size_t i = 0; i < frame.size(); ++i) points[i] = {frame.positions[i].x(), frame.positions[i].y(), frame.positions[i].z()};
-  const auto division = geometry::delaunay_division<3>(std::move(points), fmt::format("the atoms of timestep {}", frame.timestep));
-  const auto cavities = geometry::rolling_ball_cavities(division, *args_.probe);
+  const geometry::Box& box = frame.box;
+  double margin = args_.margin.value_or(15.0);
+  for (int d = 0; d < 3; ++d)
+    if (box.periodic(d)) margin = std::min(margin, 0.5 * box.length()[d]);
+  const auto division = geometry::delaunay_division<3>(with_images(frame, margin), fmt::format("the atoms of timestep {}", frame.timestep));
+  // A void near a periodic face is found whole in several copies (it and its images): the copies
+  // have the same centre once wrapped into the box; one is kept, with its centre wrapped.
+  std::vector<geometry::Cavity> cavities;
+  for (geometry::Cavity& c : geometry::rolling_ball_cavities(division, *args_.probe)) {
+    Vec3 centre(c.centroid[0], c.centroid[1], c.centroid[2]);
+    std::array<int, 3> image{0, 0, 0};
+    box.wrap(centre, image);
+    const bool copy = std::any_of(cavities.begin(), cavities.end(), [&](const geometry::Cavity& k) {
+      return box.minimum_image(Vec3(k.centroid[0], k.centroid[1], k.centroid[2]) - centre).norm() < 1e-3;
+    });
+    if (copy) continue;
+    c.centroid = {centre.x(), centre.y(), centre.z()};
+    cavities.push_back(std::move(c));
+  }
   double cavity_volume = 0;
   for (const geometry::Cavity& c : cavities) cavity_volume += c.surface.volume;
   const double omega = args_.atomic_volume.value_or((frame.box.volume() - cavity_volume) / static_cast<double>(frame.size()));

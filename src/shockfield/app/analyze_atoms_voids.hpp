@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "shockfield/analysis/atoms/atom_frame.hpp"
+#include "shockfield/core/types.hpp"
 #include "shockfield/io/checked_file.hpp"
 
 namespace shockfield::app {
@@ -19,6 +20,7 @@ struct VoidArgs {
   std::optional<double> probe;  ///< Å
   double min_volume = 0;        ///< Å³
   std::optional<double> atomic_volume;  ///< Å³; default (box volume − voids) / atoms
+  std::optional<double> margin;         ///< Å of periodic images around the box; default 15
 };
 
 void add_void_options(CLI::App& cmd, VoidArgs& args);

@@ -190,6 +190,9 @@ std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double r
   std::vector<std::int32_t> stack;
   for (std::size_t t = 0; t < region.size(); ++t) {
     if (region[t] != BallPassage::kNone || !(ball.circumradius(t) > radius)) continue;
+    // A flat tetrahedron of four cospherical points (a lattice's degenerate split) has no room
+    // for a ball whatever its computed circumradius: it seeds no cavity.
+    if (simplex_volume<3>(d, t) < 1e-9 * std::pow(ball.circumradius(t), 3)) continue;
     const auto label = static_cast<std::int32_t>(cavities.size()) + 1;
     region[t] = label;
     stack.push_back(static_cast<std::int32_t>(t));
