@@ -31,6 +31,7 @@ struct Outcome {
     crashed,       ///< a signal (SIGSEGV, SIGABRT of a sanitizer, ...)
     timed_out,     ///< killed at the time bound
     too_much_output,
+    non_finite_output,  ///< exit 0, but a result file holds nan or inf (a target's own check)
   };
   Kind kind = Kind::accepted;
   int detail = 0;       ///< exit code or signal
