@@ -41,7 +41,7 @@ struct Options {
 [[noreturn]] void usage(const std::string& problem) {
   fmt::print(stderr,
              "{}\nusage: shockfield_fuzz [--shockfield BIN] --source DIR --work DIR [--target NAME]... "
-             "[--mutants N] [--seed S] [--only I] [--replay CORPUS] [--timeout SECONDS]\n",
+             "[--mutants N] [--seed S] [--only I] [--replay CORPUS] [--timeout SECONDS] [--memory-limit GB (0: none)]\n",
              problem);
   std::exit(64);
 }
@@ -61,6 +61,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--only") o.only = std::stoul(v);
     else if (a == "--replay") o.replay = fs::absolute(v);
     else if (a == "--timeout") o.context.limits.seconds = std::stod(v);
+    else if (a == "--memory-limit") o.context.limits.memory_bytes = static_cast<std::uintmax_t>(std::stod(v) * (1 << 30));
     else usage("unknown option " + a);
   }
   if (o.context.source.empty() || o.context.work.empty()) usage("--source and --work are required");

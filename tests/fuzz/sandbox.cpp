@@ -55,6 +55,7 @@ bool mentions_sanitizer(const fs::path& file) {
 // In the child: the memory bound (see Limits::memory_bytes).
 void limit_memory(const Limits& limits) {
 #if !defined(__SANITIZE_ADDRESS__)
+  if (limits.memory_bytes == 0) return;  // --memory-limit 0: a sanitized program under test
   const rlimit r{static_cast<rlim_t>(limits.memory_bytes), static_cast<rlim_t>(limits.memory_bytes)};
   ::setrlimit(RLIMIT_AS, &r);
 #else

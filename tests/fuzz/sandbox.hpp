@@ -17,7 +17,8 @@ struct Limits {
   std::uintmax_t output_bytes = 64u << 20;   ///< everything the child writes to its work folder
   /// Address space of the child (RLIMIT_AS), so that a count trusted too far fails fast as
   /// std::bad_alloc instead of swapping the machine; not set under AddressSanitizer, which
-  /// reserves terabytes of shadow memory.
+  /// reserves terabytes of shadow memory (nor with 0: `--memory-limit 0`, for a sanitized
+  /// shockfield binary driven by an unsanitized fuzzer).
   std::uintmax_t memory_bytes = std::uintmax_t{4} << 30;
 };
 
