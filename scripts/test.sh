@@ -8,4 +8,9 @@ cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)"
 # Tests run side by side: idle OpenMP threads must sleep, not spin, or they starve each other.
 export OMP_WAIT_POLICY=passive
-ctest --preset release -j "$(nproc)"
+ctest --preset release -j "$(nproc)" -LE sanitizer
+# The fuzzers' parsers under AddressSanitizer + UBSan (issue 14; docs/robustness.md, "In CI"):
+# shockfield_fuzz_parsers, built above, puts mutants of every parser's inputs and the whole fuzz
+# corpus through the parsers in-process; any crash, hang, leak or sanitizer report fails.
+echo "sanitizer replay: the parsers under ASan + UBSan (shockfield_fuzz_parsers: mutants of every parser, then the fuzz corpus)"
+ctest --preset release -L sanitizer -j "$(nproc)" -V 2>&1 | grep -E "^[0-9]+: (fuzz |FAIL)|tests passed|tests failed"

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Fault: a run of every method into a small full filesystem (a tmpfs of 300 kB to 1.5 MB; CI runs as root, and
+# Fault: a run of every method into a small full filesystem (a tmpfs of 150 kB to 1.5 MB; CI runs as root, and
 # the test is skipped with the reason printed where the mount is refused). Each run must stop
 # with exit 3 and a message naming the file it could not write, leave no half-written
 # checkpoint, and keep its previous checkpoint whole: after space is freed (the tmpfs remounted
 # larger), --resume finishes the run and its outputs are byte for byte those of an
-# uninterrupted run on a roomy disk. `analyze` and a PD [homogeneous] run on a full disk stop
-# with exit 3 naming the file too.
+# uninterrupted run on a roomy disk. `analyze`, `analyze atoms`, `analyze geometry` and a PD
+# [homogeneous] run on a full disk stop with exit 3 naming the file too.
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -31,6 +31,10 @@ full_disk_then_resume() {
   [ $code -eq 3 ] || fail "$name: exit $code on a full disk, expected 3: $(cat "$WORK/$name.err")"
   grep -q "No space left on device" "$WORK/$name.err" || fail "$name: the message gives no reason: $(cat "$WORK/$name.err")"
   grep -qF "$DISK/$name/" "$WORK/$name.err" || fail "$name: the message names no file: $(cat "$WORK/$name.err")"
+  # The error that stopped the run comes first, not a later one of reporting it (summary.json,
+  # log.txt, failure.vtp: written after the stop, on the same full disk).
+  ! grep -Eq "^run stopped: [^ ]*(summary.json|log.txt|failure.vtp)" "$WORK/$name.err" ||
+    fail "$name: the failure report hid the error that stopped the run: $(cat "$WORK/$name.err")"
   [ ! -e "$DISK/$name/checkpoint.h5.tmp" ] || fail "$name: a partial checkpoint.h5.tmp was left behind"
   [ -s "$DISK/$name/checkpoint.h5" ] || fail "$name: no checkpoint before the disk filled (make the case write one earlier)"
   echo "ok: $name stopped on the full disk: $(head -c 200 "$WORK/$name.err")"
@@ -63,6 +67,18 @@ sed -e 's/^end_time = 0.2/end_time = 0.05/' -e 's/^series_interval = 0.01/series
   -e 's/^profile_interval = 0.05/field_interval = 0.0005\ncheckpoint_every = 10/' \
   "$ROOT/examples/dbm_sod/case.toml" > "$WORK/dbm.toml"
 full_disk_then_resume dbm 800k "$WORK/dbm.toml" series.csv grid.pvd
+# Granular: the space-time rows of every grain every microsecond (about 4 kB each, two files) and
+# a 11 kB checkpoint every 50 steps, into 200 kB.
+sed -e 's/^field_interval = 1e-5/field_interval = 1e-6/' -e 's/^spacetime_stride = 10/spacetime_stride = 1\ncheckpoint_every = 50/' \
+  "$ROOT/tests/cli/cases/granular_tiny.toml" > "$WORK/granular.toml"
+full_disk_then_resume granular 200k "$WORK/granular.toml" series.csv probes.csv spacetime_velocity.csv \
+  spacetime_force.csv signal.csv
+
+# Phase field: a 21 kB frame every 5 steps and a 17 kB checkpoint every 5 steps, into 150 kB.
+sed -e 's/^field_interval = 2.0/field_interval = 0.5\ncheckpoint_every = 5/' \
+  "$ROOT/tests/cli/cases/phasefield_tiny.toml" > "$WORK/phasefield.toml"
+full_disk_then_resume phasefield 150k "$WORK/phasefield.toml" series.csv fields.pvd fields/xi_12.vti
+
 # Writers outside the time-stepping runs, on a disk with no space left: `analyze` and a PD
 # [homogeneous] compression used to exit 0 with truncated files.
 mount -o remount,size=300k "$DISK"
@@ -81,6 +97,10 @@ expect_full_disk() {
 }
 expect_full_disk "analyze" "$SF" analyze minkowski "$ROOT/tests/fixtures/analysis/fields/series.pvd" -t 50 --no-plot \
   -o "$DISK/analyze"
+expect_full_disk "analyze atoms" "$SF" analyze atoms "$ROOT/tests/fixtures/lammps_structure/cu_fcc_perfect.dump" \
+  -o "$DISK/atoms"
+expect_full_disk "analyze geometry" "$SF" analyze geometry "$ROOT/tests/fixtures/lammps_structure/fe_bcc_perfect.dump" \
+  -o "$DISK/geometry"
 expect_full_disk "pd [homogeneous]" "$SF" run "$ROOT/examples/pd_ofhc_compression/ofhc_compression.toml" \
   --output "$DISK/homogeneous" -q
 echo "fault_full_disk: every method stops with exit 3 naming the file and resumes bitwise"

@@ -76,4 +76,22 @@ toml="$WORK/sweep/up_1.00/hugoniot_shock.toml"
 ! grep -qi "nan" "$toml" || fail "$toml holds nan: $(cat "$toml")"
 grep -q "^complete = false" "$toml" || fail "$toml does not say it is incomplete"
 echo "ok: $(head -c 200 "$WORK/stderr")"
+# `shockfield hugoniot` reusing a finished run reads its shock_front_<stage>.csv back (found by the
+# fuzzer, this session): a front at 1e300 Å gave an inf standard error in hugoniot_sweep.csv and
+# exit 0; a file cut after its header gave "shock front fit: 0 times" naming no file.
+H="$ROOT/tests/fixtures/fuzz/inputs/hugoniot"
+for bad in far truncated; do
+  mkdir -p "$WORK/reuse_$bad/up_1.00"
+  cp "$H/hugoniot_shock.toml" "$WORK/reuse_$bad/up_1.00/"
+  if [ $bad = far ]; then sed '5s/,[^,]*,\([^,]*\)$/,1e300,\1/' "$H/shock_front_shock.csv"; else head -1 "$H/shock_front_shock.csv"; fi \
+    > "$WORK/reuse_$bad/up_1.00/shock_front_shock.csv"
+  set +e
+  "$SF" hugoniot "$ROOT/examples/md_shock_piston/case.toml" --speeds 1.0 --output "$WORK/reuse_$bad" -q > /dev/null 2> "$WORK/stderr"
+  code=$?
+  set -e
+  [ $code -eq 2 ] || fail "hugoniot reusing a $bad shock_front_shock.csv: exit $code, expected 2: $(cat "$WORK/stderr")"
+  grep -q "up_1.00/shock_front_shock.csv" "$WORK/stderr" || fail "the message does not name the file: $(cat "$WORK/stderr")"
+  [ ! -e "$WORK/reuse_$bad/hugoniot_sweep.csv" ] || fail "hugoniot_sweep.csv written from a $bad front file"
+  echo "ok: $(head -c 200 "$WORK/stderr")"
+done
 echo "fault_run_diagnoses: blow-ups diagnosed, output bounded, documented values valid"

@@ -42,13 +42,20 @@ std::string head_of(const fs::path& file) {
   return text;
 }
 
-bool mentions_sanitizer(const std::string& text) {
-  return text.find("runtime error:") != std::string::npos || text.find("Sanitizer") != std::string::npos;
+// A sanitizer report anywhere in `file` (not only in its first kilobytes: a run may print a lot
+// before it).
+bool mentions_sanitizer(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  return s.find("runtime error:") != std::string::npos || s.find("Sanitizer") != std::string::npos;
 }
 
 // In the child: the memory bound (see Limits::memory_bytes).
 void limit_memory(const Limits& limits) {
 #if !defined(__SANITIZE_ADDRESS__)
+  if (limits.memory_bytes == 0) return;  // --memory-limit 0: a sanitized program under test
   const rlimit r{static_cast<rlim_t>(limits.memory_bytes), static_cast<rlim_t>(limits.memory_bytes)};
   ::setrlimit(RLIMIT_AS, &r);
 #else
@@ -115,6 +122,7 @@ const char* kind_name(Outcome::Kind k) {
     case Outcome::Kind::crashed: return "CRASHED";
     case Outcome::Kind::timed_out: return "TIMED OUT";
     case Outcome::Kind::too_much_output: return "TOO MUCH OUTPUT";
+    case Outcome::Kind::non_finite_output: return "NON-FINITE OUTPUT";
   }
   return "?";
 }
@@ -143,7 +151,7 @@ Outcome run_function(const std::function<void()>& body, const fs::path& work, co
   }
   Outcome o = wait_for(pid, work, limits);
   o.message = head_of(work / "message.txt");
-  o.sanitizer_report = mentions_sanitizer(head_of(work / "stderr.txt"));
+  o.sanitizer_report = mentions_sanitizer(work / "stderr.txt");
   if (o.kind == Outcome::Kind::crashed || o.kind == Outcome::Kind::other_error)
     o.message += head_of(work / "stderr.txt");
   return o;
@@ -166,7 +174,7 @@ Outcome run_program(const std::vector<std::string>& argv, const fs::path& work, 
   }
   Outcome o = wait_for(pid, work, limits);
   o.message = head_of(work / "stderr.txt");
-  o.sanitizer_report = mentions_sanitizer(o.message);
+  o.sanitizer_report = mentions_sanitizer(work / "stderr.txt");
   return o;
 }
 

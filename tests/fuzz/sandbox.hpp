@@ -17,7 +17,8 @@ struct Limits {
   std::uintmax_t output_bytes = 64u << 20;   ///< everything the child writes to its work folder
   /// Address space of the child (RLIMIT_AS), so that a count trusted too far fails fast as
   /// std::bad_alloc instead of swapping the machine; not set under AddressSanitizer, which
-  /// reserves terabytes of shadow memory.
+  /// reserves terabytes of shadow memory (nor with 0: `--memory-limit 0`, for a sanitized
+  /// shockfield binary driven by an unsanitized fuzzer).
   std::uintmax_t memory_bytes = std::uintmax_t{4} << 30;
 };
 
@@ -31,6 +32,7 @@ struct Outcome {
     crashed,       ///< a signal (SIGSEGV, SIGABRT of a sanitizer, ...)
     timed_out,     ///< killed at the time bound
     too_much_output,
+    non_finite_output,  ///< exit 0, but a result file holds nan or inf (a target's own check)
   };
   Kind kind = Kind::accepted;
   int detail = 0;       ///< exit code or signal

@@ -7,8 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "shockfield/analysis/field_reader.hpp"
-#include "shockfield/io/lammps_dump.hpp"
+#include "in_process.hpp"
 
 namespace shockfield::fuzz {
 namespace {
@@ -74,29 +73,142 @@ Target eam_target(const Context& c, const std::string& name, const fs::path& inp
           }};
 }
 
-// A run folder stopped at step 10 of 20 (Cu_u3.eam): its checkpoint is the checkpoint target's
-// input, and every mutant resumes a copy of the folder.
-fs::path checkpoint_base(const Context& c) {
-  const fs::path base = c.work / "checkpoint_base";
+// A run folder of `case_file` stopped after `steps` steps (exit 130, a checkpoint written): the
+// checkpoint target's input, and every mutant resumes a copy of the folder.
+fs::path checkpoint_base(const Context& c, const std::string& name, const fs::path& case_file, int steps) {
+  const fs::path base = c.work / ("base_" + name);
   fs::remove_all(base);  // made anew by every fuzz run: the binary (and its format) may have changed
   fs::create_directories(base);
-  write_text(base / "case.toml", EamCase{"eam", "Cu", "3.615", false}.text(c, kPotentials / "Cu_u3.eam"));
-  const Outcome o = run_case(c, base / "case.toml", base, {"--stop-after", "10"});
+  fs::copy_file(case_file, base / "case.toml");
+  const Outcome o = run_case(c, base / "case.toml", base, {"--stop-after", std::to_string(steps)});
   if (!fs::exists(base / "out/checkpoint.h5"))
-    throw std::runtime_error(fmt::format("the checkpoint fuzz target's base run wrote no checkpoint "
-                                         "({}): {}", kind_name(o.kind), o.message));
+    throw std::runtime_error(fmt::format("the {} fuzz target's base run wrote no checkpoint ({}): {}", name,
+                                         kind_name(o.kind), o.message));
   return base;
 }
 
+Target checkpoint_target(const Context& c, const std::string& name, const fs::path& case_file, int steps) {
+  const fs::path base = checkpoint_base(c, name, case_file, steps);
+  return {name, {base / "out/checkpoint.h5"}, true, false, "", [c, base](const fs::path& file, const fs::path& work) {
+            fs::copy(base / "out", work / "out", fs::copy_options::recursive);
+            fs::copy_file(file, work / "out/checkpoint.h5", fs::copy_options::overwrite_existing);
+            return run_case(c, base / "case.toml", work, {"--resume"});
+          }};
+}
+
+// `shockfield analyze geometry FILE`: the point-set reader (CSV, 2D text, XYZ, dump), then the
+// Delaunay mesh, clusters and (for the CSV) the rolling-ball surface of what it read.
+Outcome analyze_geometry(const Context& c, const fs::path& file, const fs::path& work) {
+  std::vector<std::string> argv{c.shockfield.string(), "analyze", "geometry", file.string(), "-o",
+                                (work / "out").string(), "-d", "1"};
+  if (file.extension() == ".txt") argv.insert(argv.end(), {"--dimension", "2"});
+  if (file.extension() == ".csv") argv.insert(argv.end(), {"-r", "5", "--check"});
+  return run_program(argv, work, c.limits);
+}
+
+// `shockfield analyze atoms`: a dump alone, a dump series (a .lammpstrj input is followed by a
+// valid dump), a data file or a .gz dump, with the cutoff analyses and the default a-CNA.
+Outcome analyze_atoms(const Context& c, const fs::path& file, const fs::path& work) {
+  std::vector<std::string> argv{c.shockfield.string(), "analyze", "atoms", file.string()};
+  if (file.extension() == ".lammpstrj")
+    argv.push_back((c.source / "tests/fixtures/lammps_structure/cu_fcc_perfect.dump").string());
+  argv.insert(argv.end(), {"--cna", "3.0858", "--coordination", "3.0858", "--csp", "fcc", "--adaptive-cna", "-j", "1",
+                           "-o", (work / "out").string()});
+  return run_program(argv, work, c.limits);
+}
+
+// `shockfield hugoniot` reusing a finished run: the mutant (hugoniot_shock.toml or
+// shock_front_shock.csv) and the other, valid file are the run's; the sweep must not write a
+// non-finite number into hugoniot_sweep.csv (but the standard error of a two-point fit).
+Outcome hugoniot_reuse(const Context& c, const fs::path& file, const fs::path& work) {
+  const fs::path run = work / "sweep/up_1.00";
+  fs::create_directories(run);
+  for (const auto& e : fs::directory_iterator(file.parent_path())) fs::copy_file(e.path(), run / e.path().filename());
+  Outcome o = run_program({c.shockfield.string(), "hugoniot", (c.source / "examples/md_shock_piston/case.toml").string(),
+                           "--speeds", "1.0", "--output", (work / "sweep").string(), "-q"},
+                          work, c.limits);
+  if (o.kind == Outcome::Kind::accepted) {
+    // Row 2 of the sweep: every value finite, but us_stderr_km_s (column 4), which a fit of two
+    // front positions does not have (nan).
+    const std::string csv = read_text(work / "sweep/hugoniot_sweep.csv");
+    std::stringstream row(csv.substr(csv.find('\n') + 1));
+    std::string cell;
+    for (int column = 1; std::getline(row, cell, ','); ++column)
+      if (cell.find("inf") != std::string::npos || (column != 4 && cell.find("nan") != std::string::npos))
+        o.kind = Outcome::Kind::non_finite_output, o.message = "hugoniot_sweep.csv:\n" + csv;
+  }
+  return o;
+}
+
+// Method, case of tests/cli/cases, steps before the stop whose checkpoint is fuzzed.
+struct CheckpointCase {
+  const char* method;
+  const char* file;
+  int steps;
+};
+constexpr CheckpointCase kCheckpointCases[] = {{"mpm", "mpm_tiny.toml", 5},
+                                               {"pd", "pd_tiny.toml", 5},
+                                               {"dbm", "dbm_sod.toml", 5},
+                                               {"granular", "granular_tiny.toml", 5},
+                                               {"phasefield", "phasefield_tiny.toml", 5}};
+
+// A target whose inputs go through a parser in a fork of the fuzzer.
+Target in_process(const Context& c, const std::string& name, std::vector<fs::path> inputs,
+                  void (*parse)(const fs::path&), bool binary = false) {
+  return {name, std::move(inputs), binary, false, "", [c, parse](const fs::path& file, const fs::path& work) {
+            return run_function([&] { parse(file); }, work, c.limits);
+          }};
+}
+
+std::vector<fs::path> case_inputs(const Context& c) {
+  std::vector<fs::path> cases = sorted_glob(c.source / "tests/cli/cases", "");
+  for (const auto& p : sorted_glob(c.source / "examples", "case.toml")) cases.push_back(p);
+  return cases;
+}
+
+std::vector<fs::path> field_inputs(const Context& c) {
+  std::vector<fs::path> fields;
+  for (const char* f : {"grid.csv", "two_disks.csv", "ascii.vti", "binary.vti", "raw.vti",
+                        "appended_base64.vti", "points.vtk", "cells.vtk"})
+    fields.push_back(c.source / "tests/fixtures/analysis/fields" / f);
+  return fields;
+}
+
+std::vector<fs::path> point_inputs(const Context& c) {
+  std::vector<fs::path> points;
+  for (const char* f : {"cube.csv", "pairs.txt", "tet.xyz", "atoms.dump"})
+    points.push_back(c.source / "tests/fixtures/fuzz/inputs/points" / f);
+  return points;
+}
+
+std::vector<fs::path> dump_inputs(const Context& c) {
+  return {c.source / "tests/fixtures/io/dump_fcc.lammpstrj", c.source / "tests/fixtures/lammps/cu_u3_thermal.dump"};
+}
+
+// The parser-only driver (no --shockfield): every parser it links, in-process. The case target
+// is `case_parse`, not `case_check`: the mpm, pd and dbm case readers are not linked (they build
+// the simulation), so the case_check corpus is not its to replay.
+std::vector<Target> parser_targets(const Context& c) {
+  return {in_process(c, "case_parse", case_inputs(c), parse_case),
+          in_process(c, "eam_funcfl", {kPotentials / "Cu_u3.eam"}, parse_eam),
+          in_process(c, "eam_setfl", {kPotentials / "CuNi.eam.alloy"}, parse_eam),
+          in_process(c, "eam_fs", {kPotentials / "NiAlH_jea.eam.fs"}, parse_eam),
+          in_process(c, "data", {c.source / "tests/fixtures/io/data_fcc.data"}, parse_data),
+          in_process(c, "dump", dump_inputs(c), parse_dump),
+          in_process(c, "field", field_inputs(c), parse_field),
+          in_process(c, "points", point_inputs(c), parse_points),
+          in_process(c, "checkpoint", {c.source / "tests/fixtures/fuzz/inputs/checkpoint/checkpoint.h5"},
+                     parse_checkpoint, true)};
+}
+
 std::vector<Target> all_targets(const Context& c, const std::vector<std::string>& names) {
+  if (c.shockfield.empty()) return parser_targets(c);
   const auto wanted = [&](const std::string& n) {
     return names.empty() || std::find(names.begin(), names.end(), n) != names.end();
   };
   std::vector<Target> t;
   // Case files of every method: validation only (examples can be large runs).
-  std::vector<fs::path> cases = sorted_glob(c.source / "tests/cli/cases", "");
-  for (const auto& p : sorted_glob(c.source / "examples", "case.toml")) cases.push_back(p);
-  t.push_back({"case_check", cases, false, true, "", [c](const fs::path& file, const fs::path& work) {
+  t.push_back({"case_check", case_inputs(c), false, true, "", [c](const fs::path& file, const fs::path& work) {
                  return run_program({c.shockfield.string(), "run", file.string(), "--check", "--output",
                                      (work / "out").string(), "-q"}, work, c.limits);
                }});
@@ -116,45 +228,45 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
                  write_text(work / "case.toml", replace_all(text, "@FILE@", file.string()));
                  return run_case(c, work / "case.toml", work, {});
                }});
-  t.push_back({"dump",
-               {c.source / "tests/fixtures/io/dump_fcc.lammpstrj", c.source / "tests/fixtures/lammps/cu_u3_thermal.dump"},
-               false, false, "", [c](const fs::path& file, const fs::path& work) {
-                 return run_function([&] {
-                   for (const auto& frame : io::read_dump(file)) {
-                     if (frame.has("id")) frame.ids();
-                     if (frame.has("type")) frame.types();
-                     frame.positions();
-                   }
-                 }, work, c.limits);
-               }});
-  std::vector<fs::path> fields;
-  for (const char* f : {"grid.csv", "two_disks.csv", "ascii.vti", "binary.vti", "raw.vti",
-                        "appended_base64.vti", "points.vtk", "cells.vtk"})
-    fields.push_back(c.source / "tests/fixtures/analysis/fields" / f);
-  t.push_back({"field", fields, false, false, "", [c](const fs::path& file, const fs::path& work) {
-                 return run_function([&] { analysis::read_grid_field(file.string()); }, work, c.limits);
-               }});
+  t.push_back(in_process(c, "dump", dump_inputs(c), parse_dump));
+  t.push_back(in_process(c, "field", field_inputs(c), parse_field));
+  t.push_back({"points", point_inputs(c), false, false, "",
+               [c](const fs::path& file, const fs::path& work) { return analyze_geometry(c, file, work); }});
+  const auto atoms = [c](const fs::path& file, const fs::path& work) { return analyze_atoms(c, file, work); };
+  t.push_back({"atoms",
+               {c.source / "tests/fixtures/lammps_structure/fe_bcc_perfect.dump",
+                c.source / "tests/fixtures/io/dump_fcc.lammpstrj", c.source / "tests/fixtures/io/data_fcc.data"},
+               false, false, "", atoms});
+  const fs::path inputs = c.source / "tests/fixtures/fuzz/inputs";
+  t.push_back({"atoms_gz", {inputs / "atoms/fe_bcc_perfect.dump.gz"}, true, false, "", atoms});
+  t.push_back({"hugoniot", {inputs / "hugoniot/hugoniot_shock.toml", inputs / "hugoniot/shock_front_shock.csv"}, false,
+               true, "", [c](const fs::path& file, const fs::path& work) { return hugoniot_reuse(c, file, work); }});
+  // Checkpoints of every method: the Cu EAM run (checkpoint), then the small command-line cases.
   if (wanted("checkpoint")) {
-    const fs::path base = checkpoint_base(c);
-    t.push_back({"checkpoint", {base / "out/checkpoint.h5"}, true, false, "",
-                 [c, base](const fs::path& file, const fs::path& work) {
-                   fs::copy(base / "out", work / "out", fs::copy_options::recursive);
-                   fs::copy_file(file, work / "out/checkpoint.h5", fs::copy_options::overwrite_existing);
-                   return run_case(c, base / "case.toml", work, {"--resume"});
-                 }});
+    const fs::path base = c.work / "checkpoint_case";
+    fs::create_directories(base);
+    write_text(base / "case.toml", EamCase{"eam", "Cu", "3.615", false}.text(c, kPotentials / "Cu_u3.eam"));
+    t.push_back(checkpoint_target(c, "checkpoint", base / "case.toml", 10));
   }
-  std::erase_if(t, [&](const Target& x) { return !wanted(x.name); });
+  const fs::path cli_cases = c.source / "tests/cli/cases";
+  for (const auto& [method, file, steps] : kCheckpointCases)
+    if (wanted("checkpoint_" + std::string(method)))
+      t.push_back(checkpoint_target(c, "checkpoint_" + std::string(method), cli_cases / file, steps));
   return t;
 }
 
 }  // namespace
 
-std::vector<Target> make_targets(const Context& context, const std::vector<std::string>& names) {
+std::vector<Target> make_targets(const Context& context, const std::vector<std::string>& names, bool skip_unknown) {
   auto targets = all_targets(context, names);
+  std::string known;
+  for (const auto& t : targets) known += " " + t.name;
   for (const auto& n : names)
-    if (std::none_of(targets.begin(), targets.end(), [&](const Target& t) { return t.name == n; }))
-      throw std::runtime_error(fmt::format("unknown fuzz target '{}' (known: case_check case_run_md "
-                                           "case_run eam_funcfl eam_setfl eam_fs data dump field checkpoint)", n));
+    if (!skip_unknown && std::none_of(targets.begin(), targets.end(), [&](const Target& t) { return t.name == n; }))
+      throw std::runtime_error(fmt::format("unknown fuzz target '{}' (known:{})", n, known));
+  std::erase_if(targets, [&](const Target& x) {
+    return !names.empty() && std::find(names.begin(), names.end(), x.name) == names.end();
+  });
   for (const auto& t : targets)
     for (const auto& p : t.inputs)
       if (!fs::is_regular_file(p))

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <new>
 
 #include "shockfield/app/commands.hpp"
 #include "shockfield/app/sweep_command.hpp"
@@ -38,6 +39,12 @@ int main(int argc, char** argv) {
     return 130;
   } catch (const shockfield::RunError& e) {
     std::fprintf(stderr, "run stopped: %s\n", e.what());
+    return 3;
+  } catch (const std::bad_alloc&) {
+    // A case asking for more than the machine has (the counts themselves are bounded where they
+    // are read): a run-time failure with a reason, not a bare "std::bad_alloc".
+    std::fprintf(stderr, "run stopped: out of memory: the case needs more memory than is available "
+                         "(reduce the grid, the sample or the particle count, or use a larger machine)\n");
     return 3;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -8,6 +8,8 @@
 // frames a schedule can write, and the case reader refuses an interval that would write more
 // than max_series_rows rows or max_frames frames, naming the key and the count. At most one
 // frame is written per step (frames due at one step would be identical copies).
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "shockfield/core/config.hpp"
@@ -49,13 +51,25 @@ long long thermo_interval(long long requested, long long total_steps);
 void check_intervals_against_step(const Config& output, const OutputIntervals& s, double dt);
 
 /// Writes frame k = count if it is due by time `t`, then advances `count` past every frame due
-/// by `t` (those would repeat the one just written). An interval of 0 means no output.
+/// by `t` (those would repeat the one just written). An interval of 0 means no output. The skip
+/// takes constant time: it starts from floor(t / interval) + 1 and corrects that by the same
+/// comparison as before (a step at most each way), instead of counting up one frame at a time
+/// (10^140 iterations when a PD density of 1e303 made t huge against the interval). A frame
+/// count beyond 2^62 means no further frames.
 template <class Count, class Write>
 void write_due_frames(Count& count, double interval, double t, Write&& write) {
-  if (interval <= 0 || static_cast<double>(count) * interval > t) return;
+  constexpr double kLastFrame = 4611686018427387904.0;  // 2^62
+  if (interval <= 0 || static_cast<double>(count) >= kLastFrame || static_cast<double>(count) * interval > t) return;
   write(count);
-  do ++count;
-  while (static_cast<double>(count) * interval <= t);
+  const double next = std::floor(t / interval) + 1;
+  if (!(next < kLastFrame)) {
+    count = static_cast<Count>(kLastFrame);
+    return;
+  }
+  Count k = std::max(static_cast<Count>(next), static_cast<Count>(count + 1));
+  while (k > count + 1 && static_cast<double>(k - 1) * interval > t) --k;
+  while (static_cast<double>(k) * interval <= t) ++k;
+  count = k;
 }
 
 }  // namespace shockfield

@@ -177,10 +177,16 @@ void run_method(const Config& root, const RunOptions& options, const MethodFacto
       }
     }
   } catch (const RunError& e) {
-    log.info("run stopped: {}", e.what());
-    const std::string wrote = m.write_failure_state();
-    log.info("the output written so far is kept in {}{}", run.folder.string(), wrote.empty() ? "" : "; " + wrote);
-    summary("failed", e.what());
+    // Reporting the failure writes too (log.txt, the failure state, summary.json); on a full disk
+    // that fails as well, and must not hide the error that stopped the run.
+    try {
+      log.info("run stopped: {}", e.what());
+      const std::string wrote = m.write_failure_state();
+      log.info("the output written so far is kept in {}{}", run.folder.string(), wrote.empty() ? "" : "; " + wrote);
+      summary("failed", e.what());
+    } catch (const RunError& reporting) {
+      throw RunError(fmt::format("{} (then, saving the failure state: {})", e.what(), reporting.what()));
+    }
     throw;
   }
   progress.finish(m.step());

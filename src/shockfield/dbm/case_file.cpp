@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/dbm/reaction_case.hpp"
 
 namespace shockfield::dbm {
@@ -32,6 +33,8 @@ Lattice read_grid(const Config& t) {
   Lattice l;
   l.nx = static_cast<int>(t.get_int("nx", Range::closed(1, 1e6)));
   l.ny = static_cast<int>(t.get_int_or("ny", 1, Range::closed(1, 1e6)));
+  if (static_cast<double>(l.nx) * l.ny > kMaxGridPoints)
+    t.fail("ny", fmt::format("nx x ny = {} x {} cells; expected at most {:.0e}", l.nx, l.ny, kMaxGridPoints));
   l.dx = l.dy = t.get_double("dx", Range::positive());
   return l;
 }

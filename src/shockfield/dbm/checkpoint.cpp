@@ -48,9 +48,9 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
                                    phi.size(), reactant->size()));
     *reactant = std::move(phi);
   }
-  sim.restore_clock(h5.attribute("time"), static_cast<long long>(h5.attribute("step")));
-  return {static_cast<std::int64_t>(h5.attribute("series")), static_cast<std::int64_t>(h5.attribute("profiles")),
-          static_cast<std::int64_t>(h5.attribute("fields"))};
+  sim.restore_clock(h5.attribute("time"), checkpoint.count("step"));
+  return {checkpoint.count("series"), checkpoint.count("profiles"),
+          checkpoint.count("fields")};
 }
 
 }  // namespace shockfield::dbm

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <string>
 
 #include "shockfield/core/error.hpp"
@@ -21,6 +22,19 @@ std::vector<std::string> csv_words(const std::string& line) {
   std::vector<std::string> out;
   for (auto w : io::split_words(text)) out.emplace_back(w);
   return out;
+}
+
+// The largest coordinate magnitude: the exact orientation and in-sphere predicates of the
+// Delaunay division multiply up to five coordinate differences, so beyond 1e50 their products
+// would overflow a double (a point at 1e308 reached the space tree as a non-finite coordinate).
+constexpr double kMaxCoordinate = 1e50;
+
+double coordinate(const io::LineReader& in, std::string_view word, int k) {
+  const double v = in.to_double(word, fmt::format("coordinate {}", "xyz"[k]));
+  if (!(std::abs(v) <= kMaxCoordinate))
+    in.fail(fmt::format("coordinate {} = {} is not a finite number of magnitude at most {:g}", "xyz"[k], v,
+                        kMaxCoordinate));
+  return v;
 }
 
 bool is_number_start(const std::string& w) {
@@ -55,7 +69,7 @@ std::vector<std::array<double, N>> read_csv(const std::filesystem::path& file) {
       if (column[k] >= w.size())
         in.fail(fmt::format("expected at least {} values per line, got {}", column[k] + 1,
                             w.size()));
-      p[k] = in.to_double(w[column[k]], fmt::format("coordinate {}", "xyz"[k]));
+      p[k] = coordinate(in, w[column[k]], k);
     }
     pts.push_back(p);
   }
@@ -77,7 +91,7 @@ std::vector<std::array<double, N>> read_xyz(const std::filesystem::path& file) {
     const auto w = in.words();
     if (w.size() < 4) in.fail("expected 'species x y z'");
     std::array<double, N> p;
-    for (int k = 0; k < N; ++k) p[k] = in.to_double(w[1 + k], fmt::format("coordinate {}", "xyz"[k]));
+    for (int k = 0; k < N; ++k) p[k] = coordinate(in, w[1 + k], k);
     pts.push_back(p);
   }
   return pts;
@@ -94,7 +108,12 @@ std::vector<std::array<double, N>> read_dump_points(const std::filesystem::path&
   std::vector<std::array<double, N>> pts;
   for (const auto& v : frames[f].positions()) {
     std::array<double, N> p;
-    for (int k = 0; k < N; ++k) p[k] = v[k];
+    for (int k = 0; k < N; ++k) {
+      if (!(std::abs(v[k]) <= kMaxCoordinate))
+        throw InputError(fmt::format("{}: frame {}: coordinate {} = {} is not a finite number of magnitude at most {:g}",
+                                     file.string(), f, "xyz"[k], v[k], kMaxCoordinate));
+      p[k] = v[k];
+    }
     pts.push_back(p);
   }
   return pts;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "shockfield/core/error.hpp"
@@ -132,5 +133,14 @@ void CheckpointWriter::commit() {
 }
 
 CheckpointReader::CheckpointReader(const std::filesystem::path& file) : h5_(open_checkpoint(file)) { verify(h5_); }
+
+std::int64_t CheckpointReader::count(const std::string& name) const {
+  constexpr double kExact = 9007199254740992.0;  // 2^53
+  const double v = h5_.attribute(name);
+  if (!(v >= 0 && v <= kExact) || v != std::floor(v))
+    throw InputError(fmt::format("{}: attribute '{}' = {} is not a count (a whole number in [0, 2^53])", h5_.path(),
+                                 name, v));
+  return static_cast<std::int64_t>(v);
+}
 
 }  // namespace shockfield::io

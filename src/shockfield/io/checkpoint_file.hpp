@@ -55,6 +55,10 @@ class CheckpointReader {
   /// Opens `file` and verifies its checksum; InputError naming the file when it does not match.
   explicit CheckpointReader(const std::filesystem::path& file);
   const Hdf5File& h5() const { return h5_; }
+  /// A step or row count stored as a double attribute: a whole number in [0, 2^53] (the
+  /// doubles that convert to an integer exactly), else InputError naming the file and the
+  /// attribute — never an unclamped cast of NaN or 1e300.
+  std::int64_t count(const std::string& name) const;
 
  private:
   Hdf5File h5_;

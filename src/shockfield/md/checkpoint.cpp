@@ -77,7 +77,7 @@ CheckpointPosition read_checkpoint_header(const std::filesystem::path& file) {
   if (h5.attribute("format_version") != kFormatVersion)
     throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", file.string(),
                                  h5.attribute("format_version"), kFormatVersion));
-  return {static_cast<std::int64_t>(h5.attribute("stage")), static_cast<std::int64_t>(h5.attribute("stage_step"))};
+  return {checkpoint.count("stage"), checkpoint.count("stage_step")};
 }
 
 void read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
@@ -108,7 +108,7 @@ void read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
     for (int d = 0; d < 3; ++d) a.image[i][d] = static_cast<int>(image[3 * i + d]);
   }
   a.nlocal = n;
-  sim.step = static_cast<std::int64_t>(h5.attribute("step"));
+  sim.step = checkpoint.count("step");
   sim.time = h5.attribute("time");
   set_box(sim.box, h5.read_doubles("box"));
   geometry::Box rebuild_box = sim.box;
@@ -118,8 +118,8 @@ void read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
     if (h5.has(name)) sim.fixes[k]->restore(h5.read_doubles(name));
   }
   sim.restore_rebuild_state(unflatten(h5.read_doubles("x_rebuild")), rebuild_box);
-  sim.rebuilds = static_cast<std::int64_t>(h5.attribute("neighbor_rebuilds"));
-  sim.steps_since_rebuild = static_cast<std::int64_t>(h5.attribute("steps_since_rebuild"));
+  sim.rebuilds = checkpoint.count("neighbor_rebuilds");
+  sim.steps_since_rebuild = checkpoint.count("steps_since_rebuild");
   // Energies and virial of the restored step, then the saved forces: they include what fixes
   // added after the force evaluation (Langevin bath forces), which a recomputation would lose.
   evaluate_forces(a, *sim.potential, sim.list, sim.forces, false);

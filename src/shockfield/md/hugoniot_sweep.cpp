@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -41,20 +42,39 @@ std::string piston_stage(const fs::path& case_file) {
 }
 
 // shock_front_<stage>.csv: step, time_ps, front_A, piston_A ("nan" where no front was found).
+// Every time and front position is checked where it is read (file:line): finite (a front may be
+// the "nan" of no front) and within kMaxMagnitude, so that the fit's sums cannot overflow to inf.
 LineFit front_fit(const fs::path& file) {
+  constexpr double kMaxMagnitude = 1e9;  // ps or Å: 1 ms, 10 cm — far beyond any MD run
+  const std::string name = file.string();
   std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot open", file.string()));
+  if (!in) throw InputError(fmt::format("{}: cannot open", name));
   std::string line;
   std::getline(in, line);
   std::vector<double> t, x;
-  while (std::getline(in, line)) {
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
     std::stringstream ss(line);
     std::string step, time, front;
-    if (!std::getline(ss, step, ',') || !std::getline(ss, time, ',') || !std::getline(ss, front, ',')) continue;
-    t.push_back(std::strtod(time.c_str(), nullptr));
-    x.push_back(std::strtod(front.c_str(), nullptr));
+    if (!std::getline(ss, step, ',') || !std::getline(ss, time, ',') || !std::getline(ss, front, ','))
+      throw InputError(fmt::format("{}:{}: expected 'step,time_ps,front_A,piston_A', found '{}'", name, number, line));
+    const auto value = [&](const std::string& word, const char* what, bool nan_allowed) {
+      char* end = nullptr;
+      const double v = std::strtod(word.c_str(), &end);
+      const bool whole = end != word.c_str() && *end == '\0';
+      if (!whole || !(std::abs(v) <= kMaxMagnitude || (nan_allowed && std::isnan(v))))
+        throw InputError(fmt::format("{}:{}: expected a {} of magnitude at most {:g}, found '{}'", name, number, what,
+                                     kMaxMagnitude, word));
+      return v;
+    };
+    t.push_back(value(time, "time in ps", false));
+    x.push_back(value(front, "front position in Å (or nan)", true));
   }
-  return fit_shock_front(t, x);
+  try {
+    return fit_shock_front(t, x);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", name, e.what()));
+  }
 }
 
 SweepPoint run_one(const HugoniotSweepSettings& s, double speed, const fs::path& folder, const std::string& stage) {

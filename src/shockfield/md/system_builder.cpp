@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/geometry/neighbor_list.hpp"
 #include "shockfield/io/lammps_data.hpp"
 #include "shockfield/md/ghosts.hpp"
@@ -88,6 +89,9 @@ BuiltSystem from_lattice(const Config& lat) {
     for (long long t : lat.get_ints("basis_types", static_cast<std::size_t>(basis_size), Range::closed(1, max_type)))
       spec.basis_types.push_back(static_cast<int>(t) - 1);
   }
+  if (static_cast<double>(repeat[0]) * repeat[1] * repeat[2] * basis_size > kMaxGridPoints)
+    lat.fail("repeat", fmt::format("{} x {} x {} cells of {} atoms; expected at most {:.0e} atoms", repeat[0], repeat[1],
+                                   repeat[2], basis_size, kMaxGridPoints));
   const Lattice lattice(spec);
   if (ntypes == 0)
     ntypes = spec.basis_types.empty() ? 1 : static_cast<std::size_t>(*std::max_element(spec.basis_types.begin(), spec.basis_types.end()) + 1);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/materials/library.hpp"
 #include "shockfield/materials/material_file.hpp"
 
@@ -85,8 +86,13 @@ GridSpec read_grid(const Config& g) {
   s.cell_size = Vec3::Constant(h);
   s.origin = read_vec(g, "lo", s.dim);
   const Vec3 hi = read_vec(g, "hi", s.dim);
+  double nodes = 1;
   for (int a = 0; a < s.dim; ++a) {
     const double cells = (hi[a] - s.origin[a]) / h;
+    nodes *= std::abs(cells) + 1;
+    if (!(nodes <= kMaxGridPoints))  // before the rounding to an integer (of 1e300 cells)
+      g.fail("hi", fmt::format("(hi - lo) / cell_size = {:.3g} cells along {}: the grid would have more than {:.0e} "
+                               "nodes", cells, kAxes[a], kMaxGridPoints));
     const long n = std::lround(cells);
     if (n < 1 || std::abs(cells - static_cast<double>(n)) > 1e-6)
       g.fail("hi", fmt::format("hi - lo along {} is {} m: expected a whole number (>= 1) of cells of {} m", kAxes[a],

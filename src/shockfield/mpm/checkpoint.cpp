@@ -84,10 +84,10 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
       throw InputError(fmt::format("{}: particle {} has mass {} kg, the case gives {} kg (a different sample)", f, i, d[8],
                                    p.mass[i]));
   });
-  sim.restore_clock(h5.attribute("time"), static_cast<long>(h5.attribute("step")), h5.attribute("dt"));
+  sim.restore_clock(h5.attribute("time"), checkpoint.count("step"), h5.attribute("dt"));
   cavity_state = h5.has("cavity") ? h5.read_doubles("cavity") : std::vector<double>{};
-  return {static_cast<std::int64_t>(h5.attribute("series")), static_cast<std::int64_t>(h5.attribute("fields")),
-          static_cast<std::int64_t>(h5.attribute("histograms"))};
+  return {checkpoint.count("series"), checkpoint.count("fields"),
+          checkpoint.count("histograms")};
 }
 
 }  // namespace shockfield::mpm

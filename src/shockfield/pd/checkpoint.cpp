@@ -54,9 +54,9 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const std::size_t n = sim.cloud().size();
   sim.restore(unflatten(h5.read_doubles("y"), n, "y", f), unflatten(h5.read_doubles("v"), n, "v", f),
               unflatten(h5.read_doubles("force_density"), n, "force_density", f),
-              static_cast<long long>(h5.attribute("step")), h5.attribute("time"));
+              checkpoint.count("step"), h5.attribute("time"));
   model_state = h5.read_doubles("model_state");
-  return {static_cast<std::int64_t>(h5.attribute("series")), static_cast<std::int64_t>(h5.attribute("profiles"))};
+  return {checkpoint.count("series"), checkpoint.count("profiles")};
 }
 
 }  // namespace shockfield::pd

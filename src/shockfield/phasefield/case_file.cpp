@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "shockfield/core/size_limits.hpp"
+
 namespace shockfield::phasefield {
 namespace {
 
@@ -12,7 +14,10 @@ Grid read_grid(const Config& t) {
   Grid g;
   g.dim = static_cast<int>(t.get_int("dimensions", Range::closed(1, 3)));
   const auto cells = t.get_ints("nodes", static_cast<std::size_t>(g.dim), Range::closed(3, 1 << 14));
-  for (int d = 0; d < g.dim; ++d) g.n[d] = static_cast<int>(cells[d]);
+  double nodes = 1;
+  for (int d = 0; d < g.dim; ++d) g.n[d] = static_cast<int>(cells[d]), nodes *= static_cast<double>(cells[d]);
+  if (nodes > kMaxGridPoints)
+    t.fail("nodes", fmt::format("{:.3g} grid nodes; expected at most {:.0e}", nodes, kMaxGridPoints));
   g.dx = t.get_double("spacing", Range::positive());
   return g;
 }

@@ -3,31 +3,29 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/io/hdf5_file.hpp"
+#include "shockfield/io/checkpoint_file.hpp"
 
 namespace shockfield::phasefield {
 namespace {
-constexpr double kFormatVersion = 1;
+constexpr double kFormatVersion = 2;  // 2: checksummed (io/checkpoint_file)
 }
 
 void write_checkpoint(const std::filesystem::path& file, const Solver& solver, const OutputCounters& counters) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    io::Hdf5File h5(tmp, io::Hdf5File::Mode::create);
-    h5.set_attribute("format_version", kFormatVersion);
-    h5.set_attribute("method", "phasefield");
-    h5.set_attribute("step", static_cast<double>(solver.steps()));
-    h5.set_attribute("time", solver.time());
-    h5.set_attribute("series", static_cast<double>(counters.series));
-    h5.set_attribute("frames", static_cast<double>(counters.frames));
-    const auto& n = solver.grid().n;
-    h5.write("xi", solver.field(), {static_cast<hsize_t>(n[2]), static_cast<hsize_t>(n[1]), static_cast<hsize_t>(n[0])});
-  }
-  std::filesystem::rename(tmp, file);
+  io::CheckpointWriter h5(file);
+  h5.set_attribute("format_version", kFormatVersion);
+  h5.set_attribute("method", "phasefield");
+  h5.set_attribute("step", static_cast<double>(solver.steps()));
+  h5.set_attribute("time", solver.time());
+  h5.set_attribute("series", static_cast<double>(counters.series));
+  h5.set_attribute("frames", static_cast<double>(counters.frames));
+  const auto& n = solver.grid().n;
+  h5.write("xi", solver.field(), {static_cast<hsize_t>(n[2]), static_cast<hsize_t>(n[1]), static_cast<hsize_t>(n[0])});
+  h5.commit();
 }
 
 OutputCounters read_checkpoint(const std::filesystem::path& file, Solver& solver) {
-  io::Hdf5File h5(file, io::Hdf5File::Mode::read);
+  const io::CheckpointReader checkpoint(file);
+  const io::Hdf5File& h5 = checkpoint.h5();
   const std::string name = file.string();
   if (h5.attribute("format_version") != kFormatVersion)
     throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", name,
@@ -37,8 +35,8 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Solver& solver
     throw InputError(fmt::format("{}: dataset 'xi' has {} values, the case's grid has {} nodes", name, xi.size(),
                                  solver.field().size()));
   solver.field() = std::move(xi);
-  solver.restore_clock(h5.attribute("time"), static_cast<std::int64_t>(h5.attribute("step")));
-  return {static_cast<std::int64_t>(h5.attribute("series")), static_cast<std::int64_t>(h5.attribute("frames"))};
+  solver.restore_clock(h5.attribute("time"), checkpoint.count("step"));
+  return {checkpoint.count("series"), checkpoint.count("frames")};
 }
 
 }  // namespace shockfield::phasefield

@@ -40,6 +40,20 @@ TEST(OutputSchedule, WritesAtMostOneFramePerStep) {
   EXPECT_EQ(count, 2001);
 }
 
+TEST(OutputSchedule, SkipsFarAheadInConstantTime) {
+  // A PD case of density 1e303 (fuzzer, seed 7) gave t / interval = 1e140: the skip counted up
+  // one frame at a time and never ended. It now lands on the first frame after t at once, and
+  // beyond 2^62 frames stops writing.
+  long long count = 0;
+  int frames = 0;
+  write_due_frames(count, 1.0, 1e9, [&](long long) { ++frames; });
+  EXPECT_EQ(count, 1000000001);
+  write_due_frames(count, 1e-8, 1e132, [&](long long) { ++frames; });
+  EXPECT_EQ(count, 4611686018427387904LL);
+  write_due_frames(count, 1e-8, 1e132, [&](long long) { ++frames; });
+  EXPECT_EQ(frames, 2);
+}
+
 TEST(OutputSchedule, RegularStepsWriteEveryFrame) {
   long long count = 0;
   int frames = 0;

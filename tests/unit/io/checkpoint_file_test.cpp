@@ -2,7 +2,8 @@
 // full device throws RunError naming the file; a checkpoint reads back what was written; one
 // flipped payload byte, a truncation or a missing checksum is refused by name (InputError); a
 // checkpoint that cannot be written leaves the previous one intact and no temporary file; 400
-// one-byte mutants are each refused by name or read back intact.
+// one-byte mutants are each refused by name or read back intact; a stored count that is not a
+// whole number in range is refused before its integer conversion.
 #include <gtest/gtest.h>
 
 #include "support/scratch_path.hpp"
@@ -129,6 +130,19 @@ TEST_F(CheckpointFileTest, FailedWriteKeepsThePreviousCheckpoint) {
   }
   EXPECT_EQ(bytes_of(file), before);
   EXPECT_EQ(io::CheckpointReader(file).h5().attribute("step"), 1);
+}
+
+TEST_F(CheckpointFileTest, CountsAreWholeNumbersInRangeBeforeTheirIntegerConversion) {
+  // Every method read its step and row counters with an unclamped cast of the stored double
+  // (undefined for NaN or 1e300); count() refuses what is not a whole number in [0, 2^53].
+  write_sample(file, 42);
+  EXPECT_EQ(io::CheckpointReader(file).count("step"), 42);
+  for (const double bad : {std::nan(""), 1e300, -1.0, 2.5, 9007199254740994.0}) {
+    write_sample(file, bad);
+    const std::string msg = input_error_of([&] { io::CheckpointReader(file).count("step"); });
+    EXPECT_NE(msg.find(file.string()), std::string::npos) << bad << ": " << msg;
+    EXPECT_NE(msg.find("'step'"), std::string::npos) << bad << ": " << msg;
+  }
 }
 
 TEST_F(CheckpointFileTest, EveryOneByteMutantIsReadWholeOrRefusedByName) {

@@ -193,14 +193,13 @@ TEST_F(BadInput, TableLongerThanTheFileIsRefusedBeforeAllocating) {
   expect_input_error([&] { read_funcfl(file); }, {"count.eam:3:", "cannot fit in a file of"});
 }
 
-TEST_F(BadInput, TinyDensityStepTabulatesWithoutOverflow) {
-  // drho = 1e-300 is finite and positive: the file is accepted; the embedding lookup clamps
-  // rho/drho = 1e300 before its int cast (UBSan found the unclamped cast).
-  const auto file = write("drho.eam", kPotentials / "Cu_u3.eam", -1, "5.0100200400801306e-04", "1e-300");
-  const auto f = read_funcfl(file);
-  const auto t = tabulate_funcfl({f}, {0});
-  EXPECT_EQ(t.nrho, 499);  // int(rhomax / drho + 0.5) with rhomax = (Nrho - 1) drho, as file2array()
-  EXPECT_EQ(t.drho, 1e-300);
+TEST_F(BadInput, UnresolvableTableSpacingIsRefused) {
+  // drho = 1e-300 was accepted (issue 14): every density of the crystal then lay beyond the
+  // table's last row. Spacings below 1e-10 are refused by line; 1e-10 itself is accepted.
+  auto file = write("drho.eam", kPotentials / "Cu_u3.eam", -1, "5.0100200400801306e-04", "1e-300");
+  expect_input_error([&] { read_funcfl(file); }, {"drho.eam:3:", "drho = 1e-300", "must be >= 1e-10"});
+  file = write("drho_min.eam", kPotentials / "Cu_u3.eam", -1, "5.0100200400801306e-04", "1e-10");
+  EXPECT_EQ(read_funcfl(file).grid.drho, 1e-10);
 }
 
 TEST(Spline, ReproducesACubicInsideTheTable) {

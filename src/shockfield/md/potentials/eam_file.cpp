@@ -24,6 +24,12 @@ constexpr std::uintmax_t kMinValueBytes = 2;
 // atomic masses lie between hydrogen's 1.008 and about 300 amu.
 constexpr double kMaxCutoff = 100.0;
 constexpr double kMinMass = 1e-3, kMaxMass = 1e4;
+// The finest table spacing (drho, and dr in Å) a file may give. The splines' slopes (the forces)
+// are differences of tabulated values, each rounded at ~1e-16 relative, divided by the spacing:
+// below 1e-10 that rounding alone is amplified by more than 1e10, and ρ or r / spacing no longer
+// fits the tables (drho = 1e-300 put every density beyond the last row). LAMMPS's files use
+// spacings of 1e-4 to 2e-2, six orders of magnitude above.
+constexpr double kMinSpacing = 1e-10;
 
 std::vector<std::string> split(const std::string& text) {
   std::istringstream in(text);
@@ -149,6 +155,10 @@ EamGrid read_grid(Records& in) {
   if (g.cut > table_end * (1 + 1e-9))
     in.fail(fmt::format("cutoff {} Å lies beyond the tabulated range Nr dr = {} x {} = {} Å", g.cut,
                         g.nr, g.dr, table_end));
+  if (g.drho < kMinSpacing || g.dr < kMinSpacing)
+    in.fail(fmt::format("table spacings drho = {} and dr = {} must be >= {}: finer ones cannot be resolved (the "
+                        "splines' slopes divide differences of values rounded at 1e-16 by the spacing)",
+                        g.drho, g.dr, kMinSpacing));
   return g;
 }
 

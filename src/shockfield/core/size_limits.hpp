@@ -1,0 +1,13 @@
+#pragma once
+// The largest systems a case may ask for, checked where the counts are read and before anything
+// is sized by them: a count trusted too far ends in std::bad_alloc (exit 1) or swaps the machine,
+// instead of an input error naming the key.
+namespace shockfield {
+
+/// Grid cells or nodes (DBM lattice, MPM grid, phase-field grid) and lattice atoms (MD): 10^9.
+/// A DBM cell holds 16 distribution values in three copies (~400 bytes), an MPM or phase-field
+/// node ~100 bytes and an atom ~300 with its neighbours, so 10^9 of them is 0.1-0.4 TB: beyond
+/// the machines this code runs on, and 10^3 times the largest example.
+inline constexpr double kMaxGridPoints = 1e9;
+
+}  // namespace shockfield

@@ -1,0 +1,56 @@
+#include "in_process.hpp"
+
+#include <string>
+
+#include "shockfield/analysis/field_reader.hpp"
+#include "shockfield/core/config.hpp"
+#include "shockfield/geometry/point_file.hpp"
+#include "shockfield/granular/case_file.hpp"
+#include "shockfield/io/checkpoint_file.hpp"
+#include "shockfield/io/lammps_data.hpp"
+#include "shockfield/io/lammps_dump.hpp"
+#include "shockfield/md/case_file.hpp"
+#include "shockfield/md/potentials/eam_file.hpp"
+#include "shockfield/phasefield/case_file.hpp"
+
+namespace shockfield::fuzz {
+
+namespace fs = std::filesystem;
+
+void parse_dump(const fs::path& file) {
+  for (const auto& frame : io::read_dump(file)) {
+    if (frame.has("id")) frame.ids();
+    if (frame.has("type")) frame.types();
+    frame.positions();
+  }
+}
+
+void parse_field(const fs::path& file) { analysis::read_grid_field(file.string()); }
+
+void parse_eam(const fs::path& file) {
+  const std::string name = file.filename().string();
+  if (name.ends_with(".eam.alloy")) md::potentials::read_setfl(file, false);
+  else if (name.ends_with(".eam.fs")) md::potentials::read_setfl(file, true);
+  else md::potentials::read_funcfl(file);
+}
+
+void parse_data(const fs::path& file) { io::read_data(file); }
+
+void parse_points(const fs::path& file) {
+  if (file.extension() == ".txt") geometry::read_points<2>(file);
+  else geometry::read_points<3>(file);
+}
+
+void parse_case(const fs::path& file) {
+  const Config root = Config::load(file);
+  const std::string method = root.get_string("method");
+  if (method == "md") md::read_md_case(root);
+  else if (method == "granular") granular::read_granular_case(root);
+  else if (method == "phasefield") phasefield::read_phasefield_case(root);
+  else return;  // mpm, pd, dbm: their case readers build the simulation (the binary fuzzers' part)
+  root.check_unknown_keys();
+}
+
+void parse_checkpoint(const fs::path& file) { io::CheckpointReader(file).count("step"); }
+
+}  // namespace shockfield::fuzz

@@ -1,0 +1,26 @@
+#pragma once
+// The parsers as the fuzzer calls them in-process (in a fork: sandbox.hpp): each reads one file
+// the way shockfield's commands do and touches everything it returned. Shared by the full
+// fuzzer (targets.cpp) and by the sanitized parser-only driver of CI (parser_targets.cpp), so
+// these need only the parser sources (tests/fuzz/CMakeLists.txt, SHOCKFIELD_FUZZ_PARSER_SOURCES).
+#include <filesystem>
+
+namespace shockfield::fuzz {
+
+/// A LAMMPS dump: every frame, its ids, types and positions.
+void parse_dump(const std::filesystem::path& file);
+/// A field file (.csv, .vtk, .vti).
+void parse_field(const std::filesystem::path& file);
+/// An EAM file by its extension: .eam (funcfl), .eam.alloy (setfl), .eam.fs (Finnis-Sinclair).
+void parse_eam(const std::filesystem::path& file);
+/// A LAMMPS data file, periodic in x, y and z.
+void parse_data(const std::filesystem::path& file);
+/// A point set (`analyze geometry`): 2D for a .txt file, else 3D.
+void parse_points(const std::filesystem::path& file);
+/// A case file: the TOML, then the case reader of its method where it needs no simulation
+/// (md, granular, phasefield), then the check for keys nobody read.
+void parse_case(const std::filesystem::path& file);
+/// A checkpoint: checksum verified (every item read), then its step counter.
+void parse_checkpoint(const std::filesystem::path& file);
+
+}  // namespace shockfield::fuzz
