@@ -106,7 +106,9 @@ void Mutator::replace_number(std::string& s) {
   const auto [at, len] = spans[pick];
   std::string token;
   if (below(5) == 0) {  // the same number scaled by a power of ten, or negated
-    token = below(2) ? "-" + s.substr(at, len) : s.substr(at, len) + fmt::format("e{}", below(2) ? 300 : -300);
+    token = s.substr(at, len);
+    if (below(2)) token.insert(0, 1, '-');
+    else token += fmt::format("e{}", below(2) ? 300 : -300);
   } else {
     token = kExtremes[below(kExtremes.size())];
   }

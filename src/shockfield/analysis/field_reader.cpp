@@ -149,7 +149,11 @@ GridField read_csv(const std::string& path, const std::string& text) {
       std::istringstream c(t.substr(1));
       std::string key, eq;
       c >> key >> eq;
-      if (key == "spacing") f.spacing.fill(finite_number(trim(c.str().substr(c.tellg())), where));
+      if (key == "spacing") {  // the rest of the line (tellg() is −1 once the stream has ended)
+        std::string rest;
+        std::getline(c, rest);
+        f.spacing.fill(finite_number(trim(rest), where));
+      }
       if (key == "origin")
         for (auto& o : f.origin)
           o = finite_number(

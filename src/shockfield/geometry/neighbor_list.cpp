@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "shockfield/core/error.hpp"
 #include "shockfield/geometry/cell_list.hpp"
 
 namespace shockfield::geometry {
@@ -41,17 +42,22 @@ std::vector<StencilRow> stencil_rows(const CellList& cells, double cutoff) {
   return rows;
 }
 
-void bounding_box(const std::vector<Vec3>& points, Vec3& lo, Vec3& hi) {
+// The points' bounding box; false when a coordinate is not finite (min/max would skip a NaN and
+// an infinity would make the cell grid meaningless).
+bool bounding_box(const std::vector<Vec3>& points, Vec3& lo, Vec3& hi) {
   double xlo = 1e300, ylo = 1e300, zlo = 1e300, xhi = -1e300, yhi = -1e300, zhi = -1e300;
+  bool finite = true;
   const auto n = static_cast<std::ptrdiff_t>(points.size());
-#pragma omp parallel for schedule(static) reduction(min : xlo, ylo, zlo) reduction(max : xhi, yhi, zhi)
+#pragma omp parallel for schedule(static) reduction(min : xlo, ylo, zlo) reduction(max : xhi, yhi, zhi) reduction(&& : finite)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const Vec3& p = points[static_cast<std::size_t>(i)];
+    finite = finite && std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
     xlo = std::min(xlo, p.x()); ylo = std::min(ylo, p.y()); zlo = std::min(zlo, p.z());
     xhi = std::max(xhi, p.x()); yhi = std::max(yhi, p.y()); zhi = std::max(zhi, p.z());
   }
   lo = n == 0 ? Vec3::Zero() : Vec3(xlo, ylo, zlo);
   hi = n == 0 ? Vec3::Zero() : Vec3(xhi, yhi, zhi);
+  return finite;
 }
 
 }  // namespace
@@ -59,7 +65,9 @@ void bounding_box(const std::vector<Vec3>& points, Vec3& lo, Vec3& hi) {
 void build_neighbor_list(const std::vector<Vec3>& points, std::size_t nlocal, double cutoff,
                          bool half, NeighborList& list) {
   Vec3 lo, hi;
-  bounding_box(points, lo, hi);
+  if (!bounding_box(points, lo, hi) || !std::isfinite(cutoff))
+    throw RunError("neighbour list: a position is not finite (the run blew up: a time step too large for the "
+                   "forces, or parameters out of their physical range)");
   CellList cells;
   cells.build(points, points.size(), lo, hi, cutoff / kBinsPerCutoff);
   const auto dims = cells.dims();

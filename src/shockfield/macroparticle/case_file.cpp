@@ -14,24 +14,34 @@ namespace {
 constexpr double kDefaultCutoff = 0.5 * (1.0 + std::numbers::sqrt2);  // midway between the shells
 constexpr double kDefaultStepFraction = 0.2;                        // of the stable step 2/ω_max
 
-std::optional<double> optional_positive(const Config& t, const char* key, double scale = 1.0) {
+// The physical ranges of the atomic inputs (every metal lies well inside them); beyond them the
+// derived stiffness and time step leave double range and the run would only blow up.
+const Range kCohesiveEnergy = Range::closed(1e-3, 1e2);   // eV per atom
+const Range kDensity = Range::closed(1.0, 1e5);            // kg/m³
+const Range kAtomicMass = Range::closed(0.5, 500.0);       // u
+const Range kLatticeConstant = Range::closed(1e-11, 1e-8); // m
+const Range kExponent = {0.0, 100.0, true, false};
+const Range kParticleRadius = Range::closed(1e-9, 1.0);       // m
+const Range kAtomsPerParticle = Range::closed(1.0, 1e30);
+
+std::optional<double> optional_in(const Config& t, const char* key, const Range& range, double scale = 1.0) {
   if (!t.has(key)) return std::nullopt;
-  return t.get_double(key, Range::positive()) * scale;
+  return t.get_double(key, range) * scale;
 }
 
 PairLawInput read_atoms(const Config& m, const Config& pair) {
   PairLawInput in;
-  in.cohesive_energy = m.get_double("cohesive_energy", Range::positive()) * units::si::eV;
+  in.cohesive_energy = m.get_double("cohesive_energy", kCohesiveEnergy) * units::si::eV;
   in.crystal = m.get_choice_or("crystal", {"fcc"}, "fcc");
-  in.density = optional_positive(m, "density");
-  in.atomic_mass = optional_positive(m, "atomic_mass", units::si::amu);
-  in.lattice_constant = optional_positive(m, "lattice_constant");
+  in.density = optional_in(m, "density", kDensity);
+  in.atomic_mass = optional_in(m, "atomic_mass", kAtomicMass, units::si::amu);
+  in.lattice_constant = optional_in(m, "lattice_constant", kLatticeConstant);
   const int given = in.density.has_value() + in.atomic_mass.has_value() + in.lattice_constant.has_value();
   if (given != 2)
     m.fail(given < 2 ? "density" : "lattice_constant",
            "give two of density (kg/m³), atomic_mass (u) and lattice_constant (m): fcc ties the three by ρ = 4m/a0³");
-  in.p = pair.get_double("p", Range::positive());
-  in.q = pair.get_double("q", Range::positive());
+  in.p = pair.get_double("p", kExponent);
+  in.q = pair.get_double("q", kExponent);
   if (!(in.q > in.p))
     pair.fail("q", fmt::format("q = {} with p = {} gives no energy minimum: in φ = −G/(p r^p) + H/(q r^q) (eq 5, "
                                "Table 1) the repulsion exponent q must exceed the attraction exponent p", in.q, in.p));
@@ -57,8 +67,8 @@ SpecimenSpec read_specimen(const Config& t, const Config& pair, PairLawInput& in
   } else {
     const auto cells = t.get_ints("cells", 3, Range::closed(1, 1 << 16));
     s.cells = {cells[0], cells[1], cells[2]};
-    in.r0 = optional_positive(pair, "r0");
-    in.atoms_per_particle = optional_positive(pair, "atoms_per_particle");
+    in.r0 = optional_in(pair, "r0", kParticleRadius);
+    in.atoms_per_particle = optional_in(pair, "atoms_per_particle", kAtomsPerParticle);
     if (in.r0.has_value() == in.atoms_per_particle.has_value())
       pair.fail("r0", "a box needs its particle size: give exactly one of r0 (m) and atoms_per_particle");
   }

@@ -2,10 +2,13 @@
 // thinner than the cutoff (several periodic images of one pair).
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <map>
 
 #include "md_fixture.hpp"
 #include "shockfield/md/force_evaluation.hpp"
+#include "shockfield/core/error.hpp"
+#include "shockfield/geometry/neighbor_list.hpp"
 #include "shockfield/md/ghosts.hpp"
 
 using namespace shockfield;
@@ -86,4 +89,14 @@ TEST(NeighborList, ThinBoxSumsEveryPeriodicImage) {
   Vec3 total = Vec3::Zero();
   for (std::size_t i = 0; i < atoms.nlocal; ++i) total += atoms.f[i];
   EXPECT_LT(total.norm(), 1e-10);
+}
+
+// A non-finite position (a run that blew up) is a RunError, not an out-of-bounds cell access:
+// min/max skip a NaN and an infinity makes the cell grid meaningless (found by the case_run fuzzer).
+TEST(NeighborList, NonFinitePositionIsARunError) {
+  for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), -1e308 * 10}) {
+    std::vector<Vec3> points{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, bad, 0), Vec3(0, 0, 1)};
+    geometry::NeighborList list;
+    EXPECT_THROW(geometry::build_neighbor_list(points, points.size(), 1.5, true, list), RunError) << bad;
+  }
 }
