@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -97,10 +98,22 @@ void log_performance(Logger& log, const Method& m, const RunTally& t) {
   log.line(phases);
 }
 
+// The method's factory, its InputErrors naming the case file: a check made while building the
+// system (a body outside its box, an unknown group) may not know which file the values came from.
+std::unique_ptr<Method> make_checked(const Config& root, const RunOptions& options, const MethodFactory& make_method) {
+  try {
+    return make_method(root, options);
+  } catch (const InputError& e) {
+    const std::string file = std::filesystem::path(root.file()).filename().string();
+    if (file.empty() || std::string_view(e.what()).find(file) != std::string_view::npos) throw;
+    throw InputError(fmt::format("{}: {}", root.file(), e.what()));
+  }
+}
+
 }  // namespace
 
 void run_method(const Config& root, const RunOptions& options, const MethodFactory& make_method) {
-  std::unique_ptr<Method> method = make_method(root, options);
+  std::unique_ptr<Method> method = make_checked(root, options, make_method);
   Method& m = *method;
   root.check_replayed_derived();
   if (options.validate_only) {
