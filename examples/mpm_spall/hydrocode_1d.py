@@ -2,7 +2,7 @@
 """Reference 1D Lagrangian hydrocode for the spall pull-back (no MPM involved).
 
 The flyer-plate set-up of tests/unit/mpm/test_spall.cpp (flyer d = 4 mm at v = 200 m/s onto a
-3d target, the seed's aluminium made hydrodynamic) solved with the classical staggered von
+3d target, the paper's aluminium made hydrodynamic) solved with the classical staggered von
 Neumann-Richtmyer scheme (Wilkins, "Computer Simulation of Dynamic Phenomena", 1999, ch. 2): node
 velocities, cell densities and energies, the same Mie-Grüneisen EOS (Xu et al. 2015, eqs. 5-6, tension
 branch included), the same bulk artificial viscosity q = ρℓ(C_Q·ℓ·(∂u/∂x)² − C_L·c·∂u/∂x) in

@@ -1,6 +1,6 @@
 #!/bin/sh
 # OFHC copper simple compression (Liu et al. 2025, §4.1, Fig. 5): 50 random grains under the Taylor
-# assumption along eq. 44 with the seed's sech² hardening (eq. 40) and again with Kalidindi et al.'s
+# assumption along eq. 44 with the paper's sech² hardening (eq. 40) and again with Kalidindi et al.'s
 # power-law hardening (a sed of hardening_law), then compression.png, orientations.png and the
 # numbers quoted in README.md.
 #   examples/pd_ofhc_compression/run.sh [RUNS_DIR]     (from the repository root)

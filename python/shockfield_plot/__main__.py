@@ -4,7 +4,7 @@
     python3 -m shockfield_plot similarity similarity.csv similarity.png
 
 minkowski: one panel per functional (columns after `threshold`), each functional against time
-with one curve per threshold (the seed's Figs. 32-41), or against the threshold when there is a
+with one curve per threshold (the paper's Figs. 32-41), or against the threshold when there is a
 single time. similarity: process distance d_P against the candidate threshold (Fig. 43's search).
 """
 import csv

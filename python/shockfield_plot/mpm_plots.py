@@ -3,7 +3,7 @@
 
   mpm_plots.py porous RUN_DIR [--out FILE]         bottom-window means of density, pressure,
                                                    temperature and u_y against time (seed Fig 19)
-                                                   with the seed's values at 250 ns, and the
+                                                   with the paper's values at 250 ns, and the
                                                    particles' temperature at the last frame
   mpm_plots.py cavity RUN_DIR [RUN_DIR ...] [--out FILE]
                                                    per run: particles around the cavity coloured

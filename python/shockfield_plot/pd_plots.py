@@ -153,7 +153,7 @@ def crystal(runs, labels, out):
 # to large strains, high strain rates and high temperatures", Proc. 7th Int. Symp. on Ballistics,
 # The Hague, 1983, pp. 541-547 (A = 90 MPa, B = 292 MPa, n = 0.31, C = 0.025; fitted to torsion
 # and Hopkinson-bar tests of OFHC copper). It stands in for the annealed-copper curve of Kalidindi,
-# Bronkhorst & Anand (1992) that the seed compares with, whose numbers we do not have.
+# Bronkhorst & Anand (1992) that the paper compares with, whose numbers we do not have.
 JOHNSON_COOK_OFHC = {"A": 90.0, "B": 292.0, "n": 0.31, "C": 0.025}
 
 

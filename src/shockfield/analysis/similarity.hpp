@@ -6,7 +6,7 @@
 //   S   = 1 / d                                 structural similarity
 //   d_P = ∫_{t1}^{t2} d(t) dt / (t2 − t1)         process distance (§3.1's S_D formula, §4.1.2's d_P)
 //   S_D = 1 / d_P                               dynamic similarity
-// The seed prints the time average of d under the name S_D; since S = 1/d, we call the average
+// The paper prints the time average of d under the name S_D; since S = 1/d, we call the average
 // the process distance d_P (the name §4.1.2 minimises) and S_D its inverse.
 #include <span>
 #include <vector>

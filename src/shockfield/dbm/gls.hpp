@@ -9,7 +9,7 @@
 //   C_q = ∇·[2qρT∇T]/(2ρT²)                                                       (eq. 18)
 //   Λ = K∇ρ∇ρ − K(ρ∇²ρ + |∇ρ|²/2)I − ρT∇ρ·∇(K/T) I
 // with P the van der Waals or Carnahan–Starling pressure (eq. 19; aρ² is the attraction term of
-// either, 9ρ²/8 for the seed's vdW). Σ_k I_k = 0 and the momentum source is −ρTB, so mass and
+// either, 9ρ²/8 for the paper's vdW). Σ_k I_k = 0 and the momentum source is −ρTB, so mass and
 // momentum are conserved and the total energy e_T = ρT − aρ² + K|∇ρ|²/2 + ρu²/2 is conserved by
 // the continuum equations. Spatial derivatives by FFT (seed refs 34–35), so the model needs
 // periodic boundaries; the moments used assume b = 2 (γ = 2, no extra degrees of freedom).

@@ -18,7 +18,7 @@ E read_eos_parameters(const Config& model, E eos) {
 
 GlsSettings read_gls_model(const Config& model, double tau) {
   GlsSettings s;
-  // vdW: the seed's a = 9/8, b = 1/3 (T_c = ρ_c = 1); Carnahan–Starling: a, b with T_c = ρ_c = 1
+  // vdW: the paper's a = 9/8, b = 1/3 (T_c = ρ_c = 1); Carnahan–Starling: a, b with T_c = ρ_c = 1
   // (bρ_c = 0.5218, bT_c/a = 0.3773).
   if (model.get_choice_or("eos", {"vdw", "carnahan_starling"}, "vdw") == "vdw")
     s.eos = read_eos_parameters(model, materials::VanDerWaals{});

@@ -1,6 +1,6 @@
 #pragma once
 // One-step reactive DBM for detonation (Xu et al. 2015, §2.3.3 and §4.3; the chemical-reaction DBM of
-// Yan, Xu, Zhang, Ying, Li, Front. Phys. 8, 94 (2013), refs 39–40 of the seed). A progress variable
+// Yan, Xu, Zhang, Ying, Li, Front. Phys. 8, 94 (2013), refs 39–40 of the paper). A progress variable
 // λ (mass fraction of reactant, 1 fresh → 0 burnt) is carried as the reactant density φ = ρλ:
 //   ∂φ/∂t + ∇·(φu) = −ρω,                    ω = −dλ/dt ≥ 0 the consumption rate,
 // and the reaction heat Q per unit mass enters the kinetic equation as the change of f^eq with

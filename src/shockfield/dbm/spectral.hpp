@@ -1,5 +1,5 @@
 #pragma once
-// Spatial derivatives of periodic 2D fields by FFT (FFTW3), as the seed's refs 34–35 use for the
+// Spatial derivatives of periodic 2D fields by FFT (FFTW3), as the paper's refs 34–35 use for the
 // GLS force term: a field is transformed once, and any derivative ∂x^a ∂y^b of it is (ik_x)^a
 // (ik_y)^b in Fourier space, transformed back, with an exponential filter on the highest modes
 // (none on the Nyquist mode). Plans are made once per grid (FFTW plan creation is not thread-safe); each

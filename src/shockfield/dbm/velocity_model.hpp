@@ -42,7 +42,7 @@ VelocityModel d2v16(const std::array<double, 4>& speeds, double eta0);
 Eigen::Matrix<double, kMoments, 1> moment_row(double vx, double vy, double eta);
 
 /// M^eq of eqs. 20–26 for b = 2/(γ−1) degrees of freedom (eq. 22: E = ρ(bT + u²)/2, eq. 25:
-/// ρu((b+2)T + u²)/2, eq. 26: ρ[((b+2)T + u²)T I + ((b+4)T + u²) uu]/2; b = 2 gives the seed's
+/// ρu((b+2)T + u²)/2, eq. 26: ρ[((b+2)T + u²)T I + ((b+4)T + u²) uu]/2; b = 2 gives the paper's
 /// forms exactly), handed to put(m, value) for m = 0..15 in the order of moment_row(). Real is
 /// double, or std::complex<double> for the complex-step derivatives of linear_stability.cpp.
 template <class Real, class Put>

@@ -1,5 +1,5 @@
 #pragma once
-// Cell list (the seed's "background grid + linked list", Xu et al. 2015, §2.1): space is cut into cubic-ish
+// Cell list (the paper's "background grid + linked list", Xu et al. 2015, §2.1): space is cut into cubic-ish
 // cells at least `cell_size` wide, and each point is put in the cell that holds it. Points in
 // CSR order (cell_start / cell_points) so a cell's points are contiguous, in increasing index
 // order within a cell; cells are numbered x fastest, so a row of cells along x is one contiguous

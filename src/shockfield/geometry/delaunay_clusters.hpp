@@ -2,7 +2,7 @@
 // Clusters of points from their Delaunay division, with a critical distance d (Xu et al. 2015
 // §3.2.3, "Cluster construction and analysis method", Fig. 13). Two rules:
 //
-//  - the seed's rule as written (seed_rule_clusters): remove the simplices whose shortest edge is
+//  - the paper's rule as written (seed_rule_clusters): remove the simplices whose shortest edge is
 //    longer than d; the remaining simplices fall into sets connected through shared faces (the
 //    seed grows each set from one simplex through a tree of its open faces, ttr; here a flood fill
 //    over the neighbour links does the same). A simplex with one short edge is kept even when its
@@ -29,7 +29,7 @@ struct PointClusters {
   std::size_t shared_points = 0;
 };
 
-/// The seed's rule. Points on no kept simplex form clusters of their own (the seed leaves them
+/// The paper's rule. Points on no kept simplex form clusters of their own (the paper leaves them
 /// out; here they are kept as single-point clusters so that every point has a label).
 template <int N>
 PointClusters seed_rule_clusters(const DelaunayDivision<N>& d, double critical_distance);

@@ -1,7 +1,7 @@
 #pragma once
 // The rolling-ball surface of a 3D point set (Xu et al. 2015 §3.2.3, "Rolling-ball method for
 // finding interfaces"): the triangles whose three points a ball of radius r, rolled over the points
-// from outside, touches at once. Computed here from the Delaunay division rather than by the seed's
+// from outside, touches at once. Computed here from the Delaunay division rather than by the paper's
 // pivot searches (MS1/MS3/CS1, not implemented): an empty ball of radius r can sit at the
 // circumcentre of a tetrahedron whose circumradius exceeds r, and can move between two neighbouring
 // tetrahedra along the Voronoi edge of their common face when every point of that edge stays at
@@ -9,7 +9,7 @@
 // when the edge crosses the face's plane, else the smaller circumradius at its ends). The balls
 // reachable from infinity form the exterior E; the surface is every face across which a ball in E
 // is stopped, oriented with its normal towards E — where the ball stops on a face it touches the
-// face's three vertices, as the seed's rolling ball does. As the boundary of a set of cells (a face
+// face's three vertices, as the paper's rolling ball does. As the boundary of a set of cells (a face
 // blocked between two cells of E counts once from each side), the surface is always closed.
 #include <array>
 #include <cstdint>

@@ -14,7 +14,7 @@
 // its box, so small objects sink and large ones stay high, "according to their locations and
 // sizes" (Fig. 5). A cube holds at most `bucket` objects that would fit a child before it splits;
 // cubes are only created where objects are, no cube is split below the resolution limit, and
-// empty cubes are removed, so memory stays proportional to the objects held. The seed's three
+// empty cubes are removed, so memory stays proportional to the objects held. The paper's three
 // operations are the constructor (establish), insert and remove; the root grows when an object
 // falls outside it.
 //

@@ -1,9 +1,9 @@
 #pragma once
-// Proximity queries on the SHT, built on its two generic searches: the seed's minimum searcher
+// Proximity queries on the SHT, built on its two generic searches: the paper's minimum searcher
 // MS2 (nearest object to a point, Xu et al. 2015 §3.2.3 (II)) and its k-nearest generalisation,
 // and a radius query as a conditional search. Distances are to an object's bounding box (0 inside
 // it), which for points is the distance to the point. MS2's range functions use the cube's box
-// rather than its circumsphere (m(b) = distance to the box <= the seed's |c_b − r_o| − √3 d_b),
+// rather than its circumsphere (m(b) = distance to the box <= the paper's |c_b − r_o| − √3 d_b),
 // a tighter bound with the same meaning.
 #include <cmath>
 #include <vector>

@@ -13,7 +13,7 @@
 
 namespace shockfield::macroparticle {
 
-/// The fcc packing fraction the seed uses in eq 11 (π/(3√2) = 0.74048 rounded).
+/// The fcc packing fraction the paper uses in eq 11 (π/(3√2) = 0.74048 rounded).
 inline constexpr double kFccPacking = 0.74;
 
 /// What derive_pair_law() needs: the atoms' cohesive energy, their crystal and its lattice

@@ -4,7 +4,7 @@
 //   elastic      φ_E(r) = [p r^-q − q r^-p]/(q − p)                     (eq 5)
 //   plastic      T_P(r) = T_E(r_y) + k Σ_n h_n (r − r_y)^n,  r ≥ r_y = 1 + ε_y    (tension route)
 //                T_P(r) = T_E(r_c) − k Σ_n h_n (r_c − r)^n,  r ≤ r_c = 1 − ε_y    (compression route)
-//                (φ_P = ∫ T_P dr: polynomials in r, the seed's "φ_P is just a polynomial of r_ij")
+//                (φ_P = ∫ T_P dr: polynomials in r, the paper's "φ_P is just a polynomial of r_ij")
 //   unloading    φ_U(r) = φ_E(r − Δr0) + C_φ                            (eq 16)
 // A bond whose shifted elastic tension T_E(r − Δr0) passes a route follows the route; there Δr0
 // is set so that T_E(r − Δr0) = T_P(r) on the stiff branch (r − Δr0 below the inflection of φ_E)

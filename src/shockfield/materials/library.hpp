@@ -7,7 +7,7 @@
 
 namespace shockfield::materials {
 
-/// Aluminium of the seed's MPM studies (Xu et al. 2015, §4.1): E = 69 GPa (printed "Mpa", a typo),
+/// Aluminium of the paper's MPM studies (Xu et al. 2015, §4.1): E = 69 GPa (printed "Mpa", a typo),
 /// ν = 0.33, ρ0 = 2700 kg/m³, σ_Y0 = 120 MPa, E_tan = 384 MPa, k = 237 W/(m·K), c0 = 5.35 km/s,
 /// λ = 1.34, c_v = 880 J/(kg·K), γ0 = 1.96 (valid below 270 GPa), T0 = 300 K.
 SolidMaterial aluminium_seed000();

@@ -1,5 +1,5 @@
 #pragma once
-// A solid as the seed's MPM sees it (Xu et al. 2015, §2.2.1): Mie-Grüneisen pressure (eqs. 5-6), J2
+// A solid as the paper's MPM sees it (Xu et al. 2015, §2.2.1): Mie-Grüneisen pressure (eqs. 5-6), J2
 // deviatoric strength (eqs. 1-4), temperature (eqs. 7-8), a bulk artificial viscosity and an
 // optional tensile (spall) failure, plus
 // the update of one material point over a step given its velocity gradient. The update is written

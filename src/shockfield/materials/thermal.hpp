@@ -1,6 +1,6 @@
 #pragma once
 // Temperature of a material point (Xu et al. 2015, §2.2.1): heating by shock compression along the
-// Hugoniot (eq. 7) and by plastic work (eq. 8), in increments as the seed suggests.
+// Hugoniot (eq. 7) and by plastic work (eq. 8), in increments as the paper suggests.
 //
 //   dT_H/dV = c0²λ(V0 − V)² / (c_v[(λ−1)V0 − λV]³) − (γ/V)·T          (eq. 7)
 //   dT_p    = dW_p / c_v                                                (eq. 8)
@@ -11,7 +11,7 @@
 // isentrope, not the Hugoniot, so the entropy a shock deposited is not taken back, and the
 // ringing behind a numerical shock front does not pump heat in. Heat conduction with the
 // conductivity k is solved between points by the MPM when switched on (mpm/heat_conduction.hpp,
-// [solver] heat_conduction); it is off by default: over the ns-µs times of the seed's MPM studies
+// [solver] heat_conduction); it is off by default: over the ns-µs times of the paper's MPM studies
 // it is negligible ("The thermal process is much slower", §4.2.2).
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Measurements the seed's MPM figures are made of (Xu et al. 2015, §4.1.1, Figs 19-28, and Fig 49):
+// Measurements the paper's MPM figures are made of (Xu et al. 2015, §4.1.1, Figs 19-28, and Fig 49):
 //  - means and standard deviations of density, pressure, temperature and velocity over the
 //    particles of a measurement window [lo, hi) along the shock axis (a bottom window [y1, y1+h]
 //    and a top window [y_top − h, y_top] following the highest particle);

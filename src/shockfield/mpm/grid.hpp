@@ -1,6 +1,6 @@
 #pragma once
 // The MPM background grid (Xu et al. 2015, §2.2.2): a regular mesh of cells in 2D plane strain (x, y;
-// one node layer in z) or 3D, fixed in space (the "convective" step of the seed maps back to the
+// one node layer in z) or 3D, fixed in space (the "convective" step of the paper maps back to the
 // original mesh every step). Each axis is either periodic (n nodes, index n wraps to 0) or
 // bounded (n + 1 nodes) with a free, stick or slip rigid wall on each face.
 #include <array>

@@ -1,9 +1,9 @@
 #pragma once
-// Samples for the seed's MPM studies (Xu et al. 2015, §4.1-4.2): solid blocks, porous bodies with
+// Samples for the paper's MPM studies (Xu et al. 2015, §4.1-4.2): solid blocks, porous bodies with
 // random non-overlapping circular (2D) or spherical (3D) voids at a target porosity
 // Δ = 1 − ρ/ρ0, a single cavity at a given depth, and the two loadings: symmetric impact of two
 // bodies at ±v and impact on a rigid wall. The shock axis is the last one (y in 2D, z in 3D, as in
-// the seed); the lateral axes are periodic.
+// the paper); the lateral axes are periodic.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -63,7 +63,7 @@ BodyStats add_body(Particles& p, int dim, const Body& body, const materials::Sol
 std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec, const PeriodicAxes& periodic = {});
 
 /// One void of `radius` centred laterally in `body`, at `depth` above its low face along the shock
-/// axis (the seed's z of §4.2.2).
+/// axis (the paper's z of §4.2.2).
 Void cavity_at(int dim, const Body& body, double depth, double radius);
 
 /// Grid covering [lo, hi] with cubic cells of size h: lateral axes periodic (lo..hi must span a

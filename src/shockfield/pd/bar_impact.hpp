@@ -1,5 +1,5 @@
 #pragma once
-// The seed's 1D impact model (Liu et al. 2025, Fig. 2): a laterally constrained bar whose left half moves
+// The paper's 1D impact model (Liu et al. 2025, Fig. 2): a laterally constrained bar whose left half moves
 // at v towards the resting right half, and the measurements taken on it: axial stress profiles,
 // the position of a wave front (where the stress first reaches a level, scanning from the far
 // end) and its width.

@@ -25,7 +25,7 @@ concept CorrespondenceMaterial = requires(const M& m, typename M::State& s, cons
   { m.hugoniot_slope() } -> std::convertible_to<double>;        // s of Us = a + s·Up [-]
 };
 
-/// Small-strain isotropic elasticity with J2 plasticity (the seed's validation material, §3.1):
+/// Small-strain isotropic elasticity with J2 plasticity (the paper's validation material, §3.1):
 /// ε = sym(F) − I, pressure from the bulk modulus (σ_m = K·tr ε), deviator by the radial return
 /// of materials::J2Plasticity on the increment of dev ε. P = σ (linear kinematics), so a 1D bar
 /// has exactly the elastic speed √((K + 4G/3)/ρ) and the plastic speed √(K/ρ).

@@ -16,7 +16,7 @@
 //   T_i^hg⟨ξ⟩ = C·(M / m_i)·ω·(Y − F_i ξ),  m_i = Σ ω β V |ξ|²,  M = ρ0 c_L²,
 // C the case file's coefficient (0 turns it off).
 // In 1D and 2D the unused directions are held: K and F are the identity there (uniaxial or plane
-// strain), which is the seed's laterally constrained bar (Fig. 2).
+// strain), which is the paper's laterally constrained bar (Fig. 2).
 #include <vector>
 
 #include "shockfield/pd/constitutive.hpp"

@@ -107,7 +107,7 @@ class HomogeneousMethod final : public Method {
     io::CsvWriter per_grain(folder / "grains.csv", grain_columns);
     axial_.assign(static_cast<std::size_t>(grains_), 0.0);
     long long rows = 0;
-    // Loading along x, as in every pd run: eq. 44 with the seed's axis 3 taken as x.
+    // Loading along x, as in every pd run: eq. 44 with the paper's axis 3 taken as x.
     const materials::CompressionObserver observe = [&](long long k, double t, double strain,
                                                        const materials::TaylorAggregate::State& state,
                                                        const std::vector<Mat3>& sigma, const Mat3& average) {

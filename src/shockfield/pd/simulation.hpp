@@ -2,7 +2,7 @@
 // A peridynamic run: the body (points, families), its density, a force model and the
 // velocity-Verlet loop of Liu et al. (2025) eq. 1, ρ·ü = L + b, with hooks at named stages (as md/ and
 // mpm/ do). Motion is restricted to the body's dimension (a 1D bar moves along x only: the
-// lateral "pulley" constraint of the seed's Fig. 2).
+// lateral "pulley" constraint of the paper's Fig. 2).
 //
 // Velocity-Verlet (LAMMPS fix nve): v ← v + ½Δt·a;  y ← y + Δt·v;  a ← L(y, v)/ρ;  v ← v + ½Δt·a.
 // The force model sees the half-step velocity.

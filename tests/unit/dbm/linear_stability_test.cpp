@@ -104,7 +104,7 @@ enum class Seed { odd_even, smooth };
 // perturbation of every f_k (the mode NND convects exactly like first-order upwind: every minmod
 // slope is zero), or a smooth u_y = 1e-6 sin(2πx/L) with round-off seeding the rest (the
 // experiment of docs/theory/dbm.md, "Stability window"). `overall`: the norm at the end over
-// the seed's.
+// the paper's.
 double measured_growth_rate(const StabilityProblem& p, const Macro& s, double t_end, double* overall = nullptr,
                             Seed seed = Seed::odd_even) {
   Lattice lattice;
@@ -169,7 +169,7 @@ TEST(DbmLinearStability, GrowthAtRestMatchesDirectSimulation) {
     EXPECT_NEAR(measured, hot.discrete_rate, 0.2 * hot.discrete_rate) << "T = " << T;
     RecordProperty(fmt::format("T{}", T), fmt::format("{} measured, {} predicted", measured, hot.discrete_rate));
     // The documented experiment, T = 1.35 with a smooth seed: the odd–even mode grows out of
-    // round-off (at T = 1.3 it needs longer to outgrow the seed; at 1.5 the last 0.3 time units
+    // round-off (at T = 1.3 it needs longer to outgrow the paper; at 1.5 the last 0.3 time units
     // still include its emergence).
     if (T != 1.35) continue;
     const double smooth = measured_growth_rate(p, {0.92, 0.0, 0.0, T}, 4.0, nullptr, Seed::smooth);

@@ -40,7 +40,7 @@ TEST(DbmVelocityModel, EquilibriumSatisfiesSevenMomentRelations) {
     EXPECT_NEAR(m42xx, 0.5 * rho * (((b + 2) * T + u2) * T + ((b + 4) * T + u2) * ux * ux),
                 1e-10);  // eq. 26
   }
-  // b = 2 (γ = 2) reproduces the seed's forms, e.g. eq. 26: ρ[(2T + u²/2)T + uu(3T + u²/2)].
+  // b = 2 (γ = 2) reproduces the paper's forms, e.g. eq. 26: ρ[(2T + u²/2)T + uu(3T + u²/2)].
   std::vector<double> f(16);
   inversion.equilibrium(1.0, 0.5, 0.0, 1.0, 2.0, f.data());
   double m42xx = 0;

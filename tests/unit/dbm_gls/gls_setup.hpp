@@ -1,6 +1,6 @@
 #pragma once
 // Shared set-up of the GLS liquid–vapour tests: a periodic D2V16 simulation (γ = 2) with the
-// GLS force term, the van der Waals EOS of the seed (a = 9/8, b = 1/3, T_c = ρ_c = 1).
+// GLS force term, the van der Waals EOS of the paper (a = 9/8, b = 1/3, T_c = ρ_c = 1).
 #include <array>
 #include <cmath>
 #include <functional>

@@ -1,5 +1,5 @@
 // Clusters from the Delaunay division: single linkage equals brute-force single linkage over all
-// pairs (union-find, O(n²)) in 2D and 3D; the seed's rule (simplices with shortest edge <= d,
+// pairs (union-find, O(n²)) in 2D and 3D; the paper's rule (simplices with shortest edge <= d,
 // face-connected) on an example where it differs from single linkage. Exact: labels must match.
 #include <gtest/gtest.h>
 
@@ -71,7 +71,7 @@ TEST(DelaunayClusters, SingleLinkageEqualsBruteForce) {
   check_single_linkage<3>(2);
 }
 
-// Two tight pairs 5 apart: every triangle of the division has a short edge (0.1), so the seed's
+// Two tight pairs 5 apart: every triangle of the division has a short edge (0.1), so the paper's
 // rule keeps them all and finds one cluster; single linkage with d = 1 finds the two pairs.
 TEST(DelaunayClusters, SeedRuleDiffersFromSingleLinkage) {
   const std::vector<std::array<double, 2>> pts{{0, 0}, {0.1, 0}, {5, 0.05}, {5.1, 0.05}};
@@ -83,12 +83,12 @@ TEST(DelaunayClusters, SeedRuleDiffersFromSingleLinkage) {
   const auto single = single_linkage_clusters<2>(d, 1.0);
   EXPECT_EQ(single.count, 2u);
   EXPECT_EQ(single.label, (std::vector<std::int32_t>{0, 0, 1, 1}));
-  // With d below every edge, the seed's rule removes every triangle: four single points.
+  // With d below every edge, the paper's rule removes every triangle: four single points.
   EXPECT_EQ(seed_rule_clusters<2>(d, 0.05).count, 4u);
 }
 
 // Well-separated blobs (gaps of 19 against d = 0.6, spacing within a blob far below d): single
-// linkage finds the four; the seed's rule as written joins them all, because every simplex
+// linkage finds the four; the paper's rule as written joins them all, because every simplex
 // bridging two blobs has at least two vertices in one blob, hence a short edge, and is kept.
 TEST(DelaunayClusters, SeedRuleJoinsSeparatedBlobs) {
   std::mt19937_64 rng(4);

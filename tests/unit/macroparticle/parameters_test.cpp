@@ -55,7 +55,7 @@ double fitted_e0(const Metal& m, bool copper) {
 }
 
 TEST(MacroparticleTable1, Eq15WithKittelCohesiveEnergiesGivesRowsOneToFourWithinTwoPercent) {
-  // Tolerance 1.5%: the seed does not say which e0, ρ and m it used; Kittel's e0 puts Al 1.0%
+  // Tolerance 1.5%: the paper does not say which e0, ρ and m it used; Kittel's e0 puts Al 1.0%
   // above and Cu 0.8% below the printed rows (a ~1% difference in e0/m).
   for (int k = 0; k < 4; ++k) {
     const Row& r = kTable1[k];

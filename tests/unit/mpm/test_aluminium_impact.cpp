@@ -47,7 +47,7 @@ double hugoniot_temperature(const materials::SolidMaterial& m, double rho) {
 }  // namespace
 
 // Behind the steady shock, Up = 1000 m/s (symmetry): Us = c0 + λUp = 6690 m/s,
-// P = ρ0·Us·Up = 18.06 GPa, ρ = ρ0·Us/(Us − Up) = 3174 kg/m³ (Rankine-Hugoniot with the seed's
+// P = ρ0·Us·Up = 18.06 GPa, ρ = ρ0·Us/(Us − Up) = 3174 kg/m³ (Rankine-Hugoniot with the paper's
 // c0 = 5.35 km/s, λ = 1.34). Tolerance 2% (issue): the longitudinal stress also carries the
 // ⅔σ_Y of the strength (≈ 0.1 GPa, 0.5%) and the MPM shock is smeared. The temperature is
 // T_H(ρ) of eq. 7 plus the plastic heating W_p/c_v of eq. 8, both from the measured state.

@@ -24,7 +24,7 @@ namespace {
 constexpr double kCell = 1e-4, kSpeed = 200.0;
 constexpr int kFlyerCells = 40;
 
-// The seed's aluminium made hydrodynamic (σ_Y0 = 1 kPa, no hardening): the pull-back then travels
+// The paper's aluminium made hydrodynamic (σ_Y0 = 1 kPa, no hardening): the pull-back then travels
 // at the bulk sound speed c0 that the acoustic formula uses (no elastic precursor to correct for).
 materials::SolidMaterial hydrodynamic_al(double spall_strength) {
   auto m = materials::aluminium_seed000();

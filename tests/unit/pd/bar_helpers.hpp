@@ -8,7 +8,7 @@
 
 namespace shockfield::pd::testing {
 
-// The seed's §3.1 isotropic material: E = 77.11 GPa, ν = 0.334, Y = 270 MPa, ρ = 2703 kg/m³.
+// The paper's §3.1 isotropic material: E = 77.11 GPa, ν = 0.334, Y = 270 MPa, ρ = 2703 kg/m³.
 inline SmallStrainJ2 seed_aluminium(double yield = 270e6) {
   return SmallStrainJ2::from_young(2703.0, 77.11e9, 0.334, yield, 0.0, 0.0);
 }
@@ -39,7 +39,7 @@ struct MaterialBar {
     for (const Vec3& p : cloud.x) out.push_back(p[0]);
     return out;
   }
-  /// Axial stress σ_xx, positive in compression (as the seed plots it).
+  /// Axial stress σ_xx, positive in compression (as the paper plots it).
   std::vector<double> axial_compression() const {
     std::vector<double> out;
     for (std::size_t i = 0; i < cloud.size(); ++i) out.push_back(-force->stress(i)(0, 0));

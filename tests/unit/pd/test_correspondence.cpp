@@ -1,5 +1,5 @@
 // Correspondence model (Liu et al. 2025, eqs. 1-8) with and without the Riemann correction (eqs. 9-17)
-// on the seed's 1D impact bar (Fig. 2), ΔX = 10 µm, δ = 3ΔX.
+// on the paper's 1D impact bar (Fig. 2), ΔX = 10 µm, δ = 3ΔX.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -43,9 +43,9 @@ Plateau plateau(const Bar& bar, double front) {
 }  // namespace
 
 // 30 m/s: an elastic wave of stress ρ c_L u_p = 265.56 MPa (u_p = 15 m/s) moving at c_L = 6549.7 m/s.
-// Riemann-corrected: speed and stress within 1% (the seed's accuracy), the plateau flat to 2%
+// Riemann-corrected: speed and stress within 1% (the paper's accuracy), the plateau flat to 2%
 // (what is left is the ringing of the impact plane's own start-up, 0.3 mm behind it).
-// Uncorrected: oscillations behind the front of tens of MPa (the seed reports ~100 MPa).
+// Uncorrected: oscillations behind the front of tens of MPa (the paper reports ~100 MPa).
 TEST(Correspondence, ElasticWaveAt30MetresPerSecond) {
   EXPECT_NEAR(kCl, 6549.72, 0.05);
   const double expected = kRho * kCl * 15.0;
@@ -91,7 +91,7 @@ TEST(Correspondence, SingularShapeTensorIsAnInputError) {
 
 // 300 m/s: elastic precursor at the HEL Y(1−ν)/(1−2ν) = 541.63 MPa moving at c_L = 6549.72 m/s,
 // plastic wave at √(K/ρ) = 5351.83 m/s to ρ c_L u_e + ρ c_p (150 m/s − u_e) = 2.27 GPa. All four
-// within 1% (the seed's accuracy).
+// within 1% (the paper's accuracy).
 TEST(Correspondence, ElasticPlasticTwoWavesAt300MetresPerSecond) {
   const double hel = 270e6 * (1.0 - 0.334) / (1.0 - 2.0 * 0.334);
   const double cp = std::sqrt(77.11e9 / (3.0 * (1.0 - 2.0 * 0.334)) / kRho);

@@ -1,5 +1,5 @@
 // Crystal viscoplasticity (Liu et al. 2025, eqs. 18-41, Algorithm 1), lattice geometry and Taylor
-// homogenisation (eqs. 42-43) with the seed's Table 1 (annealed OFHC copper).
+// homogenisation (eqs. 42-43) with the paper's Table 1 (annealed OFHC copper).
 #include <gtest/gtest.h>
 
 #include <algorithm>

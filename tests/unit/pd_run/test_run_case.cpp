@@ -90,7 +90,7 @@ TEST(PdCaseFile, BadMaterialNamesTheKey) {
   }
 }
 
-// The seed's §3.1 numbers (to the 1% the issue asks; the formulas are exact) in [derived].
+// The paper's §3.1 numbers (to the 1% the issue asks; the formulas are exact) in [derived].
 TEST(PdRunCase, DerivedWaveSpeedsAndStresses) {
   for (const auto& [speed, stress] : {std::pair{30.0, 265.56e6}, std::pair{300.0, 2.27e9}}) {
     const auto out = run(bar_case(speed, 100, 1e-8), speed > 100 ? "fast" : "slow");

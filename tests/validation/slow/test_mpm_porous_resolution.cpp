@@ -1,9 +1,9 @@
-// The seed's porous aluminium case (Xu et al. 2015, §4.1, Fig 19: Δ = 0.029, r = 50 µm, 2 × 5 mm, slip
+// The paper's porous aluminium case (Xu et al. 2015, §4.1, Fig 19: Δ = 0.029, r = 50 µm, 2 × 5 mm, slip
 // wall at 1000 m/s; examples/mpm_porous_al/case.toml) at 20 µm and 10 µm cells (void radius 2.5
-// and 5 cells), bottom window [100, 900] µm at 250 ns, beside the seed's 3.14 g/cm³, 16.7 GPa and
-// 432 K. Density and pressure: within 2 % and 5 % of the seed at both resolutions (the seed's
+// and 5 cells), bottom window [100, 900] µm at 250 ns, beside the paper's 3.14 g/cm³, 16.7 GPa and
+// 432 K. Density and pressure: within 2 % and 5 % of the paper at both resolutions (the paper's
 // values are read off a figure; a porous body sits below the solid Hugoniot 3.174 g/cm³,
-// 18.06 GPa). Temperature: the seed's 432 K is below what its own eq. 7 gives for the solid at this
+// 18.06 GPa). Temperature: the paper's 432 K is below what its own eq. 7 gives for the solid at this
 // shock (≈ 488 K + ~6 K plastic work, examples/mpm_porous_al/README.md), and a porous body
 // dissipates more, so the check is T above the solid value; the measured T at both resolutions
 // is recorded to show the trend (README table). Label "slow": the 10 µm run is ~4·10⁵ particles

@@ -6,7 +6,7 @@
 //   P_H = ρ0c0²η              for V > V0 (tension, η < 0)                (eq. 6, tension)
 //   E_H = ½·P_H·(V0 − V)      (Rankine-Hugoniot energy jump from P = 0, e = 0)
 //
-// The reference state (ρ0, e = 0) has zero pressure. Eq. 6 as printed in the seed reads
+// The reference state (ρ0, e = 0) has zero pressure. Eq. 6 as printed in the paper reads
 // ρ0c0²(V/V0 − 1) on the tension branch, which would make stretched material push outwards;
 // we use the sign that continues the compression branch with the same slope (the printed sign
 // is a typo: the compression branch tends to ρ0c0²(1 − V/V0) as V → V0).

@@ -1,6 +1,6 @@
 #pragma once
 // Van der Waals equation of state in the reduced units of the GLS discrete Boltzmann model
-// (Xu et al. 2015, §2.3.2): P = ρT/(1 − bρ) − aρ²; with the seed's a = 9/8, b = 1/3 this is
+// (Xu et al. 2015, §2.3.2): P = ρT/(1 − bρ) − aρ²; with the paper's a = 9/8, b = 1/3 this is
 // P = 3ρT/(3 − ρ) − 9ρ²/8, whose critical point is ρ_c = T_c = 1, P_c = 3/8.
 #include <string>
 

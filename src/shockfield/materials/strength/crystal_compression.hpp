@@ -1,7 +1,7 @@
 #pragma once
 // Simple compression of a crystal aggregate under the Taylor assumption (Liu et al. 2025, §4.1, Fig. 5):
 // every grain follows the same isochoric deformation gradient of eq. 44 and the aggregate's
-// stress is their volume average (eq. 43). This is the material-point test the seed holds the
+// stress is their volume average (eq. 43). This is the material-point test the paper holds the
 // crystal law of Table 1 against (annealed OFHC copper, Kalidindi, Bronkhorst & Anand 1992).
 #include <functional>
 #include <vector>
@@ -10,12 +10,12 @@
 
 namespace shockfield::materials {
 
-/// Eq. 44: F = diag(e^(−ε/2), e^(−ε/2), e^ε), det F = 1, along `axis` (the seed's 3 is z = 2; the
+/// Eq. 44: F = diag(e^(−ε/2), e^(−ε/2), e^ε), det F = 1, along `axis` (the paper's 3 is z = 2; the
 /// pd driver loads along x = 0 like every pd run); compression for ε < 0.
 Mat3 isochoric_compression(double strain, int axis = 2);
 
 /// Eq. 45: the axial stress of a test whose lateral faces are free, read from the deviator s of
-/// σ as s33 − ½(s11 + s22) = σ33 − ½(σ11 + σ22) for axis 3 (the seed prints the ½ as
+/// σ as s33 − ½(s11 + s22) = σ33 − ½(σ11 + σ22) for axis 3 (the paper prints the ½ as
 /// 1/(2(s11 + s22)), a typesetting slip: the expression must be linear in the stress).
 double axial_stress(const Mat3& sigma, int axis = 2);
 

@@ -20,8 +20,8 @@
 //   5-6  Fp ← (I − L̄p h)⁻¹ Fp, then Fp ← Fp / det(Fp)^(1/3)
 //   7    γ^α += γ̇^α h, g^α += ġ^α h
 // then 8-11: Fe = F Fp⁻¹, σ, Re from the polar decomposition Fe = Re Ue, lattice orientation g·Re.
-// Table 1 of the seed lists "c14"; it is c44 (cubic crystals have no c14), and its "a = 2.25" is the
-// exponent of Kalidindi's power-law hardening, used only by HardeningLaw::power (the seed's eq. 40
+// Table 1 of the paper lists "c14"; it is c44 (cubic crystals have no c14), and its "a = 2.25" is the
+// exponent of Kalidindi's power-law hardening, used only by HardeningLaw::power (the paper's eq. 40
 // is the sech² law, whose latent systems saturate at g0 + q·(g_s − g0) instead of g_s).
 #include <array>
 #include <string>

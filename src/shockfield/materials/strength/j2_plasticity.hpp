@@ -1,6 +1,6 @@
 #pragma once
 // J2 (von Mises) plasticity for the deviatoric stress (Xu et al. 2015, §2.2.1, eqs. 1-4): isotropic
-// linear elasticity s = 2G·e^e with G = E/(2(1+ν)) (the seed's s = [E/(1+ν)]e^e), the yield
+// linear elasticity s = 2G·e^e with G = E/(2(1+ν)) (the paper's s = [E/(1+ν)]e^e), the yield
 // criterion √(3/2)‖ξ‖ = σ_Y (eq. 3) on the shifted stress ξ = s − α, and linear hardening
 // σ_Y = σ_Y0 + E_tan·ε̄p (eq. 4), where ε̄p = Σ√(2/3)‖Δe^p‖ is the accumulated equivalent
 // plastic strain (equal to the plastic strain of a uniaxial tension test).

@@ -1,7 +1,7 @@
 #pragma once
 // Uniform deformation at constant engineering strain rate (LAMMPS `fix deform ... erate R
 // remap x`): at the end of each step every box length is L(t) = L₀(1 + ε̇ t) about the box
-// centre, and atom coordinates are mapped affinely with the box. This is the seed's uniform
+// centre, and atom coordinates are mapped affinely with the box. This is the paper's uniform
 // dilative / uniaxial strain loading by rescaling of coordinates (Xu et al. 2015, §4.4.1).
 #include "shockfield/md/fix.hpp"
 #include "shockfield/geometry/box.hpp"
