@@ -8,7 +8,8 @@ cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)"
 # Tests run side by side: idle OpenMP threads must sleep, not spin, or they starve each other.
 export OMP_WAIT_POLICY=passive
-ctest --preset release -j "$(nproc)" -LE sanitizer
+# (-LE replaces the preset's exclusion of the "slow" label, so both are named here.)
+ctest --preset release -j "$(nproc)" -LE 'slow|sanitizer'
 # The fuzzers' parsers under AddressSanitizer + UBSan (issue 14; docs/robustness.md, "In CI"):
 # shockfield_fuzz_parsers, built above, puts mutants of every parser's inputs and the whole fuzz
 # corpus through the parsers in-process; any crash, hang, leak or sanitizer report fails.
