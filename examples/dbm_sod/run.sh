@@ -2,10 +2,7 @@
 # Sod shock tube with the discrete Boltzmann model: the run; the plateau of profiles/profile_4.csv beside the exact star state of config.resolved.toml.
 #   examples/dbm_sod/run.sh [RUNS_DIR]     (from the repository root; SHOCKFIELD=path/to/shockfield to choose the binary)
 set -eu
-here=$(dirname "$0")
-runs=${1:-runs/dbm_sod}
-bin=${SHOCKFIELD:-./build/release/shockfield}
-mkdir -p "$runs"
+. "$(dirname "$0")/../run_common.sh"
 rm -rf "$runs/run"
 "$bin" run "$here/case.toml" -o "$runs/run" | tail -1
 awk -F, 'NR > 1 && $1 > 0.55 && $1 < 0.82 { p += $5; u += $3; n++ } END { printf "DBM plateau: p* = %.5f, u* = %.5f\n", p / n, u / n }' "$runs/run/profiles/profile_4.csv"

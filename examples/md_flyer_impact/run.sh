@@ -2,10 +2,7 @@
 # Symmetric flyer-plate impact in EAM copper (two plates at ±0.5 km/s): the run and profiles.png, the two fronts moving apart.
 #   examples/md_flyer_impact/run.sh [RUNS_DIR]     (from the repository root; SHOCKFIELD=path/to/shockfield to choose the binary)
 set -eu
-here=$(dirname "$0")
-runs=${1:-runs/md_flyer_impact}
-bin=${SHOCKFIELD:-./build/release/shockfield}
-mkdir -p "$runs"
+. "$(dirname "$0")/../run_common.sh"
 rm -rf "$runs/run"
 "$bin" run "$here/case.toml" -o "$runs/run" -j2 | tail -3
 "$bin" plot profiles "$runs/run" -o "$here/profiles.png"

@@ -2,10 +2,7 @@
 # A 1.5 km/s piston shock along [111] over a 1 nm void in copper: the run, profiles.png, and the void followed by analyze atoms --voids (voids.csv: its volume against time).
 #   examples/md_void_shock_111/run.sh [RUNS_DIR]     (from the repository root; SHOCKFIELD=path/to/shockfield to choose the binary)
 set -eu
-here=$(dirname "$0")
-runs=${1:-runs/md_void_shock_111}
-bin=${SHOCKFIELD:-./build/release/shockfield}
-mkdir -p "$runs"
+. "$(dirname "$0")/../run_common.sh"
 rm -rf "$runs/run" "$runs/voids"
 "$bin" run "$here/case.toml" -o "$runs/run" -j2 | tail -3
 "$bin" plot profiles "$runs/run" -o "$here/profiles.png"

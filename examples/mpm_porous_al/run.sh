@@ -2,10 +2,7 @@
 # Porous aluminium on a rigid wall at 1000 m/s (the main example): the run and porous.png, window means beside Xu et al. (2015) Figs 18-19.
 #   examples/mpm_porous_al/run.sh [RUNS_DIR]     (from the repository root; SHOCKFIELD=path/to/shockfield to choose the binary)
 set -eu
-here=$(dirname "$0")
-runs=${1:-runs/mpm_porous_al}
-bin=${SHOCKFIELD:-./build/release/shockfield}
-mkdir -p "$runs"
+. "$(dirname "$0")/../run_common.sh"
 rm -rf "$runs/run"
 "$bin" run "$here/case.toml" -o "$runs/run" -j2 | tail -1
 /usr/bin/python3 python/shockfield_plot/mpm_plots.py porous "$runs/run" --out "$here/porous.png"

@@ -2,10 +2,7 @@
 # Riemann-corrected elastic and elastic-plastic waves in a PD bar (Liu et al. 2025, Figs 2-4): three runs, then bar.png.
 #   examples/pd_bar_elastic_plastic/run.sh [RUNS_DIR]     (from the repository root; SHOCKFIELD=path/to/shockfield to choose the binary)
 set -eu
-here=$(dirname "$0")
-runs=${1:-runs/pd_bar_elastic_plastic}
-bin=${SHOCKFIELD:-./build/release/shockfield}
-mkdir -p "$runs"
+. "$(dirname "$0")/../run_common.sh"
 for c in bar_30 bar_30_plain bar_300; do
   rm -rf "$runs/$c"
   "$bin" run "$here/$c.toml" -o "$runs/$c" -j1 | tail -1

@@ -2,10 +2,7 @@
 # A shocked Cu polycrystal beside the [100] and [111] single crystals (Liu et al. 2025, Figs 9-12), then polycrystal.png.
 #   examples/pd_polycrystal/run.sh [RUNS_DIR]     (from the repository root; SHOCKFIELD=path/to/shockfield to choose the binary)
 set -eu
-here=$(dirname "$0")
-runs=${1:-runs/pd_polycrystal}
-bin=${SHOCKFIELD:-./build/release/shockfield}
-mkdir -p "$runs"
+. "$(dirname "$0")/../run_common.sh"
 for c in c100 c111; do
   rm -rf "$runs/$c"
   "$bin" run "$here/../pd_single_crystal/$c.toml" -o "$runs/$c" -j1 | tail -1

@@ -2,10 +2,7 @@
 # Cu single crystals shocked along [100] and [111] (Liu et al. 2025, Figs 6-8): two runs, then crystal.png; the 50 m/s [111] run and c111_evolution.png.
 #   examples/pd_single_crystal/run.sh [RUNS_DIR]     (from the repository root; SHOCKFIELD=path/to/shockfield to choose the binary)
 set -eu
-here=$(dirname "$0")
-runs=${1:-runs/pd_single_crystal}
-bin=${SHOCKFIELD:-./build/release/shockfield}
-mkdir -p "$runs"
+. "$(dirname "$0")/../run_common.sh"
 for c in c100 c111 c111_50; do
   rm -rf "$runs/$c"
   "$bin" run "$here/$c.toml" -o "$runs/$c" -j1 | tail -1
