@@ -31,9 +31,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string name = file.string();
-  if (h5.attribute("format_version") != kFormatVersion)
-    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", name,
-                                 h5.attribute("format_version"), kFormatVersion));
+  checkpoint.require_format(kFormatVersion);
   std::vector<double> f = h5.read_doubles("f");
   if (f.size() != sim.f().size())
     throw InputError(fmt::format("{}: dataset 'f' has {} values, the case needs {} (a different grid or velocity model)",

@@ -143,4 +143,10 @@ std::int64_t CheckpointReader::count(const std::string& name) const {
   return static_cast<std::int64_t>(v);
 }
 
+void CheckpointReader::require_format(double version) const {
+  const double found = h5_.attribute("format_version");
+  if (found != version)
+    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", h5_.path(), found, version));
+}
+
 }  // namespace shockfield::io

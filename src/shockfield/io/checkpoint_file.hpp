@@ -59,6 +59,8 @@ class CheckpointReader {
   /// doubles that convert to an integer exactly), else InputError naming the file and the
   /// attribute — never an unclamped cast of NaN or 1e300.
   std::int64_t count(const std::string& name) const;
+  /// InputError naming the file unless its `format_version` attribute is `version`.
+  void require_format(double version) const;
 
  private:
   Hdf5File h5_;

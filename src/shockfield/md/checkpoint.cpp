@@ -73,10 +73,7 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
 
 CheckpointPosition read_checkpoint_header(const std::filesystem::path& file) {
   const io::CheckpointReader checkpoint(file);
-  const io::Hdf5File& h5 = checkpoint.h5();
-  if (h5.attribute("format_version") != kFormatVersion)
-    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", file.string(),
-                                 h5.attribute("format_version"), kFormatVersion));
+  checkpoint.require_format(kFormatVersion);
   return {checkpoint.count("stage"), checkpoint.count("stage_step")};
 }
 

@@ -64,9 +64,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string f = file.string();
-  if (h5.attribute("format_version") != kFormatVersion)
-    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", f, h5.attribute("format_version"),
-                                 kFormatVersion));
+  checkpoint.require_format(kFormatVersion);
   Particles& p = sim.particles();
   const std::size_t n = p.size();
   unpack<3>(h5.read_doubles("x"), n, "x", f, [&](std::size_t i, const double* d) { p.x[i] = Vec3(d); });

@@ -48,9 +48,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string f = file.string();
-  if (h5.attribute("format_version") != kFormatVersion)
-    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", f, h5.attribute("format_version"),
-                                 kFormatVersion));
+  checkpoint.require_format(kFormatVersion);
   const std::size_t n = sim.cloud().size();
   sim.restore(unflatten(h5.read_doubles("y"), n, "y", f), unflatten(h5.read_doubles("v"), n, "v", f),
               unflatten(h5.read_doubles("force_density"), n, "force_density", f),

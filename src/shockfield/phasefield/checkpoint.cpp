@@ -27,9 +27,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Solver& solver
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string name = file.string();
-  if (h5.attribute("format_version") != kFormatVersion)
-    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", name,
-                                 h5.attribute("format_version"), kFormatVersion));
+  checkpoint.require_format(kFormatVersion);
   std::vector<double> xi = h5.read_doubles("xi");
   if (xi.size() != solver.field().size())
     throw InputError(fmt::format("{}: dataset 'xi' has {} values, the case's grid has {} nodes", name, xi.size(),
