@@ -59,4 +59,14 @@ csv="$WORK/layer/minkowski.csv"
 [ "$(head -1 "$csv")" = "file,time,threshold,V,S,b,M,chi,chi_per_black" ] || fail "3D header: $(head -1 "$csv")"
 [ "$(column chi "$csv" 1)" = 1 ] || fail "chi of one voxel"
 near "$(column V "$csv" 1)" "$(awk 'BEGIN { printf "%.12g", 1 / 12 }')" 1e-9 "V of one voxel in 12"
+
+# -n spreads its thresholds over the values of all the fields: a uniform first frame (a shock run
+# before the shock) must not squeeze them into its round-off (300 - 2e-13 ... 300).
+awk 'NR == 1 { print; next } { gsub(/400/, "300"); print }' "$F/two_disks.csv" > "$WORK/uniform.csv"
+"$SF" analyze minkowski "$WORK/uniform.csv" "$F/two_disks.csv" --times 0,1 -n 5 --no-plot \
+  -o "$WORK/range" > /dev/null
+csv="$WORK/range/minkowski.csv"
+near "$(column threshold "$csv" 1)" 300 0 "lowest threshold over both fields"
+near "$(column threshold "$csv" 5)" 400 0 "highest threshold over both fields"
+near "$(column threshold "$csv" 3)" 350 1e-9 "middle threshold"
 echo "analyze_minkowski: ok"

@@ -10,7 +10,7 @@ ramp() { awk -v s="$1" 'BEGIN { for (y = 0; y < 8; ++y) { line = s; for (x = 1; 
 ramp 0 "$WORK/ref0.csv"; ramp 2 "$WORK/ref1.csv"; ramp 5 "$WORK/cand0.csv"; ramp 7 "$WORK/cand1.csv"
 "$SF" analyze similarity -r "$WORK/ref0.csv" "$WORK/ref1.csv" --reference-threshold 10.5 \
   "$WORK/cand0.csv" "$WORK/cand1.csv" --times 0,0.5 -t 12.5,13.5,14.5,15.5,16.5,17.5 \
-  -o "$WORK/sim" > "$WORK/out.txt"
+  -o "$WORK/sim" > "$WORK/out.txt" 2>&1
 grep -q "best candidate threshold 15.5: process distance d_P = 0" "$WORK/out.txt" ||
   fail "similarity: $(cat "$WORK/out.txt")"
 csv="$WORK/sim/similarity.csv"
@@ -19,6 +19,13 @@ grep -q "^# reference threshold 10.5, interval \[0, 0.5\], best candidate thresh
 [ "$(grep -c '^c,' "$csv")" -eq 6 ] || fail "one row per candidate threshold: $(cat "$csv")"
 awk -F, '$1 == "c" && $2 != 15.5 && !($3 > 0) { exit 1 }' "$csv" || fail "d_P > 0 elsewhere"
 [ "$(head -c 4 "$WORK/sim/similarity.png" | tail -c 3)" = "PNG" ] || fail "no similarity.png"
+grep -q "warning: the best threshold" "$WORK/out.txt" && fail "a warning for a minimum inside the range"
+# A best threshold on the edge of the candidates: the minimum may lie outside, the command says so.
+"$SF" analyze similarity -r "$WORK/ref0.csv" "$WORK/ref1.csv" --reference-threshold 10.5 \
+  "$WORK/cand0.csv" "$WORK/cand1.csv" --times 0,0.5 -t 11.5,12.5,13.5 --no-plot \
+  -o "$WORK/edge" > /dev/null 2> "$WORK/edge.txt"
+grep -q "warning: the best threshold 13.5 is at the edge of the candidate range \[11.5, 13.5\]" "$WORK/edge.txt" ||
+  fail "no edge warning: $(cat "$WORK/edge.txt")"
 
 # stats: two disks of 69 cells at 400 K in 768 cells at 300 K.
 "$SF" analyze stats "$F/two_disks.csv" "$F/two_disks.csv" --times 1,2 --bins 4 -o "$WORK/stats" > /dev/null

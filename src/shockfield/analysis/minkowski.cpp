@@ -282,19 +282,25 @@ std::vector<Functionals3D> minkowski_3d(const GridField& field, std::span<const 
   });
 }
 
-std::vector<double> linear_thresholds(const GridField& field, std::size_t count) {
-  validate(field, "field");
+std::vector<double> linear_thresholds(std::span<const GridField> fields, std::size_t count) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (std::size_t i = 0; i < field.size(); ++i)
-    if (!field.void_at(i)) lo = std::min(lo, field.values[i]), hi = std::max(hi, field.values[i]);
+  for (const GridField& field : fields) {
+    validate(field, "field");
+    for (std::size_t i = 0; i < field.size(); ++i)
+      if (!field.void_at(i)) lo = std::min(lo, field.values[i]), hi = std::max(hi, field.values[i]);
+  }
   if (!(hi > lo) || count == 0)
     throw InputError(fmt::format(
-        "cannot spread {} thresholds over the field's values [{}, {}]; give thresholds explicitly",
+        "cannot spread {} thresholds over the fields' values [{}, {}]; give thresholds explicitly",
         count, lo, hi));
   std::vector<double> t(count);
   for (std::size_t k = 0; k < count; ++k)
     t[k] = count == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * double(k) / double(count - 1);
   return t;
+}
+
+std::vector<double> linear_thresholds(const GridField& field, std::size_t count) {
+  return linear_thresholds(std::span<const GridField>(&field, 1), count);
 }
 
 }  // namespace shockfield::analysis

@@ -74,7 +74,9 @@ std::vector<Functionals2D> minkowski_2d(const GridField& field, std::span<const 
 std::vector<Functionals3D> minkowski_3d(const GridField& field, std::span<const double> thresholds,
                                         const MinkowskiOptions& options = {});
 
-/// `count` thresholds evenly spaced over the range of the field's non-void values.
+/// `count` thresholds evenly spaced over the range of the fields' non-void values (all the
+/// frames of a run together: the first frame of a shock run is often uniform).
+std::vector<double> linear_thresholds(std::span<const GridField> fields, std::size_t count);
 std::vector<double> linear_thresholds(const GridField& field, std::size_t count);
 
 }  // namespace shockfield::analysis

@@ -74,8 +74,8 @@ void add_morphology(CLI::App* cmd, Morphology& m) {
                   "Thresholds Θ_th, comma-separated, strictly increasing (white = Θ >= Θ_th)")
       ->delimiter(',');
   cmd->add_option("-n,--count", m.count,
-                  "Instead of --thresholds: this many thresholds evenly spaced over the first "
-                  "field's value range");
+                  "Instead of --thresholds: this many thresholds evenly spaced over the value "
+                  "range of all the fields together (default 32)");
   cmd->add_option("--boundary", m.boundary,
                   "periodic (the grid wraps; the surrounding region does not count, as in eq. 32) "
                   "or open (black outside the grid, scikit-image's convention)")
@@ -155,11 +155,11 @@ sa::MinkowskiOptions options_of(const Morphology& m) {
   return o;
 }
 
-std::vector<double> thresholds_of(const Morphology& m, const sa::GridField& first) {
+std::vector<double> thresholds_of(const Morphology& m, const std::vector<sa::GridField>& fields) {
   if (!m.thresholds.empty() && m.count > 0)
     throw InputError("give either --thresholds or --count, not both");
   if (!m.thresholds.empty()) return m.thresholds;
-  return sa::linear_thresholds(first, m.count > 0 ? m.count : 32);
+  return sa::linear_thresholds(fields, m.count > 0 ? m.count : 32);
 }
 
 // Functionals of every field at every threshold, as morphology points and as CSV text rows.
@@ -226,7 +226,7 @@ void set_threads(const Common& c) {
 void run_minkowski(const Common& c, const Morphology& m) {
   set_threads(c);
   const Inputs in = read_all(c, c.files, "input");
-  const auto thresholds = thresholds_of(m, in.fields.front());
+  const auto thresholds = thresholds_of(m, in.fields);
   const Table t = functionals(in.fields, thresholds, options_of(m));
   auto out = open_output(c, "minkowski.csv");
   out << "file,time,threshold," << t.header << "\n";
@@ -256,7 +256,7 @@ void run_similarity(const Common& c, const Morphology& m, const SimilarityArgs& 
                     "fields) must be sampled at the same times",
                     ref.fields.size(), in.fields.size()));
   const auto& times = in.times;
-  const auto thresholds = thresholds_of(m, in.fields.front());
+  const auto thresholds = thresholds_of(m, in.fields);
   const auto o = options_of(m);
   const std::vector<double> one{s.reference_threshold};
   const Table rt = functionals(ref.fields, one, o), ct = functionals(in.fields, thresholds, o);
@@ -283,6 +283,12 @@ void run_similarity(const Common& c, const Morphology& m, const SimilarityArgs& 
   out.close();
   std::printf("best candidate threshold %g: process distance d_P = %g, S_D = %g\n", match.threshold,
               match.distance, 1.0 / match.distance);
+  if (thresholds.size() > 1 &&
+      (match.threshold == thresholds.front() || match.threshold == thresholds.back()))
+    std::fprintf(stderr,
+                 "warning: the best threshold %g is at the edge of the candidate range [%g, %g]: the "
+                 "minimum of d_P may lie outside it; widen --thresholds\n",
+                 match.threshold, thresholds.front(), thresholds.back());
   plot(c, "similarity", "similarity.csv");
 }
 

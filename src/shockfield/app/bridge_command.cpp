@@ -19,12 +19,13 @@ void add_bridge_command(CLI::App& app, const std::vector<std::string>& command_l
       "Scale bridges: fit what a run of one scale measured and write it as a material file for the\n"
       "next scale (docs/bridges.md). Each subcommand writes a TOML material file whose\n"
       "[provenance.<bridge>] names the command, its inputs (with the SHA-256 of their resolved\n"
-      "configurations) and the fit with its uncertainty; MPM ([[material]] file = ...) and PD\n"
-      "([material] file = ...) cases read it (docs/materials.md). --update writes into an existing\n"
-      "file, replacing only the sections this bridge gives.");
+      "configurations) and the fit with its uncertainty; MPM ([[material]] file = ...), PD and\n"
+      "macroparticle ([material] file = ...) cases read it (docs/materials.md). --update writes\n"
+      "into an existing file, replacing only the sections this bridge gives.");
   bridge->require_subcommand(1);
   add_bridge_hugoniot_to_eos_command(*bridge, command_line);
   add_bridge_elastic_command(*bridge, command_line);
+  add_bridge_eam_to_macroparticle_command(*bridge, command_line);
 }
 
 }  // namespace shockfield::app

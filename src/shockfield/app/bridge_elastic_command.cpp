@@ -8,15 +8,13 @@
 
 #include <cstdio>
 
+#include "shockfield/app/bridge_md_crystal.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/sha256.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/materials/material_file.hpp"
-#include "shockfield/md/elastic_constants.hpp"
-#include "shockfield/md/lattice.hpp"
-#include "shockfield/md/potentials/registry.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -25,52 +23,15 @@ namespace fs = std::filesystem;
 namespace mu = units::metal;
 
 struct ElasticOptions {
-  std::optional<fs::path> potential, constants;
-  std::string style = "eam", element = "Cu", lattice = "fcc", average = "hill";
-  std::optional<double> a0, mass;
-  int repeat = 4;
+  CrystalOptions crystal;
+  std::optional<fs::path> constants;
+  std::string average = "hill";
   BridgeOutput out;
 };
 
-struct Measured {
-  md::CubicElasticConstants c;  ///< GPa, Å
-  double mass = 0;              ///< amu
-  fs::path source;              ///< the potential or constants file
-  toml::table details;          ///< how they were obtained
-};
-
-Measured from_potential(const ElasticOptions& o) {
-  if (!o.a0) throw InputError("bridge elastic --potential: give --a0, the starting lattice constant (Å)");
-  const std::string elements = o.style == "eam" ? "" : fmt::format("elements = [\"{}\"]\n", o.element);
-  const Config table = Config::parse(fmt::format("style = \"{}\"\nfile = \"{}\"\n{}", o.style, o.potential->string(), elements),
-                                     "--potential");
-  const md::PotentialFactory make = [&] { return md::potentials::make_potential(table, fs::current_path(), 1); };
-  Measured m;
-  const std::unique_ptr<md::Potential> first = make();
-  m.source = table.input_files().front();
-  const std::optional<double> file_mass = md::potentials::potential_type_mass(*first, 0);
-  if (!o.mass && !file_mass) throw InputError(fmt::format("{}: the potential gives no mass: give --mass (amu)", m.source.string()));
-  m.mass = o.mass.value_or(file_mass.value_or(0.0));
-  md::CubicCrystal crystal;
-  crystal.lattice.style = md::parse_lattice_style(o.lattice, "--lattice");
-  crystal.lattice.a0 = *o.a0;
-  crystal.mass = {m.mass};
-  crystal.type_names = {o.element};
-  md::ElasticSettings settings;
-  settings.repeat = {o.repeat, o.repeat, o.repeat};
-  m.c = md::cubic_elastic_constants(crystal, make, settings);
-  m.details = toml::table{{"procedure", "zero-temperature strain-stress central differences (LAMMPS ELASTIC); "
-                                        "checked against LAMMPS to 1e-8 (tests/validation/test_md_elastic.cpp)"},
-                          {"strain", settings.strain},
-                          {"repeat", o.repeat},
-                          {"relaxation_iterations", m.c.relaxation.iterations},
-                          {"cohesive_energy_eV", m.c.cohesive_energy}};
-  return m;
-}
-
-Measured from_constants(const ElasticOptions& o) {
+MeasuredCrystal from_constants(const ElasticOptions& o) {
   const Config t = Config::load(*o.constants);
-  Measured m;
+  MeasuredCrystal m;
   m.source = fs::absolute(*o.constants);
   m.c.a0 = t.get_double("a0_A", Range::positive());
   m.c.c11 = t.get_double("c11_GPa", Range::positive());
@@ -79,25 +40,22 @@ Measured from_constants(const ElasticOptions& o) {
   if (t.has("cohesive_energy_eV")) m.c.cohesive_energy = t.get_double("cohesive_energy_eV");
   if (t.has("strain")) t.get_double("strain", Range::positive());
   t.check_unknown_keys();
-  if (!o.mass) throw InputError(fmt::format("bridge elastic --constants {}: give --mass (amu) for the density", m.source.string()));
-  m.mass = *o.mass;
+  if (!o.crystal.mass)
+    throw InputError(fmt::format("bridge elastic --constants {}: give --mass (amu) for the density", m.source.string()));
+  m.mass = *o.crystal.mass;
   m.details = toml::table{{"procedure", "read from the constants file"}};
   return m;
 }
 
 void run(const ElasticOptions& o, const std::vector<std::string>& command_line) {
-  if (o.potential.has_value() == o.constants.has_value())
+  if (o.crystal.potential.has_value() == o.constants.has_value())
     throw InputError("bridge elastic: give either --potential (run the MD elastic constants) or --constants (read them)");
-  const Measured m = o.potential ? from_potential(o) : from_constants(o);
+  const MeasuredCrystal m = o.crystal.potential ? measure_crystal(o.crystal, "bridge elastic") : from_constants(o);
   const double c11 = m.c.c11 * 1e9, c12 = m.c.c12 * 1e9, c44 = m.c.c44 * 1e9;
   if (!(c11 > std::abs(c12)) || !(c11 + 2.0 * c12 > 0.0) || !(c44 > 0.0))
     throw InputError(fmt::format("{}: C11 = {} GPa, C12 = {} GPa, C44 = {} GPa is not a stable cubic crystal",
                                  m.source.string(), m.c.c11, m.c.c12, m.c.c44));
-  md::LatticeSpec spec;
-  spec.style = md::parse_lattice_style(o.lattice, "--lattice");
-  spec.a0 = m.c.a0;
-  const md::Lattice lattice(spec);
-  const double density = lattice.basis_size() * m.mass * mu::amu_per_A3_to_g_per_cc / (m.c.a0 * m.c.a0 * m.c.a0) * 1e3;
+  const double density = crystal_density(o.crystal, m);
   const double heat_capacity = 3.0 * mu::boltz * mu::eV_to_J / (m.mass * mu::amu_to_kg);  // Dulong–Petit
   const materials::IsotropicModuli iso = materials::cubic_average(c11, c12, c44, o.average);
   const std::map<std::string, double> values{
@@ -109,7 +67,7 @@ void run(const ElasticOptions& o, const std::vector<std::string>& command_line) 
   inputs.push_back(toml::table{{"file", m.source.string()}, {"sha256", sha256_file_hex(m.source)}});
   entry.insert("inputs", inputs);
   toml::table fit = m.details;
-  fit.insert("lattice", o.lattice);
+  fit.insert("lattice", o.crystal.lattice);
   fit.insert("a0_A", m.c.a0);
   fit.insert("mass_amu", m.mass);
   for (const char* avg : {"voigt", "reuss", "hill"}) {
@@ -120,7 +78,7 @@ void run(const ElasticOptions& o, const std::vector<std::string>& command_line) 
   entry.insert("fit", fit);
   const std::map<std::string, std::string> notes{
       {"elasticity.note", fmt::format("zero-temperature MD constants of {} ({}, a0 = {} A); bulk and shear by the {} "
-                                      "average", m.source.filename().string(), o.lattice, m.c.a0, o.average)},
+                                      "average", m.source.filename().string(), o.crystal.lattice, m.c.a0, o.average)},
       {"elasticity.average", o.average},
       {"thermal.note", "heat_capacity = 3 k_B / m: the classical (Dulong-Petit) value of the MD crystal"}};
   materials::write_bridged_material(o.out.file, o.out.update, o.out.name, "elastic", values, notes, entry);
@@ -143,13 +101,7 @@ void add_bridge_elastic_command(CLI::App& bridge, const std::vector<std::string>
       "(0 K), c11, c12, c44, bulk, shear (--average voigt|reuss|hill) and [thermal] heat_capacity =\n"
       "3 k_B/m, with the potential's SHA-256 in [provenance.elastic].\n"
       "Example: shockfield bridge elastic --potential Cu_u3.eam --a0 3.615 -o cu_md.toml --update");
-  cmd->add_option("--potential", o->potential, "EAM potential file (then the case folder, /usr/share/lammps/potentials)");
-  cmd->add_option("--style", o->style, "Potential style")->check(CLI::IsMember({"eam", "eam/alloy", "eam/fs"}))->capture_default_str();
-  cmd->add_option("--element", o->element, "Element (eam/alloy, eam/fs)")->capture_default_str();
-  cmd->add_option("--lattice", o->lattice, "Cubic lattice")->check(CLI::IsMember({"sc", "bcc", "fcc", "diamond"}))->capture_default_str();
-  cmd->add_option("--a0", o->a0, "Starting lattice constant, A (relaxed to zero pressure)")->check(CLI::PositiveNumber);
-  cmd->add_option("--mass", o->mass, "Atomic mass, amu (default: the potential file's)")->check(CLI::PositiveNumber);
-  cmd->add_option("--repeat", o->repeat, "Periodic repeats of the cell along each axis")->check(CLI::Range(2, 20))->capture_default_str();
+  add_crystal_options(*cmd, o->crystal);
   cmd->add_option("--constants", o->constants, "TOML with a0_A, c11_GPa, c12_GPa, c44_GPa instead of running MD")
       ->check(CLI::ExistingFile);
   cmd->add_option("--average", o->average, "Isotropic average for K, G")

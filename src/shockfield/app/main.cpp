@@ -30,7 +30,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; every usage error (unknown option, missing or malformed
+    // value, a file that does not exist) is exit 2 like any other input error, not CLI11's
+    // own codes (105, 106, 109, ...).
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const shockfield::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;

@@ -59,7 +59,8 @@ void add_run_command(CLI::App& app, const std::vector<std::string>& command_line
       "docs/macroparticle.md (\"macroparticle\").");
   cmd->add_option("case", options->case_file, "Case file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->output,
-                  "Run folder (default: runs/<case file name without .toml>)");
+                  "Run folder (default: runs/<case file name without .toml>; a case.toml is named\n"
+                  "by its folder: examples/md_shock_piston/case.toml -> runs/md_shock_piston)");
   cmd->add_flag("--overwrite", options->overwrite, "Replace an existing run folder");
   cmd->add_flag("--resume", options->resume,
                 "Continue the run in the output folder from its last checkpoint");

@@ -7,9 +7,17 @@
 
 namespace shockfield {
 
+// runs/<case file name>, except that a case file called case.toml (every example's) is named
+// by its folder, so that two examples run from one place do not share runs/case.
 std::filesystem::path run_folder_path(const RunOptions& options) {
   if (options.output) return *options.output;
-  return std::filesystem::path("runs") / options.case_file.stem();
+  const std::filesystem::path& file = options.case_file;
+  std::filesystem::path name = file.stem();
+  if (name == "case") {
+    const auto folder = std::filesystem::absolute(file).lexically_normal().parent_path().filename();
+    if (!folder.empty()) name = folder;
+  }
+  return std::filesystem::path("runs") / name;
 }
 
 void prepare_run_folder(const std::filesystem::path& folder, const RunOptions& options) {

@@ -7,6 +7,7 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/units.hpp"
+#include "shockfield/materials/material_file.hpp"
 
 namespace shockfield::macroparticle {
 namespace {
@@ -24,18 +25,38 @@ const Range kExponent = {0.0, 100.0, true, false};
 const Range kParticleRadius = Range::closed(1e-9, 1.0);       // m
 const Range kAtomsPerParticle = Range::closed(1.0, 1e30);
 
-std::optional<double> optional_in(const Config& t, const char* key, const Range& range, double scale = 1.0) {
-  if (!t.has(key)) return std::nullopt;
-  return t.get_double(key, range) * scale;
+// A value of the case, else (a cohesive energy always; the crystal's size and mass only when the
+// case gives none of density, atomic_mass and lattice_constant) the material file's [atoms] value
+// written by `shockfield bridge eam-to-macroparticle`, in the case key's unit and recorded in the
+// resolved case as if given.
+std::optional<double> case_or_atoms(const Config& m, const char* key, const Range& range, double scale,
+                                    const materials::MaterialFile* file, std::string_view file_key) {
+  if (m.has(key)) return m.get_double(key, range) * scale;
+  const std::optional<double> v = file ? file->get(file_key) : std::nullopt;
+  if (!v) return std::nullopt;
+  if (!range.contains(*v / scale))
+    throw InputError(fmt::format("{}: key '{}' = {} gives {} = {}, expected {} (the case's [material] {})",
+                                 file->path().string(), file_key, *v, m.key_path(key), *v / scale, range.describe(), key));
+  return m.get_double_or(key, *v / scale, range) * scale;
 }
 
-PairLawInput read_atoms(const Config& m, const Config& pair) {
+std::optional<double> optional_in(const Config& t, const char* key, const Range& range, double scale = 1.0) {
+  return case_or_atoms(t, key, range, scale, nullptr, {});
+}
+
+PairLawInput read_atoms(const Config& m, const Config& pair, std::vector<std::string>& notes) {
+  const std::optional<materials::MaterialFile> file = materials::open_material_file(m);
+  if (file) notes = file->summary_lines();
+  const materials::MaterialFile* atoms = file ? &*file : nullptr;
   PairLawInput in;
-  in.cohesive_energy = m.get_double("cohesive_energy", kCohesiveEnergy) * units::si::eV;
+  const auto e0 = case_or_atoms(m, "cohesive_energy", kCohesiveEnergy, units::si::eV, atoms, "atoms.cohesive_energy");
+  in.cohesive_energy = e0 ? *e0 : m.get_double("cohesive_energy", kCohesiveEnergy);  // (the missing-key error)
   in.crystal = m.get_choice_or("crystal", {"fcc"}, "fcc");
+  const bool sized = m.has("density") || m.has("atomic_mass") || m.has("lattice_constant");
+  const materials::MaterialFile* sizes = sized ? nullptr : atoms;
   in.density = optional_in(m, "density", kDensity);
-  in.atomic_mass = optional_in(m, "atomic_mass", kAtomicMass, units::si::amu);
-  in.lattice_constant = optional_in(m, "lattice_constant", kLatticeConstant);
+  in.atomic_mass = case_or_atoms(m, "atomic_mass", kAtomicMass, units::si::amu, sizes, "atoms.atomic_mass");
+  in.lattice_constant = case_or_atoms(m, "lattice_constant", kLatticeConstant, 1.0, sizes, "atoms.lattice_constant");
   const int given = in.density.has_value() + in.atomic_mass.has_value() + in.lattice_constant.has_value();
   if (given != 2)
     m.fail(given < 2 ? "density" : "lattice_constant",
@@ -128,7 +149,7 @@ PlasticRoute read_plasticity(const Config& t) {
 MacroparticleCase read_macroparticle_case(const Config& root) {
   MacroparticleCase c;
   const Config pair = root.table("pair");
-  PairLawInput in = read_atoms(root.table("material"), pair);
+  PairLawInput in = read_atoms(root.table("material"), pair, c.material_notes);
   c.specimen = read_specimen(root.table("specimen"), pair, in);
   c.cutoff = pair.get_double_or("cutoff", kDefaultCutoff, {1.0, std::numbers::sqrt2, true, true});
   try {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/macroparticle/parameters.hpp"
@@ -55,6 +56,7 @@ struct MacroparticleCase {
   double dt = 0;             ///< s
   long long steps = 0;
   OutputSpec output;
+  std::vector<std::string> material_notes;  ///< the material file's path, hash and provenance, for log.txt
 };
 
 MacroparticleCase read_macroparticle_case(const Config& root);

@@ -105,6 +105,7 @@ class MacroparticleMethod final : public Method {
   void open(RunContext& run, std::optional<std::int64_t> resume_step) {
     log_ = &run.log;
     outputs_.emplace(run.folder, c_.output, resume_step);
+    for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
     log_->info("running {} steps of {} s ({:.3g} of the stable {:.4g} s); r0 = {:.6g} m, {:.6g} atoms per particle, "
                "E: eq 15 {:.6g} Pa, [001] lattice {:.6g} Pa, ν [001] lattice {:.4g}",
                c_.steps, c_.dt, c_.dt / c_.law.stable_time_step(), c_.law.stable_time_step(), c_.law.r0,

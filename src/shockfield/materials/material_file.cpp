@@ -38,13 +38,16 @@ const std::vector<MaterialKey>& material_keys() {
       {"thermal.initial_temperature", positive, "K", "initial temperature"},
       {"spall.strength", positive, "Pa", "spall strength (tensile mean stress at failure)"},
       {"spall.strain_rate", positive, "1/s", "strain rate at which the spall strength was measured"},
+      {"atoms.cohesive_energy", positive, "J", "cohesive (binding) energy per atom e0 of the relaxed crystal, > 0"},
+      {"atoms.lattice_constant", positive, "m", "zero-pressure lattice constant a0 of the atoms' cubic crystal"},
+      {"atoms.atomic_mass", positive, "kg", "mass of one atom"},
   };
   return keys;
 }
 
 namespace {
 
-constexpr const char* kSections[] = {"eos", "elasticity", "strength", "thermal", "spall"};
+constexpr const char* kSections[] = {"eos", "elasticity", "strength", "thermal", "spall", "atoms"};
 
 std::pair<std::string, std::string> split(std::string_view dotted) {
   const auto dot = dotted.find('.');
@@ -108,6 +111,7 @@ MaterialFile MaterialFile::load(const fs::path& file) {
     if (!t) continue;
     t->get_string_or("note", "");
     if (std::string_view(section) == "eos") t->get_choice_or("model", {"mie_gruneisen"}, "mie_gruneisen");
+    if (std::string_view(section) == "atoms") t->get_choice_or("crystal", {"sc", "bcc", "fcc", "diamond"}, "fcc");
     if (std::string_view(section) == "elasticity") {
       t->get_choice_or("average", {"voigt", "reuss", "hill"}, "hill");
       check_cubic(*t);

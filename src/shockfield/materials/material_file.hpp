@@ -1,6 +1,6 @@
 #pragma once
 // Material files (docs/materials.md): a TOML file with the constitutive numbers of one solid —
-// [eos], [elasticity], [strength], [thermal], [spall], each optional, SI units — and a
+// [eos], [elasticity], [strength], [thermal], [spall], [atoms], each optional, SI units — and a
 // [provenance] table saying where they came from (the `shockfield bridge` command that wrote
 // them, its input run folders and the SHA-256 of their resolved configurations, the fit and its
 // uncertainty). A solid case references one with `file = "cu_md.toml"` in its material table
