@@ -1,7 +1,9 @@
 // Peridynamics benchmark: bond-updates per second (family bonds × steps / loop time) of the PMB
 // and LPS force laws in the velocity-Verlet loop, on 1 and 2 threads, on the work of
 // bench/lammps/in.peri_bench (an n³ simple-cubic lattice, lc = 0.5 mm, δ = 3.0002·lc, displaced
-// by up to 0.2 µm, halves pulled apart at ±10 m/s, critical stretch 0.002); also the
+// by up to 0.2 µm, halves pulled apart at ±10 m/s, critical stretch 0.002), with LAMMPS's
+// short-range contact force on ("pmb", "lps": LAMMPS always applies it) and off
+// ("pmb-nocontact", "lps-nocontact"); also the
 // correspondence model with the crystal law, one grain per point ("crystal") and 8 Taylor grains
 // per point ("crystal8": grain-updates/s = 8 × point-steps/s). bench/run_pd_bench.sh runs LAMMPS
 // on the same work and prints the ratios.
@@ -46,10 +48,12 @@ double loop_seconds(Simulation& sim, int steps, double dt) {
 
 std::unique_ptr<ForceModel> make_model(const std::string& name, const PointCloud& cloud, const Family& family) {
   const CriticalStretch damage{0.0020, 0.25};
-  if (name == "pmb") return std::make_unique<PmbForce>(cloud, family, PmbModel{1.6863e22}, Influence(), damage);
-  if (name == "lps")
+  const bool contact = !name.ends_with("-nocontact");
+  if (name.starts_with("pmb"))
+    return std::make_unique<PmbForce>(cloud, family, PmbModel{1.6863e22}, Influence(), damage, contact);
+  if (name.starts_with("lps"))
     return std::make_unique<LpsForce>(cloud, family, LpsModel{14.9e9, 8.94e9}, Influence(Influence::Kind::inverse),
-                                      damage);
+                                      damage, contact);
   // Table 1 copper: one grain, [111] along x ("crystal"), or 8 random grains per point under the
   // Taylor assumption ("crystal8", eqs. 42-43).
   std::vector<Mat3> grains{materials::rotation_loading_along(Vec3(1, 1, 1))};
@@ -74,7 +78,7 @@ int main(int argc, char** argv) {
   std::printf("PD %d^3 lattice: %zu points, %zu bonds (both directions), %d steps\n", n, cloud.size(), family.bonds(),
               steps);
   std::printf("| model | threads | loop s | bond-updates/s | point-steps/s |\n|---|---|---|---|---|\n");
-  for (const std::string name : {"pmb", "lps", "crystal", "crystal8"}) {
+  for (const std::string name : {"pmb", "pmb-nocontact", "lps", "lps-nocontact", "crystal", "crystal8"}) {
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
       const bool crystal = name.starts_with("crystal");
