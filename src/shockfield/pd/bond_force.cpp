@@ -71,7 +71,8 @@ void BondForce<Model>::compute(const Kinematics& k, std::vector<Vec3>& force_den
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t si = 0; si < n; ++si) {
     const auto i = static_cast<std::size_t>(si);
-    Vec3 f = Vec3::Zero();
+    // Contact first, then the bonds, in the order LAMMPS adds them (pair_peri_*.cpp).
+    Vec3 f = contact_ ? contact_->force_density(i, y) : Vec3::Zero();
     double s0_next = std::numeric_limits<double>::lowest();
     bool any = false;
     for (int b = family_.begin(i); b < family_.end(i); ++b) {
@@ -90,7 +91,6 @@ void BondForce<Model>::compute(const Kinematics& k, std::vector<Vec3>& force_den
         any = true;
       }
     }
-    if (contact_) f += contact_->force_density(i, y);
     force_density[i] = f;
     s0_new_[i] = any ? s0_next : std::numeric_limits<double>::max();
   }

@@ -55,8 +55,8 @@ TEST(ShortRangeContact, PairForceIsLammpsFormula) {
   EXPECT_EQ(f_on[0].y(), 0.0);
 }
 
-// V_i·f_i = −∂U/∂y_i by central differences (h = 1e-6 ΔX), on a deformed block where 48 pairs
-// are in contact (12% squeezed along x, nearest neighbours inside 0.9 ΔX), for PMB and LPS. The
+// V_i·f_i = −∂U/∂y_i by central differences (h = 1e-6 ΔX), on a deformed block with pairs in
+// contact (12% squeezed along x, nearest neighbours inside 0.9 ΔX: 38 pairs), for PMB and LPS. The
 // tolerance 1e-6 of the largest force is far above the differences' truncation and round-off
 // (~1e-9 here) and far below a missing factor or term.
 template <class Model>
@@ -70,7 +70,7 @@ void check_energy_gradient() {
   const std::vector<Vec3> v(y.size(), Vec3::Zero());
   std::vector<Vec3> f;
   force->compute({y, v, 0.0}, f);
-  ASSERT_GE(force->contact()->active_pairs(y), 40u);
+  ASSERT_GE(force->contact()->active_pairs(y), 30u);
   double largest = 0.0;
   for (std::size_t i = 0; i < y.size(); ++i) largest = std::max(largest, cloud.volume[i] * f[i].norm());
   const double h = 1e-6 * kSpacing;
@@ -86,15 +86,17 @@ void check_energy_gradient() {
 TEST(ShortRangeContact, PmbForcesAreEnergyGradient) { check_energy_gradient<PmbModel>(); }
 TEST(ShortRangeContact, LpsForcesAreEnergyGradient) { check_energy_gradient<LpsModel>(); }
 
-// Two 4×4×4 blocks 2.8 ΔX apart (beyond the horizon 2.6 ΔX: no bond joins them) approach at
-// ±50 m/s. With contact they bounce: each block's mean velocity changes sign; total momentum stays
-// zero to round-off and kinetic + bond + contact energy stays within 0.5% of the initial kinetic
-// energy (velocity-Verlet at a quarter of the stable step, no bond breaks; the energy error is the
-// integrator's, a few 1e-4 of it, measured). Without contact they pass through each other.
+// Two 4×4×4 blocks 3 ΔX apart (beyond the horizon 2.6 ΔX: no bond joins them; the geometry of
+// tests/fixtures/lammps_peri/in.bounce) approach at ±50 m/s. With contact they bounce: each
+// block's mean velocity changes sign (restitution 0.89 PMB, 0.95 LPS: the rest goes into the
+// blocks' vibration); total momentum stays zero to round-off; kinetic + bond + contact energy
+// stays within 0.2% of the initial kinetic energy. That error is the integrator's: measured
+// 1.1e-2, 2.6e-3, 7.7e-4, 1.2e-4 (PMB) at 1/2, 1/4, 1/8, 1/16 of the stable step, O(Δt²); run at
+// 1/8. Without contact they pass through each other.
 template <class Model>
 void bounce() {
   const int n = 4;
-  const PointCloud cloud = two_blocks(n, 2.8);
+  const PointCloud cloud = two_blocks(n, 3.0);
   const Family family = build_family(cloud, kHorizon, VolumeCorrection::linear);
   const std::size_t half = cloud.size() / 2;
   for (std::size_t i = 0; i < half; ++i)
@@ -106,7 +108,7 @@ void bounce() {
     Simulation sim(cloud, family, std::move(owned), {kDensity});
     for (std::size_t i = 0; i < cloud.size(); ++i) sim.velocities()[i] = Vec3(i < half ? 50.0 : -50.0, 0.0, 0.0);
     sim.setup();
-    const double dt = 0.25 * sim.stable_step();
+    const double dt = 0.125 * sim.stable_step();
     const double mass = kDensity * kSpacing * kSpacing * kSpacing * static_cast<double>(half);
     const double e0 = sim.kinetic_energy() + force.potential_energy(sim.positions());
     double drift = 0.0;
@@ -124,7 +126,7 @@ void bounce() {
       block_velocity[contact][b] = sum / static_cast<double>(half);
     }
     if (contact) {
-      EXPECT_LT(drift, 5e-3 * e0) << force.name();
+      EXPECT_LT(drift, 2e-3 * e0) << force.name();
       EXPECT_GT(most_pairs, 0u);
       EXPECT_EQ(force.contact()->active_pairs(sim.positions()), 0u) << "still in contact at the end";
       std::printf("%s bounce: energy drift %.3g of the initial, up to %zu pairs in contact, block velocities %.4g "
