@@ -1,6 +1,7 @@
 #pragma once
-// Short-range contact forces as LAMMPS's PERI package applies them (pair_peri_pmb.cpp and
-// pair_peri_lps.cpp, after Silling's EMU theory manual, 12 May 2005, p. 18): any two points i, j,
+// Short-range contact forces as LAMMPS's PERI package (Parks et al. 2008) applies them
+// (pair_peri_pmb.cpp and pair_peri_lps.cpp, after Silling's EMU theory manual, 12 May 2005,
+// p. 18; docs/references.md): any two points i, j,
 // bonded or not, closer than
 //     d_ij = min(0.9·|x_j − x_i|, 1.35·ΔX)            (x: reference positions, ΔX: lattice spacing)
 // repel. The force density on i is
