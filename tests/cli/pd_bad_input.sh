@@ -3,7 +3,8 @@
 # behind (horizon smaller than the spacing, unstable fixed step, bad material values, unknown
 # keys and choices, a point with a singular shape tensor, an unknown slip system set, Euler angles
 # out of range, a zero loading direction, inverted grain sizes, a PMB critical stretch of 0, a
-# negative micromodulus, an LPS key given to PMB).
+# negative micromodulus, an LPS key given to PMB, a contact switch that is not a bool or is
+# given to J2).
 source "$(dirname "$0")/lib.bash"
 set -e
 base=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/pd_tiny.toml")
@@ -48,4 +49,8 @@ expect_error "${pmb/critical_stretch = 0.01/critical_stretch = 0.0}" "material.c
 expect_error "${pmb/micromodulus = 4e21/micromodulus = -4e21}" "material.micromodulus"
 expect_error "${pmb/critical_stretch = 0.01/critical_stretch = 0.01
 shear = 26e9}" "material.shear" "only of model = \"lps\""
+expect_error "${pmb/critical_stretch = 0.01/critical_stretch = 0.01
+contact = \"yes\"}" "material.contact"
+expect_error "${base/yield_stress = 270e6/yield_stress = 270e6
+contact = true}" "material.contact" "only of model = \"pmb\" or \"lps\""
 echo "pd_bad_input: all cases rejected cleanly"

@@ -51,4 +51,13 @@ bulk = 70e9
 shear = 26e9
 critical_stretch = 0.002}" > "$WORK/lps.toml"
 stop_and_resume lps 120 1
-echo "pd_run: run folder, derived values and bitwise resume (J2; PMB and LPS after bonds broke)"
+# The issue-17 block, PMB and LPS with short-range contact acting (from about step 150): stopped at
+# step 250 and resumed, bitwise (the contact force has no state; its candidate list is rebuilt).
+cp "$ROOT/tests/cli/cases/pd_block_contact.toml" "$WORK/block_pmb.toml"
+stop_and_resume block_pmb 250 1
+block=$(cat "$ROOT/tests/cli/cases/pd_block_contact.toml")
+block="${block/model = \"pmb\"/model = \"lps\"}"
+echo "${block/micromodulus = 2.989065910664636e22/bulk = 14.9e9
+shear = 8.94e9}" > "$WORK/block_lps.toml"
+stop_and_resume block_lps 250 1
+echo "pd_run: run folder, derived values and bitwise resume (J2; PMB and LPS after bonds broke; the block with contact)"

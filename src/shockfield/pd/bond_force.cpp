@@ -14,8 +14,9 @@ constexpr double kNearZero = 2.2204e-16;  // extensions below this are zero (as 
 
 template <class Model>
 BondForce<Model>::BondForce(const PointCloud& cloud, const Family& family, Model model, Influence influence,
-                            CriticalStretch damage)
+                            CriticalStretch damage, bool contact)
     : cloud_(cloud), family_(family), model_(model), damage_law_(damage) {
+  if (contact) contact_.emplace(cloud, model.contact_micromodulus(family.horizon), family.horizon);
   const std::size_t n = cloud.size();
   omega_.resize(family.bonds());
   weighted_volume_.assign(n, 0.0);
@@ -64,12 +65,14 @@ template <class Model>
 void BondForce<Model>::compute(const Kinematics& k, std::vector<Vec3>& force_density) {
   const auto& y = k.y;
   if constexpr (Model::uses_dilatation) compute_dilatation(y);
+  if (contact_) contact_->update(y);
   const auto n = static_cast<std::ptrdiff_t>(cloud_.size());
   force_density.resize(cloud_.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t si = 0; si < n; ++si) {
     const auto i = static_cast<std::size_t>(si);
-    Vec3 f = Vec3::Zero();
+    // Contact first, then the bonds, in the order LAMMPS adds them (pair_peri_*.cpp).
+    Vec3 f = contact_ ? contact_->force_density(i, y) : Vec3::Zero();
     double s0_next = std::numeric_limits<double>::lowest();
     bool any = false;
     for (int b = family_.begin(i); b < family_.end(i); ++b) {
@@ -128,6 +131,30 @@ std::vector<double> BondForce<Model>::damage() const {
     phi[i] = all > 0.0 ? broken / all : 0.0;
   }
   return phi;
+}
+
+template <class Model>
+std::vector<double> BondForce<Model>::energy_density(const std::vector<Vec3>& y) {
+  compute_dilatation(y);
+  std::vector<double> w(cloud_.size(), 0.0);
+  for (std::size_t i = 0; i < cloud_.size(); ++i) {
+    w[i] = model_.point_energy(theta_[i]);
+    for (int b = family_.begin(i); b < family_.end(i); ++b) {
+      if (!intact_[b]) continue;
+      const int j = family_.neighbor[b];
+      const double e = (y[j] - y[i]).norm() - family_.length[b];
+      w[i] += model_.bond_energy(terms(i, b, e)) * cloud_.volume[j] * family_.volume_scale[b];
+    }
+  }
+  return w;
+}
+
+template <class Model>
+double BondForce<Model>::potential_energy(const std::vector<Vec3>& y) {
+  const std::vector<double> w = energy_density(y);
+  double u = 0.0;
+  for (std::size_t i = 0; i < cloud_.size(); ++i) u += cloud_.volume[i] * w[i];
+  return contact_ ? u + contact_->energy(y) : u;
 }
 
 template <class Model>

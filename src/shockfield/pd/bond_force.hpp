@@ -2,12 +2,15 @@
 // The bond loop for ordinary force laws (bond_models.hpp), written once and instantiated for PMB
 // and LPS. Each point walks its own CSR family (every bond is stored from both ends, as in
 // LAMMPS's fix PERI_NEIGH), so a thread writes only its own points: no atomics and results that
-// do not depend on the thread count.
+// do not depend on the thread count. With `contact` the short-range contact force of LAMMPS's
+// PERI package (contact.hpp) is added to every point's bond force.
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "shockfield/pd/bond_models.hpp"
+#include "shockfield/pd/contact.hpp"
 #include "shockfield/pd/family.hpp"
 #include "shockfield/pd/force_model.hpp"
 #include "shockfield/pd/influence.hpp"
@@ -17,8 +20,10 @@ namespace shockfield::pd {
 template <class Model>
 class BondForce final : public ForceModel {
  public:
+  /// `contact`: add the short-range contact force of LAMMPS's PERI package (contact.hpp) with the
+  /// model's contact_micromodulus.
   BondForce(const PointCloud& cloud, const Family& family, Model model, Influence influence,
-            CriticalStretch damage);
+            CriticalStretch damage, bool contact = false);
 
   void compute(const Kinematics& k, std::vector<Vec3>& force_density) override;
   double stable_step(const std::vector<double>& density) const override;
@@ -28,6 +33,14 @@ class BondForce final : public ForceModel {
   const std::vector<double>& weighted_volume() const { return weighted_volume_; }
   const std::vector<double>& dilatation() const { return theta_; }
   std::size_t intact_bonds() const;
+  /// Elastic energy of the intact bonds plus the contact energy at positions y [J, per unit of the
+  /// missing dimensions]: PMB Σ_i V_i Σ_j ¼·c·s²·r0·V_j·β; LPS Σ_i V_i [κ_d θ_i²/2 + Σ_j B_d ω
+  /// (e − θ_i r0/d)² V_j β/(2m_i)] (bond_models.hpp). The dilatations are those of y.
+  double potential_energy(const std::vector<Vec3>& y);
+  /// The bonds' strain energy density W_i of every point at y [J/m^dim] (no contact).
+  std::vector<double> energy_density(const std::vector<Vec3>& y);
+  /// The contact force, if on.
+  ShortRangeContact* contact() { return contact_ ? &*contact_ : nullptr; }
 
   /// The damage state for checkpoints: the intact flag of every bond (1/0) then every point's
   /// critical stretch s0 of the next step. The dilatations are recomputed from the positions at
@@ -49,6 +62,7 @@ class BondForce final : public ForceModel {
   std::vector<double> theta_;
   std::vector<unsigned char> intact_;    // per bond
   std::vector<double> s0_, s0_new_;
+  std::optional<ShortRangeContact> contact_;
 };
 
 using PmbForce = BondForce<PmbModel>;

@@ -14,6 +14,7 @@
 // s0 from the previous step; then s0_i = s00 − α·min_j s over i's intact bonds (max of
 // s00 − α·s). s0 starts infinite and becomes s00 at the setup force evaluation.
 #include <cmath>
+#include <numbers>
 
 namespace shockfield::pd {
 
@@ -34,6 +35,12 @@ struct PmbModel {
   double force(const BondTerms& b) const { return micromodulus * b.e / b.r0; }
   /// ∂t/∂e of the bond alone (for the stable step).
   double stiffness(const BondTerms& b) const { return micromodulus / b.r0; }
+  /// Energy density at i: ¼·c·s²·r0 per unit neighbour volume from each bond (half the pair
+  /// micropotential ½·c·s²·r0, whose derivative in |Y| is t), nothing from the point.
+  double bond_energy(const BondTerms& b) const { return 0.25 * micromodulus * b.e * b.e / b.r0; }
+  double point_energy(double /*theta*/) const { return 0.0; }
+  /// c of the short-range contact force 15c (contact.hpp): LAMMPS peri/pmb uses the bond's own.
+  double contact_micromodulus(double /*horizon*/) const { return micromodulus; }
 };
 
 // LPS in d = 1, 2, 3 dimensions, one construction: W = (κ_d/2)θ² + (α_d/2) Σ ω (e^d)² V β with
@@ -69,6 +76,26 @@ struct LpsModel {
            deviatoric_modulus() * (b.omega / b.m_i + b.omega / b.m_j) * b.e;
   }
   double stiffness(const BondTerms& b) const { return deviatoric_modulus() * (b.omega / b.m_i + b.omega / b.m_j); }
+  /// W_i = (κ_d/2)θ_i² + Σ_j (B_d/(2m_i)) ω (e − θ_i x/d)² V_j β: the bond part per unit neighbour
+  /// volume, then the point part (κ_d = (A + B_d/d)/d).
+  double bond_energy(const BondTerms& b) const {
+    const double ed = b.e - b.theta_i * b.r0 / dim;
+    return 0.5 * deviatoric_modulus() * b.omega * ed * ed / b.m_i;
+  }
+  double point_energy(double theta) const {
+    const double kappa = (dilatation_modulus() + deviatoric_modulus() / dim) / dim;
+    return 0.5 * kappa * theta * theta;
+  }
+  /// c of the short-range contact force 15c (contact.hpp). LAMMPS peri/lps: the PMB micromodulus
+  /// of the same bulk modulus, 18K/(πδ⁴) (Silling & Askari 2005), i.e. the bond-based body whose
+  /// longitudinal modulus is M = c·πδ⁴/10 = 9K/5. In 1D and 2D (not in LAMMPS) the micromodulus
+  /// with the same M = 9K/5: M = c·πδ³/8 (2D), c·δ²/2 (1D), so 14.4K/(πδ³) and 3.6K/δ².
+  double contact_micromodulus(double horizon) const {
+    const double d = horizon;
+    if (dim == 3) return 18.0 * bulk / (std::numbers::pi * d * d * d * d);
+    if (dim == 2) return 14.4 * bulk / (std::numbers::pi * d * d * d);
+    return 3.6 * bulk / (d * d);
+  }
   /// Coefficient of the dilatation coupling (for the stable step).
   double dilatation_coupling() const { return std::abs(dilatation_modulus()); }
 };

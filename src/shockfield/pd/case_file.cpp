@@ -50,16 +50,18 @@ const std::vector<ModelKey>& model_keys() {
       {"young", {"j2"}},         {"poisson", {"j2"}},     {"yield_stress", {"j2"}},
       {"hardening", {"j2"}},     {"hugoniot_slope", {"j2", "crystal"}},
       {"micromodulus", {"pmb"}}, {"bulk", {"lps"}},       {"shear", {"lps"}},
-      {"critical_stretch", {"pmb", "lps"}},               {"alpha", {"pmb", "lps"}}};
+      {"critical_stretch", {"pmb", "lps"}},               {"alpha", {"pmb", "lps"}},
+      {"contact", {"pmb", "lps"}}};
   return keys;
 }
 
-// Density and critical-stretch damage of a bond model (LAMMPS s00 and α).
+// Density, critical-stretch damage (LAMMPS s00 and α) and short-range contact of a bond model.
 template <class Law>
 BondSpec<Law> read_bond(const Config& t, double density, Law law) {
   BondSpec<Law> s{law, density, {}};
   s.damage.s00 = t.get_double("critical_stretch", Range::positive());
   s.damage.alpha = t.get_double_or("alpha", 0.25, Range::non_negative());
+  s.contact = t.get_bool_or("contact", true);
   return s;
 }
 

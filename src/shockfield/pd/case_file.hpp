@@ -46,6 +46,7 @@ struct BondSpec {
   Law law;
   double density = 0.0;  ///< [kg/m^3]
   CriticalStretch damage;
+  bool contact = true;   ///< the short-range contact force of LAMMPS's PERI package (contact.hpp)
 };
 using PmbSpec = BondSpec<PmbModel>;
 using LpsSpec = BondSpec<LpsModel>;

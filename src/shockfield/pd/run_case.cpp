@@ -117,11 +117,12 @@ ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const
 }
 
 // PMB or LPS: no stress nor plastic measure (NaN columns), damage only; the checkpoint keeps the
-// bonds' intact flags and the points' critical stretches (BondForce::saved_state).
+// bonds' intact flags and the points' critical stretches (BondForce::saved_state); the contact
+// force has no state (contact.hpp).
 template <class Law>
 ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, const PointCloud& cloud,
                     const Family& family) {
-  auto model = std::make_unique<BondForce<Law>>(cloud, family, spec.law, c.body.influence, spec.damage);
+  auto model = std::make_unique<BondForce<Law>>(cloud, family, spec.law, c.body.influence, spec.damage, spec.contact);
   BondForce<Law>& force = *model;
   ModelRun run{nullptr,
                spec.density,
