@@ -6,8 +6,9 @@
 source "$(dirname "$0")/lib.bash"
 set -e
 base=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/tiny_cu.toml")
-msst=${base/name = \"run\"/name = \"shock\"
-ensemble = \"msst\"
+shock=${base/name = \"run\"/name = \"shock\"
+ensemble = \"msst\"}
+msst=${shock/steps = 200/steps = 200
 [stage.msst]
 shock_speed = 60.0
 q = 500.0
@@ -19,16 +20,15 @@ expect_error "${msst/shock_speed = 60.0/speed = 60.0}" "stage[1].msst.shock_spee
 expect_error "${msst/mu = 500.0/mu = 500.0
 tscale = 1.0}" "stage[1].msst.tscale"
 expect_error "${msst/q = 500.0/q = -1.0}" "stage[1].msst.q"
-expect_error "${msst/[stage.msst]/[stage.msst]
+expect_error "${msst/shock_speed = 60.0/shock_speed = 60.0
 direction = \"z\"}" "direction"
-expect_error "${base/name = \"run\"/name = \"run\"
+expect_error "${base/steps = 200/steps = 200
 [stage.msst]
 shock_speed = 60.0}" "stage[1].msst" "only with ensemble = \"msst\""
-expect_error "${msst/name = \"shock\"/name = \"shock\"
+expect_error "${msst/steps = 200/steps = 200
 [stage.piston]
 speed = 10.0}" "stage[1].ensemble" "cannot have a piston"
-expect_error "${base/name = \"run\"/name = \"run\"
-ensemble = \"msst\"}" "stage[1].msst" "shock_speed"
+expect_error "$shock" "stage[1].msst" "shock_speed"
 
 run_expecting 0 "$msst"
 grep -q "ensemble msst" "$WORK/out/log.txt" || fail "no msst stage in the log"

@@ -93,7 +93,8 @@ StageSpec read_stage(const Config& t, std::size_t index) {
     s.deform_rate = Vec3(r[0], r[1], r[2]);
   }
   if ((s.ensemble == "minimize" || s.ensemble == "msst") && (s.piston || s.deform_rate))
-    t.fail("ensemble", fmt::format("a {} stage cannot have a piston or deform_rate", s.ensemble));
+    t.fail("ensemble", fmt::format("{} stage cannot have a piston or deform_rate",
+                                   s.ensemble == "msst" ? "an msst" : "a minimisation"));
   return s;
 }
 

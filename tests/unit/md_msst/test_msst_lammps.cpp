@@ -12,11 +12,18 @@ using namespace shockfield::md::msst_test;
 
 TEST(MsstLammps, FollowsLammpsFixMsstOver2000Steps) {
   const std::vector<Row> ours = run_msst("cu_512", settings(1000.0, 1000.0, 2000), 10);
-  // Tolerance: 100x LAMMPS's own 1-vs-2-rank spread (our sums run in other orders than both of
-  // its runs: thermo, virial, EAM densities), at least 1e-12 of the quantity's largest magnitude.
-  expect_follows_lammps(ours, "cu_512", 100.0, 1e-12);
+  // Tolerance: 10x LAMMPS's own 1-vs-2-rank spread (our sums run in other orders than both of
+  // its runs: thermo, virial, EAM densities; measured: 0.6-2.3x), at least 1e-12 of the
+  // quantity's largest magnitude.
+  expect_follows_lammps(ours, "cu_512", 10.0, 1e-12);
   // The reference state and the compression actually happened (a broken drive would stay near V0).
   const auto ref = read_thermo("cu_512.thermo");
   EXPECT_LT(ref.back()[kVol] / ref.front()[kVol], 0.8);
   EXPECT_NEAR(ours.back()[kLgrVel], ref.back()[kLgrVel], 1e-9);
+  // The conserved quantity drifts as LAMMPS's does on this run (-0.040 eV, 8e-5 eV/atom, the
+  // time-step error of the violent compression): the same to round-off, so never more.
+  const double drift_ours = ours.back()[kEconserve] - ours.front()[kEconserve];
+  const double drift_lammps = ref.back()[kEconserve] - ref.front()[kEconserve];
+  std::printf("conserved-quantity drift over 2000 steps: ours %.6e eV, LAMMPS %.6e eV\n", drift_ours, drift_lammps);
+  EXPECT_LE(std::fabs(drift_ours), std::fabs(drift_lammps) + 1e-8);
 }
