@@ -1,5 +1,6 @@
 #include "shockfield/md/fixes/msst.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "shockfield/core/units.hpp"
@@ -37,13 +38,19 @@ double linear_ode_step(double x, double a, double b, double h) {
 }
 
 // v' = C + D v over h from v (eq. 2 with C = f/m): exact when |D·h| > 1e-6, else second order.
-double velocity_ode_step(double v, double c, double d, double h) {
-  if (std::fabs(h * d) > 1.0e-6) {
-    const double e = std::exp(d * h);
-    return e * (c + d * v - c / e) / d;
+// D depends on the atom only through its mass, so e^{Dh} is computed once per type and component.
+struct VelocityStep {
+  double d = 0, e = 1;  ///< D and e^{Dh}
+  bool exact = false;   ///< |D·h| > 1e-6
+  VelocityStep() = default;
+  VelocityStep(double d_, double h) : d(d_), exact(std::fabs(h * d_) > 1.0e-6) {
+    if (exact) e = std::exp(d * h);
   }
-  return v + (c + d * v) * h + 0.5 * (d * d * v + c * d) * h * h;
-}
+  double operator()(double v, double c, double h) const {
+    if (exact) return e * (c + d * v - c / e) / d;
+    return v + (c + d * v) * h + 0.5 * (d * d * v + c * d) * h * h;
+  }
+};
 
 }  // namespace
 
@@ -97,16 +104,19 @@ void FixMsst::velocity_half_step(Simulation& sim, double vsum) const {
   const int ax = settings_.axis;
   const double viscous = settings_.mu * omega_ * omega_;  // numerator of eq. (2)'s first term
   const double strain = 2.0 * omega_ / vol;
+  std::vector<std::array<VelocityStep, 3>> steps(a.mass.size());
+  for (std::size_t t = 0; t < a.mass.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      double d = viscous / (vsum * a.mass[t] * vol);
+      if (k == ax) d -= strain;
+      steps[t][k] = VelocityStep(d, h);
+    }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < a.nlocal; ++i) {
     if (!(a.mask[i] & group_bit_)) continue;
     const double mass = a.mass_of(i);
-    for (int k = 0; k < 3; ++k) {
-      const double c = a.f[i][k] * ftm2v / mass;
-      double d = viscous / (vsum * mass * vol);
-      if (k == ax) d -= strain;
-      a.v[i][k] = velocity_ode_step(a.v[i][k], c, d, h);
-    }
+    const auto& step = steps[static_cast<std::size_t>(a.type[i])];
+    for (int k = 0; k < 3; ++k) a.v[i][k] = step[k](a.v[i][k], a.f[i][k] * ftm2v / mass, h);
   }
 }
 
