@@ -24,10 +24,28 @@ namespace {
 // the bound keeps the step counters and their sum far from overflowing.
 constexpr double kMaxTotalSteps = 1e12;
 
+// [stage.msst] (LAMMPS `fix msst dir shockvel q mu p0 v0 e0 tscale`; docs/md.md).
+MsstSettings read_msst(const Config& stage, long long steps) {
+  const auto table = stage.optional_table("msst");
+  if (!table) stage.fail("msst", "a [stage.msst] table with at least shock_speed (A/ps) for ensemble = \"msst\"");
+  const Config& m = *table;
+  MsstSettings s;
+  s.axis = read_axis(m, "axis", "z");
+  s.shock_speed = m.get_double("shock_speed", Range::positive());
+  s.q = m.get_double_or("q", 10.0, Range::positive());
+  s.mu = m.get_double_or("mu", 0.0, Range::non_negative());
+  if (m.has("p0")) s.p0 = m.get_double("p0", Range::closed(-1e7, 1e8));
+  if (m.has("v0")) s.v0 = m.get_double("v0", Range::positive());
+  if (m.has("e0")) s.e0 = m.get_double("e0");
+  s.tscale = m.get_double_or("tscale", 0.01, Range{0.0, 1.0, false, true});
+  s.stage_steps = steps;
+  return s;
+}
+
 StageSpec read_stage(const Config& t, std::size_t index) {
   StageSpec s;
   s.name = t.get_string_or("name", fmt::format("stage{}", index + 1));
-  s.ensemble = t.get_choice_or("ensemble", {"nve", "langevin", "nvt", "npt", "minimize"}, "nve");
+  s.ensemble = t.get_choice_or("ensemble", {"nve", "langevin", "nvt", "npt", "msst", "minimize"}, "nve");
   s.steps = s.ensemble == "minimize" ? 0 : t.get_int("steps", Range::closed(0, kMaxTotalSteps));
   s.group = t.get_string_or("group", "all");
   if (s.ensemble == "langevin" || s.ensemble == "nvt" || s.ensemble == "npt") {
@@ -47,6 +65,8 @@ StageSpec read_stage(const Config& t, std::size_t index) {
       }
     }
   }
+  if (s.ensemble == "msst") s.msst = read_msst(t, s.steps);
+  else if (t.has("msst")) t.fail("msst", "a [stage.msst] table only with ensemble = \"msst\"");
   if (s.ensemble == "minimize") {
     MinimizeSettings& m = s.minimize;
     m.force_tolerance = t.get_double_or("force_tolerance", 1e-6, Range::positive());
@@ -72,8 +92,9 @@ StageSpec read_stage(const Config& t, std::size_t index) {
     const auto r = t.get_doubles("deform_rate", 3, Range::closed(-10, 10));
     s.deform_rate = Vec3(r[0], r[1], r[2]);
   }
-  if (s.ensemble == "minimize" && (s.piston || s.deform_rate))
-    t.fail("ensemble", "a minimisation stage cannot have a piston or deform_rate");
+  if ((s.ensemble == "minimize" || s.ensemble == "msst") && (s.piston || s.deform_rate))
+    t.fail("ensemble", fmt::format("{} stage cannot have a piston or deform_rate",
+                                   s.ensemble == "msst" ? "an msst" : "a minimisation"));
   return s;
 }
 
@@ -126,6 +147,7 @@ MdCase read_md_case(const Config& root) {
   long long total = 0;
   for (std::size_t k = 0; k < stages.size(); ++k) {
     c.stages.push_back(read_stage(stages[k], k));
+    if (c.stages.back().ensemble == "msst" && !c.output.msst_axis) c.output.msst_axis = c.stages.back().msst.axis;
     total += c.stages.back().steps;  // each <= 10^12: no overflow before the check below
     if (total > kMaxTotalSteps)
       stages[k].fail("steps", fmt::format("the stages up to this one add up to {} steps; expected at "

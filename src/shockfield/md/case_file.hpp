@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shockfield/core/config.hpp"
+#include "shockfield/md/fixes/msst.hpp"
 #include "shockfield/md/minimize.hpp"
 
 namespace shockfield::md {
@@ -21,7 +22,7 @@ struct PistonSpec {
 struct StageSpec {
   std::string name;
   long long steps = 0;
-  std::string ensemble = "nve";    ///< nve | langevin | nvt | npt | minimize
+  std::string ensemble = "nve";    ///< nve | langevin | nvt | npt | msst | minimize
   std::string group = "all";
   double temperature = 0;          ///< K (langevin, nvt, npt)
   double damping = 0.1;            ///< ps (langevin, nvt, npt)
@@ -33,6 +34,7 @@ struct StageSpec {
   std::optional<PistonSpec> piston;
   std::optional<Vec3> deform_rate; ///< 1/ps per dimension
   MinimizeSettings minimize;
+  MsstSettings msst;               ///< ensemble = "msst": the [stage.msst] table
 };
 
 struct VelocityAdd {
@@ -50,6 +52,9 @@ struct OutputSpec {
   long long profile_every = 0;
   int profile_axis = 2;
   double profile_bin_width = 5.0;  ///< Å
+  /// Not a key: the shock axis of the first msst stage, when the case has one (the thermo table
+  /// and thermo.csv then carry the MSST columns).
+  std::optional<int> msst_axis;
 };
 
 struct MdCase {

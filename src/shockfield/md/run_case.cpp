@@ -18,8 +18,10 @@
 #include "shockfield/md/fixes/langevin.hpp"
 #include "shockfield/md/fixes/nose_hoover.hpp"
 #include "shockfield/md/fixes/nose_hoover_npt.hpp"
+#include "shockfield/md/fixes/msst.hpp"
 #include "shockfield/md/fixes/piston.hpp"
 #include "shockfield/md/minimize.hpp"
+#include "shockfield/md/msst_report.hpp"
 #include "shockfield/md/potentials/registry.hpp"
 #include "shockfield/md/run_output.hpp"
 #include "shockfield/md/system_builder.hpp"
@@ -66,6 +68,10 @@ Prepared prepare(const Config& root, const RunOptions& options) {
       stages[k].fail("group", e.what());
     }
     StageSpec& s = p.md.stages[k];
+    if (s.ensemble == "msst")  // LAMMPS: "Fix msst requires a periodic box"
+      for (int d = 0; d < 3; ++d)
+        if (!p.system.box.periodic(d))
+          stages[k].fail("ensemble", fmt::format("msst needs a box periodic in x, y and z; {} is not periodic", "xyz"[d]));
     if (s.ensemble != "npt") continue;
     const geometry::Box& box = p.system.box;
     const char* key = s.pressure_dims ? "pressure_dims" : "ensemble";
@@ -100,6 +106,7 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   else if (s.ensemble == "npt")
     sim.fixes.push_back(std::make_unique<FixNoseHooverNpt>(
         NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims, s.couple_iso, s.chain}, group));
+  else if (s.ensemble == "msst") sim.fixes.push_back(std::make_unique<FixMsst>(s.msst, group));
   else sim.fixes.push_back(std::make_unique<FixNve>(group));
   if (s.piston) {
     const PistonSpec& p = *s.piston;
@@ -211,13 +218,18 @@ class MdMethod final : public Method {
     run_->log.info("finished: {} steps; final configuration in {}", sim_->step, (run_->folder / "final.data").string());
   }
 
+  // A case with an msst stage adds the MSST columns (msst_report.hpp).
   std::vector<std::string> thermo_columns() const override {
-    return {"Step", "Time", "Temp", "PotEng", "KinEng", "TotEng", "Press"};
+    std::vector<std::string> c{"Step", "Time", "Temp", "PotEng", "KinEng", "TotEng", "Press"};
+    if (p_.md.output.msst_axis) for (auto& name : msst_thermo_columns()) c.push_back(name);
+    return c;
   }
   std::vector<double> thermo_values() const override {
     const ThermoState t = sim_->thermo();
-    return {static_cast<double>(sim_->step), sim_->time, t.temperature, t.potential, t.kinetic,
-            t.potential + t.kinetic, t.pressure};
+    std::vector<double> v{static_cast<double>(sim_->step), sim_->time, t.temperature, t.potential, t.kinetic,
+                          t.potential + t.kinetic, t.pressure};
+    if (p_.md.output.msst_axis) for (double x : msst_thermo_values(*sim_, *p_.md.output.msst_axis)) v.push_back(x);
+    return v;
   }
   std::int64_t thermo_every() const override { return p_.md.output.thermo_every; }
   bool writes_thermo_csv() const override { return true; }
@@ -246,9 +258,12 @@ class MdMethod final : public Method {
                         .set("initial_density_g_cc", h.density0)
                         .set("temperature_K", h.temperature)
                         .set("note", h.note));
+    Json msst = Json::array();
+    for (const auto& r : msst_) msst.push(msst_json(r));
     const ThermoState t = sim_->thermo();
     return Json::object()
         .set("hugoniot", std::move(hugoniot))
+        .set("msst", std::move(msst))
         .set("final", Json::object()
                           .set("temperature_K", t.temperature)
                           .set("potential_energy_eV", t.potential)
@@ -321,6 +336,10 @@ class MdMethod final : public Method {
     output_->write(*sim_, true);
     if (auto h = report_hugoniot(*sim_, *output_, p_.md.output, stage, run_->folder, run_->log))
       hugoniot_.emplace_back(stage.name, *h);
+    if (const FixMsst* msst = find_msst(*sim_)) {
+      msst_.push_back(make_msst_report(*sim_, *msst, stage.name));
+      run_->log.info("{}", msst_log_line(msst_.back()));
+    }
     started_ = false;
     ++k_;
     done_ = 0;
@@ -333,6 +352,7 @@ class MdMethod final : public Method {
   std::optional<RunOutput> output_;
   std::function<bool(std::int64_t)> want_per_atom_;
   std::vector<std::pair<std::string, HugoniotState>> hugoniot_;  ///< stages ended in this session
+  std::vector<MsstReport> msst_;                                 ///< msst stages ended in this session
   RunContext* run_ = nullptr;
   std::size_t k_ = 0;           ///< current stage
   std::int64_t done_ = 0;       ///< steps done in it

@@ -8,6 +8,7 @@
 #include "shockfield/io/extxyz.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 #include "shockfield/md/diagnostics/profiles.hpp"
+#include "shockfield/md/msst_report.hpp"
 
 namespace shockfield::md {
 
@@ -21,6 +22,15 @@ const std::vector<std::string> kThermoColumns{
     "step", "time_ps", "temperature_K", "pe_eV", "ke_eV", "etotal_eV", "econserved_eV",
     "press_bar", "pxx_bar", "pyy_bar", "pzz_bar", "pxy_bar", "pxz_bar", "pyz_bar",
     "volume_A3", "lx_A", "ly_A", "lz_A", "neighbor_rebuilds"};
+// With an msst stage in the case (nan in the rows of other stages): LAMMPS f_msst and f_msst[1..4].
+const std::vector<std::string> kMsstColumns{"msst_energy_eV", "msst_dhugoniot_K", "msst_drayleigh_bar",
+                                            "msst_lagrangian_speed_A_ps", "msst_lagrangian_position_A"};
+
+std::vector<std::string> thermo_columns(const OutputSpec& spec) {
+  std::vector<std::string> c = kThermoColumns;
+  if (spec.msst_axis) c.insert(c.end(), kMsstColumns.begin(), kMsstColumns.end());
+  return c;
+}
 
 std::int64_t frame_step(const fs::path& file) {
   const std::string stem = file.stem().string();  // dump.<step>
@@ -63,7 +73,7 @@ RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::option
     keep_value = static_cast<double>(*resume_step);
     keep = &keep_value;
   }
-  thermo_ = io::CsvWriter(folder / "thermo.csv", kThermoColumns, keep);
+  thermo_ = io::CsvWriter(folder / "thermo.csv", thermo_columns(spec), keep);
   if (spec.profile_every > 0) profiles_ = io::CsvWriter(profiles_file_, profile_columns(), keep);
   if (spec.dump_every > 0) {
     fs::create_directories(folder / "dumps");
@@ -102,10 +112,16 @@ void RunOutput::write_thermo(const Simulation& sim) {
   double added = 0;
   for (const auto& fix : sim.fixes) added += fix->energy_added();
   const Vec3 l = sim.box.length();
-  thermo_.row({static_cast<double>(sim.step), sim.time, t.temperature, t.potential, t.kinetic,
-               t.potential + t.kinetic, t.potential + t.kinetic - added, t.pressure, t.pressure_tensor[0],
-               t.pressure_tensor[1], t.pressure_tensor[2], t.pressure_tensor[3], t.pressure_tensor[4],
-               t.pressure_tensor[5], t.volume, l.x(), l.y(), l.z(), static_cast<double>(sim.rebuilds)});
+  std::vector<double> row{static_cast<double>(sim.step), sim.time, t.temperature, t.potential, t.kinetic,
+                          t.potential + t.kinetic, t.potential + t.kinetic - added, t.pressure, t.pressure_tensor[0],
+                          t.pressure_tensor[1], t.pressure_tensor[2], t.pressure_tensor[3], t.pressure_tensor[4],
+                          t.pressure_tensor[5], t.volume, l.x(), l.y(), l.z(), static_cast<double>(sim.rebuilds)};
+  if (spec_.msst_axis) {
+    const FixMsst* msst = find_msst(sim);
+    const MsstQuantities q = msst ? msst->quantities(sim) : MsstQuantities{NAN, NAN, NAN, NAN, NAN, NAN, NAN};
+    row.insert(row.end(), {q.energy, q.dhugoniot, q.drayleigh, q.lagrangian_speed, q.lagrangian_position});
+  }
+  thermo_.row(row);
 }
 
 void RunOutput::write_dump(const Simulation& sim) const {
