@@ -16,7 +16,7 @@ namespace shockfield::materials {
 
 struct ArtificialViscosity {
   double quadratic = 2.0;  ///< C_Q [-]
-  double linear = 0.3;    ///< C_L [-]
+  double linear = 1.0;    ///< C_L [-]
 
   void validate(const std::string& where) const;
   /// The evaluation function: q [Pa] for density ρ, sound speed c, velocity divergence div_v
