@@ -65,16 +65,20 @@ TEST(DeviatorBehindShock, UniformGimpLosesTheDeviator) {
   record("deviator", r.deviator);
 }
 
-// The aluminium bar of ElasticPlasticBar.TwoWaveStructure (300 m/s, u_p = 150 m/s, 2.27 GPa), 300
-// cells, C_L = 0.06 as there: the plateau was 1 % low; now within 0.3 %, the deviator near yield.
+// The aluminium of ElasticPlasticBar.TwoWaveStructure (300 m/s, u_p = 150 m/s, 2.27 GPa), 300 cells:
+// with the default C_L the plateau is within 0.3 % and s_yy at yield within 5 %. With the C_L = 0.06
+// TwoWaveStructure needs (its HEL plateau) the plateau was 1 % low before the fix and is within
+// 0.3 % now, with s_yy at 0.89 of yield (the ringing C_L = 0.06 leaves; see the slow study).
 TEST(DeviatorBehindShock, AluminiumBarPlateau) {
   const auto al = plastic_bar::aluminium();
-  const auto r = plastic_bar::run(al, 300.0, 1e-3, 300, 0.06);
-  EXPECT_NEAR(r.reference, 2.269e9, 0.002e9);
-  EXPECT_NEAR(r.plateau, r.reference, 0.003 * r.reference);
-  EXPECT_GT(r.deviator, 0.85);
-  record("plateau_error", r.plateau / r.reference - 1.0);
-  record("deviator", r.deviator);
+  EXPECT_NEAR(al.plateau(150.0), 2.269e9, 0.002e9);
+  for (double c_l : {materials::ArtificialViscosity{}.linear, 0.06}) {
+    const auto r = plastic_bar::run(al, 300.0, 1e-3, 300, c_l);
+    EXPECT_NEAR(r.plateau, r.reference, 0.003 * r.reference) << c_l;
+    EXPECT_GT(r.deviator, c_l > 0.5 ? 0.95 : 0.85) << c_l;
+    record("plateau_error_CL" + std::to_string(c_l), r.plateau / r.reference - 1.0);
+    record("deviator_CL" + std::to_string(c_l), r.deviator);
+  }
 }
 
 // Library copper (Mie-Grüneisen c0 = 3940 m/s, λ = 1.489; G = 47.7 GPa, σ_Y = 120 MPa + 470 MPa·ε̄p)
