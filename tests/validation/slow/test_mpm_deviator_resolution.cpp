@@ -6,8 +6,8 @@
 // particle-steps), default C_L = 1. At every resolution the plastic plateau −σ_yy is within 0.3 %
 // of the two-wave value (issue 16) and the mean s_yy of the window is at least 0.85 (copper-like;
 // measured 0.92 / 0.88 / 0.91 / 0.93) or 0.95 (aluminium, Y/G four times larger; measured
-// 0.99–1.00; plateau +0.04 / +0.03 / 0.00 / 0.00 %) of −(2/3)Y; the plateau error of the finest grid is at most that of the coarsest plus
-// 0.02 % (measured −0.07 / −0.04 / −0.02 / −0.02 % for copper). With C_L = 0.06 (the value
+// 0.99–1.00; plateau +0.04 / +0.03 / 0.00 / 0.00 %) of −(2/3)Y; the plateau error of the finest
+// grid is at most that of the coarsest plus 0.02 % (measured −0.07 / −0.04 / −0.02 / −0.02 % for copper). With C_L = 0.06 (the value
 // ElasticPlasticBar.TwoWaveStructure needs for its HEL plateau) the aluminium plateau reads −0.71 /
 // −0.43 / −0.18 / −0.07 % and s_yy 0.76 / 0.85 / 0.91 / 0.95: converging, but the ringing that
 // C_L = 0.06 leaves needs 400 cells to meet 0.3 %. Label "slow":
