@@ -17,6 +17,14 @@ grep -q "^hugoniot_pressure_Pa = " "$WORK/straight/config.resolved.toml" || fail
 grep -q "^heat_conduction = false" "$WORK/straight/config.resolved.toml" || fail "heat_conduction (default off) not echoed"
 [ "$(grep -c DataSet "$WORK/straight/grid.pvd")" -eq 5 ] || fail "grid.pvd should list 5 frames"
 [ "$(wc -l < "$WORK/straight/series.csv")" -eq 22 ] || fail "series.csv should have 21 rows"
+# Stress outputs (docs/mpm.md, "Stress outputs"): tensors and the shock-axis and von Mises scalars.
+vtp=$(ls "$WORK/straight/fields/"particles_*.vtp | tail -1)
+for a in stress deviator longitudinal_stress longitudinal_deviator von_mises; do
+  grep -q "Name=\"$a\"" "$vtp" || fail "particle frame lacks $a"
+done
+grep -q 'Name="stress" NumberOfComponents="9"' "$vtp" || fail "particle stress is not a 9-component tensor"
+grep -q 'Name="von_mises"' "$WORK/straight/fields/grid_000000000.vti" || fail "grid frame lacks von_mises"
+head -1 "$WORK/straight/series.csv" | grep -q "_longitudinal_stress_mean" || fail "series windows lack the longitudinal stress"
 # The .vti is readable by `shockfield analyze`.
 "$SF" analyze stats "$WORK/straight/fields/grid_000000000.vti" --array density -o "$WORK/stats" --no-plot > /dev/null \
   || fail "analyze cannot read the grid field"

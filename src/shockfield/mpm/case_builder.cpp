@@ -53,7 +53,7 @@ BuiltSample build_sample(const MpmCase& c, const Config& root) {
     const Config& t = tables[k];
     const Body& body = c.bodies[k].body;
     check_inside(t, c.grid, body.lo, body.hi, "the body");
-    if (c.options.shape == ShapeKind::Gimp && !(body.spacing < c.grid.cell_size[0]))
+    if (c.options.shape != ShapeKind::Linear && !(body.spacing < c.grid.cell_size[0]))
       t.fail("spacing", fmt::format("{} m: GIMP needs a particle spacing below the cell size {} m", body.spacing,
                                     c.grid.cell_size[0]));
     if ((c.loading == LoadingKind::Wall || c.loading == LoadingKind::Tensile) &&

@@ -174,7 +174,8 @@ MpmCase read_mpm_case(const Config& root) {
   const auto ua = static_cast<std::size_t>(axis);
 
   const Config solver = root.table("solver");
-  c.options.shape = solver.get_choice_or("shape", {"linear", "gimp"}, "gimp") == "gimp" ? ShapeKind::Gimp : ShapeKind::Linear;
+  const std::string shape = solver.get_choice_or("shape", {"linear", "gimp", "ugimp"}, "gimp");
+  c.options.shape = shape == "gimp" ? ShapeKind::Gimp : shape == "ugimp" ? ShapeKind::UniformGimp : ShapeKind::Linear;
   c.options.scheme = solver.get_choice_or("scheme", {"musl", "usl"}, "musl") == "musl" ? UpdateScheme::MUSL : UpdateScheme::USL;
   c.options.flip = solver.get_double_or("flip", 1.0, Range::closed(0.0, 1.0));
   c.end_time = solver.get_double("end_time", Range::positive());

@@ -9,15 +9,21 @@ namespace shockfield::mpm {
 std::vector<std::string> quantity_names(int dim) {
   std::vector<std::string> n{"density", "pressure", "temperature", "ux", "uy"};
   if (dim == 3) n.emplace_back("uz");
+  for (const char* s : {"longitudinal_stress", "longitudinal_deviator", "von_mises"}) n.emplace_back(s);
   return n;
 }
 
-double quantity(const Particles& p, std::size_t i, std::size_t q) {
-  switch (q) {
-    case 0: return p.density(i);
-    case 1: return -p.state[i].stress().trace() / 3.0;
-    case 2: return p.state[i].temperature;
-    default: return p.v[i][static_cast<int>(q - 3)];
+double quantity(const Particles& p, std::size_t i, std::size_t q, int dim) {
+  const auto velocities = static_cast<std::size_t>(dim);
+  const int axis = dim - 1;
+  if (q == 0) return p.density(i);
+  if (q == 1) return -p.state[i].stress().trace() / 3.0;
+  if (q == 2) return p.state[i].temperature;
+  if (q < 3 + velocities) return p.v[i][static_cast<int>(q - 3)];
+  switch (q - 3 - velocities) {
+    case 0: return p.state[i].stress()(axis, axis);
+    case 1: return p.state[i].deviatoric.s(axis, axis);
+    default: return materials::von_mises(p.state[i].deviatoric.s);
   }
 }
 
@@ -43,7 +49,7 @@ WindowStats window_stats(const Particles& p, int dim, double lo, double hi, doub
     volume += v;
     const auto g = gradient_squares(p.velocity_gradient[i]);
     for (std::size_t k = 0; k < 3; ++k) w.gradients[k] += v * g[k];
-    for (std::size_t q = 0; q < nq; ++q) w.mean[q] += quantity(p, i, q);
+    for (std::size_t q = 0; q < nq; ++q) w.mean[q] += quantity(p, i, q, dim);
   }
   w.bulk_density = mass / ((hi - lo) * cross_section);
   if (w.count == 0) {
@@ -57,7 +63,7 @@ WindowStats window_stats(const Particles& p, int dim, double lo, double hi, doub
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!(p.x[i][axis] >= lo && p.x[i][axis] < hi)) continue;
     for (std::size_t q = 0; q < nq; ++q) {
-      const double d = quantity(p, i, q) - w.mean[q];
+      const double d = quantity(p, i, q, dim) - w.mean[q];
       w.std[q] += d * d;
     }
   }

@@ -19,9 +19,12 @@
 namespace shockfield::mpm {
 
 /// density [kg/m³], pressure −tr σ/3 [Pa] (EOS plus artificial viscosity), temperature [K],
-/// then the velocity components ux, uy (, uz) [m/s].
+/// the velocity components ux, uy (, uz) [m/s], then the stress along the shock axis (the last
+/// axis, a): longitudinal_stress σ_aa and longitudinal_deviator s_aa [Pa] (Cauchy, tension
+/// positive: a compressed bar reads σ_aa < 0), and von_mises √(3/2)‖s‖ [Pa] (eq. 3).
 std::vector<std::string> quantity_names(int dim);
-double quantity(const Particles& p, std::size_t i, std::size_t q);
+/// Quantity q (index into quantity_names(dim)) of particle i.
+double quantity(const Particles& p, std::size_t i, std::size_t q, int dim);
 
 /// |∇×u|², (∇·u)², D:D of a velocity gradient L (D = sym L) [1/s²].
 std::array<double, 3> gradient_squares(const Mat3& l);

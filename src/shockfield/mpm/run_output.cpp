@@ -104,17 +104,21 @@ io::VtkImage grid_fields(const Simulation& sim) {
     img.spacing[static_cast<std::size_t>(a)] = a < g.dim ? g.cell_size[a] : 1.0;
   }
   const std::size_t nn = grid.size();
-  const char* names[] = {"temperature", "pressure", "density", "plastic_work", "damage"};
-  constexpr std::size_t ns = 5;
-  std::vector<double> mass(nn, 0.0), scalars(ns * nn, 0.0), vel(3 * nn, 0.0);
+  const int axis = g.dim - 1;
+  const char* names[] = {"temperature", "pressure", "density", "plastic_work", "damage", "longitudinal_stress",
+                         "longitudinal_deviator", "von_mises"};
+  constexpr std::size_t ns = 8;
+  std::vector<double> mass(nn, 0.0), scalars(ns * nn, 0.0), vel(3 * nn, 0.0), stress(9 * nn, 0.0);
   for (std::size_t i = 0; i < p.size(); ++i) {
     std::array<Weights1D, 3> w{};
     for (int a = 0; a < g.dim; ++a) {
       w[static_cast<std::size_t>(a)] = LinearShape::evaluate(p.x[i][a] - g.origin[a], g.cell_size[a], 0.0);
       if (!grid.fit(a, w[static_cast<std::size_t>(a)])) return img;  // off the grid: no field frame
     }
-    const double q[ns] = {p.state[i].temperature, -p.state[i].stress().trace() / 3.0, p.density(i), p.state[i].plastic_work,
-                          p.state[i].damage};
+    const Mat3 sigma = p.state[i].stress();
+    const Mat3& dev = p.state[i].deviatoric.s;
+    const double q[ns] = {p.state[i].temperature, -sigma.trace() / 3.0, p.density(i), p.state[i].plastic_work,
+                          p.state[i].damage, sigma(axis, axis), dev(axis, axis), materials::von_mises(dev)};
     for (int c = 0; c < w[2].count; ++c)
       for (int b = 0; b < w[1].count; ++b)
         for (int a = 0; a < w[0].count; ++a) {
@@ -124,6 +128,8 @@ io::VtkImage grid_fields(const Simulation& sim) {
           mass[n] += mw;
           for (std::size_t k = 0; k < ns; ++k) scalars[k * nn + n] += mw * q[k];
           for (int d = 0; d < 3; ++d) vel[3 * n + static_cast<std::size_t>(d)] += mw * p.v[i][d];
+          for (int r = 0; r < 3; ++r)
+            for (int c2 = 0; c2 < 3; ++c2) stress[9 * n + static_cast<std::size_t>(3 * r + c2)] += mw * sigma(r, c2);
         }
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -134,6 +140,7 @@ io::VtkImage grid_fields(const Simulation& sim) {
     const bool empty = !(mass[n] > 0.0);
     for (std::size_t k = 0; k < ns; ++k) scalars[k * nn + n] = empty ? nan : scalars[k * nn + n] / mass[n];
     for (std::size_t d = 0; d < 3; ++d) vel[3 * n + d] = empty ? nan : vel[3 * n + d] / mass[n];
+    for (std::size_t d = 0; d < 9; ++d) stress[9 * n + d] = empty ? nan : stress[9 * n + d] / mass[n];
     mass_density[n] = mass[n] / cell_volume;
     ux[n] = vel[3 * n], uy[n] = vel[3 * n + 1];
   }
@@ -144,6 +151,7 @@ io::VtkImage grid_fields(const Simulation& sim) {
   img.point_data.push_back({"uy", 1, std::move(uy)});
   img.point_data.push_back({"mass_density", 1, std::move(mass_density)});
   img.point_data.push_back({"velocity", 3, std::move(vel)});
+  img.point_data.push_back({"stress", 9, std::move(stress)});
   return img;
 }
 
@@ -154,18 +162,30 @@ void RunOutput::write_fields(const Simulation& sim) {
   if (!case_.output.particles) return;
   const Particles& p = sim.particles();
   const std::size_t n = p.size();
-  std::vector<double> xyz(3 * n), vel(3 * n);
+  const int axis = case_.grid.dim - 1;
+  std::vector<double> xyz(3 * n), vel(3 * n), stress(9 * n), deviator(9 * n);
   std::vector<io::VtkArray> arrays;
-  for (const char* name : {"density", "pressure", "temperature", "plastic_work", "plastic_strain", "energy", "material", "damage"})
+  for (const char* name : {"density", "pressure", "temperature", "plastic_work", "plastic_strain", "energy", "material",
+                           "damage", "longitudinal_stress", "longitudinal_deviator", "von_mises"})
     arrays.push_back({name, 1, std::vector<double>(n)});
   for (std::size_t i = 0; i < n; ++i) {
     const auto& s = p.state[i];
+    const Mat3 sigma = s.stress();
+    const Mat3& dev = s.deviatoric.s;
     for (std::size_t d = 0; d < 3; ++d) xyz[3 * i + d] = p.x[i][static_cast<int>(d)], vel[3 * i + d] = p.v[i][static_cast<int>(d)];
-    const double values[] = {p.density(i), -s.stress().trace() / 3.0, s.temperature, s.plastic_work,
-                             s.deviatoric.plastic_strain, s.energy, static_cast<double>(p.material[i]), s.damage};
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) {
+        const auto k = 9 * i + static_cast<std::size_t>(3 * r + c);  // row-major, as VTK reads a tensor
+        stress[k] = sigma(r, c), deviator[k] = dev(r, c);
+      }
+    const double values[] = {p.density(i), -sigma.trace() / 3.0, s.temperature, s.plastic_work,
+                             s.deviatoric.plastic_strain, s.energy, static_cast<double>(p.material[i]), s.damage,
+                             sigma(axis, axis), dev(axis, axis), materials::von_mises(dev)};
     for (std::size_t k = 0; k < arrays.size(); ++k) arrays[k].values[i] = values[k];
   }
   arrays.push_back({"velocity", 3, std::move(vel)});
+  arrays.push_back({"stress", 9, std::move(stress)});
+  arrays.push_back({"deviator", 9, std::move(deviator)});
   const std::string file = fmt::format("fields/particles_{:09d}.vtp", sim.step_count());
   io::write_vtp(folder_ / file, xyz, arrays, case_.output.encoding);
   particles_pvd_.add(sim.time(), file);
@@ -183,7 +203,7 @@ void RunOutput::write_histograms(const Simulation& sim, std::size_t index) {
   for (std::size_t q = 0; q < names.size(); ++q) {
     analysis::GridField f;
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.x[i][axis] >= lo && p.x[i][axis] < hi) f.values.push_back(quantity(p, i, q));
+      if (p.x[i][axis] >= lo && p.x[i][axis] < hi) f.values.push_back(quantity(p, i, q, dim));
     if (f.values.empty()) continue;
     f.n = {f.values.size(), 1, 1};
     const analysis::Moments m = analysis::moments(f);

@@ -51,7 +51,8 @@ class RunOutput {
 double window_cross_section(const GridSpec& g);
 
 /// Particle data projected to the grid nodes with the linear shape functions (eq. 9), mass
-/// weighted: temperature, pressure, density, specific plastic work, velocity, and the nodal mass
+/// weighted: temperature, pressure, density, specific plastic work, damage, the longitudinal stress
+/// and deviator, von Mises stress, velocity, the Cauchy stress tensor, and the nodal mass
 /// density Σ m_p N_i / V_cell. Nodes no particle reaches are NaN (void).
 io::VtkImage grid_fields(const Simulation& sim);
 

@@ -29,7 +29,7 @@ Simulation::Simulation(const GridSpec& grid, std::vector<materials::SolidMateria
     if (id < 0 || id >= static_cast<int>(materials_.size()))
       throw InputError(fmt::format("mpm: particle {} has material index {} (expected 0..{})", p, id,
                                    materials_.size() - 1));
-    if (options_.shape == ShapeKind::Gimp)
+    if (options_.shape != ShapeKind::Linear)
       for (int a = 0; a < grid_.dim(); ++a)
         if (!(particles_.half_size[p][a] > 0.0 && 2.0 * particles_.half_size[p][a] < grid_.spec().cell_size[a]))
           throw InputError(fmt::format("mpm: GIMP needs particle half-widths in (0, h/2); particle {} has {} m along "
@@ -146,8 +146,13 @@ void Simulation::track_fastest(std::size_t p) {
 
 void Simulation::grid_to_particles(bool remap) {
   // FLIP/PIC velocity update and the move; positions are wrapped into periodic axes here, and a
-  // point that left the grid is reported at the end of the step.
-  const double flip = options_.flip;
+  // point that left the grid is reported at the end of the step. The first step is PIC: it
+  // projects the initial velocities onto the field the grid carries. A velocity jump inside a
+  // stencil (two bodies meeting at ±v) otherwise stays in the particles as sub-cell noise that
+  // FLIP never damps (it is invisible to the grid until the points cross cells) and relaxes the
+  // deviatoric stress behind the shock (docs/theory/mpm.md, "Deviatoric stress behind shocks").
+  // PIC conserves momentum, and a uniform velocity is unchanged by it (partition of unity).
+  const double flip = steps_ == 0 && options_.project_initial_velocity ? 0.0 : options_.flip;
   auto update = [&](std::size_t p, const Vec3& accel, const Vec3& vel) {
     particles_.x[p] += dt_ * vel;
     particles_.v[p] = flip * (particles_.v[p] + dt_ * accel) + (1.0 - flip) * vel;

@@ -5,7 +5,8 @@
 //   1. Δt = C·Δx_min / max_p(c_p + |v_p|)                        (stable step, seed §2.2.2)
 //   2. particles → grid: m_i, m_i v_i, f_i^int                   (eq. 12)
 //   3. grid: m_i v_i += f_i Δt; rigid walls                       (eq. 12, explicit)
-//   4. grid → particles: v_p += Δt Σ N_i f_i/m_i (FLIP), x_p += Δt Σ N_i v_i
+//   4. grid → particles: v_p += Δt Σ N_i f_i/m_i (FLIP; PIC v_p = Σ N_i v_i in the first step),
+//      x_p += Δt Σ N_i v_i
 //   5. MUSL: map the new particle momenta back to the grid and impose walls again
 //   6. L_p = Σ_i v_i ⊗ ∇N_i(x_p); material update of every point (materials::SolidMaterial)
 // With `heat_conduction`, step 2 is followed by an explicit conduction step on the same stencils
@@ -33,6 +34,9 @@ struct SimulationOptions {
   ShapeKind shape = ShapeKind::Linear;
   double courant = 0.3;        ///< C of the stable step, in (0, 1]
   double flip = 1.0;           ///< FLIP fraction of the velocity update (1 FLIP, 0 PIC)
+  /// The first step is PIC (flip 0): the initial velocities are projected onto the grid's field
+  /// (simulation.cpp, grid_to_particles). Off only to study what it removes.
+  bool project_initial_velocity = true;
   double min_time_step = 0.0;  ///< RunError when Δt falls below this [s]
   bool heat_conduction = false;  ///< solve heat conduction with the materials' conductivities
 

@@ -7,7 +7,7 @@
 
 namespace shockfield::mpm {
 
-template <int Dim, class Shape>
+template <int Dim, class Shape, bool Contiguous>
 void Transfer::evaluate(const Grid& grid, const Particles& p) {
   auto& stencils = [&]() -> auto& {
     if constexpr (Dim == 2) return stencils2_;
@@ -24,7 +24,9 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
     const auto uq = static_cast<std::size_t>(q);
     Stencil<Dim>& s = stencils[uq];
     for (int a = 0; a < Dim; ++a) {
-      Weights1D w = Shape::evaluate(p.x[uq][a] - origin[a], cell[a], p.half_size[uq][a]);
+      double half = p.half_size[uq][a];
+      if constexpr (Contiguous) half = contiguous_half_width(half, p.state[uq].deformation(a, a), cell[a]);
+      Weights1D w = Shape::evaluate(p.x[uq][a] - origin[a], cell[a], half);
       if (!grid.fit(a, w)) lost = std::max(lost, q);
       const auto ua = static_cast<std::size_t>(a);
       s.base[ua] = w.base;
@@ -62,12 +64,14 @@ void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
   }
   if (dim_ == 2) {
     stencils3_.clear();
-    if (shape == ShapeKind::Linear) evaluate<2, LinearShape>(grid, p);
-    else evaluate<2, GimpShape>(grid, p);
+    if (shape == ShapeKind::Linear) evaluate<2, LinearShape, false>(grid, p);
+    else if (shape == ShapeKind::Gimp) evaluate<2, GimpShape, true>(grid, p);
+    else evaluate<2, GimpShape, false>(grid, p);
   } else {
     stencils2_.clear();
-    if (shape == ShapeKind::Linear) evaluate<3, LinearShape>(grid, p);
-    else evaluate<3, GimpShape>(grid, p);
+    if (shape == ShapeKind::Linear) evaluate<3, LinearShape, false>(grid, p);
+    else if (shape == ShapeKind::Gimp) evaluate<3, GimpShape, true>(grid, p);
+    else evaluate<3, GimpShape, false>(grid, p);
   }
   bin(grid);
 

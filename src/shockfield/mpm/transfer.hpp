@@ -28,7 +28,18 @@
 
 namespace shockfield::mpm {
 
-enum class ShapeKind { Linear, Gimp };
+/// Linear hats (eq. 9); GIMP with particle boxes that follow the deformation (cpGIMP: half-width
+/// l_a = l_a0·|F_aa| along each axis, Bardenhagen & Kober 2004, §4.2); uniform GIMP with the boxes of
+/// the undeformed lattice (uGIMP, the same paper's eq. 39).
+enum class ShapeKind { Linear, Gimp, UniformGimp };
+
+/// The cpGIMP half-width along one axis: the initial half-width l0 stretched by the diagonal
+/// coefficient F_aa of the deformation gradient, so that the boxes of a uniformly strained lattice
+/// keep tiling the body. Bounded to [l0/10, max(l0, 0.49·h)]: GIMP needs l < h/2 (three nodes per
+/// axis), and under large rotations F_aa alone no longer measures the box (docs/theory/mpm.md).
+inline double contiguous_half_width(double l0, double f_aa, double h) {
+  return std::clamp(l0 * std::abs(f_aa), 0.1 * l0, std::max(l0, 0.49 * h));
+}
 
 /// One particle's stencil: first node along each axis (wrapped) and the 1D weights N and dN/dx of
 /// the nodes base, base+1, ... (unused trailing entries are zero).
@@ -82,7 +93,7 @@ class Transfer {
   /// In parallel over the particles q (static schedule): f(Kernel<dim, support>{}, q, stencil of q).
   template <class F>
   void each_particle(F&& f) const;
-  template <int Dim, class Shape>
+  template <int Dim, class Shape, bool Contiguous>
   void evaluate(const Grid& grid, const Particles& p);
   void bin(const Grid& grid);
   /// Particle-to-grid sums, slab pass by slab pass (see the top of this file). Per particle q,

@@ -127,9 +127,10 @@ TEST(Thermal, IsentropicReleaseAndPlasticWork) {
   EXPECT_NEAR(al.thermal.advance(al.eos, v0, v0, 300.0, 880.0, vs), 301.0, 1e-12);
 }
 
-// q = ρℓ(C_Q ℓ(∇·v)² − C_L c ∇·v) in compression, 0 in expansion.
+// q = ρℓ(C_Q ℓ(∇·v)² − C_L c ∇·v) in compression, 0 in expansion, with the defaults C_Q = 2 and
+// C_L = 1 (0.3 before the deviator fix of issue 16, docs/theory/mpm.md).
 TEST(ArtificialViscosity, LinearPlusQuadraticInCompressionOnly) {
   const ArtificialViscosity av;
   EXPECT_EQ(av.pressure(2700.0, 5000.0, 1e6, 1e-3), 0.0);
-  EXPECT_NEAR(av.pressure(2700.0, 5000.0, -1e6, 1e-3), 2700.0 * 1e-3 * (2.0 * 1e-3 * 1e12 + 0.3 * 5000.0 * 1e6), 1e-3);
+  EXPECT_NEAR(av.pressure(2700.0, 5000.0, -1e6, 1e-3), 2700.0 * 1e-3 * (2.0 * 1e-3 * 1e12 + 1.0 * 5000.0 * 1e6), 1e-3);
 }

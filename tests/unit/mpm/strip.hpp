@@ -34,9 +34,10 @@ inline mpm::Simulation make(const Setup& s, const shockfield::materials::SolidMa
   return mpm::Simulation(grid, {mat}, std::move(p), s.options);
 }
 
-/// Rows of particles (same y up to 1e-3 h) averaged: y, v_y, σ_yy, ρ, T, W_p.
+/// Rows of particles (same y up to 1e-3 h) averaged: y, v_y, σ_yy, ρ, T, W_p, the deviator s_yy,
+/// the von Mises stress and the equivalent plastic strain ε̄p.
 struct Row {
-  double y = 0, vy = 0, syy = 0, rho = 0, t = 0, wp = 0;
+  double y = 0, vy = 0, syy = 0, rho = 0, t = 0, wp = 0, dev = 0, vm = 0, eqp = 0;
 };
 inline std::vector<Row> profile(const mpm::Particles& p, double h) {
   std::map<long, std::pair<Row, int>> rows;
@@ -49,12 +50,15 @@ inline std::vector<Row> profile(const mpm::Particles& p, double h) {
     r.rho += p.density(i);
     r.t += p.state[i].temperature;
     r.wp += p.state[i].plastic_work;
+    r.dev += p.state[i].deviatoric.s(1, 1);
+    r.vm += shockfield::materials::von_mises(p.state[i].deviatoric.s);
+    r.eqp += p.state[i].deviatoric.plastic_strain;
     ++n;
   }
   std::vector<Row> out;
   for (auto& [key, rn] : rows) {
     auto [r, n] = rn;
-    out.push_back({r.y / n, r.vy / n, r.syy / n, r.rho / n, r.t / n, r.wp / n});
+    out.push_back({r.y / n, r.vy / n, r.syy / n, r.rho / n, r.t / n, r.wp / n, r.dev / n, r.vm / n, r.eqp / n});
   }
   return out;
 }

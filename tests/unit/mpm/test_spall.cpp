@@ -31,6 +31,11 @@ materials::SolidMaterial hydrodynamic_al(double spall_strength) {
   m.strength.yield_stress0 = 1e3;
   m.strength.tangent_modulus = 0.0;
   m.spall.strength = spall_strength;
+  // The pull-back windows below were measured with C_L = 0.3, the default until the deviator fix
+  // (docs/theory/mpm.md, "Deviatoric stress behind shocks"); with today's C_L = 1 the linear term
+  // fills the notch differently in the two codes (at σ_sp = 1 GPa the 1D reference reads 0.73·σ_sp,
+  // the MPM 0.57·σ_sp), which is not what this test is about.
+  m.viscosity.linear = 0.3;
   m.validate();
   return m;
 }

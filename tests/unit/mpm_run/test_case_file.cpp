@@ -62,8 +62,11 @@ TEST(MpmCaseFile, ValidCaseResolvesLoading) {
   EXPECT_TRUE(c.grid.periodic[0]);
   EXPECT_EQ(c.grid.cells[0], 50);
   EXPECT_EQ(c.bodies[0].body.velocity[1], -1000.0);
-  EXPECT_EQ(c.options.shape, mpm::ShapeKind::Gimp);
+  EXPECT_EQ(c.options.shape, mpm::ShapeKind::Gimp);  // cpGIMP
   EXPECT_DOUBLE_EQ(c.bodies[0].body.spacing, 10e-6);  // default: half a cell
+  // "ugimp": the uniform GIMP of before the deviator fix (docs/theory/mpm.md).
+  const auto ugimp = replace(kBase, "end_time = 10e-9", "end_time = 10e-9\nshape = \"ugimp\"");
+  EXPECT_EQ(mpm::read_mpm_case(Config::parse(ugimp, "case.toml")).options.shape, mpm::ShapeKind::UniformGimp);
 }
 
 TEST(MpmCaseFile, ErrorsNameTheKey) {

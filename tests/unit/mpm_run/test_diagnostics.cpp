@@ -1,8 +1,11 @@
 // Diagnostics on analytic fields: rotation, divergence and strain rate of a linear velocity field
-// from the nodal velocities; window means; cavity area, sizes and collapsibility; ejecta.
+// from the nodal velocities; window means; stress quantities; cavity area, sizes and collapsibility;
+// ejecta.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <numbers>
 
 #include "shockfield/materials/library.hpp"
@@ -91,6 +94,37 @@ TEST(MpmDiagnostics, EjectaAboveTheFreeSurface) {
   EXPECT_EQ(e.count, 3.0);
   EXPECT_DOUBLE_EQ(e.mass, 3 * p.mass[0]);
   EXPECT_NEAR(e.max_height, 52.5e-6, 1e-12);
+}
+
+// The stress quantities of the windows and histograms on a state set by hand: a point in uniaxial
+// compression at yield along the shock axis, s = diag(Y/3, −2Y/3, Y/3) (2D: the shock axis is y),
+// P = 2 GPa, q = 0.1 GPa. σ_yy = s_yy − P − q = −2.18 GPa, s_yy = −80 MPa, von Mises
+// √(3/2)‖s‖ = Y = 120 MPa (eq. 3), pressure −tr σ/3 = P + q. In 3D the shock axis is z.
+TEST(MpmDiagnostics, StressQuantitiesAlongTheShockAxis) {
+  const auto cu = materials::copper();
+  for (int dim : {2, 3}) {
+    mpm::Particles p;
+    p.add(Vec3::Zero(), Vec3::Zero(), 1e-12, Vec3::Constant(1e-6), cu, 0);
+    const int axis = dim - 1;
+    const double y = 120e6;
+    Mat3 s = Mat3::Zero();
+    for (int a = 0; a < 3; ++a) s(a, a) = a == axis ? -2.0 * y / 3.0 : y / 3.0;
+    p.state[0].deviatoric.s = s;
+    p.state[0].pressure = 2e9;
+    p.state[0].viscous_pressure = 0.1e9;
+    const auto names = mpm::quantity_names(dim);
+    const auto at = [&](const std::string& n) {
+      const auto it = std::find(names.begin(), names.end(), n);
+      EXPECT_NE(it, names.end()) << n;
+      return mpm::quantity(p, 0, static_cast<std::size_t>(it - names.begin()), dim);
+    };
+    EXPECT_EQ(names.size(), static_cast<std::size_t>(3 + dim + 3));
+    EXPECT_EQ(names[static_cast<std::size_t>(2 + dim)], dim == 2 ? "uy" : "uz");  // velocities keep their columns
+    EXPECT_NEAR(at("longitudinal_stress"), -2.1e9 - 2.0 * y / 3.0, 1.0);
+    EXPECT_NEAR(at("longitudinal_deviator"), -2.0 * y / 3.0, 1e-6);
+    EXPECT_NEAR(at("von_mises"), y, 1e-6);
+    EXPECT_NEAR(at("pressure"), 2.1e9, 1.0);
+  }
 }
 
 }  // namespace
