@@ -25,6 +25,8 @@ basis_types = [1, 2, 1, 2]
 style = "eam/alloy"
 file = "CuNi_test.eam.alloy"
 elements = ["Cu", "Ni"]
+[md]
+timestep = 0.001
 [velocity]
 temperature = 300.0
 [output]
@@ -123,6 +125,8 @@ boundary = "pps"
 style = "eam/alloy"
 file = "CuNi.eam.alloy"
 elements = ["Cu", "Ni"]
+[md]
+timestep = 0.001
 [[stage]]
 steps = 1
 EOF

@@ -49,6 +49,8 @@ boundary = "$boundary"
 [potential]
 style = "eam"
 file = "Cu_u3.eam"
+[md]
+timestep = 0.001
 [[stage]]
 steps = 1
 EOF
@@ -75,6 +77,31 @@ for case_file in "$ROOT"/examples/md_*/case.toml; do
   count=$((count + 1))
 done
 [ $count -ge 4 ] || fail "only $count MD examples found"
+
+# A slab drifting at 5 Å/ps along its shrink-wrapped z with skin 1 Å: the list is rebuilt every
+# 100 steps, so after 150 steps every atom is 0.25 Å beyond the box of the last rebuild, which the
+# old final.data carried (LAMMPS then assigned none of the top layer).
+cat > "$WORK/drift.toml" <<'EOF'
+method = "md"
+[system.lattice]
+style = "fcc"
+a0 = 3.615
+repeat = [3, 3, 6]
+boundary = "pps"
+elements = ["Cu"]
+[potential]
+style = "eam"
+file = "Cu_u3.eam"
+[md]
+skin = 1.0
+[[velocity.add]]
+group = "all"
+velocity = [0.0, 0.0, 5.0]
+[[stage]]
+steps = 150
+EOF
+"$SF" run "$WORK/drift.toml" -o "$WORK/drift" -q > /dev/null 2> "$WORK/stderr" || fail "drifting slab: $(cat "$WORK/stderr")"
+check_data "$WORK/drift/final.data" pps
 
 # The chained shock: part 2 reads part 1's final.data (velocities included) and the piston
 # continues from where part 1 left it (the last piston_A of shock_front_shock.csv).
