@@ -46,7 +46,7 @@ struct DataWriteOptions {
   bool image_flags = true;  ///< write ix iy iz after the positions
   /// Pad of shrink-wrapped faces (geometry::shrink_margin of the box the run was created with);
   /// default 1e-4 × the lengths of the box given.
-  std::optional<Vec3> shrink_margin;
+  std::optional<Vec3> shrink_margin = std::nullopt;
 };
 
 /// Writes the owned atoms of `atoms` as a LAMMPS data file (atom style atomic), positions and

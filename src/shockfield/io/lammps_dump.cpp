@@ -192,9 +192,9 @@ std::string value_line(LineReader& r, const std::string& what) {
 // The 1-based index of an element name in frame.element_names, added when new.
 double element_index(DumpFrame& frame, std::string_view name) {
   auto& names = frame.element_names;
-  const auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) names.emplace_back(name);
-  return static_cast<double>((it == names.end() ? names.size() : static_cast<std::size_t>(it - names.begin()) + 1));
+  const auto k = static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  if (k == names.size()) names.emplace_back(name);
+  return static_cast<double>(k + 1);
 }
 
 void read_atoms(LineReader& r, DumpFrame& frame, long long natoms) {
