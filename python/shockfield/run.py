@@ -59,24 +59,34 @@ class Frame:
 
 
 def read_lammps_dump(path):
-    """The frames of a LAMMPS text dump (ITEM: TIMESTEP / [TIME] / NUMBER OF ATOMS / BOX BOUNDS /
-    ATOMS ...) as (step, time or None, box, atoms structured array) tuples."""
+    """The frames of a LAMMPS text dump ([ITEM: UNITS] / [ITEM: TIME] / ITEM: TIMESTEP / [TIME] /
+    NUMBER OF ATOMS / BOX BOUNDS / ATOMS ...) as (step, time or None, box, atoms structured array)
+    tuples; a column of names (``element``) is a string field, every other column float."""
     lines = pathlib.Path(path).read_text().splitlines()
     frames, i = [], 0
     try:
         while i < len(lines):
+            time = None
+            while lines[i].startswith(("ITEM: UNITS", "ITEM: TIME")) and not lines[i].startswith("ITEM: TIMESTEP"):
+                if lines[i].startswith("ITEM: TIME"):
+                    time = float(lines[i + 1])
+                i += 2
             if not lines[i].startswith("ITEM: TIMESTEP"):
                 raise InputError(f"{path}:{i + 1}: expected 'ITEM: TIMESTEP', got {lines[i]!r}")
-            step, time, i = int(lines[i + 1]), None, i + 2
+            step, i = int(lines[i + 1]), i + 2
             if lines[i].startswith("ITEM: TIME"):
                 time, i = float(lines[i + 1]), i + 2
             count = int(lines[i + 1])  # lines[i]: ITEM: NUMBER OF ATOMS, then ITEM: BOX BOUNDS
             box = np.array([[float(v) for v in lines[i + 3 + k].split()[:2]] for k in range(3)])
             names = lines[i + 6].split()[2:]
-            values = np.array([[float(v) for v in lines[i + 7 + a].split()] for a in range(count)]).reshape(count, len(names))
-            atoms = np.empty(count, dtype=[(n, np.float64) for n in names])
-            for k, n in enumerate(names):
-                atoms[n] = values[:, k]
+            rows = [lines[i + 7 + a].split() for a in range(count)]
+            if any(len(row) != len(names) for row in rows):
+                raise ValueError(f"rows of other than {len(names)} values")
+            columns = [[row[k] for row in rows] for k in range(len(names))]
+            dtypes = [("U16" if n == "element" else np.float64) for n in names]
+            atoms = np.empty(count, dtype=list(zip(names, dtypes)))
+            for n, dtype, column in zip(names, dtypes, columns):
+                atoms[n] = column if dtype == "U16" else np.array(column, dtype=np.float64)
             frames.append((step, time, box, atoms))
             i += 7 + count
     except (IndexError, ValueError) as error:

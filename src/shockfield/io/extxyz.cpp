@@ -20,7 +20,7 @@ void write_extxyz_frame(std::ostream& out, const DumpFrame& frame, const std::ve
                         const DumpWriteOptions& options) {
   const std::size_t n = frame.natoms();
   const std::vector<Vec3> pos = frame.positions();
-  std::set<std::string> used{"type", "x", "y", "z", "xu", "yu", "zu", "xs", "ys", "zs"};
+  std::set<std::string> used{"type", "element", "x", "y", "z", "xu", "yu", "zu", "xs", "ys", "zs"};
   std::vector<Property> props;
   for (std::size_t c = 0; c < frame.columns.size(); ++c) {
     const std::string& name = frame.columns[c];
@@ -48,15 +48,18 @@ void write_extxyz_frame(std::ostream& out, const DumpFrame& frame, const std::ve
   if (frame.time) fmt::format_to(it, " Time={}", *frame.time);
   buf.push_back('\n');
 
-  const std::vector<double>* type = frame.has("type") ? &frame.column("type") : nullptr;
+  // Species: the element column's names, else the type's name, else the type number.
+  const bool by_element = frame.has("element");
+  const std::vector<std::string>& names = by_element ? frame.element_names : type_names;
+  const std::vector<double>* type = by_element ? &frame.column("element") : frame.has("type") ? &frame.column("type") : nullptr;
   const auto real = [&](double v) {
     if (options.full_precision) fmt::format_to(it, " {}", v);
     else fmt::format_to(it, " {:g}", v);
   };
   for (std::size_t i = 0; i < n; ++i) {
     const long long t = type ? std::llround((*type)[i]) : 0;
-    const bool named = t >= 1 && static_cast<std::size_t>(t) <= type_names.size() && !type_names[t - 1].empty();
-    if (named) fmt::format_to(it, "{}", type_names[static_cast<std::size_t>(t - 1)]);
+    const bool named = t >= 1 && static_cast<std::size_t>(t) <= names.size() && !names[t - 1].empty();
+    if (named) fmt::format_to(it, "{}", names[static_cast<std::size_t>(t - 1)]);
     else fmt::format_to(it, "{}", t);
     for (int d = 0; d < 3; ++d) real(pos[i][d]);
     for (const Property& p : props)

@@ -10,6 +10,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/line_reader.hpp"
+#include "shockfield/geometry/shrink_wrap.hpp"
 
 namespace shockfield::io {
 namespace {
@@ -190,10 +191,14 @@ class DataReader {
       if (w.size() == 8) image[d] = image_flag(w[5 + d], d);
     }
     const geometry::Box& box = out_.box;
-    for (int d = 0; d < 3; ++d)
-      if (!box.periodic(d) && (x[d] < box.lo[d] || x[d] > box.hi[d]))
-        r_.fail(fmt::format("atom {} at {} = {} is outside the non-periodic box {}lo {}hi = [{}, {}]",
-                            id, axis_name[d], x[d], axis_name[d], axis_name[d], box.lo[d], box.hi[d]));
+    const Vec3 margin = geometry::shrink_margin(box);  // LAMMPS grows shrink-wrapped dimensions by it first
+    for (int d = 0; d < 3; ++d) {
+      const double pad = box.boundary[d] == geometry::Boundary::shrink ? margin[d] : 0.0;
+      if (!box.periodic(d) && (x[d] < box.lo[d] - pad || x[d] > box.hi[d] + pad))
+        r_.fail(fmt::format("atom {} at {} = {} is outside the non-periodic box {}lo {}hi = [{}, {}]{}",
+                            id, axis_name[d], x[d], axis_name[d], axis_name[d], box.lo[d], box.hi[d],
+                            pad > 0 ? fmt::format(" (shrink-wrapped: {} Å of margin on each side)", pad) : ""));
+    }
     if (!box.try_wrap(x, image))
       r_.fail(fmt::format("atom {} at ({}, {}, {}) with image flags {} {} {} cannot be wrapped into the "
                           "periodic box: it is more than 2^31 box lengths away", id, x[0], x[1], x[2],
@@ -235,9 +240,14 @@ DataFile read_data(const std::filesystem::path& file, const std::array<geometry:
   return DataReader(file, boundary).read();
 }
 
-void write_data(const std::filesystem::path& file, const geometry::Box& box, const md::Atoms& atoms,
+void write_data(const std::filesystem::path& file, const geometry::Box& box_in, const md::Atoms& atoms,
                 const DataWriteOptions& options) {
-  CheckedOutput out(file);
+  // LAMMPS write_data: pbc() then reset_box() on the owned atoms, before anything is written.
+  geometry::Box box = box_in;
+  std::vector<Vec3> x(atoms.x.begin(), atoms.x.begin() + static_cast<std::ptrdiff_t>(atoms.nlocal));
+  std::vector<std::array<int, 3>> image(atoms.image.begin(), atoms.image.begin() + static_cast<std::ptrdiff_t>(atoms.nlocal));
+  for (std::size_t i = 0; i < x.size(); ++i) box.wrap(x[i], image[i]);
+  geometry::shrink_wrap(box, x, options.shrink_margin.value_or(geometry::shrink_margin(box_in)));
   fmt::memory_buffer buf;
   auto it = std::back_inserter(buf);
   // Layout of LAMMPS write_data (WriteData::header, atoms, velocities).
@@ -252,9 +262,8 @@ void write_data(const std::filesystem::path& file, const geometry::Box& box, con
   }
   fmt::format_to(it, "\nAtoms # atomic\n\n");
   for (std::size_t i = 0; i < atoms.nlocal; ++i) {
-    const Vec3& x = atoms.x[i];
-    fmt::format_to(it, "{} {} {} {} {}", atoms.id[i], atoms.type[i] + 1, x.x(), x.y(), x.z());
-    if (options.image_flags) fmt::format_to(it, " {} {} {}", atoms.image[i][0], atoms.image[i][1], atoms.image[i][2]);
+    fmt::format_to(it, "{} {} {} {} {}", atoms.id[i], atoms.type[i] + 1, x[i].x(), x[i].y(), x[i].z());
+    if (options.image_flags) fmt::format_to(it, " {} {} {}", image[i][0], image[i][1], image[i][2]);
     buf.push_back('\n');
   }
   if (options.velocities) {
@@ -262,8 +271,7 @@ void write_data(const std::filesystem::path& file, const geometry::Box& box, con
     for (std::size_t i = 0; i < atoms.nlocal; ++i)
       fmt::format_to(it, "{} {} {} {}\n", atoms.id[i], atoms.v[i].x(), atoms.v[i].y(), atoms.v[i].z());
   }
-  out.write({buf.data(), buf.size()});
-  out.close();
+  replace_file(file, {buf.data(), buf.size()});
 }
 
 }  // namespace shockfield::io

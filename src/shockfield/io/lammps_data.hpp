@@ -12,9 +12,11 @@
 // `#` starts a comment anywhere; blank lines are ignored. "Pair Coeffs" / "PairIJ Coeffs"
 // sections are skipped (the force field comes from the case file); other sections, bonds and
 // triclinic boxes are rejected. As in LAMMPS read_data, atoms outside a periodic box are remapped
-// into it (image flags updated) and atoms outside a non-periodic box are an error. Every error
-// names the file, the line and what was expected.
+// into it (image flags updated) and atoms outside a non-periodic box are an error, where a
+// shrink-wrapped dimension first grows by LAMMPS's margin, 1e-4 × its length on each side
+// (Domain::set_initial_box). Every error names the file, the line and what was expected.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,10 +44,18 @@ struct DataWriteOptions {
   std::string title = "LAMMPS data file written by shockfield";
   bool velocities = true;   ///< write the Velocities section
   bool image_flags = true;  ///< write ix iy iz after the positions
+  /// Pad of shrink-wrapped faces (geometry::shrink_margin of the box the run was created with);
+  /// default 1e-4 × the lengths of the box given.
+  std::optional<Vec3> shrink_margin = std::nullopt;
 };
 
 /// Writes the owned atoms of `atoms` as a LAMMPS data file (atom style atomic), positions and
-/// velocities to full precision (they read back bit-identical).
+/// velocities to full precision (they read back bit-identical). As LAMMPS write_data does, the
+/// positions are first wrapped into the periodic dimensions (image flags updated) and the
+/// shrink-wrapped dimensions reset to the atoms (geometry::shrink_wrap), so that every atom lies in
+/// the written box and LAMMPS read_data or read_data() above assigns them all; `box` and `atoms`
+/// themselves are not changed. The file is replaced atomically (a temporary file and a rename):
+/// a reader never sees half of it.
 void write_data(const std::filesystem::path& file, const geometry::Box& box, const md::Atoms& atoms,
                 const DataWriteOptions& options = {});
 

@@ -103,7 +103,7 @@ namespace {
 std::function<double(std::size_t)> atom_field(const std::string& field, const geometry::Box& box,
                                               const md::Atoms& atoms) {
   if (field == "id") return [&](std::size_t i) { return static_cast<double>(atoms.id[i]); };
-  if (field == "type") return [&](std::size_t i) { return atoms.type[i] + 1.0; };
+  if (field == "type" || field == "element") return [&](std::size_t i) { return atoms.type[i] + 1.0; };
   if (field == "mass") return [&](std::size_t i) { return atoms.mass_of(i); };
   const auto axis = [](char c) { return c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1; };
   if (field.size() == 1 && axis(field[0]) >= 0)  // x y z
@@ -118,7 +118,7 @@ std::function<double(std::size_t)> atom_field(const std::string& field, const ge
     if (field[0] == 'v') return [&, d](std::size_t i) { return atoms.v[i][d]; };
     if (field[0] == 'f') return [&, d](std::size_t i) { return atoms.f[i][d]; };
   }
-  throw InputError(fmt::format("dump field '{}' is not one of id type x y z xu yu zu ix iy iz vx "
+  throw InputError(fmt::format("dump field '{}' is not one of id type element x y z xu yu zu ix iy iz vx "
                                "vy vz fx fy fz mass", field));
 }
 
@@ -130,6 +130,13 @@ DumpFrame make_dump_frame(long long timestep, const geometry::Box& box, const md
   frame.timestep = timestep;
   frame.box = box;
   for (int d = 0; d < 3; ++d) frame.bounds[d] = dump_bounds_code(box.boundary[d]);
+  if (std::find(fields.begin(), fields.end(), "element") != fields.end()) {
+    for (int t = 0; t < atoms.ntypes(); ++t)
+      if (static_cast<std::size_t>(t) >= atoms.type_names.size() || atoms.type_names[t].empty())
+        throw InputError(fmt::format("dump field 'element' needs an element name for every atom type; "
+                                     "type {} has none", t + 1));
+    frame.element_names = atoms.type_names;
+  }
   for (const std::string& field : fields) {
     const auto value = atom_field(field, box, atoms);
     std::vector<double> data(atoms.nlocal);
@@ -182,6 +189,14 @@ std::string value_line(LineReader& r, const std::string& what) {
   return std::string(w[0]);
 }
 
+// The 1-based index of an element name in frame.element_names, added when new.
+double element_index(DumpFrame& frame, std::string_view name) {
+  auto& names = frame.element_names;
+  const auto k = static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  if (k == names.size()) names.emplace_back(name);
+  return static_cast<double>(k + 1);
+}
+
 void read_atoms(LineReader& r, DumpFrame& frame, long long natoms) {
   const auto words = r.words();  // ITEM: ATOMS col...
   std::set<std::string_view> seen;
@@ -191,6 +206,7 @@ void read_atoms(LineReader& r, DumpFrame& frame, long long natoms) {
   }
   if (frame.columns.empty()) r.fail("expected column names after ITEM: ATOMS (e.g. 'id type x y z')");
   const std::size_t ncols = frame.columns.size();
+  const auto element = frame.find("element");
   // Rows are appended as they are read, never sized from the count: a count larger than the
   // file ends in "unexpected end of file", not in an allocation failure.
   frame.values.assign(ncols, {});
@@ -200,7 +216,8 @@ void read_atoms(LineReader& r, DumpFrame& frame, long long natoms) {
     if (w.size() != ncols)
       r.fail(fmt::format("expected {} values ({}), got {}", ncols, fmt::join(frame.columns, " "), w.size()));
     for (std::size_t c = 0; c < ncols; ++c)
-      frame.values[c].push_back(r.to_double(w[c], "column '" + frame.columns[c] + "'"));
+      frame.values[c].push_back(c == element ? element_index(frame, w[c])
+                                             : r.to_double(w[c], "column '" + frame.columns[c] + "'"));
   }
 }
 
@@ -268,6 +285,12 @@ void write_dump_frame(std::ostream& out, const DumpFrame& frame, const DumpWrite
                                    frame.columns[c], frame.values[c].size(), frame.columns[0], n));
   std::vector<bool> is_int(frame.columns.size());
   for (std::size_t c = 0; c < is_int.size(); ++c) is_int[c] = is_integer_column(frame.columns[c]);
+  const auto element = frame.find("element");
+  const auto element_name = [&](double k) -> const std::string& {
+    if (!(k >= 1 && k <= static_cast<double>(frame.element_names.size())))
+      throw InputError(fmt::format("dump frame: element index {} has no name ({} names)", k, frame.element_names.size()));
+    return frame.element_names[static_cast<std::size_t>(k) - 1];
+  };
 
   fmt::memory_buffer buf;
   auto it = std::back_inserter(buf);
@@ -282,7 +305,8 @@ void write_dump_frame(std::ostream& out, const DumpFrame& frame, const DumpWrite
     for (std::size_t c = 0; c < frame.values.size(); ++c) {
       if (c) buf.push_back(' ');
       const double v = frame.values[c][i];
-      if (is_int[c]) fmt::format_to(it, "{}", std::llround(v));
+      if (c == element) fmt::format_to(it, "{}", element_name(v));
+      else if (is_int[c]) fmt::format_to(it, "{}", std::llround(v));
       else if (options.full_precision) fmt::format_to(it, "{}", v);
       else fmt::format_to(it, "{:g}", v);
     }

@@ -6,7 +6,8 @@
 //   ITEM: BOX BOUNDS pp pp ff three lines "lo hi" (triclinic "xy xz yz" boxes are rejected)
 //   ITEM: ATOMS id type x y z ...   one row per atom, any columns
 //
-// Optional `ITEM: UNITS` and `ITEM: TIME` sections (dump_modify units/time yes) are read too.
+// Optional `ITEM: UNITS` and `ITEM: TIME` sections (dump_modify units/time yes) are read too, and
+// an `element` column of names (dump custom ... element with dump_modify element Cu ...).
 // The writer produces the same header LAMMPS writes (dump custom, box bounds "%-1.16e"), which
 // OVITO and LAMMPS `read_dump` open.
 #include <array>
@@ -40,6 +41,9 @@ struct DumpFrame {
   std::array<std::string, 3> bounds{"pp", "pp", "pp"};
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;
+  /// The names of an `element` column: its values are 1-based indices into this list (the
+  /// writer prints the names; the reader numbers the names in the order it first meets them).
+  std::vector<std::string> element_names;
   std::string source;  ///< the file the frame was read from ("" if made in memory), for messages
 
   /// "file: dump frame of timestep N", the subject of the frame's error messages.
@@ -73,8 +77,9 @@ struct DumpWriteOptions {
 };
 
 /// A frame of the owned atoms with the chosen per-atom fields, named as in LAMMPS `dump custom`:
-/// id type x y z xu yu zu ix iy iz vx vy vz fx fy fz mass (types written 1-based). Throws
-/// InputError naming an unknown field. Further columns can be added with set_column().
+/// id type element x y z xu yu zu ix iy iz vx vy vz fx fy fz mass (types written 1-based;
+/// element: atoms.type_names, each of which must then be non-empty). Throws InputError naming an
+/// unknown field or a type without a name. Further columns can be added with set_column().
 DumpFrame make_dump_frame(long long timestep, const geometry::Box& box, const md::Atoms& atoms,
                           const std::vector<std::string>& fields);
 

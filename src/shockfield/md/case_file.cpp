@@ -13,7 +13,7 @@ int read_axis(const Config& table, std::string_view key, const std::string& fall
 
 const std::vector<std::string>& known_dump_fields() {
   static const std::vector<std::string> fields{
-      "id", "type", "mass", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz",
+      "id", "type", "element", "mass", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz",
       "vx", "vy", "vz", "fx", "fy", "fz", "pe", "ke", "sxx", "syy", "szz", "sxy", "sxz", "syz"};
   return fields;
 }
@@ -137,6 +137,7 @@ MdCase read_md_case(const Config& root) {
       }
     out.dump_format = o->get_choice_or("dump_format", {"lammps", "extxyz"}, "lammps");
     out.dump_full_precision = o->get_bool_or("dump_full_precision", false);
+    out.dump_time = o->get_bool_or("dump_time", false);
     out.profile_every = o->get_int_or("profile_every", 0, Range::non_negative());
     out.profile_axis = read_axis(*o, "profile_axis", "z");
     out.profile_bin_width = o->get_double_or("profile_bin_width", 5.0, Range::positive());
@@ -153,6 +154,11 @@ MdCase read_md_case(const Config& root) {
       stages[k].fail("steps", fmt::format("the stages up to this one add up to {} steps; expected at "
                                           "most {:.0e} in all", total, kMaxTotalSteps));
   }
+  // Frame names dump.<step> with the step zero-padded to the digits of the last step, so that
+  // they sort in time order by name too (LAMMPS dump_modify pad).
+  if (const auto o = root.optional_table("output"); o && (o->has("dump_pad") || c.output.dump_every > 0))
+    c.output.dump_pad = static_cast<int>(o->get_int_or("dump_pad", static_cast<long long>(std::to_string(total).size()),
+                                                       Range::closed(0, 19)));
   return c;
 }
 

@@ -49,6 +49,8 @@ struct OutputSpec {
   std::vector<std::string> dump_fields;
   std::string dump_format = "lammps";  ///< lammps | extxyz
   bool dump_full_precision = false;
+  bool dump_time = false;              ///< ITEM: TIME / Time= (LAMMPS dump_modify time yes)
+  int dump_pad = 0;                    ///< digits of the step in frame names (dump_modify pad)
   long long profile_every = 0;
   int profile_axis = 2;
   double profile_bin_width = 5.0;  ///< Å

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <optional>
 
 #include "shockfield/core/error.hpp"
@@ -38,7 +40,32 @@ struct Prepared {
   std::unique_ptr<Potential> potential;
   MdCase md;
   std::vector<std::uint32_t> stage_groups, add_groups;
+  std::vector<std::string> notes;  ///< logged when the run starts
 };
+
+// Masses and element names of the atom types. A mass: the case's masses = [...] (LAMMPS `mass`
+// after pair_coeff), else the potential file's (pair_coeff sets it, after read_data), else the
+// data file's; a data-file mass that differs from the potential's is reported. An element name:
+// the case's or the data file's, else the one the potential file gives the type.
+void settle_types(const Config& root, Prepared& p) {
+  Atoms& atoms = p.system.atoms;
+  const auto& file_masses = p.system.file_masses;
+  for (int t = 0; t < atoms.ntypes(); ++t) {
+    const auto ut = static_cast<std::size_t>(t);
+    if (atoms.type_names[ut].empty())
+      atoms.type_names[ut] = potentials::potential_type_element(*p.potential, t).value_or("");
+    if (atoms.mass[ut] > 0) continue;
+    const double file = ut < file_masses.size() ? file_masses[ut] : 0.0;
+    const auto m = potentials::potential_type_mass(*p.potential, t);
+    if (!m && !(file > 0)) root.table("system").fail("masses", fmt::format("no mass for atom type {} (give masses = [...])", t + 1));
+    atoms.mass[ut] = m ? *m : file;
+    // 5e-6 relative: the 6 significant digits LAMMPS write_data prints masses with.
+    if (m && file > 0 && std::abs(file - *m) > 5e-6 * *m)
+      p.notes.push_back(fmt::format("atom type {}: the data file's mass {} amu differs from the potential file's {} amu, "
+                                    "which is used (as LAMMPS pair_coeff does); [system] masses = [...] chooses another",
+                                    t + 1, file, *m));
+  }
+}
 
 // Everything is read and checked here, before the run folder exists.
 Prepared prepare(const Config& root, const RunOptions& options) {
@@ -47,14 +74,15 @@ Prepared prepare(const Config& root, const RunOptions& options) {
   p.system = build_system(root.table("system"));
   p.potential = potentials::make_potential(root.table("potential"), case_dir, p.system.atoms.ntypes());
   Atoms& atoms = p.system.atoms;
-  for (int t = 0; t < atoms.ntypes(); ++t) {
-    if (atoms.mass[t] > 0) continue;
-    const auto m = potentials::potential_type_mass(*p.potential, t);
-    if (!m) root.table("system").fail("masses", fmt::format("no mass for atom type {} (give masses = [...])", t + 1));
-    atoms.mass[t] = *m;
-  }
+  settle_types(root, p);
   p.potential->check_types(atoms);
   p.md = read_md_case(root);
+  const auto& fields = p.md.output.dump_fields;
+  if (p.md.output.dump_every > 0 && std::find(fields.begin(), fields.end(), "element") != fields.end())
+    for (int t = 0; t < atoms.ntypes(); ++t)
+      if (atoms.type_names[static_cast<std::size_t>(t)].empty())
+        root.table("output").fail("dump_fields", fmt::format("the element column needs an element name for atom type {}: "
+                                                             "give [system] elements = [...] (or use a potential file that names them)", t + 1));
   if (options.piston_speed) {  // `shockfield hugoniot --speeds`: one run per piston speed
     for (StageSpec& s : p.md.stages)
       if (s.piston) s.piston->speed = *options.piston_speed;
@@ -165,6 +193,7 @@ class MdMethod final : public Method {
     for (std::size_t k = 0; k < p_.md.velocity_adds.size(); ++k)
       add_velocity(sim_->atoms, p_.md.velocity_adds[k].velocity, p_.add_groups[k]);
     output_.emplace(run.folder, p_.md.output, std::nullopt);
+    for (const auto& note : p_.notes) run.log.info("note: {}", note);
     begin_pending();
   }
   void resume(RunContext& run) override {
@@ -212,7 +241,9 @@ class MdMethod final : public Method {
   }
   void write_final_outputs() override {
     while (k_ < stages().size()) finish_stage();
-    io::write_data(run_->folder / "final.data", sim_->box, sim_->atoms);
+    io::DataWriteOptions data;
+    data.shrink_margin = sim_->shrink_margin;
+    io::write_data(run_->folder / "final.data", sim_->box, sim_->atoms, data);
   }
   void log_results(double) override {
     run_->log.info("finished: {} steps; final configuration in {}", sim_->step, (run_->folder / "final.data").string());

@@ -129,13 +129,15 @@ void RunOutput::write_dump(const Simulation& sim) const {
   for (const auto& f : spec_.dump_fields)
     if (!is_computed(f)) basic.push_back(f);
   io::DumpFrame frame = io::make_dump_frame(sim.step, sim.box, sim.atoms, basic);
+  if (spec_.dump_time) frame.time = sim.time;
   for (const auto& f : spec_.dump_fields)
     if (is_computed(f)) frame.set_column(f, computed_column(sim, f));
   const std::string ext = spec_.dump_format == "extxyz" ? "xyz" : "lammpstrj";
-  const fs::path file = folder_ / "dumps" / fmt::format("dump.{}.{}", sim.step, ext);
+  const fs::path file = folder_ / "dumps" / fmt::format("dump.{:0{}}.{}", sim.step, spec_.dump_pad, ext);
   io::CheckedOutput out(file);
-  if (spec_.dump_format == "extxyz") io::write_extxyz_frame(out.stream(), frame, sim.atoms.type_names);
-  else io::write_dump_frame(out.stream(), frame, {spec_.dump_full_precision});
+  const io::DumpWriteOptions options{spec_.dump_full_precision};
+  if (spec_.dump_format == "extxyz") io::write_extxyz_frame(out.stream(), frame, sim.atoms.type_names, options);
+  else io::write_dump_frame(out.stream(), frame, options);
   out.close();
 }
 

@@ -8,6 +8,7 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/units.hpp"
+#include "shockfield/geometry/shrink_wrap.hpp"
 #include "shockfield/md/force_evaluation.hpp"
 #include "shockfield/md/ghosts.hpp"
 
@@ -20,22 +21,10 @@ using units::metal::nktv2p;
 Simulation::Simulation(geometry::Box box_, Atoms atoms_, std::unique_ptr<Potential> potential_,
                        double timestep, double skin_)
     : box(std::move(box_)), atoms(std::move(atoms_)), potential(std::move(potential_)), dt(timestep),
-      skin(skin_) {}
+      skin(skin_), shrink_margin(geometry::shrink_margin(box)) {}
 
 void Simulation::shrink_wrap() {
-  if (atoms.nlocal == 0) return;
-  for (int d = 0; d < 3; ++d) {
-    if (box.boundary[d] != geometry::Boundary::shrink) continue;
-    double lo = atoms.x[0][d], hi = lo;
-    for (std::size_t i = 1; i < atoms.nlocal; ++i) {
-      lo = std::min(lo, atoms.x[i][d]);
-      hi = std::max(hi, atoms.x[i][d]);
-    }
-    // LAMMPS pads shrink-wrapped faces by a small fraction so no atom sits on a face.
-    const double pad = 1e-4 * std::max(hi - lo, 1.0);
-    box.lo[d] = lo - pad;
-    box.hi[d] = hi + pad;
-  }
+  geometry::shrink_wrap(box, std::span<const Vec3>(atoms.x.data(), atoms.nlocal), shrink_margin);
 }
 
 void Simulation::rebuild() {

@@ -36,6 +36,9 @@ class Simulation {
   ForceResult forces;
   double dt;              ///< ps
   double skin;            ///< Å
+  /// Å, the pad of shrink-wrapped faces: 1e-4 × the box length the simulation was created with
+  /// (LAMMPS Domain::small, set by create_box / read_data and kept while the box changes).
+  Vec3 shrink_margin;
   std::int64_t step = 0;
   double time = 0;        ///< ps
   std::vector<std::unique_ptr<Fix>> fixes;

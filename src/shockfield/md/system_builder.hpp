@@ -18,6 +18,10 @@ struct BuiltSystem {
   geometry::Box box;
   Atoms atoms;        ///< owned atoms, ids 1..N (lattice) or as in the data file; masks set
   GroupTable groups;  ///< "all" plus the [[system.group]] names, bits as in atoms.mask
+  /// The data file's Masses per type (0 where it gives none; empty for a lattice). They are not
+  /// in atoms.mass: as in LAMMPS, where pair_coeff sets the potential file's masses after
+  /// read_data, the potential's mass wins and the data file's is the fallback (md/run_case.cpp).
+  std::vector<double> file_masses;
 };
 
 /// Reads and validates the [system] table and builds the system; InputError naming file, key and

@@ -2,6 +2,7 @@
 // written back byte for byte; round trips; comments; every kind of malformed input.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -99,6 +100,47 @@ TEST(LammpsData, CommentsBlankLinesSkippedSectionsAndWrapping) {
   EXPECT_EQ(d.atoms.x[0], Vec3(9, 2, 3));  // remapped into the periodic box, as read_data does
   EXPECT_EQ(d.atoms.image[0], (std::array<int, 3>{-1, 0, 0}));
   EXPECT_EQ(d.atoms.x[1], Vec3(0, 2, 10));  // x wraps at the periodic hi face; z = zhi is inside
+}
+
+// LAMMPS write_data semantics: the positions wrapped into the periodic box and the shrink-wrapped
+// dimension reset to the atoms (padded by the margin) before writing, so that LAMMPS read_data and
+// read_data() assign every atom. Before, the box was written as given: an atom that had moved
+// past a shrink-wrapped face since the last neighbour rebuild made the file unreadable.
+TEST(LammpsData, WriteResetsAShrinkWrappedBoxToTheAtoms) {
+  md::Atoms atoms;
+  atoms.mass = {63.546};
+  atoms.add(Vec3(10.5, 2, -0.5), 0, 1);  // past the periodic x face and the stale z face
+  atoms.add(Vec3(3, 4, 12.25), 0, 2);    // past the stale z hi face
+  geometry::Box box;
+  box.hi = Vec3(10, 10, 10);
+  box.boundary = {Boundary::periodic, Boundary::periodic, Boundary::shrink};
+  const md::Atoms before = atoms;
+  const std::string path = testing::TempDir() + "shrink.data";
+  write_data(path, box, atoms, {.shrink_margin = Vec3(0, 0, 0.25)});
+  EXPECT_EQ(atoms.x, before.x);  // the caller's atoms and box are not changed
+  EXPECT_EQ(box.hi.z(), 10.0);
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));  // written through a temporary + rename
+  const DataFile d = read_data(path, box.boundary);
+  ASSERT_EQ(d.atoms.nlocal, 2u);
+  EXPECT_EQ(d.box.lo.z(), -0.75);
+  EXPECT_EQ(d.box.hi.z(), 12.5);
+  EXPECT_EQ(d.box.hi.x(), 10.0);
+  EXPECT_EQ(d.atoms.x[0], Vec3(0.5, 2, -0.5));
+  EXPECT_EQ(d.atoms.image[0], (std::array<int, 3>{1, 0, 0}));
+  // The default margin: 1e-4 × the length of the box given (LAMMPS Domain::small).
+  write_data(path, box, atoms);
+  EXPECT_DOUBLE_EQ(read_data(path, box.boundary).box.lo.z(), -0.5 - 1e-3);
+}
+
+// LAMMPS read_data grows a shrink-wrapped dimension by 1e-4 × its length on each side before it
+// assigns the atoms (Domain::set_initial_box); an atom inside that margin is read, one beyond it
+// is refused, and a fixed dimension has no margin.
+TEST(LammpsData, ReadAcceptsAtomsWithinTheShrinkWrapMargin) {
+  const std::string text = head + "\nAtoms\n\n1 1 0 0 0\n2 1 1 1 10.0009\n";  // margin 1e-3
+  const std::array<Boundary, 3> pps{Boundary::periodic, Boundary::periodic, Boundary::shrink};
+  EXPECT_EQ(read_data(temp_file("margin.data", text), pps).atoms.nlocal, 2u);
+  expect_data_error(text, "outside the non-periodic box", ppf);
+  expect_data_error(head + "\nAtoms\n\n1 1 0 0 0\n2 1 1 1 10.0011\n", "shrink-wrapped: 0.001", pps);
 }
 
 TEST(LammpsData, MalformedInput) {

@@ -110,6 +110,35 @@ TEST(LammpsDump, FrameFromAtoms) {
   EXPECT_THROW(make_dump_frame(3, box, atoms, {"q"}), InputError);
 }
 
+// A dump LAMMPS wrote with an element column and the time (fixtures/io/dump_element.in:
+// dump_modify element Cu Ni time yes) is read, names numbered in the order met, and written back
+// byte for byte; a frame made from atoms names each type by atoms.type_names.
+TEST(LammpsDump, ElementColumnAndTimeAsLammpsWritesThem) {
+  const std::string path = "fixtures/io/dump_element.lammpstrj";
+  const auto frames = read_dump(path);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].element_names, (std::vector<std::string>{"Cu", "Ni"}));
+  EXPECT_EQ(frames[0].column("element")[1], 2.0);  // atom 2 is type 2, Ni
+  EXPECT_EQ(frames[0].column("type")[1], 2.0);
+  ASSERT_TRUE(frames[1].time);
+  EXPECT_DOUBLE_EQ(*frames[1].time, 0.01);  // 5 steps of 2 fs
+  std::ostringstream out;
+  for (const auto& frame : frames) write_dump_frame(out, frame);
+  EXPECT_EQ(out.str(), slurp(path));
+
+  md::Atoms atoms;
+  atoms.mass = {1.0, 2.0};
+  atoms.type_names = {"Cu", "Ni"};
+  atoms.add(Vec3(0.5, 1.5, 2.5), 1, 7);
+  geometry::Box box;
+  const DumpFrame f = make_dump_frame(3, box, atoms, {"id", "element", "x", "y", "z"});
+  std::ostringstream one;
+  write_dump_frame(one, f);
+  EXPECT_NE(one.str().find("ITEM: ATOMS id element x y z\n7 Ni 0.5 1.5 2.5\n"), std::string::npos) << one.str();
+  atoms.type_names = {"Cu", ""};
+  EXPECT_THROW(make_dump_frame(3, box, atoms, {"element"}), InputError);  // type 2 has no name
+}
+
 TEST(LammpsDump, ScaledPositions) {
   std::istringstream in(header + "ITEM: ATOMS id xs ys zs\n1 0.5 0 1\n2 0.25 0.5 0\n");
   const auto f = read_dump(in, "s.dump").at(0);

@@ -56,3 +56,25 @@ TEST(Deform, BoxAndAtomsFollowTheStrainRate) {
     EXPECT_NEAR(s.atoms.x[5][d], centre + (x0[d] - centre) * (1 + rate[d] * t), 1e-9);
   }
 }
+
+// The shrink-wrap margin is LAMMPS's Domain::small: 1e-4 × the box length the simulation was
+// created with, kept as the atoms spread (not 1e-4 × the atoms' extent, which it was before).
+TEST(ShrinkWrap, MarginIsOneTenThousandthOfTheInitialBoxLength) {
+  geometry::Box box;
+  box.lo = Vec3(0, 0, -10);
+  box.hi = Vec3(20, 20, 30);  // z: 40 Å long → margin 4e-3 Å; the atoms span 9 Å
+  box.boundary = {geometry::Boundary::periodic, geometry::Boundary::periodic, geometry::Boundary::shrink};
+  Atoms atoms;
+  atoms.mass = {63.55};
+  atoms.add(Vec3(5, 5, 0), 0, 1, Vec3(0, 0, -1.0));
+  atoms.add(Vec3(5, 5, 9.0), 0, 2);
+  Simulation s(box, std::move(atoms), fixture::argon_lj(), 0.01, 1.0);
+  s.fixes.push_back(std::make_unique<FixNve>());
+  s.setup(false);
+  EXPECT_DOUBLE_EQ(s.box.lo.z(), 0 - 4e-3);
+  EXPECT_DOUBLE_EQ(s.box.hi.z(), 9 + 4e-3);
+  EXPECT_EQ(s.box.lo.x(), 0.0);  // periodic: untouched
+  for (int k = 0; k < 80; ++k) s.advance([](std::int64_t) { return false; });  // atom 1 moves 0.8 Å down
+  s.rebuild();
+  EXPECT_NEAR(s.box.lo.z(), s.atoms.x[0].z() - 4e-3, 1e-12);
+}

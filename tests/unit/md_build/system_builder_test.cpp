@@ -90,7 +90,11 @@ elements = ["Cu", "Ni"]
   EXPECT_EQ(s.atoms.type_names[1], "Ni");
   EXPECT_EQ(s.atoms.v[0].x(), -0.5647194065870035);
   const BuiltSystem from_file = build("[system]\ndata_file = \"data_fcc.data\"\n");
-  EXPECT_EQ(from_file.atoms.mass, (std::vector<double>{63.546, 58.6934}));  // the Masses section
+  // The Masses section is the fallback after the potential file's masses (LAMMPS: pair_coeff
+  // sets them after read_data), so it is kept aside and the types start without a mass.
+  EXPECT_EQ(from_file.file_masses, (std::vector<double>{63.546, 58.6934}));
+  EXPECT_EQ(from_file.atoms.mass, (std::vector<double>{0.0, 0.0}));
+  EXPECT_EQ(s.file_masses, from_file.file_masses);
 }
 
 TEST(SystemBuilder, TypesWithoutMassKeepZero) {

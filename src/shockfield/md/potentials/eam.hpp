@@ -35,6 +35,8 @@ class EamPotential final : public Potential {
   const EamTables& tables() const { return tables_; }
   /// The mass of atom type t (0-based) given by the potential file, amu.
   double type_mass(int t) const { return tables_.type_mass[static_cast<std::size_t>(t)]; }
+  /// The element of each atom type named by the potential file ("" where it names none).
+  const std::vector<std::string>& type_names() const { return type_names_; }
   /// Electron density at each owned atom after the last compute().
   const std::vector<double>& density() const { return rho_; }
 

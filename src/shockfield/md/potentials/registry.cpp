@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
 #include <functional>
 #include <utility>
 
@@ -116,9 +117,21 @@ std::optional<double> potential_type_mass(const Potential& potential, int t) {
   return std::nullopt;
 }
 
+std::optional<std::string> potential_type_element(const Potential& potential, int t) {
+  if (const auto* eam = dynamic_cast<const EamPotential*>(&potential)) {
+    const auto& names = eam->type_names();
+    if (static_cast<std::size_t>(t) < names.size() && !names[static_cast<std::size_t>(t)].empty())
+      return names[static_cast<std::size_t>(t)];
+  }
+  return std::nullopt;
+}
+
 std::filesystem::path find_potential_file(const Config& table, std::string_view key,
                                           const std::filesystem::path& case_dir) {
-  return table.get_input_file(key, {case_dir, lammps_potential_dir});
+  std::vector<std::filesystem::path> folders{case_dir};
+  if (const char* env = std::getenv("LAMMPS_POTENTIALS"); env && *env) folders.emplace_back(env);
+  folders.push_back(lammps_potential_dir);
+  return table.get_input_file(key, folders);
 }
 
 }  // namespace shockfield::md::potentials

@@ -4,7 +4,7 @@
 //   [potential]                       # EAM: one LAMMPS potential file
 //   style = "eam/alloy"               # "eam" (funcfl), "eam/alloy" (setfl), "eam/fs", "lj/cut"
 //   file = "CuNi.eam.alloy"           # relative to the case file's folder, then
-//                                     # /usr/share/lammps/potentials
+//                                     # $LAMMPS_POTENTIALS, /usr/share/lammps/potentials
 //   elements = ["Cu", "Ni"]           # eam/alloy, eam/fs: element of atom types 1..n
 //                                     # (LAMMPS `pair_coeff * * CuNi.eam.alloy Cu Ni`)
 //
@@ -47,10 +47,15 @@ std::vector<std::string> potential_styles();
 
 /// The mass the potential file gives atom type t (0-based), if the potential has masses (EAM).
 std::optional<double> potential_type_mass(const Potential& potential, int t);
+/// The element the potential file names for atom type t (0-based): eam/alloy and eam/fs files.
+std::optional<std::string> potential_type_element(const Potential& potential, int t);
 
-/// The file named by string `key` of `table`: as given if absolute, else case_dir/name, else
-/// lammps_potential_dir/name; fails on `key` listing the places it looked when none exists. Read
-/// through Config::get_input_file, so the file reaches the run's provenance.
+/// The file named by string `key` of `table`: as given if absolute, else case_dir/name; else, as
+/// LAMMPS does (utils::get_potential_file_path), in the folder of the environment variable
+/// LAMMPS_POTENTIALS when it is set; else in lammps_potential_dir. (LAMMPS looks there for the
+/// file's name without its folders, also for an absolute name; here a relative name is looked up
+/// as given.) Fails on `key` listing the places it looked when none exists. Read through Config::get_input_file, so the file
+/// reaches the run's provenance.
 std::filesystem::path find_potential_file(const Config& table, std::string_view key,
                                           const std::filesystem::path& case_dir);
 
