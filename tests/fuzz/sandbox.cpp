@@ -123,6 +123,7 @@ const char* kind_name(Outcome::Kind k) {
     case Outcome::Kind::timed_out: return "TIMED OUT";
     case Outcome::Kind::too_much_output: return "TOO MUCH OUTPUT";
     case Outcome::Kind::non_finite_output: return "NON-FINITE OUTPUT";
+    case Outcome::Kind::invalid_output: return "INVALID OUTPUT";
   }
   return "?";
 }

@@ -33,6 +33,7 @@ struct Outcome {
     timed_out,     ///< killed at the time bound
     too_much_output,
     non_finite_output,  ///< exit 0, but a result file holds nan or inf (a target's own check)
+    invalid_output,     ///< exit 0, but a result file is refused by its own reader (a target's own check)
   };
   Kind kind = Kind::accepted;
   int detail = 0;       ///< exit code or signal

@@ -17,8 +17,9 @@ root="$(cd "$(dirname "$0")/../.." && pwd)"
 # for it); the run-time diagnoses of the code under test (exit 2, 3) are not.
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:exitcode=86"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-targets="case_check case_run eam_funcfl eam_setfl eam_fs data points atoms atoms_gz hugoniot
-         checkpoint checkpoint_mpm checkpoint_pd checkpoint_dbm checkpoint_granular checkpoint_phasefield"
+targets="case_check case_check_examples case_run eam_funcfl eam_setfl eam_fs data points atoms atoms_gz hugoniot
+         checkpoint checkpoint_mpm checkpoint_pd checkpoint_dbm checkpoint_granular checkpoint_phasefield
+         resume_case material_file bridge_eos bridge_elastic"
 start=$SECONDS
 status=0
 log="$work/replay.log"

@@ -72,10 +72,12 @@ Measured from_constants(const ElasticOptions& o) {
   const Config t = Config::load(*o.constants);
   Measured m;
   m.source = fs::absolute(*o.constants);
-  m.c.a0 = t.get_double("a0_A", Range::positive());
-  m.c.c11 = t.get_double("c11_GPa", Range::positive());
-  m.c.c12 = t.get_double("c12_GPa");
-  m.c.c44 = t.get_double("c44_GPa", Range::positive());
+  // Bounds a crystal can have (and the products below stay finite): lattice constants of 0.5-50 Å
+  // (the elements' are 2.5-6.5 Å), elastic constants within 10 TPa (diamond's C11 is 1.08 TPa).
+  m.c.a0 = t.get_double("a0_A", Range::closed(0.5, 50.0));
+  m.c.c11 = t.get_double("c11_GPa", {0.0, 1e4, true, false});
+  m.c.c12 = t.get_double("c12_GPa", Range::closed(-1e4, 1e4));
+  m.c.c44 = t.get_double("c44_GPa", {0.0, 1e4, true, false});
   if (t.has("cohesive_energy_eV")) m.c.cohesive_energy = t.get_double("cohesive_energy_eV");
   if (t.has("strain")) t.get_double("strain", Range::positive());
   t.check_unknown_keys();
@@ -148,7 +150,7 @@ void add_bridge_elastic_command(CLI::App& bridge, const std::vector<std::string>
   cmd->add_option("--element", o->element, "Element (eam/alloy, eam/fs)")->capture_default_str();
   cmd->add_option("--lattice", o->lattice, "Cubic lattice")->check(CLI::IsMember({"sc", "bcc", "fcc", "diamond"}))->capture_default_str();
   cmd->add_option("--a0", o->a0, "Starting lattice constant, A (relaxed to zero pressure)")->check(CLI::PositiveNumber);
-  cmd->add_option("--mass", o->mass, "Atomic mass, amu (default: the potential file's)")->check(CLI::PositiveNumber);
+  cmd->add_option("--mass", o->mass, "Atomic mass, amu (default: the potential file's)")->check(CLI::Range(1e-3, 1e4));
   cmd->add_option("--repeat", o->repeat, "Periodic repeats of the cell along each axis")->check(CLI::Range(2, 20))->capture_default_str();
   cmd->add_option("--constants", o->constants, "TOML with a0_A, c11_GPa, c12_GPa, c44_GPa instead of running MD")
       ->check(CLI::ExistingFile);
