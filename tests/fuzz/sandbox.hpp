@@ -39,7 +39,7 @@ struct Outcome {
   int detail = 0;       ///< exit code or signal
   std::string message;  ///< the error message (in-process) or the child's stderr, cut at 4 kB
   double seconds = 0;
-  bool sanitizer_report = false;  ///< "runtime error:" or "Sanitizer" on stderr
+  bool sanitizer_report = false;  ///< "runtime error:" or "==ERROR: ...Sanitizer" on stderr
 };
 
 const char* kind_name(Outcome::Kind k);
