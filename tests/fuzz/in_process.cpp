@@ -10,7 +10,9 @@
 #include "shockfield/io/lammps_data.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 #include "shockfield/md/case_file.hpp"
+#include "shockfield/materials/material_file.hpp"
 #include "shockfield/md/potentials/eam_file.hpp"
+#include "shockfield/pd/point_cloud.hpp"
 #include "shockfield/phasefield/case_file.hpp"
 
 namespace shockfield::fuzz {
@@ -49,6 +51,17 @@ void parse_case(const fs::path& file) {
   else if (method == "phasefield") phasefield::read_phasefield_case(root);
   else return;  // mpm, pd, dbm: their case readers build the simulation (the binary fuzzers' part)
   root.check_unknown_keys();
+}
+
+void parse_pd_cloud(const fs::path& file) {
+  const std::string name = file.filename().string();
+  const int dim = name.find("_1d") != std::string::npos ? 1 : name.find("_2d") != std::string::npos ? 2 : 3;
+  pd::read_cloud(file, dim, 1e-3).bounds();
+}
+
+void parse_material(const fs::path& file) {
+  const materials::MaterialFile m = materials::MaterialFile::load(file);
+  for (const materials::MaterialKey& k : materials::material_keys()) m.get(k.name);
 }
 
 void parse_checkpoint(const fs::path& file) { io::CheckpointReader(file).count("step"); }

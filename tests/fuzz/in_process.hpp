@@ -20,6 +20,10 @@ void parse_points(const std::filesystem::path& file);
 /// A case file: the TOML, then the case reader of its method where it needs no simulation
 /// (md, granular, phasefield), then the check for keys nobody read.
 void parse_case(const std::filesystem::path& file);
+/// A PD point cloud (pd::read_cloud): cloud_<d>d.txt as a d-dimensional body, then its bounds.
+void parse_pd_cloud(const std::filesystem::path& file);
+/// A material file (materials::MaterialFile::load) and every value it gives.
+void parse_material(const std::filesystem::path& file);
 /// A checkpoint: checksum verified (every item read), then its step counter.
 void parse_checkpoint(const std::filesystem::path& file);
 

@@ -33,12 +33,13 @@ struct Outcome {
     timed_out,     ///< killed at the time bound
     too_much_output,
     non_finite_output,  ///< exit 0, but a result file holds nan or inf (a target's own check)
+    invalid_output,     ///< exit 0, but a result file is refused by its own reader (a target's own check)
   };
   Kind kind = Kind::accepted;
   int detail = 0;       ///< exit code or signal
   std::string message;  ///< the error message (in-process) or the child's stderr, cut at 4 kB
   double seconds = 0;
-  bool sanitizer_report = false;  ///< "runtime error:" or "Sanitizer" on stderr
+  bool sanitizer_report = false;  ///< "runtime error:" or "==ERROR: ...Sanitizer" on stderr
 };
 
 const char* kind_name(Outcome::Kind k);

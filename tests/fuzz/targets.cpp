@@ -7,7 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "file_targets.hpp"
 #include "in_process.hpp"
+#include "target_helpers.hpp"
 
 namespace shockfield::fuzz {
 namespace {
@@ -15,23 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kPotentials = "/usr/share/lammps/potentials";
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error(fmt::format("{}: cannot read a fuzz input", file.string()));
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_text(const fs::path& file, const std::string& text) {
-  std::ofstream(file, std::ios::binary) << text;
-}
-
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (auto p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size())) s.replace(p, from.size(), to);
-  return s;
-}
 
 std::vector<fs::path> sorted_glob(const fs::path& dir, const std::string& file_name) {
   std::vector<fs::path> out;
@@ -58,14 +43,6 @@ struct EamCase {
   }
 };
 
-Outcome run_case(const Context& c, const fs::path& case_file, const fs::path& work,
-                 std::vector<std::string> extra) {
-  std::vector<std::string> argv{c.shockfield.string(), "run", case_file.string(), "--output",
-                                (work / "out").string(), "-q", "-j", "1"};
-  argv.insert(argv.end(), extra.begin(), extra.end());
-  return run_program(argv, work, c.limits);
-}
-
 Target eam_target(const Context& c, const std::string& name, const fs::path& input, EamCase eam) {
   return {name, {input}, false, false, "case.toml", [c, eam](const fs::path& file, const fs::path& work) {
             write_text(work / "case.toml", eam.text(c, file));
@@ -73,22 +50,9 @@ Target eam_target(const Context& c, const std::string& name, const fs::path& inp
           }};
 }
 
-// A run folder of `case_file` stopped after `steps` steps (exit 130, a checkpoint written): the
-// checkpoint target's input, and every mutant resumes a copy of the folder.
-fs::path checkpoint_base(const Context& c, const std::string& name, const fs::path& case_file, int steps) {
-  const fs::path base = c.work / ("base_" + name);
-  fs::remove_all(base);  // made anew by every fuzz run: the binary (and its format) may have changed
-  fs::create_directories(base);
-  fs::copy_file(case_file, base / "case.toml");
-  const Outcome o = run_case(c, base / "case.toml", base, {"--stop-after", std::to_string(steps)});
-  if (!fs::exists(base / "out/checkpoint.h5"))
-    throw std::runtime_error(fmt::format("the {} fuzz target's base run wrote no checkpoint ({}): {}", name,
-                                         kind_name(o.kind), o.message));
-  return base;
-}
-
+// Every mutant of the checkpoint resumes a copy of the stopped run folder.
 Target checkpoint_target(const Context& c, const std::string& name, const fs::path& case_file, int steps) {
-  const fs::path base = checkpoint_base(c, name, case_file, steps);
+  const fs::path base = stopped_run(c, name, case_file, steps);
   return {name, {base / "out/checkpoint.h5"}, true, false, "", [c, base](const fs::path& file, const fs::path& work) {
             fs::copy(base / "out", work / "out", fs::copy_options::recursive);
             fs::copy_file(file, work / "out/checkpoint.h5", fs::copy_options::overwrite_existing);
@@ -166,6 +130,18 @@ std::vector<fs::path> case_inputs(const Context& c) {
   return cases;
 }
 
+// The examples' other case files (PD bars and crystals, granular chains, macroparticle rods, ...):
+// every examples/*/*.toml but case.toml with a `method = ` line.
+std::vector<fs::path> example_case_inputs(const Context& c) {
+  std::vector<fs::path> cases;
+  for (const auto& dir : fs::directory_iterator(c.source / "examples"))
+    if (dir.is_directory())
+      for (const auto& p : sorted_glob(dir.path(), ""))
+        if (p.filename() != "case.toml" && read_text(p).find("\nmethod = ") != std::string::npos) cases.push_back(p);
+  std::sort(cases.begin(), cases.end());
+  return cases;
+}
+
 std::vector<fs::path> field_inputs(const Context& c) {
   std::vector<fs::path> fields;
   for (const char* f : {"grid.csv", "two_disks.csv", "ascii.vti", "binary.vti", "raw.vti",
@@ -179,6 +155,16 @@ std::vector<fs::path> point_inputs(const Context& c) {
   for (const char* f : {"cube.csv", "pairs.txt", "tet.xyz", "atoms.dump"})
     points.push_back(c.source / "tests/fixtures/fuzz/inputs/points" / f);
   return points;
+}
+
+std::vector<fs::path> pd_cloud_inputs(const Context& c) {
+  const fs::path dir = c.source / "tests/fixtures/fuzz/inputs/pd_cloud";
+  return {dir / "cloud_1d.txt", dir / "cloud_2d.txt", dir / "cloud_3d.txt"};
+}
+
+std::vector<fs::path> material_inputs(const Context& c) {
+  const fs::path dir = c.source / "tests/fixtures/fuzz/inputs/material";
+  return {dir / "mpm_cu.toml", dir / "pd_cu.toml"};
 }
 
 std::vector<fs::path> dump_inputs(const Context& c) {
@@ -198,7 +184,9 @@ std::vector<Target> parser_targets(const Context& c) {
           in_process(c, "field", field_inputs(c), parse_field),
           in_process(c, "points", point_inputs(c), parse_points),
           in_process(c, "checkpoint", {c.source / "tests/fixtures/fuzz/inputs/checkpoint/checkpoint.h5"},
-                     parse_checkpoint, true)};
+                     parse_checkpoint, true),
+          in_process(c, "pd_cloud", pd_cloud_inputs(c), parse_pd_cloud),
+          in_process(c, "material_parse", material_inputs(c), parse_material)};
 }
 
 std::vector<Target> all_targets(const Context& c, const std::vector<std::string>& names) {
@@ -208,10 +196,12 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
   };
   std::vector<Target> t;
   // Case files of every method: validation only (examples can be large runs).
-  t.push_back({"case_check", case_inputs(c), false, true, "", [c](const fs::path& file, const fs::path& work) {
-                 return run_program({c.shockfield.string(), "run", file.string(), "--check", "--output",
-                                     (work / "out").string(), "-q"}, work, c.limits);
-               }});
+  const auto check = [c](const fs::path& file, const fs::path& work) {
+    return run_program({c.shockfield.string(), "run", file.string(), "--check", "--output", (work / "out").string(), "-q"},
+                       work, c.limits);
+  };
+  t.push_back({"case_check", case_inputs(c), false, true, "", check});
+  t.push_back({"case_check_examples", example_case_inputs(c), false, true, "", check});
   // The small cases of the command-line tests, run for five steps: the MD one (case_run_md),
   // and those of every method (case_run).
   const auto run_five = [c](const fs::path& file, const fs::path& work) {
@@ -252,6 +242,8 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
   for (const auto& [method, file, steps] : kCheckpointCases)
     if (wanted("checkpoint_" + std::string(method)))
       t.push_back(checkpoint_target(c, "checkpoint_" + std::string(method), cli_cases / file, steps));
+  t.push_back(in_process(c, "pd_cloud", pd_cloud_inputs(c), parse_pd_cloud));
+  for (Target& x : file_targets(c, wanted)) t.push_back(std::move(x));
   return t;
 }
 

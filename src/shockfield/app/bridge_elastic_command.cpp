@@ -33,10 +33,12 @@ MeasuredCrystal from_constants(const ElasticOptions& o) {
   const Config t = Config::load(*o.constants);
   MeasuredCrystal m;
   m.source = fs::absolute(*o.constants);
-  m.c.a0 = t.get_double("a0_A", Range::positive());
-  m.c.c11 = t.get_double("c11_GPa", Range::positive());
-  m.c.c12 = t.get_double("c12_GPa");
-  m.c.c44 = t.get_double("c44_GPa", Range::positive());
+  // Bounds a crystal can have (and the products below stay finite): lattice constants of 0.5-50 Å
+  // (the elements' are 2.5-6.5 Å), elastic constants within 10 TPa (diamond's C11 is 1.08 TPa).
+  m.c.a0 = t.get_double("a0_A", Range::closed(0.5, 50.0));
+  m.c.c11 = t.get_double("c11_GPa", {0.0, 1e4, true, false});
+  m.c.c12 = t.get_double("c12_GPa", Range::closed(-1e4, 1e4));
+  m.c.c44 = t.get_double("c44_GPa", {0.0, 1e4, true, false});
   if (t.has("cohesive_energy_eV")) m.c.cohesive_energy = t.get_double("cohesive_energy_eV");
   if (t.has("strain")) t.get_double("strain", Range::positive());
   t.check_unknown_keys();

@@ -94,9 +94,11 @@ RunPoint read_run(const fs::path& folder) {
   const Config h = Config::load(p.hugoniot);
   if (!h.get_bool("complete"))
     h.fail("complete", fmt::format("false: no complete Hugoniot state ({})", h.get_string_or("note", "")));
-  p.up = h.get_double("up_km_s", Range::positive());
-  p.us = h.get_double("us_km_s", Range::positive());
-  p.rho0 = h.get_double("density0_g_cc", Range::positive()) * 1e3;
+  // Speeds within 1000 km/s and densities within 0.001-1000 g/cm³ (a solid's are 0.5-23): beyond
+  // them the fit's sums of squares lose every digit or overflow.
+  p.up = h.get_double("up_km_s", {0.0, 1e3, true, false});
+  p.us = h.get_double("us_km_s", {0.0, 1e3, true, false});
+  p.rho0 = h.get_double("density0_g_cc", Range::closed(1e-3, 1e3)) * 1e3;
   h.get_double("piston_speed_km_s");
   p.config_sha256 = sha256_file_hex(resolved);
   return p;
@@ -108,6 +110,7 @@ struct PolyFit {
   Eigen::MatrixXd cov;
   double rms = 0;  ///< √(χ²/n), km/s
 };
+std::string sources(const std::vector<RunPoint>& pts);
 PolyFit fit_poly(const std::vector<RunPoint>& pts, int terms) {
   const auto n = static_cast<Eigen::Index>(pts.size());
   Eigen::MatrixXd x(n, terms);
@@ -119,8 +122,8 @@ PolyFit fit_poly(const std::vector<RunPoint>& pts, int terms) {
   const Eigen::MatrixXd normal = x.transpose() * x;
   Eigen::FullPivLU<Eigen::MatrixXd> lu(normal);
   if (!lu.isInvertible())
-    throw InputError(fmt::format("the {} Hugoniot points have too few distinct particle velocities (up_km_s) for a "
-                                 "fit with {} parameters", n, terms));
+    throw InputError(fmt::format("the {} Hugoniot points ({}) have too few distinct particle velocities (up_km_s) "
+                                 "for a fit with {} parameters", n, sources(pts), terms));
   PolyFit f;
   f.coef = lu.solve(x.transpose() * y);
   const double chi2 = (y - x * f.coef).squaredNorm();

@@ -18,7 +18,7 @@ void add_crystal_options(CLI::App& cmd, CrystalOptions& o) {
   cmd.add_option("--element", o.element, "Element (eam/alloy, eam/fs)")->capture_default_str();
   cmd.add_option("--lattice", o.lattice, "Cubic lattice")->check(CLI::IsMember({"sc", "bcc", "fcc", "diamond"}))->capture_default_str();
   cmd.add_option("--a0", o.a0, "Starting lattice constant, A (relaxed to zero pressure)")->check(CLI::PositiveNumber);
-  cmd.add_option("--mass", o.mass, "Atomic mass, amu (default: the potential file's)")->check(CLI::PositiveNumber);
+  cmd.add_option("--mass", o.mass, "Atomic mass, amu (default: the potential file's)")->check(CLI::Range(1e-3, 1e4));
   cmd.add_option("--repeat", o.repeat, "Periodic repeats of the cell along each axis")->check(CLI::Range(2, 20))->capture_default_str();
 }
 

@@ -91,8 +91,9 @@ bool segment_matches(std::string_view text, std::string_view pattern) {
 
 }  // namespace
 
-std::vector<CaseChange> diff_cases(std::string_view before_toml, std::string_view after_toml) {
-  const toml::table before = parse_case(before_toml, "the case stored at the checkpoint");
+std::vector<CaseChange> diff_cases(std::string_view before_toml, std::string_view after_toml,
+                                   std::string_view before_name) {
+  const toml::table before = parse_case(before_toml, std::string(before_name).c_str());
   const toml::table after = parse_case(after_toml, "the case given to --resume");
   Leaves a, b;
   collect_leaves(before, "", a);

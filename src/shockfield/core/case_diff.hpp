@@ -20,8 +20,9 @@ struct CaseChange {
 /// Every leaf value (a number, string, boolean, date or plain array) that differs, sorted by key.
 /// An integer and a float of the same value are equal (10 and 10.0); the top-level [derived] and
 /// [provenance] tables of a resolved configuration are ignored. A text that is not TOML is an
-/// InputError naming which of the two it is.
-std::vector<CaseChange> diff_cases(std::string_view before_toml, std::string_view after_toml);
+/// InputError naming which of the two it is (`before_name`: the file the first was read from).
+std::vector<CaseChange> diff_cases(std::string_view before_toml, std::string_view after_toml,
+                                   std::string_view before_name = "the case stored at the checkpoint");
 
 /// Whether `dotted_key` matches `pattern`, segment by segment: both are split at '.', and an index
 /// "[i]" counts as a segment of its own, so "stage[1].steps" matches "stage.*.steps" and

@@ -39,7 +39,7 @@ std::vector<CaseChange> check_resume_case(const Config& root, const RunOptions& 
   std::ifstream in(stored);
   std::stringstream text;
   text << in.rdbuf();
-  std::vector<CaseChange> changes = diff_cases(text.str(), root.case_toml());
+  std::vector<CaseChange> changes = diff_cases(text.str(), root.case_toml(), stored.string());
   const std::vector<std::string> safe = m.resume_safe_keys();
   const auto is_safe = [&](const CaseChange& c) {
     return std::any_of(safe.begin(), safe.end(), [&](const std::string& p) { return key_matches(c.key, p); });

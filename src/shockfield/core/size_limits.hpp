@@ -10,4 +10,10 @@ namespace shockfield {
 /// the machines this code runs on, and 10^3 times the largest example.
 inline constexpr double kMaxGridPoints = 1e9;
 
+/// Particles and points that carry a material state (MPM particles, PD points): 10^8. An MPM
+/// particle holds ~500 bytes (position, velocity, volumes, deformation and velocity gradients,
+/// stress and history), a PD point ~1 kB with its bonds, so 10^8 of them is 60-100 GB. Counted
+/// from the case (lattice points of a body) before any is made.
+inline constexpr double kMaxParticles = 1e8;
+
 }  // namespace shockfield

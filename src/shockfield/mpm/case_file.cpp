@@ -119,6 +119,14 @@ BodySpec read_body(const Config& b, const MpmCase& c, std::size_t index) {
   s.body.lo = read_vec(b, "lo", dim);
   s.body.hi = read_vec(b, "hi", dim);
   s.body.spacing = b.get_double_or("spacing", 0.5 * c.grid.cell_size[0], Range::positive());
+  // Its particles (the lattice points of the body, twice for a symmetric impact) before any is
+  // made: a spacing far below the body's size asked for more than any machine holds.
+  double points = c.loading == LoadingKind::Symmetric ? 2.0 : 1.0;
+  for (int a = 0; a < dim; ++a) points *= std::max(1.0, std::floor((s.body.hi[a] - s.body.lo[a]) / s.body.spacing));
+  if (!(points <= kMaxParticles))
+    b.fail("spacing", fmt::format("{} m: the body (lo to hi) would have {:.3g} particles, (hi - lo) / spacing "
+                                  "along each axis multiplied (expected at most {:.0e})",
+                                  s.body.spacing, points, kMaxParticles));
   if (c.loading == LoadingKind::None && b.has("velocity")) s.body.velocity = read_vec(b, "velocity", dim);
   if (b.has("porosity")) {
     VoidSpec v;

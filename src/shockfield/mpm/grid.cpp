@@ -25,18 +25,23 @@ void GridSpec::validate() const {
   }
 }
 
-Grid::Grid(const GridSpec& spec) : spec_(spec) {
+Grid::Grid(const GridSpec& spec, bool allocate_now) : spec_(spec) {
   spec_.validate();
   if (spec_.dim == 2) {
     spec_.cells[2] = 0;
     spec_.periodic[2] = false;
   }
   for (std::size_t a = 0; a < 3; ++a) nodes_[a] = spec_.periodic[a] ? spec_.cells[a] : spec_.cells[a] + 1;
-  const std::size_t n = static_cast<std::size_t>(nodes_[0]) * static_cast<std::size_t>(nodes_[1]) *
-                        static_cast<std::size_t>(nodes_[2]);
-  mass.assign(n, 0.0);
-  momentum.assign(n, Vec3::Zero());
-  force.assign(n, Vec3::Zero());
+  size_ = static_cast<std::size_t>(nodes_[0]) * static_cast<std::size_t>(nodes_[1]) *
+          static_cast<std::size_t>(nodes_[2]);
+  if (allocate_now) allocate();
+}
+
+void Grid::allocate() {
+  if (mass.size() == size_) return;
+  mass.assign(size_, 0.0);
+  momentum.assign(size_, Vec3::Zero());
+  force.assign(size_, Vec3::Zero());
 }
 
 std::array<int, 3> Grid::unflatten(std::size_t n) const {

@@ -29,13 +29,18 @@ struct GridSpec {
 
 class Grid {
  public:
-  explicit Grid(const GridSpec& spec);
+  /// The nodal fields are allocated now, or (`allocate` false) by the first allocate(): a
+  /// Simulation defers them to its first step, so that `shockfield run --check` never allocates
+  /// the grid (docs/robustness.md).
+  explicit Grid(const GridSpec& spec, bool allocate = true);
+  /// Sizes mass, momentum and force to size() nodes (zero) unless they are already.
+  void allocate();
 
   const GridSpec& spec() const { return spec_; }
   int dim() const { return spec_.dim; }
   /// Nodes along an axis.
   int nodes(int axis) const { return nodes_[static_cast<std::size_t>(axis)]; }
-  std::size_t size() const { return mass.size(); }
+  std::size_t size() const { return size_; }
   std::size_t flat(int i, int j, int k) const {
     return (static_cast<std::size_t>(k) * static_cast<std::size_t>(nodes_[1]) + static_cast<std::size_t>(j)) *
                static_cast<std::size_t>(nodes_[0]) + static_cast<std::size_t>(i);
@@ -83,6 +88,7 @@ class Grid {
 
   GridSpec spec_;
   std::array<int, 3> nodes_{};
+  std::size_t size_ = 0;
 };
 
 }  // namespace shockfield::mpm

@@ -19,7 +19,7 @@ void SimulationOptions::validate() const {
 
 Simulation::Simulation(const GridSpec& grid, std::vector<materials::SolidMaterial> materials, Particles particles,
                        SimulationOptions options)
-    : grid_(grid), materials_(std::move(materials)), particles_(std::move(particles)), options_(options) {
+    : grid_(grid, false), materials_(std::move(materials)), particles_(std::move(particles)), options_(options) {
   options_.validate();
   if (particles_.size() == 0) throw InputError("mpm: the simulation has no particles");
   for (const auto& m : materials_) m.validate();
@@ -41,9 +41,7 @@ Simulation::Simulation(const GridSpec& grid, std::vector<materials::SolidMateria
     min_mass = std::min(min_mass, particles_.mass[p]);
   }
   mass_floor_ = 1e-9 * min_mass;
-  node_velocity_.assign(grid_.size(), Vec3::Zero());
-  node_acceleration_.assign(grid_.size(), Vec3::Zero());
-  wrap_particles();
+  wrap_particles();  // the grid's fields are allocated by the first step (allocate_grid)
 }
 
 void Simulation::add_hook(Stage stage, Hook hook) { hooks_[static_cast<std::size_t>(stage)].push_back(std::move(hook)); }
@@ -80,6 +78,7 @@ void Simulation::step(double max_dt) {
                                steps_, options_.min_time_step));
   run_hooks(Stage::BeforeStep);
 
+  allocate_grid();
   transfer_.build(grid_, particles_, options_.shape);
   transfer_.to_grid(grid_, particles_);
   if (options_.heat_conduction) heat_.step(transfer_, grid_.size(), particles_, materials_, dt_);
@@ -103,6 +102,12 @@ void Simulation::step(double max_dt) {
   ++steps_;
   fastest_known_ = hooks_[static_cast<std::size_t>(Stage::EndOfStep)].empty();
   run_hooks(Stage::EndOfStep);
+}
+
+void Simulation::allocate_grid() {
+  grid_.allocate();
+  node_velocity_.resize(grid_.size(), Vec3::Zero());
+  node_acceleration_.resize(grid_.size(), Vec3::Zero());
 }
 
 void Simulation::run_until(double t_end) {

@@ -78,6 +78,8 @@ class Simulation {
   void run_hooks(Stage stage);
   /// C·Δx_min² / (2·d·α_max) with heat conduction, +∞ without.
   double conduction_time_step() const;
+  /// The grid's nodal fields and the nodal velocities and accelerations, at the first step.
+  void allocate_grid();
   void update_grid();
   /// v_i = (m v)_i / m_i and (with_acceleration) a_i = f_i / m_i; zero on nodes without mass.
   void nodal_velocities(bool with_acceleration);

@@ -7,12 +7,11 @@
 #include <cmath>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/materials/material_file.hpp"
 
 namespace shockfield::pd {
 namespace {
-
-constexpr double kMaxPoints = 1e8;  // ~100 GB of points and bonds: far beyond one machine
 
 BodySpec read_body(const Config& t) {
   BodySpec b;
@@ -25,12 +24,12 @@ BodySpec read_body(const Config& t) {
     t.fail("horizon_factor", fmt::format("{}: the horizon δ = {}·ΔX is smaller than the spacing, so a point has no "
                                          "neighbour on the lattice (expected >= 1)",
                                          b.horizon_factor, b.horizon_factor));
-  // Sane sizes, checked before the body is built: at most kMaxPoints points, a finite extent and
+  // Sane sizes, checked before the body is built: at most kMaxParticles points, a finite extent and
   // horizon (a spacing of 1e308 overflowed them to inf).
   double points = 1;
   for (int d = 0; d < b.dim; ++d) points *= static_cast<double>(b.counts[static_cast<std::size_t>(d)]);
-  if (points > kMaxPoints)
-    t.fail("counts", fmt::format("{:.3g} points; expected at most {:.0e}", points, kMaxPoints));
+  if (points > kMaxParticles)
+    t.fail("counts", fmt::format("{:.3g} points; expected at most {:.0e}", points, kMaxParticles));
   const int longest = *std::max_element(b.counts.begin(), b.counts.begin() + b.dim);
   if (!std::isfinite(b.spacing * longest * b.horizon_factor))
     t.fail("spacing", fmt::format("the body ({} points of {} m) or its horizon ({}·ΔX) is not finite",

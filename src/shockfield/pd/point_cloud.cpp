@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -64,7 +65,13 @@ PointCloud read_cloud(const std::filesystem::path& file, int dim, double spacing
     std::string extra;
     if (!(fields >> p[0] >> p[1] >> p[2] >> v) || (fields >> extra))
       throw InputError(fmt::format("{}:{}: expected 'x y z volume', got '{}'", file.string(), number, line));
-    if (!(v > 0.0)) throw InputError(fmt::format("{}:{}: volume {} (expected > 0)", file.string(), number, v));
+    // Finite and within 1e50 m (so that the extent, the cell lists and the volume sums stay finite).
+    if (!(v > 0.0 && v <= 1e50))
+      throw InputError(fmt::format("{}:{}: volume {} (expected > 0 and at most 1e50)", file.string(), number, v));
+    for (int d = 0; d < 3; ++d)
+      if (!(std::abs(p[d]) <= 1e50))
+        throw InputError(fmt::format("{}:{}: coordinate {} = {} (expected a number within +-1e50 m)", file.string(),
+                                     number, d, p[d]));
     for (int d = dim; d < 3; ++d)
       if (p[d] != 0.0)
         throw InputError(fmt::format("{}:{}: coordinate {} of a {}D body must be 0", file.string(), number, d, dim));

@@ -128,3 +128,22 @@ TEST(CrystalViscoplasticity, TaylorAverageOfRandomGrains) {
   EXPECT_LT(sigma, 1.3 * 3.06 * 16e6);
   RecordProperty("taylor_flow_stress_MPa", std::to_string(sigma / 1e6));
 }
+
+// A material far outside the model's range (C44 = 9.2e18 Pa, the material_file fuzz target, seed
+// 2, mutant 203) needs sub-increments so small that they never reached the end of the step: the
+// PD run hung. Now the update gives up after kMaxSubsteps with a NaN stress, which the run's
+// health check diagnoses (exit 3); an ordinary step still takes a handful.
+TEST(CrystalViscoplasticity, GivesUpAfterTheSubstepBoundInsteadOfHanging) {
+  CrystalViscoplasticity m = CrystalViscoplasticity::ofhc_copper();
+  m.c44 = 9.2e18;
+  auto s = m.initial_state(Mat3::Identity());
+  // Already strained at the start of the step: the explicit sub-increments start from its stress.
+  const Mat3 sigma = m.update(s, isochoric_compression(-0.01), isochoric_compression(-0.0101), 1e-9);
+  EXPECT_TRUE(sigma.array().isNaN().all());
+  EXPECT_EQ(s.substeps, CrystalViscoplasticity::kMaxSubsteps);
+
+  const CrystalViscoplasticity copper = CrystalViscoplasticity::ofhc_copper();
+  auto t = copper.initial_state(Mat3::Identity());
+  EXPECT_TRUE(copper.update(t, Mat3::Identity(), isochoric_compression(-1e-4), 1e-9).allFinite());
+  EXPECT_LT(t.substeps, 100);
+}

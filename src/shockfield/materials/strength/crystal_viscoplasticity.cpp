@@ -6,6 +6,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "shockfield/core/error.hpp"
 
@@ -54,7 +55,8 @@ Mat3 CrystalViscoplasticity::update(State& s, const Mat3& f_old, const Mat3& f_n
   const std::size_t n = systems.size();
   std::vector<double> rate(n), hardening_rate(n);
   double done = 0.0;
-  while (dt > 0.0 && done < 1.0) {
+  for (long long taken = 0; dt > 0.0 && done < 1.0; ++taken) {
+    if (taken == kMaxSubsteps) return Mat3::Constant(std::numeric_limits<double>::quiet_NaN());
     const Mat3 f = a + done * (b - a);
     const Mat3 fe = f * s.fp.inverse();
     const Mat3 mandel = (fe.transpose() * fe) * elastic_stress(fe);

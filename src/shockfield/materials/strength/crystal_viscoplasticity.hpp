@@ -65,8 +65,13 @@ struct CrystalViscoplasticity {
     long long substeps = 0;               ///< sub-increments taken so far (cost diagnostics)
   };
   State initial_state(const Mat3& orientation) const;
+  /// Sub-increments one update may take: a stress far beyond the model's range (C44 = 9.2e18 Pa
+  /// in a fuzzed material file) needs slip increments so small that the sub-increments never
+  /// reach the end of the step (a hang); past this many the update gives up.
+  static constexpr long long kMaxSubsteps = 10000;
   /// Advances the grain from F_old to F_new over dt (both in the sample frame) and returns the
-  /// Cauchy stress in the sample frame.
+  /// Cauchy stress in the sample frame, or a NaN stress (which the run's health check then
+  /// diagnoses) when the step needs more than kMaxSubsteps sub-increments.
   Mat3 update(State& s, const Mat3& f_old, const Mat3& f_new, double dt) const;
   /// Second Piola-Kirchhoff stress S = C:Ee in the crystal frame (eqs. 30-32).
   Mat3 elastic_stress(const Mat3& fe) const;

@@ -1,0 +1,102 @@
+#include "file_targets.hpp"
+
+#include "shockfield/core/error.hpp"
+#include "shockfield/materials/material_file.hpp"
+#include "target_helpers.hpp"
+
+namespace shockfield::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A bridge that exit 0 must have written a material file without a non-finite value that its
+// own reader (materials::MaterialFile::load, what an MPM or PD case calls) accepts.
+Outcome check_material_output(Outcome o, const fs::path& file) {
+  if (o.kind != Outcome::Kind::accepted) return o;
+  const std::string text = read_text(file);
+  if (const std::string bad = non_finite_value(text); !bad.empty()) {
+    o.kind = Outcome::Kind::non_finite_output, o.message = file.filename().string() + " " + bad;
+    return o;
+  }
+  try {
+    materials::MaterialFile::load(file);
+  } catch (const InputError& e) {
+    o.kind = Outcome::Kind::invalid_output;
+    o.message = std::string("the material file the bridge wrote is refused by its reader: ") + e.what();
+  }
+  return o;
+}
+
+// --resume of a copy of an MPM run stopped after 5 steps whose checkpoint.case.toml (the case the
+// checkpoint was written with) or config.resolved.toml (the input files' hashes) is the mutant;
+// at most 5 more steps.
+Target resume_case(const Context& c) {
+  const fs::path base = stopped_run(c, "resume_case", c.source / "tests/cli/cases/mpm_tiny.toml", 5);
+  return {"resume_case",
+          {base / "out/checkpoint.case.toml", base / "out/config.resolved.toml"},
+          false,
+          false,
+          "",
+          [c, base](const fs::path& file, const fs::path& work) {
+            fs::copy(base / "out", work / "out", fs::copy_options::recursive);
+            fs::copy_file(file, work / "out" / file.filename(), fs::copy_options::overwrite_existing);
+            return run_case(c, base / "case.toml", work, {"--resume", "--stop-after", "5"});
+          }};
+}
+
+// A material file (mpm_*.toml: for tests/fixtures/fuzz/cases/material_mpm.toml, else the PD
+// crystal bar of material_pd.toml), 5 steps.
+Target material_file(const Context& c) {
+  const fs::path inputs = c.source / "tests/fixtures/fuzz/inputs/material";
+  return {"material_file", {inputs / "mpm_cu.toml", inputs / "pd_cu.toml"}, false, false, "case.toml",
+          [c](const fs::path& file, const fs::path& work) {
+            const bool mpm = file.filename().string().starts_with("mpm");
+            const std::string text =
+                read_text(c.source / "tests/fixtures/fuzz/cases" / (mpm ? "material_mpm.toml" : "material_pd.toml"));
+            write_text(work / "case.toml", replace_all(text, "@FILE@", file.string()));
+            return run_case(c, work / "case.toml", work, {"--stop-after", "5"});
+          }};
+}
+
+// `shockfield bridge hugoniot-to-eos` on a sweep folder of four MD Hugoniot runs
+// (tests/fixtures/fuzz/inputs/bridge_eos/up_*), one file of the first run mutated.
+Target bridge_eos(const Context& c) {
+  const fs::path sweep = c.source / "tests/fixtures/fuzz/inputs/bridge_eos";
+  return {"bridge_eos", {sweep / "up_0.67/hugoniot_shock.toml", sweep / "up_0.67/config.resolved.toml"}, false, false,
+          "", [c, sweep](const fs::path& file, const fs::path& work) {
+            fs::copy(sweep, work / "sweep", fs::copy_options::recursive);
+            fs::copy_file(file, work / "sweep/up_0.67" / file.filename(), fs::copy_options::overwrite_existing);
+            fs::create_directories(work / "out");
+            const fs::path out = work / "out/cu.toml";
+            return check_material_output(run_program({c.shockfield.string(), "bridge", "hugoniot-to-eos",
+                                                      (work / "sweep").string(), "-o", out.string()},
+                                                     work, c.limits),
+                                         out);
+          }};
+}
+
+// `shockfield bridge elastic --constants FILE --mass 63.546` (the LAMMPS fixture's constants).
+Target bridge_elastic(const Context& c) {
+  return {"bridge_elastic", {c.source / "tests/fixtures/lammps_elastic/results.toml"}, false, false, "",
+          [c](const fs::path& file, const fs::path& work) {
+            fs::create_directories(work / "out");
+            const fs::path out = work / "out/cu.toml";
+            return check_material_output(run_program({c.shockfield.string(), "bridge", "elastic", "--constants",
+                                                      file.string(), "--mass", "63.546", "-o", out.string()},
+                                                     work, c.limits),
+                                         out);
+          }};
+}
+
+}  // namespace
+
+std::vector<Target> file_targets(const Context& c, const std::function<bool(const std::string&)>& wanted) {
+  std::vector<Target> t;
+  if (wanted("resume_case")) t.push_back(resume_case(c));
+  t.push_back(material_file(c));
+  t.push_back(bridge_eos(c));
+  t.push_back(bridge_elastic(c));
+  return t;
+}
+
+}  // namespace shockfield::fuzz
