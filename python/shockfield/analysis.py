@@ -71,7 +71,7 @@ def similarity(reference, reference_threshold, candidate, times, thresholds=None
 
     ``reference`` and ``candidate`` are sequences of fields, one per time in ``times``; the
     reference process is taken at ``reference_threshold``, the candidate at every threshold of
-    ``thresholds`` (or ``count`` evenly spaced over the first candidate field's range). Returns a
+    ``thresholds`` (or ``count`` evenly spaced over the range of all the candidate fields). Returns a
     dict: ``thresholds``, the process distance ``d_P`` over [t1, t2] (default: the whole time
     range) and ``S_D = 1/d_P`` per candidate threshold, ``best_threshold`` and ``best_distance``.
     """

@@ -113,12 +113,13 @@ sa::MinkowskiOptions options_of(const std::string& boundary, int connectivity, i
   return o;
 }
 
-// `shockfield analyze`'s rule: the given thresholds, else `count` evenly spaced over the range.
+// `shockfield analyze`'s rule: the given thresholds, else `count` evenly spaced over the range of
+// all the fields.
 std::vector<double> thresholds_of(const std::optional<std::vector<double>>& thresholds, std::size_t count,
-                                  const sa::GridField& field) {
+                                  std::span<const sa::GridField> fields) {
   if (thresholds && count > 0) throw InputError("give either thresholds or count, not both");
   if (thresholds) return *thresholds;
-  return sa::linear_thresholds(field, count > 0 ? count : 32);
+  return sa::linear_thresholds(fields, count > 0 ? count : 32);
 }
 
 // `threads` OpenMP threads for one call (0: the process's default), restored afterwards so that
@@ -196,7 +197,7 @@ py::dict minkowski(const py::array& field, const std::optional<std::vector<doubl
   const ThreadCount thread_count(threads);
   const auto o = options_of(boundary, connectivity, adjacency);
   const sa::GridField& f = reused_grid(field, void_mask, spacing_of(spacing), dimension, "field");
-  return functionals(f, thresholds_of(thresholds, count, f), o).columns;
+  return functionals(f, thresholds_of(thresholds, count, {&f, 1}), o).columns;
 }
 
 // A process: fields (one per time) at `thresholds`, as one process per threshold.
@@ -227,8 +228,10 @@ py::dict similarity(const std::vector<py::array>& reference, double reference_th
   if (reference.empty() || candidate.empty()) throw InputError("similarity: no fields given");
   const auto o = options_of(boundary, connectivity, adjacency);
   const auto h = spacing_of(spacing);
-  const auto first = grid_from(candidate.front(), py::none(), h, dimension, "candidate field 0");
-  const auto ts = thresholds_of(thresholds, count, first);
+  std::vector<sa::GridField> fields;
+  for (std::size_t k = 0; k < candidate.size(); ++k)
+    fields.push_back(grid_from(candidate[k], py::none(), h, dimension, "candidate field " + std::to_string(k)));
+  const auto ts = thresholds_of(thresholds, count, fields);
   const auto ref = processes(reference, times, {reference_threshold}, o, h, dimension, "reference");
   const auto cand = processes(candidate, times, ts, o, h, dimension, "candidate");
   const auto match = sa::match_threshold(ref.front(), ts, cand, t1.value_or(times.front()), t2.value_or(times.back()));
