@@ -14,7 +14,6 @@
 #include "shockfield/app/bridge_md_crystal.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
-#include "shockfield/core/sha256.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/macroparticle/parameters.hpp"
 #include "shockfield/materials/material_file.hpp"
@@ -60,10 +59,7 @@ void run(const Options& o, const std::vector<std::string>& command_line) {
 
   const std::map<std::string, double> values{
       {"atoms.cohesive_energy", e0}, {"atoms.lattice_constant", a0}, {"atoms.atomic_mass", mass}};
-  toml::table entry = materials::bridge_provenance_entry(command_line);
-  toml::array inputs;
-  inputs.push_back(toml::table{{"file", m.source.string()}, {"sha256", sha256_file_hex(m.source)}});
-  entry.insert("inputs", inputs);
+  toml::table entry = crystal_provenance_entry(m, command_line);
   toml::table fit = m.details;
   fit.insert_or_assign("cohesive_energy_eV", e0_eV);  // the binding energy, > 0 (the MD's E/N is −e0)
   fit.insert("a0_A", m.c.a0);

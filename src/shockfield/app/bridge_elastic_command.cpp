@@ -12,7 +12,6 @@
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
-#include "shockfield/core/sha256.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/materials/material_file.hpp"
 
@@ -64,10 +63,7 @@ void run(const ElasticOptions& o, const std::vector<std::string>& command_line) 
       {"elasticity.density", density}, {"elasticity.temperature", 0.0}, {"elasticity.c11", c11},
       {"elasticity.c12", c12},         {"elasticity.c44", c44},         {"elasticity.bulk", iso.bulk},
       {"elasticity.shear", iso.shear}, {"thermal.heat_capacity", heat_capacity}};
-  toml::table entry = materials::bridge_provenance_entry(command_line);
-  toml::array inputs;
-  inputs.push_back(toml::table{{"file", m.source.string()}, {"sha256", sha256_file_hex(m.source)}});
-  entry.insert("inputs", inputs);
+  toml::table entry = crystal_provenance_entry(m, command_line);
   toml::table fit = m.details;
   fit.insert("lattice", o.crystal.lattice);
   fit.insert("a0_A", m.c.a0);

@@ -4,7 +4,9 @@
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/sha256.hpp"
 #include "shockfield/core/units.hpp"
+#include "shockfield/materials/material_file.hpp"
 #include "shockfield/md/lattice.hpp"
 #include "shockfield/md/potentials/registry.hpp"
 
@@ -57,6 +59,14 @@ double crystal_density(const CrystalOptions& o, const MeasuredCrystal& m) {
   spec.a0 = m.c.a0;
   const md::Lattice lattice(spec);
   return lattice.basis_size() * m.mass * units::metal::amu_per_A3_to_g_per_cc / (m.c.a0 * m.c.a0 * m.c.a0) * 1e3;
+}
+
+toml::table crystal_provenance_entry(const MeasuredCrystal& m, const std::vector<std::string>& command_line) {
+  toml::table entry = materials::bridge_provenance_entry(command_line);
+  toml::array inputs;
+  inputs.push_back(toml::table{{"file", m.source.string()}, {"sha256", sha256_file_hex(m.source)}});
+  entry.insert("inputs", inputs);
+  return entry;
 }
 
 }  // namespace shockfield::app

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "shockfield/md/elastic_constants.hpp"
 
@@ -37,5 +38,9 @@ MeasuredCrystal measure_crystal(const CrystalOptions& o, const std::string& comm
 
 /// Density of the relaxed crystal, kg/m³.
 double crystal_density(const CrystalOptions& o, const MeasuredCrystal& m);
+
+/// The bridge's [provenance] entry (command, date, version) with the crystal's source file and its
+/// SHA-256 as `inputs`; the caller adds its `fit` (starting from `m.details`).
+toml::table crystal_provenance_entry(const MeasuredCrystal& m, const std::vector<std::string>& command_line);
 
 }  // namespace shockfield::app
