@@ -63,7 +63,7 @@ def depth_laws():
     for name, style, regime in (("column_weak", "o", "weak, v0 = 1e-4 m/s"),
                                 ("column_strong", "s", "strong, v0 = 1 m/s")):
         d = read(name, "signal.csv")
-        speed = central_speed(d["time"], d["depth"])
+        speed = central_speed(d["time_s"], d["depth"])
         keep = (d["position"] > 100) & (d["position"] < 2400)
         z = d["depth"][keep]
         for ax, q in zip(axes, derived):
@@ -106,7 +106,7 @@ def backscatter():
         p = read(run, "probes.csv")
         ratio = resolved(run)["impurity"][0]["mass_ratio"]
         kinetic = 0.5 * ratio * mass * p[f"velocity_{impurity}"] ** 2 / impulse_energy
-        b.semilogy(p["time"] * 1e3, kinetic + 1e-12, label=label)
+        b.semilogy(p["time_s"] * 1e3, kinetic + 1e-12, label=label)
         late = t > 0.6 * t[-1]
         print(f"{run}: kinetic energy above the impurity, last 40% of the run: {reflected[late].mean():.3f}"
               " of the impulse")

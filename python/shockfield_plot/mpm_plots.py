@@ -11,11 +11,10 @@
                                                    cavity area and collapsibility against time
                                                    (seed Figs 46, 50, 53)
 
-Reads series.csv and particles.pvd (VTK PolyData, ascii or base64 binary). Uses only numpy and
-matplotlib from Debian (run with /usr/bin/python3).
+Reads series.csv and particles.pvd (VTK PolyData in any encoding shockfield writes, through
+vtk_arrays). Uses only numpy and matplotlib from Debian (run with /usr/bin/python3).
 """
 import argparse
-import base64
 import csv
 import os
 import re
@@ -26,6 +25,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+try:
+    from .vtk_arrays import read_vtk_arrays
+except ImportError:  # run as a script: python/shockfield_plot/mpm_plots.py
+    from vtk_arrays import read_vtk_arrays
 
 SEED_250NS = {"density": 3140.0, "pressure": 16.7e9, "temperature": 432.0}  # Xu et al. (2015) §4.1.1, Fig 19
 
@@ -47,20 +51,8 @@ def last_frame(run):
 
 
 def read_vtp(path):
-    """Arrays of a VTK PolyData file as written by shockfield (Float64/Int64, ascii or binary)."""
-    text = open(path).read()
-    out = {}
-    for m in re.finditer(r'<DataArray type="(\w+)" Name="(\w+)"[^>]*format="(\w+)">\s*(.*?)\s*</DataArray>', text, re.S):
-        kind, name, fmt, body = m.groups()
-        dtype = np.float64 if kind == "Float64" else np.int64
-        if fmt == "ascii":
-            values = np.array(body.split(), dtype=float).astype(dtype)
-        else:  # UInt64 byte count (12 base64 characters), then the values
-            values = np.frombuffer(base64.b64decode(body[12:]), dtype=dtype)
-        out[name] = values
-    out["points"] = out["points"].reshape(-1, 3)
-    out["velocity"] = out["velocity"].reshape(-1, 3)
-    return out
+    """Arrays of a VTK PolyData file as written by shockfield (any encoding; vtk_arrays)."""
+    return read_vtk_arrays(path)
 
 
 def porous(run, out):

@@ -40,7 +40,7 @@ for trial in 1 2 3; do
   rows=$((RANDOM % 60 + 5))
   rm -rf "$WORK/md_killed"
   kill_then_resume "$WORK/md.toml" "$WORK/md_killed" thermo.csv $rows
-  same_files "$WORK/md_straight" "$WORK/md_killed" thermo.csv final.data dumps/dump.700.lammpstrj dumps/dump.400.lammpstrj
+  same_files "$WORK/md_straight" "$WORK/md_killed" thermo.csv final.data dumps/dump.1000.lammpstrj dumps/dump.2100.lammpstrj
   echo "ok: md killed at thermo row $rows, resumed bitwise"
 done
 

@@ -145,7 +145,8 @@ std::vector<fs::path> example_case_inputs(const Context& c) {
 std::vector<fs::path> field_inputs(const Context& c) {
   std::vector<fs::path> fields;
   for (const char* f : {"grid.csv", "two_disks.csv", "ascii.vti", "binary.vti", "raw.vti",
-                        "appended_base64.vti", "points.vtk", "cells.vtk"})
+                        "appended_base64.vti", "vtk_zlib_binary.vti", "vtk_zlib_appended.vti", "points.vtk",
+                        "cells.vtk"})
     fields.push_back(c.source / "tests/fixtures/analysis/fields" / f);
   return fields;
 }

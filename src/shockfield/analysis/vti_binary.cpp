@@ -11,6 +11,7 @@
 #include <functional>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/io/vtk_zlib.hpp"
 
 namespace shockfield::analysis {
 namespace {
@@ -104,12 +105,11 @@ std::vector<double> decode(const VtiBinary& a, std::size_t count,
                            const std::function<std::string(std::size_t)>& take) {
   const std::string_view file = start_tag(a.text, "<VTKFile");
   const std::string where = fmt::format("{}: DataArray '{}'", a.where, a.name);
-  if (const std::string c = xml_attribute(file, "compressor"); !c.empty())
-    throw InputError(
-        fmt::format("{} is compressed ({}); only uncompressed binary data is read: "
-                    "save without compression (ParaView: Compressor Type None) or as "
-                    "ascii",
-                    where, c));
+  const std::string compressor = xml_attribute(file, "compressor");
+  if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
+    throw InputError(fmt::format("{} is compressed with {}; only vtkZLibDataCompressor (ParaView: Compressor "
+                                 "Type ZLib) or uncompressed data is read",
+                                 where, compressor));
   const std::string order = xml_attribute(file, "byte_order"),
                     header = xml_attribute(file, "header_type");
   if (order != "LittleEndian" && order != "BigEndian")
@@ -130,21 +130,27 @@ std::vector<double> decode(const VtiBinary& a, std::size_t count,
     if (swap) std::reverse(bytes.begin(), bytes.end());
     return bytes;
   };
-  if (count > a.text.size())  // every value takes at least a byte: also keeps count * size exact
+  // Uncompressed, every value takes at least a byte; zlib packs at most kZlibMaxExpansion bytes
+  // into one, so a larger count is a corrupt header, not an allocation to attempt.
+  const std::size_t packing = compressor.empty() ? 1 : kZlibMaxExpansion;
+  if (count > a.text.size() * packing)
     throw InputError(fmt::format("{}: {} values cannot fit in a file of {} bytes", where, count, a.text.size()));
   const std::size_t header_size = header == "UInt64" ? 8 : 4;
-  const std::string h = native(take(header_size));
-  if (h.size() < header_size)
-    throw InputError(fmt::format("{}: the data ends in its header", where));
-  const std::uint64_t bytes =
-      header_size == 8 ? load<std::uint64_t>(h.data()) : load<std::uint32_t>(h.data());
-  if (bytes != count * type->size)
-    throw InputError(fmt::format("{}: the header says {} bytes; expected {} ({} values of {})",
-                                 where, bytes, count * type->size, count, a.type));
-  const std::string data = take(static_cast<std::size_t>(bytes));
-  if (data.size() < bytes)
-    throw InputError(
-        fmt::format("{}: {} bytes expected, the data ends after {}", where, bytes, data.size()));
+  const std::uint64_t bytes = count * type->size;
+  std::string data;
+  if (!compressor.empty()) {
+    data = io::vtk_zlib_decompress(take, header_size, native, bytes, where);
+  } else {
+    const std::string h = native(take(header_size));
+    if (h.size() < header_size) throw InputError(fmt::format("{}: the data ends in its header", where));
+    const std::uint64_t stored = header_size == 8 ? load<std::uint64_t>(h.data()) : load<std::uint32_t>(h.data());
+    if (stored != bytes)
+      throw InputError(fmt::format("{}: the header says {} bytes; expected {} ({} values of {})", where, stored,
+                                   bytes, count, a.type));
+    data = take(static_cast<std::size_t>(bytes));
+    if (data.size() < bytes)
+      throw InputError(fmt::format("{}: {} bytes expected, the data ends after {}", where, bytes, data.size()));
+  }
   std::vector<double> values(count);
   for (std::size_t i = 0; i < count; ++i)
     values[i] = type->convert(native(data.substr(i * type->size, type->size)).data());

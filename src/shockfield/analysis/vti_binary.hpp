@@ -4,14 +4,19 @@
 // (<AppendedData encoding="raw"> or "base64", the array at `offset` after the '_'). Each array is
 // a header (the byte count, UInt32 or UInt64 as the VTKFile's header_type says; UInt32 if absent)
 // followed by the values, in the VTKFile's byte_order. Header and data may be base64-encoded
-// together or one after the other (both are in use). Compressed files (a `compressor` attribute)
-// are refused with a message saying how to save them uncompressed.
+// together or one after the other (both are in use). Files with compressor="vtkZLibDataCompressor"
+// hold each array as zlib blocks (io/vtk_zlib); other compressors (LZ4, LZMA) are refused with a
+// message saying how to save the file readable.
 #include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace shockfield::analysis {
+
+/// Most bytes zlib's deflate can pack into one (its limit is 1032:1), which bounds the values a
+/// compressed file of a given size can hold.
+inline constexpr std::size_t kZlibMaxExpansion = 1032;
 
 /// Value of attribute `key` in an XML start tag (`<Name a="1" b="2"`); empty if absent.
 std::string xml_attribute(std::string_view tag, const std::string& key);

@@ -36,6 +36,14 @@ OutputIntervals read_output_intervals(const std::optional<Config>& output, doubl
     s.field_interval = t.get_double_or("field_interval", 0.0, Range::non_negative());
     bound_count(t, "field_interval", s.field_interval, end_time, max_frames, "field frames");
   }
+  if (kinds.vtk) {
+    const std::string encoding = t.get_choice_or("vtk_encoding", {"ascii", "base64", "raw", "zlib"}, "zlib");
+    for (io::VtkEncoding e : {io::VtkEncoding::Ascii, io::VtkEncoding::Base64, io::VtkEncoding::Raw, io::VtkEncoding::Zlib})
+      if (encoding == io::encoding_name(e)) s.vtk.encoding = e;
+    s.vtk.precision =
+        t.get_choice_or("vtk_precision", {"float32", "float64"}, "float32") == "float32" ? io::VtkPrecision::Float32
+                                                                                        : io::VtkPrecision::Float64;
+  }
   s.checkpoint_every = t.get_int_or("checkpoint_every", 0, Range::non_negative());
   s.thermo_every = t.get_int_or("thermo_every", 0, Range::non_negative());
   return s;

@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "shockfield/core/config.hpp"
+#include "shockfield/io/vtk_xml.hpp"
 
 namespace shockfield {
 
@@ -28,6 +29,9 @@ struct OutputIntervals {
   double field_interval = 0.0;     ///< grid/particle frames every ...; 0: none
   long long checkpoint_every = 0;  ///< checkpoint every ... steps; 0: only at the end or on a stop
   long long thermo_every = 0;      ///< thermo table row every ... steps; 0: about ten rows per run
+  /// How field frames store their arrays (vtk_encoding, vtk_precision; methods with fields):
+  /// appended binary compressed with zlib, in single precision, unless the case says otherwise.
+  io::VtkFormat vtk{io::VtkEncoding::Zlib, io::VtkPrecision::Float32};
 };
 
 /// Which of the optional frame kinds a method writes (the keys of the others stay unknown, so a
@@ -35,6 +39,7 @@ struct OutputIntervals {
 struct OutputKinds {
   bool profiles = false;
   bool fields = false;
+  bool vtk = false;  ///< field frames are VTK files (vtk_encoding, vtk_precision)
 };
 
 /// Reads the schedule keys of [output] (absent table: the defaults), validated, including the

@@ -140,7 +140,7 @@ void read_run(const Config& t, const Config& model, DbmCase& c) {
 
 DbmOutputSpec read_output(const std::optional<Config>& t, const DbmCase& c) {
   DbmOutputSpec s;
-  static_cast<OutputIntervals&>(s) = read_output_intervals(t, c.end_time, {.profiles = true, .fields = true});
+  static_cast<OutputIntervals&>(s) = read_output_intervals(t, c.end_time, {.profiles = true, .fields = true, .vtk = true});
   s.profile_row = c.lattice.ny / 2;
   if (!t) return s;
   check_intervals_against_step(*t, s, c.bgk.dt);

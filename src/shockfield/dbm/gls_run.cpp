@@ -44,7 +44,7 @@ std::vector<double> GlsRunPart::series_row(const Simulation& sim) {
 
 std::vector<io::VtkArray> GlsRunPart::field_arrays() {
   const GlsTne tne = force_.tne();
-  return {{"D", 1, tne.net.strength}, {"D_force", 1, tne.force.strength}};
+  return {{"D", 1, tne.net.strength, "1"}, {"D_force", 1, tne.force.strength, "1"}};
 }
 
 const char* GlsRunPart::blow_up_hint() {

@@ -17,7 +17,7 @@ constexpr int kD2xx = 0, kD31x = 7;
 RunOutput::RunOutput(const fs::path& folder, const DbmOutputSpec& spec, const Simulation* resumed,
                      const OutputCounters& counters, const ReactiveFlow* reaction,
                      const std::optional<ReactionSpec>& spec_reaction, GlsRunPart* gls)
-    : folder_(folder), row_(spec.profile_row), reaction_(reaction), spec_reaction_(spec_reaction), gls_(gls) {
+    : folder_(folder), row_(spec.profile_row), vtk_(spec.vtk), reaction_(reaction), spec_reaction_(spec_reaction), gls_(gls) {
   const double keep_step = resumed ? static_cast<double>(resumed->steps()) : 0.0;
   const double keep_profile = static_cast<double>(counters.profiles) - 1.0;
   std::vector<std::string> series_columns =
@@ -87,14 +87,15 @@ void RunOutput::write_fields(const Simulation& sim) {
       const std::size_t c = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(j);
       rho[c] = m.rho, u[3 * c] = m.ux, u[3 * c + 1] = m.uy, T[c] = m.T;
     }
-  img.point_data = {{"rho", 1, std::move(rho)}, {"velocity", 3, std::move(u)}, {"T", 1, std::move(T)}};
+  // Model units: dimensionless (docs/dbm.md), written as units="1".
+  img.point_data = {{"rho", 1, std::move(rho), "1"}, {"velocity", 3, std::move(u), "1"}, {"T", 1, std::move(T), "1"}};
   if (gls_) {
     for (io::VtkArray& a : gls_->field_arrays()) img.point_data.push_back(std::move(a));
   } else {
-    img.point_data.push_back({"D", 1, tne_measures(sim).strength});
+    img.point_data.push_back({"D", 1, tne_measures(sim).strength, "1"});
   }
   const std::string file = fmt::format("fields/grid_{:09d}.vti", sim.steps());
-  io::write_vti(folder_ / file, img, io::VtkEncoding::Ascii);
+  io::write_vti(folder_ / file, img, vtk_);
   grid_pvd_.add(sim.time(), file);
 }
 

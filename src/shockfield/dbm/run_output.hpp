@@ -35,6 +35,7 @@ class RunOutput {
  private:
   std::filesystem::path folder_;
   int row_;
+  io::VtkFormat vtk_;
   const ReactiveFlow* reaction_;
   const std::optional<ReactionSpec>& spec_reaction_;
   GlsRunPart* gls_;

@@ -11,7 +11,7 @@ namespace shockfield::granular {
 namespace {
 
 std::vector<std::string> grain_columns(const std::vector<std::size_t>& grains, const char* prefix) {
-  std::vector<std::string> out{"time"};
+  std::vector<std::string> out{"time_s"};
   for (std::size_t g : grains) out.push_back(fmt::format("{}_{}", prefix, g));
   return out;
 }
@@ -27,7 +27,7 @@ double overlap_below(const Simulation& sim, std::size_t i) {
 }  // namespace
 
 std::vector<std::string> RunOutputs::thermo_columns() {
-  return {"time", "step", "kinetic", "potential", "total", "external_work", "signal_depth"};
+  return {"time_s", "step", "kinetic", "potential", "total", "external_work", "signal_depth"};
 }
 
 std::vector<double> RunOutputs::thermo_values(const Thermo& t) {
@@ -39,7 +39,7 @@ RunOutputs::RunOutputs(const std::filesystem::path& folder, const OutputSpec& sp
     : spec_(spec) {
   series_ = io::CsvWriter(folder / "series.csv", thermo_columns(), resume_from);
   if (!spec_.probes.empty()) {
-    std::vector<std::string> cols{"time"};
+    std::vector<std::string> cols{"time_s"};
     for (std::size_t g : spec_.probes)
       for (const char* q : {"velocity", "force", "overlap"}) cols.push_back(fmt::format("{}_{}", q, g));
     probes_ = io::CsvWriter(folder / "probes.csv", cols, resume_from);
@@ -50,7 +50,7 @@ RunOutputs::RunOutputs(const std::filesystem::path& folder, const OutputSpec& sp
     velocity_field_ = io::CsvWriter(folder / "spacetime_velocity.csv", grain_columns(field_grains_, "velocity"), resume_from);
   }
   if (spec_.signal_interval > 0)
-    signal_ = io::CsvWriter(folder / "signal.csv", {"time", "position", "depth", "velocity", "force", "width"}, resume_from);
+    signal_ = io::CsvWriter(folder / "signal.csv", {"time_s", "position", "depth", "velocity", "force", "width"}, resume_from);
 }
 
 void RunOutputs::write_due(const Simulation& sim, OutputCounters& n) {

@@ -57,7 +57,7 @@ void CheckedOutput::close() {
   check("closing");
 }
 
-void write_file_checked(const std::filesystem::path& file, std::string_view bytes, bool sync) {
+void write_file_checked(const std::filesystem::path& file, std::span<const std::string_view> parts, bool sync) {
   const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail(file, "opening for writing", errno);
   auto give_up = [&](const char* what) {
@@ -67,12 +67,13 @@ void write_file_checked(const std::filesystem::path& file, std::string_view byte
     std::filesystem::remove(file, ignored);  // a partial file must not be mistaken for a whole one
     fail(file, what, error);
   };
-  for (std::size_t done = 0; done < bytes.size();) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) give_up("writing");
-    done += static_cast<std::size_t>(n);
-  }
+  for (const std::string_view bytes : parts)
+    for (std::size_t done = 0; done < bytes.size();) {
+      const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) give_up("writing");
+      done += static_cast<std::size_t>(n);
+    }
   if (sync && ::fsync(fd) != 0) give_up("fsync");
   if (::close(fd) != 0) {
     const int error = errno;
@@ -97,8 +98,12 @@ void rename_checked(const std::filesystem::path& from, const std::filesystem::pa
 }
 
 void replace_file(const std::filesystem::path& file, std::string_view bytes, bool sync) {
+  replace_file(file, std::span<const std::string_view>(&bytes, 1), sync);
+}
+
+void replace_file(const std::filesystem::path& file, std::span<const std::string_view> parts, bool sync) {
   const std::filesystem::path tmp = file.string() + ".tmp";
-  write_file_checked(tmp, bytes, sync);
+  write_file_checked(tmp, parts, sync);
   rename_checked(tmp, file, sync);
 }
 

@@ -5,6 +5,7 @@
 // through CheckedOutput (streams) or replace_file (whole files written at once).
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -45,9 +46,10 @@ class CheckedOutput {
   int error_ = 0;
 };
 
-/// Writes `bytes` to `file` with POSIX calls, each checked; with `sync`, fsyncs it before
-/// closing. On failure the partial file is removed and RunError names it.
-void write_file_checked(const std::filesystem::path& file, std::string_view bytes, bool sync);
+/// Writes `parts` one after the other to `file` with POSIX calls, each checked (no concatenated
+/// copy of large buffers); with `sync`, fsyncs it before closing. On failure the partial file is
+/// removed and RunError names it.
+void write_file_checked(const std::filesystem::path& file, std::span<const std::string_view> parts, bool sync);
 /// fsync of a folder, so a rename into it survives a crash of the machine.
 void sync_folder(const std::filesystem::path& folder);
 /// Renames `from` over `to` (atomic on POSIX), checked; with `sync`, fsyncs the folder after.
@@ -55,5 +57,7 @@ void rename_checked(const std::filesystem::path& from, const std::filesystem::pa
 /// Replaces `file` by `bytes` through `file`.tmp and a rename: readers see the old or the new
 /// contents, never half of them. With `sync`, the data and the folder are fsynced.
 void replace_file(const std::filesystem::path& file, std::string_view bytes, bool sync = false);
+/// The same with the contents given as consecutive parts.
+void replace_file(const std::filesystem::path& file, std::span<const std::string_view> parts, bool sync = false);
 
 }  // namespace shockfield::io

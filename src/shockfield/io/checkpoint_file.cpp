@@ -116,7 +116,8 @@ void CheckpointWriter::commit() {
   h5_.close();
   const std::filesystem::path tmp = file_.string() + ".tmp";
   try {
-    write_file_checked(tmp, {reinterpret_cast<const char*>(bytes.data()), bytes.size()}, true);
+    const std::string_view contents(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    write_file_checked(tmp, std::span<const std::string_view>(&contents, 1), true);
   } catch (const RunError& e) {
     throw RunError(fmt::format("{}: cannot write the checkpoint ({}); the previous checkpoint is kept", file_.string(),
                                e.what()));

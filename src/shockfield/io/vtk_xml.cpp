@@ -11,42 +11,85 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/run_folder.hpp"
+#include "shockfield/io/checked_file.hpp"
+#include "shockfield/io/vtk_zlib.hpp"
 
 namespace shockfield::io {
 
 namespace {
 
-const char* format_name(VtkEncoding e) { return e == VtkEncoding::Ascii ? "ascii" : "binary"; }
+// The DataArray tags of one file and, for the appended encodings, the blocks of its
+// <AppendedData> section (each array at its `offset` after the '_'). The blocks are written to the
+// file as separate parts (io::replace_file), so a frame of tens of MB is not copied again.
+class ArrayWriter {
+ public:
+  ArrayWriter(std::ostringstream& xml, VtkFormat format) : xml_(xml), format_(format) {}
 
-// VTK's uncompressed inline binary: the UInt64 byte count and the raw values, each base64-encoded.
-template <class T>
-std::string binary_block(const std::vector<T>& v) {
-  const std::uint64_t bytes = v.size() * sizeof(T);
-  unsigned char header[sizeof bytes];
-  std::memcpy(header, &bytes, sizeof bytes);
-  return base64(header, sizeof header) + base64(reinterpret_cast<const unsigned char*>(v.data()), bytes) + "\n";
-}
-
-template <class T>
-void write_data_array(std::ostream& out, const char* type, const std::string& name, int components,
-                      const std::vector<T>& v, VtkEncoding encoding) {
-  out << fmt::format("        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"{}\">\n", type, name,
-                     components, format_name(encoding));
-  if (encoding == VtkEncoding::Base64) {
-    out << binary_block(v);
-  } else {
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if constexpr (std::is_integral_v<T>) out << v[i];
-      else out << fmt::format("{:.9g}", v[i]);
-      out << ((i % 9 == 8 || i + 1 == v.size()) ? '\n' : ' ');
-    }
+  void reals(const std::string& name, int components, const std::vector<double>& v, const std::string& units) {
+    if (format_.precision == VtkPrecision::Float64) return array("Float64", name, components, v, units);
+    const std::vector<float> single(v.begin(), v.end());
+    array("Float32", name, components, single, units);
   }
-  out << "        </DataArray>\n";
-}
+  template <class T>
+  void array(const char* type, const std::string& name, int components, const std::vector<T>& v,
+             const std::string& units = "") {
+    std::string tag = fmt::format("        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"{}\"",
+                                  type, name, components, appended() ? "appended" : format_name());
+    if (appended()) tag += fmt::format(" offset=\"{}\"", offset_);
+    if (!units.empty()) tag += fmt::format(" units=\"{}\"", units);
+    const std::uint64_t bytes = v.size() * sizeof(T);
+    const auto* data = reinterpret_cast<const char*>(v.data());
+    if (appended()) {
+      xml_ << tag << "/>\n";
+      std::string block;
+      if (format_.encoding == VtkEncoding::Zlib) {
+        block = vtk_zlib_compress(data, bytes);
+      } else {  // the UInt64 byte count, then the values
+        block.reserve(sizeof bytes + bytes);
+        block.append(reinterpret_cast<const char*>(&bytes), sizeof bytes).append(data, bytes);
+      }
+      offset_ += block.size();
+      blocks_.push_back(std::move(block));
+      return;
+    }
+    xml_ << tag << ">\n";
+    if (format_.encoding == VtkEncoding::Base64) {
+      // VTK's uncompressed inline binary: the UInt64 byte count and the raw values, each base64-encoded.
+      xml_ << base64(reinterpret_cast<const unsigned char*>(&bytes), sizeof bytes)
+           << base64(reinterpret_cast<const unsigned char*>(data), bytes) << "\n";
+    } else {
+      for (std::size_t i = 0; i < v.size(); ++i)  // shortest text that reads back to the same value
+        xml_ << fmt::format("{}", v[i]) << ((i % 9 == 8 || i + 1 == v.size()) ? '\n' : ' ');
+    }
+    xml_ << "        </DataArray>\n";
+  }
 
-void write_array(std::ostream& out, const VtkArray& a, VtkEncoding encoding) {
-  write_data_array(out, "Float64", a.name, a.components, a.values, encoding);
-}
+  /// The <VTKFile> start tag for a dataset of `type`.
+  std::string file_tag(const char* type) const {
+    return fmt::format("<VTKFile type=\"{}\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"{}>\n",
+                       type, format_.encoding == VtkEncoding::Zlib ? " compressor=\"vtkZLibDataCompressor\"" : "");
+  }
+  /// Writes the file atomically: the XML so far, the <AppendedData> section if any, </VTKFile>.
+  void write(const std::filesystem::path& file) const {
+    const std::string xml = xml_.str();
+    std::vector<std::string_view> parts{xml};
+    if (appended()) {
+      parts.push_back("  <AppendedData encoding=\"raw\">\n   _");
+      parts.insert(parts.end(), blocks_.begin(), blocks_.end());
+      parts.push_back("\n  </AppendedData>\n");
+    }
+    parts.push_back("</VTKFile>\n");
+    replace_file(file, parts);
+  }
+
+ private:
+  bool appended() const { return format_.encoding == VtkEncoding::Raw || format_.encoding == VtkEncoding::Zlib; }
+  const char* format_name() const { return format_.encoding == VtkEncoding::Ascii ? "ascii" : "binary"; }
+  std::ostringstream& xml_;
+  VtkFormat format_;
+  std::vector<std::string> blocks_;
+  std::size_t offset_ = 0;
+};
 
 }  // namespace
 
@@ -65,8 +108,9 @@ std::string base64(const unsigned char* data, std::size_t size) {
   return out;
 }
 
-void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkEncoding encoding) {
+void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkFormat format) {
   std::ostringstream out;
+  ArrayWriter arrays(out, format);
   const auto& n = image.points;
   for (const VtkArray& a : image.point_data)
     if (a.values.size() != n[0] * n[1] * n[2] * static_cast<std::size_t>(a.components))
@@ -74,37 +118,38 @@ void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkEnco
                                  n[0] * n[1] * n[2]));
   const std::string extent = fmt::format("0 {} 0 {} 0 {}", n[0] - 1, n[1] - 1, n[2] - 1);
   out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      << arrays.file_tag("ImageData")
       << fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{:.17g} {:.17g} {:.17g}\" Spacing=\"{:.17g} {:.17g} {:.17g}\">\n",
                      extent, image.origin[0], image.origin[1], image.origin[2], image.spacing[0], image.spacing[1],
                      image.spacing[2])
       << fmt::format("    <Piece Extent=\"{}\">\n", extent) << "      <PointData>\n";
-  for (const VtkArray& a : image.point_data) write_array(out, a, encoding);
-  out << "      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n  </ImageData>\n</VTKFile>\n";
-  write_file_atomically(file, out.str());
+  for (const VtkArray& a : image.point_data) arrays.reals(a.name, a.components, a.values, a.units);
+  out << "      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n  </ImageData>\n";
+  arrays.write(file);
 }
 
 void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz, const std::vector<VtkArray>& point_data,
-               VtkEncoding encoding) {
+               VtkFormat format) {
   const std::size_t n = xyz.size() / 3;
   std::ostringstream out;
+  ArrayWriter arrays(out, format);
   out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      << arrays.file_tag("PolyData")
       << "  <PolyData>\n"
       << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
                      "NumberOfPolys=\"0\">\n", n, n)
       << "      <PointData>\n";
-  for (const VtkArray& a : point_data) write_array(out, a, encoding);
+  for (const VtkArray& a : point_data) arrays.reals(a.name, a.components, a.values, a.units);
   out << "      </PointData>\n      <Points>\n";
-  write_array(out, {"points", 3, xyz}, encoding);
+  arrays.reals("points", 3, xyz, "m");
   out << "      </Points>\n      <Verts>\n";
   // One vertex cell per point: connectivity 0..n-1, offsets 1..n.
   std::vector<std::int64_t> conn(n), offs(n);
   for (std::size_t i = 0; i < n; ++i) conn[i] = static_cast<std::int64_t>(i), offs[i] = static_cast<std::int64_t>(i + 1);
-  write_data_array(out, "Int64", "connectivity", 1, conn, encoding);
-  write_data_array(out, "Int64", "offsets", 1, offs, encoding);
-  out << "      </Verts>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  write_file_atomically(file, out.str());
+  arrays.array("Int64", "connectivity", 1, conn);
+  arrays.array("Int64", "offsets", 1, offs);
+  out << "      </Verts>\n    </Piece>\n  </PolyData>\n";
+  arrays.write(file);
 }
 
 PvdSeries::PvdSeries(std::filesystem::path file, const double* keep_until) : file_(std::move(file)) {

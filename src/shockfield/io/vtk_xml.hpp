@@ -1,11 +1,13 @@
 #pragma once
 // VTK XML writers for ParaView (https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html):
 // ImageData (.vti) for fields on a regular grid, PolyData (.vtp) for particles, and the .pvd
-// collection that indexes a time series of either. Arrays are Float64, written as ASCII text
-// (what `shockfield analyze` reads, analysis/field_reader) or base64 "binary" (a UInt64 byte
-// count, then the raw little-endian values, each base64-encoded on its own as VTK's writer does).
-// NaN marks a grid point without material (ParaView's blanking convention; analyze reads it as
-// a void cell).
+// collection that indexes a time series of either. Encodings: ASCII text; base64 "binary" (a
+// UInt64 byte count, then the raw little-endian values, each base64-encoded on its own as VTK's
+// writer does); appended raw binary; and appended raw binary compressed with zlib in VTK's block
+// layout (io/vtk_zlib) — ParaView's own default. Real arrays are Float64 or Float32 (VtkFormat);
+// an array's unit goes into its DataArray tag as units="…" (VTK ignores attributes it does not
+// know, so ParaView opens the files as usual). Every encoding reads back through
+// analysis/field_reader. NaN marks a grid point without material (analyze reads it as a void cell).
 #include <array>
 #include <filesystem>
 #include <string>
@@ -13,12 +15,32 @@
 
 namespace shockfield::io {
 
-enum class VtkEncoding { Ascii, Base64 };
+enum class VtkEncoding { Ascii, Base64, Raw, Zlib };
+enum class VtkPrecision { Float64, Float32 };
+
+/// How arrays are stored; built from an encoding alone, real arrays are Float64.
+struct VtkFormat {
+  VtkFormat(VtkEncoding e = VtkEncoding::Ascii, VtkPrecision p = VtkPrecision::Float64) : encoding(e), precision(p) {}
+  VtkEncoding encoding;
+  VtkPrecision precision;
+};
+
+/// The case-file spelling of an encoding: "ascii", "base64", "raw", "zlib".
+constexpr const char* encoding_name(VtkEncoding e) {
+  switch (e) {
+    case VtkEncoding::Ascii: return "ascii";
+    case VtkEncoding::Base64: return "base64";
+    case VtkEncoding::Raw: return "raw";
+    case VtkEncoding::Zlib: return "zlib";
+  }
+  return "?";
+}
 
 struct VtkArray {
   std::string name;
   int components = 1;          ///< 1 (scalar) or 3 (vector)
   std::vector<double> values;  ///< components × count, interleaved
+  std::string units{};         ///< SI unit ("Pa", "m/s", "1" for a number); empty: not written
 };
 
 /// Point data on (nx, ny, nz) grid points; x fastest. A 2D grid has nz = 1.
@@ -29,10 +51,10 @@ struct VtkImage {
   std::vector<VtkArray> point_data;
 };
 
-void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkEncoding encoding);
+void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkFormat format);
 /// Points (x, y, z interleaved) with one vertex cell each, so every ParaView representation shows them.
 void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz, const std::vector<VtkArray>& point_data,
-               VtkEncoding encoding);
+               VtkFormat format);
 
 /// RFC 4648 base64 of `size` bytes.
 std::string base64(const unsigned char* data, std::size_t size);

@@ -90,7 +90,7 @@ void RodOutputs::write_vtk(const Rod& rod) {
     }
   const std::string name = fmt::format("particles_{}.vtp", rod.sim().step);
   io::write_vtp(folder_ / "particles" / name, xyz,
-                {{"velocity", 3, std::move(velocity)}, {"stress_zz", 1, rod.particle_stress()}}, io::VtkEncoding::Base64);
+                {{"velocity", 3, std::move(velocity), "m/s"}, {"stress_zz", 1, rod.particle_stress(), "Pa"}}, io::VtkFormat{io::VtkEncoding::Zlib, io::VtkPrecision::Float32});
   pvd_.add(rod.sim().time * rod.units().time(), "particles/" + name);
 }
 

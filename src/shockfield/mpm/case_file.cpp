@@ -164,11 +164,9 @@ DiagnosticsSpec read_diagnostics(const std::optional<Config>& d, double default_
 
 OutputSpec read_output(const std::optional<Config>& o, double end_time) {
   OutputSpec s;
-  static_cast<OutputIntervals&>(s) = read_output_intervals(o, end_time, {.profiles = false, .fields = true});
+  static_cast<OutputIntervals&>(s) = read_output_intervals(o, end_time, {.profiles = false, .fields = true, .vtk = true});
   if (!o) return s;
   s.particles = o->get_bool_or("particles", true);
-  s.encoding = o->get_choice_or("vtk_encoding", {"ascii", "base64"}, "ascii") == "ascii" ? io::VtkEncoding::Ascii
-                                                                                        : io::VtkEncoding::Base64;
   return s;
 }
 

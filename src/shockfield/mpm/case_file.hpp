@@ -52,7 +52,6 @@ struct DiagnosticsSpec {
 /// Intervals in seconds; field frames are .vti (grid) and .vtp (particles).
 struct OutputSpec : OutputIntervals {
   bool particles = true;           ///< write particle .vtp with each field frame
-  io::VtkEncoding encoding = io::VtkEncoding::Ascii;
 };
 
 struct MpmCase {

@@ -107,6 +107,7 @@ io::VtkImage grid_fields(const Simulation& sim) {
   const int axis = g.dim - 1;
   const char* names[] = {"temperature", "pressure", "density", "plastic_work", "damage", "longitudinal_stress",
                          "longitudinal_deviator", "von_mises"};
+  const char* units[] = {"K", "Pa", "kg/m3", "J/kg", "1", "Pa", "Pa", "Pa"};
   constexpr std::size_t ns = 8;
   std::vector<double> mass(nn, 0.0), scalars(ns * nn, 0.0), vel(3 * nn, 0.0), stress(9 * nn, 0.0);
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -145,19 +146,21 @@ io::VtkImage grid_fields(const Simulation& sim) {
     ux[n] = vel[3 * n], uy[n] = vel[3 * n + 1];
   }
   for (std::size_t k = 0; k < ns; ++k)
-    img.point_data.push_back({names[k], 1, std::vector<double>(scalars.begin() + static_cast<long>(k * nn),
-                                                               scalars.begin() + static_cast<long>((k + 1) * nn))});
-  img.point_data.push_back({"ux", 1, std::move(ux)});
-  img.point_data.push_back({"uy", 1, std::move(uy)});
-  img.point_data.push_back({"mass_density", 1, std::move(mass_density)});
-  img.point_data.push_back({"velocity", 3, std::move(vel)});
-  img.point_data.push_back({"stress", 9, std::move(stress)});
+    img.point_data.push_back({names[k], 1,
+                              std::vector<double>(scalars.begin() + static_cast<long>(k * nn),
+                                                  scalars.begin() + static_cast<long>((k + 1) * nn)),
+                              units[k]});
+  img.point_data.push_back({"ux", 1, std::move(ux), "m/s"});
+  img.point_data.push_back({"uy", 1, std::move(uy), "m/s"});
+  img.point_data.push_back({"mass_density", 1, std::move(mass_density), "kg/m3"});
+  img.point_data.push_back({"velocity", 3, std::move(vel), "m/s"});
+  img.point_data.push_back({"stress", 9, std::move(stress), "Pa"});
   return img;
 }
 
 void RunOutput::write_fields(const Simulation& sim) {
   const std::string grid_file = fmt::format("fields/grid_{:09d}.vti", sim.step_count());
-  io::write_vti(folder_ / grid_file, grid_fields(sim), case_.output.encoding);
+  io::write_vti(folder_ / grid_file, grid_fields(sim), case_.output.vtk);
   grid_pvd_.add(sim.time(), grid_file);
   if (!case_.output.particles) return;
   const Particles& p = sim.particles();
@@ -165,9 +168,11 @@ void RunOutput::write_fields(const Simulation& sim) {
   const int axis = case_.grid.dim - 1;
   std::vector<double> xyz(3 * n), vel(3 * n), stress(9 * n), deviator(9 * n);
   std::vector<io::VtkArray> arrays;
-  for (const char* name : {"density", "pressure", "temperature", "plastic_work", "plastic_strain", "energy", "material",
-                           "damage", "longitudinal_stress", "longitudinal_deviator", "von_mises"})
-    arrays.push_back({name, 1, std::vector<double>(n)});
+  const std::pair<const char*, const char*> scalar_arrays[] = {
+      {"density", "kg/m3"}, {"pressure", "Pa"}, {"temperature", "K"}, {"plastic_work", "J/kg"},
+      {"plastic_strain", "1"}, {"energy", "J/kg"}, {"material", "1"}, {"damage", "1"},
+      {"longitudinal_stress", "Pa"}, {"longitudinal_deviator", "Pa"}, {"von_mises", "Pa"}};
+  for (const auto& [name, unit] : scalar_arrays) arrays.push_back({name, 1, std::vector<double>(n), unit});
   for (std::size_t i = 0; i < n; ++i) {
     const auto& s = p.state[i];
     const Mat3 sigma = s.stress();
@@ -183,11 +188,11 @@ void RunOutput::write_fields(const Simulation& sim) {
                              sigma(axis, axis), dev(axis, axis), materials::von_mises(dev)};
     for (std::size_t k = 0; k < arrays.size(); ++k) arrays[k].values[i] = values[k];
   }
-  arrays.push_back({"velocity", 3, std::move(vel)});
-  arrays.push_back({"stress", 9, std::move(stress)});
-  arrays.push_back({"deviator", 9, std::move(deviator)});
+  arrays.push_back({"velocity", 3, std::move(vel), "m/s"});
+  arrays.push_back({"stress", 9, std::move(stress), "Pa"});
+  arrays.push_back({"deviator", 9, std::move(deviator), "Pa"});
   const std::string file = fmt::format("fields/particles_{:09d}.vtp", sim.step_count());
-  io::write_vtp(folder_ / file, xyz, arrays, case_.output.encoding);
+  io::write_vtp(folder_ / file, xyz, arrays, case_.output.vtk);
   particles_pvd_.add(sim.time(), file);
 }
 

@@ -86,7 +86,7 @@ PhasefieldCase read_phasefield_case(const Config& root) {
   if (initial) c.domains = read_domains(*initial, c.grid);
   if (c.domains.empty()) root.fail("initial", "at least one [[initial.sphere]], [[initial.ellipsoid]], "
                                               "[[initial.slab]] or [initial.random]");
-  c.output = read_output_intervals(root.optional_table("output"), c.end_time, {false, true});
+  c.output = read_output_intervals(root.optional_table("output"), c.end_time, {.profiles = false, .fields = true, .vtk = true});
   return c;
 }
 

@@ -148,9 +148,9 @@ class PhasefieldMethod final : public Method {
       image.points[d] = static_cast<std::size_t>(c_.grid.n[d]);
       image.spacing[d] = c_.grid.dx;
     }
-    image.point_data.push_back({"xi", 1, solver_.field()});
+    image.point_data.push_back({"xi", 1, solver_.field(), "1"});  // the order parameter, dimensionless
     const std::string file = fmt::format("fields/xi_{}.vti", k);
-    io::write_vti(run_->folder / file, image, io::VtkEncoding::Base64);
+    io::write_vti(run_->folder / file, image, c_.output.vtk);
     pvd_.add(solver_.time(), file);
   }
 

@@ -143,7 +143,7 @@ TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
   std::ifstream probes(dir / "probes.csv");
   std::string header;
   std::getline(probes, header);
-  EXPECT_EQ(header.rfind("time,velocity_0,force_0,overlap_0,velocity_100", 0), 0u) << header;
+  EXPECT_EQ(header.rfind("time_s,velocity_0,force_0,overlap_0,velocity_100", 0), 0u) << header;
   EXPECT_TRUE(std::filesystem::exists(dir / "spacetime_force.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "signal.csv"));
   // The summary: damping (γ = 1e-3 N·s/m) removes a little energy, so the error is small but

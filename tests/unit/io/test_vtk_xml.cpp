@@ -1,17 +1,23 @@
-// VTK XML writers: base64 against RFC 4648 vectors; a .vti written as ASCII reads back through
-// analysis/field_reader with NaN points as void cells; .pvd entries survive a resume up to its time.
+// VTK XML writers: base64 against RFC 4648 vectors; a .vti written in every encoding and
+// precision reads back through analysis/field_reader with NaN points as void cells; the zlib
+// block layout of VTK; .pvd entries survive a resume up to its time.
 #include <gtest/gtest.h>
 
 #include "support/scratch_path.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "shockfield/analysis/field_reader.hpp"
+#include "shockfield/core/error.hpp"
 #include "shockfield/io/vtk_xml.hpp"
+#include "shockfield/io/vtk_zlib.hpp"
 
 namespace {
 
@@ -57,6 +63,100 @@ TEST(VtkXml, ImageDataReadsBackWithVoids) {
   // 6 doubles = 48 bytes: header "MAAAAAAAAAA=" (UInt64 48), then 64 base64 characters of data.
   EXPECT_NE(text.str().find("format=\"binary\">\nMAAAAAAAAAA="), std::string::npos);
   fs::remove_all(dir);
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Every encoding and precision: the values read back exactly (Float64) or as the nearest float
+// (Float32, so 310.1 reads as 310.100006…), NaN stays a void, units are in the tags.
+TEST(VtkXml, EveryEncodingAndPrecisionReadsBack) {
+  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_formats_test");
+  fs::create_directories(dir);
+  io::VtkImage img;
+  img.points = {40, 30, 1};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> t(1200);
+  for (std::size_t i = 0; i < t.size(); ++i) t[i] = 300.0 + 0.1 * static_cast<double>(i % 97) + 1e-9 * static_cast<double>(i);
+  t[7] = nan;
+  img.point_data.push_back({"temperature", 1, t, "K"});
+  img.point_data.push_back({"velocity", 3, std::vector<double>(3600, -2.5), "m/s"});
+  for (io::VtkEncoding e : {io::VtkEncoding::Ascii, io::VtkEncoding::Base64, io::VtkEncoding::Raw, io::VtkEncoding::Zlib})
+    for (io::VtkPrecision p : {io::VtkPrecision::Float64, io::VtkPrecision::Float32}) {
+      const std::string name = fmt::format("{}_{}.vti", io::encoding_name(e), p == io::VtkPrecision::Float32 ? 32 : 64);
+      io::write_vti(dir / name, img, {e, p});
+      const std::string text = read_text(dir / name);
+      EXPECT_NE(text.find("Name=\"temperature\" NumberOfComponents=\"1\""), std::string::npos) << name;
+      EXPECT_NE(text.find("units=\"K\""), std::string::npos) << name;
+      EXPECT_EQ(text.find("compressor=") != std::string::npos, e == io::VtkEncoding::Zlib) << name;
+      const analysis::GridField f = analysis::read_grid_field((dir / name).string(), "temperature");
+      ASSERT_EQ(f.values.size(), t.size()) << name;
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        if (i == 7) {
+          EXPECT_TRUE(f.void_at(i)) << name;
+          continue;
+        }
+        const float single = static_cast<float>(t[i]);  // ascii holds the float's shortest text
+        const double expected = p == io::VtkPrecision::Float64 ? t[i]
+                                : e == io::VtkEncoding::Ascii  ? std::stod(fmt::format("{}", single))
+                                                               : static_cast<double>(single);
+        ASSERT_EQ(f.values[i], expected) << name << " value " << i;
+      }
+    }
+  // A slowly varying field compresses: zlib Float32 at least 4x smaller than ascii Float64.
+  const auto size = [&](const char* n) { return static_cast<double>(fs::file_size(dir / n)); };
+  EXPECT_GT(size("ascii_64.vti") / size("zlib_32.vti"), 4.0);
+  fs::remove_all(dir);
+}
+
+// VTK's compressed-array layout: [blocks, block size, last block size, compressed sizes...],
+// a partial last block, and a full last block written as 0.
+TEST(VtkXml, ZlibBlocksFollowVtkLayout) {
+  std::vector<unsigned char> data(2500);
+  for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<unsigned char>(i * 7 % 251);
+  for (std::size_t total : {std::size_t{2500}, std::size_t{2000}, std::size_t{0}}) {
+    const std::string packed = io::vtk_zlib_compress(data.data(), total, 1000);
+    std::uint64_t header[3];
+    std::memcpy(header, packed.data(), sizeof header);
+    EXPECT_EQ(header[0], (total + 999) / 1000);
+    EXPECT_EQ(header[1], 1000u);
+    EXPECT_EQ(header[2], total % 1000);
+    std::size_t pos = 0;
+    const auto take = [&](std::size_t n) {
+      const std::string out = packed.substr(std::min(pos, packed.size()), n);
+      pos += out.size();
+      return out;
+    };
+    const auto same = [](std::string b) { return b; };
+    const std::string plain = io::vtk_zlib_decompress(take, 8, same, total, "test");
+    ASSERT_EQ(plain.size(), total);
+    EXPECT_EQ(std::memcmp(plain.data(), data.data(), total), 0);
+  }
+}
+
+// A compressed array that lies: a wrong total, a truncated block, a corrupt block.
+TEST(VtkXml, CorruptZlibDataIsAnInputError) {
+  std::vector<double> v(1000, 1.5);
+  const std::string packed = io::vtk_zlib_compress(v.data(), 8000, 4096);
+  const auto reader = [](const std::string& bytes) {
+    return [bytes, pos = std::size_t{0}](std::size_t n) mutable {
+      const std::string out = bytes.substr(std::min(pos, bytes.size()), n);
+      pos += out.size();
+      return out;
+    };
+  };
+  const auto same = [](std::string b) { return b; };
+  EXPECT_THROW(io::vtk_zlib_decompress(reader(packed), 8, same, 8008, "f"), InputError);
+  EXPECT_THROW(io::vtk_zlib_decompress(reader(packed.substr(0, packed.size() - 3)), 8, same, 8000, "f"), InputError);
+  std::string corrupt = packed;
+  corrupt[5 * 8 + 2] ^= 0x5a;  // inside the first compressed block
+  EXPECT_THROW(io::vtk_zlib_decompress(reader(corrupt), 8, same, 8000, "f"), InputError);
+  EXPECT_THROW(io::vtk_zlib_decompress(reader(packed.substr(0, 12)), 8, same, 8000, "f"), InputError);
+  EXPECT_EQ(io::vtk_zlib_decompress(reader(packed), 8, same, 8000, "f").size(), 8000u);
 }
 
 TEST(VtkXml, PvdSeriesKeepsEntriesUpToTheResumeTime) {

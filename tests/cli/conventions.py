@@ -1,0 +1,69 @@
+#!/usr/bin/python3
+"""Checks the output conventions of docs/conventions.md on run folders.
+
+    conventions.py RUN_DIR [RUN_DIR ...]
+
+Every .vti/.vtp file: each DataArray but a vertex cell's connectivity and offsets carries a
+units attribute. Every .csv file: at most one time column (time, time_s, time_ps, Time), and
+its name is the one of the method's unit system (the method is read from the run folder's
+config.resolved.toml). Prints each violation with its file and exits 1 if there is any.
+"""
+import pathlib
+import re
+import sys
+
+TIME_COLUMNS = {"time", "time_s", "time_ps", "Time"}
+# The time column of series-like CSVs per method: SI methods "time_s", MD (metal units)
+# "time_ps", methods in model units "time". The thermo table keeps LAMMPS's "Time".
+TIME_NAME = {"md": "time_ps", "mpm": "time_s", "pd": "time_s", "granular": "time_s", "macroparticle": "time_s",
+             "dbm": "time", "phasefield": "time"}
+
+
+def method_of(run):
+    resolved = run / "config.resolved.toml"
+    if resolved.exists():
+        m = re.search(r'^method = ["\x27](\w+)["\x27]', resolved.read_text(), re.M)
+        if m:
+            return m.group(1)
+    return None
+
+
+def check_vtk(path):
+    text = path.read_bytes().split(b"<AppendedData")[0].decode("utf-8", "replace")
+    for tag in re.findall(r"<DataArray[^>]*>", text):
+        name = re.search(r'Name="([^"]+)"', tag)
+        name = name.group(1) if name else "?"
+        if name not in ("connectivity", "offsets") and "units=" not in tag:
+            yield f"{path}: DataArray '{name}' has no units attribute"
+
+
+def check_csv(path, method):
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+    times = [c for c in header if c in TIME_COLUMNS]
+    if len(times) > 1:
+        yield f"{path}: {len(times)} time columns {times}; expected one"
+    if path.name == "thermo.csv" and times == ["Time"]:
+        return  # the thermo table, LAMMPS's column names (docs/architecture.md)
+    if times and method in TIME_NAME and times[0] != TIME_NAME[method]:
+        yield f"{path}: time column '{times[0]}'; a {method} run names it '{TIME_NAME[method]}'"
+
+
+def main():
+    problems = []
+    for run in map(pathlib.Path, sys.argv[1:]):
+        method = method_of(run)
+        for path in sorted(run.rglob("*")):
+            if path.suffix in (".vti", ".vtp"):
+                problems += check_vtk(path)
+            elif path.suffix == ".csv":
+                problems += check_csv(path, method)
+    for p in problems:
+        print(p)
+    if problems:
+        sys.exit(1)
+    print(f"ok: {len(sys.argv) - 1} run folders follow the output conventions")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The output conventions (docs/conventions.md) hold for the run folder of every method's test case
+# (tests/cli/cases): units on every VTK array, one time column per file named for the method's unit
+# system. The checker itself fails on a folder that breaks them (a second time column, a time
+# column of another unit system, an array without units).
+source "$(dirname "$0")/lib.bash"
+set -e
+export OMP_NUM_THREADS=1
+check() { /usr/bin/python3 "$ROOT/tests/cli/conventions.py" "$@"; }
+runs=()
+for case_file in "$ROOT"/tests/cli/cases/*.toml; do
+  name=$(basename "$case_file" .toml)
+  "$SF" run "$case_file" --output "$WORK/$name" -q > /dev/null
+  runs+=("$WORK/$name")
+done
+check "${runs[@]}" || fail "a run folder breaks the output conventions (above)"
+
+# A deliberately broken folder: the checker must name each violation.
+mkdir -p "$WORK/broken/fields"
+printf "method = 'mpm'\n" > "$WORK/broken/config.resolved.toml"
+printf "step,time_s,time\n0,0,0\n" > "$WORK/broken/series.csv"
+printf "step,time_ps\n0,0\n" > "$WORK/broken/profile.csv"
+cp "$WORK/mpm_tiny/fields/grid_000000000.vti" "$WORK/broken/fields/"
+sed -i '0,/ units="K"/s/ units="K"//' "$WORK/broken/fields/grid_000000000.vti"
+set +e
+check "$WORK/broken" > "$WORK/broken.txt"
+code=$?
+set -e
+[ $code -eq 1 ] || fail "the checker passed a broken folder (exit $code)"
+for p in "series.csv: 2 time columns" "profile.csv: time column 'time_ps'; a mpm run names it 'time_s'" \
+         "DataArray 'temperature' has no units attribute"; do
+  grep -qF "$p" "$WORK/broken.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken.txt"))"
+done
+echo "conventions: every method's run folder follows docs/conventions.md; a broken folder is caught"
