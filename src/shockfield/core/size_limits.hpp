@@ -2,6 +2,10 @@
 // The largest systems a case may ask for, checked where the counts are read and before anything
 // is sized by them: a count trusted too far ends in std::bad_alloc (exit 1) or swaps the machine,
 // instead of an input error naming the key.
+#include <fmt/format.h>
+
+#include <string>
+
 namespace shockfield {
 
 /// Grid cells or nodes (DBM lattice, MPM grid, phase-field grid) and lattice atoms (MD): 10^9.
@@ -15,5 +19,12 @@ inline constexpr double kMaxGridPoints = 1e9;
 /// stress and history), a PD point ~1 kB with its bonds, so 10^8 of them is 60-100 GB. Counted
 /// from the case (lattice points of a body) before any is made.
 inline constexpr double kMaxParticles = 1e8;
+
+/// "3.2 GB", "450 MB": the memory a run's arrays will take, as `shockfield run --check` prints it
+/// (an estimate of the large arrays, in decimal units).
+inline std::string memory_text(double bytes) {
+  if (bytes >= 1e9) return fmt::format("{:.3g} GB", bytes / 1e9);
+  return fmt::format("{:.3g} MB", bytes / 1e6);
+}
 
 }  // namespace shockfield
