@@ -51,3 +51,29 @@ center = [8.0, 10.0, 10.0]
 radius = 5.0
 [output]
 series_interval = 0.5' "1000000000 nodes" "28 GB when it runs"
+
+# PD: 250^3 points at horizon_factor 3, 1.88·10^9 bonds (within the 2·10^9 bound): ~91 GB. The
+# model and the stable step are checked on a 13^3 sub-body; the whole body is counted.
+pd="$ROOT/tests/cli/cases/pd_tiny.toml"
+check_large pd "$(sed -e 's/dim = 1/dim = 3/' -e 's/counts = \[400\]/counts = [250, 250, 250]/' "$pd")" \
+  "15625000 points, 1880110848 bonds" "90.8 GB when it runs" "13 x 13 x 13 sub-body"
+# The sub-body gives the whole body's values: a 30 x 20 x 18 body (j2 and pmb) is run, and its
+# config.resolved.toml (points, bonds, stable_time_step_s, time_step_s, steps under [derived],
+# compared to 1e-12 relative) is checked again with --check, which builds only a 13^3 sub-body.
+mid=$(sed -e 's/dim = 1/dim = 3/' -e 's/counts = \[400\]/counts = [30, 20, 18]/' -e 's/end_time = 2e-7/end_time = 2e-9/' "$pd")
+pmb=$(printf '%s\n' "$mid" | sed -e 's/model = "j2"/model = "pmb"\nmicromodulus = 1e21\ncritical_stretch = 0.01/' \
+  -e '/^young\|^poisson\|^yield_stress/d')
+for model in j2 pmb; do
+  if [ $model = j2 ]; then text="$mid"; else text="$pmb"; fi
+  printf '%s\n' "$text" > "$WORK/mid_$model.toml"
+  "$SF" run "$WORK/mid_$model.toml" -q --output "$WORK/mid_$model" > /dev/null
+  "$SF" run "$WORK/mid_$model/config.resolved.toml" --check > "$WORK/stdout" 2>&1 \
+    || fail "$model: the sub-body's derived values differ from the run's: $(cat "$WORK/stdout")"
+  grep -qF "10800 points, 1117512 bonds" "$WORK/stdout" || fail "$model: $(cat "$WORK/stdout")"
+  grep -qF "13 x 13 x 13 sub-body" "$WORK/stdout" || fail "$model: no sub-body: $(cat "$WORK/stdout")"
+  echo "ok: $model sub-body = whole body: $(cat "$WORK/stdout")"
+done
+# Right above the bond bound: refused by key with the count and its memory (exit 2).
+expect_error "$(sed -e 's/dim = 1/dim = 3/' -e 's/counts = \[400\]/counts = [100, 100, 100]/' \
+  -e 's/horizon_factor = 3.0/horizon_factor = 10.0/' "$pd")" "body.horizon_factor" "3.72e+09 bonds" "149 GB" \
+  "at most 2e+09 bonds"

@@ -20,6 +20,14 @@ inline constexpr double kMaxGridPoints = 1e9;
 /// from the case (lattice points of a body) before any is made.
 inline constexpr double kMaxParticles = 1e8;
 
+/// PD bonds (all points' families together): 2·10^9. The family's CSR offsets are `int`, which
+/// holds at most 2^31 − 1 ≈ 2.1·10^9 bonds, and a bond costs ~40 bytes in the run (neighbour,
+/// length, volume scale, influence weight, damage flag), so 2·10^9 bonds are ~80 GB: beyond the
+/// machines this code runs on (the examples have at most ~10^7). Bonds per point grow as m³
+/// (4/3·π·m³ inside a 3D body for δ = m·ΔX), so a large horizon_factor reaches it long before the
+/// point bound; counted from the lattice before the body is built (pd/lattice_bonds.hpp).
+inline constexpr double kMaxBonds = 2e9;
+
 /// "3.2 GB", "450 MB": the memory a run's arrays will take, as `shockfield run --check` prints it
 /// (an estimate of the large arrays, in decimal units).
 inline std::string memory_text(double bytes) {
