@@ -3,7 +3,7 @@
 # allocating them (issue 14; docs/robustness.md): every method's factory reads and validates the
 # case and counts its cells, nodes, points, bonds or atoms, and the arrays are allocated when the
 # run starts. Each check runs in 2 GB of address space (ulimit -v) and must finish within 10 s
-# (they take ~1 s, most of it DBM's linear stability analysis); the sizes it prints are asserted.
+# (they take 0.1-1 s, most of it DBM's linear stability analysis); the sizes it prints are asserted.
 # With main's binary before this change each of them stopped with exit 3, "out of memory".
 source "$(dirname "$0")/lib.bash"
 set -e
@@ -77,3 +77,28 @@ done
 expect_error "$(sed -e 's/dim = 1/dim = 3/' -e 's/counts = \[400\]/counts = [100, 100, 100]/' \
   -e 's/horizon_factor = 3.0/horizon_factor = 10.0/' "$pd")" "body.horizon_factor" "3.72e+09 bonds" "149 GB" \
   "at most 2e+09 bonds"
+
+# MD: 400^3 fcc cells, 2.56·10^8 atoms (~102 GB at ~400 B an atom): the crystal is counted (one
+# repeat cell times the cells, as no region deletes or selects atoms), only 3^3 cells are built
+# for the types and the overlap check.
+md=$(sed 's/repeat = \[4, 4, 4\]/repeat = [400, 400, 400]/' "$ROOT/tests/cli/cases/tiny_cu.toml")
+check_large md "$md" "256000000 atoms" "102 GB when it runs" "the crystal counted, not built"
+# The count is the built crystal's: the [111] void example (rotated cells) with a deleted sphere
+# and a block group (every site visited), and without them (one cell multiplied), run for 4 steps;
+# --check of its config.resolved.toml derives the same atoms, atoms_deleted, atoms_in_group_*
+# and density_g_cc (1e-12) from the counted crystal.
+void="$ROOT/examples/md_void_shock_111/case.toml"
+with_regions=$(sed -e 's/steps = 500/steps = 2/' -e 's/steps = 3000/steps = 2/' -e 's/^radius = 5.0/radius = 5.0\n\n[[system.group]]\nname = "top"\nshape = "block"\nxlo = -100.0\nxhi = 100.0\nylo = -100.0\nyhi = 100.0\nzlo = 100.0\nzhi = 1000.0\n\n[[system.group]]\nname = "cu"\ntypes = [1]/' "$void")
+without=$(sed -e 's/steps = 500/steps = 2/' -e 's/steps = 3000/steps = 2/' -e '/^\[\[system.delete\]\]/,/^radius = 5.0/d' \
+  -e 's/^elements = \["Cu"\]/elements = ["Cu"]\n\n[[system.group]]\nname = "cu"\ntypes = [1]/' "$void")
+for name in with_regions without; do
+  if [ $name = without ]; then text="$without"; atoms=8640; else text="$with_regions"; atoms=8597; fi
+  printf '%s\n' "$text" > "$WORK/$name.toml"
+  "$SF" run "$WORK/$name.toml" -q --output "$WORK/$name" > /dev/null
+  grep -q "^atoms = $atoms\$" "$WORK/$name/config.resolved.toml" || fail "$name: the run does not have $atoms atoms"
+  "$SF" run "$WORK/$name/config.resolved.toml" --check > "$WORK/stdout" 2>&1 \
+    || fail "$name: the counted crystal differs from the built one: $(cat "$WORK/stdout")"
+  grep -qF "($atoms atoms" "$WORK/stdout" && grep -qF "counted, not built" "$WORK/stdout" || fail "$name: $(cat "$WORK/stdout")"
+  echo "ok: md $name: counted = built: $(cat "$WORK/stdout")"
+done
+echo "check_large_cases: dbm, phasefield, pd, md checked without their arrays"
