@@ -57,6 +57,11 @@ series_interval = 0.5' "1000000000 nodes" "28 GB when it runs"
 pd="$ROOT/tests/cli/cases/pd_tiny.toml"
 check_large pd "$(sed -e 's/dim = 1/dim = 3/' -e 's/counts = \[400\]/counts = [250, 250, 250]/' "$pd")" \
   "15625000 points, 1880110848 bonds" "90.8 GB when it runs" "13 x 13 x 13 sub-body"
+# A large horizon: 60^3 points at horizon_factor 14 (1.88·10^9 bonds): the sub-body of four
+# horizons (57^3 points, ~10^9 bonds) would cost as much as the run, so a smaller one (at most
+# 5·10^6 bonds, 13^3) is built and the stable step is called an estimate (~1.4 s, 0.15 GB).
+check_large pd_m14 "$(sed -e 's/dim = 1/dim = 3/' -e 's/counts = \[400\]/counts = [60, 60, 60]/' \
+  -e 's/horizon_factor = 3.0/horizon_factor = 14.0/' "$pd")" "216000 points, 1884341712 bonds" "13 x 13 x 13 sub-body" "the step is an estimate"
 # The sub-body gives the whole body's values: a 30 x 20 x 18 body (j2 and pmb) is run, and its
 # config.resolved.toml (points, bonds, stable_time_step_s, time_step_s, steps under [derived],
 # compared to 1e-12 relative) is checked again with --check, which builds only a 13^3 sub-body.

@@ -143,12 +143,34 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
 // within two horizons (2⌈m⌉ points) of it, and along an axis of 4⌈m⌉ + 1 points there is a point
 // at each distance 0..2⌈m⌉ from either surface with at least 2⌈m⌉ on its other side. So the sub-body
 // has the whole body's smallest stable step (for a polycrystal, of the grains the sub-body holds).
-// Its cost grows as m^6 in 3D (~1 s at m = 3, ~10 s at m = 7); the whole body is counted, not built.
+// Its bonds grow as m^6 in 3D, so beyond kCheckBonds (~0.2 GB and ~2 s; m > 4 in 3D) it
+// is made smaller until it has at most kCheckBonds (a body of (m+1)^3 points is all bonds, so for a
+// huge m the sub-body holds no whole family): the stable step is then an estimate (the run
+// computes its own on the whole body before its folder exists).
+constexpr double kCheckBonds = 5e6;
+
 BodySpec checked_body(const BodySpec& body) {
+  const int m = static_cast<int>(std::ceil(body.horizon_factor));
   BodySpec sub = body;
-  const int most = 4 * static_cast<int>(std::ceil(body.horizon_factor)) + 1;
-  for (int d = 0; d < body.dim; ++d) sub.counts[static_cast<std::size_t>(d)] = std::min(body.counts[static_cast<std::size_t>(d)], most);
+  for (int most = 4 * m + 1; most >= 2; --most) {
+    for (int d = 0; d < body.dim; ++d) {
+      const auto a = static_cast<std::size_t>(d);
+      sub.counts[a] = std::min(body.counts[a], most);
+    }
+    if (lattice_bonds(sub.dim, sub.counts, sub.horizon_factor) <= kCheckBonds) break;
+  }
   return sub;
+}
+
+// Whether a sub-body of checked_body has every kind of point of the body (else its stable step is
+// an estimate).
+bool holds_every_kind(const BodySpec& sub, const BodySpec& body) {
+  const int m = static_cast<int>(std::ceil(body.horizon_factor));
+  for (int d = 0; d < body.dim; ++d) {
+    const auto a = static_cast<std::size_t>(d);
+    if (sub.counts[a] < std::min(body.counts[a], 4 * m + 1)) return false;
+  }
+  return true;
 }
 
 // Peridynamics as a plug-in of the run driver: velocity-Verlet with a fixed step to end_time
@@ -180,8 +202,9 @@ class PdMethod final : public Method {
   std::string check_text() const override {
     const auto& n = built_.counts;
     const std::string sub = whole() ? ""
-        : fmt::format("; the stable step and the model checked on a {} x {} x {} sub-body{}", n[0], n[1], n[2],
-                      polycrystal() ? " (its grains only)" : "");
+        : fmt::format("; the stable step and the model checked on a {} x {} x {} sub-body{}{}", n[0], n[1], n[2],
+                      polycrystal() ? " (its grains only)" : "",
+                      holds_every_kind(built_, c_.body) ? "" : " (smaller than four horizons: the step is an estimate)");
     return fmt::format("pd case ({} points, {} bonds, dt {:.3g} s; {} when it runs{})", points(), bonds(), dt_,
                        memory_text(pd_bytes(points(), bonds())), sub);
   }
