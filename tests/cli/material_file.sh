@@ -103,4 +103,21 @@ grep -q "^density = 8930" "$WORK/pd/config.resolved.toml" || fail "PD did not ta
 grep -qF "material file: $WORK/m/cu.toml" "$WORK/pd/log.txt" || fail "PD log lacks the material file"
 sed -i '/^c1\|^c44/d' "$WORK/m/cu.toml"
 expect_error "$pd" "cu.toml: missing elasticity.c11" 'model = "crystal"'
+# A material file's value is checked against the range of the case key it stands for (issue 14):
+# a negative density is refused by the file's own ranges (MPM, file and key); a yield stress of
+# 0 is a valid strength.yield_stress but PD's j2 yield_stress must be > 0, so the PD case refuses
+# it naming the file, its key, the case key and the range (it ran with a zero yield stress before).
+expect_error "$(case_with "${good/rho0 = 2700.0/rho0 = -2700.0}")" "bad.toml" "key 'eos.rho0'" "expected a number > 0"
+cat > "$WORK/m/j2.toml" <<'EOF'
+[eos]
+rho0 = 7800.0
+[elasticity]
+bulk = 160e9
+shear = 80e9
+[strength]
+yield_stress = 0.0
+EOF
+pdj2=$(sed -e 's|model = "j2"|model = "j2"\nfile = "'"$WORK"'/m/j2.toml"|' -e '/^density\|^young\|^poisson\|^yield_stress/d' \
+  "$ROOT/tests/cli/cases/pd_tiny.toml")
+expect_error "$pdj2" "j2.toml: key 'strength.yield_stress' = 0 gives material.yield_stress = 0, expected > 0"
 echo "material_file: ok"

@@ -18,13 +18,7 @@ double eos_max_density(const GlsEos& eos) {
   return std::visit([](const auto& e) { return e.max_density(); }, eos);
 }
 
-GlsForce::GlsForce(Simulation& simulation, const Boundaries& boundaries,
-                   const GlsSettings& settings)
-    : sim_(simulation),
-      settings_(settings),
-      spectral_(simulation.lattice().nx, simulation.lattice().ny, simulation.lattice().dx,
-                simulation.lattice().dy),
-      coef_(spectral_.size()) {
+void GlsForce::validate(const Simulation& simulation, const Boundaries& boundaries, const GlsSettings& settings) {
   for (const BoundarySide& s : boundaries.side)
     if (s.kind != BoundaryKind::periodic)
       throw InputError(
@@ -44,6 +38,16 @@ GlsForce::GlsForce(Simulation& simulation, const Boundaries& boundaries,
         "(q < 0 raises it above the BGK value)",
         settings.q, simulation.settings().tau));
   std::visit([](const auto& e) { e.validate("GLS equation of state"); }, settings.eos);
+}
+
+GlsForce::GlsForce(Simulation& simulation, const Boundaries& boundaries,
+                   const GlsSettings& settings)
+    : sim_(simulation),
+      settings_(settings),
+      spectral_(simulation.lattice().nx, simulation.lattice().ny, simulation.lattice().dx,
+                simulation.lattice().dy),
+      coef_(spectral_.size()) {
+  validate(simulation, boundaries, settings);
   simulation.set_source(
       [this](const std::vector<double>& f, std::vector<double>& rhs) {
         coefficients(f);

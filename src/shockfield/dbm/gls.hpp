@@ -57,6 +57,8 @@ class GlsForce {
   /// InputError unless all boundaries are periodic, γ = 2, K ≥ 0, ζ ≥ 0, q ≥ 0 and the EOS
   /// parameters are valid.
   GlsForce(Simulation& simulation, const Boundaries& boundaries, const GlsSettings& settings);
+  /// The constructor's checks alone, without the FFT arrays (`shockfield run --check`).
+  static void validate(const Simulation& simulation, const Boundaries& boundaries, const GlsSettings& settings);
   GlsForce(const GlsForce&) = delete;
   GlsForce& operator=(const GlsForce&) = delete;
 

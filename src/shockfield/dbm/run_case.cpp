@@ -9,6 +9,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/dbm/case_file.hpp"
 #include "shockfield/dbm/checkpoint.hpp"
 #include "shockfield/dbm/detonation.hpp"
@@ -58,11 +59,10 @@ void derive(const Config& root, const DbmCase& c, const Simulation& sim) {
 class DbmMethod final : public Method {
  public:
   DbmMethod(const Config& root, const DbmCase& c, const CaseStability& stability)
-      : c_(c), sim_(c_.model, c_.lattice, c_.boundaries, c_.bgk), tol_(1e-9 * c_.bgk.dt) {
-    // [reaction]: the reactive DBM installs its source on sim (reaction.hpp).
-    if (c_.reaction)
-      reaction_ = std::make_unique<ReactiveFlow>(sim_, c_.boundaries, c_.reaction->law, c_.reaction->inflow_lambda);
-    if (c_.gls) gls_.emplace(sim_, c_);
+      : c_(c), sim_(c_.model, c_.lattice, c_.boundaries, c_.bgk, false), tol_(1e-9 * c_.bgk.dt) {
+    // The lattice's arrays (distributions, reactant, GLS force) are allocated when the run starts
+    // (allocate()), so that --check validates a lattice of any allowed size without them.
+    if (c_.gls) GlsForce::validate(sim_, c_.boundaries, c_.gls->settings);
     derive(root, c_, sim_);
     derive_stability(root, stability);
   }
@@ -73,11 +73,17 @@ class DbmMethod final : public Method {
                        c_.gls ? ", GLS liquid-vapour" : "", c_.bgk.tau);
   }
   std::string check_text() const override {
-    return fmt::format("dbm case ({} x {} cells, {} steps, dt {:.3g})", c_.lattice.nx, c_.lattice.ny, c_.steps,
-                       c_.bgk.dt);
+    // The distributions, and per cell 5 reactant arrays with [reaction] and ~10 GLS values.
+    const double cells = static_cast<double>(c_.lattice.nx) * c_.lattice.ny;
+    const double bytes = Simulation::bytes(c_.lattice, c_.model, c_.bgk.spectral_convection) +
+                         8.0 * cells * (c_.reaction ? 5.0 : 0.0) + 8.0 * cells * (c_.gls ? 10.0 : 0.0);
+    return fmt::format("dbm case ({} x {} cells, {} steps, dt {:.3g}; {} cells, {} when it runs)", c_.lattice.nx,
+                       c_.lattice.ny, c_.steps, c_.bgk.dt, c_.lattice.nx * static_cast<long long>(c_.lattice.ny),
+                       memory_text(bytes));
   }
 
   void start(RunContext& run) override {
+    allocate();
     if (gls_) {
       gls_->initialize(sim_);
     } else {
@@ -92,6 +98,7 @@ class DbmMethod final : public Method {
     write_due();
   }
   void resume(RunContext& run) override {
+    allocate();
     counters_ = read_checkpoint(run.checkpoint, sim_, reactant());
     open(run, true);
   }
@@ -133,7 +140,7 @@ class DbmMethod final : public Method {
 
   std::vector<std::string> thermo_columns() const override {
     std::vector<std::string> columns{"Step", "Time", "Mass", "Px", "TotEng", "MeanD"};
-    if (reaction_) columns.insert(columns.end(), {"ChemEng", "FrontX"});
+    if (c_.reaction) columns.insert(columns.end(), {"ChemEng", "FrontX"});
     return columns;
   }
   std::vector<double> thermo_values() const override {
@@ -173,6 +180,13 @@ class DbmMethod final : public Method {
   }
 
  private:
+  // The lattice's arrays; [reaction]: the reactive DBM installs its source on sim (reaction.hpp).
+  void allocate() {
+    sim_.allocate();
+    if (c_.reaction)
+      reaction_ = std::make_unique<ReactiveFlow>(sim_, c_.boundaries, c_.reaction->law, c_.reaction->inflow_lambda);
+    if (c_.gls) gls_.emplace(sim_, c_);
+  }
   std::vector<double>* reactant() { return reaction_ ? &reaction_->reactant_density() : nullptr; }
   void open(RunContext& run, bool resumed) {
     run_ = &run;

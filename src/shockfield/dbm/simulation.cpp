@@ -20,7 +20,7 @@ double dof_of(const BgkSettings& s) {
 }  // namespace
 
 Simulation::Simulation(VelocityModel model, const Lattice& lattice, const Boundaries& boundaries,
-                       const BgkSettings& settings)
+                       const BgkSettings& settings, bool allocate_now)
     : model_(std::move(model)),
       inversion_(model_),
       lattice_(lattice),
@@ -48,13 +48,28 @@ Simulation::Simulation(VelocityModel model, const Lattice& lattice, const Bounda
     for (const BoundarySide& s : boundaries.side)
       if (s.kind != BoundaryKind::periodic)
         throw InputError("spectral (FFT) convection needs periodic boundaries on all four sides");
-    spectral_ = std::make_unique<PeriodicSpectral>(lattice.nx, lattice.ny, lattice.dx, lattice.dy);
+  }
+  if (allocate_now) allocate();
+}
+
+void Simulation::allocate() {
+  const std::size_t n = lattice_.cells() * static_cast<std::size_t>(model_.size());
+  if (f_.size() == n) return;
+  if (settings_.spectral_convection) {
+    spectral_ = std::make_unique<PeriodicSpectral>(lattice_.nx, lattice_.ny, lattice_.dx, lattice_.dy);
     convection_.assign(spectral_->size() * model_.size(), 0.0);
   }
-  const std::size_t n = lattice_.cells() * static_cast<std::size_t>(model_.size());
   f_.assign(n, 0.0);
   f1_.assign(n, 0.0);
   work_.assign(n, 0.0);
+}
+
+double Simulation::bytes(const Lattice& lattice, const VelocityModel& model, bool spectral_convection) {
+  // f, f1 and work (ghosts included), and with spectral convection v·∇f of every velocity
+  // (interior cells) and the FFT's two complex work arrays of half the cells.
+  const double q = model.size(), cells = static_cast<double>(lattice.cells());
+  const double interior = static_cast<double>(lattice.nx) * lattice.ny;
+  return 8.0 * (3.0 * q * cells + (spectral_convection ? q * interior + 2.0 * interior : 0.0));
 }
 
 void Simulation::initialize(const std::function<Macro(double, double)>& state) {

@@ -35,9 +35,16 @@ class Simulation {
   /// beyond BGK, given f with its ghosts filled.
   using Source = std::function<void(const std::vector<double>& f, std::vector<double>& rhs)>;
 
-  /// Validates the settings (InputError naming the value and its limit).
+  /// Validates the settings (InputError naming the value and its limit). The distributions are
+  /// allocated now, or (`allocate` false) by allocate(): the run's plug-in defers them to the start
+  /// of the run, so that `shockfield run --check` never allocates the lattice
+  /// (docs/robustness.md).
   Simulation(VelocityModel model, const Lattice& lattice, const Boundaries& boundaries,
-             const BgkSettings& settings);
+             const BgkSettings& settings, bool allocate = true);
+  /// Sizes the distributions (and the spectral convection's arrays) to the lattice, unless they are.
+  void allocate();
+  /// The bytes allocate() takes (an estimate within the FFT library's own work arrays).
+  static double bytes(const Lattice& lattice, const VelocityModel& model, bool spectral_convection);
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 

@@ -34,10 +34,7 @@ std::optional<double> case_or_atoms(const Config& m, const char* key, const Rang
   if (m.has(key)) return m.get_double(key, range) * scale;
   const std::optional<double> v = file ? file->get(file_key) : std::nullopt;
   if (!v) return std::nullopt;
-  if (!range.contains(*v / scale))
-    throw InputError(fmt::format("{}: key '{}' = {} gives {} = {}, expected {} (the case's [material] {})",
-                                 file->path().string(), file_key, *v, m.key_path(key), *v / scale, range.describe(), key));
-  return m.get_double_or(key, *v / scale, range) * scale;
+  return materials::file_default(m, key, *file, file_key, *v, range, scale) * scale;
 }
 
 std::optional<double> optional_in(const Config& t, const char* key, const Range& range, double scale = 1.0) {

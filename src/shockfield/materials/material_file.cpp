@@ -161,6 +161,17 @@ std::optional<MaterialFile> open_material_file(const Config& t) {
   return f;
 }
 
+double file_default(const Config& t, std::string_view key, const MaterialFile& file, std::string_view file_key,
+                    double value, const Range& range, double scale) {
+  const double v = value / scale;
+  if (!range.contains(v))
+    throw InputError(fmt::format("{}: key '{}' = {} gives {} = {}, expected {} ({} does not give {}, so the "
+                                 "material file's value is used)",
+                                 file.path().string(), file_key, value, t.key_path(key), v, range.describe(), t.file(),
+                                 t.key_path(key)));
+  return t.get_double_or(key, v, range);
+}
+
 double case_or_file(const Config& t, std::string_view key, const MaterialFile* file,
                     std::initializer_list<std::string_view> file_keys, std::optional<double> fallback, Range range,
                     const std::string& needed_by) {
@@ -169,7 +180,7 @@ double case_or_file(const Config& t, std::string_view key, const MaterialFile* f
     return t.get_double_or(key, *fallback, range);
   }
   for (std::string_view fk : file_keys)
-    if (const auto v = file->get(fk)) return t.get_double_or(key, *v, range);
+    if (const auto v = file->get(fk)) return file_default(t, key, *file, fk, *v, range);
   if (fallback) return t.get_double_or(key, *fallback, range);
   file->missing(*file_keys.begin(), needed_by, fmt::format("{} in {}", t.key_path(key), t.file()));
 }

@@ -62,10 +62,17 @@ class MaterialFile {
 /// "<table>.file.sha256", "<table>.file.provenance.<key>".
 std::optional<MaterialFile> open_material_file(const Config& t);
 
+/// `value` (the material file's `file_key`, divided by `scale` to the case key's unit) as the
+/// default of the case key `key` of `t`: an InputError naming the material file, its key, the
+/// case key and `range` when it is outside the range the case key accepts (a value from a file is
+/// checked as strictly as one typed into the case).
+double file_default(const Config& t, std::string_view key, const MaterialFile& file, std::string_view file_key,
+                    double value, const Range& range, double scale = 1.0);
+
 /// The case value of `key` in `t` when given; else the first of `file_keys` the material file
-/// has (recorded in the resolved case as if given); else `fallback`; else an InputError naming
-/// the material file and its first key (or, without a file, the case's missing key). `needed_by`
-/// names the model that needs the value.
+/// has (checked against `range` by file_default and recorded in the resolved case as if given);
+/// else `fallback`; else an InputError naming the material file and its first key (or, without a
+/// file, the case's missing key). `needed_by` names the model that needs the value.
 double case_or_file(const Config& t, std::string_view key, const MaterialFile* file,
                     std::initializer_list<std::string_view> file_keys, std::optional<double> fallback, Range range,
                     const std::string& needed_by);

@@ -131,6 +131,13 @@ Vec3 Lattice::site(const std::array<long long, 3>& cell, std::size_t b) const {
 }
 
 std::size_t Lattice::create_atoms(const geometry::Box& box, Atoms& atoms) const {
+  std::int64_t tag = atoms.max_id();
+  const std::size_t before = atoms.nlocal;
+  for_each_site(box, [&](const Vec3& x, int type) { atoms.add(x, type, ++tag); });
+  return atoms.nlocal - before;
+}
+
+void Lattice::for_each_site(const geometry::Box& box, const std::function<void(const Vec3&, int)>& visit) const {
   // Range of conventional cells covering the box: its corners in fractional lattice coordinates.
   const Mat3 to_fraction = cell_.inverse() * rotate_.transpose();
   Vec3 fmin = Vec3::Constant(INFINITY), fmax = Vec3::Constant(-INFINITY);
@@ -141,8 +148,6 @@ std::size_t Lattice::create_atoms(const geometry::Box& box, Atoms& atoms) const 
     fmax = fmax.cwiseMax(f);
   }
   const Vec3 eps = 1e-6 * box.length();
-  std::int64_t tag = atoms.max_id();
-  const std::size_t before = atoms.nlocal;
   std::array<long long, 3> lo{}, hi{};
   for (int d = 0; d < 3; ++d) {
     lo[d] = static_cast<long long>(std::floor(fmin[d])) - 1;
@@ -162,9 +167,8 @@ std::size_t Lattice::create_atoms(const geometry::Box& box, Atoms& atoms) const 
           box.wrap(x, image);
           for (int d = 0; d < 3; ++d)  // a site within ε below a non-periodic lo face is on it
             if (!box.periodic(d)) x[d] = std::max(x[d], box.lo[d]);
-          atoms.add(x, spec_.basis_types.empty() ? 0 : spec_.basis_types[b], ++tag);
+          visit(x, spec_.basis_types.empty() ? 0 : spec_.basis_types[b]);
         }
-  return atoms.nlocal - before;
 }
 
 }  // namespace shockfield::md

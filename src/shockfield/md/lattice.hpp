@@ -17,6 +17,7 @@
 // a0·|v|/m where v/m is the shortest translation: e.g. fcc [1-10] → a0·√2/2, [11-2] → a0·√6/2,
 // [111] → a0·√3), so a periodic box of whole repeats is seamless.
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,6 +60,10 @@ class Lattice {
   /// or dropped regardless of round-off, and sites within ε below lo are put on lo.
   /// Returns the number of atoms added.
   std::size_t create_atoms(const geometry::Box& box, Atoms& atoms) const;
+  /// Calls visit(x, type) for every site create_atoms would add to `box`, in the same order and
+  /// at the same (mapped) positions, without storing them (`shockfield run --check` counts a
+  /// crystal of any allowed size this way).
+  void for_each_site(const geometry::Box& box, const std::function<void(const Vec3& x, int type)>& visit) const;
 
  private:
   Vec3 site(const std::array<long long, 3>& cell, std::size_t b) const;

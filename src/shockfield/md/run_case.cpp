@@ -10,6 +10,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/run_folder.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/lammps_data.hpp"
@@ -71,7 +72,7 @@ void settle_types(const Config& root, Prepared& p) {
 Prepared prepare(const Config& root, const RunOptions& options) {
   Prepared p;
   const fs::path case_dir = options.case_file.parent_path();
-  p.system = build_system(root.table("system"));
+  p.system = build_system(root.table("system"), options.validate_only);
   p.potential = potentials::make_potential(root.table("potential"), case_dir, p.system.atoms.ntypes());
   Atoms& atoms = p.system.atoms;
   settle_types(root, p);
@@ -114,13 +115,11 @@ Prepared prepare(const Config& root, const RunOptions& options) {
   root.check_unknown_keys();
 
   const Vec3 l = p.system.box.length();
-  root.derive("atoms", static_cast<long long>(atoms.nlocal));
+  root.derive("atoms", static_cast<long long>(p.system.atom_count()));
   root.derive("atom_types", static_cast<long long>(atoms.ntypes()));
   root.derive("box_lengths_A", fmt::format("{} {} {}", l.x(), l.y(), l.z()));
   root.derive("potential_cutoff_A", p.potential->cutoff());
-  double mass = 0;
-  for (std::size_t i = 0; i < atoms.nlocal; ++i) mass += atoms.mass_of(i);
-  root.derive("density_g_cc", mass / p.system.box.volume() * units::metal::amu_per_A3_to_g_per_cc);
+  root.derive("density_g_cc", p.system.total_mass() / p.system.box.volume() * units::metal::amu_per_A3_to_g_per_cc);
   long long total = 0;
   for (const auto& s : p.md.stages) total += s.steps;
   root.derive("total_steps", total);
@@ -179,12 +178,16 @@ std::optional<HugoniotState> report_hugoniot(const Simulation& sim, const RunOut
 class MdMethod final : public Method {
  public:
   MdMethod(const Config& root, const RunOptions& options)
-      : p_(prepare(root, options)), atoms_(p_.system.atoms.nlocal) {}
+      : p_(prepare(root, options)), atoms_(p_.system.atom_count()) {}
 
   std::string name() const override { return "md"; }
   std::string size_text() const override { return fmt::format("{} atoms", atoms_); }
   std::string check_text() const override {
-    return fmt::format("md case ({} atoms, {} stage(s))", atoms_, p_.md.stages.size());
+    // ~400 B an atom: position, velocity, force, ids, image and group flags, its share of the
+    // ghosts and of the neighbour list (~40 neighbours within cutoff + skin in a metal).
+    return fmt::format("md case ({} atoms, {} stage(s); ~{} when it runs{})", atoms_, p_.md.stages.size(),
+                       memory_text(400.0 * static_cast<double>(atoms_)),
+                       p_.system.counted_types.empty() ? "" : "; the crystal counted, not built");
   }
 
   void start(RunContext& run) override {

@@ -22,6 +22,15 @@ struct BuiltSystem {
   /// in atoms.mass: as in LAMMPS, where pair_coeff sets the potential file's masses after
   /// read_data, the potential's mass wins and the data file's is the fallback (md/run_case.cpp).
   std::vector<double> file_masses;
+  /// `--check` of a crystal larger than a few cells (build_system's `check`): `atoms` holds only
+  /// the crystal's first few cells (for the types, masses and the overlap check) and this, the
+  /// atoms per type of the whole crystal after [[system.delete]], counted without storing them.
+  std::vector<std::size_t> counted_types;
+
+  /// The system's atoms: atoms.nlocal, or the count of the whole crystal under --check.
+  std::size_t atom_count() const;
+  /// Σ mass per atom (amu), of the whole crystal under --check.
+  double total_mass() const;
 };
 
 /// Reads and validates the [system] table and builds the system; InputError naming file, key and
@@ -29,7 +38,9 @@ struct BuiltSystem {
 /// the case file (Config::file()).
 /// Types without a mass keep mass 0 (to be taken from the potential). Derived values (atom count,
 /// atoms deleted and per group, box lengths) are recorded with Config::derive.
-BuiltSystem build_system(const Config& system);
+/// `check` (shockfield run --check): a crystal of more than 3 cells along an axis is counted, not
+/// built (BuiltSystem::counted_types), so that --check of 10^9 atoms takes seconds and no memory.
+BuiltSystem build_system(const Config& system, bool check = false);
 
 /// The first pair of atoms (periodic images included) closer than `min_distance`, described with
 /// both ids and their distance; nullopt when there is none.

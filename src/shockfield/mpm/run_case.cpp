@@ -9,6 +9,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/mpm/case_builder.hpp"
 #include "shockfield/mpm/case_file.hpp"
 #include "shockfield/mpm/checkpoint.hpp"
@@ -71,8 +72,11 @@ class MpmMethod final : public Method {
     return fmt::format("{} particles, {} grid nodes, {}D", sim_.particles().size(), sim_.grid().size(), c_.grid.dim);
   }
   std::string check_text() const override {
-    return fmt::format("mpm case ({} particles, {} grid nodes, dt {:.3g} s)", sim_.particles().size(),
-                       sim_.grid().size(), first_dt_);
+    // ~500 B a particle (size_limits.hpp), 104 B a node (mass, momentum, force, velocity, acceleration).
+    const double bytes = 500.0 * static_cast<double>(sim_.particles().size()) +
+                         104.0 * static_cast<double>(sim_.grid().size());
+    return fmt::format("mpm case ({} particles, {} grid nodes, dt {:.3g} s; ~{} when it runs)", sim_.particles().size(),
+                       sim_.grid().size(), first_dt_, memory_text(bytes));
   }
 
   void start(RunContext& run) override {

@@ -9,6 +9,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/size_limits.hpp"
 #include "shockfield/materials/material_file.hpp"
+#include "shockfield/pd/lattice_bonds.hpp"
 
 namespace shockfield::pd {
 namespace {
@@ -34,6 +35,14 @@ BodySpec read_body(const Config& t) {
   if (!std::isfinite(b.spacing * longest * b.horizon_factor))
     t.fail("spacing", fmt::format("the body ({} points of {} m) or its horizon ({}·ΔX) is not finite",
                                   longest, b.spacing, b.horizon_factor));
+  // The bond list, counted before it is built: its size grows as horizon_factor³.
+  const double bonds = lattice_bonds(b.dim, b.counts, b.horizon_factor);
+  if (!(bonds <= kMaxBonds))
+    t.fail("horizon_factor", fmt::format("{}: the {:.3g} points would have {:.3g} bonds ({:.3g} per point; ~{} for the "
+                                         "bonds alone); expected a horizon giving at most {:.0e} bonds (lower "
+                                         "horizon_factor or the point counts)",
+                                         b.horizon_factor, points, bonds, bonds / points,
+                                         memory_text(pd_bytes(0.0, bonds)), kMaxBonds));
   b.influence = Influence::from_name(t.get_choice_or("influence", Influence::names(), "constant"));
   b.correction = volume_correction_from_name(t.get_choice_or("volume_correction", {"linear", "none"}, "linear"));
   return b;

@@ -12,11 +12,13 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/pd/bar_impact.hpp"
 #include "shockfield/pd/bond_force.hpp"
 #include "shockfield/pd/case_file.hpp"
 #include "shockfield/pd/checkpoint.hpp"
 #include "shockfield/pd/homogeneous_case.hpp"
+#include "shockfield/pd/lattice_bonds.hpp"
 #include "shockfield/pd/run_output.hpp"
 
 namespace shockfield::pd {
@@ -26,9 +28,10 @@ namespace fs = std::filesystem;
 namespace {
 
 // Resolved values the run echoes under [derived], common to every material.
-void derive_common(const Config& root, const PdCase& c, const Simulation& sim, double dt) {
-  root.derive("points", static_cast<long long>(sim.cloud().size()));
-  root.derive("bonds", static_cast<long long>(sim.family().bonds()));
+void derive_common(const Config& root, const PdCase& c, double points, double bonds, const Simulation& sim,
+                   double dt) {
+  root.derive("points", static_cast<long long>(points));
+  root.derive("bonds", static_cast<long long>(bonds));
   root.derive("horizon_m", c.body.horizon());
   root.derive("stable_time_step_s", sim.stable_step());
   root.derive("time_step_s", dt);
@@ -134,13 +137,52 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
   return run;
 }
 
+// The body --check builds the model on: at most 4⌈m⌉ + 1 points along each axis (m the horizon
+// factor), so that it holds every kind of point of the whole body: a point's stable step depends
+// on its family and its neighbours' families (shape tensors, weighted volumes), i.e. on what lies
+// within two horizons (2⌈m⌉ points) of it, and along an axis of 4⌈m⌉ + 1 points there is a point
+// at each distance 0..2⌈m⌉ from either surface with at least 2⌈m⌉ on its other side. So the sub-body
+// has the whole body's smallest stable step (for a polycrystal, of the grains the sub-body holds).
+// Its bonds grow as m^6 in 3D, so beyond kCheckBonds (~0.2 GB and ~2 s; m > 4 in 3D) it
+// is made smaller until it has at most kCheckBonds (a body of (m+1)^3 points is all bonds, so for a
+// huge m the sub-body holds no whole family): the stable step is then an estimate (the run
+// computes its own on the whole body before its folder exists).
+constexpr double kCheckBonds = 5e6;
+
+BodySpec checked_body(const BodySpec& body) {
+  const int m = static_cast<int>(std::ceil(body.horizon_factor));
+  BodySpec sub = body;
+  for (int most = 4 * m + 1; most >= 2; --most) {
+    for (int d = 0; d < body.dim; ++d) {
+      const auto a = static_cast<std::size_t>(d);
+      sub.counts[a] = std::min(body.counts[a], most);
+    }
+    if (lattice_bonds(sub.dim, sub.counts, sub.horizon_factor) <= kCheckBonds) break;
+  }
+  return sub;
+}
+
+// Whether a sub-body of checked_body has every kind of point of the body (else its stable step is
+// an estimate).
+bool holds_every_kind(const BodySpec& sub, const BodySpec& body) {
+  const int m = static_cast<int>(std::ceil(body.horizon_factor));
+  for (int d = 0; d < body.dim; ++d) {
+    const auto a = static_cast<std::size_t>(d);
+    if (sub.counts[a] < std::min(body.counts[a], 4 * m + 1)) return false;
+  }
+  return true;
+}
+
 // Peridynamics as a plug-in of the run driver: velocity-Verlet with a fixed step to end_time
 // (the last step lands on it), rows and profiles at the first step at or past k·interval.
 class PdMethod final : public Method {
  public:
-  PdMethod(const Config& root, const PdCase& c)
-      : c_(c), cloud_(lattice_cloud(c_.body.dim, c_.body.counts, c_.body.spacing)),
-        family_(build_family(cloud_, c_.body.horizon(), c_.body.correction)),
+  /// `check` (shockfield run --check): the model is built on a sub-body (checked_body) and the
+  /// sizes of the whole body are counted, not built.
+  PdMethod(const Config& root, const PdCase& c, bool check)
+      : c_(c), built_(check ? checked_body(c_.body) : c_.body),
+        cloud_(lattice_cloud(built_.dim, built_.counts, built_.spacing)),
+        family_(build_family(cloud_, built_.horizon(), built_.correction)),
         model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, family_); }, c_.material)),
         sim_(cloud_, family_, std::move(model_.force), {model_.density}), stable_(sim_.stable_step()),
         dt_(c_.solver.time_step.value_or(c_.solver.safety * stable_)), tol_(1e-9 * dt_) {
@@ -148,7 +190,7 @@ class PdMethod final : public Method {
       root.table("solver").fail("time_step", fmt::format("{} s is beyond the stable step {} s of this body and horizon "
                                                          "(velocity-Verlet would blow up); lower it or drop it",
                                                          dt_, stable_));
-    derive_common(root, c_, sim_, dt_);
+    derive_common(root, c_, points(), bonds(), sim_, dt_);
     if (model_.derive) model_.derive(root);
     model_.fields.damage = [this] { return sim_.model().damage(); };
   }
@@ -158,7 +200,13 @@ class PdMethod final : public Method {
     return fmt::format("{} points, {} bonds, {}D", cloud_.size(), family_.bonds(), c_.body.dim);
   }
   std::string check_text() const override {
-    return fmt::format("pd case ({} points, {} bonds, dt {:.3g} s)", cloud_.size(), family_.bonds(), dt_);
+    const auto& n = built_.counts;
+    const std::string sub = whole() ? ""
+        : fmt::format("; the stable step and the model checked on a {} x {} x {} sub-body{}{}", n[0], n[1], n[2],
+                      polycrystal() ? " (its grains only)" : "",
+                      holds_every_kind(built_, c_.body) ? "" : " (smaller than four horizons: the step is an estimate)");
+    return fmt::format("pd case ({} points, {} bonds, dt {:.3g} s; {} when it runs{})", points(), bonds(), dt_,
+                       memory_text(pd_bytes(points(), bonds())), sub);
   }
 
   void start(RunContext& run) override {
@@ -248,7 +296,24 @@ class PdMethod final : public Method {
                      [&](auto k) { output_->write_profile(sim_, k); });
   }
 
+  // The whole body's points and bonds: as built, or for a --check sub-body counted
+  // (pd/lattice_bonds.hpp; LatticeBonds.EqualsTheBuiltFamilyExactly).
+  bool whole() const { return built_.counts == c_.body.counts; }
+  double points() const {
+    return whole() ? static_cast<double>(cloud_.size())
+                   : static_cast<double>(c_.body.counts[0]) * c_.body.counts[1] * c_.body.counts[2];
+  }
+  double bonds() const {
+    return whole() ? static_cast<double>(family_.bonds())
+                   : lattice_bonds(c_.body.dim, c_.body.counts, c_.body.horizon_factor);
+  }
+  bool polycrystal() const {
+    const auto* crystal = std::get_if<CrystalSpec>(&c_.material);
+    return crystal && crystal->polycrystal;
+  }
+
   PdCase c_;
+  BodySpec built_;  ///< c_.body, or for --check its sub-body
   PointCloud cloud_;
   Family family_;
   ModelRun model_;
@@ -265,7 +330,7 @@ std::unique_ptr<Method> make_method(const Config& root, const RunOptions& option
   if (root.has("homogeneous")) return make_homogeneous_method(root, options);
   const PdCase c = read_pd_case(root);
   root.check_unknown_keys();
-  return std::make_unique<PdMethod>(root, c);
+  return std::make_unique<PdMethod>(root, c, options.validate_only);
 }
 
 void run_case(const Config& root, const RunOptions& options) { run_method(root, options, &make_method); }

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/vtk_xml.hpp"
 #include "shockfield/phasefield/case_file.hpp"
@@ -43,7 +44,7 @@ void derive(const Config& root, const PhasefieldCase& c) {
 class PhasefieldMethod final : public Method {
  public:
   explicit PhasefieldMethod(const PhasefieldCase& c)
-      : c_(c), solver_(c_.grid, c_.model, c_.scheme, c_.dt), tol_(1e-9 * c_.dt) {}
+      : c_(c), solver_(c_.grid, c_.model, c_.scheme, c_.dt, false), tol_(1e-9 * c_.dt) {}
 
   std::string name() const override { return "phasefield"; }
   std::string size_text() const override {
@@ -52,16 +53,19 @@ class PhasefieldMethod final : public Method {
                        n[2], scheme_name(c_.scheme), c_.model.a, c_.model.D);
   }
   std::string check_text() const override {
-    return fmt::format("phasefield case ({} nodes, {} domains, {} steps, dt {:.3g})", c_.grid.size(),
-                       c_.domains.size(), c_.steps, c_.dt);
+    return fmt::format("phasefield case ({} nodes, {} domains, {} steps, dt {:.3g}; {} when it runs)", c_.grid.size(),
+                       c_.domains.size(), c_.steps, c_.dt, memory_text(Solver::bytes(c_.grid, c_.scheme)));
   }
 
+  // The grid's arrays are allocated here, at the start, not by the factory (--check).
   void start(RunContext& run) override {
+    solver_.allocate();
     solver_.field() = initial_field(c_.grid, c_.model, c_.domains);
     open(run, false);
     write_due();
   }
   void resume(RunContext& run) override {
+    solver_.allocate();
     counters_ = read_checkpoint(run.checkpoint, solver_);
     open(run, true);
   }

@@ -52,8 +52,8 @@ struct Solver::Fourier {
   }
 };
 
-Solver::Solver(const Grid& grid, const Model& model, Scheme scheme, double dt)
-    : grid_(grid), model_(model), scheme_(scheme), dt_(dt), xi_(grid.size(), 0.0), work_(grid.size(), 0.0) {
+Solver::Solver(const Grid& grid, const Model& model, Scheme scheme, double dt, bool allocate_now)
+    : grid_(grid), model_(model), scheme_(scheme), dt_(dt) {
   if (!(model.D > 0.0)) throw std::invalid_argument(fmt::format("D = {} must be positive", model.D));
   if (!(dt > 0.0)) throw std::invalid_argument(fmt::format("dt = {} must be positive", dt));
   if (scheme == Scheme::explicit_euler && dt > grid.explicit_limit(model.D))
@@ -62,7 +62,20 @@ Solver::Solver(const Grid& grid, const Model& model, Scheme scheme, double dt)
   // The explicit Laplacian needs 3 nodes per used dimension.
   for (int d = 0; d < grid.dim; ++d)
     if (grid.n[d] < 3) throw std::invalid_argument("every used dimension needs at least 3 nodes");
-  if (scheme == Scheme::spectral) fourier_ = std::make_unique<Fourier>(grid_, model_.D, dt_, work_);
+  if (allocate_now) allocate();
+}
+
+void Solver::allocate() {
+  if (xi_.size() == grid_.size()) return;
+  xi_.assign(grid_.size(), 0.0);
+  work_.assign(grid_.size(), 0.0);
+  if (scheme_ == Scheme::spectral) fourier_ = std::make_unique<Fourier>(grid_, model_.D, dt_, work_);
+}
+
+double Solver::bytes(const Grid& grid, Scheme scheme) {
+  // ξ and its work array; spectral: the half spectrum (complex) and its factor per mode.
+  const double n = static_cast<double>(grid.size());
+  return 16.0 * n + (scheme == Scheme::spectral ? 24.0 * (n / grid.n[0]) * (grid.n[0] / 2 + 1) : 0.0);
 }
 
 Solver::~Solver() = default;

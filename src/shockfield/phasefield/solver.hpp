@@ -30,7 +30,14 @@ struct FieldMeasures {
 class Solver {
  public:
   /// Throws std::invalid_argument when dt exceeds the explicit limit or D, dt are not positive.
-  Solver(const Grid& grid, const Model& model, Scheme scheme, double dt);
+  /// The field and work arrays (and the FFT plans) are allocated now, or (`allocate` false) by
+  /// allocate(): the run's plug-in defers them to the start of the run, so that
+  /// `shockfield run --check` never allocates the grid (docs/robustness.md).
+  Solver(const Grid& grid, const Model& model, Scheme scheme, double dt, bool allocate = true);
+  /// Sizes the field and work arrays to the grid (zero) and plans the FFTs, unless already done.
+  void allocate();
+  /// The bytes allocate() takes (without the FFT library's own plans).
+  static double bytes(const Grid& grid, Scheme scheme);
   ~Solver();
   Solver(const Solver&) = delete;
   Solver& operator=(const Solver&) = delete;

@@ -84,3 +84,28 @@ TEST(MaterialFile, BadFilesNameFileAndKey) {
   refused("provenance = 3\n", "expected a table [provenance]");
   refused("[eos]\nc0 = \n", "TOML syntax error");
 }
+
+// A material file's value used as a case default is checked against the case key's range, which
+// may be narrower than the file's own (PD's yield_stress must be > 0, strength.yield_stress may
+// be 0): refused naming the material file, its key, the case key and the range (issue 14).
+TEST(MaterialFile, FileDefaultOutsideTheCaseKeysRangeIsRefused) {
+  const auto file = shockfield::testing::scratch_path("material_file_range.toml");
+  std::ofstream(file) << "[eos]\nrho0 = 8930.0\n[strength]\nyield_stress = 0.0\n";
+  const MaterialFile m = MaterialFile::load(file);
+  const Config root = Config::parse("[material]\nmodel = \"j2\"\n", "case.toml");
+  const Config t = root.table("material");
+  EXPECT_EQ(case_or_file(t, "density", &m, {"eos.rho0"}, {}, Range::positive(), "test"), 8930.0);
+  try {
+    case_or_file(t, "yield_stress", &m, {"strength.yield_stress"}, {}, Range::positive(), "test");
+    ADD_FAILURE() << "a yield stress of 0 accepted for a key that must be > 0";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    for (const std::string& part : {file.string(), std::string("key 'strength.yield_stress' = 0"),
+                                    std::string("material.yield_stress"), std::string("expected > 0"),
+                                    std::string("case.toml")})
+      EXPECT_NE(what.find(part), std::string::npos) << part << " not in: " << what;
+  }
+  // The macroparticle path (a scaled value, [atoms] in J against the case's eV) shares the check.
+  EXPECT_THROW(file_default(t, "rho", m, "eos.rho0", 8930.0, Range::closed(1.0, 10.0), 1e4), InputError);  // 0.893
+  EXPECT_DOUBLE_EQ(file_default(t, "rho", m, "eos.rho0", 8930.0, Range::closed(1.0, 10.0), 1e3), 8.93);
+}
