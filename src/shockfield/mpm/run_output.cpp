@@ -62,6 +62,7 @@ std::vector<std::string> RunOutput::columns() const {
       cols.emplace_back(c);
   if (case_.diagnostics.ejecta)
     for (const char* c : {"free_surface", "ejecta_mass", "ejecta_count", "ejecta_max_height"}) cols.emplace_back(c);
+  if (case_.options.contact.enabled) cols.insert(cols.end(), {"contact_nodes", "contact_force"});
   return cols;
 }
 
@@ -90,6 +91,8 @@ void RunOutput::write_series(const Simulation& sim) {
     const Ejecta e = ejecta(p, sim.grid(), case_.diagnostics.ejecta_threshold);
     row.insert(row.end(), {e.surface, e.mass, e.count, e.max_height});
   }
+  if (case_.options.contact.enabled)
+    row.insert(row.end(), {static_cast<double>(sim.contact_stats().nodes), sim.contact_stats().force});
   series_.row(row);
 }
 

@@ -18,11 +18,13 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
   const auto origin = grid.spec().origin;  // local copies: invariant in the loop (stores to the
   const auto cell = grid.spec().cell_size;  // stencils cannot alias them), so 1/h is hoisted
   const auto n = static_cast<std::ptrdiff_t>(p.size());
+  const bool layered = grid.layers() > 1;
   std::ptrdiff_t lost = -1;
 #pragma omp parallel for schedule(static) reduction(max : lost)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     const auto uq = static_cast<std::size_t>(q);
     Stencil<Dim>& s = stencils[uq];
+    s.layer = layered ? static_cast<std::size_t>(p.body[uq]) * grid.size() : 0;
     for (int a = 0; a < Dim; ++a) {
       double half = p.half_size[uq][a];
       if constexpr (Contiguous) half = contiguous_half_width(half, p.state[uq].deformation(a, a), cell[a]);
@@ -91,13 +93,15 @@ void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
 }
 
 void Transfer::to_grid(Grid& grid, const Particles& p) const {
-  const auto nn = static_cast<std::ptrdiff_t>(grid.size());
+  const auto nn = static_cast<std::ptrdiff_t>(grid.field_size());
+  const bool gradient = !grid.mass_gradient.empty();
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < nn; ++i) {
     const auto u = static_cast<std::size_t>(i);
     grid.mass[u] = 0.0;
     grid.momentum[u].setZero();
     grid.force[u].setZero();
+    if (gradient) grid.mass_gradient[u].setZero();
   }
   dispatch([&](auto kernel) {
     scatter<decltype(kernel.first)::value, decltype(kernel.second)::value, true>(grid, p,
