@@ -19,7 +19,7 @@ grep -q "^heat_conduction = false" "$WORK/straight/config.resolved.toml" || fail
 [ "$(wc -l < "$WORK/straight/series.csv")" -eq 22 ] || fail "series.csv should have 21 rows"
 # Stress outputs (docs/mpm.md, "Stress outputs"): tensors and the shock-axis and von Mises scalars.
 vtp=$(ls "$WORK/straight/fields/"particles_*.vtp | tail -1)
-for a in stress deviator longitudinal_stress longitudinal_deviator von_mises; do
+for a in stress deviator longitudinal_stress longitudinal_deviator von_mises body; do
   grep -q "Name=\"$a\"" "$vtp" || fail "particle frame lacks $a"
 done
 grep -q 'Name="stress" NumberOfComponents="9"' "$vtp" || fail "particle stress is not a 9-component tensor"

@@ -169,7 +169,7 @@ void RunOutput::write_fields(const Simulation& sim) {
   std::vector<double> xyz(3 * n), vel(3 * n), stress(9 * n), deviator(9 * n);
   std::vector<io::VtkArray> arrays;
   for (const char* name : {"density", "pressure", "temperature", "plastic_work", "plastic_strain", "energy", "material",
-                           "damage", "longitudinal_stress", "longitudinal_deviator", "von_mises"})
+                           "body", "damage", "longitudinal_stress", "longitudinal_deviator", "von_mises"})
     arrays.push_back({name, 1, std::vector<double>(n)});
   for (std::size_t i = 0; i < n; ++i) {
     const auto& s = p.state[i];
@@ -182,7 +182,8 @@ void RunOutput::write_fields(const Simulation& sim) {
         stress[k] = sigma(r, c), deviator[k] = dev(r, c);
       }
     const double values[] = {p.density(i), -sigma.trace() / 3.0, s.temperature, s.plastic_work,
-                             s.deviatoric.plastic_strain, s.energy, static_cast<double>(p.material[i]), s.damage,
+                             s.deviatoric.plastic_strain, s.energy, static_cast<double>(p.material[i]),
+                             static_cast<double>(p.body[i]), s.damage,
                              sigma(axis, axis), dev(axis, axis), materials::von_mises(dev)};
     for (std::size_t k = 0; k < arrays.size(); ++k) arrays[k].values[i] = values[k];
   }

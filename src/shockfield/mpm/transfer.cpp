@@ -24,7 +24,6 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     const auto uq = static_cast<std::size_t>(q);
     Stencil<Dim>& s = stencils[uq];
-    s.layer = layered ? static_cast<std::size_t>(p.body[uq]) * grid.size() : 0;
     for (int a = 0; a < Dim; ++a) {
       double half = p.half_size[uq][a];
       if constexpr (Contiguous) half = contiguous_half_width(half, p.state[uq].deformation(a, a), cell[a]);
@@ -36,6 +35,7 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
       s.dw[ua] = w.dw;
     }
     bin_of_[uq] = grid.flat(s.base[0], s.base[1], Dim == 3 ? s.base[Dim - 1] : 0);
+    if (layered) s.base[0] += p.body[uq] * static_cast<int>(row_);  // the body's block of x offsets
   }
   if (lost >= 0) {
     const Vec3& x = p.x[static_cast<std::size_t>(lost)];
@@ -64,6 +64,12 @@ void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
     for (int i = 0; i < node_count_[a] + support_; ++i)
       offset_[a][static_cast<std::size_t>(i)] = static_cast<std::size_t>(i % node_count_[a]) * stride_[a];
   }
+  // With contact, one block of x offsets per body layer, shifted by the layer's start b·nodes.
+  row_ = offset_[0].size();
+  const auto bodies = static_cast<std::size_t>(grid.layers());
+  offset_[0].resize(bodies * row_);
+  for (std::size_t b = 1; b < bodies; ++b)
+    for (std::size_t i = 0; i < row_; ++i) offset_[0][b * row_ + i] = offset_[0][i] + b * grid.size();
   if (dim_ == 2) {
     stencils3_.clear();
     if (shape == ShapeKind::Linear) evaluate<2, LinearShape, false>(grid, p);

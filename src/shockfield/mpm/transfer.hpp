@@ -42,11 +42,11 @@ inline double contiguous_half_width(double l0, double f_aa, double h) {
 }
 
 /// One particle's stencil: first node along each axis (wrapped) and the 1D weights N and dN/dx of
-/// the nodes base, base+1, ... (unused trailing entries are zero), and the offset of its body's
-/// layer in the nodal fields (b·nodes with contact, contact.hpp; 0 otherwise).
+/// the nodes base, base+1, ... (unused trailing entries are zero). With contact (contact.hpp) base[0]
+/// also selects the body's layer: it is b·(nodes along x + support) + the node, an index into the
+/// layered table of x offsets (so the stencil does not grow by a layer field).
 template <int Dim>
 struct Stencil {
-  std::size_t layer = 0;
   std::array<int, Dim> base{};
   std::array<std::array<double, 3>, Dim> w{};
   std::array<std::array<double, 3>, Dim> dw{};
@@ -131,6 +131,7 @@ class Transfer {
   std::array<int, 3> node_count_{};
   std::array<std::size_t, 3> stride_{};
   std::array<std::vector<std::size_t>, 3> offset_;  // [axis][base + k]: flat offset of node base + k, wrapped
+  std::size_t row_ = 0;  // entries of offset_[0] per body layer: nodes along x + support
   std::vector<Stencil<2>> stencils2_;
   std::vector<Stencil<3>> stencils3_;
   std::vector<std::size_t> bin_of_;  // per particle: flat index of its stencil's first node
@@ -153,15 +154,16 @@ void Transfer::dispatch(K&& k) const {
 
 template <int Dim, int S, bool Layered>
 inline std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> Transfer::nodes(const Stencil<Dim>& s) const {
-  const std::size_t layer = Layered ? s.layer : 0;
-  const std::size_t* ox = offset_[0].data() + s.base[0];
+  // offset_[0] holds one block of row_ x offsets per body layer (the first block: the grid's nodes).
+  const std::size_t* ox = offset_[0].data() + (Layered ? static_cast<std::size_t>(s.base[0])
+                                                        : static_cast<std::size_t>(s.base[0]) % row_);
   const std::size_t* oy = offset_[1].data() + s.base[1];
   const std::size_t* oz = Dim == 3 ? offset_[2].data() + s.base[Dim - 1] : nullptr;
   std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> out{};
   std::size_t e = 0;
   for (int c = 0; c < (Dim == 3 ? S : 1); ++c)
     for (int b = 0; b < S; ++b)
-      for (int a = 0; a < S; ++a) out[e++] = layer + ox[a] + oy[b] + (Dim == 3 ? oz[c] : 0);
+      for (int a = 0; a < S; ++a) out[e++] = ox[a] + oy[b] + (Dim == 3 ? oz[c] : 0);
   return out;
 }
 
