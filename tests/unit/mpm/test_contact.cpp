@@ -120,8 +120,9 @@ Collision collide(int cells, int cells_upper, double v_lower, double v_upper, bo
 // the bars part at ∓v, stress-free. Measured: contact ends at 1.0035 × 2L/c by the last contact
 // node, 0.9975 by the contact force's half-crossing, 1.0032 by the gap extrapolated back; exit speed
 // 9.928 m/s (−0.7 %, the smeared release, see elastic()); momentum 7e-14 of Σm|v|; total energy
-// +0.12 %. Bounds: 1 % (the issue's), round-off (1e-12) and 0.5 % (the energy drift of
-// the glued bars, −0.6 %, and of the Al impact, 0.33 %, are of that order).
+// +0.12 %. Bounds: 1 % (the issue's), round-off (1e-12) and 0.5 % (the drift of the Al impact
+// test, 0.33 %, and of glued bars at 100 cells and C_L = 0.06, −0.6 %, are of that order; the
+// contact's inelastic normal correction is part of what this bounds).
 TEST(Contact, EqualBarsSeparateWithSwappedVelocities) {
   const double v = 10.0, len = 400 * kH, t_contact = 2 * len / wave_speed();
   EXPECT_NEAR(wave_speed(), 6549.7, 0.1);
