@@ -33,6 +33,13 @@ expect_error "${base/end_time = 40e-9/end_time = 40e-9
 heat_conduction = \"yes\"}" "solver.heat_conduction"
 expect_error "${base/material = \"al\"/material = \"steel\"}" "body[0].material" "no [[material]] named"
 expect_error "${base/speed = 1000.0/}" "loading.speed" "missing required value"
+expect_error "$base
+[contact]
+enabled = true
+friction = -0.5" "contact.friction"
+expect_error "$base
+[contact]
+friction = 0.5" "contact.friction" "set enabled = true"
 expect_error "${base/type = \"wall\"/type = \"wall\"
 wall = \"free\"}" "loading.wall" "stick"
 # Sizes counted before anything is made (issue 14): a body spacing giving 2e13 particles is

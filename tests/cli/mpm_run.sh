@@ -19,7 +19,7 @@ grep -q "^heat_conduction = false" "$WORK/straight/config.resolved.toml" || fail
 [ "$(wc -l < "$WORK/straight/series.csv")" -eq 22 ] || fail "series.csv should have 21 rows"
 # Stress outputs (docs/mpm.md, "Stress outputs"): tensors and the shock-axis and von Mises scalars.
 vtp=$(ls "$WORK/straight/fields/"particles_*.vtp | tail -1)
-for a in stress deviator longitudinal_stress longitudinal_deviator von_mises; do
+for a in stress deviator longitudinal_stress longitudinal_deviator von_mises body; do
   grep -q "Name=\"$a\"" "$vtp" || fail "particle frame lacks $a"
 done
 grep -q 'Name="stress" NumberOfComponents="9"' "$vtp" || fail "particle stress is not a 9-component tensor"
@@ -29,6 +29,24 @@ head -1 "$WORK/straight/series.csv" | grep -q "_longitudinal_stress_mean" || fai
 "$SF" analyze stats "$WORK/straight/fields/grid_000000000.vti" --array density -o "$WORK/stats" --no-plot > /dev/null \
   || fail "analyze cannot read the grid field"
 
+grep -q "stay glued" "$WORK/straight/log.txt" && fail "one body: no note about glued bodies expected"
+
+base=$(sed -n '/^method/,$p' "$case")
+# [contact] (docs/mpm.md): a symmetric impact of the strip and its mirror image, two contact bodies;
+# series.csv gains contact_nodes and contact_force, [derived] the body count; without [contact]
+# the log says the bodies stay glued.
+symmetric=${base/type = \"wall\"/type = \"symmetric\"}
+symmetric=${symmetric/hi = \[0.4e-3, 0.6e-3\]/hi = [0.4e-3, 1.1e-3]}
+printf '%s\n[contact]\nenabled = true\n' "$symmetric" > "$WORK/contact.toml"
+"$SF" run "$WORK/contact.toml" --output "$WORK/contact" -q > /dev/null
+grep -q "^contact_bodies = 2" "$WORK/contact/config.resolved.toml" || fail "no derived contact_bodies = 2"
+head -1 "$WORK/contact/series.csv" | grep -q ",contact_nodes,contact_force$" || fail "series.csv lacks the contact columns"
+awk -F, 'NR > 2 && $(NF - 1) > 0 && $NF > 0 { found = 1 } END { exit !found }' "$WORK/contact/series.csv" \
+  || fail "no row with contact nodes and a contact force"
+printf '%s\n' "$symmetric" > "$WORK/glued.toml"
+"$SF" run "$WORK/glued.toml" --output "$WORK/glued" -q > /dev/null
+grep -q "stay glued" "$WORK/glued/log.txt" || fail "no note that the two bodies stay glued"
+head -1 "$WORK/glued/series.csv" | grep -q "contact_nodes" && fail "contact columns without [contact]"
 
 base=$(sed -n '/^method/,$p' "$case")
 expect_run_error() {

@@ -51,7 +51,8 @@ BuiltSample build_sample(const MpmCase& c, const Config& root) {
 
   for (std::size_t k = 0; k < c.bodies.size(); ++k) {
     const Config& t = tables[k];
-    const Body& body = c.bodies[k].body;
+    Body body = c.bodies[k].body;
+    body.id = static_cast<int>(k);  // contact body k; a symmetric impact's mirror image is body count + k
     check_inside(t, c.grid, body.lo, body.hi, "the body");
     if (c.options.shape != ShapeKind::Linear && !(body.spacing < c.grid.cell_size[0]))
       t.fail("spacing", fmt::format("{} m: GIMP needs a particle spacing below the cell size {} m", body.spacing,
@@ -82,6 +83,7 @@ BuiltSample build_sample(const MpmCase& c, const Config& root) {
       partner.lo[axis] = 2.0 * plane - body.hi[axis];
       partner.hi[axis] = 2.0 * plane - body.lo[axis];
       partner.velocity = -body.velocity;
+      partner.id = static_cast<int>(c.bodies.size() + k);
       check_inside(t, c.grid, partner.lo, partner.hi, "the mirrored partner of the body (symmetric impact)");
       std::vector<Void> images;
       for (const Void& v : voids) images.push_back(mirrored(v, axis, plane));

@@ -193,6 +193,14 @@ MpmCase read_mpm_case(const Config& root) {
     c.options.courant = solver.get_double_or("courant", 0.3, {0.0, 1.0, true, false});
   }
 
+  if (const auto contact = root.optional_table("contact")) {  // off by default: the paper's runs glue bodies
+    c.options.contact.enabled = contact->get_bool_or("enabled", false);
+    c.options.contact.friction = contact->get_double_or("friction", 0.0, Range::non_negative());
+    if (!c.options.contact.enabled && contact->has("friction"))
+      contact->fail("friction", "friction acts only between bodies in contact: set enabled = true (without it all "
+                                "bodies share one grid velocity field and stay glued)");
+  }
+
   const auto materials = root.tables("material");
   if (materials.empty()) root.fail("material", "expected at least one [[material]] (name, library or file, overrides)");
   for (const Config& m : materials) {

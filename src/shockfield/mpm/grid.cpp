@@ -38,10 +38,12 @@ Grid::Grid(const GridSpec& spec, bool allocate_now) : spec_(spec) {
 }
 
 void Grid::allocate() {
-  if (mass.size() == size_) return;
-  mass.assign(size_, 0.0);
-  momentum.assign(size_, Vec3::Zero());
-  force.assign(size_, Vec3::Zero());
+  const std::size_t n = field_size();
+  if (mass.size() == n) return;
+  mass.assign(n, 0.0);
+  momentum.assign(n, Vec3::Zero());
+  force.assign(n, Vec3::Zero());
+  mass_gradient.assign(layers_ > 1 ? n : 0, Vec3::Zero());
 }
 
 std::array<int, 3> Grid::unflatten(std::size_t n) const {
@@ -104,9 +106,11 @@ void Grid::apply_walls(std::vector<Vec3>& p) const {
           ijk[static_cast<std::size_t>(a)] = layer;
           ijk[static_cast<std::size_t>(b)] = jb;
           ijk[static_cast<std::size_t>(c)] = jc;
-          Vec3& m = p[flat(ijk[0], ijk[1], ijk[2])];
-          if (wall == Wall::Stick) m.setZero();
-          else m[a] = 0.0;
+          for (std::size_t at = flat(ijk[0], ijk[1], ijk[2]); at < p.size(); at += size_) {  // each layer
+            Vec3& m = p[at];
+            if (wall == Wall::Stick) m.setZero();
+            else m[a] = 0.0;
+          }
         }
       }
     }

@@ -33,8 +33,14 @@ class Grid {
   /// Simulation defers them to its first step, so that `shockfield run --check` never allocates
   /// the grid (docs/robustness.md).
   explicit Grid(const GridSpec& spec, bool allocate = true);
-  /// Sizes mass, momentum and force to size() nodes (zero) unless they are already.
+  /// Sizes mass, momentum and force to field_size() entries (zero) unless they are already, and
+  /// with more than one layer the mass gradient too.
   void allocate();
+  /// Multi-body contact (contact.hpp): the nodal fields hold `layers` copies, one per body, node i
+  /// of body b at b·size() + i. Takes effect at the next allocate().
+  void set_layers(int layers) { layers_ = layers; }
+  int layers() const { return layers_; }
+  std::size_t field_size() const { return size_ * static_cast<std::size_t>(layers_); }
 
   const GridSpec& spec() const { return spec_; }
   int dim() const { return spec_.dim; }
@@ -74,13 +80,15 @@ class Grid {
     return inside || fit_edge(axis, w);
   }
 
-  /// Impose the rigid walls on nodal momenta: stick zeroes all components, slip the normal one.
+  /// Impose the rigid walls on nodal momenta (every layer): stick zeroes all components, slip the
+  /// normal one.
   void apply_walls(std::vector<Vec3>& momentum) const;
 
-  // Nodal fields.
+  // Nodal fields, field_size() entries (layer by layer).
   std::vector<double> mass;
   std::vector<Vec3> momentum;
   std::vector<Vec3> force;
+  std::vector<Vec3> mass_gradient;  ///< Σ_p m_p ∇N_ip per layer; only with more than one layer (contact normals)
 
  private:
   bool fit_edge(int axis, Weights1D& w) const;  // fit() on a periodic axis or at a bounded edge
@@ -89,6 +97,7 @@ class Grid {
   GridSpec spec_;
   std::array<int, 3> nodes_{};
   std::size_t size_ = 0;
+  int layers_ = 1;
 };
 
 }  // namespace shockfield::mpm

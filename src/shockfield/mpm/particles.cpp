@@ -3,13 +3,14 @@
 namespace shockfield::mpm {
 
 void Particles::add(const Vec3& position, const Vec3& velocity, double volume, const Vec3& half,
-                    const materials::SolidMaterial& mat, int material_id) {
+                    const materials::SolidMaterial& mat, int material_id, int body_id) {
   x.push_back(position);
   v.push_back(velocity);
   mass.push_back(mat.eos.rho0 * volume);
   volume0.push_back(volume);
   half_size.push_back(half);
   material.push_back(material_id);
+  body.push_back(body_id);
   velocity_gradient.push_back(Mat3::Zero());
   state.push_back(mat.initial_state());
 }

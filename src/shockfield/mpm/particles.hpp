@@ -19,13 +19,14 @@ struct Particles {
   std::vector<double> volume0;           ///< initial volume [m³] (m² in 2D)
   std::vector<Vec3> half_size;           ///< GIMP half-width of the particle box per axis [m]
   std::vector<int> material;             ///< index into the simulation's material list
+  std::vector<int> body;                 ///< contact body (contact.hpp): one grid field per body with contact on
   std::vector<Mat3> velocity_gradient;   ///< L_p of the last step [1/s]
   std::vector<materials::PointState> state;
 
   std::size_t size() const { return x.size(); }
   /// Append one point of `mat` (index `material_id`) at rest state, at its reference density.
   void add(const Vec3& position, const Vec3& velocity, double volume, const Vec3& half,
-           const materials::SolidMaterial& mat, int material_id);
+           const materials::SolidMaterial& mat, int material_id, int body_id = 0);
   /// Current density m_p / (V0 det F) [kg/m³].
   double density(std::size_t p) const { return mass[p] / (volume0[p] * state[p].deformation.determinant()); }
   /// Current volume V0 det F.

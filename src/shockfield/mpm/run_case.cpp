@@ -29,6 +29,7 @@ void derive(const Config& root, const MpmCase& c, const BuiltSample& sample, con
   root.derive("grid_nodes", static_cast<long long>(sim.grid().size()));
   root.derive("time_step_initial_s", first_dt);
   root.derive("estimated_steps", static_cast<long long>(std::ceil(c.end_time / first_dt)));
+  if (c.options.contact.enabled) root.derive("contact_bodies", static_cast<long long>(sim.contact_bodies()));
   for (std::size_t k = 0; k < sample.stats.size(); ++k)
     if (c.bodies[k].pores || c.bodies[k].cavity)
       root.derive(fmt::format("body{}_porosity", k), sample.stats[k].porosity());
@@ -218,6 +219,11 @@ class MpmMethod final : public Method {
   }
   void log_plan() const {
     for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
+    const std::size_t bodies = c_.bodies.size() * (c_.loading == LoadingKind::Symmetric ? 2 : 1);
+    if (!c_.options.contact.enabled && bodies > 1)
+      log_->info("{} bodies share one grid velocity field and stay glued where they meet; [contact] enabled = true "
+                 "lets them separate and slide (docs/mpm.md)", bodies);
+    if (c_.options.contact.enabled && bodies < 2) log_->info("[contact] is on but there is one body: nothing to do");
     log_->info("running to t = {} s; initial dt = {} s (about {} steps)", c_.end_time, first_dt_, steps_left());
   }
 

@@ -62,6 +62,7 @@ std::vector<std::string> RunOutput::columns() const {
       cols.emplace_back(c);
   if (case_.diagnostics.ejecta)
     for (const char* c : {"free_surface", "ejecta_mass", "ejecta_count", "ejecta_max_height"}) cols.emplace_back(c);
+  if (case_.options.contact.enabled) cols.insert(cols.end(), {"contact_nodes", "contact_force"});
   return cols;
 }
 
@@ -90,6 +91,8 @@ void RunOutput::write_series(const Simulation& sim) {
     const Ejecta e = ejecta(p, sim.grid(), case_.diagnostics.ejecta_threshold);
     row.insert(row.end(), {e.surface, e.mass, e.count, e.max_height});
   }
+  if (case_.options.contact.enabled)
+    row.insert(row.end(), {static_cast<double>(sim.contact_stats().nodes), sim.contact_stats().force});
   series_.row(row);
 }
 
@@ -170,7 +173,7 @@ void RunOutput::write_fields(const Simulation& sim) {
   std::vector<io::VtkArray> arrays;
   const std::pair<const char*, const char*> scalar_arrays[] = {
       {"density", "kg/m3"}, {"pressure", "Pa"}, {"temperature", "K"}, {"plastic_work", "J/kg"},
-      {"plastic_strain", "1"}, {"energy", "J/kg"}, {"material", "1"}, {"damage", "1"},
+      {"plastic_strain", "1"}, {"energy", "J/kg"}, {"material", "1"}, {"body", "1"}, {"damage", "1"},
       {"longitudinal_stress", "Pa"}, {"longitudinal_deviator", "Pa"}, {"von_mises", "Pa"}};
   for (const auto& [name, unit] : scalar_arrays) arrays.push_back({name, 1, std::vector<double>(n), unit});
   for (std::size_t i = 0; i < n; ++i) {
@@ -184,7 +187,8 @@ void RunOutput::write_fields(const Simulation& sim) {
         stress[k] = sigma(r, c), deviator[k] = dev(r, c);
       }
     const double values[] = {p.density(i), -sigma.trace() / 3.0, s.temperature, s.plastic_work,
-                             s.deviatoric.plastic_strain, s.energy, static_cast<double>(p.material[i]), s.damage,
+                             s.deviatoric.plastic_strain, s.energy, static_cast<double>(p.material[i]),
+                             static_cast<double>(p.body[i]), s.damage,
                              sigma(axis, axis), dev(axis, axis), materials::von_mises(dev)};
     for (std::size_t k = 0; k < arrays.size(); ++k) arrays[k].values[i] = values[k];
   }

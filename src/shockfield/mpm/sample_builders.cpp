@@ -16,6 +16,7 @@ namespace {
 void check_body(int dim, const Body& body) {
   if (dim != 2 && dim != 3) throw InputError(fmt::format("mpm sample: dim = {} (expected 2 or 3)", dim));
   if (!(body.spacing > 0.0)) throw InputError(fmt::format("mpm sample: spacing = {} m (expected > 0)", body.spacing));
+  if (body.id < 0) throw InputError(fmt::format("mpm sample: body id {} (expected >= 0)", body.id));
   for (int a = 0; a < dim; ++a)
     if (!(body.hi[a] - body.lo[a] >= body.spacing))
       throw InputError(fmt::format("mpm sample: body extent along axis {} is [{}, {}] m (expected at least one "
@@ -122,7 +123,7 @@ BodyStats add_body(Particles& p, int dim, const Body& body, const materials::Sol
           return (x - v.centre).squaredNorm() < v.radius * v.radius;
         });
         if (inside_void) continue;
-        p.add(x, body.velocity, volume, half, mat, body.material);
+        p.add(x, body.velocity, volume, half, mat, body.material, body.id);
         ++stats.added;
       }
   return stats;
@@ -235,6 +236,7 @@ std::vector<BodyStats> add_symmetric_impact(Particles& p, int dim, const Body& l
   a.velocity = Vec3::Zero();
   a.velocity[axis] = speed;
   b.velocity = -a.velocity;
+  b.id = a.id + 1;
   const double height = lower.hi[axis] - lower.lo[axis];
   b.lo[axis] += height;
   b.hi[axis] += height;

@@ -23,6 +23,7 @@ struct Body {
   double spacing = 0.0;           ///< particle spacing [m]
   Vec3 velocity = Vec3::Zero();   ///< [m/s]
   int material = 0;               ///< index into the simulation's materials
+  int id = 0;                     ///< contact body of its points (Particles::body)
 };
 
 struct Void {
@@ -72,7 +73,7 @@ Void cavity_at(int dim, const Body& body, double depth, double radius);
 GridSpec impact_grid(int dim, const Vec3& lo, const Vec3& hi, double h, Wall low_face = Wall::Free);
 
 /// Symmetric impact: `lower` moving at +speed along the shock axis and its copy stacked on top
-/// moving at −speed, meeting at lower.hi. Returns the stats of the two bodies.
+/// moving at −speed, meeting at lower.hi; the copy is contact body lower.id + 1. Returns the stats of the two bodies.
 std::vector<BodyStats> add_symmetric_impact(Particles& p, int dim, const Body& lower, double speed,
                                             const materials::SolidMaterial& mat);
 

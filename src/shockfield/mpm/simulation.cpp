@@ -15,6 +15,7 @@ void SimulationOptions::validate() const {
     throw InputError(fmt::format("mpm: courant = {} (expected 0 < C <= 1)", courant));
   if (!(flip >= 0.0 && flip <= 1.0)) throw InputError(fmt::format("mpm: flip = {} (expected 0 <= flip <= 1)", flip));
   if (!(min_time_step >= 0.0)) throw InputError(fmt::format("mpm: min_time_step = {} (expected >= 0 s)", min_time_step));
+  contact.validate();
 }
 
 Simulation::Simulation(const GridSpec& grid, std::vector<materials::SolidMaterial> materials, Particles particles,
@@ -24,7 +25,11 @@ Simulation::Simulation(const GridSpec& grid, std::vector<materials::SolidMateria
   if (particles_.size() == 0) throw InputError("mpm: the simulation has no particles");
   for (const auto& m : materials_) m.validate();
   double min_mass = particles_.mass[0];
+  int bodies = 1;
   for (std::size_t p = 0; p < particles_.size(); ++p) {
+    if (particles_.body[p] < 0)
+      throw InputError(fmt::format("mpm: particle {} has body {} (expected >= 0)", p, particles_.body[p]));
+    bodies = std::max(bodies, particles_.body[p] + 1);
     const int id = particles_.material[p];
     if (id < 0 || id >= static_cast<int>(materials_.size()))
       throw InputError(fmt::format("mpm: particle {} has material index {} (expected 0..{})", p, id,
@@ -41,6 +46,7 @@ Simulation::Simulation(const GridSpec& grid, std::vector<materials::SolidMateria
     min_mass = std::min(min_mass, particles_.mass[p]);
   }
   mass_floor_ = 1e-9 * min_mass;
+  grid_.set_layers(options_.contact.enabled ? bodies : 1);  // one field per body with contact
   wrap_particles();  // the grid's fields are allocated by the first step (allocate_grid)
 }
 
@@ -90,6 +96,7 @@ void Simulation::step(double max_dt) {
     grid_to_particles(false);  // L_p below uses the same nodal velocities
   } else {
     grid_to_particles(true);  // MUSL: the updated momenta are remapped to the grid on the way
+    couple_bodies();           // the velocities L_p is taken from obey the contact law too
     grid_.apply_walls(grid_.momentum);
     nodal_velocities(false);
   }
@@ -106,8 +113,12 @@ void Simulation::step(double max_dt) {
 
 void Simulation::allocate_grid() {
   grid_.allocate();
-  node_velocity_.resize(grid_.size(), Vec3::Zero());
-  node_acceleration_.resize(grid_.size(), Vec3::Zero());
+  node_velocity_.resize(grid_.field_size(), Vec3::Zero());
+  node_acceleration_.resize(grid_.field_size(), Vec3::Zero());
+}
+
+ContactStats Simulation::couple_bodies() {
+  return grid_.layers() > 1 ? apply_contact(grid_, options_.contact.friction, mass_floor_, dt_) : ContactStats{};
 }
 
 void Simulation::run_until(double t_end) {
@@ -115,15 +126,17 @@ void Simulation::run_until(double t_end) {
 }
 
 void Simulation::update_grid() {
-  // m_i dv_i/dt = f_i (eq. 12), walls, then the force the walls leave (for the FLIP update).
-  old_momentum_.resize(grid_.size());
-  const auto n = static_cast<std::ptrdiff_t>(grid_.size());
+  // m_i dv_i/dt = f_i (eq. 12), contact between bodies, walls, then the force contact and walls
+  // leave (for the FLIP update, so the contact force reaches the particles' velocities).
+  old_momentum_.resize(grid_.field_size());
+  const auto n = static_cast<std::ptrdiff_t>(grid_.field_size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const auto u = static_cast<std::size_t>(i);
     old_momentum_[u] = grid_.momentum[u];
     grid_.momentum[u] += dt_ * grid_.force[u];
   }
+  contact_stats_ = couple_bodies();
   grid_.apply_walls(grid_.momentum);
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
@@ -133,7 +146,7 @@ void Simulation::update_grid() {
 }
 
 void Simulation::nodal_velocities(bool with_acceleration) {
-  const auto n = static_cast<std::ptrdiff_t>(grid_.size());
+  const auto n = static_cast<std::ptrdiff_t>(grid_.field_size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     const auto i = static_cast<std::size_t>(q);

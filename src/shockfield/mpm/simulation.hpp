@@ -9,6 +9,9 @@
 //      x_p += Δt Σ N_i v_i
 //   5. MUSL: map the new particle momenta back to the grid and impose walls again
 //   6. L_p = Σ_i v_i ⊗ ∇N_i(x_p); material update of every point (materials::SolidMaterial)
+// With `contact` (contact.hpp), each body has its own nodal fields: step 2 scatters every point into
+// its body's layer, and the contact law couples the layers after step 3 and after the MUSL remap
+// of step 5 (so both the particle update and L_p see it).
 // With `heat_conduction`, step 2 is followed by an explicit conduction step on the same stencils
 // (heat_conduction.hpp), and Δt is also bounded by the diffusion limit C·h²/(2·d·α_max).
 // Hooks run at named stages so drivers add loading, diagnostics and output without touching the
@@ -19,6 +22,7 @@
 #include <vector>
 
 #include "shockfield/materials/solid_material.hpp"
+#include "shockfield/mpm/contact.hpp"
 #include "shockfield/mpm/grid.hpp"
 #include "shockfield/mpm/heat_conduction.hpp"
 #include "shockfield/mpm/particles.hpp"
@@ -39,6 +43,7 @@ struct SimulationOptions {
   bool project_initial_velocity = true;
   double min_time_step = 0.0;  ///< RunError when Δt falls below this [s]
   bool heat_conduction = false;  ///< solve heat conduction with the materials' conductivities
+  ContactOptions contact{};      ///< multi-body contact (off: all bodies share one grid field)
 
   void validate() const;
 };
@@ -73,6 +78,10 @@ class Simulation {
   }
   const std::vector<materials::SolidMaterial>& materials() const { return materials_; }
   const SimulationOptions& options() const { return options_; }
+  /// Bodies with their own grid field: 1 + the largest Particles::body with contact on, else 1.
+  int contact_bodies() const { return grid_.layers(); }
+  /// The contact law's action in the last step, after its momentum update (zero without contact).
+  const ContactStats& contact_stats() const { return contact_stats_; }
 
  private:
   void run_hooks(Stage stage);
@@ -81,6 +90,8 @@ class Simulation {
   /// The grid's nodal fields and the nodal velocities and accelerations, at the first step.
   void allocate_grid();
   void update_grid();
+  /// The contact law on the nodal momenta (contact.hpp), with more than one body layer.
+  ContactStats couple_bodies();
   /// v_i = (m v)_i / m_i and (with_acceleration) a_i = f_i / m_i; zero on nodes without mass.
   void nodal_velocities(bool with_acceleration);
   /// v_p, x_p from the grid (with `remap`, fused with the MUSL remap of the momenta).
@@ -111,6 +122,7 @@ class Simulation {
   double fastest_ = 0.0;
   bool fastest_known_ = false;
   double mass_floor_ = 0.0;
+  ContactStats contact_stats_{};
   double time_ = 0.0;
   double dt_ = 0.0;
   long steps_ = 0;

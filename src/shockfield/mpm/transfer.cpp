@@ -18,6 +18,7 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
   const auto origin = grid.spec().origin;  // local copies: invariant in the loop (stores to the
   const auto cell = grid.spec().cell_size;  // stencils cannot alias them), so 1/h is hoisted
   const auto n = static_cast<std::ptrdiff_t>(p.size());
+  const bool layered = grid.layers() > 1;
   std::ptrdiff_t lost = -1;
 #pragma omp parallel for schedule(static) reduction(max : lost)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
@@ -34,6 +35,7 @@ void Transfer::evaluate(const Grid& grid, const Particles& p) {
       s.dw[ua] = w.dw;
     }
     bin_of_[uq] = grid.flat(s.base[0], s.base[1], Dim == 3 ? s.base[Dim - 1] : 0);
+    if (layered) s.base[0] += p.body[uq] * static_cast<int>(row_);  // the body's block of x offsets
   }
   if (lost >= 0) {
     const Vec3& x = p.x[static_cast<std::size_t>(lost)];
@@ -62,6 +64,12 @@ void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
     for (int i = 0; i < node_count_[a] + support_; ++i)
       offset_[a][static_cast<std::size_t>(i)] = static_cast<std::size_t>(i % node_count_[a]) * stride_[a];
   }
+  // With contact, one block of x offsets per body layer, shifted by the layer's start b·nodes.
+  row_ = offset_[0].size();
+  const auto bodies = static_cast<std::size_t>(grid.layers());
+  offset_[0].resize(bodies * row_);
+  for (std::size_t b = 1; b < bodies; ++b)
+    for (std::size_t i = 0; i < row_; ++i) offset_[0][b * row_ + i] = offset_[0][i] + b * grid.size();
   if (dim_ == 2) {
     stencils3_.clear();
     if (shape == ShapeKind::Linear) evaluate<2, LinearShape, false>(grid, p);
@@ -91,13 +99,15 @@ void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
 }
 
 void Transfer::to_grid(Grid& grid, const Particles& p) const {
-  const auto nn = static_cast<std::ptrdiff_t>(grid.size());
+  const auto nn = static_cast<std::ptrdiff_t>(grid.field_size());
+  const bool gradient = !grid.mass_gradient.empty();
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < nn; ++i) {
     const auto u = static_cast<std::size_t>(i);
     grid.mass[u] = 0.0;
     grid.momentum[u].setZero();
     grid.force[u].setZero();
+    if (gradient) grid.mass_gradient[u].setZero();
   }
   dispatch([&](auto kernel) {
     scatter<decltype(kernel.first)::value, decltype(kernel.second)::value, true>(grid, p,

@@ -42,7 +42,9 @@ inline double contiguous_half_width(double l0, double f_aa, double h) {
 }
 
 /// One particle's stencil: first node along each axis (wrapped) and the 1D weights N and dN/dx of
-/// the nodes base, base+1, ... (unused trailing entries are zero).
+/// the nodes base, base+1, ... (unused trailing entries are zero). With contact (contact.hpp) base[0]
+/// also selects the body's layer: it is b·(nodes along x + support) + the node, an index into the
+/// layered table of x offsets (so the stencil does not grow by a layer field).
 template <int Dim>
 struct Stencil {
   std::array<int, Dim> base{};
@@ -55,7 +57,8 @@ class Transfer {
   /// Evaluate every particle's stencil for the current positions and bin the particles.
   /// RunError when a particle has left the grid.
   void build(const Grid& grid, const Particles& p, ShapeKind shape);
-  /// Nodal mass, momentum and internal force from the particles (eq. 12); overwrites them.
+  /// Nodal mass, momentum and internal force from the particles (eq. 12), each point into its
+  /// body's layer, and with several layers the mass gradient Σ_p m_p ∇N_ip; overwrites them.
   void to_grid(Grid& grid, const Particles& p) const;
 
   /// For each particle p (in parallel): f(p, Σ_i N_i a_i, Σ_i N_i b_i) for nodal vectors a, b.
@@ -78,7 +81,8 @@ class Transfer {
   /// std::array<double, 3>, z component 0 in 2D). `scatter_each` visits the particles in the
   /// slab-pass order of the particle-to-grid sums, so f may add to nodal fields and each nodal
   /// sum is formed in one fixed order whatever the thread count; `gather_each` runs in parallel
-  /// over the particles and must only read nodal fields.
+  /// over the particles and must only read nodal fields. Both visit the grid's nodes, not the
+  /// bodies' layers (conduction is across bodies in contact).
   template <class F>
   void scatter_each(F&& f) const;
   template <class F>
@@ -117,8 +121,9 @@ class Transfer {
   template <int Dim, int S, std::size_t N>
   static void gather(const Stencil<Dim>& s, const std::array<std::size_t, N>& node, const std::vector<Vec3>& a,
                      const std::vector<Vec3>& b, Vec3& sa, Vec3& sb);
-  /// Flat indices of the S^Dim nodes of a stencil, x fastest.
-  template <int Dim, int S>
+  /// Flat indices of the S^Dim nodes of a stencil, x fastest, in its body's layer (Layered) or in
+  /// the first (the grid's nodes themselves).
+  template <int Dim, int S, bool Layered = true>
   [[gnu::always_inline]] std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> nodes(const Stencil<Dim>& s) const;
 
   int dim_ = 2;
@@ -126,6 +131,7 @@ class Transfer {
   std::array<int, 3> node_count_{};
   std::array<std::size_t, 3> stride_{};
   std::array<std::vector<std::size_t>, 3> offset_;  // [axis][base + k]: flat offset of node base + k, wrapped
+  std::size_t row_ = 0;  // entries of offset_[0] per body layer: nodes along x + support
   std::vector<Stencil<2>> stencils2_;
   std::vector<Stencil<3>> stencils3_;
   std::vector<std::size_t> bin_of_;  // per particle: flat index of its stencil's first node
@@ -146,9 +152,11 @@ void Transfer::dispatch(K&& k) const {
   }
 }
 
-template <int Dim, int S>
+template <int Dim, int S, bool Layered>
 inline std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> Transfer::nodes(const Stencil<Dim>& s) const {
-  const std::size_t* ox = offset_[0].data() + s.base[0];
+  // offset_[0] holds one block of row_ x offsets per body layer (the first block: the grid's nodes).
+  const std::size_t* ox = offset_[0].data() + (Layered ? static_cast<std::size_t>(s.base[0])
+                                                        : static_cast<std::size_t>(s.base[0]) % row_);
   const std::size_t* oy = offset_[1].data() + s.base[1];
   const std::size_t* oz = Dim == 3 ? offset_[2].data() + s.base[Dim - 1] : nullptr;
   std::array<std::size_t, S * S * (Dim == 3 ? S : 1)> out{};
@@ -206,7 +214,7 @@ void Transfer::interpolate(const std::vector<Vec3>& va, const std::vector<Vec3>&
 template <class F>
 void Transfer::interpolate_and_remap(Grid& grid, const Particles& p, const std::vector<Vec3>& va,
                                      const std::vector<Vec3>& vb, F&& f) const {
-  const auto nn = static_cast<std::ptrdiff_t>(grid.size());
+  const auto nn = static_cast<std::ptrdiff_t>(grid.field_size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t i = 0; i < nn; ++i) grid.momentum[static_cast<std::size_t>(i)].setZero();
   dispatch([&](auto kernel) {
@@ -237,6 +245,7 @@ void Transfer::slab_passes(Body&& body) const {
 template <int Dim, int S, bool Force, class Before>
 void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
   const auto& all = stencils<Dim>();
+  const bool gradient = Force && !grid.mass_gradient.empty();  // contact normals (contact.hpp)
   slab_passes([&](std::size_t first, std::size_t last) {
     for (std::size_t e = first; e < last; ++e) {
       const std::size_t q = binned_[e];
@@ -252,6 +261,8 @@ void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
         for (int r = 0; r < Dim; ++r) gm[r] += w * mv[r];
         if constexpr (Force) {
           grid.mass[i] += w * m;
+          if (gradient)
+            for (int r = 0; r < Dim; ++r) grid.mass_gradient[i][r] += m * g[static_cast<std::size_t>(r)];
           Vec3& f = grid.force[i];
           for (int r = 0; r < Dim; ++r) {
             double t = vs(r, 0) * g[0];
@@ -290,7 +301,7 @@ void Transfer::scatter_each(F&& f) const {
     slab_passes([&](std::size_t first, std::size_t last) {
       for (std::size_t e = first; e < last; ++e) {
         const std::size_t q = binned_[e];
-        f(q, [&](auto&& g) { each_node<D, S>(all[q], nodes<D, S>(all[q]), g); });
+        f(q, [&](auto&& g) { each_node<D, S>(all[q], nodes<D, S, false>(all[q]), g); });
       }
     });
   });
@@ -300,7 +311,7 @@ template <class F>
 void Transfer::gather_each(F&& f) const {
   each_particle([&](auto kernel, std::size_t q, const auto& s) {
     constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
-    f(q, [&](auto&& g) { each_node<D, S>(s, nodes<D, S>(s), g); });
+    f(q, [&](auto&& g) { each_node<D, S>(s, nodes<D, S, false>(s), g); });
   });
 }
 

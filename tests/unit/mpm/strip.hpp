@@ -1,6 +1,7 @@
 #pragma once
 // Coarse 1D-like MPM strips for wave tests: a 2D plane-strain grid two cells wide, periodic along
-// x, so the motion along y is in uniaxial strain. Two bodies meet at y = 0.
+// x, so the motion along y is in uniaxial strain. Two bodies meet at y = 0 (contact bodies 0 below,
+// 1 above: with options.contact on they can separate).
 #include <algorithm>
 #include <map>
 #include <vector>
@@ -17,20 +18,21 @@ namespace mpm = shockfield::mpm;
 struct Setup {
   double h = 1e-3;         // cell size [m]
   int cells = 200;         // cells per body along y
+  int cells_upper = 0;     // cells of the upper body, if not `cells`
   double v_lower = 0.0;    // velocity of the body below y = 0 [m/s]
   double v_upper = 0.0;    // velocity of the body above y = 0 [m/s]
   mpm::SimulationOptions options{};
 };
 
 inline mpm::Simulation make(const Setup& s, const shockfield::materials::SolidMaterial& mat) {
-  const double len = s.cells * s.h, width = 2 * s.h;
+  const double len = s.cells * s.h, len_upper = (s.cells_upper > 0 ? s.cells_upper : s.cells) * s.h, width = 2 * s.h;
   mpm::Particles p;
   mpm::Body lower{Vec3(0, -len, 0), Vec3(width, 0, 0), s.h / 2, Vec3(0, s.v_lower, 0), 0};
-  mpm::Body upper{Vec3(0, 0, 0), Vec3(width, len, 0), s.h / 2, Vec3(0, s.v_upper, 0), 0};
+  mpm::Body upper{Vec3(0, 0, 0), Vec3(width, len_upper, 0), s.h / 2, Vec3(0, s.v_upper, 0), 0, 1};  // contact body 1
   mpm::add_body(p, 2, lower, mat);
   mpm::add_body(p, 2, upper, mat);
   const double margin = 20 * s.h;
-  const auto grid = mpm::impact_grid(2, Vec3(0, -len - margin, 0), Vec3(width, len + margin, 0), s.h);
+  const auto grid = mpm::impact_grid(2, Vec3(0, -len - margin, 0), Vec3(width, len_upper + margin, 0), s.h);
   return mpm::Simulation(grid, {mat}, std::move(p), s.options);
 }
 

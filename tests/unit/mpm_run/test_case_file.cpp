@@ -129,4 +129,32 @@ TEST(MpmCaseFile, SymmetricImpactMirrorsTheBody) {
             std::string::npos);
 }
 
+// [contact]: off by default (bodies share one grid field); with it every body, and a symmetric
+// impact's mirror image, is a contact body of its own; bad values name the key.
+TEST(MpmCaseFile, ContactKeys) {
+  EXPECT_FALSE(mpm::read_mpm_case(Config::parse(kBase, "case.toml")).options.contact.enabled);
+  std::string text = replace(replace(kBase, "type = \"wall\"", "type = \"symmetric\""), "hi = [1.0e-3, 1.5e-3]",
+                             "hi = [1.0e-3, 0.9e-3]");
+  text += "[contact]\nenabled = true\nfriction = 0.3\n";
+  const Config root = Config::parse(text, "case.toml");
+  const mpm::MpmCase c = mpm::read_mpm_case(root);
+  EXPECT_TRUE(c.options.contact.enabled);
+  EXPECT_DOUBLE_EQ(c.options.contact.friction, 0.3);
+  const mpm::BuiltSample s = mpm::build_sample(c, root);
+  for (std::size_t i = 0; i < s.particles.size(); ++i)
+    ASSERT_EQ(s.particles.body[i], s.particles.x[i][1] < 0.9e-3 ? 0 : 1) << i;  // the mirror image is body 1
+  const std::pair<std::string, std::string> bad[] = {
+      {"[contact]\nenabled = true\nfriction = -0.1\n", "contact.friction"},
+      {"[contact]\nfriction = 0.2\n", "set enabled = true"},
+      {"[contact]\nenabled = true\nfriction = inf\n", "contact.friction"},  // a large finite μ sticks
+      {"[contact]\nenabled = 1\n", "contact.enabled"},
+      {"[contact]\nenabeld = true\n", "contact.enabeld"},
+  };
+  for (const auto& [extra, expected] : bad) {
+    const std::string msg = error_of(kBase + extra);
+    EXPECT_NE(msg.find(expected), std::string::npos) << extra << ": " << msg;
+    EXPECT_NE(msg.find("case.toml"), std::string::npos) << msg;
+  }
+}
+
 }  // namespace
