@@ -113,4 +113,10 @@ Json nphug_json(const NphugReport& r) {
                         .set("particle_speed_km_s", r.final_state.up * A_per_ps_to_km_per_s));
 }
 
+HugoniotState nphug_hugoniot_state(const NphugReport& r) {
+  return cell_hugoniot_state(r.us * A_per_ps_to_km_per_s, r.up * A_per_ps_to_km_per_s, r.mean.pressure * bar_to_GPa,
+                             mean_density(r), r.density0, r.mean.temperature, r.mean.samples,
+                             "nphug stage: means over its second half");
+}
+
 }  // namespace shockfield::md

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shockfield/core/json.hpp"
+#include "shockfield/md/diagnostics/hugoniot.hpp"
 #include "shockfield/md/fixes/nphug.hpp"
 #include "shockfield/md/simulation.hpp"
 
@@ -39,5 +40,8 @@ NphugReport make_nphug_report(const Simulation& sim, const FixNphug& fix, const 
 /// One log line: P, ρ, V/V₀, T, U_s, U_p of the second half and the Rankine–Hugoniot residual.
 std::string nphug_log_line(const NphugReport& r);
 Json nphug_json(const NphugReport& r);
+/// The second-half state as a Hugoniot point (hugoniot_<stage>.toml, read by `shockfield hugoniot
+/// --method nphug` and the Hugoniot-to-EOS bridge); piston_speed is U_p.
+HugoniotState nphug_hugoniot_state(const NphugReport& r);
 
 }  // namespace shockfield::md

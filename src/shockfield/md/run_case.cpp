@@ -383,15 +383,22 @@ class MdMethod final : public Method {
     if (const FixMsst* msst = find_msst(*sim_)) {
       msst_.push_back(make_msst_report(*sim_, *msst, stage.name));
       run_->log.info("{}", msst_log_line(msst_.back()));
+      write_hugoniot_state(stage.name, msst_hugoniot_state(msst_.back()));
     }
     if (const FixNphug* nphug = find_nphug(*sim_)) {
       nphug_.push_back(make_nphug_report(*sim_, *nphug, stage.name));
       run_->log.info("{}", nphug_log_line(nphug_.back()));
+      write_hugoniot_state(stage.name, nphug_hugoniot_state(nphug_.back()));
     }
     started_ = false;
     ++k_;
     done_ = 0;
     begin_pending();
+  }
+
+  // hugoniot_<stage>.toml of an msst or nphug stage (a piston stage's is report_hugoniot's).
+  void write_hugoniot_state(const std::string& stage, const HugoniotState& h) const {
+    write_file_atomically(run_->folder / fmt::format("hugoniot_{}.toml", stage), hugoniot_toml(h));
   }
 
   Prepared p_;  ///< its system and potential move into sim_ when the run starts
