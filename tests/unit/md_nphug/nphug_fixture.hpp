@@ -24,15 +24,15 @@ inline std::vector<Row> read_thermo(const std::string& file) {
   return lammps_rows::read<kColumns>("lammps_nphug/" + file);
 }
 
-/// in.nphug's `fix hug all nphug temp 1 1 0.1 <style> 200000 200000 0.5 tchain 1 pchain 0`:
-/// style "z" (uniaxial) or "iso".
-inline NphugSettings settings(const std::string& style, std::int64_t steps) {
+/// in.nphug's `fix hug all nphug temp 1 1 0.1 <style> 200000 200000 0.5 tchain <tchain> pchain
+/// <pchain>`: style "z" (uniaxial) or "iso".
+inline NphugSettings settings(const std::string& style, std::int64_t steps, int tchain = 1, int pchain = 0) {
   NphugSettings s;
   s.npt.damping = 0.1;
   s.npt.pressure = 200000.0;
   s.npt.pressure_damping = 0.5;
-  s.npt.chain = 1;
-  s.npt.pressure_chain = 0;
+  s.npt.chain = tchain;
+  s.npt.pressure_chain = pchain;
   if (style == "iso") {
     s.npt.iso = true;
   } else {

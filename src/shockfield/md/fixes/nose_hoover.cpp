@@ -15,7 +15,11 @@ using units::metal::boltz;
 
 NoseHooverChain::NoseHooverChain(int length, double temperature, double period)
     : kt_(boltz * temperature), mass_kt_(kt_), period_(period),
-      eta_(length, 0.0), eta_dot_(length + 1, 0.0), eta_dotdot_(length, 0.0), mass_(length, 0.0) {}
+      eta_(length, 0.0), eta_dot_(length + 1, 0.0), eta_dotdot_(length, 0.0), mass_(length, 0.0) {
+  // The outer members' forces at rest, (Q_{k−1}·0 − k_B T)/Q_k = −ω², which the first half step
+  // uses before it computes its own (LAMMPS FixNH::setup).
+  for (int k = 1; k < length; ++k) eta_dotdot_[k] = -1.0 / (period * period);
+}
 
 double NoseHooverChain::half_step(double twice_ke, double dof, double first_mass_dof, double dt) {
   dof_ = dof;

@@ -4,7 +4,8 @@
 // by a quarter/eighth-step Trotter split before the first and after the second velocity half
 // kick; the atoms' velocities are scaled by exp(−½Δt η̇₁). Thermostat masses
 // Q₁ = N_f k_B T / ω², Q_k = k_B T / ω² with ω = 1/τ. The chain energy
-// N_f k_B T η₁ + Σ_{k>1} k_B T η_k + Σ ½ Q_k η̇_k² enters the conserved quantity.
+// N_f k_B T η₁ + Σ_{k>1} k_B T η_k + Σ ½ Q_k η̇_k² enters the conserved quantity. A chain starts
+// at rest with the outer members' forces −ω² (LAMMPS FixNH::setup).
 #include "shockfield/core/units.hpp"
 #include "shockfield/md/atoms.hpp"
 #include "shockfield/md/fixes/nve.hpp"

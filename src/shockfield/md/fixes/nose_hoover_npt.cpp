@@ -56,7 +56,7 @@ void FixNoseHooverNpt::final_integrate(Simulation& sim) {
   barostat_kick(sim);
   atom_chain_step(sim);
   barostat_chain_step(sim);
-  check_extended_energy(sim, "npt", -energy_added(), atom_chain_.degrees_of_freedom(), settings_.temperature);
+  check_extended_energy(sim, name().c_str(), -energy_added(), atom_chain_.degrees_of_freedom(), settings_.temperature);
 }
 
 void FixNoseHooverNpt::barostat_chain_step(const Simulation& sim) {

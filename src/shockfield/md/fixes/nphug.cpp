@@ -41,7 +41,10 @@ void FixNphug::setup(Simulation& sim) {
                                "atoms velocities first: [velocity] temperature or an earlier stage)",
                                sim.step, t.temperature));
   set_reference_temperature(t.temperature);
-  target_ = t.temperature;
+  // LAMMPS FixNPHug::setup: the target is 0.01 K until the first Hugoniot target, which the
+  // barostat chain's first half step (before target_temperature()) still uses.
+  target_ = 0.01;
+  retarget(target_);
   total_mass_ = 0;
   for (std::size_t i = 0; i < sim.atoms.nlocal; ++i) total_mass_ += sim.atoms.mass_of(i);
   v0_ = settings_.v0.value_or(t.volume);

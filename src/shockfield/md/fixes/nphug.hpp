@@ -15,11 +15,9 @@
 // (U_s = 0 when ε < 1e-10 or p < p₀; ρ₀ = M/V₀). As LAMMPS: p₀, V₀, E₀ are the state at the
 // start of the stage unless given; the thermostat and barostat masses are set from the
 // temperature at the start and kept (eta_mass_flag = omega_mass_flag = etap_mass_flag = 0); the
-// MTK terms of a uniaxial barostat are LAMMPS's (NptSettings::lammps_mtk). The one difference: the
-// barostat chain's first half step targets the starting temperature where LAMMPS's targets 0.01 K
-// (its t_target before the first Hugoniot target); with pressure_chain = 0 (LAMMPS pchain 0, the
-// fixture's setting) there is no barostat chain and the trajectories agree to round-off
-// (tests/unit/md_nphug).
+// MTK terms of a uniaxial barostat are LAMMPS's (NptSettings::lammps_mtk); the target is 0.01 K
+// until the first Hugoniot target (LAMMPS FixNPHug::setup), which the barostat chain's first half
+// step uses. The trajectories agree with LAMMPS's to round-off (tests/unit/md_nphug).
 #include <cstdint>
 #include <optional>
 
