@@ -51,7 +51,8 @@ struct RunPoint {
   double up = 0, us = 0, rho0 = 0;  ///< km/s, km/s, kg/m³
 };
 
-// A sweep folder (`shockfield hugoniot` output) stands for its up_*/ run folders.
+// A sweep folder (`shockfield hugoniot` output) stands for its run folders: up_*/ (piston),
+// us_*/ (msst) or p_*/ (nphug).
 std::vector<fs::path> run_folders(const std::vector<fs::path>& inputs) {
   std::vector<fs::path> runs;
   for (const fs::path& in : inputs) {
@@ -64,10 +65,11 @@ std::vector<fs::path> run_folders(const std::vector<fs::path>& inputs) {
     }
     std::vector<fs::path> sweep;
     for (const auto& e : fs::directory_iterator(in))
-      if (e.is_directory() && e.path().filename().string().rfind("up_", 0) == 0) sweep.push_back(e.path());
+      for (const char* prefix : {"up_", "us_", "p_"})
+        if (e.is_directory() && e.path().filename().string().rfind(prefix, 0) == 0) sweep.push_back(e.path());
     if (sweep.empty())
-      throw InputError(fmt::format("{}: neither a run folder (no config.resolved.toml) nor a sweep folder (no up_*/ "
-                                   "run folders)", in.string()));
+      throw InputError(fmt::format("{}: neither a run folder (no config.resolved.toml) nor a sweep folder (no up_*/, us_*/ "
+                                   "or p_*/ run folders)", in.string()));
     std::sort(sweep.begin(), sweep.end());
     runs.insert(runs.end(), sweep.begin(), sweep.end());
   }
@@ -89,7 +91,7 @@ RunPoint read_run(const fs::path& folder) {
     if (e.path().filename().string().rfind("hugoniot_", 0) == 0 && e.path().extension() == ".toml") states.push_back(e.path());
   if (states.size() != 1)
     throw InputError(fmt::format("{}: expected one Hugoniot state hugoniot_<stage>.toml (written by an MD run with a "
-                                 "[stage.piston]), found {}", folder.string(), states.size()));
+                                 "[stage.piston], an msst or an nphug stage), found {}", folder.string(), states.size()));
   p.hugoniot = states.front();
   const Config h = Config::load(p.hugoniot);
   if (!h.get_bool("complete"))
@@ -335,7 +337,7 @@ void add_bridge_hugoniot_to_eos_command(CLI::App& bridge, const std::vector<std:
       "hugoniot-to-eos",
       "MD Hugoniot sweep -> Mie-Gruneisen EOS. Reads the Hugoniot state (hugoniot_<stage>.toml:\n"
       "up_km_s, us_km_s, density0_g_cc) of each MD run folder (a `shockfield hugoniot` sweep folder\n"
-      "stands for its up_*/ runs; at least three speeds), fits Us = c0 + s Up by least squares and\n"
+      "stands for its up_*/, us_*/ or p_*/ runs; at least three points), fits Us = c0 + s Up by least squares and\n"
       "writes [eos] rho0 (MD density ahead of the shock), c0, s, gamma0 with the fit's standard\n"
       "errors and c0-s covariance, every input folder and the SHA-256 of its config.resolved.toml in\n"
       "[provenance.hugoniot_to_eos]. --quadratic auto (default) adds s2 Up^2 when n >= 4 and\n"

@@ -42,10 +42,37 @@ MsstSettings read_msst(const Config& stage, long long steps) {
   return s;
 }
 
+// [stage.nphug] (LAMMPS `fix nphug temp T T τ_T iso|aniso|x|y|z P P τ_P tchain pchain` with
+// `fix_modify e0 v0 p0`; docs/md.md).
+NphugSettings read_nphug(const Config& stage, long long steps) {
+  const auto table = stage.optional_table("nphug");
+  if (!table) stage.fail("nphug", "a [stage.nphug] table with at least pressure (bar) for ensemble = \"nphug\"");
+  const Config& h = *table;
+  NphugSettings s;
+  NptSettings& npt = s.npt;
+  npt.pressure = h.get_double("pressure", Range::closed(-1e7, 1e8));  // bar: −1 TPa to 10 TPa
+  const std::string style = h.get_choice_or("style", {"iso", "aniso", "x", "y", "z"}, "z");
+  if (style.size() == 1) {  // uniaxial: only that dimension is barostatted
+    s.axis = style[0] - 'x';
+    npt.dims = {false, false, false};
+    npt.dims[static_cast<std::size_t>(s.axis)] = true;
+  }
+  npt.iso = style == "iso";
+  npt.damping = h.get_double_or("damping", 0.1, Range::positive());
+  npt.pressure_damping = h.get_double_or("pressure_damping", 1.0, Range::positive());
+  npt.chain = static_cast<int>(h.get_int_or("chain", 3, Range::closed(1, 10)));
+  npt.pressure_chain = static_cast<int>(h.get_int_or("pressure_chain", 3, Range::closed(0, 10)));
+  if (h.has("p0")) s.p0 = h.get_double("p0", Range::closed(-1e7, 1e8));
+  if (h.has("v0")) s.v0 = h.get_double("v0", Range::positive());
+  if (h.has("e0")) s.e0 = h.get_double("e0");
+  s.stage_steps = steps;
+  return s;
+}
+
 StageSpec read_stage(const Config& t, std::size_t index) {
   StageSpec s;
   s.name = t.get_string_or("name", fmt::format("stage{}", index + 1));
-  s.ensemble = t.get_choice_or("ensemble", {"nve", "langevin", "nvt", "npt", "msst", "minimize"}, "nve");
+  s.ensemble = t.get_choice_or("ensemble", {"nve", "langevin", "nvt", "npt", "msst", "nphug", "minimize"}, "nve");
   s.steps = s.ensemble == "minimize" ? 0 : t.get_int("steps", Range::closed(0, kMaxTotalSteps));
   s.group = t.get_string_or("group", "all");
   if (s.ensemble == "langevin" || s.ensemble == "nvt" || s.ensemble == "npt") {
@@ -67,6 +94,13 @@ StageSpec read_stage(const Config& t, std::size_t index) {
   }
   if (s.ensemble == "msst") s.msst = read_msst(t, s.steps);
   else if (t.has("msst")) t.fail("msst", "a [stage.msst] table only with ensemble = \"msst\"");
+  if (s.ensemble == "nphug") {
+    s.nphug = read_nphug(t, s.steps);
+    // LAMMPS: the Hugoniostat's temperature, pressure and energy computes are of group all.
+    if (s.group != "all") t.fail("group", "\"all\" for ensemble = \"nphug\" (its pressure and energy are the whole system's)");
+  } else if (t.has("nphug")) {
+    t.fail("nphug", "a [stage.nphug] table only with ensemble = \"nphug\"");
+  }
   if (s.ensemble == "minimize") {
     MinimizeSettings& m = s.minimize;
     m.force_tolerance = t.get_double_or("force_tolerance", 1e-6, Range::positive());
@@ -92,9 +126,9 @@ StageSpec read_stage(const Config& t, std::size_t index) {
     const auto r = t.get_doubles("deform_rate", 3, Range::closed(-10, 10));
     s.deform_rate = Vec3(r[0], r[1], r[2]);
   }
-  if ((s.ensemble == "minimize" || s.ensemble == "msst") && (s.piston || s.deform_rate))
+  if ((s.ensemble == "minimize" || s.ensemble == "msst" || s.ensemble == "nphug") && (s.piston || s.deform_rate))
     t.fail("ensemble", fmt::format("{} stage cannot have a piston or deform_rate",
-                                   s.ensemble == "msst" ? "an msst" : "a minimisation"));
+                                   s.ensemble == "minimize" ? "a minimisation" : "an " + s.ensemble));
   return s;
 }
 
@@ -149,6 +183,7 @@ MdCase read_md_case(const Config& root) {
   for (std::size_t k = 0; k < stages.size(); ++k) {
     c.stages.push_back(read_stage(stages[k], k));
     if (c.stages.back().ensemble == "msst" && !c.output.msst_axis) c.output.msst_axis = c.stages.back().msst.axis;
+    if (c.stages.back().ensemble == "nphug") c.output.nphug = true;
     total += c.stages.back().steps;  // each <= 10^12: no overflow before the check below
     if (total > kMaxTotalSteps)
       stages[k].fail("steps", fmt::format("the stages up to this one add up to {} steps; expected at "

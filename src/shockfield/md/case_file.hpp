@@ -8,6 +8,7 @@
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/md/fixes/msst.hpp"
+#include "shockfield/md/fixes/nphug.hpp"
 #include "shockfield/md/minimize.hpp"
 
 namespace shockfield::md {
@@ -22,7 +23,7 @@ struct PistonSpec {
 struct StageSpec {
   std::string name;
   long long steps = 0;
-  std::string ensemble = "nve";    ///< nve | langevin | nvt | npt | msst | minimize
+  std::string ensemble = "nve";    ///< nve | langevin | nvt | npt | msst | nphug | minimize
   std::string group = "all";
   double temperature = 0;          ///< K (langevin, nvt, npt)
   double damping = 0.1;            ///< ps (langevin, nvt, npt)
@@ -35,6 +36,7 @@ struct StageSpec {
   std::optional<Vec3> deform_rate; ///< 1/ps per dimension
   MinimizeSettings minimize;
   MsstSettings msst;               ///< ensemble = "msst": the [stage.msst] table
+  NphugSettings nphug;             ///< ensemble = "nphug": the [stage.nphug] table
 };
 
 struct VelocityAdd {
@@ -57,6 +59,9 @@ struct OutputSpec {
   /// Not a key: the shock axis of the first msst stage, when the case has one (the thermo table
   /// and thermo.csv then carry the MSST columns).
   std::optional<int> msst_axis;
+  /// Not a key: the case has an nphug stage (the thermo table and thermo.csv then carry the
+  /// Hugoniostat columns).
+  bool nphug = false;
 };
 
 struct MdCase {

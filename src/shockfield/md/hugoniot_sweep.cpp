@@ -24,21 +24,37 @@ using units::metal::A_per_ps_to_km_per_s;
 
 namespace {
 
-// The one stage with a [stage.piston]; profiles must be written for the front to be tracked.
-std::string piston_stage(const fs::path& case_file) {
+// The one stage of the sweep's method (a [stage.piston], or ensemble msst or nphug) and its index;
+// a piston sweep needs profiles for the front to be tracked.
+std::pair<std::string, std::size_t> sweep_stage(const fs::path& case_file, const std::string& method) {
   const Config root = Config::load(case_file);
   root.get_choice("method", {"md"});
   const MdCase mdcase = read_md_case(root);
-  std::vector<std::string> names;
-  for (const auto& s : mdcase.stages)
-    if (s.piston) names.push_back(s.name);
-  if (names.size() != 1)
-    throw InputError(fmt::format("{}: a Hugoniot sweep needs exactly one [[stage]] with a [stage.piston], found {}",
-                                 case_file.string(), names.size()));
-  if (mdcase.output.profile_every == 0)
+  std::vector<std::size_t> found;
+  for (std::size_t k = 0; k < mdcase.stages.size(); ++k)
+    if (method == "piston" ? mdcase.stages[k].piston.has_value() : mdcase.stages[k].ensemble == method) found.push_back(k);
+  if (found.size() != 1)
+    throw InputError(fmt::format("{}: a Hugoniot sweep with --method {} needs exactly one [[stage]] {}, found {}",
+                                 case_file.string(), method,
+                                 method == "piston" ? "with a [stage.piston]" : "with ensemble = \"" + method + "\"",
+                                 found.size()));
+  if (method == "piston" && mdcase.output.profile_every == 0)
     throw InputError(fmt::format("{}: a Hugoniot sweep needs profiles: set [output] profile_every > 0",
                                  case_file.string()));
-  return names.front();
+  return {mdcase.stages[found.front()].name, found.front()};
+}
+
+// The run folder's name and the RunOptions of one value of the sweep.
+std::string value_folder(const std::string& method, double value) {
+  if (method == "msst") return fmt::format("us_{:.2f}", value);
+  if (method == "nphug") return fmt::format("p_{:.2f}", value);
+  return fmt::format("up_{:.2f}", value);
+}
+
+void set_value(RunOptions& r, const std::string& method, std::size_t stage, double value) {
+  if (method == "msst") r.overrides.push_back(fmt::format("stage[{}].msst.shock_speed={:.17g}", stage, value / A_per_ps_to_km_per_s));
+  else if (method == "nphug") r.overrides.push_back(fmt::format("stage[{}].nphug.pressure={:.17g}", stage, value / units::metal::bar_to_GPa));
+  else r.piston_speed = value / A_per_ps_to_km_per_s;
 }
 
 // shock_front_<stage>.csv: step, time_ps, front_A, piston_A ("nan" where no front was found).
@@ -77,34 +93,39 @@ LineFit front_fit(const fs::path& file) {
   }
 }
 
-SweepPoint run_one(const HugoniotSweepSettings& s, double speed, const fs::path& folder, const std::string& stage) {
-  const fs::path hugoniot = folder / fmt::format("hugoniot_{}.toml", stage);
+SweepPoint run_one(const HugoniotSweepSettings& s, double value, const fs::path& folder,
+                   const std::pair<std::string, std::size_t>& stage) {
+  const fs::path hugoniot = folder / fmt::format("hugoniot_{}.toml", stage.first);
   if (s.overwrite || !fs::exists(hugoniot)) {
     RunOptions r;
     r.case_file = s.case_file;
     r.output = folder;
     r.overwrite = s.overwrite;
     r.quiet = s.quiet;
-    r.piston_speed = speed / A_per_ps_to_km_per_s;
-    const Config root = Config::load(s.case_file);
+    set_value(r, s.method, stage.second, value);
+    const Config root = Config::load(s.case_file, r.overrides);
     root.get_choice("method", {"md"});  // read here as `shockfield run` does, so it is a known key
     run_case(root, r);
   } else {
-    std::printf("up = %g km/s: reusing the finished run in %s\n", speed, folder.string().c_str());
+    std::printf("%s: reusing the finished run in %s\n", value_folder(s.method, value).c_str(), folder.string().c_str());
   }
   const Config h = Config::load(hugoniot);
   if (!h.get_bool("complete"))
-    throw RunError(fmt::format("{}: no complete Hugoniot state at piston speed {} km/s ({})", hugoniot.string(), speed,
-                               h.get_string("note")));
+    throw RunError(fmt::format("{}: no complete Hugoniot state at {} ({})", hugoniot.string(),
+                               value_folder(s.method, value), h.get_string("note")));
   SweepPoint p;
-  p.piston = h.get_double("piston_speed_km_s");
+  p.piston = s.method == "piston" ? h.get_double("piston_speed_km_s") : value;
   p.up = h.get_double("up_km_s");
   p.us = h.get_double("us_km_s");
   p.pressure = h.get_double("pressure_GPa");
   p.pressure_rh = h.get_double("pressure_rankine_hugoniot_GPa");
   p.density = h.get_double("density_g_cc");
   p.temperature = h.get_double("temperature_K");
-  const LineFit f = front_fit(folder / fmt::format("shock_front_{}.csv", stage));
+  if (s.method != "piston") {  // a time-averaged state: no front to fit
+    p.us_stderr = p.front_rms = NAN;
+    return p;
+  }
+  const LineFit f = front_fit(folder / fmt::format("shock_front_{}.csv", stage.first));
   p.us_stderr = f.slope_stderr * A_per_ps_to_km_per_s;
   p.front_rms = f.residual_rms;
   return p;
@@ -113,19 +134,23 @@ SweepPoint run_one(const HugoniotSweepSettings& s, double speed, const fs::path&
 }  // namespace
 
 HugoniotSweep run_hugoniot_sweep(HugoniotSweepSettings s) {
-  if (s.speeds.empty()) throw InputError("Hugoniot sweep: no piston speeds");
+  const char* what = s.method == "nphug" ? "pressures" : s.method == "msst" ? "shock speeds" : "piston speeds";
+  if (s.speeds.empty()) throw InputError(fmt::format("Hugoniot sweep: no {}", what));
   std::sort(s.speeds.begin(), s.speeds.end());
-  if (s.speeds.front() <= 0) throw InputError("Hugoniot sweep: piston speeds must be positive");
+  if (s.speeds.front() <= 0) throw InputError(fmt::format("Hugoniot sweep: {} must be positive", what));
   if (std::adjacent_find(s.speeds.begin(), s.speeds.end()) != s.speeds.end())
-    throw InputError("Hugoniot sweep: a piston speed is given twice");
+    throw InputError(fmt::format("Hugoniot sweep: one of the {} is given twice", what));
   HugoniotSweep sweep;
-  sweep.stage = piston_stage(s.case_file);
+  const auto stage = sweep_stage(s.case_file, s.method);
+  sweep.stage = stage.first;
   fs::create_directories(s.folder);
-  for (double speed : s.speeds)
-    sweep.points.push_back(run_one(s, speed, s.folder / fmt::format("up_{:.2f}", speed), sweep.stage));
+  for (double value : s.speeds)
+    sweep.points.push_back(run_one(s, value, s.folder / value_folder(s.method, value), stage));
 
+  const char* first = s.method == "nphug" ? "target_pressure_GPa" : s.method == "msst" ? "shock_speed_set_km_s"
+                                                                                        : "piston_speed_km_s";
   io::CsvWriter csv(s.folder / "hugoniot_sweep.csv",
-                    {"piston_speed_km_s", "up_km_s", "us_km_s", "us_stderr_km_s", "front_residual_rms_A",
+                    {first, "up_km_s", "us_km_s", "us_stderr_km_s", "front_residual_rms_A",
                      "pressure_GPa", "pressure_rankine_hugoniot_GPa", "density_g_cc", "temperature_K"});
   std::vector<double> up, us;
   for (const SweepPoint& p : sweep.points) {

@@ -100,4 +100,10 @@ Json msst_json(const MsstReport& r) {
       .set("conserved_drift_eV_per_atom", (r.conserved_end - r.conserved_start) / static_cast<double>(r.atoms));
 }
 
+HugoniotState msst_hugoniot_state(const MsstReport& r) {
+  return cell_hugoniot_state(r.shock_speed, r.mean.up * A_per_ps_to_km_per_s, r.mean.pressure_axis * bar_to_GPa,
+                             mean_density(r), r.density0, r.mean.temperature, r.mean.samples,
+                             "msst stage: means over its second half");
+}
+
 }  // namespace shockfield::md

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "shockfield/core/json.hpp"
+#include "shockfield/md/diagnostics/hugoniot.hpp"
 #include "shockfield/md/fixes/msst.hpp"
 #include "shockfield/md/simulation.hpp"
 
@@ -39,5 +40,9 @@ MsstReport make_msst_report(const Simulation& sim, const FixMsst& fix, const std
 /// One log line: U_p, P, ρ, T of the second half and the conserved-quantity drift.
 std::string msst_log_line(const MsstReport& r);
 Json msst_json(const MsstReport& r);
+/// The second-half state as a Hugoniot point (hugoniot_<stage>.toml, read by `shockfield hugoniot
+/// --method msst` and the Hugoniot-to-EOS bridge); piston_speed is U_p, the speed of the piston
+/// that would drive this shock.
+HugoniotState msst_hugoniot_state(const MsstReport& r);
 
 }  // namespace shockfield::md

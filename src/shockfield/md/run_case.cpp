@@ -25,6 +25,7 @@
 #include "shockfield/md/fixes/piston.hpp"
 #include "shockfield/md/minimize.hpp"
 #include "shockfield/md/msst_report.hpp"
+#include "shockfield/md/nphug_report.hpp"
 #include "shockfield/md/potentials/registry.hpp"
 #include "shockfield/md/run_output.hpp"
 #include "shockfield/md/system_builder.hpp"
@@ -101,6 +102,10 @@ Prepared prepare(const Config& root, const RunOptions& options) {
       for (int d = 0; d < 3; ++d)
         if (!p.system.box.periodic(d))
           stages[k].fail("ensemble", fmt::format("msst needs a box periodic in x, y and z; {} is not periodic", "xyz"[d]));
+    if (s.ensemble == "nphug")  // as npt below: a barostat changes only periodic dimensions
+      for (int d = 0; d < 3; ++d)
+        if (s.nphug.npt.dims[d] && !p.system.box.periodic(d))
+          stages[k].fail("nphug.style", fmt::format("nphug can only change periodic dimensions; {} is not periodic", "xyz"[d]));
     if (s.ensemble != "npt") continue;
     const geometry::Box& box = p.system.box;
     const char* key = s.pressure_dims ? "pressure_dims" : "ensemble";
@@ -132,8 +137,11 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   else if (s.ensemble == "nvt") sim.fixes.push_back(std::make_unique<FixNoseHoover>(s.temperature, s.damping, s.chain, group));
   else if (s.ensemble == "npt")
     sim.fixes.push_back(std::make_unique<FixNoseHooverNpt>(
-        NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims, s.couple_iso, s.chain}, group));
+        NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims, s.couple_iso, s.chain,
+                    std::nullopt, false},
+        group));
   else if (s.ensemble == "msst") sim.fixes.push_back(std::make_unique<FixMsst>(s.msst, group));
+  else if (s.ensemble == "nphug") sim.fixes.push_back(std::make_unique<FixNphug>(s.nphug, group));
   else sim.fixes.push_back(std::make_unique<FixNve>(group));
   if (s.piston) {
     const PistonSpec& p = *s.piston;
@@ -256,6 +264,7 @@ class MdMethod final : public Method {
   std::vector<std::string> thermo_columns() const override {
     std::vector<std::string> c{"Step", "Time", "Temp", "PotEng", "KinEng", "TotEng", "Press"};
     if (p_.md.output.msst_axis) for (auto& name : msst_thermo_columns()) c.push_back(name);
+    if (p_.md.output.nphug) for (auto& name : nphug_thermo_columns()) c.push_back(name);
     return c;
   }
   std::vector<double> thermo_values() const override {
@@ -263,6 +272,7 @@ class MdMethod final : public Method {
     std::vector<double> v{static_cast<double>(sim_->step), sim_->time, t.temperature, t.potential, t.kinetic,
                           t.potential + t.kinetic, t.pressure};
     if (p_.md.output.msst_axis) for (double x : msst_thermo_values(*sim_, *p_.md.output.msst_axis)) v.push_back(x);
+    if (p_.md.output.nphug) for (double x : nphug_thermo_values(*sim_)) v.push_back(x);
     return v;
   }
   std::int64_t thermo_every() const override { return p_.md.output.thermo_every; }
@@ -294,10 +304,13 @@ class MdMethod final : public Method {
                         .set("note", h.note));
     Json msst = Json::array();
     for (const auto& r : msst_) msst.push(msst_json(r));
+    Json nphug = Json::array();
+    for (const auto& r : nphug_) nphug.push(nphug_json(r));
     const ThermoState t = sim_->thermo();
     return Json::object()
         .set("hugoniot", std::move(hugoniot))
         .set("msst", std::move(msst))
+        .set("nphug", std::move(nphug))
         .set("final", Json::object()
                           .set("temperature_K", t.temperature)
                           .set("potential_energy_eV", t.potential)
@@ -373,11 +386,22 @@ class MdMethod final : public Method {
     if (const FixMsst* msst = find_msst(*sim_)) {
       msst_.push_back(make_msst_report(*sim_, *msst, stage.name));
       run_->log.info("{}", msst_log_line(msst_.back()));
+      write_hugoniot_state(stage.name, msst_hugoniot_state(msst_.back()));
+    }
+    if (const FixNphug* nphug = find_nphug(*sim_)) {
+      nphug_.push_back(make_nphug_report(*sim_, *nphug, stage.name));
+      run_->log.info("{}", nphug_log_line(nphug_.back()));
+      write_hugoniot_state(stage.name, nphug_hugoniot_state(nphug_.back()));
     }
     started_ = false;
     ++k_;
     done_ = 0;
     begin_pending();
+  }
+
+  // hugoniot_<stage>.toml of an msst or nphug stage (a piston stage's is report_hugoniot's).
+  void write_hugoniot_state(const std::string& stage, const HugoniotState& h) const {
+    write_file_atomically(run_->folder / fmt::format("hugoniot_{}.toml", stage), hugoniot_toml(h));
   }
 
   Prepared p_;  ///< its system and potential move into sim_ when the run starts
@@ -387,6 +411,7 @@ class MdMethod final : public Method {
   std::function<bool(std::int64_t)> want_per_atom_;
   std::vector<std::pair<std::string, HugoniotState>> hugoniot_;  ///< stages ended in this session
   std::vector<MsstReport> msst_;                                 ///< msst stages ended in this session
+  std::vector<NphugReport> nphug_;                               ///< nphug stages ended in this session
   RunContext* run_ = nullptr;
   std::size_t k_ = 0;           ///< current stage
   std::int64_t done_ = 0;       ///< steps done in it

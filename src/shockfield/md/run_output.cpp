@@ -9,6 +9,7 @@
 #include "shockfield/io/lammps_dump.hpp"
 #include "shockfield/md/diagnostics/profiles.hpp"
 #include "shockfield/md/msst_report.hpp"
+#include "shockfield/md/nphug_report.hpp"
 
 namespace shockfield::md {
 
@@ -26,9 +27,14 @@ const std::vector<std::string> kThermoColumns{
 const std::vector<std::string> kMsstColumns{"msst_energy_eV", "msst_dhugoniot_K", "msst_drayleigh_bar",
                                             "msst_lagrangian_speed_A_ps", "msst_lagrangian_position_A"};
 
+// With an nphug stage: LAMMPS f_ID[1..3] of fix nphug and the thermostat's Hugoniot target.
+const std::vector<std::string> kNphugColumns{"nphug_dhugoniot_K", "nphug_us_A_ps", "nphug_up_A_ps",
+                                             "nphug_target_temperature_K"};
+
 std::vector<std::string> thermo_columns(const OutputSpec& spec) {
   std::vector<std::string> c = kThermoColumns;
   if (spec.msst_axis) c.insert(c.end(), kMsstColumns.begin(), kMsstColumns.end());
+  if (spec.nphug) c.insert(c.end(), kNphugColumns.begin(), kNphugColumns.end());
   return c;
 }
 
@@ -120,6 +126,10 @@ void RunOutput::write_thermo(const Simulation& sim) {
     const FixMsst* msst = find_msst(sim);
     const MsstQuantities q = msst ? msst->quantities(sim) : MsstQuantities{NAN, NAN, NAN, NAN, NAN, NAN, NAN};
     row.insert(row.end(), {q.energy, q.dhugoniot, q.drayleigh, q.lagrangian_speed, q.lagrangian_position});
+  }
+  if (spec_.nphug) {
+    const std::vector<double> h = nphug_thermo_values(sim);  // PHug dHug Us Up TTarget
+    row.insert(row.end(), h.begin() + 1, h.end());
   }
   thermo_.row(row);
 }

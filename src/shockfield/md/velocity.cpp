@@ -21,6 +21,13 @@ double group_twice_kinetic(const Atoms& atoms, std::uint32_t group_bit, std::siz
   return sum * mvv2e;
 }
 
+Vec3 group_twice_kinetic_components(const Atoms& atoms, std::uint32_t group_bit) {
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t i = 0; i < atoms.nlocal; ++i)
+    if (atoms.mask[i] & group_bit) sum += atoms.mass_of(i) * atoms.v[i].cwiseProduct(atoms.v[i]);
+  return sum * mvv2e;
+}
+
 double group_temperature(const Atoms& atoms, std::uint32_t group_bit) {
   std::size_t n = 0;
   const double twice_ke = group_twice_kinetic(atoms, group_bit, n);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../md/lammps_thermo_rows.hpp"
 #include "../md/md_fixture.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/lammps_data.hpp"
@@ -24,20 +25,10 @@ enum Column { kStep, kTemp, kPe, kKe, kEtotal, kPress, kPxx, kPyy, kPzz, kVol, k
 inline const std::array<const char*, kColumns> kColumnNames{
     "step", "temp", "pe", "ke", "etotal", "press", "pxx", "pyy", "pzz", "vol", "lz", "econserve", "f_msst",
     "dhugoniot", "drayleigh", "lagrangian_speed", "lagrangian_position"};
-using Row = std::array<double, kColumns>;
+using Row = lammps_rows::Row<kColumns>;
 
 inline std::vector<Row> read_thermo(const std::string& file) {
-  std::ifstream in("fixtures/lammps_msst/" + file);
-  if (!in) throw std::runtime_error("missing fixtures/lammps_msst/" + file + " (run the tests from tests/)");
-  std::vector<Row> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    Row r{};
-    for (double& v : r) words >> v;
-    if (words) rows.push_back(r);
-  }
-  return rows;
+  return lammps_rows::read<kColumns>("lammps_msst/" + file);
 }
 
 /// A simulation from <name>.data with shockfield's defaults as in in.msst (dt 1 fs, skin 2 Å).
@@ -84,31 +75,11 @@ inline std::vector<Row> run_msst(const std::string& name, const MsstSettings& s,
   return rows;
 }
 
-/// Largest |a − b| per column over all rows.
-inline Row max_difference(const std::vector<Row>& a, const std::vector<Row>& b) {
-  Row d{};
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
-    for (int c = 0; c < kColumns; ++c) d[c] = std::max(d[c], std::fabs(a[i][c] - b[i][c]));
-  return d;
-}
-
-/// Our rows against LAMMPS's: every quantity within `factor` times LAMMPS's own 1-vs-2-rank spread
-/// of that quantity over the run, or within `floor_rel` of its largest magnitude (round-off of a
-/// single step: the spread of a quantity that the two LAMMPS runs happen to print identically
-/// would be 0).
+/// Our rows against LAMMPS's <name>.thermo and <name>_np2.thermo (lammps_thermo_rows.hpp).
 inline void expect_follows_lammps(const std::vector<Row>& ours, const std::string& name, double factor,
                                   double floor_rel) {
-  const auto ref = read_thermo(name + ".thermo"), np2 = read_thermo(name + "_np2.thermo");
-  ASSERT_EQ(ours.size(), ref.size());
-  const Row spread = max_difference(ref, np2), diff = max_difference(ours, ref);
-  for (int c = 1; c < kColumns; ++c) {
-    double scale = 0;
-    for (const Row& r : ref) scale = std::max(scale, std::fabs(r[c]));
-    const double tol = std::max(factor * spread[c], floor_rel * scale);
-    std::printf("%-20s max |ours - LAMMPS| = %.3e  LAMMPS 1 vs 2 ranks %.3e  (tolerance %.2e)\n", kColumnNames[c],
-                diff[c], spread[c], tol);
-    EXPECT_LE(diff[c], tol) << kColumnNames[c];
-  }
+  lammps_rows::expect_follows(ours, read_thermo(name + ".thermo"), read_thermo(name + "_np2.thermo"), kColumnNames,
+                              factor, floor_rel);
 }
 
 }  // namespace shockfield::md::msst_test

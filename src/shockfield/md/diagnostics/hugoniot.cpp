@@ -121,10 +121,26 @@ bool HugoniotState::complete() const {
   return true;
 }
 
+HugoniotState cell_hugoniot_state(double us, double up, double pressure, double density, double density0,
+                                  double temperature, double samples, std::string note) {
+  HugoniotState h;
+  h.us = us;
+  h.up = h.piston_speed = up;
+  h.pressure = pressure;
+  h.pressure_rh = density0 * us * up;  // g/cm³ · km²/s² = GPa
+  h.density = density;
+  h.density_rh = density0 * us / (us - up);
+  h.density0 = density0;
+  h.temperature = temperature;
+  h.frames = static_cast<int>(samples);
+  h.note = std::move(note);
+  return h;
+}
+
 std::string hugoniot_toml(const HugoniotState& s) {
   // TOML has no "missing": a value that could not be measured is left out (never written as
   // nan), `complete` says whether all are there and `note` why not.
-  std::string text = "# Hugoniot state from the binned profiles (see docs/md.md, 'Shock diagnostics').\n";
+  std::string text = "# Hugoniot state (docs/md.md: 'Shock diagnostics' for a piston stage, msst and nphug for theirs).\n";
   const std::pair<const char*, double> values[] = {
       {"us_km_s", s.us}, {"up_km_s", s.up}, {"piston_speed_km_s", s.piston_speed}, {"pressure_GPa", s.pressure},
       {"pressure_rankine_hugoniot_GPa", s.pressure_rh}, {"density_g_cc", s.density},

@@ -30,6 +30,13 @@ struct HugoniotState {
   bool complete() const;
 };
 
+/// The Hugoniot state of a time-averaged homogeneous cell (an msst or nphug stage: U_s, U_p in
+/// km/s, P in GPa, ρ, ρ₀ in g/cm³, T in K over `samples` steps): the Rankine–Hugoniot pressure
+/// and density from ρ₀, U_s, U_p beside the measured ones, and piston_speed = U_p (the speed of
+/// the piston that would drive this shock).
+HugoniotState cell_hugoniot_state(double us, double up, double pressure, double density, double density0,
+                                  double temperature, double samples, std::string note);
+
 /// Front position (Å) in one profile, NaN when no bin exceeds half the piston speed.
 double front_position(const Profile& profile, int axis, int side, double piston_speed);
 

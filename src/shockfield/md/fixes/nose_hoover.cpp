@@ -14,16 +14,21 @@ namespace shockfield::md {
 using units::metal::boltz;
 
 NoseHooverChain::NoseHooverChain(int length, double temperature, double period)
-    : kt_(boltz * temperature), period_(period),
-      eta_(length, 0.0), eta_dot_(length + 1, 0.0), eta_dotdot_(length, 0.0), mass_(length, 0.0) {}
+    : kt_(boltz * temperature), mass_kt_(kt_), period_(period),
+      eta_(length, 0.0), eta_dot_(length + 1, 0.0), eta_dotdot_(length, 0.0), mass_(length, 0.0) {
+  // The outer members' forces at rest, (Q_{k−1}·0 − k_B T)/Q_k = −ω², which the first half step
+  // uses before it computes its own (LAMMPS FixNH::setup).
+  for (int k = 1; k < length; ++k) eta_dotdot_[k] = -1.0 / (period * period);
+}
 
 double NoseHooverChain::half_step(double twice_ke, double dof, double first_mass_dof, double dt) {
   dof_ = dof;
   const int m = static_cast<int>(eta_.size());
+  if (m == 0) return 1.0;
   const double omega2 = 1.0 / (period_ * period_);
   const double target_twice_ke = dof * kt_;
-  mass_[0] = first_mass_dof * kt_ / omega2;
-  for (int k = 1; k < m; ++k) mass_[k] = kt_ / omega2;
+  mass_[0] = first_mass_dof * mass_kt_ / omega2;
+  for (int k = 1; k < m; ++k) mass_[k] = mass_kt_ / omega2;
   const double dt4 = 0.25 * dt, dt8 = 0.125 * dt;
   eta_dotdot_[0] = (twice_ke - target_twice_ke) / mass_[0];
   // Outer chain members, from the far end inwards (eta_dot_[m] stays 0).
@@ -47,6 +52,7 @@ double NoseHooverChain::half_step(double twice_ke, double dof, double first_mass
 }
 
 double NoseHooverChain::energy() const {
+  if (eta_.empty()) return 0.0;
   double e = dof_ * kt_ * eta_[0] + 0.5 * mass_[0] * eta_dot_[0] * eta_dot_[0];
   for (std::size_t k = 1; k < eta_.size(); ++k) e += kt_ * eta_[k] + 0.5 * mass_[k] * eta_dot_[k] * eta_dot_[k];
   return e;

@@ -4,7 +4,8 @@
 // by a quarter/eighth-step Trotter split before the first and after the second velocity half
 // kick; the atoms' velocities are scaled by exp(−½Δt η̇₁). Thermostat masses
 // Q₁ = N_f k_B T / ω², Q_k = k_B T / ω² with ω = 1/τ. The chain energy
-// N_f k_B T η₁ + Σ_{k>1} k_B T η_k + Σ ½ Q_k η̇_k² enters the conserved quantity.
+// N_f k_B T η₁ + Σ_{k>1} k_B T η_k + Σ ½ Q_k η̇_k² enters the conserved quantity. A chain starts
+// at rest with the outer members' forces −ω² (LAMMPS FixNH::setup).
 #include "shockfield/core/units.hpp"
 #include "shockfield/md/atoms.hpp"
 #include "shockfield/md/fixes/nve.hpp"
@@ -17,6 +18,7 @@ namespace shockfield::md {
 class NoseHooverChain {
  public:
   NoseHooverChain(int length, double temperature, double period);
+  /// A chain of length 0 is no chain: half_step() returns 1 and energy() 0 (LAMMPS pchain 0).
   /// Advances the chain by half a step Δt/2 given 2K of the coupled degrees of freedom, their
   /// number L (the target 2K is L k_B T) and the first mass Q₁ = first_mass_dof · k_B T / ω².
   /// Returns exp(−½Δt η̇₁), the factor by which the coupled velocities must be scaled.
@@ -29,9 +31,13 @@ class NoseHooverChain {
   std::size_t restore(const std::vector<double>& s, std::size_t k);
   double degrees_of_freedom() const { return dof_; }
   double temperature() const { return kt_ / units::metal::boltz; }
+  /// A new target temperature with the masses kept at the temperature they were built with
+  /// (LAMMPS fix nphug: eta_mass_flag = etap_mass_flag = 0, the target moves every step).
+  void retarget(double temperature) { kt_ = units::metal::boltz * temperature; }
+  int length() const { return static_cast<int>(eta_.size()); }
 
  private:
-  double kt_, period_;
+  double kt_, mass_kt_, period_;  ///< k_B T of the target and of the masses
   double dof_ = 0;
   std::vector<double> eta_, eta_dot_, eta_dotdot_, mass_;
 };

@@ -14,16 +14,30 @@ using units::metal::nktv2p;
 FixNoseHooverNpt::FixNoseHooverNpt(const NptSettings& settings, std::uint32_t group_bit)
     : settings_(settings), group_bit_(group_bit),
       atom_chain_(settings.chain, settings.temperature, settings.damping),
-      barostat_chain_(settings.chain, settings.temperature, settings.pressure_damping) {}
+      barostat_chain_(settings.pressure_chain.value_or(settings.chain), settings.temperature,
+                      settings.pressure_damping) {}
+
+void FixNoseHooverNpt::set_reference_temperature(double temperature) {
+  settings_.temperature = temperature;
+  atom_chain_ = NoseHooverChain(settings_.chain, temperature, settings_.damping);
+  barostat_chain_ = NoseHooverChain(settings_.pressure_chain.value_or(settings_.chain), temperature,
+                                    settings_.pressure_damping);
+}
 
 void FixNoseHooverNpt::setup(Simulation& sim) {
   volume0_ = volume_ = sim.box.volume();
+}
+
+void FixNoseHooverNpt::retarget(double temperature) {
+  atom_chain_.retarget(temperature);
+  barostat_chain_.retarget(temperature);
 }
 
 void FixNoseHooverNpt::initial_integrate(Simulation& sim) {
   const double omega_p = 1.0 / settings_.pressure_damping;
   mass_ = (static_cast<double>(sim.atoms.nlocal) + 1.0) * boltz * settings_.temperature / (omega_p * omega_p);
   barostat_chain_step(sim);
+  retarget(target_temperature(sim));
   atom_chain_step(sim);
   barostat_kick(sim);
   barostat_velocity_scaling(sim);
@@ -42,7 +56,7 @@ void FixNoseHooverNpt::final_integrate(Simulation& sim) {
   barostat_kick(sim);
   atom_chain_step(sim);
   barostat_chain_step(sim);
-  check_extended_energy(sim, "npt", -energy_added(), atom_chain_.degrees_of_freedom(), settings_.temperature);
+  check_extended_energy(sim, name().c_str(), -energy_added(), atom_chain_.degrees_of_freedom(), settings_.temperature);
 }
 
 void FixNoseHooverNpt::barostat_chain_step(const Simulation& sim) {
@@ -68,19 +82,24 @@ void FixNoseHooverNpt::atom_chain_step(Simulation& sim) {
 
 void FixNoseHooverNpt::barostat_kick(Simulation& sim) {
   const ThermoState thermo = sim.thermo();
-  std::size_t n_group = 0;
-  const double twice_ke = group_twice_kinetic(sim.atoms, group_bit_, n_group);
-  const double three_n = 3.0 * static_cast<double>(sim.atoms.nlocal);
-  const double mtk = twice_ke / three_n;  // 2K/(3N) of eq. (1)
+  int dims = 0;
+  for (int d = 0; d < 3; ++d) dims += settings_.dims[d] ? 1 : 0;
+  // 2K/(3N) of eq. (1), or for lammps_mtk Σ_d m v_d²/(d N) of eq. (4), and the divisor of μ.
+  const double divisor = (settings_.lammps_mtk ? dims : 3.0) * static_cast<double>(sim.atoms.nlocal);
+  double twice_ke = 0;
+  if (settings_.lammps_mtk) {
+    const Vec3 mvv = group_twice_kinetic_components(sim.atoms, group_bit_);
+    for (int d = 0; d < 3; ++d) twice_ke += settings_.dims[d] ? mvv[d] : 0.0;
+  } else {
+    std::size_t n_group = 0;
+    twice_ke = group_twice_kinetic(sim.atoms, group_bit_, n_group);
+  }
+  const double mtk = twice_ke / divisor;
   // iso: the scalar pressure, or for two coupled dimensions the mean of their components
   // (LAMMPS FixNH::couple).
   double coupled = 0;
-  int dims = 0;
   for (int d = 0; d < 3; ++d)
-    if (settings_.dims[d]) {
-      coupled += thermo.pressure_tensor[d];
-      ++dims;
-    }
+    if (settings_.dims[d]) coupled += thermo.pressure_tensor[d];
   coupled = dims == 3 ? thermo.pressure : coupled / dims;
   double trace = 0;
   for (int d = 0; d < 3; ++d) {
@@ -90,7 +109,7 @@ void FixNoseHooverNpt::barostat_kick(Simulation& sim) {
     omega_dot_[d] += 0.5 * sim.dt * force / mass_;
     trace += omega_dot_[d];
   }
-  mu_ = trace / three_n;
+  mu_ = trace / divisor;
 }
 
 void FixNoseHooverNpt::barostat_velocity_scaling(Simulation& sim) const {

@@ -22,7 +22,14 @@
 //   H = K + U + E_chain(atoms) + E_chain(barostat) + Σ_d ½ W ω̇_d² + P_target (V − V₀)   (3)
 // (MTK 1994 eq. 2.11); energy_added() returns −(H − K − U). LAMMPS's econserve counts 3k_B T η₁
 // of the barostat chain for iso where its dynamics use k_B T; (3) uses k_B T.
+// With `lammps_mtk` the MTK terms of a subset of d barostatted dimensions are LAMMPS's,
+//   2K/(3N) → Σ_{d barostatted} Σ_i m_i v_i,d² / (d N),   μ = Σ_d ω̇_d / (d N)          (4)
+// (identical to (1–2) when all three dimensions are barostatted); fix nphug uses them.
+// A derived fix may move the thermostat target every step (target_temperature(), called after the
+// barostat chain's first half step, as LAMMPS FixNH::compute_temp_target), with the masses kept
+// at the temperature the fix was built with or reset by set_reference_temperature().
 #include <array>
+#include <optional>
 
 #include "shockfield/core/types.hpp"
 #include "shockfield/md/fixes/nose_hoover.hpp"
@@ -37,6 +44,8 @@ struct NptSettings {
   std::array<bool, 3> dims{true, true, true};  ///< barostatted dimensions (periodic)
   bool iso = false;               ///< couple the barostatted dimensions (LAMMPS iso)
   int chain = 3;                  ///< length of both chains
+  std::optional<int> pressure_chain;  ///< barostat chain length if not `chain` (LAMMPS pchain; 0: none)
+  bool lammps_mtk = false;        ///< eq. (4) instead of (1–2) for a subset of dimensions
 };
 
 class FixNoseHooverNpt : public Fix {
@@ -50,6 +59,18 @@ class FixNoseHooverNpt : public Fix {
   double energy_added() const override;
   std::vector<double> state() const override;
   void restore(const std::vector<double>& s) override;
+
+ protected:
+  /// The thermostat's target temperature for this step (K); NPT's is fixed.
+  virtual double target_temperature(const Simulation&) { return settings_.temperature; }
+  /// The temperature of the thermostat and barostat masses (and, until the next
+  /// target_temperature(), of their targets), K.
+  void set_reference_temperature(double temperature);
+  /// Both chains' target temperature (K), their masses kept.
+  void retarget(double temperature);
+  const NptSettings& npt_settings() const { return settings_; }
+  /// Number of values state() writes (a derived fix appends its own after them).
+  std::size_t state_size() const { return FixNoseHooverNpt::state().size(); }
 
  private:
   /// ω̇ kick by ½Δt, eq. (1), and the coupling μ of eq. (2).
