@@ -3,14 +3,16 @@
 //
 //   write: the file is built in memory, with a 64-bit FNV-1a checksum over every attribute and
 //          dataset (name, length and bytes, in the order written) stored as the attributes
-//          `checksum` and `checksum_items`; its bytes go to <file>.tmp with checked writes and
-//          an fsync; the temporary file is read back and its checksum verified; only then is
-//          it renamed over <file> and the folder fsynced. Until that rename the previous
-//          checkpoint is untouched; on any failure the temporary file is removed and RunError
-//          names it (exit 3).
-//   read:  the file is opened and its checksum verified before anything is used; a truncated or
-//          damaged checkpoint (or one written without a checksum) is refused by name with
-//          InputError (exit 2), never read as zeros.
+//          `checksum` and `checksum_items`; its bytes, then a trailer holding the FNV-1a hash of
+//          the whole image, go to <file>.tmp with checked writes and an fsync; the temporary
+//          file is read back and both checksums verified; only then is it renamed over <file>
+//          and the folder fsynced. Until that rename the previous checkpoint is untouched; on
+//          any failure the temporary file is removed and RunError names it (exit 3).
+//   read:  the trailer's whole-file hash is verified before libhdf5 parses the file (a damaged
+//          file must not reach HDF5's metadata parser), then the file is opened and its item
+//          checksum verified before anything is used; a truncated or damaged checkpoint (or
+//          one written without checksums) is refused by name with InputError (exit 2), never
+//          read as zeros.
 #include <cstdint>
 #include <filesystem>
 #include <string>

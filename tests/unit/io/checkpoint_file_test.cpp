@@ -6,6 +6,8 @@
 // whole number in range is refused before its integer conversion.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include "support/scratch_path.hpp"
 
 #include <algorithm>
@@ -112,8 +114,27 @@ TEST_F(CheckpointFileTest, CheckpointWithoutChecksumIsRefused) {
     h5.set_attribute("step", 1.0);
     h5.close();
   }
-  const std::string msg = input_error_of([&] { io::CheckpointReader r(file); });
+  // A plain HDF5 file (no trailer): refused before libhdf5 parses it.
+  std::string msg = input_error_of([&] { io::CheckpointReader r(file); });
+  EXPECT_NE(msg.find("no whole-file checksum trailer"), std::string::npos) << msg;
+  // With a correct trailer appended (FNV-1a 64 of the bytes) but no item checksum inside.
+  const std::vector<char> bytes = bytes_of(file);
+  std::uint64_t hash = 14695981039346656037ull;
+  for (const unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
+  std::ofstream(file, std::ios::binary | std::ios::app) << fmt::format("\nshockfield checkpoint fnv1a64 {:016x}\n", hash);
+  msg = input_error_of([&] { io::CheckpointReader r(file); });
   EXPECT_NE(msg.find("no checksum"), std::string::npos) << msg;
+}
+
+// A byte changed inside the HDF5 image is caught by the trailer, before libhdf5 reads the file.
+TEST_F(CheckpointFileTest, WholeFileChecksumIsCheckedFirst) {
+  write_sample(file, 1);
+  std::vector<char> bytes = bytes_of(file);
+  bytes[bytes.size() / 3] ^= 0x5a;
+  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  const std::string msg = input_error_of([&] { io::CheckpointReader r(file); });
+  EXPECT_NE(msg.find("whole-file checksum"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
 }
 
 TEST_F(CheckpointFileTest, FailedWriteKeepsThePreviousCheckpoint) {
