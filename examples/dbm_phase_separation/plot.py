@@ -16,6 +16,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent.parent / "python"))
+from shockfield_plot.vtk_arrays import read_vtk_arrays  # noqa: E402
 
 
 def read_csv(path):
@@ -25,10 +27,10 @@ def read_csv(path):
 
 
 def read_rho(vti):
-    text = Path(vti).read_text()
-    ext = [int(v) for v in re.search(r'WholeExtent="([^"]+)"', text).group(1).split()]
-    block = re.search(r'Name="rho"[^>]*>([^<]*)<', text).group(1)
-    return np.array(block.split(), float).reshape(ext[3] + 1, ext[1] + 1)
+    """The density of a grid frame (any VTK encoding: shockfield_plot.vtk_arrays) as rows y, columns x."""
+    head = Path(vti).read_bytes()[:2048].decode("ascii", "replace")
+    ext = [int(v) for v in re.search(r'WholeExtent="([^"]+)"', head).group(1).split()]
+    return read_vtk_arrays(str(vti))["rho"].astype(float).reshape(ext[3] + 1, ext[1] + 1)
 
 
 def growth_exponent(s, t0, t1):
