@@ -13,6 +13,7 @@
 
 #include "shockfield/analysis/vti_binary.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/io/vtk_zlib.hpp"
 
 namespace shockfield::analysis {
 namespace {
@@ -296,12 +297,12 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
       f.n[a] = cell ? std::max<std::size_t>(static_cast<std::size_t>(points), 2) - 1
                     : static_cast<std::size_t>(points);
     }
-    // zlib packs at most kZlibMaxExpansion bytes into one, so a compressed file may hold more values than bytes.
+    // zlib packs at most io::kZlibMaxExpansion bytes into one, so a compressed file may hold more values than bytes.
     const auto vtkfile = markup.find("<VTKFile");
     const bool compressed = vtkfile != std::string::npos &&
                             !xml_attribute(std::string_view(markup).substr(vtkfile, markup.find('>', vtkfile) - vtkfile),
                                            "compressor").empty();
-    checked_cells(f.n, text.size() * (compressed ? kZlibMaxExpansion : 1), where(image));
+    checked_cells(f.n, text.size() * (compressed ? io::kZlibMaxExpansion : 1), where(image));
     const auto body = markup.find('>', pos) + 1;
     if (format == "ascii") {
       Tokens values(markup.substr(body, markup.find("</DataArray>", body) - body), path,

@@ -130,9 +130,9 @@ std::vector<double> decode(const VtiBinary& a, std::size_t count,
     if (swap) std::reverse(bytes.begin(), bytes.end());
     return bytes;
   };
-  // Uncompressed, every value takes at least a byte; zlib packs at most kZlibMaxExpansion bytes
+  // Uncompressed, every value takes at least a byte; zlib packs at most io::kZlibMaxExpansion bytes
   // into one, so a larger count is a corrupt header, not an allocation to attempt.
-  const std::size_t packing = compressor.empty() ? 1 : kZlibMaxExpansion;
+  const std::size_t packing = compressor.empty() ? 1 : io::kZlibMaxExpansion;
   if (count > a.text.size() * packing)
     throw InputError(fmt::format("{}: {} values cannot fit in a file of {} bytes", where, count, a.text.size()));
   const std::size_t header_size = header == "UInt64" ? 8 : 4;

@@ -14,10 +14,6 @@
 
 namespace shockfield::analysis {
 
-/// Most bytes zlib's deflate can pack into one (its limit is 1032:1), which bounds the values a
-/// compressed file of a given size can hold.
-inline constexpr std::size_t kZlibMaxExpansion = 1032;
-
 /// Value of attribute `key` in an XML start tag (`<Name a="1" b="2"`); empty if absent.
 std::string xml_attribute(std::string_view tag, const std::string& key);
 

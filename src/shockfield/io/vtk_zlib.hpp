@@ -15,6 +15,10 @@
 
 namespace shockfield::io {
 
+/// Most bytes zlib's deflate can pack into one (its limit is 1032:1), which bounds the values a
+/// compressed file of a given size can hold.
+inline constexpr std::size_t kZlibMaxExpansion = 1032;
+
 /// VTK's default block size (vtkDataCompressor: 32 KiB).
 inline constexpr std::size_t kVtkZlibBlockSize = 32768;
 
