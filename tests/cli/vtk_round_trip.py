@@ -6,7 +6,8 @@
 Every file is read by VTK's XML reader and by vtk_arrays: the two must give the same arrays,
 bit for bit, and every array but the vertex connectivity must carry a units attribute. Each
 further FILE (the same frame written in another encoding or precision) must equal REFERENCE_FILE
-(ascii, Float64): exactly for Float64, as the nearest float for Float32. Exit 77 when
+(ascii, Float64): exactly for Float64, as the nearest float for Float32. The categorical arrays
+(material, body, grain) must be Int32 in every file. Exit 77 when
 python3-vtk9 is absent (the test then says it skipped).
 """
 import re
@@ -23,6 +24,9 @@ try:
 except ImportError:
     print("skip: python3-vtk9 is not installed (apt-get install python3-vtk9)")
     sys.exit(77)
+
+
+CATEGORICAL = {"material", "body", "grain"}
 
 
 def vtk_arrays(path):
@@ -51,6 +55,9 @@ def check(path):
         name = re.search(r'Name="([^"]+)"', tag).group(1)
         if name not in ("connectivity", "offsets") and "units=" not in tag:
             sys.exit(f"FAIL: {path}: DataArray {name} has no units")
+    for name in CATEGORICAL.intersection(ours):  # labels are integers in every encoding
+        if ours[name].dtype != np.int32:
+            sys.exit(f"FAIL: {path}: categorical array {name} is {ours[name].dtype}, expected int32")
     return ours
 
 

@@ -38,9 +38,12 @@ constexpr const char* encoding_name(VtkEncoding e) {
 
 struct VtkArray {
   std::string name;
-  int components = 1;          ///< 1 (scalar) or 3 (vector)
+  int components = 1;          ///< 1 (scalar), 3 (vector) or 9 (tensor, row-major)
   std::vector<double> values;  ///< components × count, interleaved
   std::string units{};         ///< SI unit ("Pa", "m/s", "1" for a number); empty: not written
+  /// A categorical array (material, body, grain): written as Int32 whatever the precision, so
+  /// ParaView offers it for categorical colouring and thresholds compare exact integers.
+  bool integer = false;
 };
 
 /// Point data on (nx, ny, nz) grid points; x fastest. A 2D grid has nz = 1.

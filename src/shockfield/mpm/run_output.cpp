@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 #include "shockfield/analysis/field_statistics.hpp"
 #include "shockfield/io/checked_file.hpp"
@@ -175,7 +176,10 @@ void RunOutput::write_fields(const Simulation& sim) {
       {"density", "kg/m3"}, {"pressure", "Pa"}, {"temperature", "K"}, {"plastic_work", "J/kg"},
       {"plastic_strain", "1"}, {"energy", "J/kg"}, {"material", "1"}, {"body", "1"}, {"damage", "1"},
       {"longitudinal_stress", "Pa"}, {"longitudinal_deviator", "Pa"}, {"von_mises", "Pa"}};
-  for (const auto& [name, unit] : scalar_arrays) arrays.push_back({name, 1, std::vector<double>(n), unit});
+  for (const auto& [name, unit] : scalar_arrays) {
+    const bool label = std::string_view(name) == "material" || std::string_view(name) == "body";
+    arrays.push_back({name, 1, std::vector<double>(n), unit, label});
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const auto& s = p.state[i];
     const Mat3 sigma = s.stress();

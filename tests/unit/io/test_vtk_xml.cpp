@@ -113,6 +113,22 @@ TEST(VtkXml, EveryEncodingAndPrecisionReadsBack) {
   fs::remove_all(dir);
 }
 
+// Categorical arrays (material, body, grain) are Int32 in every precision, their values exact.
+TEST(VtkXml, CategoricalArraysAreInt32) {
+  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_labels_test");
+  fs::create_directories(dir);
+  const std::vector<double> xyz{0, 0, 0, 1, 0, 0, 2, 0, 0};
+  for (io::VtkPrecision p : {io::VtkPrecision::Float64, io::VtkPrecision::Float32}) {
+    io::write_vtp(dir / "labels.vtp", xyz, {{"grain", 1, {3, 0, 70000}, "1", true}, {"damage", 1, {0.5, 0, 1}, "1"}},
+                  {io::VtkEncoding::Ascii, p});
+    const std::string text = read_text(dir / "labels.vtp");
+    EXPECT_NE(text.find("type=\"Int32\" Name=\"grain\""), std::string::npos) << text;
+    EXPECT_NE(text.find("3 0 70000\n"), std::string::npos) << text;
+    EXPECT_EQ(text.find("type=\"Int32\" Name=\"damage\""), std::string::npos) << text;
+  }
+  fs::remove_all(dir);
+}
+
 // VTK's compressed-array layout: [blocks, block size, last block size, compressed sizes...],
 // a partial last block, and a full last block written as 0.
 TEST(VtkXml, ZlibBlocksFollowVtkLayout) {
