@@ -32,4 +32,27 @@ expect_error "${good/D = 1.0/D = nan}" "model.D"
 expect_error "${good/a = 0.4/a = 0.4
 b = 1}" "model.b"
 expect_error "${good/nodes = \[48, 40\]/nodes = [48]}" "grid.nodes"
+# Walls ([grid.boundary]): explicit only; a dirichlet axis needs its two values; the wall holds
+# its value in the frames.
+walls="${good/spacing = 0.5/spacing = 0.5
+
+[grid.boundary]
+x = \"dirichlet\"
+x_lo = 1.0
+x_hi = 0.0
+y = \"neumann\"}"
+expect_error "$walls" "time.scheme" "the spectral scheme needs periodic boundaries"
+explicit_walls="${walls/scheme = \"spectral\"/scheme = \"explicit\"}"
+explicit_walls="${explicit_walls/dt = 0.1/dt = 0.05}"
+expect_error "${explicit_walls/x_hi = 0.0/}" "grid.boundary.x_hi"
+expect_error "${explicit_walls/y = \"neumann\"/y = \"open\"}" "grid.boundary.y"
+echo "$explicit_walls" > "$WORK/walls.toml"
+"$SF" run "$WORK/walls.toml" --output "$WORK/walls" -q > /dev/null
+/usr/bin/python3 - "$WORK/walls/fields/xi_3.vti" "$ROOT/python" <<'PYEOF' || fail "the dirichlet walls do not hold 1 and 0"
+import sys
+sys.path.insert(0, sys.argv[2])
+from shockfield_plot.vtk_arrays import read_vtk_arrays
+xi = read_vtk_arrays(sys.argv[1])["xi"].reshape(40, 48)
+assert (xi[:, 0] == 1.0).all() and (xi[:, -1] == 0.0).all(), (xi[:, 0], xi[:, -1])
+PYEOF
 echo "phasefield: all checks passed"

@@ -19,6 +19,17 @@ Grid read_grid(const Config& t) {
   if (nodes > kMaxGridPoints)
     t.fail("nodes", fmt::format("{:.3g} grid nodes; expected at most {:.0e}", nodes, kMaxGridPoints));
   g.dx = t.get_double("spacing", Range::positive());
+  // [grid.boundary]: x, y, z = "periodic" (default), "neumann" or "dirichlet" with <axis>_lo, _hi.
+  if (const auto b = t.optional_table("boundary")) {
+    for (int d = 0; d < g.dim; ++d) {
+      const std::string axis(1, "xyz"[d]);
+      const std::string kind = b->get_choice_or(axis, {"periodic", "neumann", "dirichlet"}, "periodic");
+      g.boundary[d] = kind == "neumann" ? Boundary::neumann : kind == "dirichlet" ? Boundary::dirichlet : Boundary::periodic;
+      if (g.boundary[d] == Boundary::dirichlet)
+        g.fixed[d] = {b->get_double(axis + "_lo", Range::closed(-10.0, 10.0)),
+                      b->get_double(axis + "_hi", Range::closed(-10.0, 10.0))};
+    }
+  }
   return g;
 }
 
@@ -66,6 +77,9 @@ PhasefieldCase read_phasefield_case(const Config& root) {
   c.model.D = model.get_double("D", Range::positive());
   const Config time = root.table("time");
   c.scheme = scheme_from_name(time.get_choice_or("scheme", {"explicit", "spectral"}, "spectral"));
+  if (c.scheme == Scheme::spectral && !c.grid.all_periodic())
+    time.fail("scheme", "\"explicit\": the spectral scheme needs periodic boundaries on every axis, and "
+                        "[grid.boundary] sets a wall");
   const double limit = c.grid.explicit_limit(c.model.D);
   c.dt = time.get_double("dt", Range::positive());
   // Forward Euler is unstable beyond dx²/(2 dim D); 0.9 of it keeps a margin for the reaction term.

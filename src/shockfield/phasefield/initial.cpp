@@ -25,7 +25,7 @@ double signed_distance(const Grid& grid, const Domain& domain, const std::array<
   for (int d = 0; d < grid.dim; ++d) {
     const double L = grid.length(d);
     r[d] = x[d] - domain.center[d];
-    r[d] -= L * std::round(r[d] / L);
+    if (grid.periodic(d)) r[d] -= L * std::round(r[d] / L);  // minimum image
   }
   switch (domain.kind) {
     case Domain::Kind::slab: {

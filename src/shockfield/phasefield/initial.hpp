@@ -1,7 +1,7 @@
 #pragma once
 // Initial hcp domains: a list of spheres, ellipsoids and slabs (two parallel planes), and random
 // spherical nuclei, each with the flat-front tanh profile of the model across its surface
-// (model.hpp). Overlapping domains take the larger ξ. Distances are minimum-image (periodic grid).
+// (model.hpp). Overlapping domains take the larger ξ. Distances are minimum-image along periodic axes.
 #include <array>
 #include <cstdint>
 #include <vector>

@@ -61,6 +61,7 @@ class PhasefieldMethod final : public Method {
   void start(RunContext& run) override {
     solver_.allocate();
     solver_.field() = initial_field(c_.grid, c_.model, c_.domains);
+    solver_.hold_walls();
     open(run, false);
     write_due();
   }

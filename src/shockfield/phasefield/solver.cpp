@@ -56,6 +56,9 @@ Solver::Solver(const Grid& grid, const Model& model, Scheme scheme, double dt, b
     : grid_(grid), model_(model), scheme_(scheme), dt_(dt) {
   if (!(model.D > 0.0)) throw std::invalid_argument(fmt::format("D = {} must be positive", model.D));
   if (!(dt > 0.0)) throw std::invalid_argument(fmt::format("dt = {} must be positive", dt));
+  if (scheme == Scheme::spectral && !grid.all_periodic())
+    throw std::invalid_argument("the spectral scheme needs periodic boundaries on every axis; use the explicit scheme "
+                                "with walls");
   if (scheme == Scheme::explicit_euler && dt > grid.explicit_limit(model.D))
     throw std::invalid_argument(fmt::format("dt = {} exceeds the explicit stability limit dx^2/(2 dim D) = {}", dt,
                                             grid.explicit_limit(model.D)));
@@ -81,12 +84,38 @@ double Solver::bytes(const Grid& grid, Scheme scheme) {
 Solver::~Solver() = default;
 
 void Solver::step() {
+  hold_walls();
   if (scheme_ == Scheme::spectral)
     step_spectral();
   else
     step_explicit();
+  hold_walls();
   ++steps_;
   time_ = static_cast<double>(steps_) * dt_;
+}
+
+void Solver::hold_walls() {
+  for (int d = 0; d < grid_.dim; ++d) {
+    if (grid_.boundary[d] != Boundary::dirichlet) continue;
+    for (int side = 0; side < 2; ++side) {
+      const int wall = side == 0 ? 0 : grid_.n[d] - 1;
+      std::array<int, 3> lo{0, 0, 0}, hi = grid_.n;
+      lo[d] = wall, hi[d] = wall + 1;
+      for (int k = lo[2]; k < hi[2]; ++k)
+        for (int j = lo[1]; j < hi[1]; ++j)
+          for (int i = lo[0]; i < hi[0]; ++i) xi_[grid_.index(i, j, k)] = grid_.fixed[d][side];
+    }
+  }
+}
+
+void Solver::add_source() {
+  if (!source_) return;
+  const auto [nx, ny, nz] = grid_.n;
+  const double dx = grid_.dx, t = time_, dt = dt_;
+#pragma omp parallel for collapse(2) schedule(static)
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) work_[grid_.index(i, j, k)] += dt * source_({i * dx, j * dx, k * dx}, t);
 }
 
 void Solver::step_explicit() {
@@ -96,14 +125,15 @@ void Solver::step_explicit() {
   const double* x = xi_.data();
   double* out = work_.data();
   const std::size_t sy = nx, sz = static_cast<std::size_t>(nx) * ny;
+  const Grid& g = grid_;
 #pragma omp parallel for collapse(2) schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j) {
-      const int jm = j == 0 ? ny - 1 : j - 1, jp = j == ny - 1 ? 0 : j + 1;
-      const int km = k == 0 ? nz - 1 : k - 1, kp = k == nz - 1 ? 0 : k + 1;
+      const int jm = g.neighbour(1, j, -1), jp = g.neighbour(1, j, 1);
+      const int km = g.neighbour(2, k, -1), kp = g.neighbour(2, k, 1);
       const std::size_t row = sy * j + sz * k;
       for (int i = 0; i < nx; ++i) {
-        const int im = i == 0 ? nx - 1 : i - 1, ip = i == nx - 1 ? 0 : i + 1;
+        const int im = g.neighbour(0, i, -1), ip = g.neighbour(0, i, 1);
         const double c = x[row + i];
         double lap = x[row + im] + x[row + ip] - 2.0 * c;
         if (dim > 1) lap += x[sy * jm + sz * k + i] + x[sy * jp + sz * k + i] - 2.0 * c;
@@ -111,6 +141,7 @@ void Solver::step_explicit() {
         out[row + i] = c + dt * (r * lap - model_.df(c));
       }
     }
+  add_source();
   xi_.swap(work_);
 }
 
@@ -120,6 +151,7 @@ void Solver::step_spectral() {
   const double dt = dt_;
 #pragma omp parallel for schedule(static)
   for (std::size_t p = 0; p < n; ++p) work_[p] = xi_[p] - dt * model_.df(xi_[p]);
+  add_source();
   fftw_execute_dft_r2c(F.forward, work_.data(), reinterpret_cast<fftw_complex*>(F.spectrum.data()));
   const std::size_t m = F.spectrum.size();
 #pragma omp parallel for schedule(static)
@@ -132,21 +164,26 @@ FieldMeasures Solver::measures() const {
   const int dim = grid_.dim;
   const double inv_dx2 = 1.0 / (grid_.dx * grid_.dx);
   const std::size_t rows = static_cast<std::size_t>(ny) * nz;
+  const Grid& g = grid_;
+  // Trapezoidal weight of node i along axis d: 1/2 on a wall; the forward difference from node i
+  // along d: none from the last node before a wall.
+  const auto weight = [&](int d, int i) { return g.periodic(d) || (i > 0 && i < g.n[d] - 1) ? 1.0 : 0.5; };
+  const auto forward = [&](int d, int i) { return g.periodic(d) || i + 1 < g.n[d]; };
   std::vector<double> energy(rows), integral(rows), above(rows);
 #pragma omp parallel for schedule(static)
   for (std::size_t row = 0; row < rows; ++row) {
     const int j = static_cast<int>(row % ny), k = static_cast<int>(row / ny);
-    const int jp = j == ny - 1 ? 0 : j + 1, kp = k == nz - 1 ? 0 : k + 1;
+    const int jp = g.neighbour(1, j, 1), kp = g.neighbour(2, k, 1);
+    const double row_weight = (dim > 1 ? weight(1, j) : 1.0) * (dim > 2 ? weight(2, k) : 1.0);
     double e = 0.0, s = 0.0, h = 0.0;
     for (int i = 0; i < nx; ++i) {
-      const int ip = i == nx - 1 ? 0 : i + 1;
-      const double c = xi_[grid_.index(i, j, k)];
-      double g2 = std::pow(xi_[grid_.index(ip, j, k)] - c, 2);
-      if (dim > 1) g2 += std::pow(xi_[grid_.index(i, jp, k)] - c, 2);
-      if (dim > 2) g2 += std::pow(xi_[grid_.index(i, j, kp)] - c, 2);
-      e += model_.f(c) + 0.5 * model_.D * g2 * inv_dx2;
-      s += c;
-      h += c > 0.5 ? 1.0 : 0.0;
+      const double c = xi_[grid_.index(i, j, k)], w = row_weight * weight(0, i);
+      double g2 = forward(0, i) ? std::pow(xi_[grid_.index(g.neighbour(0, i, 1), j, k)] - c, 2) : 0.0;
+      if (dim > 1 && forward(1, j)) g2 += std::pow(xi_[grid_.index(i, jp, k)] - c, 2);
+      if (dim > 2 && forward(2, k)) g2 += std::pow(xi_[grid_.index(i, j, kp)] - c, 2);
+      e += w * (model_.f(c) + 0.5 * model_.D * g2 * inv_dx2);
+      s += w * c;
+      h += c > 0.5 ? w : 0.0;
     }
     energy[row] = e;
     integral[row] = s;
@@ -160,7 +197,9 @@ FieldMeasures Solver::measures() const {
   }
   m.free_energy *= grid_.cell_volume();
   m.integral *= grid_.cell_volume();
-  m.fraction_above_half /= static_cast<double>(grid_.size());
+  double volume = 1.0;  // in cells: n per periodic axis, n − 1 between walls
+  for (int d = 0; d < dim; ++d) volume *= g.periodic(d) ? g.n[d] : g.n[d] - 1;
+  m.fraction_above_half /= volume;
   return m;
 }
 

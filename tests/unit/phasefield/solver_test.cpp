@@ -80,6 +80,44 @@ TEST(PhasefieldSolver, RefusesBadParameters) {
   EXPECT_THROW(scheme_from_name("implicit"), std::invalid_argument);
 }
 
+// A zero-flux wall is a mirror: a field symmetric about x = 0 on a periodic grid of 2(n − 1)
+// nodes equals, node for node and bitwise, the same field on n nodes between neumann walls (the
+// ghost ξ₋₁ = ξ₁ is the periodic neighbour's value). A disc centred on the wall, growing (a = 0.4).
+TEST(PhasefieldSolver, NeumannWallIsAMirror) {
+  const int n = 33;
+  Grid periodic{2, {2 * (n - 1), 48, 1}, 0.5};
+  Grid walls = periodic;
+  walls.n[0] = n;
+  walls.boundary[0] = Boundary::neumann;
+  const Model model{0.4, 1.0};
+  // Radius 9 above the critical D/c₀ = 7.07: the disc grows.
+  const std::vector<Domain> disc{{Domain::Kind::sphere, {0.0, 12.0, 0.0}, {9.0, 9.0, 9.0}}};
+  Solver a(periodic, model, Scheme::explicit_euler, 0.05), b(walls, model, Scheme::explicit_euler, 0.05);
+  a.field() = initial_field(periodic, model, disc);
+  b.field() = initial_field(walls, model, disc);
+  for (int s = 0; s < 400; ++s) a.step(), b.step();
+  for (int j = 0; j < 48; ++j)
+    for (int i = 0; i < n; ++i) ASSERT_EQ(a.field()[periodic.index(i, j, 0)], b.field()[walls.index(i, j, 0)]) << i << " " << j;
+  EXPECT_GT(b.measures().integral, 0.5 * std::acos(-1.0) * 81.0);  // the half disc grew
+  // Trapezoidal measures: half the periodic hcp volume (the walls' nodes count half a cell).
+  EXPECT_NEAR(b.measures().integral, 0.5 * a.measures().integral, 1e-12 * a.measures().integral);
+}
+
+// Dirichlet walls hold their values; the spectral scheme refuses walls.
+TEST(PhasefieldSolver, DirichletWallsHoldTheirValues) {
+  Grid g{1, {40, 1, 1}, 0.5};
+  g.boundary[0] = Boundary::dirichlet;
+  g.fixed[0] = {1.0, 0.0};
+  EXPECT_THROW(Solver(g, kModel, Scheme::spectral, 0.05), std::invalid_argument);
+  Solver s(g, Model{0.5, 1.0}, Scheme::explicit_euler, 0.05);
+  for (int k = 0; k < 4000; ++k) s.step();
+  EXPECT_EQ(s.field().front(), 1.0);
+  EXPECT_EQ(s.field().back(), 0.0);
+  // The hcp wall's phase entered (a = 1/2: no bulk drive) and the profile falls monotonically.
+  EXPECT_GT(s.field()[5], 0.5);
+  for (int i = 1; i < 40; ++i) EXPECT_LE(s.field()[i], s.field()[i - 1]) << i;
+}
+
 // A 3D sphere of radius 6 = 4.2 l: ξ = 1/2 at its surface on the axis, the tanh profile across it.
 TEST(PhasefieldInitial, SphereHasTanhProfile) {
   const Grid g{3, {32, 32, 32}, 0.5};
