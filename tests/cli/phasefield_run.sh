@@ -55,4 +55,26 @@ from shockfield_plot.vtk_arrays import read_vtk_arrays
 xi = read_vtk_arrays(sys.argv[1])["xi"].reshape(40, 48)
 assert (xi[:, 0] == 1.0).all() and (xi[:, -1] == 0.0).all(), (xi[:, 0], xi[:, -1])
 PYEOF
+# A field file as the initial condition: the last frame of the straight run continues the growth
+# (the restarted run's first frame holds the file's values); a file of another grid, a NaN node
+# and a missing file are refused naming the file.
+last="$WORK/straight/fields/xi_3.vti"
+from_file="$(sed -e '/^\[\[initial/,/^$/d' "$case_file")
+[initial]
+file = \"$last\"
+array = \"xi\""
+echo "$from_file" > "$WORK/from_file.toml"
+"$SF" run "$WORK/from_file.toml" --output "$WORK/from_file" -q > /dev/null
+/usr/bin/python3 - "$last" "$WORK/from_file/fields/xi_0.vti" "$ROOT/python" <<'PYEOF' || fail "the run did not start from the field file"
+import sys
+import numpy as np
+sys.path.insert(0, sys.argv[3])
+from shockfield_plot.vtk_arrays import read_vtk_arrays
+a, b = (read_vtk_arrays(f)["xi"] for f in sys.argv[1:3])
+assert np.array_equal(a, b), np.abs(a - b).max()
+PYEOF
+expect_error "${from_file/nodes = \[48, 40\]/nodes = [48, 41]}" "xi_3.vti" "48 x 40 x 1 nodes, the case's grid has 48 x 41 x 1"
+printf '0,0.5\nnan,1\n' > "$WORK/nan.csv"
+expect_error "${from_file/$last/$WORK/nan.csv}" "nan.csv"
+expect_error "${from_file/$last/$WORK/missing.vti}" "initial.file"
 echo "phasefield: all checks passed"

@@ -97,9 +97,16 @@ PhasefieldCase read_phasefield_case(const Config& root) {
   c.end_time = time.get_double("end_time", Range::positive());
   c.steps = static_cast<long long>(std::ceil(c.end_time / c.dt - 1e-9));
   const auto initial = root.optional_table("initial");
-  if (initial) c.domains = read_domains(*initial, c.grid);
-  if (c.domains.empty()) root.fail("initial", "at least one [[initial.sphere]], [[initial.ellipsoid]], "
-                                              "[[initial.slab]] or [initial.random]");
+  if (initial) {
+    c.domains = read_domains(*initial, c.grid);
+    if (initial->has("file")) {
+      c.field_file = {initial->get_input_file("file"), initial->get_string_or("array", "")};
+      read_field_file(c.field_file, c.grid);  // validated now; read again when the run starts
+    }
+  }
+  if (c.domains.empty() && c.field_file.path.empty())
+    root.fail("initial", "a field file ([initial] file) or at least one [[initial.sphere]], [[initial.ellipsoid]], "
+                         "[[initial.slab]] or [initial.random]");
   c.output = read_output_intervals(root.optional_table("output"), c.end_time, {.profiles = false, .fields = true, .vtk = true});
   return c;
 }

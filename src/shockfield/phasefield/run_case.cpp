@@ -60,7 +60,7 @@ class PhasefieldMethod final : public Method {
   // The grid's arrays are allocated here, at the start, not by the factory (--check).
   void start(RunContext& run) override {
     solver_.allocate();
-    solver_.field() = initial_field(c_.grid, c_.model, c_.domains);
+    solver_.field() = initial_field(c_.grid, c_.model, c_.domains, c_.field_file);
     solver_.hold_walls();
     open(run, false);
     write_due();
