@@ -12,6 +12,7 @@
 #include "shockfield/io/vtk_xml.hpp"
 #include "shockfield/phasefield/case_file.hpp"
 #include "shockfield/phasefield/checkpoint.hpp"
+#include "shockfield/phasefield/domain_measures.hpp"
 
 namespace shockfield::phasefield {
 
@@ -128,7 +129,9 @@ class PhasefieldMethod final : public Method {
     run_ = &run;
     const double keep_step = static_cast<double>(solver_.steps()), keep_time = solver_.time();
     series_ = io::CsvWriter(run.folder / "series.csv",
-                            {"step", "time", "volume_fraction", "free_energy", "hcp_volume", "equivalent_radius"},
+                            {"step", "time", "volume_fraction", "free_energy", "hcp_volume", "equivalent_radius",
+                             "surface", "mean_curvature", "euler", "axis_a", "axis_b", "axis_c", "long_axis_x",
+                             "long_axis_y", "long_axis_z", "center_x", "center_y", "center_z"},
                             resumed ? &keep_step : nullptr);
     fs::create_directories(run.folder / "fields");
     pvd_ = io::PvdSeries(run.folder / "fields.pvd", resumed ? &keep_time : nullptr);
@@ -144,8 +147,12 @@ class PhasefieldMethod final : public Method {
   }
   void write_row() {
     const FieldMeasures m = solver_.measures();
+    const DomainMeasures shape = domain_measures(c_.grid, solver_.field());
     series_.row({static_cast<double>(solver_.steps()), solver_.time(), m.fraction_above_half, m.free_energy,
-                 m.integral, equivalent_radius(m.integral, c_.grid.dim)});
+                 m.integral, equivalent_radius(m.integral, c_.grid.dim), shape.surface, shape.mean_curvature,
+                 static_cast<double>(shape.euler), shape.semi_axes[0], shape.semi_axes[1], shape.semi_axes[2],
+                 shape.long_axis[0], shape.long_axis[1], shape.long_axis[2], shape.center[0], shape.center[1],
+                 shape.center[2]});
   }
   void write_frame(std::int64_t k) {
     io::VtkImage image;
