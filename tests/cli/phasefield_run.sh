@@ -22,6 +22,11 @@ grep -q "critical_radius = 7.07" "$WORK/straight/config.resolved.toml" || fail "
 awk -F, 'NR > 2 && $4 > prev + 1e-12 * (prev < 0 ? -prev : prev) { bad = 1 } NR > 1 { prev = $4 } END { exit bad }' \
   "$WORK/straight/series.csv" || fail "free energy increased in series.csv"
 
+# The domain measures in series.csv, and the plot of a run.
+head -1 "$WORK/straight/series.csv" | grep -q ",surface,mean_curvature,euler,axis_a,axis_b,axis_c," || fail "no domain measures in series.csv"
+"$SF" plot phasefield "$WORK/straight" > /dev/null
+[ -s "$WORK/straight/phasefield.png" ] || fail "shockfield plot phasefield wrote no PNG"
+
 # Stop and resume: cli.stop_resume.phasefield (tests/cli/stop_resume.sh).
 
 good=$(sed -e '/^#/d' "$case_file")

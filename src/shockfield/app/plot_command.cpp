@@ -1,5 +1,5 @@
 // `shockfield plot KIND RUN_DIR`: PNG figures of a run folder, drawn by the Python helpers in
-// shockfield_plot (md_plots.py, mpm_plots.py, macroparticle_plots.py), found and run as
+// shockfield_plot (md_plots.py, mpm_plots.py, macroparticle_plots.py, phasefield_plots.py), found and run as
 // app/python_helpers.hpp says.
 #include <fmt/format.h>
 
@@ -23,7 +23,10 @@ struct PlotOptions {
 void plot(const PlotOptions& o) {
   const bool md = o.kind == "profiles" || o.kind == "thermo" || o.kind == "hugoniot";
   if (!std::filesystem::is_directory(o.run)) throw InputError(fmt::format("'{}' is not a run folder", o.run));
-  const char* helper = md ? "md_plots" : o.kind == "stress-strain" ? "macroparticle_plots" : "mpm_plots";
+  const char* helper = md                       ? "md_plots"
+                       : o.kind == "stress-strain" ? "macroparticle_plots"
+                       : o.kind == "phasefield"    ? "phasefield_plots"
+                                                   : "mpm_plots";
   std::string args = fmt::format("-m shockfield_plot.{} {} {}", helper, o.kind, shell_quote(o.run));
   if (o.kind == "profiles") args += " --axis " + o.axis;
   if (!o.out.empty()) args += " --out " + shell_quote(o.out);
@@ -49,10 +52,12 @@ void add_plot_command(CLI::App& app) {
       "  cavity    MPM: particles around the cavity by temperature, cavity area and collapsibility\n"
       "            against time -> RUN/cavity.png\n"
       "  stress-strain  macroparticle: stress against strain of a loaded rod, from thermo.csv\n"
-      "            -> RUN/stress-strain.png");
+      "            -> RUN/stress-strain.png\n"
+      "  phasefield  phase field: equivalent radius, principal semi-axes and growth speed against\n"
+      "            time (series.csv), and the middle slice of the last frame -> RUN/phasefield.png");
   cmd->add_option("kind", o->kind, "What to plot")
       ->required()
-      ->check(CLI::IsMember({"profiles", "thermo", "hugoniot", "porous", "cavity", "stress-strain"}));
+      ->check(CLI::IsMember({"profiles", "thermo", "hugoniot", "porous", "cavity", "stress-strain", "phasefield"}));
   cmd->add_option("run", o->run, "Run folder")->required();
   cmd->add_option("-o,--out", o->out, "PNG file (default RUN/<kind>.png)");
   cmd->add_option("--axis", o->axis, "Shock axis of MD profiles (default z)")->check(CLI::IsMember({"x", "y", "z"}));
