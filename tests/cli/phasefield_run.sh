@@ -30,7 +30,7 @@ head -1 "$WORK/straight/series.csv" | grep -q ",surface,mean_curvature,euler,axi
 # Stop and resume: cli.stop_resume.phasefield (tests/cli/stop_resume.sh).
 
 good=$(sed -e '/^#/d' "$case_file")
-expect_error "${good/scheme = \"spectral\"/scheme = \"explicit\"}" "time.dt" "at most 0.9 dx^2/(2 dim D)"
+expect_error "${good/scheme = \"spectral\"/scheme = \"explicit\"}" "time.dt" "at most 0.9 dx^2/(2 sum D_d)"
 expect_error "${good/dt = 0.1/dt = 4.0}" "time.dt" "at most 1/max(a, 1 - a) = 1.66667"
 expect_error "${good/D = 1.0/D = -1.0}" "model.D"
 expect_error "${good/D = 1.0/D = nan}" "model.D"

@@ -75,16 +75,20 @@ PhasefieldCase read_phasefield_case(const Config& root) {
   const Config model = root.table("model");
   c.model.a = model.get_double("a", Range::closed(0.0, 1.0));
   c.model.D = model.get_double("D", Range::positive());
+  if (model.has("anisotropy")) {
+    const auto w = model.get_doubles("anisotropy", static_cast<std::size_t>(c.grid.dim), Range::closed(1e-3, 1e3));
+    for (int d = 0; d < c.grid.dim; ++d) c.model.anisotropy[d] = w[d];
+  }
   const Config time = root.table("time");
   c.scheme = scheme_from_name(time.get_choice_or("scheme", {"explicit", "spectral"}, "spectral"));
   if (c.scheme == Scheme::spectral && !c.grid.all_periodic())
     time.fail("scheme", "\"explicit\": the spectral scheme needs periodic boundaries on every axis, and "
                         "[grid.boundary] sets a wall");
-  const double limit = c.grid.explicit_limit(c.model.D);
+  const double limit = explicit_step_limit(c.grid, c.model);
   c.dt = time.get_double("dt", Range::positive());
   // Forward Euler is unstable beyond dx²/(2 dim D); 0.9 of it keeps a margin for the reaction term.
   if (c.scheme == Scheme::explicit_euler && c.dt > 0.9 * limit)
-    time.fail("dt", fmt::format("at most 0.9 dx^2/(2 dim D) = {:.6g} for scheme = \"explicit\" (the stability limit "
+    time.fail("dt", fmt::format("at most 0.9 dx^2/(2 sum D_d) = {:.6g} for scheme = \"explicit\" (the stability limit "
                                 "is {:.6g}); use a smaller dt or scheme = \"spectral\"",
                                 0.9 * limit, limit));
   // The reaction term is explicit in both schemes: about a well ξ* the update is

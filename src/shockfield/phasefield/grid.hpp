@@ -45,8 +45,6 @@ struct Grid {
     if (periodic(d)) return j < 0 ? n[d] - 1 : 0;
     return i - step;
   }
-  /// Largest stable explicit step of the diffusion part, dx²/(2 dim D).
-  double explicit_limit(double D) const { return dx * dx / (2.0 * dim * D); }
 };
 
 }  // namespace shockfield::phasefield

@@ -30,7 +30,7 @@ double equivalent_radius(double volume, int dim) {
 void derive(const Config& root, const PhasefieldCase& c) {
   root.derive("nodes", static_cast<long long>(c.grid.size()));
   root.derive("steps", c.steps);
-  root.derive("explicit_time_step_limit", c.grid.explicit_limit(c.model.D));
+  root.derive("explicit_time_step_limit", explicit_step_limit(c.grid, c.model));
   root.derive("reaction_time_step_limit", reaction_step_limit(c.model));
   root.derive("front_speed_c0", c.model.front_speed());
   root.derive("front_length", c.model.front_length());
@@ -137,7 +137,7 @@ class PhasefieldMethod final : public Method {
     pvd_ = io::PvdSeries(run.folder / "fields.pvd", resumed ? &keep_time : nullptr);
     if (!finished())
       run.log.info("running to t = {} in {} steps of dt = {} ({} scheme; explicit limit {:.4g}; c0 = {:.6g})",
-                   c_.end_time, c_.steps, c_.dt, scheme_name(c_.scheme), c_.grid.explicit_limit(c_.model.D),
+                   c_.end_time, c_.steps, c_.dt, scheme_name(c_.scheme), explicit_step_limit(c_.grid, c_.model),
                    c_.model.front_speed());
   }
   void write_due() {

@@ -10,6 +10,12 @@
 
 namespace shockfield::phasefield {
 
+double explicit_step_limit(const Grid& grid, const Model& model) {
+  double sum = 0.0;
+  for (int d = 0; d < grid.dim; ++d) sum += model.D_along(d);
+  return grid.dx * grid.dx / (2.0 * sum);
+}
+
 Scheme scheme_from_name(const std::string& name) {
   if (name == "explicit") return Scheme::explicit_euler;
   if (name == "spectral") return Scheme::spectral;
@@ -18,13 +24,13 @@ Scheme scheme_from_name(const std::string& name) {
 
 std::string scheme_name(Scheme scheme) { return scheme == Scheme::spectral ? "spectral" : "explicit"; }
 
-// FFTW plans for the grid and the implicit factor 1/(1 + dt D |k|²) per complex mode.
+// FFTW plans for the grid and the implicit factor 1/(1 + dt Σ_d D_d k_d²) per complex mode.
 struct Solver::Fourier {
   std::vector<std::complex<double>> spectrum;
   std::vector<double> factor;
   fftw_plan forward = nullptr, backward = nullptr;
 
-  Fourier(const Grid& g, double D, double dt, std::vector<double>& real) {
+  Fourier(const Grid& g, const Model& model, double dt, std::vector<double>& real) {
     const int hx = g.n[0] / 2 + 1;
     spectrum.resize(static_cast<std::size_t>(hx) * g.n[1] * g.n[2]);
     factor.resize(spectrum.size());
@@ -37,7 +43,8 @@ struct Solver::Fourier {
         for (int i = 0; i < hx; ++i) {
           const double kx = 2.0 * std::numbers::pi * i / g.length(0), ky = wave(j, 1), kz = wave(k, 2);
           factor[i + static_cast<std::size_t>(hx) * (j + static_cast<std::size_t>(g.n[1]) * k)] =
-              1.0 / (1.0 + dt * D * (kx * kx + ky * ky + kz * kz)) / static_cast<double>(g.size());
+              1.0 / (1.0 + dt * (model.D_along(0) * kx * kx + model.D_along(1) * ky * ky + model.D_along(2) * kz * kz)) /
+              static_cast<double>(g.size());
         }
     // FFTW's row-major dimension list: slowest first. FFTW_UNALIGNED: executed on other arrays.
     int dims[3];
@@ -55,13 +62,16 @@ struct Solver::Fourier {
 Solver::Solver(const Grid& grid, const Model& model, Scheme scheme, double dt, bool allocate_now)
     : grid_(grid), model_(model), scheme_(scheme), dt_(dt) {
   if (!(model.D > 0.0)) throw std::invalid_argument(fmt::format("D = {} must be positive", model.D));
+  for (int d = 0; d < 3; ++d)
+    if (!(model.anisotropy[d] > 0.0))
+      throw std::invalid_argument(fmt::format("anisotropy {} = {} must be positive", d, model.anisotropy[d]));
   if (!(dt > 0.0)) throw std::invalid_argument(fmt::format("dt = {} must be positive", dt));
   if (scheme == Scheme::spectral && !grid.all_periodic())
     throw std::invalid_argument("the spectral scheme needs periodic boundaries on every axis; use the explicit scheme "
                                 "with walls");
-  if (scheme == Scheme::explicit_euler && dt > grid.explicit_limit(model.D))
-    throw std::invalid_argument(fmt::format("dt = {} exceeds the explicit stability limit dx^2/(2 dim D) = {}", dt,
-                                            grid.explicit_limit(model.D)));
+  if (scheme == Scheme::explicit_euler && dt > explicit_step_limit(grid, model))
+    throw std::invalid_argument(fmt::format("dt = {} exceeds the explicit stability limit dx^2/(2 sum D_d) = {}", dt,
+                                            explicit_step_limit(grid, model)));
   // The explicit Laplacian needs 3 nodes per used dimension.
   for (int d = 0; d < grid.dim; ++d)
     if (grid.n[d] < 3) throw std::invalid_argument("every used dimension needs at least 3 nodes");
@@ -72,7 +82,7 @@ void Solver::allocate() {
   if (xi_.size() == grid_.size()) return;
   xi_.assign(grid_.size(), 0.0);
   work_.assign(grid_.size(), 0.0);
-  if (scheme_ == Scheme::spectral) fourier_ = std::make_unique<Fourier>(grid_, model_.D, dt_, work_);
+  if (scheme_ == Scheme::spectral) fourier_ = std::make_unique<Fourier>(grid_, model_, dt_, work_);
 }
 
 double Solver::bytes(const Grid& grid, Scheme scheme) {
@@ -121,7 +131,8 @@ void Solver::add_source() {
 void Solver::step_explicit() {
   const auto [nx, ny, nz] = grid_.n;
   const int dim = grid_.dim;
-  const double r = model_.D / (grid_.dx * grid_.dx), dt = dt_;
+  const double inv_dx2 = 1.0 / (grid_.dx * grid_.dx), dt = dt_;
+  const double rx = model_.D_along(0) * inv_dx2, ry = model_.D_along(1) * inv_dx2, rz = model_.D_along(2) * inv_dx2;
   const double* x = xi_.data();
   double* out = work_.data();
   const std::size_t sy = nx, sz = static_cast<std::size_t>(nx) * ny;
@@ -135,10 +146,10 @@ void Solver::step_explicit() {
       for (int i = 0; i < nx; ++i) {
         const int im = g.neighbour(0, i, -1), ip = g.neighbour(0, i, 1);
         const double c = x[row + i];
-        double lap = x[row + im] + x[row + ip] - 2.0 * c;
-        if (dim > 1) lap += x[sy * jm + sz * k + i] + x[sy * jp + sz * k + i] - 2.0 * c;
-        if (dim > 2) lap += x[sy * j + sz * km + i] + x[sy * j + sz * kp + i] - 2.0 * c;
-        out[row + i] = c + dt * (r * lap - model_.df(c));
+        double div = rx * (x[row + im] + x[row + ip] - 2.0 * c);  // ∇·(D∇ξ), D_d per axis
+        if (dim > 1) div += ry * (x[sy * jm + sz * k + i] + x[sy * jp + sz * k + i] - 2.0 * c);
+        if (dim > 2) div += rz * (x[sy * j + sz * km + i] + x[sy * j + sz * kp + i] - 2.0 * c);
+        out[row + i] = c + dt * (div - model_.df(c));
       }
     }
   add_source();
@@ -178,10 +189,10 @@ FieldMeasures Solver::measures() const {
     double e = 0.0, s = 0.0, h = 0.0;
     for (int i = 0; i < nx; ++i) {
       const double c = xi_[grid_.index(i, j, k)], w = row_weight * weight(0, i);
-      double g2 = forward(0, i) ? std::pow(xi_[grid_.index(g.neighbour(0, i, 1), j, k)] - c, 2) : 0.0;
-      if (dim > 1 && forward(1, j)) g2 += std::pow(xi_[grid_.index(i, jp, k)] - c, 2);
-      if (dim > 2 && forward(2, k)) g2 += std::pow(xi_[grid_.index(i, j, kp)] - c, 2);
-      e += w * (model_.f(c) + 0.5 * model_.D * g2 * inv_dx2);
+      double g2 = forward(0, i) ? model_.D_along(0) * std::pow(xi_[grid_.index(g.neighbour(0, i, 1), j, k)] - c, 2) : 0.0;
+      if (dim > 1 && forward(1, j)) g2 += model_.D_along(1) * std::pow(xi_[grid_.index(i, jp, k)] - c, 2);
+      if (dim > 2 && forward(2, k)) g2 += model_.D_along(2) * std::pow(xi_[grid_.index(i, j, kp)] - c, 2);
+      e += w * (model_.f(c) + 0.5 * g2 * inv_dx2);
       s += w * c;
       h += c > 0.5 ? w : 0.0;
     }

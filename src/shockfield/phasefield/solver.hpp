@@ -22,6 +22,9 @@
 namespace shockfield::phasefield {
 
 enum class Scheme { explicit_euler, spectral };
+
+/// Largest stable explicit step of the diffusion part, dx²/(2 Σ_d D_d) (dx²/(2 dim D) isotropic).
+double explicit_step_limit(const Grid& grid, const Model& model);
 Scheme scheme_from_name(const std::string& name);  ///< "explicit" or "spectral"
 std::string scheme_name(Scheme scheme);
 

@@ -24,7 +24,7 @@ std::vector<double> nuclei(const Grid& g = kGrid) {
 // with a round-off allowance of 1e-12 relative.
 TEST(PhasefieldSolver, FreeEnergyNonIncreasing) {
   for (const Scheme scheme : {Scheme::explicit_euler, Scheme::spectral}) {
-    Solver s(kGrid, kModel, scheme, 0.5 * kGrid.explicit_limit(kModel.D));
+    Solver s(kGrid, kModel, scheme, 0.5 * explicit_step_limit(kGrid, kModel));
     s.field() = nuclei();
     double F = s.measures().free_energy;
     for (int k = 0; k < 400; ++k) {
@@ -41,7 +41,7 @@ TEST(PhasefieldSolver, FreeEnergyNonIncreasing) {
 // and the hcp area within 0.5 %.
 TEST(PhasefieldSolver, ExplicitAndSpectralAgree) {
   const Grid g{2, {128, 128, 1}, 0.25};
-  const double dt = 0.4 * g.explicit_limit(kModel.D);
+  const double dt = 0.4 * explicit_step_limit(g, kModel);
   Solver e(g, kModel, Scheme::explicit_euler, dt), f(g, kModel, Scheme::spectral, dt);
   e.field() = f.field() = initial_field(g, kModel, random_domains(g, {6, 3.0, 3}));
   while (e.time() < 20.0) e.step(), f.step();
@@ -55,7 +55,7 @@ TEST(PhasefieldSolver, ExplicitAndSpectralAgree) {
 std::vector<double> run_threads(Scheme scheme, int threads) {
   omp_set_num_threads(threads);
   const Grid g{3, {24, 20, 16}, 0.5};
-  Solver s(g, kModel, scheme, 0.5 * g.explicit_limit(kModel.D));
+  Solver s(g, kModel, scheme, 0.5 * explicit_step_limit(g, kModel));
   s.field() = nuclei(g);
   for (int k = 0; k < 30; ++k) s.step();
   std::vector<double> out = s.field();
@@ -71,7 +71,7 @@ TEST(PhasefieldSolver, OneAndTwoThreadsBitwiseEqual) {
 }
 
 TEST(PhasefieldSolver, RefusesBadParameters) {
-  const double limit = kGrid.explicit_limit(kModel.D);
+  const double limit = explicit_step_limit(kGrid, kModel);
   EXPECT_THROW(Solver(kGrid, kModel, Scheme::explicit_euler, 1.01 * limit), std::invalid_argument);
   EXPECT_NO_THROW(Solver(kGrid, kModel, Scheme::spectral, 10 * limit));
   EXPECT_THROW(Solver(kGrid, Model{0.4, -1.0}, Scheme::spectral, 0.1), std::invalid_argument);
