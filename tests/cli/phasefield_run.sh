@@ -30,7 +30,7 @@ head -1 "$WORK/straight/series.csv" | grep -q ",surface,mean_curvature,euler,axi
 # Stop and resume: cli.stop_resume.phasefield (tests/cli/stop_resume.sh).
 
 good=$(sed -e '/^#/d' "$case_file")
-expect_error "${good/scheme = \"spectral\"/scheme = \"explicit\"}" "time.dt" "at most 0.9 dx^2/(2 sum D_d)"
+expect_error "${good/scheme = \"spectral\"/scheme = \"explicit\"}" "time.dt" "at most 0.9 dx^2/(2 sum D_d) ="
 expect_error "${good/dt = 0.1/dt = 4.0}" "time.dt" "at most 1/max(a, 1 - a) = 1.66667"
 expect_error "${good/D = 1.0/D = -1.0}" "model.D"
 expect_error "${good/D = 1.0/D = nan}" "model.D"
@@ -82,4 +82,33 @@ expect_error "${from_file/nodes = \[48, 40\]/nodes = [48, 41]}" "xi_3.vti" "48 x
 printf '0,0.5\nnan,1\n' > "$WORK/nan.csv"
 expect_error "${from_file/$last/$WORK/nan.csv}" "nan.csv"
 expect_error "${from_file/$last/$WORK/missing.vti}" "initial.file"
+# A pressure-dependent D ([model.pressure]): a uniform pressure that doubles D runs as D = 2
+# from the same field (series equal to 1e-9 relative); the spectral scheme, a pressure that makes D negative and a
+# step beyond the lowered explicit limit are refused.
+/usr/bin/python3 -c "
+print('# spacing = 0.5')
+for j in range(40): print(','.join(['3e9'] * 48))" > "$WORK/pressure.csv"
+# Both from the same field (the initial domains' profile width depends on D).
+explicit="${from_file/scheme = \"spectral\"/scheme = \"explicit\"}"
+explicit="${explicit/dt = 0.1/dt = 0.02}"
+explicit="${explicit/$last/$WORK/straight/fields/xi_0.vti}"
+pressured="${explicit/D = 1.0/D = 1.0
+
+[model.pressure]
+file = \"$WORK/pressure.csv\"
+reference = 1e9
+slope = 5e-10}"
+echo "$pressured" > "$WORK/pressured.toml"
+echo "${explicit/D = 1.0/D = 2.0}" > "$WORK/doubled.toml"
+"$SF" run "$WORK/pressured.toml" --output "$WORK/pressured" -q > /dev/null
+"$SF" run "$WORK/doubled.toml" --output "$WORK/doubled" -q > /dev/null
+/usr/bin/python3 - "$WORK/pressured/series.csv" "$WORK/doubled/series.csv" <<'PYEOF' || fail "D(p) = 2D does not run as D = 2"
+import sys
+import numpy as np
+a, b = (np.genfromtxt(f, delimiter=",", skip_header=1) for f in sys.argv[1:3])
+assert a.shape == b.shape and np.allclose(a, b, rtol=1e-9, atol=1e-12), np.abs(a - b).max()
+PYEOF
+expect_error "${pressured/scheme = \"explicit\"/scheme = \"spectral\"}" "time.scheme" "pressure-dependent D"
+expect_error "${pressured/slope = 5e-10/slope = -1e-9}" "pressure.csv" "must be positive"
+expect_error "${pressured/dt = 0.02/dt = 0.05}" "time.dt" "max D(p)/D"
 echo "phasefield: all checks passed"

@@ -84,13 +84,25 @@ PhasefieldCase read_phasefield_case(const Config& root) {
   if (c.scheme == Scheme::spectral && !c.grid.all_periodic())
     time.fail("scheme", "\"explicit\": the spectral scheme needs periodic boundaries on every axis, and "
                         "[grid.boundary] sets a wall");
-  const double limit = explicit_step_limit(c.grid, c.model);
+  double largest_scale = 1.0;
+  if (const auto p = model.optional_table("pressure")) {
+    c.pressure = {{p->get_input_file("file"), p->get_string_or("array", "")},
+                  p->get_double("reference"),
+                  p->get_double("slope")};
+    if (c.scheme != Scheme::explicit_euler)
+      time.fail("scheme", "\"explicit\": a pressure-dependent D ([model.pressure]) varies in space, which the "
+                          "spectral scheme's constant implicit factor cannot hold");
+    const std::vector<double> scale = pressure_scale(c.pressure, c.grid);  // validated now, again at the start
+    largest_scale = *std::max_element(scale.begin(), scale.end());
+  }
+  const double limit = explicit_step_limit(c.grid, c.model) / largest_scale;
   c.dt = time.get_double("dt", Range::positive());
   // Forward Euler is unstable beyond dx²/(2 dim D); 0.9 of it keeps a margin for the reaction term.
   if (c.scheme == Scheme::explicit_euler && c.dt > 0.9 * limit)
-    time.fail("dt", fmt::format("at most 0.9 dx^2/(2 sum D_d) = {:.6g} for scheme = \"explicit\" (the stability limit "
-                                "is {:.6g}); use a smaller dt or scheme = \"spectral\"",
-                                0.9 * limit, limit));
+    time.fail("dt", fmt::format("at most 0.9 dx^2/(2 sum D_d{}) = {:.6g} for scheme = \"explicit\" (the stability limit "
+                                "is {:.6g}); use a smaller dt{}",
+                                c.pressure.file.path.empty() ? "" : " max D(p)/D", 0.9 * limit, limit,
+                                c.pressure.file.path.empty() ? " or scheme = \"spectral\"" : ""));
   // The reaction term is explicit in both schemes: about a well ξ* the update is
   // δξ ← (1 − dt f″(ξ*)) δξ, f″(0) = a, f″(1) = 1 − a, unstable (oscillating) beyond 2/f″. Half of
   // that keeps the wells monotone (1 − dt f″ ≥ 0): dt ≤ 1/max(a, 1 − a).

@@ -70,6 +70,19 @@ std::vector<double> read_field_file(const FieldFile& file, const Grid& grid) {
   return f.values;
 }
 
+std::vector<double> pressure_scale(const PressureDependence& pressure, const Grid& grid) {
+  std::vector<double> scale = read_field_file(pressure.file, grid);
+  for (std::size_t p = 0; p < scale.size(); ++p) {
+    const double value = 1.0 + pressure.slope * (scale[p] - pressure.reference);
+    if (!(value > 0.0))
+      throw InputError(fmt::format("{}: at node {} (x fastest) the pressure {} gives D(p)/D = 1 + slope (p - reference) "
+                                   "= {}; it must be positive",
+                                   pressure.file.path.string(), p, scale[p], value));
+    scale[p] = value;
+  }
+  return scale;
+}
+
 std::vector<double> initial_field(const Grid& grid, const Model& model, const std::vector<Domain>& domains,
                                   const FieldFile& file) {
   std::vector<double> xi = file.path.empty() ? std::vector<double>(grid.size(), 0.0) : read_field_file(file, grid);

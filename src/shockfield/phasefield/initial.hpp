@@ -47,6 +47,19 @@ struct FieldFile {
 /// (node counts, spacing, a non-finite value and its node).
 std::vector<double> read_field_file(const FieldFile& file, const Grid& grid);
 
+/// A gradient coefficient that depends on the local pressure (Xu et al. 2015 §4.4.3: "the
+/// parameter D is a function of pressure"), to first order about a reference:
+/// D(x) = D [1 + slope (p(x) − reference)], p read from a field file as above.
+struct PressureDependence {
+  FieldFile file;  ///< empty path: D does not depend on pressure
+  double reference = 0.0;
+  double slope = 0.0;  ///< per unit of the file's pressure
+};
+
+/// The scale 1 + slope (p − reference) on every node; InputError naming the file and the node
+/// where it is not positive.
+std::vector<double> pressure_scale(const PressureDependence& pressure, const Grid& grid);
+
 /// ξ on every node: the field file's values (0, bcc, without one), and where a domain lies the
 /// larger of that and the domain's profile.
 std::vector<double> initial_field(const Grid& grid, const Model& model, const std::vector<Domain>& domains,

@@ -60,14 +60,14 @@ class PhasefieldMethod final : public Method {
 
   // The grid's arrays are allocated here, at the start, not by the factory (--check).
   void start(RunContext& run) override {
-    solver_.allocate();
+    allocate();
     solver_.field() = initial_field(c_.grid, c_.model, c_.domains, c_.field_file);
     solver_.hold_walls();
     open(run, false);
     write_due();
   }
   void resume(RunContext& run) override {
-    solver_.allocate();
+    allocate();
     counters_ = read_checkpoint(run.checkpoint, solver_);
     open(run, true);
   }
@@ -125,6 +125,11 @@ class PhasefieldMethod final : public Method {
   }
 
  private:
+  // The grid's arrays, and the pressure-dependent D read again from its file.
+  void allocate() {
+    solver_.allocate();
+    if (!c_.pressure.file.path.empty()) solver_.set_diffusivity_scale(pressure_scale(c_.pressure, c_.grid));
+  }
   void open(RunContext& run, bool resumed) {
     run_ = &run;
     const double keep_step = static_cast<double>(solver_.steps()), keep_time = solver_.time();

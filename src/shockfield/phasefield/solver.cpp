@@ -3,6 +3,7 @@
 #include <fftw3.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -118,6 +119,25 @@ void Solver::hold_walls() {
   }
 }
 
+void Solver::set_diffusivity_scale(std::vector<double> scale) {
+  if (scheme_ != Scheme::explicit_euler)
+    throw std::invalid_argument("a gradient coefficient varying in space needs the explicit scheme");
+  if (scale.size() != grid_.size())
+    throw std::invalid_argument(fmt::format("{} scale values for {} nodes", scale.size(), grid_.size()));
+  double largest = 0.0;
+  for (std::size_t p = 0; p < scale.size(); ++p) {
+    if (!(scale[p] > 0.0 && std::isfinite(scale[p])))
+      throw std::invalid_argument(fmt::format("the gradient coefficient's scale is {} at node {} (x fastest); it must "
+                                              "be positive", scale[p], p));
+    largest = std::max(largest, scale[p]);
+  }
+  const double limit = explicit_step_limit(grid_, model_) / largest;
+  if (dt_ > limit)
+    throw std::invalid_argument(fmt::format("dt = {} exceeds the explicit stability limit dx^2/(2 sum D_d max s) = {} "
+                                            "(largest scale {})", dt_, limit, largest));
+  scale_ = std::move(scale);
+}
+
 void Solver::add_source() {
   if (!source_) return;
   const auto [nx, ny, nz] = grid_.n;
@@ -134,9 +154,16 @@ void Solver::step_explicit() {
   const double inv_dx2 = 1.0 / (grid_.dx * grid_.dx), dt = dt_;
   const double rx = model_.D_along(0) * inv_dx2, ry = model_.D_along(1) * inv_dx2, rz = model_.D_along(2) * inv_dx2;
   const double* x = xi_.data();
+  const double* s = scale_.empty() ? nullptr : scale_.data();
   double* out = work_.data();
   const std::size_t sy = nx, sz = static_cast<std::size_t>(nx) * ny;
   const Grid& g = grid_;
+  // The flux through the face between nodes p and q: (ξ_q − ξ_p) times D on the face, the mean of
+  // the two nodes' scales when D varies in space.
+  const auto flux = [x, s](std::size_t p, std::size_t q) {
+    const double difference = x[q] - x[p];
+    return s ? 0.5 * (s[p] + s[q]) * difference : difference;
+  };
 #pragma omp parallel for collapse(2) schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j) {
@@ -145,11 +172,12 @@ void Solver::step_explicit() {
       const std::size_t row = sy * j + sz * k;
       for (int i = 0; i < nx; ++i) {
         const int im = g.neighbour(0, i, -1), ip = g.neighbour(0, i, 1);
-        const double c = x[row + i];
-        double div = rx * (x[row + im] + x[row + ip] - 2.0 * c);  // ∇·(D∇ξ), D_d per axis
-        if (dim > 1) div += ry * (x[sy * jm + sz * k + i] + x[sy * jp + sz * k + i] - 2.0 * c);
-        if (dim > 2) div += rz * (x[sy * j + sz * km + i] + x[sy * j + sz * kp + i] - 2.0 * c);
-        out[row + i] = c + dt * (div - model_.df(c));
+        const std::size_t p = row + i;
+        const double c = x[p];
+        double div = rx * (flux(p, row + im) + flux(p, row + ip));  // ∇·(D∇ξ), D_d per axis
+        if (dim > 1) div += ry * (flux(p, sy * jm + sz * k + i) + flux(p, sy * jp + sz * k + i));
+        if (dim > 2) div += rz * (flux(p, sy * j + sz * km + i) + flux(p, sy * j + sz * kp + i));
+        out[p] = c + dt * (div - model_.df(c));
       }
     }
   add_source();
@@ -188,10 +216,15 @@ FieldMeasures Solver::measures() const {
     const double row_weight = (dim > 1 ? weight(1, j) : 1.0) * (dim > 2 ? weight(2, k) : 1.0);
     double e = 0.0, s = 0.0, h = 0.0;
     for (int i = 0; i < nx; ++i) {
-      const double c = xi_[grid_.index(i, j, k)], w = row_weight * weight(0, i);
-      double g2 = forward(0, i) ? model_.D_along(0) * std::pow(xi_[grid_.index(g.neighbour(0, i, 1), j, k)] - c, 2) : 0.0;
-      if (dim > 1 && forward(1, j)) g2 += model_.D_along(1) * std::pow(xi_[grid_.index(i, jp, k)] - c, 2);
-      if (dim > 2 && forward(2, k)) g2 += model_.D_along(2) * std::pow(xi_[grid_.index(i, j, kp)] - c, 2);
+      const std::size_t p = grid_.index(i, j, k);
+      const double c = xi_[p], w = row_weight * weight(0, i);
+      // D_d |∂_d ξ|² on the forward face (D averaged over its two nodes when it varies).
+      const auto face = [&](int d, std::size_t q) {
+        return model_.D_along(d) * (scale_.empty() ? 1.0 : 0.5 * (scale_[p] + scale_[q])) * std::pow(xi_[q] - c, 2);
+      };
+      double g2 = forward(0, i) ? face(0, grid_.index(g.neighbour(0, i, 1), j, k)) : 0.0;
+      if (dim > 1 && forward(1, j)) g2 += face(1, grid_.index(i, jp, k));
+      if (dim > 2 && forward(2, k)) g2 += face(2, grid_.index(i, j, kp));
       e += w * (model_.f(c) + 0.5 * g2 * inv_dx2);
       s += w * c;
       h += c > 0.5 ? w : 0.0;

@@ -59,6 +59,11 @@ class Solver {
   void hold_walls();
   /// Adds S to the right-hand side from the next step on.
   void set_source(Source source) { source_ = std::move(source); }
+  /// A gradient coefficient varying in space, D_d(x) = D w_d s(x) (`scale` per node, all > 0; the
+  /// pressure-dependent D of Xu et al. 2015 §4.4.3): ∇·(D∇ξ) with D averaged over the two nodes
+  /// of each face (conservative; a zero-flux wall stays a mirror). Explicit scheme only, and the
+  /// explicit limit shrinks by max s; std::invalid_argument otherwise, or for a wrong size.
+  void set_diffusivity_scale(std::vector<double> scale);
   std::vector<double>& field() { return xi_; }
   const std::vector<double>& field() const { return xi_; }
   double time() const { return time_; }
@@ -86,6 +91,7 @@ class Solver {
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   std::vector<double> xi_, work_;
+  std::vector<double> scale_;  ///< s(x) of set_diffusivity_scale; empty: uniform
   Source source_;
   struct Fourier;
   std::unique_ptr<Fourier> fourier_;
