@@ -131,6 +131,15 @@ void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkForm
                      image.spacing[2])
       << fmt::format("    <Piece Extent=\"{}\">\n", extent) << "      <PointData>\n";
   for (const VtkArray& a : image.point_data) arrays.data(a);
+  if (!image.hidden_points.empty()) {
+    if (image.hidden_points.size() != n[0] * n[1] * n[2])
+      throw RunError(fmt::format("{}: {} hidden-point flags for {} points", file.string(), image.hidden_points.size(),
+                                 n[0] * n[1] * n[2]));
+    constexpr std::uint8_t kHiddenPoint = 2;  // vtkDataSetAttributes::HIDDENPOINT
+    std::vector<std::uint8_t> ghost(image.hidden_points.size());
+    for (std::size_t i = 0; i < ghost.size(); ++i) ghost[i] = image.hidden_points[i] ? kHiddenPoint : 0;
+    arrays.array("UInt8", "vtkGhostType", 1, ghost);
+  }
   out << "      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n  </ImageData>\n";
   arrays.write(file);
 }

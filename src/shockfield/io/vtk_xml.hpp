@@ -52,6 +52,11 @@ struct VtkImage {
   std::array<double, 3> origin{0, 0, 0};
   std::array<double, 3> spacing{1, 1, 1};
   std::vector<VtkArray> point_data;
+  /// Empty, or one flag per point: the points no material reaches. They are written as VTK's
+  /// blanking array vtkGhostType (UInt8, HIDDENPOINT = 2 where set, after the other arrays), so
+  /// ParaView leaves the cells that touch them out instead of painting NaN; their values stay NaN
+  /// for readers that do not know the array (`shockfield analyze` reads NaN as a void cell).
+  std::vector<bool> hidden_points{};
 };
 
 void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkFormat format);

@@ -141,8 +141,10 @@ io::VtkImage grid_fields(const Simulation& sim) {
   double cell_volume = 1.0;
   for (int a = 0; a < g.dim; ++a) cell_volume *= g.cell_size[a];
   std::vector<double> mass_density(nn), ux(nn), uy(nn);
+  img.hidden_points.assign(nn, false);
   for (std::size_t n = 0; n < nn; ++n) {
     const bool empty = !(mass[n] > 0.0);
+    img.hidden_points[n] = empty;
     for (std::size_t k = 0; k < ns; ++k) scalars[k * nn + n] = empty ? nan : scalars[k * nn + n] / mass[n];
     for (std::size_t d = 0; d < 3; ++d) vel[3 * n + d] = empty ? nan : vel[3 * n + d] / mass[n];
     for (std::size_t d = 0; d < 9; ++d) stress[9 * n + d] = empty ? nan : stress[9 * n + d] / mass[n];

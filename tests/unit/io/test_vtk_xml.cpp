@@ -129,6 +129,30 @@ TEST(VtkXml, CategoricalArraysAreInt32) {
   fs::remove_all(dir);
 }
 
+// Points without material: VTK's blanking array after the data arrays (so `analyze`, which reads
+// the first scalar array by default, still finds the data), 2 = HIDDENPOINT where hidden.
+TEST(VtkXml, HiddenPointsAreVtkGhostType) {
+  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_ghost_test");
+  fs::create_directories(dir);
+  io::VtkImage img;
+  img.points = {3, 2, 1};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  img.point_data.push_back({"density", 1, {1, nan, 3, 4, 5, nan}, "kg/m3"});
+  img.hidden_points = {false, true, false, false, false, true};
+  io::write_vti(dir / "ghost.vti", img, {io::VtkEncoding::Ascii});
+  const std::string text = read_text(dir / "ghost.vti");
+  const auto ghost = text.find("type=\"UInt8\" Name=\"vtkGhostType\"");
+  ASSERT_NE(ghost, std::string::npos) << text;
+  EXPECT_GT(ghost, text.find("Name=\"density\""));
+  EXPECT_NE(text.find("0 2 0 0 0 2\n"), std::string::npos) << text;
+  const analysis::GridField f = analysis::read_grid_field((dir / "ghost.vti").string());
+  EXPECT_TRUE(f.void_at(1) && f.void_at(5) && !f.void_at(0));
+  EXPECT_EQ(f.values[2], 3.0);
+  img.hidden_points.pop_back();
+  EXPECT_THROW(io::write_vti(dir / "bad.vti", img, {io::VtkEncoding::Ascii}), shockfield::RunError);
+  fs::remove_all(dir);
+}
+
 // VTK's compressed-array layout: [blocks, block size, last block size, compressed sizes...],
 // a partial last block, and a full last block written as 0.
 TEST(VtkXml, ZlibBlocksFollowVtkLayout) {
