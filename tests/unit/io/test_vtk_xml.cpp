@@ -26,6 +26,13 @@ using namespace shockfield;
 
 std::string b64(const std::string& s) { return io::base64(reinterpret_cast<const unsigned char*>(s.data()), s.size()); }
 
+// An empty scratch folder for one test's files.
+fs::path fresh_dir(const char* name) {
+  const fs::path dir = shockfield::testing::scratch_path(name);
+  fs::create_directories(dir);
+  return dir;
+}
+
 TEST(VtkXml, Base64Rfc4648Vectors) {
   EXPECT_EQ(b64(""), "");
   EXPECT_EQ(b64("f"), "Zg==");
@@ -35,8 +42,7 @@ TEST(VtkXml, Base64Rfc4648Vectors) {
 }
 
 TEST(VtkXml, ImageDataReadsBackWithVoids) {
-  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_xml_test");
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("shockfield_vtk_xml_test");
   io::VtkImage img;
   img.points = {3, 2, 1};
   img.origin = {1.0, 2.0, 0.0};
@@ -75,8 +81,7 @@ std::string read_text(const fs::path& file) {
 // Every encoding and precision: the values read back exactly (Float64) or as the nearest float
 // (Float32, so 310.1 reads as 310.100006…), NaN stays a void, units are in the tags.
 TEST(VtkXml, EveryEncodingAndPrecisionReadsBack) {
-  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_formats_test");
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("shockfield_vtk_formats_test");
   io::VtkImage img;
   img.points = {40, 30, 1};
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -115,8 +120,7 @@ TEST(VtkXml, EveryEncodingAndPrecisionReadsBack) {
 
 // Categorical arrays (material, body, grain) are Int32 in every precision, their values exact.
 TEST(VtkXml, CategoricalArraysAreInt32) {
-  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_labels_test");
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("shockfield_vtk_labels_test");
   const std::vector<double> xyz{0, 0, 0, 1, 0, 0, 2, 0, 0};
   for (io::VtkPrecision p : {io::VtkPrecision::Float64, io::VtkPrecision::Float32}) {
     io::write_vtp(dir / "labels.vtp", xyz, {{"grain", 1, {3, 0, 70000}, "1", true}, {"damage", 1, {0.5, 0, 1}, "1"}},
@@ -132,8 +136,7 @@ TEST(VtkXml, CategoricalArraysAreInt32) {
 // Points without material: VTK's blanking array after the data arrays (so `analyze`, which reads
 // the first scalar array by default, still finds the data), 2 = HIDDENPOINT where hidden.
 TEST(VtkXml, HiddenPointsAreVtkGhostType) {
-  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_ghost_test");
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("shockfield_vtk_ghost_test");
   io::VtkImage img;
   img.points = {3, 2, 1};
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -200,8 +203,7 @@ TEST(VtkXml, CorruptZlibDataIsAnInputError) {
 }
 
 TEST(VtkXml, PvdSeriesKeepsEntriesUpToTheResumeTime) {
-  const fs::path dir = shockfield::testing::scratch_path("shockfield_pvd_test");
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("shockfield_pvd_test");
   {
     io::PvdSeries s(dir / "a.pvd");
     s.add(0.0, "f0.vti");
