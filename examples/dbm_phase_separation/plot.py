@@ -30,7 +30,10 @@ def read_rho(vti):
     """The density of a grid frame (any VTK encoding: shockfield_plot.vtk_arrays) as rows y, columns x."""
     head = Path(vti).read_bytes()[:2048].decode("ascii", "replace")
     ext = [int(v) for v in re.search(r'WholeExtent="([^"]+)"', head).group(1).split()]
-    return read_vtk_arrays(str(vti))["rho"].astype(float).reshape(ext[3] + 1, ext[1] + 1)
+    rho = read_vtk_arrays(str(vti))["rho"].astype(float)
+    # Cell data (frames since the cell-centred layout) has ext cells per axis, point data ext + 1.
+    cells = (ext[3], ext[1]) if rho.size == ext[3] * ext[1] else (ext[3] + 1, ext[1] + 1)
+    return rho.reshape(cells)
 
 
 def growth_exponent(s, t0, t1):

@@ -48,6 +48,21 @@ PYEOF
 
 run_formats dbm "$ROOT/tests/cli/cases/dbm_sod.toml"
 check $(variants dbm fields/grid_000000040.vti)
+# DBM's values are cell-centred: cell data, one tuple per lattice cell, on the corner extent.
+"$PY" - "$WORK/dbm_zlib/fields/grid_000000040.vti" <<'PYEOF' || fail "DBM frames are not cell data on the corner extent"
+import sys
+try:
+    import vtk
+except ImportError:
+    sys.exit(0)  # python3-vtk9 absent: the check above already said it skipped
+r = vtk.vtkXMLImageDataReader()
+r.SetFileName(sys.argv[1])
+r.Update()
+image = r.GetOutput()
+rho = image.GetCellData().GetArray("rho")
+assert rho is not None and image.GetPointData().GetArray("rho") is None
+assert rho.GetNumberOfTuples() == image.GetNumberOfCells(), (rho.GetNumberOfTuples(), image.GetNumberOfCells())
+PYEOF
 run_formats phasefield "$ROOT/tests/cli/cases/phasefield_tiny.toml"
 check $(variants phasefield fields/xi_3.vti)
 # PD points: each profile is also a .vtp at the deformed positions, with the profile's values.

@@ -76,9 +76,10 @@ void RunOutput::write_profile(const Simulation& sim, std::int64_t index) {
 void RunOutput::write_fields(const Simulation& sim) {
   const Lattice& l = sim.lattice();
   const std::size_t n = static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(l.ny);
+  // Cell-centred values as cell data on the (nx + 1) × (ny + 1) points of the cell corners.
   io::VtkImage img;
-  img.points = {static_cast<std::size_t>(l.nx), static_cast<std::size_t>(l.ny), 1};
-  img.origin = {l.x(0), l.y(0), 0.0};
+  img.points = {static_cast<std::size_t>(l.nx) + 1, static_cast<std::size_t>(l.ny) + 1, 1};
+  img.origin = {l.x(0) - 0.5 * l.dx, l.y(0) - 0.5 * l.dy, 0.0};
   img.spacing = {l.dx, l.dy, 1.0};
   std::vector<double> rho(n), u(3 * n), T(n);
   for (int j = 0; j < l.ny; ++j)
@@ -88,11 +89,11 @@ void RunOutput::write_fields(const Simulation& sim) {
       rho[c] = m.rho, u[3 * c] = m.ux, u[3 * c + 1] = m.uy, T[c] = m.T;
     }
   // Model units: dimensionless (docs/dbm.md), written as units="1".
-  img.point_data = {{"rho", 1, std::move(rho), "1"}, {"velocity", 3, std::move(u), "1"}, {"T", 1, std::move(T), "1"}};
+  img.cell_data = {{"rho", 1, std::move(rho), "1"}, {"velocity", 3, std::move(u), "1"}, {"T", 1, std::move(T), "1"}};
   if (gls_) {
-    for (io::VtkArray& a : gls_->field_arrays()) img.point_data.push_back(std::move(a));
+    for (io::VtkArray& a : gls_->field_arrays()) img.cell_data.push_back(std::move(a));
   } else {
-    img.point_data.push_back({"D", 1, tne_measures(sim).strength, "1"});
+    img.cell_data.push_back({"D", 1, tne_measures(sim).strength, "1"});
   }
   const std::string file = fmt::format("fields/grid_{:09d}.vti", sim.steps());
   io::write_vti(folder_ / file, img, vtk_);

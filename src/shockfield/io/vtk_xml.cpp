@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <tuple>
 #include <type_traits>
 
 #include "shockfield/core/error.hpp"
@@ -119,10 +121,15 @@ void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkForm
   std::ostringstream out;
   ArrayWriter arrays(out, format);
   const auto& n = image.points;
-  for (const VtkArray& a : image.point_data)
-    if (a.values.size() != n[0] * n[1] * n[2] * static_cast<std::size_t>(a.components))
-      throw RunError(fmt::format("{}: array '{}' has {} values for {} points", file.string(), a.name, a.values.size(),
-                                 n[0] * n[1] * n[2]));
+  // VTK's cell count: n − 1 per axis, one layer along an axis of a single point.
+  const std::size_t cells =
+      (std::max<std::size_t>(n[0], 2) - 1) * (std::max<std::size_t>(n[1], 2) - 1) * (std::max<std::size_t>(n[2], 2) - 1);
+  for (const auto& [arrays, count, what] : {std::tuple{&image.point_data, n[0] * n[1] * n[2], "points"},
+                                            std::tuple{&image.cell_data, cells, "cells"}})
+    for (const VtkArray& a : *arrays)
+      if (a.values.size() != count * static_cast<std::size_t>(a.components))
+        throw RunError(fmt::format("{}: array '{}' has {} values for {} {}", file.string(), a.name, a.values.size(),
+                                   count, what));
   const std::string extent = fmt::format("0 {} 0 {} 0 {}", n[0] - 1, n[1] - 1, n[2] - 1);
   out << "<?xml version=\"1.0\"?>\n"
       << arrays.file_tag("ImageData")
@@ -140,7 +147,9 @@ void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkForm
     for (std::size_t i = 0; i < ghost.size(); ++i) ghost[i] = image.hidden_points[i] ? kHiddenPoint : 0;
     arrays.array("UInt8", "vtkGhostType", 1, ghost);
   }
-  out << "      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n  </ImageData>\n";
+  out << "      </PointData>\n      <CellData>\n";
+  for (const VtkArray& a : image.cell_data) arrays.data(a);
+  out << "      </CellData>\n    </Piece>\n  </ImageData>\n";
   arrays.write(file);
 }
 

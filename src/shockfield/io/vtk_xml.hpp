@@ -46,12 +46,15 @@ struct VtkArray {
   bool integer = false;
 };
 
-/// Point data on (nx, ny, nz) grid points; x fastest. A 2D grid has nz = 1.
+/// Point data on (nx, ny, nz) grid points and cell data on the cells between them (nx − 1 per axis
+/// with more than one point, x fastest); a 2D grid has nz = 1. A cell-centred field (DBM) is cell
+/// data on an (n + 1)-point extent whose origin is the lower corner of its first cell.
 struct VtkImage {
   std::array<std::size_t, 3> points{1, 1, 1};
   std::array<double, 3> origin{0, 0, 0};
   std::array<double, 3> spacing{1, 1, 1};
   std::vector<VtkArray> point_data;
+  std::vector<VtkArray> cell_data{};
   /// Empty, or one flag per point: the points no material reaches. They are written as VTK's
   /// blanking array vtkGhostType (UInt8, HIDDENPOINT = 2 where set, after the other arrays), so
   /// ParaView leaves the cells that touch them out instead of painting NaN; their values stay NaN

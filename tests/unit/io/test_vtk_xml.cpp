@@ -156,6 +156,26 @@ TEST(VtkXml, HiddenPointsAreVtkGhostType) {
   fs::remove_all(dir);
 }
 
+// Cell-centred values (DBM) are cell data on the corner points: 3 x 2 cells on a 4 x 3 extent;
+// analyze reads them back as 3 x 2 cells; a wrong count is refused.
+TEST(VtkXml, CellDataOnTheCornerExtent) {
+  const fs::path dir = fresh_dir("shockfield_vtk_cells_test");
+  io::VtkImage img;
+  img.points = {4, 3, 1};
+  img.cell_data.push_back({"rho", 1, {1, 2, 3, 4, 5, 6}, "1"});
+  io::write_vti(dir / "cells.vti", img, {io::VtkEncoding::Zlib, io::VtkPrecision::Float64});
+  const std::string text = read_text(dir / "cells.vti");
+  EXPECT_LT(text.find("<CellData>"), text.find("Name=\"rho\"")) << text;
+  EXPECT_NE(text.find("WholeExtent=\"0 3 0 2 0 0\""), std::string::npos) << text;
+  const analysis::GridField f = analysis::read_grid_field((dir / "cells.vti").string(), "rho");
+  EXPECT_EQ(f.n[0], 3u);
+  EXPECT_EQ(f.n[1], 2u);
+  EXPECT_EQ(f.values, (std::vector<double>{1, 2, 3, 4, 5, 6}));
+  img.cell_data.front().values.push_back(7);
+  EXPECT_THROW(io::write_vti(dir / "bad.vti", img, {io::VtkEncoding::Ascii}), shockfield::RunError);
+  fs::remove_all(dir);
+}
+
 // VTK's compressed-array layout: [blocks, block size, last block size, compressed sizes...],
 // a partial last block, and a full last block written as 0.
 TEST(VtkXml, ZlibBlocksFollowVtkLayout) {
