@@ -6,7 +6,7 @@
 // nucleate (bridge_md_strength.hpp). At the break:
 //   σ_HEL = Δσ_L (the rise of σ_L from the stage start: the initial thermal pressure is no strength);
 //   ν from the same elastic rise, ν/(1 − ν) = Δσ_T/Δσ_L (uniaxial strain of an isotropic solid), or --poisson;
-//   Y = σ_HEL (1 − 2ν)/(1 − ν)  (von Mises in uniaxial strain: Y = σ_L − σ_T; Meyers (1994) §16.3);
+//   Y = σ_HEL (1 − 2ν)/(1 − ν)  (von Mises in uniaxial strain: Y = σ_L − σ_T; Meyers (1994), elastoplastic shock waves);
 //   g0 = τ_RSS = m·D with the Schmid factor m = max over fcc {111}<110> of |(d·n)(d·b)| of the
 //        loading direction d (exact when σ_T is the same on both lateral axes, as along [100], [111]).
 #include <fmt/format.h>
