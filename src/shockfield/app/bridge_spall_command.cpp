@@ -92,7 +92,7 @@ void add_bridge_spall_command(CLI::App& bridge, const std::vector<std::string>& 
       "MD tension run -> spall strength. Reads an MD run folder with a [[stage]] deform_rate >= 0\n"
       "(uniaxial strain or triaxial expansion past void nucleation) and its thermo.csv: the spall\n"
       "strength is the largest tensile mean stress -P before the abrupt drop that marks void\n"
-      "nucleation (below (1 - drop) of the maximum within max-drop-time of the loading time), from a\n"
+      "nucleation (below (1 - drop) of the maximum, faster than max-drop-ratio times the rise), from a\n"
       "quadratic fit of the last rows before it, with its standard error (fit + sampling); the\n"
       "strain rate is the measured volumetric rate (1/V) dV/dt there. Writes [spall] strength and\n"
       "strain_rate (MPM's criterion: failure when the mean stress falls below -strength) and\n"
