@@ -146,6 +146,15 @@ mkdir -p "$WORK/flyer" && printf 'method = "md"\n[[stage]]\nname = "impact"\nste
 bad "flyer/config.resolved.toml" "no [[stage]] with deform_rate" "flyer-plate" -- spall "$WORK/flyer" -o "$WORK/x.toml"
 bad "c111/config.resolved.toml" "deform_rate [0, 0, -0.01]" "tension" -- spall "$WORK/c111" -o "$WORK/x.toml"
 bad "tension_cusp0/config.resolved.toml" "compression" -- yield "$WORK/tension_cusp0" -o "$WORK/x.toml"
+# Out-of-range stage values (found by the fuzz target bridge_spall, seed 2): refused naming the key.
+synth "$WORK/rate" tension_cusp 0 > /dev/null
+sed -i 's/deform_rate = \[0.0, 0.0, 0.01\]/deform_rate = [1e300, 0.0, 0.01]/' "$WORK/rate/config.resolved.toml"
+bad "rate/config.resolved.toml" "key 'stage[1].deform_rate'" "[-10, 10]" -- spall "$WORK/rate" -o "$WORK/x.toml"
+synth "$WORK/steps" tension_cusp 0 > /dev/null
+sed -i 's/^steps = 13980/steps = -9223372036854775808/' "$WORK/steps/config.resolved.toml"
+bad "steps/config.resolved.toml" "key 'stage[1].steps'" -- spall "$WORK/steps" -o "$WORK/x.toml"
+sed -i 's/orient_z = \[1, 1, 1\]/orient_z = [0, 0, 0]/' "$WORK/c111/config.resolved.toml"
+bad "c111/config.resolved.toml" "key 'system.lattice.orient_z'" -- yield "$WORK/c111" -o "$WORK/x.toml"
 synth "$WORK/short" tension_cusp 0 6 > /dev/null
 bad "short/thermo.csv" "thermo rows" "expected at least 10" -- spall "$WORK/short" -o "$WORK/x.toml"
 synth "$WORK/nodrop" tension_cusp 0 480 > /dev/null  # ends at 19.2 ps, before nucleation

@@ -129,15 +129,24 @@ DeformRun read_deform_run(const fs::path& folder, const std::string& stage, std:
   for (std::size_t i = 0; stages && i < stages->size(); ++i) {
     const toml::table* s = stages->get(i)->as_table();
     if (!s) continue;
-    const long long n = (*s)["steps"].value_or(0LL);
+    // The ranges the MD case reader accepts (docs/md.md): steps >= 0, deform_rate in [-10, 10] 1/ps.
+    const long long n = (*s)["steps"].value_or(-1LL);
+    if (n < 0 || n > 1'000'000'000'000LL)
+      throw InputError(fmt::format("{}: key 'stage[{}].steps': expected an integer in [0, 1e12]", resolved.string(), i));
     const std::string name = (*s)["name"].value_or(fmt::format("stage {}", i + 1));
-    const toml::array* rate = (*s)["deform_rate"].as_array();
-    if (rate && rate->size() == 3) {
+    const toml::node* rate_node = s->get("deform_rate");
+    const toml::array* rate = rate_node ? rate_node->as_array() : nullptr;
+    if (rate_node) {
+      std::array<double, 3> v{NAN, NAN, NAN};
+      for (std::size_t k = 0; rate && rate->size() == 3 && k < 3; ++k) v[k] = rate->get(k)->value_or(NAN);
+      if (!(std::abs(v[0]) <= 10 && std::abs(v[1]) <= 10 && std::abs(v[2]) <= 10))
+        throw InputError(fmt::format("{}: key 'stage[{}].deform_rate': expected three numbers in [-10, 10] 1/ps",
+                                     resolved.string(), i));
       found.push_back(name);
       if (!picked && (stage.empty() || stage == name)) {
         picked = true;
         r.stage = name;
-        for (std::size_t k = 0; k < 3; ++k) r.rate[k] = rate->get(k)->value_or(0.0) / kPsToS;
+        for (std::size_t k = 0; k < 3; ++k) r.rate[k] = v[k] / kPsToS;
         steps = n;
       }
     }
@@ -154,8 +163,15 @@ DeformRun read_deform_run(const fs::path& folder, const std::string& stage, std:
                                  found.size(), fmt::join(found, ", ")));
   if (const toml::table* lat = cfg.at_path("system.lattice").as_table())
     for (std::size_t k = 0; k < 3; ++k)
-      if (const toml::array* o = (*lat)[std::string("orient_") + "xyz"[k]].as_array(); o && o->size() == 3)
-        for (std::size_t j = 0; j < 3; ++j) r.orient[k][j] = static_cast<int>(o->get(j)->value_or(0LL));
+      if (const toml::node* node = lat->get(std::string("orient_") + "xyz"[k])) {
+        const toml::array* o = node->as_array();
+        std::array<long long, 3> v{0, 0, 0};
+        for (std::size_t j = 0; o && o->size() == 3 && j < 3; ++j) v[j] = o->get(j)->value_or(0LL);
+        if (std::abs(v[0]) > 1000 || std::abs(v[1]) > 1000 || std::abs(v[2]) > 1000 || v == std::array<long long, 3>{})
+          throw InputError(fmt::format("{}: key 'system.lattice.orient_{}': expected three integers, not all 0, "
+                                       "within +-1000", resolved.string(), "xyz"[k]));
+        for (std::size_t j = 0; j < 3; ++j) r.orient[k][j] = static_cast<int>(v[j]);
+      }
   r.config_sha256 = sha256_file_hex(resolved);
   r.thermo_file = r.folder / "thermo.csv";
   if (!fs::exists(r.thermo_file))
@@ -163,6 +179,19 @@ DeformRun read_deform_run(const fs::path& folder, const std::string& stage, std:
                                  folder.string(), command));
   const auto cols = read_columns(r.thermo_file, {"step", "time_ps", "press_bar", "pxx_bar", "pyy_bar", "pzz_bar",
                                                  "pxy_bar", "pxz_bar", "pyz_bar", "volume_A3", "lx_A", "ly_A", "lz_A"});
+  // Bounds no MD run reaches, so that the fits' sums stay finite: |p| <= 1e9 bar (1e5 GPa),
+  // 0 < volume <= 1e18 Å³, 0 < lengths <= 1e6 Å, |t| <= 1e9 ps.
+  for (std::size_t i = 0; i < cols[0].size(); ++i) {
+    const auto check = [&](std::size_t k, double lo, double hi, const char* name) {
+      if (!(cols[k][i] > lo && cols[k][i] <= hi))
+        throw InputError(fmt::format("{}: data row {}: {} = {} outside ({}, {}]", r.thermo_file.string(), i + 1, name,
+                                     cols[k][i], lo, hi));
+    };
+    check(1, -1e9, 1e9, "time_ps");
+    for (std::size_t k = 2; k < 9; ++k) check(k, -1e9, 1e9, "a pressure column (bar)");
+    check(9, 0.0, 1e18, "volume_A3");
+    for (std::size_t k = 10; k < 13; ++k) check(k, 0.0, 1e6, "a box length (A)");
+  }
   for (std::size_t i = 0; i < cols[0].size(); ++i) {
     const double step = cols[0][i];
     if (step < static_cast<double>(start) || step > static_cast<double>(start + steps)) continue;
@@ -174,9 +203,10 @@ DeformRun read_deform_run(const fs::path& folder, const std::string& stage, std:
     for (std::size_t k = 0; k < 3; ++k) r.length[k].push_back(cols[10 + k][i] * kAToM);
   }
   if (r.time.size() < min_rows)
-    throw InputError(fmt::format("{}: {} thermo rows in stage '{}' (steps {} to {}), expected at least {}: write "
-                                 "thermo more often ([output] thermo_every) or run the stage longer",
-                                 r.thermo_file.string(), r.time.size(), r.stage, start, start + steps, min_rows));
+    throw InputError(fmt::format("{}: {} thermo rows in stage '{}' (steps {} to {} in {}), expected at least {}: "
+                                 "write thermo more often ([output] thermo_every) or run the stage longer",
+                                 r.thermo_file.string(), r.time.size(), r.stage, start, start + steps,
+                                 resolved.string(), min_rows));
   r.thermo_sha256 = sha256_file_hex(r.thermo_file);
   return r;
 }

@@ -7,6 +7,7 @@
 // (bridge_md_strength.hpp), at the volumetric strain rate (1/V) dV/dt measured over the same rows.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "shockfield/app/bridge_md_strength.hpp"
@@ -34,7 +35,7 @@ void run(const SpallOptions& o, const std::vector<std::string>& command_line) {
   const DeformRun r = read_deform_run(o.run, o.stage, static_cast<std::size_t>(o.peak.fit_rows) + 2, "bridge spall", kWhat);
   const fs::path resolved = r.folder / "config.resolved.toml";
   if (r.rate[0] < 0 || r.rate[1] < 0 || r.rate[2] < 0 || r.rate[0] + r.rate[1] + r.rate[2] <= 0)
-    throw InputError(fmt::format("{}: stage '{}' has deform_rate [{}, {}, {}] 1/ps: bridge spall reads {}",
+    throw InputError(fmt::format("{}: stage '{}' has deform_rate [{:.6g}, {:.6g}, {:.6g}] 1/ps: bridge spall reads {}",
                                  resolved.string(), r.stage, r.rate[0] * 1e-12, r.rate[1] * 1e-12, r.rate[2] * 1e-12,
                                  kWhat));
   std::vector<double> tension(r.press.size());
@@ -42,6 +43,9 @@ void run(const SpallOptions& o, const std::vector<std::string>& command_line) {
   const Peak peak = peak_before_drop(r.time, tension, o.peak, "the tensile mean stress -press_bar", "void nucleation",
                                      r.thermo_file.string());
   const double rate = log_rate(r.time, r.volume, peak.first_fit_row, peak.row);  // (1/V) dV/dt
+  if (!(rate > 0.0) || !std::isfinite(rate))
+    throw InputError(fmt::format("{}: the volume (volume_A3) does not grow over the rows before the peak (rate {:.3g} "
+                                 "1/s): not a tension run", r.thermo_file.string(), rate));
   const double vol_strain = std::log(r.volume[peak.row] / r.volume.front());
   int axis = -1;  // the one stretched axis of a uniaxial-strain run
   for (int k = 0; k < 3; ++k)

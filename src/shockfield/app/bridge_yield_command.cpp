@@ -79,7 +79,7 @@ void run(const YieldOptions& o, const std::vector<std::string>& command_line) {
   for (int k = 0; k < 3; ++k)
     if (r.rate[static_cast<std::size_t>(k)] != 0.0) ++nonzero, axis = k;
   if (nonzero != 1 || r.rate[static_cast<std::size_t>(axis)] > 0)
-    throw InputError(fmt::format("{}: stage '{}' has deform_rate [{}, {}, {}] 1/ps: bridge yield reads {}",
+    throw InputError(fmt::format("{}: stage '{}' has deform_rate [{:.6g}, {:.6g}, {:.6g}] 1/ps: bridge yield reads {}",
                                  resolved.string(), r.stage, r.rate[0] * 1e-12, r.rate[1] * 1e-12, r.rate[2] * 1e-12,
                                  kWhat));
   const auto a = static_cast<std::size_t>(axis), b = (a + 1) % 3, c = (a + 2) % 3;
@@ -126,6 +126,9 @@ void run(const YieldOptions& o, const std::vector<std::string>& command_line) {
   double rss = 0.0;
   for (const auto& [sn, sb] : fcc_slip_systems()) rss = std::max(rss, std::abs(sn.dot(pc * sb)));
   const double rate = std::abs(log_rate(r.time, r.length[a], peak.first_fit_row, peak.row));
+  if (!(rate > 0.0) || !std::isfinite(rate))
+    throw InputError(fmt::format("{}: the box length l{}_A does not change over the rows before the break: not a "
+                                 "compression run", r.thermo_file.string(), "xyz"[a]));
   const std::string direction = fmt::format("[{}{}{}]", r.orient[a][0], r.orient[a][1], r.orient[a][2]);
 
   const std::map<std::string, double> values{
