@@ -100,6 +100,17 @@ within "$(value "$f" provenance.yield.fit.schmid_factor)" 0.272165527 1e-8 1 || 
 within "$(value "$f" provenance.yield.fit.poisson)" 0.3333333 0.01 1 || fail "measured poisson"
 within "$(value "$f" strength.strain_rate)" 1.18e10 1e8 1 || fail "strain rate"
 grep -q "MD strain rates" "$f" || fail "the strength note lacks the MD-rate caveat"
+# The Schmid factor of other loading directions: [001] (no orient) and [-1-10] (orient_x = [1,-1,0],
+# orient_y = [0,0,1]): 1/√6 = 0.408248 for both (the same synthetic stresses).
+for d in 001 110; do
+  cp -r "$WORK/c111" "$WORK/c$d"
+  if [ $d = 001 ]; then sed -i '/^orient_/d' "$WORK/c$d/config.resolved.toml"
+  else sed -i -e 's/^orient_y = .*/orient_y = [0, 0, 1]/' -e 's/^orient_z = .*/orient_z = [-1, -1, 0]/' "$WORK/c$d/config.resolved.toml"; fi
+  "$SF" bridge yield "$WORK/c$d" -o "$WORK/y$d.toml" > /dev/null
+  within "$(value "$WORK/y$d.toml" provenance.yield.fit.schmid_factor)" 0.40824829 1e-7 1 || fail "Schmid factor of [$d]"
+  within "$(value "$WORK/y$d.toml" strength.g0)" "$(python3 -c "print($g0 * 0.40824829 / 0.27216553)")" \
+    "$(value "$WORK/y$d.toml" provenance.yield.fit.g0_stderr_Pa)" 3 || fail "g0 along [$d]"
+done
 # --poisson 0.3: Y = HEL (1 − 2ν)/(1 − ν) = HEL·4/7, written into an existing file (--update keeps [spall]).
 "$SF" bridge spall "$WORK/tension_cusp0" -o "$WORK/both.toml" > /dev/null
 "$SF" bridge yield "$WORK/c111" -o "$WORK/both.toml" --update --poisson 0.3 > /dev/null
