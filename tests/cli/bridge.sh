@@ -29,11 +29,7 @@ for k in range(n):
         % (us, up, up / 0.75, 8.93 + 0.001 * (k % 3 - 1)))
 EOF
 }
-value() { python3 -c "import tomllib,sys; d=tomllib.load(open(sys.argv[1],'rb'))
-for k in sys.argv[2].split('.'): d=d[k]
-print(d)" "$1" "$2"; }
-# within A B SIGMA N: |A − B| <= N·SIGMA
-within() { python3 -c "import sys; a,b,e,n=map(float,sys.argv[1:]); sys.exit(0 if abs(a-b)<=n*e else 1)" "$@"; }
+source "$(dirname "$0")/bridge_lib.bash"
 
 sweep "$WORK/lin" 3.90 1.55 0.0 0.02 8
 "$SF" bridge hugoniot-to-eos "$WORK/lin" -o "$WORK/cu.toml" --name cu_md > "$WORK/eos.txt"
@@ -103,19 +99,7 @@ printf '%s\n' "$(sed -e 's|model = "j2"|model = "crystal"\nfile = "cu.toml"|' -e
 grep -q "^c11 = 167264636877.242" "$WORK/pd/config.resolved.toml" || fail "PD did not take the bridged c11"
 echo "ok: bridged EOS and elasticity fit, written, read by MPM and PD"
 
-# Bad input: each refused with exit 2, naming the file and key.
-bad() {  # bad PATTERN... -- ARGS...: `shockfield bridge ARGS` fails with exit 2 and every pattern
-  local patterns=()
-  while [ "$1" != "--" ]; do patterns+=("$1"); shift; done
-  shift
-  set +e
-  "$SF" bridge "$@" > /dev/null 2> "$WORK/err"
-  local code=$?
-  set -e
-  [ $code -eq 2 ] || fail "exit $code for bridge $*: $(cat "$WORK/err")"
-  for p in "${patterns[@]}"; do grep -qF -- "$p" "$WORK/err" || fail "message lacks '$p': $(cat "$WORK/err")"; done
-  echo "ok: $(head -c 150 "$WORK/err")"
-}
+# Bad input: each refused with exit 2, naming the file and key (bad: bridge_lib.bash).
 sweep "$WORK/two" 3.9 1.5 0 0.01 2
 bad "2 Hugoniot points" "hugoniot_shock.toml" "at least three" -- hugoniot-to-eos "$WORK/two" -o "$WORK/x.toml"
 sweep "$WORK/mpm_runs" 3.9 1.5 0 0.01 3 mpm

@@ -37,6 +37,19 @@ paste -d, <(tail -n +2 "$WORK/one/stress_strain.csv") <(tail -n +2 "$WORK/one/gr
   END { if (bad) exit 1; if (-$3 < 49e6) { print "final Taylor stress " $3; exit 1 } }' || fail "Taylor average"
 echo "ok: homogeneous run, $(tail -1 "$WORK/one/log.txt" | head -c 160)"
 
+# With a material file (g0 from a bridge): log.txt and config.resolved.toml name the file, its
+# SHA-256 and its provenance, as every run that uses a material file does (docs/materials.md).
+printf '[elasticity]\ndensity = 8960.0\nc11 = 168.4e9\nc12 = 121.4e9\nc44 = 75.4e9\n[strength]\ng0 = 20e6\n[provenance.yield]\ncommand = "shockfield bridge yield runs/x"\n' > "$WORK/cu.toml"
+printf '%s\n' "${case_text/density = 8960.0/file = \"cu.toml\"}" > "$WORK/file_case.toml"
+"$SF" run "$WORK/file_case.toml" --output "$WORK/file" -q -j 1 > /dev/null
+sha=$(sha256sum "$WORK/cu.toml" | cut -d' ' -f1)
+grep -qF "material file: $WORK/cu.toml (sha256 $sha)" "$WORK/file/log.txt" || fail "log.txt lacks the material file and hash"
+grep -qF 'material file: provenance.yield.command = shockfield bridge yield runs/x' "$WORK/file/log.txt" \
+  || fail "log.txt lacks the material file's provenance"
+grep -qF "$sha" "$WORK/file/config.resolved.toml" || fail "config.resolved.toml lacks the material file's hash"
+grep -q "^g0 = 20000000" "$WORK/file/config.resolved.toml" || fail "g0 not taken from the material file"
+echo "ok: homogeneous run names its material file"
+
 expect_error "${case_text/end_strain = -0.05/end_strain = 0.05}" "homogeneous.end_strain" "sign of strain_rate"
 expect_error "${case_text/strain_increment = 5e-4/strain_increment = 0.1}" "homogeneous.strain_increment"
 expect_error "${case_text/output_increment = 0.01/output_increment = 0.01

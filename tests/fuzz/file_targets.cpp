@@ -88,6 +88,23 @@ Target bridge_elastic(const Context& c) {
           }};
 }
 
+// `shockfield bridge spall` (bridge_spall) or `bridge yield` (bridge_yield) on a small MD tension
+// run (256 atoms, 2e10/s) or [111] compression (432 atoms, 1e10/s) of Cu_u3.eam
+// (tests/fixtures/fuzz/inputs/bridge_strength/{spall,yield}_run), one of its two files
+// (config.resolved.toml, thermo.csv) mutated: the mutant and its linked sibling are the run folder.
+Target bridge_strength(const Context& c, const std::string& bridge) {
+  const fs::path run = c.source / "tests/fixtures/fuzz/inputs/bridge_strength" / (bridge + "_run");
+  return {"bridge_" + bridge, {run / "thermo.csv", run / "config.resolved.toml"}, false, true, "",
+          [c, bridge](const fs::path& file, const fs::path& work) {
+            fs::create_directories(work / "out");
+            const fs::path out = work / "out/cu.toml";
+            return check_material_output(run_program({c.shockfield.string(), "bridge", bridge,
+                                                      file.parent_path().string(), "-o", out.string()},
+                                                     work, c.limits),
+                                         out);
+          }};
+}
+
 }  // namespace
 
 std::vector<Target> file_targets(const Context& c, const std::function<bool(const std::string&)>& wanted) {
@@ -96,6 +113,8 @@ std::vector<Target> file_targets(const Context& c, const std::function<bool(cons
   t.push_back(material_file(c));
   t.push_back(bridge_eos(c));
   t.push_back(bridge_elastic(c));
+  t.push_back(bridge_strength(c, "spall"));
+  t.push_back(bridge_strength(c, "yield"));
   return t;
 }
 

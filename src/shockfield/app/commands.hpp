@@ -33,5 +33,7 @@ void add_bridge_output_options(CLI::App& bridge_subcommand, BridgeOutput& out, c
 void add_bridge_hugoniot_to_eos_command(CLI::App& bridge, const std::vector<std::string>& command_line);
 void add_bridge_elastic_command(CLI::App& bridge, const std::vector<std::string>& command_line);
 void add_bridge_eam_to_macroparticle_command(CLI::App& bridge, const std::vector<std::string>& command_line);
+void add_bridge_spall_command(CLI::App& bridge, const std::vector<std::string>& command_line);
+void add_bridge_yield_command(CLI::App& bridge, const std::vector<std::string>& command_line);
 
 }  // namespace shockfield::app

@@ -71,6 +71,8 @@ class HomogeneousMethod final : public Method {
       material.fail("model", "[homogeneous] drives the crystal law: model = \"crystal\"");
     const std::optional<materials::MaterialFile> file = materials::open_material_file(material);
     spec_ = read_crystal(material, file ? &*file : nullptr);
+    // The file's path, SHA-256 and provenance: in [derived] by open_material_file, in log.txt by start().
+    if (file) material_notes_ = file->summary_lines();
     if (spec_.polycrystal)
       material.fail("orientation", "[homogeneous] is one material point: orientation = \"direction\", \"euler\" or "
                                    "\"random\" (with taylor_grains), not \"random_grains\"");
@@ -93,7 +95,10 @@ class HomogeneousMethod final : public Method {
   std::string check_text() const override {
     return fmt::format("pd [homogeneous] case ({} grains, {} steps)", grains_, steps_);
   }
-  void start(RunContext& run) override { run_ = &run; }
+  void start(RunContext& run) override {
+    run_ = &run;
+    for (const std::string& note : material_notes_) run.log.info("material file: {}", note);
+  }
   void resume(RunContext& run) override { run_ = &run; }  // refused by the constructor
   bool finished() const override { return done_ == steps_; }
 
@@ -169,6 +174,7 @@ class HomogeneousMethod final : public Method {
   long long grains_ = 0, steps_ = 0, done_ = 0;
   RunContext* run_ = nullptr;
   std::vector<double> axial_;
+  std::vector<std::string> material_notes_;
   double widest_ = 0.0, widest_at_ = 0.0, taylor_ = 0.0;
 };
 
