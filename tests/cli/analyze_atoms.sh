@@ -66,17 +66,7 @@ grep -q "ITEM: ATOMS id type x y z c_cna c_csp c_coord acna cluster" "$WORK/void
 echo "ok: void-surface cluster"
 
 # rejected PATTERN -- ARGS...: must exit 2 with PATTERN in the message and leave no output folder.
-rejected() {
-  local pattern="$1"; shift 2
-  set +e
-  "$SF" analyze atoms "$@" -o "$WORK/bad" > "$WORK/stdout" 2> "$WORK/stderr"
-  local code=$?
-  set -e
-  [ $code -eq 2 ] || fail "exit code $code (expected 2) for: $*; stderr: $(cat "$WORK/stderr")"
-  grep -qF -- "$pattern" "$WORK/stderr" || fail "message lacks '$pattern': $(cat "$WORK/stderr")"
-  [ ! -e "$WORK/bad" ] || fail "an output folder was left behind for: $*"
-  echo "ok: $(head -c 160 "$WORK/stderr")"
-}
+rejected() { local pattern="$1"; shift 2; analyze_rejected "$pattern" -- atoms "$@"; }
 head -9 "$F/cu_fcc_perfect.dump" > "$WORK/header"
 # missing position columns
 { sed 's/^ITEM: ATOMS .*/ITEM: ATOMS id type c_cna/' "$WORK/header"; awk 'NR > 9 { print $1, $2, $6 }' "$F/cu_fcc_perfect.dump"; } > "$WORK/nopos.dump"

@@ -1,5 +1,5 @@
-// `shockfield analyze atoms`: per-atom structure of atoms from LAMMPS dumps, LAMMPS data files or
-// shockfield MD run folders — coordination, conventional CNA (LAMMPS cna/atom), adaptive CNA
+// `shockfield analyze atoms`: per-atom structure of atoms from LAMMPS dumps, LAMMPS data files,
+// extended XYZ files or shockfield MD run folders — coordination, conventional CNA (LAMMPS cna/atom), adaptive CNA
 // (Stukowski 2012), centro-symmetry (Kelchner et al. 1998) and bond-pair types (Honeycutt &
 // Andersen 1987), all over one neighbour pass per frame (analysis/atoms/). Writes each input's
 // frames again with the per-atom results appended as columns (OVITO colours by them) and
@@ -18,13 +18,13 @@
 
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/app/analyze_atoms_burgers.hpp"
+#include "shockfield/app/analyze_atoms_inputs.hpp"
 #include "shockfield/app/analyze_atoms_profiles.hpp"
 #include "shockfield/app/analyze_atoms_tracks.hpp"
 #include "shockfield/app/analyze_atoms_voids.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/csv_writer.hpp"
-#include "shockfield/io/lammps_data.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 
 namespace shockfield::app {
@@ -50,88 +50,6 @@ struct AtomsArgs {
   VoidArgs voids;
   int threads = 0;
 };
-
-enum class InputKind { dump, data };
-
-struct InputFile {
-  fs::path path;
-  InputKind kind;
-};
-
-// The frames of a dump file; a .gz file is decompressed by the system's gzip (gzip -dc) into
-// memory first (read_dump holds every frame in memory anyway).
-std::vector<io::DumpFrame> read_dump_file(const fs::path& file) {
-  if (file.extension() != ".gz") return io::read_dump(file);
-  const std::string name = file.string();
-  if (name.find('\'') != std::string::npos)
-    throw InputError(fmt::format("{}: a .gz file name with a quote cannot be passed to gzip; rename it", name));
-  FILE* pipe = popen(("gzip -dc -- '" + name + "' 2>/dev/null").c_str(), "r");
-  if (!pipe) throw InputError(fmt::format("{}: cannot start gzip to decompress it", name));
-  std::string text;
-  char buffer[1 << 16];
-  for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) text.append(buffer, got);
-  if (pclose(pipe) != 0)
-    throw InputError(fmt::format("{}: gzip -dc failed: not a gzip file, or a truncated or corrupt one", name));
-  std::istringstream in(text);
-  return io::read_dump(in, name);
-}
-
-bool looks_like_dump(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot be opened for reading", file.string()));
-  std::string line;
-  while (std::getline(in, line))
-    if (line.find_first_not_of(" \t\r") != std::string::npos) return line.rfind("ITEM:", 0) == 0;
-  throw InputError(fmt::format("{}: the file is empty", file.string()));
-}
-
-// The step number of a run folder's dumps/dump.<step>.<ext>, for ordering.
-long long step_of(const fs::path& file) {
-  const std::string name = file.filename().string();
-  const auto first = name.find('.'), second = name.find('.', first + 1);
-  try {
-    return std::stoll(name.substr(first + 1, second - first - 1));
-  } catch (const std::exception&) {
-    return -1;
-  }
-}
-
-std::vector<InputFile> expand_inputs(const AtomsArgs& a) {
-  std::vector<InputFile> files;
-  for (const std::string& input : a.inputs) {
-    const fs::path path(input);
-    if (fs::is_directory(path)) {
-      const fs::path dumps = path / "dumps";
-      if (!fs::is_directory(dumps))
-        throw InputError(fmt::format("{}: a folder but not a shockfield MD run folder (no dumps/ inside)", input));
-      std::vector<fs::path> series;
-      bool extxyz = false;
-      for (const auto& e : fs::directory_iterator(dumps)) {
-        if (e.path().extension() == ".lammpstrj") series.push_back(e.path());
-        extxyz = extxyz || e.path().extension() == ".xyz";
-      }
-      if (series.empty())
-        throw InputError(fmt::format("{}: no dumps/dump.*.lammpstrj in the run folder{}", input,
-                                     extxyz ? " (its dumps are extended XYZ, which analyze atoms does not read: run "
-                                              "with dump_format = \"lammps\")"
-                                            : ""));
-      std::sort(series.begin(), series.end(), [](const fs::path& x, const fs::path& y) { return step_of(x) < step_of(y); });
-      for (const auto& f : series) files.push_back({f, InputKind::dump});
-      continue;
-    }
-    if (path.extension() == ".gz") {  // a gzip-compressed dump (LAMMPS dump custom/gz, or gzip'ed later)
-      files.push_back({path, InputKind::dump});
-      continue;
-    }
-    if (path.extension() == ".xyz" || path.extension() == ".extxyz")
-      throw InputError(fmt::format("{}: extended XYZ input is not read yet (the io/ library only writes it); "
-                                   "convert it to a LAMMPS dump", input));
-    InputKind kind = InputKind::dump;
-    if (a.format == "data" || (a.format == "auto" && !looks_like_dump(path))) kind = InputKind::data;
-    files.push_back({path, kind});
-  }
-  return files;
-}
 
 // --cluster-select: "<cna|acna|bpa>:<structure>[,<structure>...]" (any of them),
 // "<method>:!<structure>[,...]" (none of them) or "csp><value>"; the analysis it reads must be on
@@ -299,16 +217,6 @@ class PendingOutputs {
   std::vector<fs::path> finals_;
 };
 
-aa::AtomFrame frame_of_data(const io::DataFile& data, const std::string& source) {
-  aa::AtomFrame frame;
-  frame.box = data.box;
-  frame.positions.assign(data.atoms.x.begin(), data.atoms.x.begin() + static_cast<std::ptrdiff_t>(data.atoms.nlocal));
-  for (std::size_t i = 0; i < data.atoms.nlocal; ++i) frame.types.push_back(data.atoms.type[i] + 1);
-  frame.ids = data.atoms.id;
-  aa::validate_frame(frame, source);
-  return frame;
-}
-
 void run_atoms(const AtomsArgs& a) {
   if (a.threads > 0) omp_set_num_threads(a.threads);
   const aa::StructureAnalyses analyses = analyses_of(a);
@@ -316,7 +224,7 @@ void run_atoms(const AtomsArgs& a) {
   if (a.data_boundary.size() != 3)
     throw InputError(fmt::format("--data-boundary: expected three of p, f, s (e.g. ppf), got '{}'", a.data_boundary));
   for (int d = 0; d < 3; ++d) boundary[d] = geometry::parse_boundary(std::string(1, a.data_boundary[d]), "--data-boundary");
-  const auto files = expand_inputs(a);
+  const auto files = expand_inputs(a.inputs, a.format);
   if (files.empty()) throw InputError("analyze atoms: no input given");
 
   const fs::path out_dir(a.output);
@@ -342,27 +250,16 @@ void run_atoms(const AtomsArgs& a) {
   std::size_t frame_index = 0, total_atoms = 0;
   for (const InputFile& input : files) {
     const std::string source = input.path.string();
-    fs::path name = input.path.filename();
-    if (input.kind == InputKind::data) name.replace_extension(".dump");
-    if (name.extension() == ".gz") name.replace_extension();  // written uncompressed
+    const fs::path name = output_name(input);
     if (fs::exists(out_dir / name) && fs::equivalent(out_dir / name, input.path))
       throw InputError(fmt::format("{}: the output folder holds the input itself; choose another --output", source));
     io::DumpWriter writer(pending.add(name), io::DumpWriteOptions{true});
-    std::vector<io::DumpFrame> dumps;
-    std::vector<aa::AtomFrame> frames;
-    if (input.kind == InputKind::data) {
-      const io::DataFile data = io::read_data(input.path, boundary);
-      dumps.push_back(io::make_dump_frame(0, data.box, data.atoms, {"id", "type", "x", "y", "z"}));
-      dumps.back().source = source;  // messages about the frame name the data file
-      frames.push_back(frame_of_data(data, source));
-    } else {
-      dumps = read_dump_file(input.path);
-      if (dumps.empty()) throw InputError(fmt::format("{}: no frame in the dump file", source));
-    }
+    InputFrames in = read_input(input, boundary);
+    std::vector<io::DumpFrame>& dumps = in.dumps;
     for (std::size_t f = 0; f < dumps.size(); ++f) {
-      const aa::AtomFrame frame = input.kind == InputKind::data ? frames[f] : aa::frame_from_dump(dumps[f], source);
+      const aa::AtomFrame frame = in.frame(f);
       if (frame.size() == 0)
-        throw InputError(fmt::format("{}: the frame of timestep {} has no atoms", source, frame.timestep));
+        throw InputError(fmt::format("{}: the frame of timestep {} has no atoms", in.sources[f], frame.timestep));
       const auto result = aa::analyze_structure(frame, analyses);
       append_columns(dumps[f], result, frame.size());
       if (profiles.profiles() || profiles.excess()) profiles.add(frame_index, frame, result, dumps[f]);
@@ -404,16 +301,17 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       "vectors of fcc dislocations by the Frank scheme of Xu et al. (2015) §3.2.3, FS/RH); with --track,\n"
       "OUTPUT/tracks.csv and OUTPUT/growth.csv (clusters followed in time, growth laws, Fig 72).\n"
       "Inputs: LAMMPS text dumps (one file or several, frames in order; orthogonal boxes; .gz\n"
-      "through gzip, written back uncompressed), LAMMPS data files (atom style atomic), shockfield\n"
-      "MD run folders (their dumps/dump.*.lammpstrj in step order). Outputs appear only when every\n"
-      "input was read and analysed. See docs/analysis-atoms.md.");
-  cmd->add_option("inputs", a->inputs, "Dump files, data files or MD run folders")->required()->check(CLI::ExistingPath);
+      "through gzip, written back uncompressed), LAMMPS data files (atom style atomic), extended XYZ\n"
+      "(ASE/OVITO .xyz/.extxyz, one or many frames, orthogonal Lattice; written back as <stem>.dump),\n"
+      "shockfield MD run folders (their dumps/dump.*.lammpstrj or dump.*.xyz in step order). Outputs\n"
+      "appear only when every input was read and analysed. See docs/analysis-atoms.md.");
+  cmd->add_option("inputs", a->inputs, "Dump files, data files, extended XYZ files or MD run folders")->required()->check(CLI::ExistingPath);
   cmd->add_option("-o,--output", a->output, "Output folder (created if missing)")->capture_default_str();
   cmd->add_option("--format", a->format,
-                  "Input file format: auto (a file whose first line starts with ITEM: is a dump, else a data "
-                  "file), dump or data")
+                  "Input file format: auto (.xyz, .extxyz [.gz]: extended XYZ; else a file whose first line starts "
+                  "with ITEM: is a dump, else a data file), dump, data or extxyz")
       ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "dump", "data"}));
+      ->check(CLI::IsMember({"auto", "dump", "data", "extxyz"}));
   cmd->add_option("--data-boundary", a->data_boundary,
                   "Boundaries of data-file boxes (data files do not store them), one of p f s per axis")
       ->capture_default_str();
