@@ -65,6 +65,21 @@ awk -F, 'NR == 2 { d = 0; for (k = 5; k <= 7; ++k) d += ($k - 14.46) ^ 2; exit !
 grep -q "ITEM: ATOMS id type x y z c_cna c_csp c_coord acna cluster" "$WORK/void/cu_void_300K.dump" || fail "no cluster column"
 echo "ok: void-surface cluster"
 
+# Clusters by excess energy: pe = -3.54 eV (Cu_u3's cohesive energy) everywhere but 0.24 eV more
+# on the atoms within 3 Å of the box centre; excess>0.1 clusters exactly those (auto e0: the median
+# pe of the fcc atoms), excess>0.3 none.
+awk 'NR == 9 { print $0, "pe"; next } NR > 9 { d = ($3 - 7.23) ^ 2 + ($4 - 7.23) ^ 2 + ($5 - 7.23) ^ 2;
+  print $0, (d < 9 ? -3.30 : -3.54); next } { print }' "$F/cu_fcc_perfect.dump" > "$WORK/pe.dump"
+hot=$(awk 'NR > 9 && $NF == -3.30' "$WORK/pe.dump" | wc -l)
+[ "$hot" -gt 5 ] || fail "the hot ball has $hot atoms"
+"$SF" analyze atoms "$WORK/pe.dump" --excess-energy auto --clusters 3.0858 --cluster-select 'excess>0.1' -o "$WORK/ex" > /dev/null
+awk -F, -v n="$hot" 'END { exit !(NR == 2 && $4 == n) }' "$WORK/ex/clusters.csv" || fail "excess clusters: $(cat "$WORK/ex/clusters.csv") ($hot hot atoms)"
+awk '/^ITEM: ATOMS/ { for (k = 1; k <= NF; ++k) if ($k == "excess") e = k - 2; else if ($k == "cluster") c = k - 2; next }
+  e && ($e > 0.1) != ($c == 1) { bad++ } END { exit bad > 0 || !e }' "$WORK/ex/pe.dump" || fail "excess and cluster columns disagree"
+"$SF" analyze atoms "$WORK/pe.dump" --excess-energy -3.54 --clusters 3.0858 --cluster-select 'excess>0.3' -o "$WORK/ex3" > /dev/null
+[ "$(wc -l < "$WORK/ex3/clusters.csv")" -eq 1 ] || fail "excess>0.3 found clusters: $(cat "$WORK/ex3/clusters.csv")"
+echo "ok: clusters by excess energy ($hot atoms at 0.24 eV)"
+
 # rejected PATTERN -- ARGS...: must exit 2 with PATTERN in the message and leave no output folder.
 rejected() { local pattern="$1"; shift 2; analyze_rejected "$pattern" -- atoms "$@"; }
 head -9 "$F/cu_fcc_perfect.dump" > "$WORK/header"
@@ -91,7 +106,9 @@ head -c 800 "$WORK/cu.dump.gz" > "$WORK/cut.dump.gz"  # the whole file is ~1.7 k
 rejected "cut.dump.gz: gzip -dc failed: not a gzip file, or a truncated or corrupt one" -- "$WORK/cut.dump.gz"
 rejected "--csp: expected fcc, bcc or an even neighbour count" -- "$F/cu_fcc_perfect.dump" --csp 7
 rejected "--cluster-select 'cna:hcp': selecting by cna needs --cna" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select cna:hcp
-rejected "expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other)" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select acna:diamond
+rejected "expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), csp>NUMBER or excess>NUMBER" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select acna:diamond
+rejected "--cluster-select 'excess>0.1': selecting by excess needs --excess-energy" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select 'excess>0.1'
+rejected "--cluster-select 'excess>hot': expected excess>NUMBER (eV)" -- "$WORK/pe.dump" --excess-energy auto --clusters 3 --cluster-select 'excess>hot'
 rejected "--clusters and --cluster-select go together" -- "$F/cu_fcc_perfect.dump" --clusters 3
 mkdir -p "$WORK/notrun"
 rejected "notrun: a folder but not a shockfield MD run folder" -- "$WORK/notrun"

@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -52,23 +53,28 @@ struct AtomsArgs {
 };
 
 // --cluster-select: "<cna|acna|bpa>:<structure>[,<structure>...]" (any of them),
-// "<method>:!<structure>[,...]" (none of them) or "csp><value>"; the analysis it reads must be on
-// (acna is switched on by it).
-aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s) {
+// "<method>:!<structure>[,...]" (none of them), "csp><value>" or "excess><value>"; the analysis it
+// reads must be on (acna is switched on by it).
+aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s, bool excess_on) {
   const std::string what = fmt::format("--cluster-select '{}'", spec);
-  if (spec.rfind("csp>", 0) == 0) {
-    if (!s.centro_symmetry) throw InputError(what + ": selecting by csp needs --csp");
+  // csp>VALUE (Å²) and excess>VALUE (eV): a threshold on a per-atom value.
+  for (const auto& [prefix, unit] : {std::pair{std::string("csp>"), "Å²"}, std::pair{std::string("excess>"), "eV"}}) {
+    if (spec.rfind(prefix, 0) != 0) continue;
+    const bool csp = prefix == "csp>";
+    if (csp && !s.centro_symmetry) throw InputError(what + ": selecting by csp needs --csp");
+    if (!csp && !excess_on) throw InputError(what + ": selecting by excess needs --excess-energy");
     double threshold = 0;
     try {
       std::size_t used = 0;
-      threshold = std::stod(spec.substr(4), &used);
-      if (used != spec.size() - 4) throw std::invalid_argument(spec);
+      threshold = std::stod(spec.substr(prefix.size()), &used);
+      if (used != spec.size() - prefix.size() || !std::isfinite(threshold)) throw std::invalid_argument(spec);
     } catch (const std::exception&) {
-      throw InputError(what + ": expected csp>NUMBER (Å²)");
+      throw InputError(fmt::format("{}: expected {}NUMBER ({})", what, prefix, unit));
     }
-    return [threshold](const aa::StructureAnalysisResult& r) {
-      std::vector<bool> out(r.centro_symmetry.size());
-      for (std::size_t i = 0; i < out.size(); ++i) out[i] = r.centro_symmetry[i] > threshold;
+    return [threshold, csp](const aa::StructureAnalysisResult& r) {
+      const std::vector<double>& value = csp ? r.centro_symmetry : r.excess_energy;
+      std::vector<bool> out(value.size());
+      for (std::size_t i = 0; i < out.size(); ++i) out[i] = value[i] > threshold;
       return out;
     };
   }
@@ -77,7 +83,8 @@ aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnaly
   std::string names = colon == std::string::npos ? "" : spec.substr(colon + 1);
   const bool negate = !names.empty() && names[0] == '!';
   if (negate) names.erase(0, 1);
-  const std::string expected = what + ": expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), or csp>NUMBER";
+  const std::string expected =
+      what + ": expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), csp>NUMBER or excess>NUMBER";
   if (method != "cna" && method != "acna" && method != "bpa") throw InputError(expected);
   std::vector<aa::Structure> listed;  // the structures named (a comma-separated list)
   for (std::size_t begin = 0; begin <= names.size();) {
@@ -112,7 +119,7 @@ aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   if (a.clusters.has_value() != !a.cluster_select.empty())
     throw InputError("--clusters and --cluster-select go together: the cutoff and which atoms to cluster");
   if (a.clusters) {
-    s.select = parse_selection(a.cluster_select, s);
+    s.select = parse_selection(a.cluster_select, s, !a.profile.excess_energy.empty());
     s.clusters = aa::DefectClusters{*a.clusters, a.cluster_min_size};
   }
   return s;
@@ -219,7 +226,7 @@ class PendingOutputs {
 
 void run_atoms(const AtomsArgs& a) {
   if (a.threads > 0) omp_set_num_threads(a.threads);
-  const aa::StructureAnalyses analyses = analyses_of(a);
+  aa::StructureAnalyses analyses = analyses_of(a);
   std::array<geometry::Boundary, 3> boundary{};
   if (a.data_boundary.size() != 3)
     throw InputError(fmt::format("--data-boundary: expected three of p, f, s (e.g. ppf), got '{}'", a.data_boundary));
@@ -235,6 +242,12 @@ void run_atoms(const AtomsArgs& a) {
   VoidOutput voids(a.voids, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
   ProfileOutput profiles(a.profile, analyses);
   if (profiles.profiles()) profiles.open(pending.add("profiles.csv"));
+  const aa::AtomFrame* current_frame = nullptr;  // the frame being analysed and its dump: the excess
+  const io::DumpFrame* current_dump = nullptr;   // energy's pe column
+  if (profiles.excess())
+    analyses.excess_energy = [&](const aa::StructureAnalysisResult& r) {
+      return profiles.excess_energy(*current_frame, r, *current_dump);
+    };
   std::optional<TrackOutput> tracks;
   fs::path tracks_file, growth_file;
   if (a.track.track) {
@@ -260,6 +273,8 @@ void run_atoms(const AtomsArgs& a) {
       const aa::AtomFrame frame = in.frame(f);
       if (frame.size() == 0)
         throw InputError(fmt::format("{}: the frame of timestep {} has no atoms", in.sources[f], frame.timestep));
+      current_frame = &frame;
+      current_dump = &dumps[f];
       const auto result = aa::analyze_structure(frame, analyses);
       append_columns(dumps[f], result, frame.size());
       if (profiles.profiles() || profiles.excess()) profiles.add(frame_index, frame, result, dumps[f]);
@@ -332,8 +347,8 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--cluster-select", a->cluster_select,
                   "Which atoms to cluster: cna|acna|bpa:TYPE[,TYPE...] (any of them) or :!TYPE[,TYPE...] (none of "
-                  "them; TYPE fcc hcp bcc ico other), or csp>VALUE (Å²); e.g. acna:hcp, acna:!fcc, acna:!fcc,hcp "
-                  "(dislocation cores)");
+                  "them; TYPE fcc hcp bcc ico other), csp>VALUE (Å²) or excess>VALUE (eV, with --excess-energy); "
+                  "e.g. acna:hcp, acna:!fcc, acna:!fcc,hcp (dislocation cores), excess>0.1");
   cmd->add_option("--cluster-min-size", a->cluster_min_size, "Drop clusters with fewer atoms")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

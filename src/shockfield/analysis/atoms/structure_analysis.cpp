@@ -1,5 +1,7 @@
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 
+#include <fmt/format.h>
+
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::analysis::atoms {
@@ -33,6 +35,12 @@ StructureAnalysisResult analyze_structure(const AtomFrame& frame, const Structur
   if (analyses.adaptive_cna) out.adaptive_cna = analyses.adaptive_cna->compute(frame, table);
   if (analyses.centro_symmetry) out.centro_symmetry = analyses.centro_symmetry->compute(frame, table);
   if (analyses.bond_pairs) out.bond_pairs = analyses.bond_pairs->compute(frame, table);
+  if (analyses.excess_energy) {
+    out.excess_energy = analyses.excess_energy(out);
+    if (out.excess_energy.size() != frame.size())
+      throw InputError(fmt::format("structure analysis: {} excess energies for {} atoms", out.excess_energy.size(),
+                                   frame.size()));
+  }
   if (analyses.clusters) out.clusters = analyses.clusters->compute(frame, table, analyses.select(out));
   return out;
 }

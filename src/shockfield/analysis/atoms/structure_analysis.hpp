@@ -17,6 +17,9 @@ struct StructureAnalysisResult;
 
 /// Which atoms to cluster, from the other analyses' results (one flag per atom).
 using ClusterSelection = std::function<std::vector<bool>(const StructureAnalysisResult&)>;
+/// Per-atom excess energy (eV) from the analyses' results — the caller's potential energies less
+/// a reference that may depend on the structures (the median pe of the crystal atoms).
+using ExcessEnergySource = std::function<std::vector<double>(const StructureAnalysisResult&)>;
 
 struct StructureAnalyses {
   std::optional<Coordination> coordination;
@@ -24,6 +27,9 @@ struct StructureAnalyses {
   std::optional<AdaptiveCna> adaptive_cna;
   std::optional<CentroSymmetry> centro_symmetry;
   std::optional<BondPairAnalysis> bond_pairs;
+  /// Per-atom excess energy, computed after the analyses above and before the clusters (so that
+  /// `select` can pick atoms by it); empty: none.
+  ExcessEnergySource excess_energy;
   /// Clusters of the atoms `select` picks, computed after the analyses above on the same table.
   std::optional<DefectClusters> clusters;
   ClusterSelection select;
@@ -41,6 +47,7 @@ struct StructureAnalysisResult {
   std::optional<StructureResult> adaptive_cna;
   std::vector<double> centro_symmetry;      ///< empty unless asked for
   std::optional<BondPairResult> bond_pairs;
+  std::vector<double> excess_energy;        ///< eV; empty unless an excess_energy source is given
   std::optional<ClusterResult> clusters;
   std::size_t neighbor_table_bytes = 0;
 };
