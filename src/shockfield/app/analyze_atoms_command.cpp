@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
+#include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/app/analyze_atoms_burgers.hpp"
 #include "shockfield/app/analyze_atoms_inputs.hpp"
 #include "shockfield/app/analyze_atoms_profiles.hpp"
@@ -125,27 +126,6 @@ aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   return s;
 }
 
-std::vector<double> codes(const std::vector<aa::Structure>& s) {
-  std::vector<double> out(s.size());
-  std::transform(s.begin(), s.end(), out.begin(), [](aa::Structure t) { return double(aa::structure_code(t)); });
-  return out;
-}
-
-// Appends the per-atom results to the dump frame as columns coord, cna, acna, csp, bpa.
-void append_columns(io::DumpFrame& dump, const aa::StructureAnalysisResult& r, std::size_t natoms) {
-  if (natoms == 0) return;
-  if (!r.coordination.empty()) dump.set_column("coord", {r.coordination.begin(), r.coordination.end()});
-  if (r.cna) dump.set_column("cna", codes(r.cna->structure));
-  if (r.adaptive_cna) dump.set_column("acna", codes(r.adaptive_cna->structure));
-  if (!r.centro_symmetry.empty()) dump.set_column("csp", r.centro_symmetry);
-  if (r.bond_pairs) dump.set_column("bpa", codes(r.bond_pairs->structure));
-  if (r.clusters) {
-    std::vector<double> cluster(natoms);
-    for (std::size_t i = 0; i < natoms; ++i) cluster[i] = r.clusters->cluster_of[i] + 1;
-    dump.set_column("cluster", std::move(cluster));
-  }
-}
-
 // clusters.csv: one row per cluster per frame.
 const std::vector<std::string> kClusterColumns{
     "frame", "timestep", "cluster", "size", "x", "y", "z", "a", "b", "c", "axis1_x", "axis1_y", "axis1_z",
@@ -165,29 +145,17 @@ void write_clusters(io::CsvWriter& out, std::size_t frame, long long timestep, c
   }
 }
 
-// structures.csv columns: frame, timestep, atoms, then <method>_<structure> counts and
-// <method>_<structure>_fraction for each structure method asked for (cna, acna, bpa).
+// structures.csv: frame, timestep, atoms, then the counts and fractions of each structure method.
 std::vector<std::string> summary_columns(const aa::StructureAnalyses& s) {
   std::vector<std::string> columns{"frame", "timestep", "atoms"};
-  for (const auto& [method, on] : {std::pair{"cna", s.cna.has_value()}, std::pair{"acna", s.adaptive_cna.has_value()},
-                                   std::pair{"bpa", s.bond_pairs.has_value()}}) {
-    if (!on) continue;
-    for (aa::Structure t : aa::kStructures) columns.push_back(fmt::format("{}_{}", method, aa::structure_name(t)));
-    for (aa::Structure t : aa::kStructures) columns.push_back(fmt::format("{}_{}_fraction", method, aa::structure_name(t)));
-  }
+  for (std::string& c : aa::structure_count_columns(s)) columns.push_back(std::move(c));
   return columns;
 }
 
 std::vector<double> summary_row(std::size_t frame, long long timestep, std::size_t natoms,
                                 const aa::StructureAnalysisResult& r) {
   std::vector<double> row{double(frame), double(timestep), double(natoms)};
-  auto add = [&row](const aa::StructureCounts& counts) {
-    for (aa::Structure t : aa::kStructures) row.push_back(double(counts.of(t)));
-    for (aa::Structure t : aa::kStructures) row.push_back(counts.fraction(t));
-  };
-  if (r.cna) add(r.cna->counts);
-  if (r.adaptive_cna) add(r.adaptive_cna->counts);
-  if (r.bond_pairs) add(r.bond_pairs->counts);
+  for (double v : aa::structure_count_values(r)) row.push_back(v);
   return row;
 }
 
@@ -276,7 +244,7 @@ void run_atoms(const AtomsArgs& a) {
       current_frame = &frame;
       current_dump = &dumps[f];
       const auto result = aa::analyze_structure(frame, analyses);
-      append_columns(dumps[f], result, frame.size());
+      aa::append_structure_columns(dumps[f], result, frame.size());
       if (profiles.profiles() || profiles.excess()) profiles.add(frame_index, frame, result, dumps[f]);
       if (voids.on()) voids.add(frame_index, frame);
       if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);

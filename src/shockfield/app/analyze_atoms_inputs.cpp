@@ -117,12 +117,7 @@ InputFrames read_input(const InputFile& input, const std::array<geometry::Bounda
     out.dumps.push_back(io::make_dump_frame(0, data.box, data.atoms, {"id", "type", "x", "y", "z"}));
     out.dumps.back().source = source;  // messages about the frame name the data file
     out.sources.push_back(source);
-    aa::AtomFrame frame;
-    frame.box = data.box;
-    frame.positions.assign(data.atoms.x.begin(), data.atoms.x.begin() + static_cast<std::ptrdiff_t>(data.atoms.nlocal));
-    for (std::size_t i = 0; i < data.atoms.nlocal; ++i) frame.types.push_back(data.atoms.type[i] + 1);
-    frame.ids = data.atoms.id;
-    aa::validate_frame(frame, source);
+    aa::AtomFrame frame = aa::frame_from_atoms(0, data.box, data.atoms, source);
     out.data_frame = std::move(frame);
     return out;
   }
