@@ -8,7 +8,8 @@
                             [--frame K]
       the atoms of a slice |r_axis - POS| < W/2 (default: the box middle, W = 3 A) of frame K
       (default the last) of an annotated dump, coloured by structure type (column acna, else cna,
-      bpa, or NAME; LAMMPS cna/atom codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other)
+      bpa, or NAME; LAMMPS cna/atom codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other; for dia the diamond
+      codes 0 other, 1 cubic, 2-3 its first and second neighbours, 4 hexagonal, 5-6 its neighbours)
       -> DUMP without its extension + _slice.png
 
 Each prints what it drew (frames and methods; atoms per type in the slice), so tests can check
@@ -28,7 +29,11 @@ import numpy as np  # noqa: E402
 STRUCTURES = ["fcc", "hcp", "bcc", "ico", "other"]
 # OVITO's colours of the types (fcc green, hcp red, bcc blue, ico yellow, other grey).
 COLOURS = {"fcc": "#66cc66", "hcp": "#ff4d4d", "bcc": "#6680ff", "ico": "#e6cc1a", "other": "#bfbfbf"}
-METHODS = {"cna": "conventional CNA", "acna": "adaptive CNA", "bpa": "bond pairs"}
+# The dia column (OVITO's Identify diamond structure codes 0 other, 1-6).
+DIAMOND = ["other", "cubic", "cubic_first", "cubic_second", "hexagonal", "hexagonal_first", "hexagonal_second"]
+DIAMOND_COLOURS = {"other": "#bfbfbf", "cubic": "#1966ff", "cubic_first": "#3399ff", "cubic_second": "#80c0ff",
+                   "hexagonal": "#ff8c1a", "hexagonal_first": "#ffb366", "hexagonal_second": "#ffd9b3"}
+METHODS = {"cna": "conventional CNA", "acna": "adaptive CNA", "bpa": "bond pairs", "dia": "diamond"}
 
 
 def structures(folder, out):
@@ -45,15 +50,16 @@ def structures(folder, out):
     x, xlabel = (col["time_ps"], "time (ps)") if "time_ps" in col else (col["timestep"], "timestep")
     if len(x) > 1 and not np.all(np.diff(x) > 0):  # frames of one timestep (separate samples)
         x, xlabel = col["frame"], "frame"
-    methods = [m for m in METHODS if f"{m}_fcc_fraction" in col]
+    methods = [m for m in METHODS if f"{m}_fcc_fraction" in col or f"{m}_cubic_fraction" in col]
     if not methods:
         sys.exit(f"{path}: no <method>_<structure>_fraction columns")
     fig, axes = plt.subplots(len(methods), 1, figsize=(7, 3.2 * len(methods)), sharex=True, squeeze=False)
     for ax, m in zip(axes[:, 0], methods):
-        for s in STRUCTURES:
+        names, colours = (DIAMOND[1:] + DIAMOND[:1], DIAMOND_COLOURS) if m == "dia" else (STRUCTURES, COLOURS)
+        for s in names:
             y = col[f"{m}_{s}_fraction"]
             if np.any(y > 0):
-                ax.plot(x, y, "o-", ms=3, color=COLOURS[s], label=s)
+                ax.plot(x, y, "o-", ms=3, color=colours[s], label=s)
         ax.set_ylabel(f"fraction ({METHODS[m]})")
         ax.set_ylim(-0.02, 1.02)
         ax.legend(fontsize=8, loc="best")
@@ -99,11 +105,13 @@ def slice_plot(dump, out, axis, at, thickness, column, frame):
     codes = col[name][inside].round().astype(int)
     fig, ax = plt.subplots(figsize=(6.5, 6.5 * (hi[v] - lo[v]) / max(hi[u] - lo[u], 1e-9) + 0.8))
     counts = []
-    for code, s in enumerate(STRUCTURES, start=1):
+    types = list(enumerate(DIAMOND)) if name == "dia" else list(enumerate(STRUCTURES, start=1))
+    colours = DIAMOND_COLOURS if name == "dia" else COLOURS
+    for code, s in types:
         sel = codes == code
         counts.append(f"{s} {int(sel.sum())}")
         if sel.any():
-            ax.scatter(pos[inside][sel, u], pos[inside][sel, v], s=14, color=COLOURS[s], label=f"{s} ({sel.sum()})",
+            ax.scatter(pos[inside][sel, u], pos[inside][sel, v], s=14, color=colours[s], label=f"{s} ({sel.sum()})",
                        edgecolors="k", linewidths=0.2)
     ax.set_xlim(lo[u], hi[u])
     ax.set_ylim(lo[v], hi[v])

@@ -80,6 +80,24 @@ awk '/^ITEM: ATOMS/ { for (k = 1; k <= NF; ++k) if ($k == "excess") e = k - 2; e
 [ "$(wc -l < "$WORK/ex3/clusters.csv")" -eq 1 ] || fail "excess>0.3 found clusters: $(cat "$WORK/ex3/clusters.csv")"
 echo "ok: clusters by excess energy ($hot atoms at 0.24 eV)"
 
+# Diamond: cubic diamond Si (3x3x3 cells, 216 atoms) all "cubic" (dia = 1), and no diamond in fcc Cu.
+awk 'BEGIN { a = 5.431; n = 0
+  split("0 0 0 0 .5 .5 .5 0 .5 .5 .5 0 .25 .25 .25 .25 .75 .75 .75 .25 .75 .75 .75 .25", b, " ")
+  for (i = 0; i < 3; ++i) for (j = 0; j < 3; ++j) for (k = 0; k < 3; ++k) for (s = 0; s < 8; ++s)
+    row[++n] = sprintf("%d 1 %.10g %.10g %.10g", n, (i + b[3*s+1]) * a, (j + b[3*s+2]) * a, (k + b[3*s+3]) * a)
+  printf "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS pp pp pp\n", n
+  for (d = 0; d < 3; ++d) printf "0 %.10g\n", 3 * a
+  print "ITEM: ATOMS id type x y z"; for (m = 1; m <= n; ++m) print row[m] }' > "$WORK/si.dump"
+"$SF" analyze atoms "$WORK/si.dump" "$F/cu_fcc_perfect.dump" --diamond --adaptive-cna -o "$WORK/dia" > /dev/null
+head -1 "$WORK/dia/structures.csv" | grep -q ",dia_cubic,dia_cubic_first,dia_cubic_second,dia_hexagonal,dia_hexagonal_first,dia_hexagonal_second,dia_other," \
+  || fail "dia columns: $(head -1 "$WORK/dia/structures.csv")"
+awk -F, 'NR == 1 { for (k = 1; k <= NF; ++k) c[$k] = k; next }
+  NR == 2 && !($c["dia_cubic"] == 216 && $c["acna_other"] == 216) { exit 1 }
+  NR == 3 && !($c["dia_other"] == 256 && $c["acna_fcc"] == 256) { exit 1 }' "$WORK/dia/structures.csv" \
+  || fail "diamond counts: $(cat "$WORK/dia/structures.csv")"
+awk 'NR > 9 && $NF != 1 { bad++ } END { exit bad > 0 }' "$WORK/dia/si.dump" || fail "si.dump: dia column not all 1"
+echo "ok: diamond: 216 cubic-diamond Si atoms, no diamond in fcc Cu"
+
 # rejected PATTERN -- ARGS...: must exit 2 with PATTERN in the message and leave no output folder.
 rejected() { local pattern="$1"; shift 2; analyze_rejected "$pattern" -- atoms "$@"; }
 head -9 "$F/cu_fcc_perfect.dump" > "$WORK/header"

@@ -42,6 +42,7 @@ struct AtomsArgs {
   std::string data_boundary = "ppp";
   std::optional<double> coordination, cna, bond_pairs;
   bool adaptive_cna = false;
+  bool diamond = false;
   std::string csp;
   std::optional<double> clusters;
   std::string cluster_select;
@@ -116,6 +117,7 @@ aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   if (a.cna) s.cna = aa::ConventionalCna{*a.cna};
   if (a.bond_pairs) s.bond_pairs = aa::BondPairAnalysis{*a.bond_pairs};
   if (!a.csp.empty()) s.centro_symmetry = aa::CentroSymmetry{aa::CentroSymmetry::parse_neighbors(a.csp, "--csp")};
+  if (a.diamond) s.diamond = aa::DiamondCna{};
   if (a.adaptive_cna || s.empty()) s.adaptive_cna = aa::AdaptiveCna{};
   if (a.clusters.has_value() != !a.cluster_select.empty())
     throw InputError("--clusters and --cluster-select go together: the cutoff and which atoms to cluster");
@@ -304,6 +306,11 @@ void add_analyze_atoms_command(CLI::App& analyze) {
                   "Conventional CNA with this cutoff (Å), as LAMMPS cna/atom: 0.854 a for fcc, 1.207 a for bcc")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--adaptive-cna", a->adaptive_cna, "Adaptive CNA (no cutoff; the default analysis)");
+  cmd->add_flag("--diamond", a->diamond,
+                "Cubic and hexagonal diamond (Maras et al. 2016, as OVITO's Identify diamond structure): adaptive CNA "
+                "of the second neighbours -> column dia (0 other, 1 cubic, 2 cubic first neighbour, 3 cubic second "
+                "neighbour, 4 hexagonal, 5 and 6 its first and second neighbours) and dia_* columns of "
+                "structures.csv");
   cmd->add_option("--csp", a->csp, "Centro-symmetry parameter with N neighbours: fcc (12), bcc (8) or an even N");
   cmd->add_option("--bond-pairs", a->bond_pairs,
                   "Atom type from Honeycutt-Andersen bond-pair indices of bonds shorter than this cutoff (Å)")

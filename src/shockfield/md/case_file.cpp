@@ -136,13 +136,13 @@ StageSpec read_stage(const Config& t, std::size_t index) {
 AnalysisSpec read_analysis(const Config& t) {
   AnalysisSpec a;
   a.every = t.get_int("every", Range::closed(1, 1e12));
-  static const std::vector<std::string> known{"acna", "cna", "csp", "coordination", "bpa"};
+  static const std::vector<std::string> known{"acna", "cna", "csp", "coordination", "bpa", "diamond"};
   if (t.has("methods")) a.methods = t.get_strings("methods");
-  if (a.methods.empty()) t.fail("methods", "at least one of \"acna\", \"cna\", \"csp\", \"coordination\", \"bpa\"");
+  if (a.methods.empty()) t.fail("methods", "at least one of \"acna\", \"cna\", \"csp\", \"coordination\", \"bpa\", \"diamond\"");
   for (std::size_t k = 0; k < a.methods.size(); ++k) {
     const std::string& m = a.methods[k];
     if (std::find(known.begin(), known.end(), m) == known.end())
-      t.fail("methods", fmt::format("one of \"acna\", \"cna\", \"csp\", \"coordination\", \"bpa\"; got \"{}\"", m));
+      t.fail("methods", fmt::format("one of \"acna\", \"cna\", \"csp\", \"coordination\", \"bpa\", \"diamond\"; got \"{}\"", m));
     if (std::find(a.methods.begin(), a.methods.begin() + static_cast<std::ptrdiff_t>(k), m) != a.methods.begin() + static_cast<std::ptrdiff_t>(k))
       t.fail("methods", fmt::format("each method once; \"{}\" is listed twice", m));
   }

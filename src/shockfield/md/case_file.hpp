@@ -48,7 +48,7 @@ struct VelocityAdd {
 /// `every` steps, into structures.csv and optionally the dumps.
 struct AnalysisSpec {
   long long every = 0;                       ///< steps; 0: no [analysis] table
-  std::vector<std::string> methods{"acna"};  ///< of acna, cna, csp, coordination, bpa
+  std::vector<std::string> methods{"acna"};  ///< of acna, cna, csp, coordination, bpa, diamond
   double cutoff = 0;                         ///< Å: cna, coordination, bpa
   int csp_neighbors = 12;                    ///< N of the centro-symmetry parameter
   bool dump_columns = false;                 ///< the per-atom columns in every dump frame

@@ -10,6 +10,7 @@
 #include "shockfield/analysis/atoms/common_neighbor_analysis.hpp"
 #include "shockfield/analysis/atoms/coordination.hpp"
 #include "shockfield/analysis/atoms/defect_clusters.hpp"
+#include "shockfield/analysis/atoms/diamond_structure.hpp"
 
 namespace shockfield::analysis::atoms {
 
@@ -27,6 +28,7 @@ struct StructureAnalyses {
   std::optional<AdaptiveCna> adaptive_cna;
   std::optional<CentroSymmetry> centro_symmetry;
   std::optional<BondPairAnalysis> bond_pairs;
+  std::optional<DiamondCna> diamond;
   /// Per-atom excess energy, computed after the analyses above and before the clusters (so that
   /// `select` can pick atoms by it); empty: none.
   ExcessEnergySource excess_energy;
@@ -35,7 +37,7 @@ struct StructureAnalyses {
   ClusterSelection select;
 
   bool empty() const {
-    return !coordination && !cna && !adaptive_cna && !centro_symmetry && !bond_pairs;
+    return !coordination && !cna && !adaptive_cna && !centro_symmetry && !bond_pairs && !diamond;
   }
   /// The neighbour request that serves every analysis asked for.
   NeighborRequest request() const;
@@ -47,6 +49,7 @@ struct StructureAnalysisResult {
   std::optional<StructureResult> adaptive_cna;
   std::vector<double> centro_symmetry;      ///< empty unless asked for
   std::optional<BondPairResult> bond_pairs;
+  std::optional<DiamondResult> diamond;
   std::vector<double> excess_energy;        ///< eV; empty unless an excess_energy source is given
   std::optional<ClusterResult> clusters;
   std::size_t neighbor_table_bytes = 0;

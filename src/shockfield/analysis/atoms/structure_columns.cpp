@@ -23,6 +23,11 @@ void append_structure_columns(io::DumpFrame& dump, const StructureAnalysisResult
   if (r.adaptive_cna) dump.set_column("acna", codes(r.adaptive_cna->structure));
   if (!r.centro_symmetry.empty()) dump.set_column("csp", r.centro_symmetry);
   if (r.bond_pairs) dump.set_column("bpa", codes(r.bond_pairs->structure));
+  if (r.diamond) {
+    std::vector<double> dia(natoms);
+    for (std::size_t i = 0; i < natoms; ++i) dia[i] = static_cast<double>(r.diamond->structure[i]);
+    dump.set_column("dia", std::move(dia));
+  }
   if (r.clusters) {
     std::vector<double> cluster(natoms);
     for (std::size_t i = 0; i < natoms; ++i) cluster[i] = r.clusters->cluster_of[i] + 1;
@@ -38,6 +43,11 @@ std::vector<std::string> structure_count_columns(const StructureAnalyses& s) {
     for (Structure t : kStructures) columns.push_back(fmt::format("{}_{}", method, structure_name(t)));
     for (Structure t : kStructures) columns.push_back(fmt::format("{}_{}_fraction", method, structure_name(t)));
   }
+  if (s.diamond) {
+    for (DiamondStructure t : kDiamondStructures) columns.push_back(fmt::format("dia_{}", diamond_structure_name(t)));
+    for (DiamondStructure t : kDiamondStructures)
+      columns.push_back(fmt::format("dia_{}_fraction", diamond_structure_name(t)));
+  }
   return columns;
 }
 
@@ -50,6 +60,10 @@ std::vector<double> structure_count_values(const StructureAnalysisResult& r) {
   if (r.cna) add(r.cna->counts);
   if (r.adaptive_cna) add(r.adaptive_cna->counts);
   if (r.bond_pairs) add(r.bond_pairs->counts);
+  if (r.diamond) {
+    for (DiamondStructure t : kDiamondStructures) row.push_back(double(r.diamond->of(t)));
+    for (DiamondStructure t : kDiamondStructures) row.push_back(r.diamond->fraction(t));
+  }
   return row;
 }
 

@@ -17,6 +17,7 @@ StructureDiagnostic::StructureDiagnostic(const AnalysisSpec& spec) {
     if (m == "csp") analyses_.centro_symmetry = aa::CentroSymmetry{spec.csp_neighbors};
     if (m == "coordination") analyses_.coordination = aa::Coordination{spec.cutoff};
     if (m == "bpa") analyses_.bond_pairs = aa::BondPairAnalysis{spec.cutoff};
+    if (m == "diamond") analyses_.diamond = aa::DiamondCna{};
   }
 }
 
