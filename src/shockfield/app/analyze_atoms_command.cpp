@@ -1,9 +1,10 @@
 // `shockfield analyze atoms`: per-atom structure of atoms from LAMMPS dumps, LAMMPS data files,
-// extended XYZ files or shockfield MD run folders — coordination, conventional CNA (LAMMPS cna/atom), adaptive CNA
-// (Stukowski 2012), centro-symmetry (Kelchner et al. 1998) and bond-pair types (Honeycutt &
-// Andersen 1987), all over one neighbour pass per frame (analysis/atoms/). Writes each input's
-// frames again with the per-atom results appended as columns (OVITO colours by them) and
-// structures.csv with the counts and fractions per structure per frame. Docs: docs/analysis-atoms.md.
+// extended XYZ files or shockfield MD run folders — coordination, conventional CNA (LAMMPS
+// cna/atom), adaptive CNA (Stukowski 2012), centro-symmetry (Kelchner et al. 1998), bond-pair
+// types (Honeycutt & Andersen 1987) and diamond structures (Maras et al. 2016), all over one
+// neighbour pass per frame (analysis/atoms/). Writes each input's frames again with the per-atom
+// results appended as columns (OVITO colours by them) and structures.csv with the counts and
+// fractions per structure per frame. Docs: docs/analysis-atoms.md.
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -277,8 +278,9 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       "Per-atom structure of atoms (Xu et al. (2015) §3.2.3, §4.4): coordination, conventional CNA\n"
       "(LAMMPS cna/atom codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other), adaptive CNA without a cutoff\n"
       "(Stukowski 2012, the same codes), centro-symmetry parameter (Kelchner et al. 1998, LAMMPS\n"
-      "centro/atom's pairing) and the atom type from Honeycutt-Andersen bond pairs, all from one\n"
-      "neighbour pass per frame. With no analysis option, adaptive CNA. Writes OUTPUT/<input name>\n"
+      "centro/atom's pairing), the atom type from Honeycutt-Andersen bond pairs and cubic/hexagonal\n"
+      "diamond (Maras et al. 2016), all from one neighbour pass per frame. With no analysis option,\n"
+      "adaptive CNA. Writes OUTPUT/<input name>\n"
       "(each input's frames with the results appended as columns coord, cna, acna, csp, bpa, cluster;\n"
       "a data file becomes <stem>.dump), OUTPUT/structures.csv (frame, timestep, atoms, then per\n"
       "method the count and fraction of each structure) and, with --clusters, OUTPUT/clusters.csv\n"
