@@ -96,7 +96,14 @@ awk -F, 'NR == 1 { for (k = 1; k <= NF; ++k) c[$k] = k; next }
   NR == 3 && !($c["dia_other"] == 256 && $c["acna_fcc"] == 256) { exit 1 }' "$WORK/dia/structures.csv" \
   || fail "diamond counts: $(cat "$WORK/dia/structures.csv")"
 awk 'NR > 9 && $NF != 1 { bad++ } END { exit bad > 0 }' "$WORK/dia/si.dump" || fail "si.dump: dia column not all 1"
-echo "ok: diamond: 216 cubic-diamond Si atoms, no diamond in fcc Cu"
+# A vacancy in Si: --cluster-select 'dia:!cubic' (connected within 4 Å, past the second-neighbour
+# distance 3.84 Å) gives one cluster, exactly the atoms not cubic.
+awk 'NR == 4 { print $1 - 1; next } NR > 9 && $1 == 100 { next } { print }' "$WORK/si.dump" > "$WORK/si_vacancy.dump"
+"$SF" analyze atoms "$WORK/si_vacancy.dump" --clusters 4 --cluster-select 'dia:!cubic' -o "$WORK/diavac" > /dev/null
+noncubic=$(awk 'NR == 9 { for (k = 3; k <= NF; ++k) if ($k == "dia") c = k - 2 } NR > 9 && $c != 1' "$WORK/diavac/si_vacancy.dump" | wc -l)
+awk -F, -v n="$noncubic" 'END { exit !(NR == 2 && $4 == n && n >= 4) }' "$WORK/diavac/clusters.csv" \
+  || fail "vacancy cluster: $(cat "$WORK/diavac/clusters.csv") ($noncubic non-cubic atoms)"
+echo "ok: diamond: 216 cubic-diamond Si atoms, no diamond in fcc Cu; a vacancy: one cluster of $noncubic non-cubic atoms"
 
 # rejected PATTERN -- ARGS...: must exit 2 with PATTERN in the message and leave no output folder.
 rejected() { local pattern="$1"; shift 2; analyze_rejected "$pattern" -- atoms "$@"; }
@@ -124,7 +131,8 @@ head -c 800 "$WORK/cu.dump.gz" > "$WORK/cut.dump.gz"  # the whole file is ~1.7 k
 rejected "cut.dump.gz: gzip -dc failed: not a gzip file, or a truncated or corrupt one" -- "$WORK/cut.dump.gz"
 rejected "--csp: expected fcc, bcc or an even neighbour count" -- "$F/cu_fcc_perfect.dump" --csp 7
 rejected "--cluster-select 'cna:hcp': selecting by cna needs --cna" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select cna:hcp
-rejected "expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), csp>NUMBER or excess>NUMBER" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select acna:diamond
+rejected "expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), dia:[!]TYPE" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select acna:diamond
+rejected "(TYPE cubic cubic_first cubic_second hexagonal hexagonal_first hexagonal_second other)" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select dia:fcc
 rejected "--cluster-select 'excess>0.1': selecting by excess needs --excess-energy" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select 'excess>0.1'
 rejected "--cluster-select 'excess>hot': expected excess>NUMBER (eV)" -- "$WORK/pe.dump" --excess-energy auto --clusters 3 --cluster-select 'excess>hot'
 rejected "--clusters and --cluster-select go together" -- "$F/cu_fcc_perfect.dump" --clusters 3

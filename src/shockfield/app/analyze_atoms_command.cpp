@@ -56,8 +56,8 @@ struct AtomsArgs {
 };
 
 // --cluster-select: "<cna|acna|bpa>:<structure>[,<structure>...]" (any of them),
-// "<method>:!<structure>[,...]" (none of them), "csp><value>" or "excess><value>"; the analysis it
-// reads must be on (acna is switched on by it).
+// "<method>:!<structure>[,...]" (none of them), "dia:[!]<diamond type>[,...]", "csp><value>" or
+// "excess><value>"; the analysis it reads must be on (acna and dia are switched on by it).
 aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s, bool excess_on) {
   const std::string what = fmt::format("--cluster-select '{}'", spec);
   // csp>VALUE (Å²) and excess>VALUE (eV): a threshold on a per-atom value.
@@ -86,28 +86,42 @@ aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnaly
   std::string names = colon == std::string::npos ? "" : spec.substr(colon + 1);
   const bool negate = !names.empty() && names[0] == '!';
   if (negate) names.erase(0, 1);
-  const std::string expected =
-      what + ": expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), csp>NUMBER or excess>NUMBER";
-  if (method != "cna" && method != "acna" && method != "bpa") throw InputError(expected);
-  std::vector<aa::Structure> listed;  // the structures named (a comma-separated list)
-  for (std::size_t begin = 0; begin <= names.size();) {
-    const std::size_t end = std::min(names.find(',', begin), names.size());
-    const std::string name = names.substr(begin, end - begin);
-    const auto structure = std::find_if(aa::kStructures.begin(), aa::kStructures.end(),
-                                        [&](aa::Structure t) { return aa::structure_name(t) == name; });
-    if (structure == aa::kStructures.end()) throw InputError(expected);
-    listed.push_back(*structure);
-    begin = end + 1;
-  }
+  const std::string expected = what +
+                               ": expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), "
+                               "dia:[!]TYPE[,TYPE...] (TYPE cubic cubic_first cubic_second hexagonal hexagonal_first "
+                               "hexagonal_second other), csp>NUMBER or excess>NUMBER";
+  if (method != "cna" && method != "acna" && method != "bpa" && method != "dia") throw InputError(expected);
+  // The codes named (a comma-separated list of the method's type names).
+  const auto listed_codes = [&](const auto& all, const auto& name_of) {
+    std::vector<int> listed;
+    for (std::size_t begin = 0; begin <= names.size();) {
+      const std::size_t end = std::min(names.find(',', begin), names.size());
+      const std::string name = names.substr(begin, end - begin);
+      const auto t = std::find_if(all.begin(), all.end(), [&](auto x) { return name_of(x) == name; });
+      if (t == all.end()) throw InputError(expected);
+      listed.push_back(static_cast<int>(*t));
+      begin = end + 1;
+    }
+    return listed;
+  };
+  const std::vector<int> listed = method == "dia" ? listed_codes(aa::kDiamondStructures, aa::diamond_structure_name)
+                                                  : listed_codes(aa::kStructures, aa::structure_name);
   if (method == "cna" && !s.cna) throw InputError(what + ": selecting by cna needs --cna");
   if (method == "bpa" && !s.bond_pairs) throw InputError(what + ": selecting by bpa needs --bond-pairs");
   if (method == "acna") s.adaptive_cna = aa::AdaptiveCna{};
+  if (method == "dia") s.diamond = aa::DiamondCna{};
   return [method, listed, negate](const aa::StructureAnalysisResult& r) {
-    const auto& types = method == "cna" ? r.cna->structure : method == "acna" ? r.adaptive_cna->structure
-                                                                             : r.bond_pairs->structure;
-    std::vector<bool> out(types.size());
+    std::vector<int> codes;
+    if (method == "dia") {
+      for (aa::DiamondStructure t : r.diamond->structure) codes.push_back(static_cast<int>(t));
+    } else {
+      const auto& types = method == "cna" ? r.cna->structure : method == "acna" ? r.adaptive_cna->structure
+                                                                               : r.bond_pairs->structure;
+      for (aa::Structure t : types) codes.push_back(static_cast<int>(t));
+    }
+    std::vector<bool> out(codes.size());
     for (std::size_t i = 0; i < out.size(); ++i)
-      out[i] = (std::find(listed.begin(), listed.end(), types[i]) != listed.end()) != negate;
+      out[i] = (std::find(listed.begin(), listed.end(), codes[i]) != listed.end()) != negate;
     return out;
   };
 }
@@ -324,7 +338,9 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--cluster-select", a->cluster_select,
                   "Which atoms to cluster: cna|acna|bpa:TYPE[,TYPE...] (any of them) or :!TYPE[,TYPE...] (none of "
-                  "them; TYPE fcc hcp bcc ico other), csp>VALUE (Å²) or excess>VALUE (eV, with --excess-energy); "
+                  "them; TYPE fcc hcp bcc ico other), dia:[!]TYPE[,...] (TYPE cubic cubic_first cubic_second "
+                  "hexagonal hexagonal_first hexagonal_second other), csp>VALUE (Å²) or excess>VALUE (eV, with "
+                  "--excess-energy); "
                   "e.g. acna:hcp, acna:!fcc, acna:!fcc,hcp (dislocation cores), excess>0.1");
   cmd->add_option("--cluster-min-size", a->cluster_min_size, "Drop clusters with fewer atoms")
       ->capture_default_str()
