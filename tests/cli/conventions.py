@@ -3,8 +3,8 @@
 
     conventions.py RUN_DIR [RUN_DIR ...]
 
-Every .vti/.vtp file: each DataArray but a vertex cell's connectivity and offsets carries a
-units attribute. Every .csv file: at most one time column (time, time_s, time_ps, Time), and
+Every .vti/.vtp file: each DataArray but a vertex cell's connectivity and offsets and VTK's
+blanking array vtkGhostType carries a units attribute. Every .csv file: at most one time column (time, time_s, time_ps, Time), and
 its name is the one of the method's unit system (the method is read from the run folder's
 config.resolved.toml). Prints each violation with its file and exits 1 if there is any.
 """
@@ -33,7 +33,7 @@ def check_vtk(path):
     for tag in re.findall(r"<DataArray[^>]*>", text):
         name = re.search(r'Name="([^"]+)"', tag)
         name = name.group(1) if name else "?"
-        if name not in ("connectivity", "offsets") and "units=" not in tag:
+        if name not in ("connectivity", "offsets", "vtkGhostType") and "units=" not in tag:
             yield f"{path}: DataArray '{name}' has no units attribute"
 
 

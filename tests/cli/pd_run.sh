@@ -34,8 +34,8 @@ stop_and_resume() {
   awk -F, -v p="$profile" -v s="$stop" '$1 == p && $3 >= s { exit 1 }' "$WORK/${name}_straight/profiles/index.csv" ||
     fail "$name: profile $profile is not written before step $stop"
   stop_then_resume "$WORK/$name.toml" "$WORK/${name}_split" "$stop"
-  same_files "$WORK/${name}_straight" "$WORK/${name}_split" series.csv profiles/index.csv \
-    $(cd "$WORK/${name}_straight" && ls profiles/profile_*.csv)
+  same_files "$WORK/${name}_straight" "$WORK/${name}_split" series.csv profiles/index.csv profiles/points.pvd \
+    $(cd "$WORK/${name}_straight" && ls profiles/profile_*.csv profiles/points_*.vtp)
   echo "ok: $name resumed after bonds broke (stop at step $stop), bitwise"
 }
 pmb="${base/"$j2"/model = \"pmb\"

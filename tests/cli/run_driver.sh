@@ -54,6 +54,11 @@ run "$WORK/tiny_cu/config.resolved.toml" --output "$WORK/md_replay"
 same_files "$WORK/tiny_cu" "$WORK/md_replay" thermo.csv dumps/dump.300.lammpstrj final.data
 run "$WORK/dbm_sod/config.resolved.toml" --output "$WORK/dbm_replay"
 same_files "$WORK/dbm_sod" "$WORK/dbm_replay" series.csv thermo.csv profiles/profile_2.csv
+# A case with open block-region bounds (LAMMPS's INF) replays too: the infinite defaults are not
+# written (they were written as -inf, which a case file refuses).
+run "$ROOT/examples/md_flyer_impact/case.toml" --set 'stage[0].steps=5' --output "$WORK/open_region"
+run "$WORK/open_region/config.resolved.toml" --output "$WORK/open_region_replay"
+same_files "$WORK/open_region" "$WORK/open_region_replay" thermo.csv
 # ... and a [derived] value that does not match the fresh derivation is refused.
 sed 's/^steps = 50$/steps = 51/' "$WORK/dbm_sod/config.resolved.toml" > "$WORK/wrong_derived.toml"
 grep -q "^steps = 51" "$WORK/wrong_derived.toml" || fail "the [derived] edit did not apply"

@@ -6,7 +6,10 @@
 Every file is read by VTK's XML reader and by vtk_arrays: the two must give the same arrays,
 bit for bit, and every array but the vertex connectivity must carry a units attribute. Each
 further FILE (the same frame written in another encoding or precision) must equal REFERENCE_FILE
-(ascii, Float64): exactly for Float64, as the nearest float for Float32. Exit 77 when
+(ascii, Float64): exactly for Float64, as the nearest float for Float32. The categorical arrays
+(material, body, grain) must be Int32 in every file. Where an image has VTK's blanking array
+vtkGhostType, its points must be hidden (HIDDENPOINT, as VTK's IsPointVisible reports) exactly
+where the real arrays that have NaN (mass_density is 0 there) are NaN. Exit 77 when
 python3-vtk9 is absent (the test then says it skipped).
 """
 import re
@@ -25,6 +28,9 @@ except ImportError:
     sys.exit(77)
 
 
+CATEGORICAL = {"material", "body", "grain"}
+
+
 def vtk_arrays(path):
     reader = vtk.vtkXMLImageDataReader() if path.endswith(".vti") else vtk.vtkXMLPolyDataReader()
     reader.SetFileName(path)
@@ -38,6 +44,12 @@ def vtk_arrays(path):
             out[attrs.GetArrayName(k)] = vtk_to_numpy(attrs.GetArray(k))
     if path.endswith(".vtp"):
         out["points"] = vtk_to_numpy(data.GetPoints().GetData())
+    elif "vtkGhostType" in out:
+        visible = np.array([data.IsPointVisible(i) for i in range(data.GetNumberOfPoints())], dtype=bool)
+        for name, values in out.items():
+            nan = np.isnan(values) if values.dtype.kind == "f" and values.ndim == 1 else None
+            if nan is not None and nan.any() and not np.array_equal(~visible, nan):
+                sys.exit(f"FAIL: {path}: VTK hides other points than the NaN ones of {name}")
     return out
 
 
@@ -49,8 +61,11 @@ def check(path):
     text = open(path, "rb").read().split(b"<AppendedData")[0].decode()
     for tag in re.findall(r"<DataArray[^>]*>", text):
         name = re.search(r'Name="([^"]+)"', tag).group(1)
-        if name not in ("connectivity", "offsets") and "units=" not in tag:
+        if name not in ("connectivity", "offsets", "vtkGhostType") and "units=" not in tag:
             sys.exit(f"FAIL: {path}: DataArray {name} has no units")
+    for name in CATEGORICAL.intersection(ours):  # labels are integers in every encoding
+        if ours[name].dtype != np.int32:
+            sys.exit(f"FAIL: {path}: categorical array {name} is {ours[name].dtype}, expected int32")
     return ours
 
 

@@ -50,4 +50,26 @@ run_formats dbm "$ROOT/tests/cli/cases/dbm_sod.toml"
 check $(variants dbm fields/grid_000000040.vti)
 run_formats phasefield "$ROOT/tests/cli/cases/phasefield_tiny.toml"
 check $(variants phasefield fields/xi_3.vti)
-echo "vtk_round_trip: mpm, dbm and phasefield VTK files read alike by VTK, vtk_arrays and analyze in every format"
+# PD points: each profile is also a .vtp at the deformed positions, with the profile's values.
+run_formats pd "$ROOT/tests/cli/cases/pd_tiny.toml"
+check $(variants pd profiles/points_4.vtp)
+grep -q 'file="points_4.vtp"' "$WORK/pd_zlib/profiles/points.pvd" || fail "points.pvd does not index points_4.vtp"
+"$PY" - "$WORK/pd_ascii/profiles" "$ROOT/python" <<'PYEOF' || fail "PD points_4.vtp differs from profile_4.csv"
+import sys
+import numpy as np
+sys.path.insert(0, sys.argv[2])
+from shockfield_plot.vtk_arrays import read_vtk_arrays
+folder = sys.argv[1]
+csv = np.genfromtxt(f"{folder}/profile_4.csv", delimiter=",", names=True)
+vtp = read_vtk_arrays(f"{folder}/points_4.vtp")
+reference = np.stack([csv["x_m"], csv["y_m"], csv["z_m"]], axis=1)
+# The CSV holds 10 significant digits; the ascii Float64 .vtp is exact.
+assert np.allclose(vtp["points"] - vtp["displacement"], reference, rtol=1e-9, atol=1e-15), "positions"
+assert np.allclose(vtp["displacement"][:, 0], csv["ux_m"], rtol=1e-9, atol=1e-15), "displacement"
+assert np.allclose(vtp["velocity"][:, 0], csv["vx_m_s"], rtol=1e-9, atol=1e-12), "velocity"
+assert np.allclose(vtp["stress"][:, 0], csv["sxx_Pa"], rtol=1e-9, atol=1e-6), "stress xx"
+assert np.allclose(vtp["pressure"], csv["pressure_Pa"], rtol=1e-9, atol=1e-6), "pressure"
+assert np.array_equal(vtp["grain"], csv["grain"].astype(np.int32)), "grain"
+print("ok: PD points_4.vtp holds profile_4.csv's values at the deformed positions")
+PYEOF
+echo "vtk_round_trip: mpm, dbm, phasefield and pd VTK files read alike by VTK, vtk_arrays and analyze in every format"

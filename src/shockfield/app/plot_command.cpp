@@ -1,6 +1,7 @@
 // `shockfield plot KIND RUN_DIR`: PNG figures of a run folder or of an `analyze atoms` output,
 // drawn by the Python helpers in shockfield_plot (md_plots.py, mpm_plots.py,
-// macroparticle_plots.py, atoms_plots.py), found and run as app/python_helpers.hpp says.
+// macroparticle_plots.py, phasefield_plots.py, atoms_plots.py), found and run as
+// app/python_helpers.hpp says.
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -35,7 +36,11 @@ void plot(const PlotOptions& o) {
   } else if (!std::filesystem::is_directory(o.run)) {
     throw InputError(fmt::format("'{}' is not a run folder", o.run));
   }
-  const char* helper = md ? "md_plots" : atoms ? "atoms_plots" : o.kind == "stress-strain" ? "macroparticle_plots" : "mpm_plots";
+  const char* helper = md                          ? "md_plots"
+                       : atoms                     ? "atoms_plots"
+                       : o.kind == "stress-strain" ? "macroparticle_plots"
+                       : o.kind == "phasefield"    ? "phasefield_plots"
+                                                   : "mpm_plots";
   std::string args = fmt::format("-m shockfield_plot.{} {} {}", helper, o.kind, shell_quote(o.run));
   if (o.kind == "profiles" || o.kind == "slice") args += " --axis " + o.axis;
   if (o.kind == "slice") {
@@ -67,6 +72,8 @@ void add_plot_command(CLI::App& app) {
       "            against time -> RUN/cavity.png\n"
       "  stress-strain  macroparticle: stress against strain of a loaded rod, from thermo.csv\n"
       "            -> RUN/stress-strain.png\n"
+      "  phasefield  phase field: equivalent radius, principal semi-axes and growth speed against\n"
+      "            time (series.csv), and the middle slice of the last frame -> RUN/phasefield.png\n"
       "  structures  structure fractions against time (one panel per method: cna, acna, bpa) from\n"
       "            structures.csv of an `analyze atoms` output folder or an MD run with [analysis]\n"
       "            -> RUN/structures.png\n"
@@ -75,8 +82,8 @@ void add_plot_command(CLI::App& app) {
       "            -> <dump without extension>_slice.png");
   cmd->add_option("kind", o->kind, "What to plot")
       ->required()
-      ->check(CLI::IsMember({"profiles", "thermo", "hugoniot", "porous", "cavity", "stress-strain", "structures",
-                             "slice"}));
+      ->check(CLI::IsMember({"profiles", "thermo", "hugoniot", "porous", "cavity", "stress-strain", "phasefield",
+                             "structures", "slice"}));
   cmd->add_option("run", o->run, "Run folder (analysis folder for structures, annotated dump for slice)")->required();
   cmd->add_option("-o,--out", o->out, "PNG file (default RUN/<kind>.png)");
   cmd->add_option("--axis", o->axis, "Shock axis of MD profiles, normal of the slice (default z)")

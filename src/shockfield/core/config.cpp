@@ -231,7 +231,9 @@ std::vector<std::string> Config::get_strings(std::string_view key) const {
 
 double Config::get_double_or(std::string_view key, double fallback, Range range) const {
   if (has(key)) return get_double(key, range);
-  record(key, fallback);
+  // An infinite default (an open region bound) is not recorded: case files refuse non-finite
+  // numbers, and leaving the key out replays as the same default.
+  if (std::isfinite(fallback)) record(key, fallback);
   return fallback;
 }
 long long Config::get_int_or(std::string_view key, long long fallback, Range range) const {

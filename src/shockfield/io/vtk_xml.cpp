@@ -25,6 +25,13 @@ class ArrayWriter {
  public:
   ArrayWriter(std::ostringstream& xml, VtkFormat format) : xml_(xml), format_(format) {}
 
+  /// A point-data array: Int32 if categorical, else reals in the file's precision.
+  void data(const VtkArray& a) {
+    if (!a.integer) return reals(a.name, a.components, a.values, a.units);
+    std::vector<std::int32_t> labels(a.values.size());
+    for (std::size_t i = 0; i < labels.size(); ++i) labels[i] = static_cast<std::int32_t>(a.values[i]);
+    array("Int32", a.name, a.components, labels, a.units);
+  }
   void reals(const std::string& name, int components, const std::vector<double>& v, const std::string& units) {
     if (format_.precision == VtkPrecision::Float64) return array("Float64", name, components, v, units);
     const std::vector<float> single(v.begin(), v.end());
@@ -123,7 +130,16 @@ void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkForm
                      extent, image.origin[0], image.origin[1], image.origin[2], image.spacing[0], image.spacing[1],
                      image.spacing[2])
       << fmt::format("    <Piece Extent=\"{}\">\n", extent) << "      <PointData>\n";
-  for (const VtkArray& a : image.point_data) arrays.reals(a.name, a.components, a.values, a.units);
+  for (const VtkArray& a : image.point_data) arrays.data(a);
+  if (!image.hidden_points.empty()) {
+    if (image.hidden_points.size() != n[0] * n[1] * n[2])
+      throw RunError(fmt::format("{}: {} hidden-point flags for {} points", file.string(), image.hidden_points.size(),
+                                 n[0] * n[1] * n[2]));
+    constexpr std::uint8_t kHiddenPoint = 2;  // vtkDataSetAttributes::HIDDENPOINT
+    std::vector<std::uint8_t> ghost(image.hidden_points.size());
+    for (std::size_t i = 0; i < ghost.size(); ++i) ghost[i] = image.hidden_points[i] ? kHiddenPoint : 0;
+    arrays.array("UInt8", "vtkGhostType", 1, ghost);
+  }
   out << "      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n  </ImageData>\n";
   arrays.write(file);
 }
@@ -139,7 +155,7 @@ void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz
       << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
                      "NumberOfPolys=\"0\">\n", n, n)
       << "      <PointData>\n";
-  for (const VtkArray& a : point_data) arrays.reals(a.name, a.components, a.values, a.units);
+  for (const VtkArray& a : point_data) arrays.data(a);
   out << "      </PointData>\n      <Points>\n";
   arrays.reals("points", 3, xyz, "m");
   out << "      </Points>\n      <Verts>\n";

@@ -38,9 +38,12 @@ constexpr const char* encoding_name(VtkEncoding e) {
 
 struct VtkArray {
   std::string name;
-  int components = 1;          ///< 1 (scalar) or 3 (vector)
+  int components = 1;          ///< 1 (scalar), 3 (vector) or 9 (tensor, row-major)
   std::vector<double> values;  ///< components × count, interleaved
   std::string units{};         ///< SI unit ("Pa", "m/s", "1" for a number); empty: not written
+  /// A categorical array (material, body, grain): written as Int32 whatever the precision, so
+  /// ParaView offers it for categorical colouring and thresholds compare exact integers.
+  bool integer = false;
 };
 
 /// Point data on (nx, ny, nz) grid points; x fastest. A 2D grid has nz = 1.
@@ -49,6 +52,11 @@ struct VtkImage {
   std::array<double, 3> origin{0, 0, 0};
   std::array<double, 3> spacing{1, 1, 1};
   std::vector<VtkArray> point_data;
+  /// Empty, or one flag per point: the points no material reaches. They are written as VTK's
+  /// blanking array vtkGhostType (UInt8, HIDDENPOINT = 2 where set, after the other arrays), so
+  /// ParaView leaves the cells that touch them out instead of painting NaN; their values stay NaN
+  /// for readers that do not know the array (`shockfield analyze` reads NaN as a void cell).
+  std::vector<bool> hidden_points{};
 };
 
 void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkFormat format);

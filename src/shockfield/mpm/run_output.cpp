@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 #include "shockfield/analysis/field_statistics.hpp"
 #include "shockfield/io/checked_file.hpp"
@@ -140,8 +141,10 @@ io::VtkImage grid_fields(const Simulation& sim) {
   double cell_volume = 1.0;
   for (int a = 0; a < g.dim; ++a) cell_volume *= g.cell_size[a];
   std::vector<double> mass_density(nn), ux(nn), uy(nn);
+  img.hidden_points.assign(nn, false);
   for (std::size_t n = 0; n < nn; ++n) {
     const bool empty = !(mass[n] > 0.0);
+    img.hidden_points[n] = empty;
     for (std::size_t k = 0; k < ns; ++k) scalars[k * nn + n] = empty ? nan : scalars[k * nn + n] / mass[n];
     for (std::size_t d = 0; d < 3; ++d) vel[3 * n + d] = empty ? nan : vel[3 * n + d] / mass[n];
     for (std::size_t d = 0; d < 9; ++d) stress[9 * n + d] = empty ? nan : stress[9 * n + d] / mass[n];
@@ -175,7 +178,10 @@ void RunOutput::write_fields(const Simulation& sim) {
       {"density", "kg/m3"}, {"pressure", "Pa"}, {"temperature", "K"}, {"plastic_work", "J/kg"},
       {"plastic_strain", "1"}, {"energy", "J/kg"}, {"material", "1"}, {"body", "1"}, {"damage", "1"},
       {"longitudinal_stress", "Pa"}, {"longitudinal_deviator", "Pa"}, {"von_mises", "Pa"}};
-  for (const auto& [name, unit] : scalar_arrays) arrays.push_back({name, 1, std::vector<double>(n), unit});
+  for (const auto& [name, unit] : scalar_arrays) {
+    const bool label = std::string_view(name) == "material" || std::string_view(name) == "body";
+    arrays.push_back({name, 1, std::vector<double>(n), unit, label});
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const auto& s = p.state[i];
     const Mat3 sigma = s.stress();

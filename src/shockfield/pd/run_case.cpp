@@ -219,7 +219,7 @@ class PdMethod final : public Method {
     std::vector<double> state;
     counters_ = read_checkpoint(run.checkpoint, sim_, state);
     model_.restore(state);
-    open(run, ResumePoint{sim_.step_count(), counters_.profiles});
+    open(run, ResumePoint{sim_.step_count(), counters_.profiles, sim_.time()});
   }
   bool finished() const override { return !(sim_.time() < c_.solver.end_time - tol_); }
   void advance() override { sim_.step(std::min(dt_, c_.solver.end_time - sim_.time())); }
@@ -284,7 +284,7 @@ class PdMethod final : public Method {
   void open(RunContext& run, std::optional<ResumePoint> resume) {
     log_ = &run.log;
     for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
-    output_.emplace(run.folder, model_.fields, resume);
+    output_.emplace(run.folder, model_.fields, c_.output.vtk, resume);
     if (!finished())
       log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
                  c_.solver.end_time, dt_, dt_ / stable_, stable_);

@@ -9,8 +9,8 @@ namespace shockfield::pd {
 
 namespace fs = std::filesystem;
 
-RunOutput::RunOutput(const fs::path& folder, PointFields fields, std::optional<ResumePoint> resume)
-    : folder_(folder), fields_(std::move(fields)) {
+RunOutput::RunOutput(const fs::path& folder, PointFields fields, io::VtkFormat vtk, std::optional<ResumePoint> resume)
+    : folder_(folder), fields_(std::move(fields)), vtk_(vtk) {
   fs::create_directories(folder / "profiles");
   const double keep_step = resume ? static_cast<double>(resume->step) : 0.0;
   // index.csv's first column is the profile number: keep those written before the checkpoint.
@@ -21,6 +21,7 @@ RunOutput::RunOutput(const fs::path& folder, PointFields fields, std::optional<R
                           resume ? &keep_step : nullptr);
   index_ = io::CsvWriter(folder / "profiles" / "index.csv", {"profile", "time_s", "step"},
                          resume ? &keep_profile : nullptr);
+  points_pvd_ = io::PvdSeries(folder / "profiles" / "points.pvd", resume ? &resume->time : nullptr);
 }
 
 Mat3 RunOutput::stress(std::size_t i) const {
@@ -57,7 +58,38 @@ void RunOutput::write_profile(const Simulation& sim, std::int64_t index) {
              s(0, 1), s(0, 2), s(1, 2), s.trace() / -3.0, plastic(i), static_cast<double>(fields_.grain[i]),
              damage[i]});
   }
+  write_points(sim, index, damage);
   index_.row({static_cast<double>(index), sim.time(), static_cast<double>(sim.step_count())});
+}
+
+void RunOutput::write_points(const Simulation& sim, std::int64_t index, const std::vector<double>& damage) {
+  const std::size_t n = sim.cloud().size();
+  std::vector<double> xyz(3 * n), displacement(3 * n), velocity(3 * n), stress_rows(9 * n);
+  std::vector<double> pressure(n), plastic_measure(n), grain(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Mat3 s = stress(i);
+    for (int d = 0; d < 3; ++d) {
+      const std::size_t k = 3 * i + static_cast<std::size_t>(d);
+      xyz[k] = sim.positions()[i][d];
+      displacement[k] = sim.positions()[i][d] - sim.cloud().x[i][d];
+      velocity[k] = sim.velocities()[i][d];
+      for (int c = 0; c < 3; ++c) stress_rows[9 * i + static_cast<std::size_t>(3 * d + c)] = s(d, c);  // row-major
+    }
+    pressure[i] = s.trace() / -3.0;
+    plastic_measure[i] = plastic(i);
+    grain[i] = fields_.grain[i];
+  }
+  const std::string file = fmt::format("points_{}.vtp", index);
+  io::write_vtp(folder_ / "profiles" / file, xyz,
+                {{"displacement", 3, std::move(displacement), "m"},
+                 {"velocity", 3, std::move(velocity), "m/s"},
+                 {"stress", 9, std::move(stress_rows), "Pa"},
+                 {"pressure", 1, std::move(pressure), "Pa"},
+                 {"plastic", 1, std::move(plastic_measure), "1"},
+                 {"grain", 1, std::move(grain), "1", true},
+                 {"damage", 1, damage, "1"}},
+                vtk_);
+  points_pvd_.add(sim.time(), file);
 }
 
 }  // namespace shockfield::pd

@@ -2,7 +2,9 @@
 // Output of a PD run (docs/pd.md, "Outputs"): the time series series.csv (kinetic energy,
 // momentum, peak axial compression and plastic measure) and point profiles
 // profiles/profile_<k>.csv (position, displacement, velocity, Cauchy stress, pressure, plastic
-// measure, grain and damage of every point) indexed with their times by profiles/index.csv.
+// measure, grain and damage of every point) indexed with their times by profiles/index.csv; each
+// profile is also a VTK PolyData file profiles/points_<k>.vtp at the deformed positions (the same
+// fields, displacement as a vector, grain as Int32) indexed by profiles/points.pvd for ParaView.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "shockfield/io/csv_writer.hpp"
+#include "shockfield/io/vtk_xml.hpp"
 #include "shockfield/pd/simulation.hpp"
 
 namespace shockfield::pd {
@@ -27,23 +30,29 @@ struct PointFields {
 struct ResumePoint {
   std::int64_t step = 0;
   std::int64_t profiles = 0;
+  double time = 0.0;  ///< of the checkpoint: points.pvd keeps the frames written by then
 };
 
 class RunOutput {
  public:
-  RunOutput(const std::filesystem::path& folder, PointFields fields, std::optional<ResumePoint> resume);
+  RunOutput(const std::filesystem::path& folder, PointFields fields, io::VtkFormat vtk,
+            std::optional<ResumePoint> resume);
 
   void write_series(const Simulation& sim);
-  /// profiles/profile_<index>.csv at the current time.
+  /// profiles/profile_<index>.csv and profiles/points_<index>.vtp at the current time.
   void write_profile(const Simulation& sim, std::int64_t index);
 
  private:
   Mat3 stress(std::size_t i) const;
   double plastic(std::size_t i) const;
 
+  void write_points(const Simulation& sim, std::int64_t index, const std::vector<double>& damage);
+
   std::filesystem::path folder_;
   PointFields fields_;
+  io::VtkFormat vtk_;
   io::CsvWriter series_, index_;
+  io::PvdSeries points_pvd_;
 };
 
 }  // namespace shockfield::pd

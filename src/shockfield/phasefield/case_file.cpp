@@ -19,6 +19,17 @@ Grid read_grid(const Config& t) {
   if (nodes > kMaxGridPoints)
     t.fail("nodes", fmt::format("{:.3g} grid nodes; expected at most {:.0e}", nodes, kMaxGridPoints));
   g.dx = t.get_double("spacing", Range::positive());
+  // [grid.boundary]: x, y, z = "periodic" (default), "neumann" or "dirichlet" with <axis>_lo, _hi.
+  if (const auto b = t.optional_table("boundary")) {
+    for (int d = 0; d < g.dim; ++d) {
+      const std::string axis(1, "xyz"[d]);
+      const std::string kind = b->get_choice_or(axis, {"periodic", "neumann", "dirichlet"}, "periodic");
+      g.boundary[d] = kind == "neumann" ? Boundary::neumann : kind == "dirichlet" ? Boundary::dirichlet : Boundary::periodic;
+      if (g.boundary[d] == Boundary::dirichlet)
+        g.fixed[d] = {b->get_double(axis + "_lo", Range::closed(-10.0, 10.0)),
+                      b->get_double(axis + "_hi", Range::closed(-10.0, 10.0))};
+    }
+  }
   return g;
 }
 
@@ -64,15 +75,34 @@ PhasefieldCase read_phasefield_case(const Config& root) {
   const Config model = root.table("model");
   c.model.a = model.get_double("a", Range::closed(0.0, 1.0));
   c.model.D = model.get_double("D", Range::positive());
+  if (model.has("anisotropy")) {
+    const auto w = model.get_doubles("anisotropy", static_cast<std::size_t>(c.grid.dim), Range::closed(1e-3, 1e3));
+    for (int d = 0; d < c.grid.dim; ++d) c.model.anisotropy[d] = w[d];
+  }
   const Config time = root.table("time");
   c.scheme = scheme_from_name(time.get_choice_or("scheme", {"explicit", "spectral"}, "spectral"));
-  const double limit = c.grid.explicit_limit(c.model.D);
+  if (c.scheme == Scheme::spectral && !c.grid.all_periodic())
+    time.fail("scheme", "\"explicit\": the spectral scheme needs periodic boundaries on every axis, and "
+                        "[grid.boundary] sets a wall");
+  double largest_scale = 1.0;
+  if (const auto p = model.optional_table("pressure")) {
+    c.pressure = {{p->get_input_file("file"), p->get_string_or("array", "")},
+                  p->get_double("reference"),
+                  p->get_double("slope")};
+    if (c.scheme != Scheme::explicit_euler)
+      time.fail("scheme", "\"explicit\": a pressure-dependent D ([model.pressure]) varies in space, which the "
+                          "spectral scheme's constant implicit factor cannot hold");
+    const std::vector<double> scale = pressure_scale(c.pressure, c.grid);  // validated now, again at the start
+    largest_scale = *std::max_element(scale.begin(), scale.end());
+  }
+  const double limit = explicit_step_limit(c.grid, c.model) / largest_scale;
   c.dt = time.get_double("dt", Range::positive());
   // Forward Euler is unstable beyond dx²/(2 dim D); 0.9 of it keeps a margin for the reaction term.
   if (c.scheme == Scheme::explicit_euler && c.dt > 0.9 * limit)
-    time.fail("dt", fmt::format("at most 0.9 dx^2/(2 dim D) = {:.6g} for scheme = \"explicit\" (the stability limit "
-                                "is {:.6g}); use a smaller dt or scheme = \"spectral\"",
-                                0.9 * limit, limit));
+    time.fail("dt", fmt::format("at most 0.9 dx^2/(2 sum D_d{}) = {:.6g} for scheme = \"explicit\" (the stability limit "
+                                "is {:.6g}); use a smaller dt{}",
+                                c.pressure.file.path.empty() ? "" : " max D(p)/D", 0.9 * limit, limit,
+                                c.pressure.file.path.empty() ? " or scheme = \"spectral\"" : ""));
   // The reaction term is explicit in both schemes: about a well ξ* the update is
   // δξ ← (1 − dt f″(ξ*)) δξ, f″(0) = a, f″(1) = 1 − a, unstable (oscillating) beyond 2/f″. Half of
   // that keeps the wells monotone (1 − dt f″ ≥ 0): dt ≤ 1/max(a, 1 − a).
@@ -83,9 +113,16 @@ PhasefieldCase read_phasefield_case(const Config& root) {
   c.end_time = time.get_double("end_time", Range::positive());
   c.steps = static_cast<long long>(std::ceil(c.end_time / c.dt - 1e-9));
   const auto initial = root.optional_table("initial");
-  if (initial) c.domains = read_domains(*initial, c.grid);
-  if (c.domains.empty()) root.fail("initial", "at least one [[initial.sphere]], [[initial.ellipsoid]], "
-                                              "[[initial.slab]] or [initial.random]");
+  if (initial) {
+    c.domains = read_domains(*initial, c.grid);
+    if (initial->has("file")) {
+      c.field_file = {initial->get_input_file("file"), initial->get_string_or("array", "")};
+      read_field_file(c.field_file, c.grid);  // validated now; read again when the run starts
+    }
+  }
+  if (c.domains.empty() && c.field_file.path.empty())
+    root.fail("initial", "a field file ([initial] file) or at least one [[initial.sphere]], [[initial.ellipsoid]], "
+                         "[[initial.slab]] or [initial.random]");
   c.output = read_output_intervals(root.optional_table("output"), c.end_time, {.profiles = false, .fields = true, .vtk = true});
   return c;
 }

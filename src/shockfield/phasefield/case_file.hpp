@@ -22,6 +22,8 @@ struct PhasefieldCase {
   double end_time = 0.0;
   long long steps = 0;             ///< ceil(end_time / dt)
   std::vector<Domain> domains;     ///< the listed domains and the random nuclei
+  FieldFile field_file;            ///< [initial] file, array: the starting field under the domains
+  PressureDependence pressure;     ///< [model.pressure]: D(p); no file: uniform D
   OutputIntervals output;          ///< series_interval, field_interval (frames), checkpoint_every, thermo_every
 };
 

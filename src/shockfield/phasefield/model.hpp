@@ -2,6 +2,7 @@
 // The well-posed Ginzburg–Landau (Allen–Cahn) model of phase-domain growth built on Xu et al.
 // (2015) §4.4.3 (docs/theory/phasefield.md): ∂ₜξ = −f′(ξ) + D∇²ξ with the double well of their
 // eq 38, f(ξ) = a/2 ξ² − (a+1)/3 ξ³ + ξ⁴/4 (ξ = 0 bcc, 1 hcp), and its closed forms.
+#include <array>
 #include <cmath>
 
 namespace shockfield::phasefield {
@@ -9,6 +10,13 @@ namespace shockfield::phasefield {
 struct Model {
   double a = 0.5;  ///< bulk parameter: a < 1/2 hcp stable, a > 1/2 bcc stable (eq 38)
   double D = 1.0;  ///< gradient coefficient (length²/time), > 0
+  /// Anisotropic gradient energy: D_d = D · anisotropy[d] along axis d, F = ∫ [f + Σ_d D_d/2 (∂_d ξ)²].
+  /// A flat front normal to axis d moves at √(D_d/2)(1 − 2a); growth shapes become ellipsoids with
+  /// axes ∝ √D_d. The closed forms below are those of the isotropic model (all 1).
+  std::array<double, 3> anisotropy{1.0, 1.0, 1.0};
+
+  /// The gradient coefficient along axis d.
+  double D_along(int d) const { return D * anisotropy[d]; }
 
   /// f(ξ), eq 38.
   double f(double xi) const { return xi * xi * (0.5 * a - (a + 1.0) / 3.0 * xi + 0.25 * xi * xi); }

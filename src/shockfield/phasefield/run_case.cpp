@@ -12,6 +12,7 @@
 #include "shockfield/io/vtk_xml.hpp"
 #include "shockfield/phasefield/case_file.hpp"
 #include "shockfield/phasefield/checkpoint.hpp"
+#include "shockfield/phasefield/domain_measures.hpp"
 
 namespace shockfield::phasefield {
 
@@ -29,7 +30,7 @@ double equivalent_radius(double volume, int dim) {
 void derive(const Config& root, const PhasefieldCase& c) {
   root.derive("nodes", static_cast<long long>(c.grid.size()));
   root.derive("steps", c.steps);
-  root.derive("explicit_time_step_limit", c.grid.explicit_limit(c.model.D));
+  root.derive("explicit_time_step_limit", explicit_step_limit(c.grid, c.model));
   root.derive("reaction_time_step_limit", reaction_step_limit(c.model));
   root.derive("front_speed_c0", c.model.front_speed());
   root.derive("front_length", c.model.front_length());
@@ -59,13 +60,14 @@ class PhasefieldMethod final : public Method {
 
   // The grid's arrays are allocated here, at the start, not by the factory (--check).
   void start(RunContext& run) override {
-    solver_.allocate();
-    solver_.field() = initial_field(c_.grid, c_.model, c_.domains);
+    allocate();
+    solver_.field() = initial_field(c_.grid, c_.model, c_.domains, c_.field_file);
+    solver_.hold_walls();
     open(run, false);
     write_due();
   }
   void resume(RunContext& run) override {
-    solver_.allocate();
+    allocate();
     counters_ = read_checkpoint(run.checkpoint, solver_);
     open(run, true);
   }
@@ -123,17 +125,24 @@ class PhasefieldMethod final : public Method {
   }
 
  private:
+  // The grid's arrays, and the pressure-dependent D read again from its file.
+  void allocate() {
+    solver_.allocate();
+    if (!c_.pressure.file.path.empty()) solver_.set_diffusivity_scale(pressure_scale(c_.pressure, c_.grid));
+  }
   void open(RunContext& run, bool resumed) {
     run_ = &run;
     const double keep_step = static_cast<double>(solver_.steps()), keep_time = solver_.time();
     series_ = io::CsvWriter(run.folder / "series.csv",
-                            {"step", "time", "volume_fraction", "free_energy", "hcp_volume", "equivalent_radius"},
+                            {"step", "time", "volume_fraction", "free_energy", "hcp_volume", "equivalent_radius",
+                             "surface", "mean_curvature", "euler", "axis_a", "axis_b", "axis_c", "long_axis_x",
+                             "long_axis_y", "long_axis_z", "center_x", "center_y", "center_z"},
                             resumed ? &keep_step : nullptr);
     fs::create_directories(run.folder / "fields");
     pvd_ = io::PvdSeries(run.folder / "fields.pvd", resumed ? &keep_time : nullptr);
     if (!finished())
       run.log.info("running to t = {} in {} steps of dt = {} ({} scheme; explicit limit {:.4g}; c0 = {:.6g})",
-                   c_.end_time, c_.steps, c_.dt, scheme_name(c_.scheme), c_.grid.explicit_limit(c_.model.D),
+                   c_.end_time, c_.steps, c_.dt, scheme_name(c_.scheme), explicit_step_limit(c_.grid, c_.model),
                    c_.model.front_speed());
   }
   void write_due() {
@@ -143,8 +152,12 @@ class PhasefieldMethod final : public Method {
   }
   void write_row() {
     const FieldMeasures m = solver_.measures();
+    const DomainMeasures shape = domain_measures(c_.grid, solver_.field());
     series_.row({static_cast<double>(solver_.steps()), solver_.time(), m.fraction_above_half, m.free_energy,
-                 m.integral, equivalent_radius(m.integral, c_.grid.dim)});
+                 m.integral, equivalent_radius(m.integral, c_.grid.dim), shape.surface, shape.mean_curvature,
+                 static_cast<double>(shape.euler), shape.semi_axes[0], shape.semi_axes[1], shape.semi_axes[2],
+                 shape.long_axis[0], shape.long_axis[1], shape.long_axis[2], shape.center[0], shape.center[1],
+                 shape.center[2]});
   }
   void write_frame(std::int64_t k) {
     io::VtkImage image;

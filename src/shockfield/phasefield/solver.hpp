@@ -1,12 +1,17 @@
 #pragma once
-// Time stepping of ∂ₜξ = −f′(ξ) + D∇²ξ (model.hpp) on a periodic grid (grid.hpp):
+// Time stepping of ∂ₜξ = −f′(ξ) + D∇²ξ + S(x, t) (model.hpp) on a grid (grid.hpp):
 // - explicit: forward Euler with the (2·dim + 1)-point Laplacian, stable for dt ≤ dx²/(2 dim D)
-//   (the constructor refuses a larger step);
-// - spectral: semi-implicit Fourier, ξ̂ⁿ⁺¹ = (ξ̂ⁿ − dt (f′(ξⁿ))^) / (1 + dt D |k|²): the linear
-//   D∇² term implicit, the reaction explicit (FFTW r2c/c2r, single-threaded transforms).
+//   (the constructor refuses a larger step); periodic axes or walls (neumann, dirichlet);
+// - spectral: semi-implicit Fourier, ξ̂ⁿ⁺¹ = (ξ̂ⁿ − dt (f′(ξⁿ) − Sⁿ)^) / (1 + dt D |k|²): the
+//   linear D∇² term implicit, the reaction explicit (FFTW r2c/c2r, single-threaded transforms);
+//   periodic axes only (the constructor refuses walls).
+// S is an optional source (none by default), evaluated at tⁿ: the manufactured-solution term of
+// PFHub benchmark 7 (docs/phasefield.md) is one.
 // Node loops are OpenMP-parallel; every node is computed on its own and every sum is taken in a
 // fixed order, so results do not depend on the thread count.
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,15 +22,22 @@
 namespace shockfield::phasefield {
 
 enum class Scheme { explicit_euler, spectral };
+
+/// Largest stable explicit step of the diffusion part, dx²/(2 Σ_d D_d) (dx²/(2 dim D) isotropic).
+double explicit_step_limit(const Grid& grid, const Model& model);
 Scheme scheme_from_name(const std::string& name);  ///< "explicit" or "spectral"
 std::string scheme_name(Scheme scheme);
 
 /// Sums over the grid (thread-independent).
+/// Nodes on a wall count half a cell (a corner a quarter...): the trapezoidal rule.
 struct FieldMeasures {
-  double free_energy = 0.0;      ///< F = Σ [f(ξ) + D/2 |∇ξ|²] dV, forward differences
+  double free_energy = 0.0;      ///< F = Σ [f(ξ) + D/2 |∇ξ|²] dV, forward differences (none out of a wall)
   double integral = 0.0;         ///< Σ ξ dV: the hcp volume of a sharp-front domain
-  double fraction_above_half = 0.0;  ///< share of nodes with ξ > 1/2
+  double fraction_above_half = 0.0;  ///< share of the volume with ξ > 1/2
 };
+
+/// A source term S(x, t) of the equation, x the node's position.
+using Source = std::function<double(const std::array<double, 3>& x, double t)>;
 
 class Solver {
  public:
@@ -43,6 +55,15 @@ class Solver {
   Solver& operator=(const Solver&) = delete;
 
   void step();
+  /// Sets the dirichlet wall nodes of the field to their fixed values (step() does it too).
+  void hold_walls();
+  /// Adds S to the right-hand side from the next step on.
+  void set_source(Source source) { source_ = std::move(source); }
+  /// A gradient coefficient varying in space, D_d(x) = D w_d s(x) (`scale` per node, all > 0; the
+  /// pressure-dependent D of Xu et al. 2015 §4.4.3): ∇·(D∇ξ) with D averaged over the two nodes
+  /// of each face (conservative; a zero-flux wall stays a mirror). Explicit scheme only, and the
+  /// explicit limit shrinks by max s; std::invalid_argument otherwise, or for a wrong size.
+  void set_diffusivity_scale(std::vector<double> scale);
   std::vector<double>& field() { return xi_; }
   const std::vector<double>& field() const { return xi_; }
   double time() const { return time_; }
@@ -60,6 +81,8 @@ class Solver {
  private:
   void step_explicit();
   void step_spectral();
+  /// work_[p] += dt S(x_p, tⁿ) on every node.
+  void add_source();
 
   Grid grid_;
   Model model_;
@@ -68,6 +91,8 @@ class Solver {
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   std::vector<double> xi_, work_;
+  std::vector<double> scale_;  ///< s(x) of set_diffusivity_scale; empty: uniform
+  Source source_;
   struct Fourier;
   std::unique_ptr<Fourier> fourier_;
 };

@@ -36,6 +36,19 @@ TEST(Config, ReadsTypedValuesAndRecordsDefaults) {
   EXPECT_NE(resolved.find("s = 'x'"), std::string::npos) << resolved;
 }
 
+TEST(Config, AnInfiniteDefaultIsLeftOutOfTheResolvedConfigSoItReplays) {
+  const Config c = Config::parse("[region]\nxhi = 5.0\n");
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(c.table("region").get_double_or("xlo", -inf), -inf);
+  EXPECT_DOUBLE_EQ(c.table("region").get_double_or("xhi", inf), 5.0);
+  c.check_unknown_keys();
+  const std::string resolved = c.resolved_toml();
+  EXPECT_EQ(resolved.find("xlo"), std::string::npos) << resolved;
+  const Config replay = Config::parse(resolved);
+  EXPECT_EQ(replay.table("region").get_double_or("xlo", -inf), -inf);
+  EXPECT_DOUBLE_EQ(replay.table("region").get_double_or("xhi", inf), 5.0);
+}
+
 TEST(Config, IntegerAcceptedWhereANumberIsExpected) {
   const Config c = Config::parse("a = 2\n");
   EXPECT_DOUBLE_EQ(c.get_double("a"), 2.0);

@@ -26,6 +26,13 @@ using namespace shockfield;
 
 std::string b64(const std::string& s) { return io::base64(reinterpret_cast<const unsigned char*>(s.data()), s.size()); }
 
+// An empty scratch folder for one test's files.
+fs::path fresh_dir(const char* name) {
+  const fs::path dir = shockfield::testing::scratch_path(name);
+  fs::create_directories(dir);
+  return dir;
+}
+
 TEST(VtkXml, Base64Rfc4648Vectors) {
   EXPECT_EQ(b64(""), "");
   EXPECT_EQ(b64("f"), "Zg==");
@@ -35,8 +42,7 @@ TEST(VtkXml, Base64Rfc4648Vectors) {
 }
 
 TEST(VtkXml, ImageDataReadsBackWithVoids) {
-  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_xml_test");
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("shockfield_vtk_xml_test");
   io::VtkImage img;
   img.points = {3, 2, 1};
   img.origin = {1.0, 2.0, 0.0};
@@ -75,8 +81,7 @@ std::string read_text(const fs::path& file) {
 // Every encoding and precision: the values read back exactly (Float64) or as the nearest float
 // (Float32, so 310.1 reads as 310.100006…), NaN stays a void, units are in the tags.
 TEST(VtkXml, EveryEncodingAndPrecisionReadsBack) {
-  const fs::path dir = shockfield::testing::scratch_path("shockfield_vtk_formats_test");
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("shockfield_vtk_formats_test");
   io::VtkImage img;
   img.points = {40, 30, 1};
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -110,6 +115,44 @@ TEST(VtkXml, EveryEncodingAndPrecisionReadsBack) {
   // A slowly varying field compresses: zlib Float32 at least 4x smaller than ascii Float64.
   const auto size = [&](const char* n) { return static_cast<double>(fs::file_size(dir / n)); };
   EXPECT_GT(size("ascii_64.vti") / size("zlib_32.vti"), 4.0);
+  fs::remove_all(dir);
+}
+
+// Categorical arrays (material, body, grain) are Int32 in every precision, their values exact.
+TEST(VtkXml, CategoricalArraysAreInt32) {
+  const fs::path dir = fresh_dir("shockfield_vtk_labels_test");
+  const std::vector<double> xyz{0, 0, 0, 1, 0, 0, 2, 0, 0};
+  for (io::VtkPrecision p : {io::VtkPrecision::Float64, io::VtkPrecision::Float32}) {
+    io::write_vtp(dir / "labels.vtp", xyz, {{"grain", 1, {3, 0, 70000}, "1", true}, {"damage", 1, {0.5, 0, 1}, "1"}},
+                  {io::VtkEncoding::Ascii, p});
+    const std::string text = read_text(dir / "labels.vtp");
+    EXPECT_NE(text.find("type=\"Int32\" Name=\"grain\""), std::string::npos) << text;
+    EXPECT_NE(text.find("3 0 70000\n"), std::string::npos) << text;
+    EXPECT_EQ(text.find("type=\"Int32\" Name=\"damage\""), std::string::npos) << text;
+  }
+  fs::remove_all(dir);
+}
+
+// Points without material: VTK's blanking array after the data arrays (so `analyze`, which reads
+// the first scalar array by default, still finds the data), 2 = HIDDENPOINT where hidden.
+TEST(VtkXml, HiddenPointsAreVtkGhostType) {
+  const fs::path dir = fresh_dir("shockfield_vtk_ghost_test");
+  io::VtkImage img;
+  img.points = {3, 2, 1};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  img.point_data.push_back({"density", 1, {1, nan, 3, 4, 5, nan}, "kg/m3"});
+  img.hidden_points = {false, true, false, false, false, true};
+  io::write_vti(dir / "ghost.vti", img, {io::VtkEncoding::Ascii});
+  const std::string text = read_text(dir / "ghost.vti");
+  const auto ghost = text.find("type=\"UInt8\" Name=\"vtkGhostType\"");
+  ASSERT_NE(ghost, std::string::npos) << text;
+  EXPECT_GT(ghost, text.find("Name=\"density\""));
+  EXPECT_NE(text.find("0 2 0 0 0 2\n"), std::string::npos) << text;
+  const analysis::GridField f = analysis::read_grid_field((dir / "ghost.vti").string());
+  EXPECT_TRUE(f.void_at(1) && f.void_at(5) && !f.void_at(0));
+  EXPECT_EQ(f.values[2], 3.0);
+  img.hidden_points.pop_back();
+  EXPECT_THROW(io::write_vti(dir / "bad.vti", img, {io::VtkEncoding::Ascii}), shockfield::RunError);
   fs::remove_all(dir);
 }
 
@@ -160,8 +203,7 @@ TEST(VtkXml, CorruptZlibDataIsAnInputError) {
 }
 
 TEST(VtkXml, PvdSeriesKeepsEntriesUpToTheResumeTime) {
-  const fs::path dir = shockfield::testing::scratch_path("shockfield_pvd_test");
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("shockfield_pvd_test");
   {
     io::PvdSeries s(dir / "a.pvd");
     s.add(0.0, "f0.vti");

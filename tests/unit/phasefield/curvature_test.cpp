@@ -30,7 +30,7 @@ Solver& disc(Solver& s, const Model& m, double R) {
 TEST(PhasefieldCurvature, DiscAtEqualWellsShrinksAsRSquaredLinear) {
   const Model m{0.5, 1.0};
   const Grid g{2, {182, 182, 1}, std::sqrt(2.0) / 4};
-  Solver s(g, m, Scheme::explicit_euler, 0.8 * g.explicit_limit(m.D));
+  Solver s(g, m, Scheme::explicit_euler, 0.8 * explicit_step_limit(g, m));
   disc(s, m, 25.0);
   const double R0 = disc_radius(s);
   const double t_end = (R0 * R0 - 0.36 * R0 * R0) / (2 * m.D);
@@ -74,7 +74,7 @@ TEST(PhasefieldCurvature, CriticalRadiusSeparatesGrowthFromShrinkage) {
   ASSERT_NEAR(Rc, 1.0 / (std::sqrt(0.5) * 0.2), 1e-12);
   const Grid g{2, {128, 128, 1}, 0.25};
   for (const double ratio : {0.8, 1.25}) {
-    Solver s(g, m, Scheme::explicit_euler, 0.8 * g.explicit_limit(m.D));
+    Solver s(g, m, Scheme::explicit_euler, 0.8 * explicit_step_limit(g, m));
     disc(s, m, ratio * Rc);
     const double R0 = disc_radius(s);
     for (int k = 0; k < 3000; ++k) s.step();

@@ -1,0 +1,54 @@
+#!/usr/bin/python3
+"""shapes.png of examples/phasefield_shapes: for each run, the final domain's middle xz slice
+(top row, the ξ = 1/2 contour) and the ratios of its principal semi-axes b/a and c/a against time
+(bottom), from series.csv and the last frame.
+
+    plot.py OUT.png RUN_DIR [RUN_DIR ...]
+"""
+import csv, glob, os, re, sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield_plot.vtk_arrays import read_vtk_arrays  # noqa: E402
+
+out, runs = sys.argv[1], sys.argv[2:]
+fig, axes = plt.subplots(2, len(runs), figsize=(3.2 * len(runs), 6.4))
+for col, run in enumerate(runs):
+    name = os.path.basename(os.path.normpath(run))
+    rows = list(csv.DictReader(open(os.path.join(run, "series.csv"))))
+    s = {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+    last = max(glob.glob(os.path.join(run, "fields", "xi_*.vti")), key=lambda f: int(re.search(r"(\d+)\.vti$", f).group(1)))
+    head = open(last, "rb").read(4000).decode("latin-1")
+    ext = [int(v) for v in re.search(r'WholeExtent="([^"]+)"', head).group(1).split()]
+    h = float(re.search(r'Spacing="([^ "]+)', head).group(1))
+    n = [ext[1] + 1, ext[3] + 1, ext[5] + 1]
+    xi = read_vtk_arrays(last)["xi"].reshape(n[2], n[1], n[0])
+    cy = int(round(s["center_y"][-1] / h)) % n[1]
+    slab = xi[:, cy, :]  # z rows, x columns
+    top = axes[0, col]
+    top.imshow(slab, origin="lower", extent=[0, n[0] * h, 0, n[2] * h], vmin=0, vmax=1, cmap="viridis")
+    top.contour(np.arange(n[0]) * h, np.arange(n[2]) * h, slab, levels=[0.5], colors="w", linewidths=1)
+    top.set_title(f"{name}: a, b, c = {s['axis_a'][-1]:.1f}, {s['axis_b'][-1]:.1f}, {s['axis_c'][-1]:.1f}", fontsize=9)
+    top.set_xlabel("x")
+    top.set_ylabel("z")
+    bottom = axes[1, col]
+    bottom.plot(s["time"], s["axis_b"] / s["axis_a"], "C0-", label="b/a")
+    bottom.plot(s["time"], s["axis_c"] / s["axis_a"], "C1-", label="c/a")
+    bottom.set_ylim(0, 1.05)
+    bottom.set_xlabel("time")
+    bottom.set_ylabel("axis ratio")
+    bottom.legend(fontsize=8)
+fig.suptitle("Growth shapes of an hcp domain (a = 0.2, D = 1): isotropic, and anisotropic D_d = D w_d", fontsize=10)
+fig.tight_layout()
+fig.savefig(out, dpi=110)
+for run in runs:
+    rows = list(csv.DictReader(open(os.path.join(run, "series.csv"))))
+    first, last = rows[0], rows[-1]
+    print(f"{os.path.basename(os.path.normpath(run)):10s} t = {float(last['time']):5.1f}: semi-axes "
+          f"{float(first['axis_a']):5.2f} {float(first['axis_b']):5.2f} {float(first['axis_c']):5.2f} -> "
+          f"{float(last['axis_a']):5.2f} {float(last['axis_b']):5.2f} {float(last['axis_c']):5.2f}, long axis "
+          f"({float(last['long_axis_x']):.2f}, {float(last['long_axis_y']):.2f}, {float(last['long_axis_z']):.2f})")
