@@ -65,18 +65,48 @@ awk -F, 'NR == 2 { d = 0; for (k = 5; k <= 7; ++k) d += ($k - 14.46) ^ 2; exit !
 grep -q "ITEM: ATOMS id type x y z c_cna c_csp c_coord acna cluster" "$WORK/void/cu_void_300K.dump" || fail "no cluster column"
 echo "ok: void-surface cluster"
 
+# Clusters by excess energy: pe = -3.54 eV (Cu_u3's cohesive energy) everywhere but 0.24 eV more
+# on the atoms within 3 Å of the box centre; excess>0.1 clusters exactly those (auto e0: the median
+# pe of the fcc atoms), excess>0.3 none.
+awk 'NR == 9 { print $0, "pe"; next } NR > 9 { d = ($3 - 7.23) ^ 2 + ($4 - 7.23) ^ 2 + ($5 - 7.23) ^ 2;
+  print $0, (d < 9 ? -3.30 : -3.54); next } { print }' "$F/cu_fcc_perfect.dump" > "$WORK/pe.dump"
+hot=$(awk 'NR > 9 && $NF == -3.30' "$WORK/pe.dump" | wc -l)
+[ "$hot" -gt 5 ] || fail "the hot ball has $hot atoms"
+"$SF" analyze atoms "$WORK/pe.dump" --excess-energy auto --clusters 3.0858 --cluster-select 'excess>0.1' -o "$WORK/ex" > /dev/null
+awk -F, -v n="$hot" 'END { exit !(NR == 2 && $4 == n) }' "$WORK/ex/clusters.csv" || fail "excess clusters: $(cat "$WORK/ex/clusters.csv") ($hot hot atoms)"
+awk '/^ITEM: ATOMS/ { for (k = 1; k <= NF; ++k) if ($k == "excess") e = k - 2; else if ($k == "cluster") c = k - 2; next }
+  e && ($e > 0.1) != ($c == 1) { bad++ } END { exit bad > 0 || !e }' "$WORK/ex/pe.dump" || fail "excess and cluster columns disagree"
+"$SF" analyze atoms "$WORK/pe.dump" --excess-energy -3.54 --clusters 3.0858 --cluster-select 'excess>0.3' -o "$WORK/ex3" > /dev/null
+[ "$(wc -l < "$WORK/ex3/clusters.csv")" -eq 1 ] || fail "excess>0.3 found clusters: $(cat "$WORK/ex3/clusters.csv")"
+echo "ok: clusters by excess energy ($hot atoms at 0.24 eV)"
+
+# Diamond: cubic diamond Si (3x3x3 cells, 216 atoms) all "cubic" (dia = 1), and no diamond in fcc Cu.
+awk 'BEGIN { a = 5.431; n = 0
+  split("0 0 0 0 .5 .5 .5 0 .5 .5 .5 0 .25 .25 .25 .25 .75 .75 .75 .25 .75 .75 .75 .25", b, " ")
+  for (i = 0; i < 3; ++i) for (j = 0; j < 3; ++j) for (k = 0; k < 3; ++k) for (s = 0; s < 8; ++s)
+    row[++n] = sprintf("%d 1 %.10g %.10g %.10g", n, (i + b[3*s+1]) * a, (j + b[3*s+2]) * a, (k + b[3*s+3]) * a)
+  printf "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS pp pp pp\n", n
+  for (d = 0; d < 3; ++d) printf "0 %.10g\n", 3 * a
+  print "ITEM: ATOMS id type x y z"; for (m = 1; m <= n; ++m) print row[m] }' > "$WORK/si.dump"
+"$SF" analyze atoms "$WORK/si.dump" "$F/cu_fcc_perfect.dump" --diamond --adaptive-cna -o "$WORK/dia" > /dev/null
+head -1 "$WORK/dia/structures.csv" | grep -q ",dia_cubic,dia_cubic_first,dia_cubic_second,dia_hexagonal,dia_hexagonal_first,dia_hexagonal_second,dia_other," \
+  || fail "dia columns: $(head -1 "$WORK/dia/structures.csv")"
+awk -F, 'NR == 1 { for (k = 1; k <= NF; ++k) c[$k] = k; next }
+  NR == 2 && !($c["dia_cubic"] == 216 && $c["acna_other"] == 216) { exit 1 }
+  NR == 3 && !($c["dia_other"] == 256 && $c["acna_fcc"] == 256) { exit 1 }' "$WORK/dia/structures.csv" \
+  || fail "diamond counts: $(cat "$WORK/dia/structures.csv")"
+awk 'NR > 9 && $NF != 1 { bad++ } END { exit bad > 0 }' "$WORK/dia/si.dump" || fail "si.dump: dia column not all 1"
+# A vacancy in Si: --cluster-select 'dia:!cubic' (connected within 4 Å, past the second-neighbour
+# distance 3.84 Å) gives one cluster, exactly the atoms not cubic.
+awk 'NR == 4 { print $1 - 1; next } NR > 9 && $1 == 100 { next } { print }' "$WORK/si.dump" > "$WORK/si_vacancy.dump"
+"$SF" analyze atoms "$WORK/si_vacancy.dump" --clusters 4 --cluster-select 'dia:!cubic' -o "$WORK/diavac" > /dev/null
+noncubic=$(awk 'NR == 9 { for (k = 3; k <= NF; ++k) if ($k == "dia") c = k - 2 } NR > 9 && $c != 1' "$WORK/diavac/si_vacancy.dump" | wc -l)
+awk -F, -v n="$noncubic" 'END { exit !(NR == 2 && $4 == n && n >= 4) }' "$WORK/diavac/clusters.csv" \
+  || fail "vacancy cluster: $(cat "$WORK/diavac/clusters.csv") ($noncubic non-cubic atoms)"
+echo "ok: diamond: 216 cubic-diamond Si atoms, no diamond in fcc Cu; a vacancy: one cluster of $noncubic non-cubic atoms"
+
 # rejected PATTERN -- ARGS...: must exit 2 with PATTERN in the message and leave no output folder.
-rejected() {
-  local pattern="$1"; shift 2
-  set +e
-  "$SF" analyze atoms "$@" -o "$WORK/bad" > "$WORK/stdout" 2> "$WORK/stderr"
-  local code=$?
-  set -e
-  [ $code -eq 2 ] || fail "exit code $code (expected 2) for: $*; stderr: $(cat "$WORK/stderr")"
-  grep -qF -- "$pattern" "$WORK/stderr" || fail "message lacks '$pattern': $(cat "$WORK/stderr")"
-  [ ! -e "$WORK/bad" ] || fail "an output folder was left behind for: $*"
-  echo "ok: $(head -c 160 "$WORK/stderr")"
-}
+rejected() { local pattern="$1"; shift 2; analyze_rejected "$pattern" -- atoms "$@"; }
 head -9 "$F/cu_fcc_perfect.dump" > "$WORK/header"
 # missing position columns
 { sed 's/^ITEM: ATOMS .*/ITEM: ATOMS id type c_cna/' "$WORK/header"; awk 'NR > 9 { print $1, $2, $6 }' "$F/cu_fcc_perfect.dump"; } > "$WORK/nopos.dump"
@@ -101,7 +131,10 @@ head -c 800 "$WORK/cu.dump.gz" > "$WORK/cut.dump.gz"  # the whole file is ~1.7 k
 rejected "cut.dump.gz: gzip -dc failed: not a gzip file, or a truncated or corrupt one" -- "$WORK/cut.dump.gz"
 rejected "--csp: expected fcc, bcc or an even neighbour count" -- "$F/cu_fcc_perfect.dump" --csp 7
 rejected "--cluster-select 'cna:hcp': selecting by cna needs --cna" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select cna:hcp
-rejected "expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other)" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select acna:diamond
+rejected "expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), dia:[!]TYPE" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select acna:diamond
+rejected "(TYPE cubic cubic_first cubic_second hexagonal hexagonal_first hexagonal_second other)" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select dia:fcc
+rejected "--cluster-select 'excess>0.1': selecting by excess needs --excess-energy" -- "$F/cu_fcc_perfect.dump" --clusters 3 --cluster-select 'excess>0.1'
+rejected "--cluster-select 'excess>hot': expected excess>NUMBER (eV)" -- "$WORK/pe.dump" --excess-energy auto --clusters 3 --cluster-select 'excess>hot'
 rejected "--clusters and --cluster-select go together" -- "$F/cu_fcc_perfect.dump" --clusters 3
 mkdir -p "$WORK/notrun"
 rejected "notrun: a folder but not a shockfield MD run folder" -- "$WORK/notrun"

@@ -49,3 +49,16 @@ same_files() {
     cmp "$a/$f" "$b/$f" || fail "resumed $f differs ($a vs $b)"
   done
 }
+# analyze_rejected PATTERN -- ARGS...: `$SF analyze ARGS -o $WORK/bad` must exit 2 with PATTERN in
+# its message and leave no output folder.
+analyze_rejected() {
+  local pattern="$1"; shift 2
+  set +e
+  "$SF" analyze "$@" -o "$WORK/bad" > "$WORK/stdout" 2> "$WORK/stderr"
+  local code=$?
+  set -e
+  [ $code -eq 2 ] || fail "exit code $code (expected 2) for: $*; stderr: $(cat "$WORK/stderr")"
+  grep -qF -- "$pattern" "$WORK/stderr" || fail "message lacks '$pattern': $(cat "$WORK/stderr")"
+  [ ! -e "$WORK/bad" ] || fail "an output folder was left behind for: $*"
+  echo "ok: $(head -c 160 "$WORK/stderr")"
+}

@@ -6,6 +6,7 @@
 #include "shockfield/core/config.hpp"
 #include "shockfield/geometry/point_file.hpp"
 #include "shockfield/granular/case_file.hpp"
+#include "shockfield/io/extxyz.hpp"
 #include "shockfield/io/checkpoint_file.hpp"
 #include "shockfield/io/lammps_data.hpp"
 #include "shockfield/io/lammps_dump.hpp"
@@ -22,6 +23,14 @@ namespace fs = std::filesystem;
 void parse_dump(const fs::path& file) {
   for (const auto& frame : io::read_dump(file)) {
     if (frame.has("id")) frame.ids();
+    if (frame.has("type")) frame.types();
+    frame.positions();
+  }
+}
+
+void parse_extxyz(const fs::path& file) {
+  for (const auto& frame : io::read_extxyz(file)) {
+    frame.ids();
     if (frame.has("type")) frame.types();
     frame.positions();
   }

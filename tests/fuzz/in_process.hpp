@@ -9,6 +9,8 @@ namespace shockfield::fuzz {
 
 /// A LAMMPS dump: every frame, its ids, types and positions.
 void parse_dump(const std::filesystem::path& file);
+/// An extended XYZ file: every frame, its ids, types and positions.
+void parse_extxyz(const std::filesystem::path& file);
 /// A field file (.csv, .vtk, .vti).
 void parse_field(const std::filesystem::path& file);
 /// An EAM file by its extension: .eam (funcfl), .eam.alloy (setfl), .eam.fs (Finnis-Sinclair).

@@ -71,7 +71,8 @@ Outcome analyze_geometry(const Context& c, const fs::path& file, const fs::path&
 }
 
 // `shockfield analyze atoms`: a dump alone, a dump series (a .lammpstrj input is followed by a
-// valid dump), a data file or a .gz dump, with the cutoff analyses and the default a-CNA.
+// valid dump), a data file, a .gz dump or an extended XYZ file, with the cutoff analyses and the
+// default a-CNA.
 Outcome analyze_atoms(const Context& c, const fs::path& file, const fs::path& work) {
   std::vector<std::string> argv{c.shockfield.string(), "analyze", "atoms", file.string()};
   if (file.extension() == ".lammpstrj")
@@ -168,6 +169,11 @@ std::vector<fs::path> material_inputs(const Context& c) {
   return {dir / "mpm_cu.toml", dir / "pd_cu.toml"};
 }
 
+// Extended XYZ: the LAMMPS fixture fe_bcc_perfect written by ASE (ids from the file order).
+std::vector<fs::path> extxyz_inputs(const Context& c) {
+  return {c.source / "tests/fixtures/fuzz/inputs/atoms/fe_bcc_perfect.xyz"};
+}
+
 std::vector<fs::path> dump_inputs(const Context& c) {
   return {c.source / "tests/fixtures/io/dump_fcc.lammpstrj", c.source / "tests/fixtures/lammps/cu_u3_thermal.dump"};
 }
@@ -182,6 +188,7 @@ std::vector<Target> parser_targets(const Context& c) {
           in_process(c, "eam_fs", {kPotentials / "NiAlH_jea.eam.fs"}, parse_eam),
           in_process(c, "data", {c.source / "tests/fixtures/io/data_fcc.data"}, parse_data),
           in_process(c, "dump", dump_inputs(c), parse_dump),
+          in_process(c, "extxyz", extxyz_inputs(c), parse_extxyz),
           in_process(c, "field", field_inputs(c), parse_field),
           in_process(c, "points", point_inputs(c), parse_points),
           in_process(c, "checkpoint", {c.source / "tests/fixtures/fuzz/inputs/checkpoint/checkpoint.h5"},
@@ -220,6 +227,7 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
                  return run_case(c, work / "case.toml", work, {});
                }});
   t.push_back(in_process(c, "dump", dump_inputs(c), parse_dump));
+  t.push_back(in_process(c, "extxyz", extxyz_inputs(c), parse_extxyz));
   t.push_back(in_process(c, "field", field_inputs(c), parse_field));
   t.push_back({"points", point_inputs(c), false, false, "",
                [c](const fs::path& file, const fs::path& work) { return analyze_geometry(c, file, work); }});
@@ -230,6 +238,7 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
                false, false, "", atoms});
   const fs::path inputs = c.source / "tests/fixtures/fuzz/inputs";
   t.push_back({"atoms_gz", {inputs / "atoms/fe_bcc_perfect.dump.gz"}, true, false, "", atoms});
+  t.push_back({"atoms_xyz", extxyz_inputs(c), false, false, "", atoms});
   t.push_back({"hugoniot", {inputs / "hugoniot/hugoniot_shock.toml", inputs / "hugoniot/shock_front_shock.csv"}, false,
                true, "", [c](const fs::path& file, const fs::path& work) { return hugoniot_reuse(c, file, work); }});
   // Checkpoints of every method: the Cu EAM run (checkpoint), then the small command-line cases.

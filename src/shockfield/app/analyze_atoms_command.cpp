@@ -1,13 +1,15 @@
-// `shockfield analyze atoms`: per-atom structure of atoms from LAMMPS dumps, LAMMPS data files or
-// shockfield MD run folders — coordination, conventional CNA (LAMMPS cna/atom), adaptive CNA
-// (Stukowski 2012), centro-symmetry (Kelchner et al. 1998) and bond-pair types (Honeycutt &
-// Andersen 1987), all over one neighbour pass per frame (analysis/atoms/). Writes each input's
-// frames again with the per-atom results appended as columns (OVITO colours by them) and
-// structures.csv with the counts and fractions per structure per frame. Docs: docs/analysis-atoms.md.
+// `shockfield analyze atoms`: per-atom structure of atoms from LAMMPS dumps, LAMMPS data files,
+// extended XYZ files or shockfield MD run folders — coordination, conventional CNA (LAMMPS
+// cna/atom), adaptive CNA (Stukowski 2012), centro-symmetry (Kelchner et al. 1998), bond-pair
+// types (Honeycutt & Andersen 1987) and diamond structures (Maras et al. 2016), all over one
+// neighbour pass per frame (analysis/atoms/). Writes each input's frames again with the per-atom
+// results appended as columns (OVITO colours by them) and structures.csv with the counts and
+// fractions per structure per frame. Docs: docs/analysis-atoms.md.
 #include <fmt/format.h>
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -17,14 +19,15 @@
 #include <sstream>
 
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
+#include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/app/analyze_atoms_burgers.hpp"
+#include "shockfield/app/analyze_atoms_inputs.hpp"
 #include "shockfield/app/analyze_atoms_profiles.hpp"
 #include "shockfield/app/analyze_atoms_tracks.hpp"
 #include "shockfield/app/analyze_atoms_voids.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/csv_writer.hpp"
-#include "shockfield/io/lammps_data.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 
 namespace shockfield::app {
@@ -40,6 +43,7 @@ struct AtomsArgs {
   std::string data_boundary = "ppp";
   std::optional<double> coordination, cna, bond_pairs;
   bool adaptive_cna = false;
+  bool diamond = false;
   std::string csp;
   std::optional<double> clusters;
   std::string cluster_select;
@@ -51,106 +55,29 @@ struct AtomsArgs {
   int threads = 0;
 };
 
-enum class InputKind { dump, data };
-
-struct InputFile {
-  fs::path path;
-  InputKind kind;
-};
-
-// The frames of a dump file; a .gz file is decompressed by the system's gzip (gzip -dc) into
-// memory first (read_dump holds every frame in memory anyway).
-std::vector<io::DumpFrame> read_dump_file(const fs::path& file) {
-  if (file.extension() != ".gz") return io::read_dump(file);
-  const std::string name = file.string();
-  if (name.find('\'') != std::string::npos)
-    throw InputError(fmt::format("{}: a .gz file name with a quote cannot be passed to gzip; rename it", name));
-  FILE* pipe = popen(("gzip -dc -- '" + name + "' 2>/dev/null").c_str(), "r");
-  if (!pipe) throw InputError(fmt::format("{}: cannot start gzip to decompress it", name));
-  std::string text;
-  char buffer[1 << 16];
-  for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) text.append(buffer, got);
-  if (pclose(pipe) != 0)
-    throw InputError(fmt::format("{}: gzip -dc failed: not a gzip file, or a truncated or corrupt one", name));
-  std::istringstream in(text);
-  return io::read_dump(in, name);
-}
-
-bool looks_like_dump(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot be opened for reading", file.string()));
-  std::string line;
-  while (std::getline(in, line))
-    if (line.find_first_not_of(" \t\r") != std::string::npos) return line.rfind("ITEM:", 0) == 0;
-  throw InputError(fmt::format("{}: the file is empty", file.string()));
-}
-
-// The step number of a run folder's dumps/dump.<step>.<ext>, for ordering.
-long long step_of(const fs::path& file) {
-  const std::string name = file.filename().string();
-  const auto first = name.find('.'), second = name.find('.', first + 1);
-  try {
-    return std::stoll(name.substr(first + 1, second - first - 1));
-  } catch (const std::exception&) {
-    return -1;
-  }
-}
-
-std::vector<InputFile> expand_inputs(const AtomsArgs& a) {
-  std::vector<InputFile> files;
-  for (const std::string& input : a.inputs) {
-    const fs::path path(input);
-    if (fs::is_directory(path)) {
-      const fs::path dumps = path / "dumps";
-      if (!fs::is_directory(dumps))
-        throw InputError(fmt::format("{}: a folder but not a shockfield MD run folder (no dumps/ inside)", input));
-      std::vector<fs::path> series;
-      bool extxyz = false;
-      for (const auto& e : fs::directory_iterator(dumps)) {
-        if (e.path().extension() == ".lammpstrj") series.push_back(e.path());
-        extxyz = extxyz || e.path().extension() == ".xyz";
-      }
-      if (series.empty())
-        throw InputError(fmt::format("{}: no dumps/dump.*.lammpstrj in the run folder{}", input,
-                                     extxyz ? " (its dumps are extended XYZ, which analyze atoms does not read: run "
-                                              "with dump_format = \"lammps\")"
-                                            : ""));
-      std::sort(series.begin(), series.end(), [](const fs::path& x, const fs::path& y) { return step_of(x) < step_of(y); });
-      for (const auto& f : series) files.push_back({f, InputKind::dump});
-      continue;
-    }
-    if (path.extension() == ".gz") {  // a gzip-compressed dump (LAMMPS dump custom/gz, or gzip'ed later)
-      files.push_back({path, InputKind::dump});
-      continue;
-    }
-    if (path.extension() == ".xyz" || path.extension() == ".extxyz")
-      throw InputError(fmt::format("{}: extended XYZ input is not read yet (the io/ library only writes it); "
-                                   "convert it to a LAMMPS dump", input));
-    InputKind kind = InputKind::dump;
-    if (a.format == "data" || (a.format == "auto" && !looks_like_dump(path))) kind = InputKind::data;
-    files.push_back({path, kind});
-  }
-  return files;
-}
-
 // --cluster-select: "<cna|acna|bpa>:<structure>[,<structure>...]" (any of them),
-// "<method>:!<structure>[,...]" (none of them) or "csp><value>"; the analysis it reads must be on
-// (acna is switched on by it).
-aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s) {
+// "<method>:!<structure>[,...]" (none of them), "dia:[!]<diamond type>[,...]", "csp><value>" or
+// "excess><value>"; the analysis it reads must be on (acna and dia are switched on by it).
+aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s, bool excess_on) {
   const std::string what = fmt::format("--cluster-select '{}'", spec);
-  if (spec.rfind("csp>", 0) == 0) {
-    if (!s.centro_symmetry) throw InputError(what + ": selecting by csp needs --csp");
+  // csp>VALUE (Å²) and excess>VALUE (eV): a threshold on a per-atom value.
+  for (const auto& [prefix, unit] : {std::pair{std::string("csp>"), "Å²"}, std::pair{std::string("excess>"), "eV"}}) {
+    if (spec.rfind(prefix, 0) != 0) continue;
+    const bool csp = prefix == "csp>";
+    if (csp && !s.centro_symmetry) throw InputError(what + ": selecting by csp needs --csp");
+    if (!csp && !excess_on) throw InputError(what + ": selecting by excess needs --excess-energy");
     double threshold = 0;
     try {
       std::size_t used = 0;
-      threshold = std::stod(spec.substr(4), &used);
-      if (used != spec.size() - 4) throw std::invalid_argument(spec);
+      threshold = std::stod(spec.substr(prefix.size()), &used);
+      if (used != spec.size() - prefix.size() || !std::isfinite(threshold)) throw std::invalid_argument(spec);
     } catch (const std::exception&) {
-      throw InputError(what + ": expected csp>NUMBER (Å²)");
+      throw InputError(fmt::format("{}: expected {}NUMBER ({})", what, prefix, unit));
     }
-    return [threshold](const aa::StructureAnalysisResult& r) {
-      std::vector<bool> out(r.centro_symmetry.size());
-      for (std::size_t i = 0; i < out.size(); ++i) out[i] = r.centro_symmetry[i] > threshold;
+    return [threshold, csp](const aa::StructureAnalysisResult& r) {
+      const std::vector<double>& value = csp ? r.centro_symmetry : r.excess_energy;
+      std::vector<bool> out(value.size());
+      for (std::size_t i = 0; i < out.size(); ++i) out[i] = value[i] > threshold;
       return out;
     };
   }
@@ -159,27 +86,42 @@ aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnaly
   std::string names = colon == std::string::npos ? "" : spec.substr(colon + 1);
   const bool negate = !names.empty() && names[0] == '!';
   if (negate) names.erase(0, 1);
-  const std::string expected = what + ": expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), or csp>NUMBER";
-  if (method != "cna" && method != "acna" && method != "bpa") throw InputError(expected);
-  std::vector<aa::Structure> listed;  // the structures named (a comma-separated list)
-  for (std::size_t begin = 0; begin <= names.size();) {
-    const std::size_t end = std::min(names.find(',', begin), names.size());
-    const std::string name = names.substr(begin, end - begin);
-    const auto structure = std::find_if(aa::kStructures.begin(), aa::kStructures.end(),
-                                        [&](aa::Structure t) { return aa::structure_name(t) == name; });
-    if (structure == aa::kStructures.end()) throw InputError(expected);
-    listed.push_back(*structure);
-    begin = end + 1;
-  }
+  const std::string expected = what +
+                               ": expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), "
+                               "dia:[!]TYPE[,TYPE...] (TYPE cubic cubic_first cubic_second hexagonal hexagonal_first "
+                               "hexagonal_second other), csp>NUMBER or excess>NUMBER";
+  if (method != "cna" && method != "acna" && method != "bpa" && method != "dia") throw InputError(expected);
+  // The codes named (a comma-separated list of the method's type names).
+  const auto listed_codes = [&](const auto& all, const auto& name_of) {
+    std::vector<int> listed;
+    for (std::size_t begin = 0; begin <= names.size();) {
+      const std::size_t end = std::min(names.find(',', begin), names.size());
+      const std::string name = names.substr(begin, end - begin);
+      const auto t = std::find_if(all.begin(), all.end(), [&](auto x) { return name_of(x) == name; });
+      if (t == all.end()) throw InputError(expected);
+      listed.push_back(static_cast<int>(*t));
+      begin = end + 1;
+    }
+    return listed;
+  };
+  const std::vector<int> listed = method == "dia" ? listed_codes(aa::kDiamondStructures, aa::diamond_structure_name)
+                                                  : listed_codes(aa::kStructures, aa::structure_name);
   if (method == "cna" && !s.cna) throw InputError(what + ": selecting by cna needs --cna");
   if (method == "bpa" && !s.bond_pairs) throw InputError(what + ": selecting by bpa needs --bond-pairs");
   if (method == "acna") s.adaptive_cna = aa::AdaptiveCna{};
+  if (method == "dia") s.diamond = aa::DiamondCna{};
   return [method, listed, negate](const aa::StructureAnalysisResult& r) {
-    const auto& types = method == "cna" ? r.cna->structure : method == "acna" ? r.adaptive_cna->structure
-                                                                             : r.bond_pairs->structure;
-    std::vector<bool> out(types.size());
+    std::vector<int> codes;
+    if (method == "dia") {
+      for (aa::DiamondStructure t : r.diamond->structure) codes.push_back(static_cast<int>(t));
+    } else {
+      const auto& types = method == "cna" ? r.cna->structure : method == "acna" ? r.adaptive_cna->structure
+                                                                               : r.bond_pairs->structure;
+      for (aa::Structure t : types) codes.push_back(static_cast<int>(t));
+    }
+    std::vector<bool> out(codes.size());
     for (std::size_t i = 0; i < out.size(); ++i)
-      out[i] = (std::find(listed.begin(), listed.end(), types[i]) != listed.end()) != negate;
+      out[i] = (std::find(listed.begin(), listed.end(), codes[i]) != listed.end()) != negate;
     return out;
   };
 }
@@ -190,35 +132,15 @@ aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   if (a.cna) s.cna = aa::ConventionalCna{*a.cna};
   if (a.bond_pairs) s.bond_pairs = aa::BondPairAnalysis{*a.bond_pairs};
   if (!a.csp.empty()) s.centro_symmetry = aa::CentroSymmetry{aa::CentroSymmetry::parse_neighbors(a.csp, "--csp")};
+  if (a.diamond) s.diamond = aa::DiamondCna{};
   if (a.adaptive_cna || s.empty()) s.adaptive_cna = aa::AdaptiveCna{};
   if (a.clusters.has_value() != !a.cluster_select.empty())
     throw InputError("--clusters and --cluster-select go together: the cutoff and which atoms to cluster");
   if (a.clusters) {
-    s.select = parse_selection(a.cluster_select, s);
+    s.select = parse_selection(a.cluster_select, s, !a.profile.excess_energy.empty());
     s.clusters = aa::DefectClusters{*a.clusters, a.cluster_min_size};
   }
   return s;
-}
-
-std::vector<double> codes(const std::vector<aa::Structure>& s) {
-  std::vector<double> out(s.size());
-  std::transform(s.begin(), s.end(), out.begin(), [](aa::Structure t) { return double(aa::structure_code(t)); });
-  return out;
-}
-
-// Appends the per-atom results to the dump frame as columns coord, cna, acna, csp, bpa.
-void append_columns(io::DumpFrame& dump, const aa::StructureAnalysisResult& r, std::size_t natoms) {
-  if (natoms == 0) return;
-  if (!r.coordination.empty()) dump.set_column("coord", {r.coordination.begin(), r.coordination.end()});
-  if (r.cna) dump.set_column("cna", codes(r.cna->structure));
-  if (r.adaptive_cna) dump.set_column("acna", codes(r.adaptive_cna->structure));
-  if (!r.centro_symmetry.empty()) dump.set_column("csp", r.centro_symmetry);
-  if (r.bond_pairs) dump.set_column("bpa", codes(r.bond_pairs->structure));
-  if (r.clusters) {
-    std::vector<double> cluster(natoms);
-    for (std::size_t i = 0; i < natoms; ++i) cluster[i] = r.clusters->cluster_of[i] + 1;
-    dump.set_column("cluster", std::move(cluster));
-  }
 }
 
 // clusters.csv: one row per cluster per frame.
@@ -240,29 +162,17 @@ void write_clusters(io::CsvWriter& out, std::size_t frame, long long timestep, c
   }
 }
 
-// structures.csv columns: frame, timestep, atoms, then <method>_<structure> counts and
-// <method>_<structure>_fraction for each structure method asked for (cna, acna, bpa).
+// structures.csv: frame, timestep, atoms, then the counts and fractions of each structure method.
 std::vector<std::string> summary_columns(const aa::StructureAnalyses& s) {
   std::vector<std::string> columns{"frame", "timestep", "atoms"};
-  for (const auto& [method, on] : {std::pair{"cna", s.cna.has_value()}, std::pair{"acna", s.adaptive_cna.has_value()},
-                                   std::pair{"bpa", s.bond_pairs.has_value()}}) {
-    if (!on) continue;
-    for (aa::Structure t : aa::kStructures) columns.push_back(fmt::format("{}_{}", method, aa::structure_name(t)));
-    for (aa::Structure t : aa::kStructures) columns.push_back(fmt::format("{}_{}_fraction", method, aa::structure_name(t)));
-  }
+  for (std::string& c : aa::structure_count_columns(s)) columns.push_back(std::move(c));
   return columns;
 }
 
 std::vector<double> summary_row(std::size_t frame, long long timestep, std::size_t natoms,
                                 const aa::StructureAnalysisResult& r) {
   std::vector<double> row{double(frame), double(timestep), double(natoms)};
-  auto add = [&row](const aa::StructureCounts& counts) {
-    for (aa::Structure t : aa::kStructures) row.push_back(double(counts.of(t)));
-    for (aa::Structure t : aa::kStructures) row.push_back(counts.fraction(t));
-  };
-  if (r.cna) add(r.cna->counts);
-  if (r.adaptive_cna) add(r.adaptive_cna->counts);
-  if (r.bond_pairs) add(r.bond_pairs->counts);
+  for (double v : aa::structure_count_values(r)) row.push_back(v);
   return row;
 }
 
@@ -299,24 +209,14 @@ class PendingOutputs {
   std::vector<fs::path> finals_;
 };
 
-aa::AtomFrame frame_of_data(const io::DataFile& data, const std::string& source) {
-  aa::AtomFrame frame;
-  frame.box = data.box;
-  frame.positions.assign(data.atoms.x.begin(), data.atoms.x.begin() + static_cast<std::ptrdiff_t>(data.atoms.nlocal));
-  for (std::size_t i = 0; i < data.atoms.nlocal; ++i) frame.types.push_back(data.atoms.type[i] + 1);
-  frame.ids = data.atoms.id;
-  aa::validate_frame(frame, source);
-  return frame;
-}
-
 void run_atoms(const AtomsArgs& a) {
   if (a.threads > 0) omp_set_num_threads(a.threads);
-  const aa::StructureAnalyses analyses = analyses_of(a);
+  aa::StructureAnalyses analyses = analyses_of(a);
   std::array<geometry::Boundary, 3> boundary{};
   if (a.data_boundary.size() != 3)
     throw InputError(fmt::format("--data-boundary: expected three of p, f, s (e.g. ppf), got '{}'", a.data_boundary));
   for (int d = 0; d < 3; ++d) boundary[d] = geometry::parse_boundary(std::string(1, a.data_boundary[d]), "--data-boundary");
-  const auto files = expand_inputs(a);
+  const auto files = expand_inputs(a.inputs, a.format);
   if (files.empty()) throw InputError("analyze atoms: no input given");
 
   const fs::path out_dir(a.output);
@@ -327,6 +227,12 @@ void run_atoms(const AtomsArgs& a) {
   VoidOutput voids(a.voids, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
   ProfileOutput profiles(a.profile, analyses);
   if (profiles.profiles()) profiles.open(pending.add("profiles.csv"));
+  const aa::AtomFrame* current_frame = nullptr;  // the frame being analysed and its dump: the excess
+  const io::DumpFrame* current_dump = nullptr;   // energy's pe column
+  if (profiles.excess())
+    analyses.excess_energy = [&](const aa::StructureAnalysisResult& r) {
+      return profiles.excess_energy(*current_frame, r, *current_dump);
+    };
   std::optional<TrackOutput> tracks;
   fs::path tracks_file, growth_file;
   if (a.track.track) {
@@ -342,29 +248,20 @@ void run_atoms(const AtomsArgs& a) {
   std::size_t frame_index = 0, total_atoms = 0;
   for (const InputFile& input : files) {
     const std::string source = input.path.string();
-    fs::path name = input.path.filename();
-    if (input.kind == InputKind::data) name.replace_extension(".dump");
-    if (name.extension() == ".gz") name.replace_extension();  // written uncompressed
+    const fs::path name = output_name(input);
     if (fs::exists(out_dir / name) && fs::equivalent(out_dir / name, input.path))
       throw InputError(fmt::format("{}: the output folder holds the input itself; choose another --output", source));
     io::DumpWriter writer(pending.add(name), io::DumpWriteOptions{true});
-    std::vector<io::DumpFrame> dumps;
-    std::vector<aa::AtomFrame> frames;
-    if (input.kind == InputKind::data) {
-      const io::DataFile data = io::read_data(input.path, boundary);
-      dumps.push_back(io::make_dump_frame(0, data.box, data.atoms, {"id", "type", "x", "y", "z"}));
-      dumps.back().source = source;  // messages about the frame name the data file
-      frames.push_back(frame_of_data(data, source));
-    } else {
-      dumps = read_dump_file(input.path);
-      if (dumps.empty()) throw InputError(fmt::format("{}: no frame in the dump file", source));
-    }
+    InputFrames in = read_input(input, boundary);
+    std::vector<io::DumpFrame>& dumps = in.dumps;
     for (std::size_t f = 0; f < dumps.size(); ++f) {
-      const aa::AtomFrame frame = input.kind == InputKind::data ? frames[f] : aa::frame_from_dump(dumps[f], source);
+      const aa::AtomFrame frame = in.frame(f);
       if (frame.size() == 0)
-        throw InputError(fmt::format("{}: the frame of timestep {} has no atoms", source, frame.timestep));
+        throw InputError(fmt::format("{}: the frame of timestep {} has no atoms", in.sources[f], frame.timestep));
+      current_frame = &frame;
+      current_dump = &dumps[f];
       const auto result = aa::analyze_structure(frame, analyses);
-      append_columns(dumps[f], result, frame.size());
+      aa::append_structure_columns(dumps[f], result, frame.size());
       if (profiles.profiles() || profiles.excess()) profiles.add(frame_index, frame, result, dumps[f]);
       if (voids.on()) voids.add(frame_index, frame);
       if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);
@@ -395,8 +292,9 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       "Per-atom structure of atoms (Xu et al. (2015) §3.2.3, §4.4): coordination, conventional CNA\n"
       "(LAMMPS cna/atom codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other), adaptive CNA without a cutoff\n"
       "(Stukowski 2012, the same codes), centro-symmetry parameter (Kelchner et al. 1998, LAMMPS\n"
-      "centro/atom's pairing) and the atom type from Honeycutt-Andersen bond pairs, all from one\n"
-      "neighbour pass per frame. With no analysis option, adaptive CNA. Writes OUTPUT/<input name>\n"
+      "centro/atom's pairing), the atom type from Honeycutt-Andersen bond pairs and cubic/hexagonal\n"
+      "diamond (Maras et al. 2016), all from one neighbour pass per frame. With no analysis option,\n"
+      "adaptive CNA. Writes OUTPUT/<input name>\n"
       "(each input's frames with the results appended as columns coord, cna, acna, csp, bpa, cluster;\n"
       "a data file becomes <stem>.dump), OUTPUT/structures.csv (frame, timestep, atoms, then per\n"
       "method the count and fraction of each structure) and, with --clusters, OUTPUT/clusters.csv\n"
@@ -404,16 +302,17 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       "vectors of fcc dislocations by the Frank scheme of Xu et al. (2015) §3.2.3, FS/RH); with --track,\n"
       "OUTPUT/tracks.csv and OUTPUT/growth.csv (clusters followed in time, growth laws, Fig 72).\n"
       "Inputs: LAMMPS text dumps (one file or several, frames in order; orthogonal boxes; .gz\n"
-      "through gzip, written back uncompressed), LAMMPS data files (atom style atomic), shockfield\n"
-      "MD run folders (their dumps/dump.*.lammpstrj in step order). Outputs appear only when every\n"
-      "input was read and analysed. See docs/analysis-atoms.md.");
-  cmd->add_option("inputs", a->inputs, "Dump files, data files or MD run folders")->required()->check(CLI::ExistingPath);
+      "through gzip, written back uncompressed), LAMMPS data files (atom style atomic), extended XYZ\n"
+      "(ASE/OVITO .xyz/.extxyz, one or many frames, orthogonal Lattice; written back as <stem>.dump),\n"
+      "shockfield MD run folders (their dumps/dump.*.lammpstrj or dump.*.xyz in step order). Outputs\n"
+      "appear only when every input was read and analysed. See docs/analysis-atoms.md.");
+  cmd->add_option("inputs", a->inputs, "Dump files, data files, extended XYZ files or MD run folders")->required()->check(CLI::ExistingPath);
   cmd->add_option("-o,--output", a->output, "Output folder (created if missing)")->capture_default_str();
   cmd->add_option("--format", a->format,
-                  "Input file format: auto (a file whose first line starts with ITEM: is a dump, else a data "
-                  "file), dump or data")
+                  "Input file format: auto (.xyz, .extxyz [.gz]: extended XYZ; else a file whose first line starts "
+                  "with ITEM: is a dump, else a data file), dump, data or extxyz")
       ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "dump", "data"}));
+      ->check(CLI::IsMember({"auto", "dump", "data", "extxyz"}));
   cmd->add_option("--data-boundary", a->data_boundary,
                   "Boundaries of data-file boxes (data files do not store them), one of p f s per axis")
       ->capture_default_str();
@@ -423,6 +322,11 @@ void add_analyze_atoms_command(CLI::App& analyze) {
                   "Conventional CNA with this cutoff (Å), as LAMMPS cna/atom: 0.854 a for fcc, 1.207 a for bcc")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--adaptive-cna", a->adaptive_cna, "Adaptive CNA (no cutoff; the default analysis)");
+  cmd->add_flag("--diamond", a->diamond,
+                "Cubic and hexagonal diamond (Maras et al. 2016, as OVITO's Identify diamond structure): adaptive CNA "
+                "of the second neighbours -> column dia (0 other, 1 cubic, 2 cubic first neighbour, 3 cubic second "
+                "neighbour, 4 hexagonal, 5 and 6 its first and second neighbours) and dia_* columns of "
+                "structures.csv");
   cmd->add_option("--csp", a->csp, "Centro-symmetry parameter with N neighbours: fcc (12), bcc (8) or an even N");
   cmd->add_option("--bond-pairs", a->bond_pairs,
                   "Atom type from Honeycutt-Andersen bond-pair indices of bonds shorter than this cutoff (Å)")
@@ -434,8 +338,10 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--cluster-select", a->cluster_select,
                   "Which atoms to cluster: cna|acna|bpa:TYPE[,TYPE...] (any of them) or :!TYPE[,TYPE...] (none of "
-                  "them; TYPE fcc hcp bcc ico other), or csp>VALUE (Å²); e.g. acna:hcp, acna:!fcc, acna:!fcc,hcp "
-                  "(dislocation cores)");
+                  "them; TYPE fcc hcp bcc ico other), dia:[!]TYPE[,...] (TYPE cubic cubic_first cubic_second "
+                  "hexagonal hexagonal_first hexagonal_second other), csp>VALUE (Å²) or excess>VALUE (eV, with "
+                  "--excess-energy); "
+                  "e.g. acna:hcp, acna:!fcc, acna:!fcc,hcp (dislocation cores), excess>0.1");
   cmd->add_option("--cluster-min-size", a->cluster_min_size, "Drop clusters with fewer atoms")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

@@ -70,30 +70,33 @@ const std::vector<aa::Structure>& ProfileOutput::structures_of(const aa::Structu
   return first == "cna" ? r.cna->structure : first == "acna" ? r.adaptive_cna->structure : r.bond_pairs->structure;
 }
 
+std::vector<double> ProfileOutput::excess_energy(const aa::AtomFrame& frame, const aa::StructureAnalysisResult& r,
+                                                 const io::DumpFrame& dump) const {
+  std::string column = args_.pe_column;
+  if (column.empty())
+    for (const char* name : {"pe", "c_pe", "c_peatom", "c_pe_atom", "v_pe"})
+      if (dump.has(name)) {
+        column = name;
+        break;
+      }
+  if (column.empty() || !dump.has(column))
+    throw InputError(fmt::format("{}: --excess-energy needs a per-atom potential energy column ({}); dump pe (LAMMPS: "
+                                 "compute pe/atom) or name the column with --pe-column",
+                                 dump.where(), column.empty() ? "none of pe, c_pe, c_peatom, c_pe_atom, v_pe" : column));
+  const std::vector<double>& pe = dump.column(column);
+  const std::vector<aa::Structure> none(frame.size(), crystal_);
+  const aa::ExcessEnergy e =
+      aa::excess_energy(pe, methods_.empty() ? none : structures_of(r), crystal_, reference_ ? &*reference_ : nullptr);
+  if (!reference_)
+    std::printf("timestep %lld: excess energy reference e0 = %.10g eV (median pe of %s atoms)\n", frame.timestep,
+                e.reference, args_.crystal.c_str());
+  return e.excess;
+}
+
 void ProfileOutput::add(std::size_t frame_index, const aa::AtomFrame& frame, const aa::StructureAnalysisResult& r,
                         io::DumpFrame& dump) {
-  std::vector<double> excess;
-  if (excess_) {
-    std::string column = args_.pe_column;
-    if (column.empty())
-      for (const char* name : {"pe", "c_pe", "c_peatom", "c_pe_atom", "v_pe"})
-        if (dump.has(name)) {
-          column = name;
-          break;
-        }
-    if (column.empty() || !dump.has(column))
-      throw InputError(fmt::format("{}: --excess-energy needs a per-atom potential energy column ({}); dump pe (LAMMPS: "
-                                   "compute pe/atom) or name the column with --pe-column",
-                                   dump.where(), column.empty() ? "none of pe, c_pe, c_peatom, c_pe_atom, v_pe" : column));
-    const std::vector<double>& pe = dump.column(column);
-    const std::vector<aa::Structure> none(frame.size(), crystal_);
-    const aa::ExcessEnergy e = aa::excess_energy(pe, methods_.empty() ? none : structures_of(r), crystal_,
-                                                 reference_ ? &*reference_ : nullptr);
-    excess = e.excess;
-    if (!reference_) std::printf("timestep %lld: excess energy reference e0 = %.10g eV (median pe of %s atoms)\n",
-                                 frame.timestep, e.reference, args_.crystal.c_str());
-    if (frame.size() > 0) dump.set_column("excess", excess);
-  }
+  const std::vector<double>& excess = r.excess_energy;
+  if (excess_ && frame.size() > 0) dump.set_column("excess", excess);
   if (!profile_) return;
   std::vector<std::vector<aa::ProfileBin>> per_method;
   for (const std::string& m : methods_) {

@@ -32,8 +32,12 @@ class ProfileOutput {
   bool excess() const { return excess_; }
   /// Opens OUTPUT/profiles.csv.
   void open(const std::filesystem::path& file);
-  /// The excess energy of the frame (column `excess` appended; e0 printed once per frame) and its
-  /// profile rows.
+  /// The frame's per-atom excess energy pe − e0 from the dump's pe column (e0 printed when it is
+  /// the median of the crystal atoms); the source of StructureAnalyses::excess_energy.
+  std::vector<double> excess_energy(const analysis::atoms::AtomFrame& frame,
+                                    const analysis::atoms::StructureAnalysisResult& result,
+                                    const io::DumpFrame& dump) const;
+  /// Appends the result's excess energy as column `excess` and writes the frame's profile rows.
   void add(std::size_t frame_index, const analysis::atoms::AtomFrame& frame,
            const analysis::atoms::StructureAnalysisResult& result, io::DumpFrame& dump);
   void close();

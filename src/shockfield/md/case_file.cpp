@@ -132,6 +132,30 @@ StageSpec read_stage(const Config& t, std::size_t index) {
   return s;
 }
 
+// [analysis] (docs/md.md): which analyses, how often, and whether the dumps carry their columns.
+AnalysisSpec read_analysis(const Config& t) {
+  AnalysisSpec a;
+  a.every = t.get_int("every", Range::closed(1, 1e12));
+  static const std::vector<std::string> known{"acna", "cna", "csp", "coordination", "bpa", "diamond"};
+  if (t.has("methods")) a.methods = t.get_strings("methods");
+  if (a.methods.empty()) t.fail("methods", "at least one of \"acna\", \"cna\", \"csp\", \"coordination\", \"bpa\", \"diamond\"");
+  for (std::size_t k = 0; k < a.methods.size(); ++k) {
+    const std::string& m = a.methods[k];
+    if (std::find(known.begin(), known.end(), m) == known.end())
+      t.fail("methods", fmt::format("one of \"acna\", \"cna\", \"csp\", \"coordination\", \"bpa\", \"diamond\"; got \"{}\"", m));
+    if (std::find(a.methods.begin(), a.methods.begin() + static_cast<std::ptrdiff_t>(k), m) != a.methods.begin() + static_cast<std::ptrdiff_t>(k))
+      t.fail("methods", fmt::format("each method once; \"{}\" is listed twice", m));
+  }
+  const bool needs_cutoff = std::any_of(a.methods.begin(), a.methods.end(),
+                                        [](const std::string& m) { return m == "cna" || m == "coordination" || m == "bpa"; });
+  if (needs_cutoff) a.cutoff = t.get_double("cutoff", Range{0.0, 100.0, true, false});
+  else if (t.has("cutoff")) a.cutoff = t.get_double("cutoff", Range{0.0, 100.0, true, false});
+  a.csp_neighbors = static_cast<int>(t.get_int_or("csp_neighbors", 12, Range::closed(2, 64)));
+  if (a.csp_neighbors % 2 != 0) t.fail("csp_neighbors", "an even number of neighbours (12 fcc, 8 bcc)");
+  a.dump_columns = t.get_bool_or("dump_columns", false);
+  return a;
+}
+
 }  // namespace
 
 MdCase read_md_case(const Config& root) {
@@ -175,6 +199,12 @@ MdCase read_md_case(const Config& root) {
     out.profile_every = o->get_int_or("profile_every", 0, Range::non_negative());
     out.profile_axis = read_axis(*o, "profile_axis", "z");
     out.profile_bin_width = o->get_double_or("profile_bin_width", 5.0, Range::positive());
+  }
+
+  if (const auto t = root.optional_table("analysis")) {
+    c.output.analysis = read_analysis(*t);
+    if (c.output.analysis.dump_columns && c.output.dump_every == 0)
+      t->fail("dump_columns", "[output] dump_every > 0: dump_columns adds the analysis to the dumps, and the run writes none");
   }
 
   const auto stages = root.tables("stage");

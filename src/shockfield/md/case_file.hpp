@@ -44,6 +44,16 @@ struct VelocityAdd {
   Vec3 velocity = Vec3::Zero();    ///< Å/ps
 };
 
+/// [analysis]: per-atom structure analysis during the run (analysis/atoms; docs/md.md), every
+/// `every` steps, into structures.csv and optionally the dumps.
+struct AnalysisSpec {
+  long long every = 0;                       ///< steps; 0: no [analysis] table
+  std::vector<std::string> methods{"acna"};  ///< of acna, cna, csp, coordination, bpa, diamond
+  double cutoff = 0;                         ///< Å: cna, coordination, bpa
+  int csp_neighbors = 12;                    ///< N of the centro-symmetry parameter
+  bool dump_columns = false;                 ///< the per-atom columns in every dump frame
+};
+
 struct OutputSpec {
   long long thermo_every = 100;
   long long checkpoint_every = 0;  ///< 0: only when a run ends or is stopped
@@ -56,6 +66,7 @@ struct OutputSpec {
   long long profile_every = 0;
   int profile_axis = 2;
   double profile_bin_width = 5.0;  ///< Å
+  AnalysisSpec analysis;           ///< the [analysis] table (not [output]'s keys)
   /// Not a key: the shock axis of the first msst stage, when the case has one (the thermo table
   /// and thermo.csv then carry the MSST columns).
   std::optional<int> msst_axis;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 
+#include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/extxyz.hpp"
@@ -81,6 +82,10 @@ RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::option
   }
   thermo_ = io::CsvWriter(folder / "thermo.csv", thermo_columns(spec), keep);
   if (spec.profile_every > 0) profiles_ = io::CsvWriter(profiles_file_, profile_columns(), keep);
+  if (spec.analysis.every > 0) {
+    structure_.emplace(spec.analysis);
+    structures_ = io::CsvWriter(folder / "structures.csv", structure_->columns(), keep);
+  }
   if (spec.dump_every > 0) {
     fs::create_directories(folder / "dumps");
     if (resume_step)
@@ -109,7 +114,13 @@ void RunOutput::write(const Simulation& sim, bool force_thermo) {
     const Profile p = bin_profile(sim, spec_.profile_axis, spec_.profile_bin_width);
     for (std::size_t b = 0; b < p.bins.size(); ++b) profiles_.row(profile_row(p, b));
   }
-  if (spec_.dump_every > 0 && sim.step % spec_.dump_every == 0) write_dump(sim);
+  // [analysis]: one computation serves structures.csv and the dump's columns of this step.
+  const bool analysis_due = structure_ && sim.step % spec_.analysis.every == 0;
+  const bool dump_due = spec_.dump_every > 0 && sim.step % spec_.dump_every == 0;
+  std::optional<analysis::atoms::StructureAnalysisResult> analysed;
+  if (analysis_due || (structure_ && dump_due && spec_.analysis.dump_columns)) analysed = structure_->compute(sim);
+  if (analysis_due) structures_.row(structure_->row(sim, *analysed));
+  if (dump_due) write_dump(sim, spec_.analysis.dump_columns ? &*analysed : nullptr);
 }
 
 void RunOutput::write_thermo(const Simulation& sim) {
@@ -134,7 +145,7 @@ void RunOutput::write_thermo(const Simulation& sim) {
   thermo_.row(row);
 }
 
-void RunOutput::write_dump(const Simulation& sim) const {
+void RunOutput::write_dump(const Simulation& sim, const analysis::atoms::StructureAnalysisResult* analysed) const {
   std::vector<std::string> basic;
   for (const auto& f : spec_.dump_fields)
     if (!is_computed(f)) basic.push_back(f);
@@ -142,6 +153,7 @@ void RunOutput::write_dump(const Simulation& sim) const {
   if (spec_.dump_time) frame.time = sim.time;
   for (const auto& f : spec_.dump_fields)
     if (is_computed(f)) frame.set_column(f, computed_column(sim, f));
+  if (analysed) analysis::atoms::append_structure_columns(frame, *analysed, sim.atoms.nlocal);
   const std::string ext = spec_.dump_format == "extxyz" ? "xyz" : "lammpstrj";
   const fs::path file = folder_ / "dumps" / fmt::format("dump.{:0{}}.{}", sim.step, spec_.dump_pad, ext);
   io::CheckedOutput out(file);

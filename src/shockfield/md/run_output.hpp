@@ -1,12 +1,14 @@
 #pragma once
 // What an MD run writes while it runs: thermo.csv (one row every thermo_every steps),
-// profiles.csv (binned profiles every profile_every steps), dumps/ (one file per frame, LAMMPS
+// profiles.csv (binned profiles every profile_every steps), structures.csv (the [analysis]
+// table's structure fractions every `every` steps), dumps/ (one file per frame, LAMMPS
 // text dump or extended XYZ, so a resumed run simply removes frames past its checkpoint; OVITO
 // opens the series as dumps/dump.*.lammpstrj). Rows and frames are flushed when written.
 #include <filesystem>
 #include <optional>
 
 #include "shockfield/io/csv_writer.hpp"
+#include "shockfield/md/diagnostics/structure.hpp"
 #include "shockfield/md/case_file.hpp"
 #include "shockfield/md/simulation.hpp"
 
@@ -27,12 +29,14 @@ class RunOutput {
 
  private:
   void write_thermo(const Simulation& sim);
-  void write_dump(const Simulation& sim) const;
+  /// `analysed`: the [analysis] result of this step, appended as columns (dump_columns), or null.
+  void write_dump(const Simulation& sim, const analysis::atoms::StructureAnalysisResult* analysed) const;
   bool dump_needs_per_atom() const;
 
   std::filesystem::path folder_, profiles_file_;
   OutputSpec spec_;
-  io::CsvWriter thermo_, profiles_;
+  io::CsvWriter thermo_, profiles_, structures_;
+  std::optional<StructureDiagnostic> structure_;  ///< the [analysis] table, when the case has one
   std::int64_t last_thermo_step_ = -1, last_frame_step_ = -1;
 };
 

@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "shockfield/analysis/atoms/defect_clusters.hpp"
+#include "shockfield/analysis/atoms/structure_analysis.hpp"
+#include "shockfield/core/error.hpp"
 #include "unit/analysis_atoms/lattice_frames.hpp"
 
 namespace shockfield::analysis::atoms {
@@ -81,6 +83,42 @@ TEST(DefectClusters, SeparateBlobsLargestFirstAndMinimumSize) {
   const auto dropped = DefectClusters{kBond, 2}.compute(frame, table, selected);
   EXPECT_EQ(dropped.clusters.size(), 2u);
   EXPECT_EQ(dropped.cluster_of[lone], -1);
+}
+
+// Clusters selected by excess energy through analyze_structure: the excess source runs after the
+// structure analyses (it sees their results, as --excess-energy auto needs the fcc atoms) and
+// before the clusters, which select atoms above a threshold. Two balls of high-energy atoms.
+TEST(DefectClusters, SelectedByExcessEnergyInAnalyzeStructure) {
+  const AtomFrame frame = testing::crystal(md::LatticeStyle::fcc, kA0, 10);
+  std::vector<bool> ball(frame.size(), false);
+  const Vec3 mid = frame.box.lo + 0.5 * frame.box.length();
+  const auto small = select_ellipsoid(frame, mid - Vec3(9, 0, 0), Vec3(4, 4, 4), ball);
+  const auto large = select_ellipsoid(frame, mid + Vec3(8, 0, 0), Vec3(6, 6, 6), ball);
+  StructureAnalyses analyses;
+  analyses.adaptive_cna = AdaptiveCna{};
+  std::size_t fcc_seen = 0;
+  analyses.excess_energy = [&](const StructureAnalysisResult& r) {
+    fcc_seen = r.adaptive_cna->counts.of(Structure::fcc);
+    std::vector<double> e(frame.size(), 0.05);  // thermal-sized excess: below the threshold
+    for (std::size_t i = 0; i < e.size(); ++i)
+      if (ball[i]) e[i] = 0.1 + 1e-9;  // just above it
+    return e;
+  };
+  analyses.clusters = DefectClusters{kBond, 1};
+  analyses.select = [](const StructureAnalysisResult& r) {
+    std::vector<bool> out(r.excess_energy.size());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = r.excess_energy[i] > 0.1;
+    return out;
+  };
+  const auto r = analyze_structure(frame, analyses);
+  EXPECT_EQ(fcc_seen, frame.size());  // the source saw the a-CNA result
+  ASSERT_EQ(r.excess_energy.size(), frame.size());
+  ASSERT_EQ(r.clusters->clusters.size(), 2u);
+  EXPECT_EQ(r.clusters->clusters[0].size, large.size());
+  EXPECT_EQ(r.clusters->clusters[1].size, small.size());
+  // A source of the wrong length is refused.
+  analyses.excess_energy = [](const StructureAnalysisResult&) { return std::vector<double>(3, 0.0); };
+  EXPECT_THROW(analyze_structure(frame, analyses), InputError);
 }
 
 }  // namespace

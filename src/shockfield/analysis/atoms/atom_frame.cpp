@@ -57,4 +57,18 @@ AtomFrame frame_from_dump(const io::DumpFrame& dump, const std::string& source) 
   return frame;
 }
 
+AtomFrame frame_from_atoms(long long timestep, const geometry::Box& box, const md::Atoms& atoms,
+                           const std::string& source) {
+  AtomFrame frame;
+  frame.timestep = timestep;
+  frame.box = box;
+  const auto n = static_cast<std::ptrdiff_t>(atoms.nlocal);
+  frame.positions.assign(atoms.x.begin(), atoms.x.begin() + n);
+  frame.types.resize(atoms.nlocal);
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) frame.types[i] = atoms.type[i] + 1;
+  frame.ids.assign(atoms.id.begin(), atoms.id.begin() + n);
+  validate_frame(frame, source);
+  return frame;
+}
+
 }  // namespace shockfield::analysis::atoms

@@ -32,4 +32,9 @@ void validate_frame(const AtomFrame& frame, const std::string& source);
 /// from `type` (all 1 when absent), ids from `id` (1..N when absent); validated as above.
 AtomFrame frame_from_dump(const io::DumpFrame& dump, const std::string& source);
 
+/// The frame of the owned atoms of an md::Atoms set (an MD simulation's, a data file's): types
+/// 1-based, ids; validated as above.
+AtomFrame frame_from_atoms(long long timestep, const geometry::Box& box, const md::Atoms& atoms,
+                           const std::string& source);
+
 }  // namespace shockfield::analysis::atoms

@@ -1,5 +1,7 @@
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 
+#include <fmt/format.h>
+
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::analysis::atoms {
@@ -11,6 +13,7 @@ NeighborRequest StructureAnalyses::request() const {
   if (adaptive_cna) r = r.combined(adaptive_cna->request());
   if (centro_symmetry) r = r.combined(centro_symmetry->request());
   if (bond_pairs) r = r.combined(bond_pairs->request());
+  if (diamond) r = r.combined(diamond->request());
   if (clusters) r = r.combined(clusters->request());
   return r;
 }
@@ -23,6 +26,7 @@ StructureAnalysisResult analyze_structure(const AtomFrame& frame, const Structur
     if (analyses.cna) out.cna = StructureResult{};
     if (analyses.adaptive_cna) out.adaptive_cna = StructureResult{};
     if (analyses.bond_pairs) out.bond_pairs = BondPairResult{{0}, {}, {}, {}, {}};
+    if (analyses.diamond) out.diamond = DiamondResult{};
     if (analyses.clusters) out.clusters = ClusterResult{};
     return out;
   }
@@ -33,6 +37,13 @@ StructureAnalysisResult analyze_structure(const AtomFrame& frame, const Structur
   if (analyses.adaptive_cna) out.adaptive_cna = analyses.adaptive_cna->compute(frame, table);
   if (analyses.centro_symmetry) out.centro_symmetry = analyses.centro_symmetry->compute(frame, table);
   if (analyses.bond_pairs) out.bond_pairs = analyses.bond_pairs->compute(frame, table);
+  if (analyses.diamond) out.diamond = analyses.diamond->compute(frame, table);
+  if (analyses.excess_energy) {
+    out.excess_energy = analyses.excess_energy(out);
+    if (out.excess_energy.size() != frame.size())
+      throw InputError(fmt::format("structure analysis: {} excess energies for {} atoms", out.excess_energy.size(),
+                                   frame.size()));
+  }
   if (analyses.clusters) out.clusters = analyses.clusters->compute(frame, table, analyses.select(out));
   return out;
 }

@@ -10,6 +10,7 @@
 #include "shockfield/analysis/atoms/common_neighbor_analysis.hpp"
 #include "shockfield/analysis/atoms/coordination.hpp"
 #include "shockfield/analysis/atoms/defect_clusters.hpp"
+#include "shockfield/analysis/atoms/diamond_structure.hpp"
 
 namespace shockfield::analysis::atoms {
 
@@ -17,6 +18,9 @@ struct StructureAnalysisResult;
 
 /// Which atoms to cluster, from the other analyses' results (one flag per atom).
 using ClusterSelection = std::function<std::vector<bool>(const StructureAnalysisResult&)>;
+/// Per-atom excess energy (eV) from the analyses' results — the caller's potential energies less
+/// a reference that may depend on the structures (the median pe of the crystal atoms).
+using ExcessEnergySource = std::function<std::vector<double>(const StructureAnalysisResult&)>;
 
 struct StructureAnalyses {
   std::optional<Coordination> coordination;
@@ -24,12 +28,16 @@ struct StructureAnalyses {
   std::optional<AdaptiveCna> adaptive_cna;
   std::optional<CentroSymmetry> centro_symmetry;
   std::optional<BondPairAnalysis> bond_pairs;
+  std::optional<DiamondCna> diamond;
+  /// Per-atom excess energy, computed after the analyses above and before the clusters (so that
+  /// `select` can pick atoms by it); empty: none.
+  ExcessEnergySource excess_energy;
   /// Clusters of the atoms `select` picks, computed after the analyses above on the same table.
   std::optional<DefectClusters> clusters;
   ClusterSelection select;
 
   bool empty() const {
-    return !coordination && !cna && !adaptive_cna && !centro_symmetry && !bond_pairs;
+    return !coordination && !cna && !adaptive_cna && !centro_symmetry && !bond_pairs && !diamond;
   }
   /// The neighbour request that serves every analysis asked for.
   NeighborRequest request() const;
@@ -41,6 +49,8 @@ struct StructureAnalysisResult {
   std::optional<StructureResult> adaptive_cna;
   std::vector<double> centro_symmetry;      ///< empty unless asked for
   std::optional<BondPairResult> bond_pairs;
+  std::optional<DiamondResult> diamond;
+  std::vector<double> excess_energy;        ///< eV; empty unless an excess_energy source is given
   std::optional<ClusterResult> clusters;
   std::size_t neighbor_table_bytes = 0;
 };

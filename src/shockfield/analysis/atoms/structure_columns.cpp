@@ -1,0 +1,70 @@
+#include "shockfield/analysis/atoms/structure_columns.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <utility>
+
+namespace shockfield::analysis::atoms {
+namespace {
+
+std::vector<double> codes(const std::vector<Structure>& s) {
+  std::vector<double> out(s.size());
+  std::transform(s.begin(), s.end(), out.begin(), [](Structure t) { return double(structure_code(t)); });
+  return out;
+}
+
+}  // namespace
+
+void append_structure_columns(io::DumpFrame& dump, const StructureAnalysisResult& r, std::size_t natoms) {
+  if (natoms == 0) return;
+  if (!r.coordination.empty()) dump.set_column("coord", {r.coordination.begin(), r.coordination.end()});
+  if (r.cna) dump.set_column("cna", codes(r.cna->structure));
+  if (r.adaptive_cna) dump.set_column("acna", codes(r.adaptive_cna->structure));
+  if (!r.centro_symmetry.empty()) dump.set_column("csp", r.centro_symmetry);
+  if (r.bond_pairs) dump.set_column("bpa", codes(r.bond_pairs->structure));
+  if (r.diamond) {
+    std::vector<double> dia(natoms);
+    for (std::size_t i = 0; i < natoms; ++i) dia[i] = static_cast<double>(r.diamond->structure[i]);
+    dump.set_column("dia", std::move(dia));
+  }
+  if (r.clusters) {
+    std::vector<double> cluster(natoms);
+    for (std::size_t i = 0; i < natoms; ++i) cluster[i] = r.clusters->cluster_of[i] + 1;
+    dump.set_column("cluster", std::move(cluster));
+  }
+}
+
+std::vector<std::string> structure_count_columns(const StructureAnalyses& s) {
+  std::vector<std::string> columns;
+  for (const auto& [method, on] : {std::pair{"cna", s.cna.has_value()}, std::pair{"acna", s.adaptive_cna.has_value()},
+                                   std::pair{"bpa", s.bond_pairs.has_value()}}) {
+    if (!on) continue;
+    for (Structure t : kStructures) columns.push_back(fmt::format("{}_{}", method, structure_name(t)));
+    for (Structure t : kStructures) columns.push_back(fmt::format("{}_{}_fraction", method, structure_name(t)));
+  }
+  if (s.diamond) {
+    for (DiamondStructure t : kDiamondStructures) columns.push_back(fmt::format("dia_{}", diamond_structure_name(t)));
+    for (DiamondStructure t : kDiamondStructures)
+      columns.push_back(fmt::format("dia_{}_fraction", diamond_structure_name(t)));
+  }
+  return columns;
+}
+
+std::vector<double> structure_count_values(const StructureAnalysisResult& r) {
+  std::vector<double> row;
+  auto add = [&row](const StructureCounts& counts) {
+    for (Structure t : kStructures) row.push_back(double(counts.of(t)));
+    for (Structure t : kStructures) row.push_back(counts.fraction(t));
+  };
+  if (r.cna) add(r.cna->counts);
+  if (r.adaptive_cna) add(r.adaptive_cna->counts);
+  if (r.bond_pairs) add(r.bond_pairs->counts);
+  if (r.diamond) {
+    for (DiamondStructure t : kDiamondStructures) row.push_back(double(r.diamond->of(t)));
+    for (DiamondStructure t : kDiamondStructures) row.push_back(r.diamond->fraction(t));
+  }
+  return row;
+}
+
+}  // namespace shockfield::analysis::atoms

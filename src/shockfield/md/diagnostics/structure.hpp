@@ -1,0 +1,31 @@
+#pragma once
+// The in-run structure analysis of an MD case's [analysis] table: the same per-atom analyses as
+// `shockfield analyze atoms` (analysis/atoms: adaptive and conventional CNA, centro-symmetry,
+// coordination, bond pairs) on the simulation's own atoms, for structures.csv (step, time, atoms,
+// counts and fractions per structure) and, optionally, the dump frames' columns.
+#include <string>
+#include <vector>
+
+#include "shockfield/analysis/atoms/structure_analysis.hpp"
+#include "shockfield/io/lammps_dump.hpp"
+#include "shockfield/md/case_file.hpp"
+#include "shockfield/md/simulation.hpp"
+
+namespace shockfield::md {
+
+class StructureDiagnostic {
+ public:
+  explicit StructureDiagnostic(const AnalysisSpec& spec);
+
+  /// structures.csv: step, time_ps, atoms, then the count columns of analyze atoms.
+  std::vector<std::string> columns() const;
+  /// The analyses of the simulation's current atoms.
+  analysis::atoms::StructureAnalysisResult compute(const Simulation& sim) const;
+  /// The structures.csv row of a result computed at the simulation's current step.
+  std::vector<double> row(const Simulation& sim, const analysis::atoms::StructureAnalysisResult& r) const;
+
+ private:
+  analysis::atoms::StructureAnalyses analyses_;
+};
+
+}  // namespace shockfield::md
