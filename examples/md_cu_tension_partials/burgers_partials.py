@@ -40,9 +40,10 @@ for r in rows:
             b = next(csv.DictReader(open(os.path.join(tmp, "burgers.csv"))))
             results.append(dict(timestep=step, stacking_fault=r["cluster"], sf_atoms=r["size"], place=where, line=line,
                                 b=b["b"], kind=b["kind"], reliable=b["reliable"], max_step_error=b["max_step_error"]))
+fields = ["timestep", "stacking_fault", "sf_atoms", "place", "line", "b", "kind", "reliable", "max_step_error"]
 new = not os.path.exists(out_csv)
 with open(out_csv, "a", newline="") as fh:
-    w = csv.DictWriter(fh, fieldnames=list(results[0]) if results else ["timestep"])
+    w = csv.DictWriter(fh, fieldnames=fields)
     if new:
         w.writeheader()
     for x in results:

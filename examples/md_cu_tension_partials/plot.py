@@ -63,9 +63,12 @@ for f in frames:
     print(f"| {strain(f['step']):.3f} | {s:.1f} | {f['hcp']:.4f} | {f['other']:.4f} | {f['bcc']:.4f} | {f['cna_hcp']:.4f} | "
           f"{f['cna_other']:.4f} | {f['c13']:.4f} | {f['cnot12']:.4f} |")
 
-# Snapshots: the first frame with a reliable Shockley partial, and the frame of the largest hcp fraction.
+# Snapshots: the frame with the most reliable Shockley circuits, and the frame of the largest hcp fraction.
 shock = [b for b in burgers if b["reliable"] == "1" and b["kind"].startswith("Shockley")]
-first = min((int(b["timestep"]) for b in shock), default=None)
+per_frame = {}
+for b in shock:
+    per_frame[int(b["timestep"])] = per_frame.get(int(b["timestep"]), 0) + 1
+first = max(per_frame, key=lambda s: (per_frame[s], -s)) if per_frame else None
 peak = max(frames, key=lambda f: f["hcp"])["step"]
 snaps = [s for s in (first, peak) if s is not None]
 if len(snaps) == 2 and snaps[0] == snaps[1]:
