@@ -8,6 +8,9 @@
 // (so reading, the pair's neighbour list and forces cancel); peak RSS from /usr/bin/time.
 //
 //   OMP_WAIT_POLICY=passive build/release/bench/atoms_bench [--cells 63] [--repeats 3] [--no-lammps]
+//   build/release/bench/atoms_bench --cells 63 --write-data FILE   (the same atoms as a data file, then exit)
+//   build/release/bench/atoms_bench --cells 136 --write-dump FILE  (as a LAMMPS text dump, id type x y z, then exit)
+// bench/atoms_compare.sh alternates this benchmark with LAMMPS run by run (medians, load averages).
 #include <omp.h>
 #include <sys/resource.h>
 #include <time.h>
@@ -100,10 +103,15 @@ LammpsRun run_lammps(const std::string& data, bool computes) {
 int main(int argc, char** argv) {
   int cells = 63, repeats = 3;
   bool lammps = true;
+  std::string write_data_file, write_dump_file;
+  bool phases = false;  // time the neighbour table and each analysis apart (where the 2-thread time goes)
   for (int k = 1; k < argc; ++k) {
     if (!std::strcmp(argv[k], "--cells") && k + 1 < argc) cells = std::atoi(argv[++k]);
     else if (!std::strcmp(argv[k], "--repeats") && k + 1 < argc) repeats = std::atoi(argv[++k]);
     else if (!std::strcmp(argv[k], "--no-lammps")) lammps = false;
+    else if (!std::strcmp(argv[k], "--write-data") && k + 1 < argc) write_data_file = argv[++k];
+    else if (!std::strcmp(argv[k], "--write-dump") && k + 1 < argc) write_dump_file = argv[++k];
+    else if (!std::strcmp(argv[k], "--phases")) phases = true;
   }
   shockfield::md::LatticeSpec spec;
   spec.a0 = 3.615;
@@ -116,6 +124,23 @@ int main(int argc, char** argv) {
   lattice.create_atoms(box, atoms);
   for (std::size_t i = 0; i < atoms.nlocal; ++i)
     for (int d = 0; d < 3; ++d) atoms.x[i][d] += 0.085 * shockfield::rng::normal(2026, i, static_cast<std::uint64_t>(d));
+  if (!write_data_file.empty()) {
+    shockfield::io::write_data(write_data_file, box, atoms, {"atoms_bench", false, false});
+    std::printf("wrote %zu atoms to %s\n", atoms.nlocal, write_data_file.c_str());
+    return 0;
+  }
+  if (!write_dump_file.empty()) {
+    std::FILE* f = std::fopen(write_dump_file.c_str(), "w");
+    if (!f) return 1;
+    std::fprintf(f, "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n%zu\nITEM: BOX BOUNDS pp pp pp\n", atoms.nlocal);
+    for (int d = 0; d < 3; ++d) std::fprintf(f, "%.10g %.10g\n", box.lo[d], box.hi[d]);
+    std::fprintf(f, "ITEM: ATOMS id type x y z\n");
+    for (std::size_t i = 0; i < atoms.nlocal; ++i)
+      std::fprintf(f, "%lld 1 %.6f %.6f %.6f\n", static_cast<long long>(atoms.id[i]), atoms.x[i][0], atoms.x[i][1], atoms.x[i][2]);
+    std::fclose(f);
+    std::printf("wrote %zu atoms to %s\n", atoms.nlocal, write_dump_file.c_str());
+    return 0;
+  }
   aa::AtomFrame frame;
   frame.box = box;
   frame.positions.assign(atoms.x.begin(), atoms.x.end());
@@ -127,6 +152,36 @@ int main(int argc, char** argv) {
   analyses.coordination = aa::Coordination{kCutoff};
   analyses.cna = aa::ConventionalCna{kCutoff};
   analyses.centro_symmetry = aa::CentroSymmetry{12};
+  if (phases) {
+    // Wall and CPU time of each phase on 1 and 2 threads, alternated, `repeats` times; medians.
+    const char* names[] = {"neighbour table", "coordination", "CNA", "CSP"};
+    std::vector<double> wall[2][4], cpu[2][4];
+    for (int r = 0; r < repeats; ++r)
+      for (int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        auto t0 = std::chrono::steady_clock::now();
+        double c0 = cpu_seconds();
+        auto lap = [&](int k) {
+          wall[threads - 1][k].push_back(seconds_since(t0));
+          cpu[threads - 1][k].push_back(cpu_seconds() - c0);
+          t0 = std::chrono::steady_clock::now();
+          c0 = cpu_seconds();
+        };
+        const aa::NeighborTable table(frame, analyses.request());
+        lap(0);
+        (void)analyses.coordination->compute(frame, table);
+        lap(1);
+        (void)analyses.cna->compute(frame, table);
+        lap(2);
+        (void)analyses.centro_symmetry->compute(frame, table);
+        lap(3);
+      }
+    for (int k = 0; k < 4; ++k)
+      std::printf("phase %-16s 1 thread wall %.3f s CPU %.3f s | 2 threads wall %.3f s CPU %.3f s | speed-up %.2f\n", names[k],
+                  median(wall[0][k]), median(cpu[0][k]), median(wall[1][k]), median(cpu[1][k]),
+                  median(wall[0][k]) / median(wall[1][k]));
+    return 0;
+  }
   std::size_t our_fcc = 0, table_bytes = 0;
   double best1 = 0, cpu1 = 0;
   for (int threads : {1, 2}) {
