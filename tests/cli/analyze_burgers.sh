@@ -32,6 +32,18 @@ awk -F, 'NR > 1 { s1 += $15; s2 += $16; s3 += $17 } END { exit !(s1 == 6 && s2 =
 grep -q "burgers_circuit" "$WORK/an/dump.0.lammpstrj" || fail "no burgers_circuit column in the dump"
 echo "ok: relaxed edge dislocation: a/2[1-10] = a/6[1-21] + a/6[2-1-1], partials $sep Å apart"
 
+# A cluster whose automatic circuit cannot close is skipped with a message, not fatal (here every
+# bond is longer than the cutoff of a lattice constant given too small); a circuit the user placed
+# still fails with exit 2.
+"$SF" analyze atoms "$WORK/relax" --clusters 3.0 --cluster-select 'acna:!fcc,hcp' --cluster-min-size 10 \
+  --burgers-lattice 2.9 --burgers-clusters -o "$WORK/skip" > "$WORK/stdout" || fail "a cluster without a circuit stopped the analysis"
+grep -q "^2 clusters without a closed Burgers circuit were skipped (first: frame 0, cluster" "$WORK/stdout" \
+  || fail "skip message: $(cat "$WORK/stdout")"
+[ "$(wc -l < "$WORK/skip/burgers.csv")" -eq 1 ] || fail "skipped circuits wrote rows"
+analyze_rejected "no closed path of bonds" -- atoms "$WORK/relax" --burgers-lattice 2.9 \
+  --burgers-line 0.37,1.04,8.85:0,0,1:25
+echo "ok: clusters without a closed circuit are skipped with a message; a placed circuit that fails is an error"
+
 # Excess energy and profiles on the same relaxed run: e0 (median pe of the fcc atoms) is Cu_u3's
 # cohesive energy −3.54 eV within the relaxed elastic field's 0.005 eV; across y (the glide-plane
 # normal) the hcp fraction is non-zero only in the bins of the two faulted (111) layers, the

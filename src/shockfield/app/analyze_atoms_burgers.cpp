@@ -122,7 +122,7 @@ std::vector<BurgersAnalysis::Line> BurgersAnalysis::lines_of(const aa::ClusterRe
       const aa::Cluster& c = clusters->clusters[k];
       if (c.semi_axes[0] < 1.5 * c.semi_axes[1]) continue;  // no clear line direction
       lines.push_back({{c.centre, c.axes.col(0), c.semi_axes[1] + crystal.bond_cutoff(), band, slab, crystal.bond_cutoff()},
-                       fmt::format("cluster {}", k + 1)});
+                       fmt::format("cluster {}", k + 1), true});
     }
   return lines;
 }
@@ -143,8 +143,17 @@ void BurgersAnalysis::analyze(std::size_t frame_index, const aa::AtomFrame& fram
                         axis.x(), axis.y(), axis.z(), spec ? spec->radius : NAN, r.text(), r.kind(), r.sixths[0],
                         r.sixths[1], r.sixths[2], r.lab.x(), r.lab.y(), r.lab.z(), r.max_step_error, r.reliable ? 1 : 0);
   };
-  for (const Line& line : lines_of(clusters, crystal))
-    write(aa::burgers_vector(frame, aa::circuit_around(frame, table, line.spec), crystal), line.source, &line.spec);
+  for (const Line& line : lines_of(clusters, crystal)) {
+    if (!line.automatic) {  // a circuit the user placed: its failure is an input error
+      write(aa::burgers_vector(frame, aa::circuit_around(frame, table, line.spec), crystal), line.source, &line.spec);
+      continue;
+    }
+    try {
+      write(aa::burgers_vector(frame, aa::circuit_around(frame, table, line.spec), crystal), line.source, &line.spec);
+    } catch (const InputError& e) {  // one cluster without a closed circuit must not stop the others
+      if (skipped_++ == 0) first_skip_ = fmt::format("frame {}, {}: {}", frame_index, line.source, e.what());
+    }
+  }
   for (std::size_t k = 0; k < id_circuits_.size(); ++k)
     write(aa::burgers_vector(frame, aa::circuit_of_ids(frame, id_circuits_[k]), crystal), fmt::format("ids {}", k + 1), nullptr);
   circuits_ += number;

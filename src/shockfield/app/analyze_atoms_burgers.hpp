@@ -41,11 +41,16 @@ class BurgersAnalysis {
                const analysis::atoms::ClusterResult* clusters, io::DumpFrame& dump);
   void close() { out_.close(); }
   std::size_t circuits() const { return circuits_; }
+  /// Clusters whose automatic circuit could not be built (no closed bond path around them: a
+  /// cluster on a void's surface, a tangle, bonds stretched past the cutoff), and the first reason.
+  std::size_t skipped() const { return skipped_; }
+  const std::string& first_skip() const { return first_skip_; }
 
  private:
   struct Line {
     analysis::atoms::AxisCircuit spec;
     std::string source;
+    bool automatic = false;  ///< placed around a cluster: skipped, not fatal, when it cannot close
   };
   std::vector<Line> lines_of(const analysis::atoms::ClusterResult* clusters,
                              const analysis::atoms::CrystalFrame& crystal) const;
@@ -56,7 +61,8 @@ class BurgersAnalysis {
   std::vector<double> line_radii_;
   std::vector<std::vector<std::int64_t>> id_circuits_;
   io::CheckedOutput out_;
-  std::size_t circuits_ = 0;
+  std::size_t circuits_ = 0, skipped_ = 0;
+  std::string first_skip_;
 };
 
 }  // namespace shockfield::app

@@ -281,6 +281,9 @@ void run_atoms(const AtomsArgs& a) {
               frame_index, total_atoms, files.size(), out_dir.string().c_str());
   if (voids.on()) std::printf("%zu voids in %s/voids.csv\n", voids.voids(), out_dir.string().c_str());
   if (burgers) std::printf("%zu Burgers circuits in %s/burgers.csv\n", burgers->circuits(), out_dir.string().c_str());
+  if (burgers && burgers->skipped() > 0)
+    std::printf("%zu clusters without a closed Burgers circuit were skipped (first: %s)\n", burgers->skipped(),
+                burgers->first_skip().c_str());
 }
 
 }  // namespace
