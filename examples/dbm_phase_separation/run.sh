@@ -5,7 +5,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 exe=${SHOCKFIELD:-$here/../../build/release/shockfield}
-out=${1:-$here/runs}
+out=${1:-runs/$(basename "$here")}   # beside the other examples' runs, not in the source tree
 mkdir -p "$out"
 Ks=(6e-5 9e-5 1.2e-4 1.8e-4)
 for K in "${Ks[@]}"; do

@@ -4,7 +4,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 exe=${SHOCKFIELD:-$here/../../build/release/shockfield}
-out=${1:-$here/runs}
+out=${1:-runs/$(basename "$here")}   # beside the other examples' runs, not in the source tree
 mkdir -p "$out"
 for a in 0.45 0.5; do
   OMP_NUM_THREADS=1 "$exe" run "$here/case.toml" --set model.a=$a --output "$out/a$a" --overwrite --quiet
