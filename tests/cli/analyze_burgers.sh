@@ -70,17 +70,8 @@ awk -F, 'NR > 1 && $13 != "0" { bad++ } END { exit bad > 0 || NR != 3 }' "$WORK/
   || fail "id circuits in a perfect crystal: $(cat "$WORK/ids/burgers.csv")"
 echo "ok: id circuits in perfect fcc give 0"
 
-bad() {  # bad PATTERN ARGS...: exit 2, the message contains PATTERN, no output folder
-  local pattern="$1"; shift
-  set +e
-  "$SF" analyze atoms "$WORK/fcc.data" "$@" -o "$WORK/bad" > /dev/null 2> "$WORK/stderr"
-  local code=$?
-  set -e
-  [ $code -eq 2 ] || fail "exit $code for $*: $(cat "$WORK/stderr")"
-  grep -qF -- "$pattern" "$WORK/stderr" || fail "message for $* lacks '$pattern': $(cat "$WORK/stderr")"
-  [ ! -e "$WORK/bad" ] || fail "output left behind for $*"
-  echo "ok: $(head -c 150 "$WORK/stderr")"
-}
+# bad PATTERN ARGS...: analyze atoms of the fcc data file with ARGS exits 2 with PATTERN, no output.
+bad() { local pattern="$1"; shift; analyze_rejected "$pattern" -- atoms "$WORK/fcc.data" "$@"; }
 bad "--burgers-line '1,2:0,0,1:5'" --burgers-line 1,2:0,0,1:5
 bad "the axis is the zero vector" --burgers-line 1,2,3:0,0,0:5
 bad "not orthogonal" --burgers-orient '1 0 0,1 1 0,0 0 1' --burgers-ids 1,2,3

@@ -51,13 +51,7 @@ printf '4\ncomment\nCu 0 0 0\nCu 1 0 0\nCu 0 1 0\nCu 0 0 1\n' > "$WORK/tet.xyz"
 grep -q "^total_volume 0.166666666667$" "$WORK/xyz/summary.txt" || fail "xyz volume: $(cat "$WORK/xyz/summary.txt")"
 echo "ok: dump and xyz input"
 # bad FILE PATTERN [OPTIONS...]: analyze geometry FILE exits 2 naming PATTERN, writes nothing.
-bad() {
-  local file="$WORK/$1" pattern="$2" code=0; shift 2
-  "$SF" analyze geometry "$file" "$@" -o "$WORK/out" > /dev/null 2> "$WORK/stderr" || code=$?
-  [ $code -eq 2 ] && grep -qF -- "$pattern" "$WORK/stderr" && [ ! -e "$WORK/out" ] ||
-    fail "$1: exit $code, wanted 2 with '$pattern' and no output folder: $(cat "$WORK/stderr")"
-  echo "ok: $(head -c 150 "$WORK/stderr")"
-}
+bad() { local file="$WORK/$1" pattern="$2"; shift 2; analyze_rejected "$pattern" -- geometry "$file" "$@"; }
 printf 'x,y,z\n0,0,0\n1,0,nan\n0,1,0\n0,0,1\n' > "$WORK/nan.csv"
 bad nan.csv "nan.csv:3: expected coordinate z (a finite number), got 'nan'"
 printf '0,0,0\n1,0,0\n0,1,0\n' > "$WORK/three.csv"

@@ -144,13 +144,11 @@ void BurgersAnalysis::analyze(std::size_t frame_index, const aa::AtomFrame& fram
                         r.sixths[1], r.sixths[2], r.lab.x(), r.lab.y(), r.lab.z(), r.max_step_error, r.reliable ? 1 : 0);
   };
   for (const Line& line : lines_of(clusters, crystal)) {
-    if (!line.automatic) {  // a circuit the user placed: its failure is an input error
-      write(aa::burgers_vector(frame, aa::circuit_around(frame, table, line.spec), crystal), line.source, &line.spec);
-      continue;
-    }
     try {
       write(aa::burgers_vector(frame, aa::circuit_around(frame, table, line.spec), crystal), line.source, &line.spec);
-    } catch (const InputError& e) {  // one cluster without a closed circuit must not stop the others
+    } catch (const InputError& e) {
+      if (!line.automatic) throw;  // a circuit the user placed: its failure is an input error
+      // One cluster without a closed circuit must not stop the others.
       if (skipped_++ == 0) first_skip_ = fmt::format("frame {}, {}: {}", frame_index, line.source, e.what());
     }
   }

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <limits>
-#include <string_view>
 
 #include "shockfield/analysis/field_statistics.hpp"
 #include "shockfield/io/checked_file.hpp"
@@ -174,14 +173,16 @@ void RunOutput::write_fields(const Simulation& sim) {
   const int axis = case_.grid.dim - 1;
   std::vector<double> xyz(3 * n), vel(3 * n), stress(9 * n), deviator(9 * n);
   std::vector<io::VtkArray> arrays;
-  const std::pair<const char*, const char*> scalar_arrays[] = {
+  struct ScalarArray {
+    const char* name;
+    const char* unit;
+    bool label = false;  ///< categorical: written as Int32
+  };
+  const ScalarArray scalar_arrays[] = {
       {"density", "kg/m3"}, {"pressure", "Pa"}, {"temperature", "K"}, {"plastic_work", "J/kg"},
-      {"plastic_strain", "1"}, {"energy", "J/kg"}, {"material", "1"}, {"body", "1"}, {"damage", "1"},
+      {"plastic_strain", "1"}, {"energy", "J/kg"}, {"material", "1", true}, {"body", "1", true}, {"damage", "1"},
       {"longitudinal_stress", "Pa"}, {"longitudinal_deviator", "Pa"}, {"von_mises", "Pa"}};
-  for (const auto& [name, unit] : scalar_arrays) {
-    const bool label = std::string_view(name) == "material" || std::string_view(name) == "body";
-    arrays.push_back({name, 1, std::vector<double>(n), unit, label});
-  }
+  for (const ScalarArray& a : scalar_arrays) arrays.push_back({a.name, 1, std::vector<double>(n), a.unit, a.label});
   for (std::size_t i = 0; i < n; ++i) {
     const auto& s = p.state[i];
     const Mat3 sigma = s.stress();

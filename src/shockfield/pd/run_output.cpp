@@ -50,44 +50,47 @@ void RunOutput::write_profile(const Simulation& sim, std::int64_t index) {
                     {"x_m", "y_m", "z_m", "ux_m", "vx_m_s", "vy_m_s", "vz_m_s", "sxx_Pa", "syy_Pa", "szz_Pa", "sxy_Pa",
                      "sxz_Pa", "syz_Pa", "pressure_Pa", "plastic", "grain", "damage"});
   const auto& x = sim.cloud().x;
-  const std::vector<double> damage = fields_.damage();
-  for (std::size_t i = 0; i < x.size(); ++i) {
+  const std::size_t n = x.size();
+  // The model's stress and plastic measure of every point, evaluated once for the CSV and the .vtp.
+  PointValues values{std::vector<double>(9 * n), std::vector<double>(n), std::vector<double>(n), fields_.damage()};
+  for (std::size_t i = 0; i < n; ++i) {
     const Mat3 s = stress(i);
-    const Vec3& v = sim.velocities()[i];
-    out.row({x[i][0], x[i][1], x[i][2], sim.positions()[i][0] - x[i][0], v[0], v[1], v[2], s(0, 0), s(1, 1), s(2, 2),
-             s(0, 1), s(0, 2), s(1, 2), s.trace() / -3.0, plastic(i), static_cast<double>(fields_.grain[i]),
-             damage[i]});
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) values.stress[9 * i + static_cast<std::size_t>(3 * r + c)] = s(r, c);  // row-major
+    values.pressure[i] = s.trace() / -3.0;
+    values.plastic[i] = plastic(i);
   }
-  write_points(sim, index, damage);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* s = &values.stress[9 * i];
+    const Vec3& v = sim.velocities()[i];
+    out.row({x[i][0], x[i][1], x[i][2], sim.positions()[i][0] - x[i][0], v[0], v[1], v[2], s[0], s[4], s[8], s[1], s[2],
+             s[5], values.pressure[i], values.plastic[i], static_cast<double>(fields_.grain[i]), values.damage[i]});
+  }
+  write_points(sim, index, std::move(values));
   index_.row({static_cast<double>(index), sim.time(), static_cast<double>(sim.step_count())});
 }
 
-void RunOutput::write_points(const Simulation& sim, std::int64_t index, const std::vector<double>& damage) {
+void RunOutput::write_points(const Simulation& sim, std::int64_t index, PointValues values) {
   const std::size_t n = sim.cloud().size();
-  std::vector<double> xyz(3 * n), displacement(3 * n), velocity(3 * n), stress_rows(9 * n);
-  std::vector<double> pressure(n), plastic_measure(n), grain(n);
+  std::vector<double> xyz(3 * n), displacement(3 * n), velocity(3 * n), grain(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Mat3 s = stress(i);
     for (int d = 0; d < 3; ++d) {
       const std::size_t k = 3 * i + static_cast<std::size_t>(d);
       xyz[k] = sim.positions()[i][d];
       displacement[k] = sim.positions()[i][d] - sim.cloud().x[i][d];
       velocity[k] = sim.velocities()[i][d];
-      for (int c = 0; c < 3; ++c) stress_rows[9 * i + static_cast<std::size_t>(3 * d + c)] = s(d, c);  // row-major
     }
-    pressure[i] = s.trace() / -3.0;
-    plastic_measure[i] = plastic(i);
     grain[i] = fields_.grain[i];
   }
   const std::string file = fmt::format("points_{}.vtp", index);
   io::write_vtp(folder_ / "profiles" / file, xyz,
                 {{"displacement", 3, std::move(displacement), "m"},
                  {"velocity", 3, std::move(velocity), "m/s"},
-                 {"stress", 9, std::move(stress_rows), "Pa"},
-                 {"pressure", 1, std::move(pressure), "Pa"},
-                 {"plastic", 1, std::move(plastic_measure), "1"},
+                 {"stress", 9, std::move(values.stress), "Pa"},
+                 {"pressure", 1, std::move(values.pressure), "Pa"},
+                 {"plastic", 1, std::move(values.plastic), "1"},
                  {"grain", 1, std::move(grain), "1", true},
-                 {"damage", 1, damage, "1"}},
+                 {"damage", 1, std::move(values.damage), "1"}},
                 vtk_);
   points_pvd_.add(sim.time(), file);
 }

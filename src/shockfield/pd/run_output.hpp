@@ -46,7 +46,14 @@ class RunOutput {
   Mat3 stress(std::size_t i) const;
   double plastic(std::size_t i) const;
 
-  void write_points(const Simulation& sim, std::int64_t index, const std::vector<double>& damage);
+  /// Per-point values of one profile, shared by the CSV and the .vtp.
+  struct PointValues {
+    std::vector<double> stress;    ///< 9 per point, row-major Cauchy σ [Pa]
+    std::vector<double> pressure;  ///< −tr σ / 3 [Pa]
+    std::vector<double> plastic;   ///< plastic measure [-]
+    std::vector<double> damage;    ///< φ [-]
+  };
+  void write_points(const Simulation& sim, std::int64_t index, PointValues values);
 
   std::filesystem::path folder_;
   PointFields fields_;

@@ -149,12 +149,22 @@ void Solver::add_source() {
 }
 
 void Solver::step_explicit() {
+  if (scale_.empty())
+    explicit_update<false>();
+  else
+    explicit_update<true>();
+  add_source();
+  xi_.swap(work_);
+}
+
+template <bool kVaryingD>
+void Solver::explicit_update() {
   const auto [nx, ny, nz] = grid_.n;
   const int dim = grid_.dim;
   const double inv_dx2 = 1.0 / (grid_.dx * grid_.dx), dt = dt_;
   const double rx = model_.D_along(0) * inv_dx2, ry = model_.D_along(1) * inv_dx2, rz = model_.D_along(2) * inv_dx2;
   const double* x = xi_.data();
-  const double* s = scale_.empty() ? nullptr : scale_.data();
+  const double* s = scale_.data();
   double* out = work_.data();
   const std::size_t sy = nx, sz = static_cast<std::size_t>(nx) * ny;
   const Grid& g = grid_;
@@ -162,7 +172,8 @@ void Solver::step_explicit() {
   // the two nodes' scales when D varies in space.
   const auto flux = [x, s](std::size_t p, std::size_t q) {
     const double difference = x[q] - x[p];
-    return s ? 0.5 * (s[p] + s[q]) * difference : difference;
+    if constexpr (kVaryingD) return 0.5 * (s[p] + s[q]) * difference;
+    return difference;
   };
 #pragma omp parallel for collapse(2) schedule(static)
   for (int k = 0; k < nz; ++k)
@@ -180,8 +191,6 @@ void Solver::step_explicit() {
         out[p] = c + dt * (div - model_.df(c));
       }
     }
-  add_source();
-  xi_.swap(work_);
 }
 
 void Solver::step_spectral() {

@@ -80,6 +80,10 @@ class Solver {
 
  private:
   void step_explicit();
+  /// The forward-Euler update, compiled once for a uniform D and once for set_diffusivity_scale's
+  /// D(x), so the uniform stencil carries no per-face test.
+  template <bool kVaryingD>
+  void explicit_update();
   void step_spectral();
   /// work_[p] += dt S(x_p, tⁿ) on every node.
   void add_source();
