@@ -2,6 +2,9 @@
 // thinner than the cutoff (several periodic images of one pair).
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
+#include <cmath>
 #include <limits>
 #include <map>
 
@@ -99,4 +102,75 @@ TEST(NeighborList, NonFinitePositionIsARunError) {
     geometry::NeighborList list;
     EXPECT_THROW(geometry::build_neighbor_list(points, points.size(), 1.5, true, list), RunError) << bad;
   }
+}
+
+// The ghosts are written by all threads in the order of the serial loop (x, then y, then z; per
+// dimension layer 1 below, layer 1 above, layer 2 below, ...; entries in index order), so a run's
+// neighbour lists and force sums do not depend on the thread count. The reference here is that
+// serial loop written out, on a box thinner than the cutoff along y (two image layers) and
+// shrink-wrapped along z; each ghost must sit at its owner's position plus image·L.
+TEST(Ghosts, ParallelImagesAreTheSerialLoopsOnAnyThreadCount) {
+  geometry::Box box;
+  Atoms owned = fixture::fcc_atoms(3.615, {5, 1, 3}, box, 63.55);
+  box.boundary[2] = geometry::Boundary::shrink;
+  fixture::perturb(owned, 0.3, 11);
+  const double cut = 5.5;
+  // The serial loop: for each periodic d, pass p over entries [0, n) present before d.
+  Atoms ref = owned;
+  for (std::size_t i = 0; i < ref.nlocal; ++i) box.wrap(ref.x[i], ref.image[i]);
+  for (int d = 0; d < 3; ++d) {
+    if (!box.periodic(d)) continue;
+    const double len = box.hi[d] - box.lo[d];
+    const int layers = static_cast<int>(std::ceil(cut / len));
+    const std::size_t n = ref.size();
+    for (int layer = 1; layer <= layers; ++layer)
+      for (int side = -1; side <= 1; side += 2)
+        for (std::size_t i = 0; i < n; ++i) {
+          const double y = ref.x[i][d] + side * layer * len;
+          if (y < box.lo[d] - cut || y >= box.hi[d] + cut) continue;
+          std::array<int, 3> image{0, 0, 0};
+          if (i >= ref.nlocal) image = ref.ghost_image[i - ref.nlocal];
+          image[static_cast<std::size_t>(d)] += side * layer;
+          Vec3 x = ref.x[i];
+          x[d] += side * layer * len;
+          ref.x.push_back(x);
+          ref.type.push_back(ref.type[i]);
+          ref.ghost_owner.push_back(i < ref.nlocal ? static_cast<int>(i) : ref.ghost_owner[i - ref.nlocal]);
+          ref.ghost_image.push_back(image);
+        }
+  }
+  ASSERT_GT(ref.nghost(), 2 * ref.nlocal);  // several layers along y: the case is not trivial
+  for (int threads : {1, 2, 3, 7}) {
+    omp_set_num_threads(threads);
+    Atoms atoms = owned;
+    rebuild_ghosts(atoms, box, cut);
+    ASSERT_EQ(atoms.size(), ref.size()) << threads;
+    EXPECT_EQ(atoms.f.size(), atoms.size());
+    EXPECT_EQ(atoms.ghost_owner, ref.ghost_owner) << threads;
+    EXPECT_EQ(atoms.ghost_image, ref.ghost_image) << threads;
+    EXPECT_EQ(atoms.type, ref.type) << threads;
+    for (std::size_t k = 0; k < atoms.size(); ++k) ASSERT_EQ(atoms.x[k], ref.x[k]) << threads << " entry " << k;
+    const Vec3 l = box.length();
+    for (std::size_t g = 0; g < atoms.nghost(); ++g) {
+      const auto& im = atoms.ghost_image[g];
+      const Vec3 expected = atoms.x[static_cast<std::size_t>(atoms.ghost_owner[g])] +
+                            Vec3(im[0] * l.x(), im[1] * l.y(), im[2] * l.z());
+      ASSERT_LT((atoms.x[atoms.nlocal + g] - expected).norm(), 1e-12) << g;
+    }
+  }
+  omp_set_num_threads(1);
+}
+
+// ghost_capacity() is enough for a uniform crystal, so appending the ghosts does not reallocate.
+TEST(Ghosts, ReservedCapacityHoldsTheGhostsOfAUniformCrystal) {
+  geometry::Box box;
+  Atoms atoms = fixture::fcc_atoms(3.615, {12, 12, 12}, box, 63.55);
+  const double cut = 3.6;
+  const std::size_t capacity = ghost_capacity(atoms.nlocal, box, cut);
+  atoms.x.reserve(capacity);
+  const Vec3* before = atoms.x.data();
+  append_ghosts(atoms, box, cut);
+  EXPECT_EQ(atoms.x.data(), before);  // appended in place
+  EXPECT_EQ(atoms.nghost(), 2929u);  // 1.125³ − 1 of the owned atoms: 3 of 24 lattice planes per axis are within 3.6 Å of a face
+  EXPECT_LE(atoms.size(), capacity);
 }

@@ -16,15 +16,27 @@
 namespace shockfield::analysis::atoms {
 namespace {
 
-// The frame as the owned atoms of md::rebuild_ghosts, which reads positions, types and images
-// only: those three arrays filled in one pass each (velocities, ids and masks are not needed; built
-// atom by atom with Atoms::add they were a serial 15 % of a 2-thread analysis, bench/RESULTS.md).
-md::Atoms owned_atoms(const AtomFrame& frame) {
+// The frame as the owned atoms of md::append_ghosts, which reads positions, types and images only
+// (velocities, ids and masks are not needed). Room for the ghosts is reserved and the arrays are
+// filled by all threads: copied or appended on one thread, they were a serial part of every
+// analysis (bench/RESULTS.md).
+md::Atoms owned_atoms(const AtomFrame& frame, double cutoff) {
   md::Atoms atoms;
-  atoms.x = frame.positions;
-  atoms.type.assign(frame.size(), 0);
-  atoms.image.assign(frame.size(), {0, 0, 0});
-  atoms.nlocal = frame.size();
+  const std::size_t n = frame.size(), capacity = md::ghost_capacity(n, frame.box, cutoff);
+  atoms.x.reserve(capacity);
+  atoms.type.reserve(capacity);
+  atoms.x.resize(n);  // Vec3's constructor leaves the entries unset: the loop below touches them first
+  atoms.type.resize(n);
+  atoms.image.resize(n);
+  const auto sn = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < sn; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    atoms.x[u] = frame.positions[u];
+    atoms.image[u] = {0, 0, 0};
+  }
+  atoms.nlocal = n;
+  md::append_ghosts(atoms, frame.box, cutoff);
   return atoms;
 }
 
@@ -49,8 +61,7 @@ NeighborTable::NeighborTable(const AtomFrame& frame, const NeighborRequest& requ
   offset_.assign(1, 0);
   if (nlocal_ == 0) return;  // nothing to search
   const double cutoff = std::max(request.cutoff, density_cutoff(frame, request.min_neighbors));
-  md::Atoms atoms = owned_atoms(frame);
-  md::rebuild_ghosts(atoms, frame.box, cutoff);
+  md::Atoms atoms = owned_atoms(frame, cutoff);
   points_ = std::move(atoms.x);
   ghost_owner_ = std::move(atoms.ghost_owner);
   geometry::NeighborList list;
@@ -81,13 +92,13 @@ NeighborTable::NeighborTable(const AtomFrame& frame, const NeighborRequest& requ
   const double diagonal = frame.box.length().norm();
   double radius = cutoff;
   for (int round = 0; round < kMaxWidenings && radius < diagonal; ++round) {
-    if (lists.empty()) lists.resize(nlocal_);
     const auto short_atoms = atoms_short_of_request(lists);
     if (short_atoms.empty()) break;
+    if (lists.empty()) lists.resize(nlocal_);
     radius *= 2;
     widen(frame, short_atoms, lists, radius);
   }
-  if (std::all_of(lists.begin(), lists.end(), [](const auto& l) { return l.empty(); })) return;
+  if (lists.empty()) return;  // no atom was short of its request
   // Splice the widened lists into the CSR table.
   std::vector<std::int64_t> offset(nlocal_ + 1, 0);
   std::vector<int> merged;
@@ -115,7 +126,7 @@ void NeighborTable::sort_nearest(std::vector<std::pair<double, int>>& found) con
 std::vector<std::size_t> NeighborTable::atoms_short_of_request(const std::vector<std::vector<int>>& lists) const {
   std::vector<std::size_t> short_atoms;
   for (std::size_t i = 0; i < nlocal_; ++i) {
-    const std::size_t have = lists[i].empty() ? of(i).size() : lists[i].size();
+    const std::size_t have = lists.empty() || lists[i].empty() ? of(i).size() : lists[i].size();
     if (static_cast<int>(have) < request_.min_neighbors) short_atoms.push_back(i);
   }
   return short_atoms;
@@ -123,8 +134,7 @@ std::vector<std::size_t> NeighborTable::atoms_short_of_request(const std::vector
 
 void NeighborTable::widen(const AtomFrame& frame, const std::vector<std::size_t>& short_atoms,
                           std::vector<std::vector<int>>& lists, double cutoff) {
-  md::Atoms atoms = owned_atoms(frame);
-  md::rebuild_ghosts(atoms, frame.box, cutoff);
+  md::Atoms atoms = owned_atoms(frame, cutoff);
   // The wider search's ghosts join the table's entries.
   const int base = static_cast<int>(points_.size());
   points_.insert(points_.end(), atoms.x.begin() + static_cast<std::ptrdiff_t>(nlocal_), atoms.x.end());

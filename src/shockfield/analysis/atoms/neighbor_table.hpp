@@ -55,6 +55,7 @@ class NeighborTable {
   /// Nearest first; ties (exact in perfect lattices) by owner, then by entry, so the order
   /// depends on the positions only.
   void sort_nearest(std::vector<std::pair<double, int>>& found) const;
+  /// Atoms with fewer neighbours than requested (`lists` empty: none widened yet).
   std::vector<std::size_t> atoms_short_of_request(const std::vector<std::vector<int>>& lists) const;
   /// Lists the short atoms again with a wider cutoff (new ghosts become entries).
   void widen(const AtomFrame& frame, const std::vector<std::size_t>& short_atoms,
