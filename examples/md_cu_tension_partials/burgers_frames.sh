@@ -1,7 +1,8 @@
 #!/bin/sh
-# Burgers circuits around the defect clusters, frame by frame: analyze atoms --burgers-clusters
-# stops at the first cluster without a closed circuit of bonds (a void, a tangle), so each frame is
-# analysed alone and a frame that fails is reported and skipped. Writes DIR/burgers.csv (all
+# Burgers circuits around the defect clusters, frame by frame (analyze atoms --burgers-clusters:
+# one circuit about a straight cluster, circuits at stations along a curved one; a cluster without
+# a closed circuit is skipped and counted); a frame that fails for another reason is reported and
+# skipped. Writes DIR/burgers.csv (all
 # frames) and DIR/failed.txt.   Usage: burgers_frames.sh SHOCKFIELD DIR DUMP...
 set -u
 bin=$1; dir=$2; shift 2

@@ -58,6 +58,27 @@ awk -F, 'NR > 1 { n += $7; s = $8 + $9 + $10 + $11 + $12; if ($7 > 0 && (s < 0.9
 grep -q " excess$" <(sed -n 9p "$WORK/prof/dump.0.lammpstrj") || fail "no excess column"
 echo "ok: excess energy e0 = $e0 eV; hcp only in the faulted layers of the y profile"
 
+# A curved loop: the first stacking fault of examples/md_cu_tension_partials (Cu under tension
+# along [110], strain 0.115; fixture and regenerate.sh in tests/fixtures/cu_tension_loop) is bounded
+# by a curved Shockley partial loop. Its core cluster is not straight, so --burgers-clusters puts
+# a circuit at stations along it; oriented by the loop's normal, every reliable non-zero one must
+# give the same a/6<112> (one loop, one Burgers vector: what a circuit about the cluster's principal
+# axis cannot find), and no reliable circuit anywhere in the frame anything but 0 or a Shockley
+# vector (the example's by-hand circuits at this frame find a/6[1 1 2] on all four).
+"$SF" analyze atoms "$ROOT/tests/fixtures/cu_tension_loop/dump.6750.lammpstrj.gz" --clusters 3.0 \
+  --cluster-select 'acna:!fcc,hcp' --cluster-min-size 10 --burgers-clusters --burgers-orient '1 1 0,-1 1 0,0 0 1' \
+  -o "$WORK/loop" > "$WORK/stdout"
+L="$WORK/loop/burgers.csv"
+loop=$(awk -F, 'NR > 1 && $4 ~ / station / && $22 == 1 && $13 != "0" { split($4, w, " "); print w[2] }' "$L" | sort | uniq -c | sort -rn | head -1)
+set -- $loop
+[ "${1:-0}" -ge 5 ] || fail "fewer than 5 reliable non-zero stations on one cluster: $(cat "$L")"
+vectors=$(awk -F, -v k="$2" 'NR > 1 && $4 ~ ("^cluster " k " station") && $22 == 1 && $13 != "0" { print $13 }' "$L" | sort -u)
+[ "$(echo "$vectors" | wc -l)" -eq 1 ] && [[ "$vectors" == "[1 1 2]/6" || "$vectors" == "[-1 -1 -2]/6" ]] \
+  || fail "stations along the loop of cluster $2 give $vectors"
+awk -F, 'NR > 1 && $22 == 1 && $13 != "0" && $14 != "Shockley a/6<112>" { bad++ } END { exit bad > 0 }' "$L" \
+  || fail "a reliable circuit that is neither 0 nor a Shockley vector: $(cat "$L")"
+echo "ok: curved partial loop: $1 stations along cluster $2 give $vectors"
+
 # A circuit through given atom ids in the perfect crystal closes: b = 0.
 {
   echo "fcc"; echo; echo "4 atoms"; echo "1 atom types"; echo
@@ -76,6 +97,7 @@ bad "--burgers-line '1,2:0,0,1:5'" --burgers-line 1,2:0,0,1:5
 bad "the axis is the zero vector" --burgers-line 1,2,3:0,0,0:5
 bad "not orthogonal" --burgers-orient '1 0 0,1 1 0,0 0 1' --burgers-ids 1,2,3
 bad "needs --clusters" --burgers-clusters
+bad "burgers-spacing" --burgers-spacing -1
 bad "no atom with id 9" --burgers-ids 1,2,9
 bad "not a finite number" --burgers-line 1,2,nan:0,0,1:5
 bad "needs a per-atom potential energy column" --excess-energy auto

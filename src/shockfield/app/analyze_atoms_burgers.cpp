@@ -7,6 +7,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "shockfield/analysis/atoms/line_stations.hpp"
 #include "shockfield/app/option_values.hpp"
 #include "shockfield/core/error.hpp"
 
@@ -50,9 +51,15 @@ void add_burgers_options(CLI::App& cmd, BurgersArgs& a) {
                  "first; consecutive atoms must be nearest neighbours). Repeatable")
       ->take_all();
   cmd.add_flag("--burgers-clusters", a.around_clusters,
-               "A Burgers circuit around each elongated cluster of --clusters (defect atoms of a dislocation core or "
-               "of a stacking-fault ribbon with its partials): axis the cluster's longest principal axis, centre "
-               "its centre, radius its second semi-axis plus one bond cutoff");
+               "Burgers circuits around the line of each cluster of --clusters (defect atoms of a dislocation core or "
+               "of a stacking-fault ribbon with its partials). A straight cluster gets one circuit: axis its longest "
+               "principal axis, centre its centre, radius its second semi-axis plus one bond cutoff. A curved one "
+               "(a loop, a bowed partial) gets one circuit per station every --burgers-spacing along it, about the "
+               "local line direction of the atoms within one spacing");
+  cmd.add_option("--burgers-spacing", a.spacing,
+                 "Distance (Å) between the circuits along a curved cluster, and the radius of the neighbourhood that "
+                 "gives each its line direction; default 2 a")
+      ->check(CLI::PositiveNumber);
   cmd.add_option("--burgers-orient", a.orient,
                  "Crystal directions of the box x, y, z axes, as LAMMPS lattice orient: 'i j k,i j k,i j k' "
                  "(orthogonal, right-handed)")
@@ -109,21 +116,31 @@ void BurgersAnalysis::open(const std::filesystem::path& file) {
   out_.write(kColumns);
 }
 
-std::vector<BurgersAnalysis::Line> BurgersAnalysis::lines_of(const aa::ClusterResult* clusters,
+std::vector<BurgersAnalysis::Line> BurgersAnalysis::lines_of(const aa::AtomFrame& frame, const aa::ClusterResult* clusters,
                                                              const aa::CrystalFrame& crystal) const {
-  const double a = crystal.lattice_constant;
+  const double a = crystal.lattice_constant, bond = crystal.bond_cutoff();
   const double band = args_.band.value_or(0.5 * a), slab = args_.slab.value_or(0.66 * a);
   std::vector<Line> lines;
   for (std::size_t k = 0; k < line_points_.size(); ++k)
-    lines.push_back({{line_points_[k].first, line_points_[k].second, line_radii_[k], band, slab, crystal.bond_cutoff()},
+    lines.push_back({{line_points_[k].first, line_points_[k].second, line_radii_[k], band, slab, bond},
                      fmt::format("line {}", k + 1)});
-  if (args_.around_clusters && clusters)
-    for (std::size_t k = 0; k < clusters->clusters.size(); ++k) {
-      const aa::Cluster& c = clusters->clusters[k];
-      if (c.semi_axes[0] < 1.5 * c.semi_axes[1]) continue;  // no clear line direction
-      lines.push_back({{c.centre, c.axes.col(0), c.semi_axes[1] + crystal.bond_cutoff(), band, slab, crystal.bond_cutoff()},
-                       fmt::format("cluster {}", k + 1), true});
+  if (!args_.around_clusters || !clusters) return lines;
+  std::vector<std::vector<std::size_t>> members(clusters->clusters.size());
+  for (std::size_t i = 0; i < clusters->cluster_of.size(); ++i)
+    if (clusters->cluster_of[i] >= 0) members[static_cast<std::size_t>(clusters->cluster_of[i])].push_back(i);
+  for (std::size_t k = 0; k < clusters->clusters.size(); ++k) {
+    const aa::Cluster& c = clusters->clusters[k];
+    const double radius = c.semi_axes[1] + bond;
+    auto stations = aa::line_stations(frame, members[k], args_.spacing.value_or(2 * a));
+    if (c.semi_axes[0] >= 1.5 * c.semi_axes[1] && aa::stations_are_straight(stations, frame.box, c.centre, c.axes.col(0), radius)) {
+      lines.push_back({{c.centre, c.axes.col(0), radius, band, slab, bond}, fmt::format("cluster {}", k + 1), true});
+      continue;
     }
+    aa::orient_circulation(stations, frame.box, c.centre, c.axes.col(2));  // a loop's sense from its normal
+    for (std::size_t j = 0; j < stations.size(); ++j)
+      lines.push_back({{stations[j].centre, stations[j].tangent, stations[j].half_width + bond, band, slab, bond},
+                       fmt::format("cluster {} station {}", k + 1, j + 1), true});
+  }
   return lines;
 }
 
@@ -143,7 +160,7 @@ void BurgersAnalysis::analyze(std::size_t frame_index, const aa::AtomFrame& fram
                         axis.x(), axis.y(), axis.z(), spec ? spec->radius : NAN, r.text(), r.kind(), r.sixths[0],
                         r.sixths[1], r.sixths[2], r.lab.x(), r.lab.y(), r.lab.z(), r.max_step_error, r.reliable ? 1 : 0);
   };
-  for (const Line& line : lines_of(clusters, crystal)) {
+  for (const Line& line : lines_of(frame, clusters, crystal)) {
     try {
       write(aa::burgers_vector(frame, aa::circuit_around(frame, table, line.spec), crystal), line.source, &line.spec);
     } catch (const InputError& e) {

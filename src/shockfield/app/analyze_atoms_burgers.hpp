@@ -23,6 +23,7 @@ struct BurgersArgs {
   std::vector<std::string> id_circuits;   ///< "id,id,id,..."
   bool around_clusters = false;
   std::optional<double> band, slab;       ///< Å; defaults 0.5 a and 0.66 a
+  std::optional<double> spacing;          ///< Å between circuits along a curved cluster; default 2 a
 
   bool any() const { return !lines.empty() || !id_circuits.empty() || around_clusters; }
 };
@@ -41,7 +42,7 @@ class BurgersAnalysis {
                const analysis::atoms::ClusterResult* clusters, io::DumpFrame& dump);
   void close() { out_.close(); }
   std::size_t circuits() const { return circuits_; }
-  /// Clusters whose automatic circuit could not be built (no closed bond path around them: a
+  /// Automatic circuits (around clusters, or stations along a curved cluster) whose circuit could not be built (no closed bond path around them: a
   /// cluster on a void's surface, a tangle, bonds stretched past the cutoff), and the first reason.
   std::size_t skipped() const { return skipped_; }
   const std::string& first_skip() const { return first_skip_; }
@@ -52,7 +53,7 @@ class BurgersAnalysis {
     std::string source;
     bool automatic = false;  ///< placed around a cluster: skipped, not fatal, when it cannot close
   };
-  std::vector<Line> lines_of(const analysis::atoms::ClusterResult* clusters,
+  std::vector<Line> lines_of(const analysis::atoms::AtomFrame& frame, const analysis::atoms::ClusterResult* clusters,
                              const analysis::atoms::CrystalFrame& crystal) const;
 
   BurgersArgs args_;

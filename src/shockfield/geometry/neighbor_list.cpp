@@ -85,15 +85,15 @@ void build_neighbor_list(const std::vector<Vec3>& points, std::size_t nlocal, do
   const int nthreads = omp_get_max_threads();
   // Room for the previous list's mean count per point (lists change little between builds).
   const std::size_t per_point = list.nlocal() == 0 ? 16 : list.pairs() / list.nlocal() + 4;
-  std::vector<int>().swap(list.neighbors);
-  std::vector<std::vector<int>> chunk_neighbors(static_cast<std::size_t>(nthreads));
+  UninitializedVector<int>().swap(list.neighbors);
+  std::vector<UninitializedVector<int>> chunk_neighbors(static_cast<std::size_t>(nthreads));
   list.offset.resize(nlocal + 1);
   list.offset[0] = 0;
 #pragma omp parallel num_threads(nthreads)
   {
     const int t = omp_get_thread_num();
     const std::size_t begin = nlocal * t / nthreads, end = nlocal * (t + 1) / nthreads;
-    std::vector<int>& out = chunk_neighbors[static_cast<std::size_t>(t)];
+    UninitializedVector<int>& out = chunk_neighbors[static_cast<std::size_t>(t)];
     if (t == 0) out.reserve(nlocal * per_point);
     out.resize((end - begin) * per_point);
     std::size_t n = 0;  // neighbours listed so far; out holds room for every candidate

@@ -9,12 +9,14 @@
 #include <vector>
 
 #include "shockfield/core/types.hpp"
+#include "shockfield/core/uninitialized_vector.hpp"
 
 namespace shockfield::geometry {
 
 struct NeighborList {
-  std::vector<std::int64_t> offset;  ///< size nlocal + 1
-  std::vector<int> neighbors;        ///< neighbour indices into the point array (owned or ghost)
+  // Filled by all threads: a resize must not zero them on one thread first.
+  UninitializedVector<std::int64_t> offset;  ///< size nlocal + 1
+  UninitializedVector<int> neighbors;        ///< neighbour indices into the point array (owned or ghost)
   double cutoff = 0;                 ///< list cutoff (force cutoff + skin)
   bool half = true;
 

@@ -21,7 +21,9 @@ double ellipsoid_surface(const Vec3& s) {
   return 4.0 * std::numbers::pi * std::pow((ap * bp + ap * cp + bp * cp) / 3.0, 1.0 / p);
 }
 
-Cluster describe(const std::vector<Vec3>& unwrapped, const geometry::Box& box, double volume_per_atom) {
+}  // namespace
+
+Cluster describe_cluster(const std::vector<Vec3>& unwrapped, const geometry::Box& box, double volume_per_atom) {
   Cluster c;
   c.size = unwrapped.size();
   for (const Vec3& x : unwrapped) c.centre += x;
@@ -40,8 +42,6 @@ Cluster describe(const std::vector<Vec3>& unwrapped, const geometry::Box& box, d
   box.wrap(c.centre, image);
   return c;
 }
-
-}  // namespace
 
 ClusterResult DefectClusters::compute(const AtomFrame& frame, const NeighborTable& table,
                                       const std::vector<bool>& selected) const {
@@ -93,7 +93,7 @@ ClusterResult DefectClusters::compute(const AtomFrame& frame, const NeighborTabl
     if (members[k].size() < min_size) continue;
     const int id = static_cast<int>(r.clusters.size());
     for (std::size_t i : members[k]) r.cluster_of[i] = id;
-    r.clusters.push_back(describe(unwrapped[k], frame.box, volume_per_atom));
+    r.clusters.push_back(describe_cluster(unwrapped[k], frame.box, volume_per_atom));
   }
   return r;
 }

@@ -27,6 +27,10 @@ struct Cluster {
   double atomic_volume = 0;          ///< size · box volume / atoms, Å³
 };
 
+/// The centre (wrapped into the box), moments, principal axes and size measures of the points
+/// `unwrapped` (one cluster, positions made continuous across periodic faces).
+Cluster describe_cluster(const std::vector<Vec3>& unwrapped, const geometry::Box& box, double volume_per_atom);
+
 struct ClusterResult {
   std::vector<int> cluster_of;   ///< per atom: 0-based cluster, −1 when not selected or in a dropped cluster
   std::vector<Cluster> clusters;  ///< largest first (ties: smallest first atom index)

@@ -100,8 +100,8 @@ NeighborTable::NeighborTable(const AtomFrame& frame, const NeighborRequest& requ
   }
   if (lists.empty()) return;  // no atom was short of its request
   // Splice the widened lists into the CSR table.
-  std::vector<std::int64_t> offset(nlocal_ + 1, 0);
-  std::vector<int> merged;
+  UninitializedVector<std::int64_t> offset(nlocal_ + 1, 0);
+  UninitializedVector<int> merged;
   for (std::size_t i = 0; i < nlocal_; ++i) {
     if (lists[i].empty()) {
       const auto own = of(i);

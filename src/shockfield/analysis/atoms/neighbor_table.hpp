@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "shockfield/analysis/atoms/atom_frame.hpp"
+#include "shockfield/core/uninitialized_vector.hpp"
 
 namespace shockfield::analysis::atoms {
 
@@ -65,8 +66,8 @@ class NeighborTable {
   std::size_t nlocal_ = 0;
   std::vector<Vec3> points_;
   std::vector<int> ghost_owner_;
-  std::vector<std::int64_t> offset_;
-  std::vector<int> neighbors_;
+  UninitializedVector<std::int64_t> offset_;  // the neighbour list's arrays, moved in
+  UninitializedVector<int> neighbors_;
   std::vector<double> reach_;
 };
 

@@ -1,0 +1,32 @@
+#pragma once
+// A std::vector whose resize() leaves new elements of trivial types unset (default-initialised)
+// instead of zeroing them. For large arrays that a parallel loop fills next: a zeroing resize runs
+// on one thread and takes the page faults of the whole array there (first touch), which made the
+// neighbour list's buffers a serial part of every build (bench/RESULTS.md, analysis/atoms).
+#include <memory>
+#include <vector>
+
+namespace shockfield {
+
+template <class T, class Base = std::allocator<T>>
+struct DefaultInitAllocator : Base {
+  using Base::Base;
+  template <class U>
+  struct rebind {
+    using other = DefaultInitAllocator<U, typename std::allocator_traits<Base>::template rebind_alloc<U>>;
+  };
+  /// Value-initialisation without arguments becomes default-initialisation (no zeroing).
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    std::allocator_traits<Base>::construct(static_cast<Base&>(*this), p, std::forward<Args>(args)...);
+  }
+};
+
+template <class T>
+using UninitializedVector = std::vector<T, DefaultInitAllocator<T>>;
+
+}  // namespace shockfield
