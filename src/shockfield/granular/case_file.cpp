@@ -67,11 +67,15 @@ OutputSpec read_output(const std::optional<Config>& t, double end_time, double d
   o.schedule = read_output_intervals(t, end_time, {false, true});
   o.probe_interval = dt;
   if (!t) return o;
-  for (long long g : t->get_ints("probes", 0, Range::closed(0, static_cast<double>(grains - 1))))
-    o.probes.push_back(static_cast<std::size_t>(g));
+  if (t->has("probes"))
+    for (long long g : t->get_ints("probes", 0, Range::closed(0, static_cast<double>(grains - 1))))
+      o.probes.push_back(static_cast<std::size_t>(g));
   o.probe_interval = t->get_double_or("probe_interval", dt, Range::positive());
   o.spacetime_stride = t->get_int_or("spacetime_stride", 1, Range::closed(1, static_cast<double>(grains)));
   o.signal_interval = t->get_double_or("signal_interval", 0.0, Range::non_negative());
+  if (t->has("energy_above"))
+    for (long long g : t->get_ints("energy_above", 0, Range::closed(1, static_cast<double>(grains))))
+      o.energy_above.push_back(static_cast<std::size_t>(g));
   return o;
 }
 
