@@ -88,7 +88,7 @@ ImpurityEcho impurity_echo(double mass_ratio) {
   const Impulse kick{Impulse::Kind::velocity, 1.0, 1, {}, {}};
   ChainSpec s = steel_column(800);
   Simulation reference(build_chain(s), kick, std::nullopt, 0.05);
-  s.impurities = {{200, mass_ratio, 1.0, 1.0}};
+  s.impurities = {{200, mass_ratio, 1.0, 1.0, {}}};
   Simulation sim(build_chain(s), kick, reference.time_step());
   const double e0 = reference.thermo().total;
   const double t_end = 2.5e-3;  // the soliton reaches grain 200 at 1.17 ms; its echo is back above by 1.3 ms

@@ -41,6 +41,7 @@ std::vector<Impurity> read_impurities(const Config& root, long long grains) {
     imp.mass_ratio = t.get_double_or("mass_ratio", 1.0, Range::positive());
     imp.radius_ratio = t.get_double_or("radius_ratio", 1.0, Range::positive());
     imp.modulus_ratio = t.get_double_or("modulus_ratio", 1.0, Range::positive());
+    if (t.has("poisson_ratio")) imp.poisson_ratio = t.get_double("poisson_ratio", {-1.0, 0.5, true, true});
     out.push_back(imp);
   }
   return out;

@@ -81,6 +81,12 @@ TEST(GranularCase, ReadsEveryKeyAndDerivesTheStep) {
   EXPECT_EQ(c.chain.wall, WallKind::elastic);
   ASSERT_EQ(c.chain.impurities.size(), 1u);
   EXPECT_DOUBLE_EQ(c.chain.impurities[0].mass_ratio, 0.25);
+  EXPECT_FALSE(c.chain.impurities[0].poisson_ratio.has_value());
+  const Config own = with(replace(kColumn, "mass_ratio = 0.25", "mass_ratio = 0.25\npoisson_ratio = 0.21\nmodulus_ratio = 0.5"));
+  own.get_choice("method", {"granular"});
+  const GranularCase c_own = read_granular_case(own);
+  EXPECT_DOUBLE_EQ(c_own.chain.impurities[0].poisson_ratio.value(), 0.21);
+  EXPECT_DOUBLE_EQ(c_own.chain.impurities[0].modulus_ratio, 0.5);
   EXPECT_EQ(c.impulse.grains, 2);
   EXPECT_EQ(c.output.probes.size(), 3u);
   EXPECT_GT(c.run.stable_step, 0.0);
@@ -105,6 +111,7 @@ TEST(GranularCase, RefusesBadInputNamingFileAndKey) {
       {"kind = \"elastic\"", "kind = \"none\"", "chain.gravity"},
       {"probes = [0, 100, 199]", "probes = [0, 200]", "output.probes"},
       {"energy_above = [95, 200]", "energy_above = [0, 95]", "output.energy_above"},
+      {"mass_ratio = 0.25", "mass_ratio = 0.25\npoisson_ratio = 0.5", "impurity[0].poisson_ratio"},
       {"damping = 1e-3", "damping = 1e-3\nstiffness = 2", "chain.stiffness"},
       {"kind = \"velocity\"\nvelocity = 0.05\ngrains = 2",
        "kind = \"force\"\ntimes = [0, 1e-5, 5e-6]\nforces = [0, 1, 0]", "impulse.times"},
@@ -114,6 +121,8 @@ TEST(GranularCase, RefusesBadInputNamingFileAndKey) {
     EXPECT_NE(message.find(bad.said), std::string::npos) << bad.to << ": " << message;
   }
   EXPECT_EQ(error_of(kColumn), "");
+  // probes is optional, as documented.
+  EXPECT_EQ(error_of(replace(kColumn, "probes = [0, 100, 199]\n", "")), "");
 }
 
 TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
