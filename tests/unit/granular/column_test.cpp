@@ -10,8 +10,11 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
+#include "shockfield/core/error.hpp"
 #include "shockfield/granular/column.hpp"
+#include "shockfield/granular/contact_law.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 
 namespace shockfield::granular {
@@ -82,6 +85,83 @@ TEST(GranularColumn, TrajectoriesOfEverySphereMatchLammpsGranHertzHistory) {
     EXPECT_LT(dv, 1e-6);
     EXPECT_LT(drift, 1e-5);
   }
+}
+
+// Hertz's impact (Johnson, Contact Mechanics, 1985, §11.4): a body of mass μ meeting an elastic
+// contact F = κ δ^{3/2} at relative speed u compresses it to δ_m = (5μu²/(4κ))^{2/5} and leaves it
+// after t_c = 2 (δ_m/u) ∫₀¹ dx/√(1 − x^{5/2}) = 2 (δ_m/u) · 0.4 B(2/5, 1/2) ≈ 2.943 δ_m/u, at
+// the same speed.
+double hertz_contact_time(double mu, double u, double kappa) {
+  const double delta_max = std::pow(5.0 * mu * u * u / (4.0 * kappa), 0.4);
+  return 2.0 * delta_max / u * 0.4 * std::tgamma(0.4) * std::tgamma(0.5) / std::tgamma(0.9);
+}
+
+TEST(GranularColumn, ImpactsLastHertzsContactTimeAndRestoreTheSpeed) {
+  // Without gravity: sphere 1 hits the floor at 0.3 m/s; spheres 2 and 3 meet head-on at ±0.2 m/s
+  // (relative 0.4 m/s, reduced mass m/2, far from the walls). The contact lasts Hertz's t_c
+  // (6.79 µs and 7.37 µs here) to the step (5e-10 s: 7e-5 of t_c) and each sphere leaves at its
+  // speed reversed (velocity Verlet conserves the energy of an impact to O(Δt²): 1e-6).
+  const SphereType steel;
+  ColumnSpec spec;
+  spec.types = {steel};
+  spec.right = 0.05;
+  spec.gravity = 0.0;
+  spec.time_step = 5e-10;
+  const double R = steel.radius;
+  md::Atoms atoms;
+  atoms.add(Vec3(0.01, R + 1e-7, 0.0), 0, 1, Vec3(0.0, -0.3, 0.0));
+  atoms.add(Vec3(0.03 - R - 1e-7, 0.02, 0.0), 0, 2, Vec3(0.2, 0.0, 0.0));
+  atoms.add(Vec3(0.03 + R + 1e-7, 0.02, 0.0), 0, 3, Vec3(-0.2, 0.0, 0.0));
+  Column column(spec, std::move(atoms));
+  const md::Atoms& s = column.spheres();
+  const double m = s.mass[0];
+  const double wall_kappa = hertz_kappa(steel.youngs_modulus, steel.poisson_ratio, R, INFINITY, 0.0, INFINITY);
+  const double pair_kappa = hertz_kappa(steel.youngs_modulus, steel.poisson_ratio, R, steel.youngs_modulus,
+                                        steel.poisson_ratio, R);
+  double floor_time = 0, pair_time = 0;
+  while (column.time() < 1.2e-5) {  // the contacts begin at 0.33 and 0.5 µs
+    column.step();
+    if (s.x[0].y() < R) floor_time += spec.time_step;
+    if (s.x[2].x() - s.x[1].x() < 2 * R) pair_time += spec.time_step;
+  }
+  EXPECT_NEAR(floor_time / hertz_contact_time(m, 0.3, wall_kappa), 1.0, 2e-4);
+  EXPECT_NEAR(pair_time / hertz_contact_time(0.5 * m, 0.4, pair_kappa), 1.0, 2e-4);
+  EXPECT_NEAR(s.v[0].y(), 0.3, 1e-6 * 0.3);
+  EXPECT_NEAR(s.v[1].x(), -0.2, 1e-6 * 0.2);
+  EXPECT_NEAR(s.v[2].x(), 0.2, 1e-6 * 0.2);
+  std::printf("floor %.6g s (Hertz %.6g), pair %.6g s (Hertz %.6g), speeds %.9g %.9g\n", floor_time,
+              hertz_contact_time(m, 0.3, wall_kappa), pair_time, hertz_contact_time(0.5 * m, 0.4, pair_kappa),
+              s.v[0].y(), s.v[1].x());
+}
+
+TEST(GranularColumn, RefusesSpheresOutsideTheBoxAndTypesThatMakeNoSphere) {
+  ColumnSpec spec;
+  spec.types = {SphereType{}};
+  spec.right = 0.01;
+  spec.time_step = 1e-8;
+  const auto refused = [&](const ColumnSpec& c, const Vec3& x, int type, const std::string& said) {
+    md::Atoms atoms;
+    atoms.add(x, type, 1);
+    try {
+      Column column(c, std::move(atoms));
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(said), std::string::npos) << e.what();
+      return;
+    }
+    ADD_FAILURE() << "accepted; expected: " << said;
+  };
+  md::Atoms fine;
+  fine.add(Vec3(0.005, 0.002, 0.0), 0, 1);
+  EXPECT_NO_THROW(Column(spec, std::move(fine)));
+  refused(spec, Vec3(0.02, 0.002, 0.0), 0, "outside the column's box");
+  refused(spec, Vec3(0.005, 0.002, 1e-3), 0, "outside the column's box");
+  refused(spec, Vec3(0.005, 0.002, 0.0), 1, "has type 2");
+  ColumnSpec bad = spec;
+  bad.types[0].radius = 0.0;
+  refused(bad, Vec3(0.005, 0.002, 0.0), 0, "radius");
+  bad = spec;
+  bad.time_step = 0.0;
+  refused(bad, Vec3(0.005, 0.002, 0.0), 0, "time step");
 }
 
 }  // namespace
