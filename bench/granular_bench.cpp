@@ -87,9 +87,9 @@ void write_backscatter(const std::filesystem::path& dir) {
   const Impulse kick{Impulse::Kind::velocity, 1.0, 1, {}, {}};
   ChainSpec s = steel_column(800);
   Simulation reference(build_chain(s), kick, std::nullopt, 0.05);
-  s.impurities = {{200, 0.1, 1, 1}};
+  s.impurities = {{200, 0.1, 1, 1, {}}};
   Simulation light(build_chain(s), kick, reference.time_step());
-  s.impurities = {{200, 10.0, 1, 1}};
+  s.impurities = {{200, 10.0, 1, 1, {}}};
   Simulation heavy(build_chain(s), kick, reference.time_step());
   const double e0 = reference.thermo().total;
   io::CsvWriter csv(dir / "backscatter.csv", {"time", "light_reflected", "heavy_reflected", "light_impurity_kinetic",

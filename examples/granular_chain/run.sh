@@ -18,6 +18,12 @@ run column_weak column_weak.toml
 # The strongly nonlinear regime: a 10^4 times stronger impulse, sampled 200 times over 12 ms.
 run column_strong column_weak.toml --set impulse.velocity=1.0 --set run.end_time=0.012 \
   --set output.signal_interval=6e-5 --set output.field_interval=6e-5
+# The drift of the depth exponents with the impulse (exponent_drift.png): the same column at
+# 1e-3 ... 5 m/s over 12 ms.
+for v in 0.001 0.01 0.1 5; do
+  run "column_v$v" column_weak.toml --set "impulse.velocity=$v" --set run.end_time=0.012 \
+    --set output.signal_interval=6e-5 --set output.field_interval=6e-5
+done
 run column_light_impurity column_light_impurity.toml
 run column_heavy_impurity column_light_impurity.toml --set 'impurity[0].mass_ratio=10.0'
 # The same column without the impurity: what the impurity runs are compared against.

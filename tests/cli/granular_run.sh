@@ -21,7 +21,7 @@ done
 "$SF" run "$case" --check | grep -q "valid granular case (200 grains, 617 steps" || fail "--check does not report the case"
 
 "$SF" run "$case" --output "$WORK/run" -q > /dev/null
-for f in log.txt config.resolved.toml thermo.csv series.csv probes.csv spacetime_force.csv spacetime_velocity.csv \
+for f in log.txt config.resolved.toml thermo.csv series.csv energy_above.csv probes.csv spacetime_force.csv spacetime_velocity.csv \
          signal.csv checkpoint.h5; do
   [ -s "$WORK/run/$f" ] || fail "run folder lacks $f"
 done

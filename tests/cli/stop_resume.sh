@@ -20,7 +20,7 @@ case "$method" in
        files="series.csv profiles/index.csv profiles/profile_1.csv profiles/profile_2.csv grid.pvd
               fields/grid_000000040.vti thermo.csv" ;;
   granular) case_file="$cases/granular_tiny.toml"; stop=123
-            files="series.csv probes.csv spacetime_force.csv spacetime_velocity.csv signal.csv thermo.csv" ;;
+            files="series.csv energy_above.csv probes.csv spacetime_force.csv spacetime_velocity.csv signal.csv thermo.csv" ;;
   macroparticle) case_file="$cases/macroparticle_tiny.toml"; stop=123
                  files="thermo.csv dumps/dump.250.lammpstrj particles.pvd particles/particles_250.vtp" ;;
   phasefield) case_file="$cases/phasefield_tiny.toml"; stop=23; files="series.csv fields.pvd fields/xi_3.vti thermo.csv" ;;

@@ -41,6 +41,7 @@ std::vector<Impurity> read_impurities(const Config& root, long long grains) {
     imp.mass_ratio = t.get_double_or("mass_ratio", 1.0, Range::positive());
     imp.radius_ratio = t.get_double_or("radius_ratio", 1.0, Range::positive());
     imp.modulus_ratio = t.get_double_or("modulus_ratio", 1.0, Range::positive());
+    if (t.has("poisson_ratio")) imp.poisson_ratio = t.get_double("poisson_ratio", {-1.0, 0.5, true, true});
     out.push_back(imp);
   }
   return out;
@@ -67,11 +68,15 @@ OutputSpec read_output(const std::optional<Config>& t, double end_time, double d
   o.schedule = read_output_intervals(t, end_time, {false, true});
   o.probe_interval = dt;
   if (!t) return o;
-  for (long long g : t->get_ints("probes", 0, Range::closed(0, static_cast<double>(grains - 1))))
-    o.probes.push_back(static_cast<std::size_t>(g));
+  if (t->has("probes"))
+    for (long long g : t->get_ints("probes", 0, Range::closed(0, static_cast<double>(grains - 1))))
+      o.probes.push_back(static_cast<std::size_t>(g));
   o.probe_interval = t->get_double_or("probe_interval", dt, Range::positive());
   o.spacetime_stride = t->get_int_or("spacetime_stride", 1, Range::closed(1, static_cast<double>(grains)));
   o.signal_interval = t->get_double_or("signal_interval", 0.0, Range::non_negative());
+  if (t->has("energy_above"))
+    for (long long g : t->get_ints("energy_above", 0, Range::closed(1, static_cast<double>(grains))))
+      o.energy_above.push_back(static_cast<std::size_t>(g));
   return o;
 }
 

@@ -28,6 +28,9 @@ struct OutputSpec {
   double probe_interval = 0.0;        ///< [s]; default: the time step
   long long spacetime_stride = 1;     ///< every ... grain in the space–time field
   double signal_interval = 0.0;       ///< [s] signal measurements; 0: none
+  /// grains g whose energy above (grains [0, g) and their contacts, Simulation::excess_energy)
+  /// is written with every series row
+  std::vector<std::size_t> energy_above;
 };
 
 struct GranularCase {

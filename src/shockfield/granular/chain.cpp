@@ -30,6 +30,8 @@ void check_spec(const ChainSpec& s) {
       throw InputError(fmt::format("impurity index {} is outside the chain [0, {})", imp.index, s.grains));
     if (!(imp.mass_ratio > 0) || !(imp.radius_ratio > 0) || !(imp.modulus_ratio > 0))
       throw InputError(fmt::format("impurity {}: ratios must be positive", imp.index));
+    if (imp.poisson_ratio && !(*imp.poisson_ratio > -1.0 && *imp.poisson_ratio < 0.5))
+      throw InputError(fmt::format("impurity {}: Poisson's ratio {} is outside (-1, 0.5)", imp.index, *imp.poisson_ratio));
   }
 }
 
@@ -41,30 +43,31 @@ Chain build_chain(const ChainSpec& s) {
   Chain c;
   c.gravity = s.gravity;
   c.damping = s.damping;
-  c.poisson_ratio = s.poisson_ratio;
   const double grain_mass = 4.0 / 3.0 * std::numbers::pi * s.radius * s.radius * s.radius * s.density;
   c.mass.assign(n, grain_mass);
   c.radius.assign(n, s.radius);
   c.youngs_modulus.assign(n, s.youngs_modulus);
+  c.poisson_ratio.assign(n, s.poisson_ratio);
   for (const Impurity& imp : s.impurities) {
     const auto i = static_cast<std::size_t>(imp.index);
     c.radius[i] *= imp.radius_ratio;
     c.mass[i] *= imp.mass_ratio * imp.radius_ratio * imp.radius_ratio * imp.radius_ratio;
     c.youngs_modulus[i] *= imp.modulus_ratio;
+    if (imp.poisson_ratio) c.poisson_ratio[i] = *imp.poisson_ratio;
   }
   c.inv_mass.resize(n);
   for (std::size_t i = 0; i < n; ++i) c.inv_mass[i] = 1.0 / c.mass[i];
 
-  const double nu = s.poisson_ratio;
+  const std::vector<double>& nu = c.poisson_ratio;
   c.kappa.resize(n - 1);
   for (std::size_t k = 0; k + 1 < n; ++k)
-    c.kappa[k] = hertz_kappa(c.youngs_modulus[k], nu, c.radius[k], c.youngs_modulus[k + 1], nu, c.radius[k + 1]);
+    c.kappa[k] = hertz_kappa(c.youngs_modulus[k], nu[k], c.radius[k], c.youngs_modulus[k + 1], nu[k + 1], c.radius[k + 1]);
   constexpr double inf = std::numeric_limits<double>::infinity();
   c.has_wall = s.wall != WallKind::none;
-  if (s.wall == WallKind::rigid) c.wall_kappa = hertz_kappa(c.youngs_modulus[n - 1], nu, c.radius[n - 1], inf, 0.0, inf);
+  if (s.wall == WallKind::rigid) c.wall_kappa = hertz_kappa(c.youngs_modulus[n - 1], nu[n - 1], c.radius[n - 1], inf, 0.0, inf);
   if (s.wall == WallKind::elastic) {
     if (!(s.wall_youngs_modulus > 0)) throw InputError("an elastic wall needs a positive Young's modulus");
-    c.wall_kappa = hertz_kappa(c.youngs_modulus[n - 1], nu, c.radius[n - 1], s.wall_youngs_modulus,
+    c.wall_kappa = hertz_kappa(c.youngs_modulus[n - 1], nu[n - 1], c.radius[n - 1], s.wall_youngs_modulus,
                                s.wall_poisson_ratio, inf);
   }
 

@@ -6,17 +6,20 @@
 // weight W_k = g Σ_{i≤k} m_i of the grains above it, so δ_k = (W_k/κ_k)^{2/3}, and the bottom
 // wall carries the whole weight). Depth grows downward; gravity points down the chain.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace shockfield::granular {
 
 /// One grain whose properties differ from the chain's (an impurity): the ratios multiply the
-/// chain's values. radius_ratio also scales the mass by radius_ratio³ (same density).
+/// chain's values. radius_ratio also scales the mass by radius_ratio³ (same density). Its own
+/// Poisson ratio, if given, replaces the chain's in the Hertz κ of its two contacts (and the wall's).
 struct Impurity {
   long long index = 0;
   double mass_ratio = 1.0;
   double radius_ratio = 1.0;
   double modulus_ratio = 1.0;
+  std::optional<double> poisson_ratio;  ///< ν of this grain; none: the chain's
 };
 
 enum class WallKind { none, rigid, elastic };
@@ -39,7 +42,7 @@ struct ChainSpec {
 
 struct Chain {
   // per grain
-  std::vector<double> mass, inv_mass, radius, youngs_modulus;
+  std::vector<double> mass, inv_mass, radius, youngs_modulus, poisson_ratio;
   std::vector<double> depth;  ///< initial centre depth z_i [m] (z_0 = R_0, grain 0 touching z = 0)
   // per contact k = (k, k+1), size N − 1
   std::vector<double> kappa;         ///< Hertz κ_k [N/m^{3/2}]
@@ -50,7 +53,6 @@ struct Chain {
   double wall_rest_overlap = 0.0;
   double gravity = 0.0;
   double damping = 0.0;
-  double poisson_ratio = 0.3;
 
   std::size_t size() const { return mass.size(); }
   std::size_t contacts() const { return kappa.size(); }

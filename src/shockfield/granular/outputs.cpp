@@ -38,6 +38,8 @@ RunOutputs::RunOutputs(const std::filesystem::path& folder, const OutputSpec& sp
                        const double* resume_from)
     : spec_(spec) {
   series_ = io::CsvWriter(folder / "series.csv", thermo_columns(), resume_from);
+  if (!spec_.energy_above.empty())
+    energy_above_ = io::CsvWriter(folder / "energy_above.csv", grain_columns(spec_.energy_above, "energy_above"), resume_from);
   if (!spec_.probes.empty()) {
     std::vector<std::string> cols{"time_s"};
     for (std::size_t g : spec_.probes)
@@ -55,7 +57,14 @@ RunOutputs::RunOutputs(const std::filesystem::path& folder, const OutputSpec& sp
 
 void RunOutputs::write_due(const Simulation& sim, OutputCounters& n) {
   const double t = sim.time();
-  write_due_frames(n.series, spec_.schedule.series_interval, t, [&](auto) { series_.row(thermo_values(sim.thermo())); });
+  write_due_frames(n.series, spec_.schedule.series_interval, t, [&](auto) {
+    series_.row(thermo_values(sim.thermo()));
+    if (energy_above_.is_open()) {
+      std::vector<double> row{t};
+      for (std::size_t g : spec_.energy_above) row.push_back(sim.excess_energy(0, g));
+      energy_above_.row(row);
+    }
+  });
   if (probes_.is_open())
     write_due_frames(n.probes, spec_.probe_interval, t, [&](auto) {
       std::vector<double> row{t};

@@ -2,6 +2,10 @@
 // The scheduled outputs of a granular run, CSV files in the run folder (columns in
 // docs/granular.md):
 //   series.csv                  thermo rows (time, step, energies, signal depth) every series_interval;
+//   energy_above.csv            with each series row, the energy above the equilibrium held by grains
+//                               [0, g) and their contacts for each chosen g (energy_above; the
+//                               energy reflected above an impurity is this minus the same column of
+//                               a run without the impurity, docs/granular.md);
 //   probes.csv                  velocity, force and overlap of the chosen grains every probe_interval;
 //   spacetime_force.csv,
 //   spacetime_velocity.csv      one row per field_interval: the dynamic contact force F_k − F⁰_k and
@@ -35,7 +39,7 @@ class RunOutputs {
  private:
   OutputSpec spec_;
   std::vector<std::size_t> field_grains_;
-  io::CsvWriter series_, probes_, force_field_, velocity_field_, signal_;
+  io::CsvWriter series_, energy_above_, probes_, force_field_, velocity_field_, signal_;
 };
 
 /// A run's key results (for summary.json), by name: time, steps, kinetic, potential, total

@@ -2,8 +2,12 @@
 // run), the checkpoint round trip (a resumed run continues bitwise) and the scheduled outputs.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <vector>
 #include <string>
 
 #include "shockfield/core/error.hpp"
@@ -39,6 +43,7 @@ mass_ratio = 0.25
 end_time = 1e-4
 [output]
 series_interval = 1e-5
+energy_above = [95, 200]
 probes = [0, 100, 199]
 probe_interval = 2e-6
 field_interval = 1e-5
@@ -76,6 +81,12 @@ TEST(GranularCase, ReadsEveryKeyAndDerivesTheStep) {
   EXPECT_EQ(c.chain.wall, WallKind::elastic);
   ASSERT_EQ(c.chain.impurities.size(), 1u);
   EXPECT_DOUBLE_EQ(c.chain.impurities[0].mass_ratio, 0.25);
+  EXPECT_FALSE(c.chain.impurities[0].poisson_ratio.has_value());
+  const Config own = with(replace(kColumn, "mass_ratio = 0.25", "mass_ratio = 0.25\npoisson_ratio = 0.21\nmodulus_ratio = 0.5"));
+  own.get_choice("method", {"granular"});
+  const GranularCase c_own = read_granular_case(own);
+  EXPECT_DOUBLE_EQ(c_own.chain.impurities[0].poisson_ratio.value(), 0.21);
+  EXPECT_DOUBLE_EQ(c_own.chain.impurities[0].modulus_ratio, 0.5);
   EXPECT_EQ(c.impulse.grains, 2);
   EXPECT_EQ(c.output.probes.size(), 3u);
   EXPECT_GT(c.run.stable_step, 0.0);
@@ -99,6 +110,8 @@ TEST(GranularCase, RefusesBadInputNamingFileAndKey) {
       {"index = 100", "index = 200", "impurity"},
       {"kind = \"elastic\"", "kind = \"none\"", "chain.gravity"},
       {"probes = [0, 100, 199]", "probes = [0, 200]", "output.probes"},
+      {"energy_above = [95, 200]", "energy_above = [0, 95]", "output.energy_above"},
+      {"mass_ratio = 0.25", "mass_ratio = 0.25\npoisson_ratio = 0.5", "impurity[0].poisson_ratio"},
       {"damping = 1e-3", "damping = 1e-3\nstiffness = 2", "chain.stiffness"},
       {"kind = \"velocity\"\nvelocity = 0.05\ngrains = 2",
        "kind = \"force\"\ntimes = [0, 1e-5, 5e-6]\nforces = [0, 1, 0]", "impulse.times"},
@@ -108,6 +121,8 @@ TEST(GranularCase, RefusesBadInputNamingFileAndKey) {
     EXPECT_NE(message.find(bad.said), std::string::npos) << bad.to << ": " << message;
   }
   EXPECT_EQ(error_of(kColumn), "");
+  // probes is optional, as documented.
+  EXPECT_EQ(error_of(replace(kColumn, "probes = [0, 100, 199]\n", "")), "");
 }
 
 TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
@@ -119,12 +134,15 @@ TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
   const GranularCase c = read_granular_case(root);
   Simulation straight = build_simulation(c), stopped = build_simulation(c);
   OutputCounters counters;
+  std::vector<std::array<double, 2>> expected_above;  ///< excess_energy(0, 95), (0, 200) at each series row
   {
     RunOutputs out(dir, c.output, stopped);
     for (int s = 0; s < 300; ++s) {
       stopped.step();
       straight.step();
+      const auto before = counters.series;
       out.write_due(stopped, counters);
+      if (counters.series > before) expected_above.push_back({stopped.excess_energy(0, 95), stopped.excess_energy(0, 200)});
     }
   }
   write_checkpoint(dir / "checkpoint.h5", stopped, counters);
@@ -145,6 +163,30 @@ TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
   std::getline(probes, header);
   EXPECT_EQ(header.rfind("time_s,velocity_0,force_0,overlap_0,velocity_100", 0), 0u) << header;
   EXPECT_TRUE(std::filesystem::exists(dir / "spacetime_force.csv"));
+  // energy_above.csv comes with every series row: Simulation::excess_energy(0, g) at the row's
+  // step, and for g = N (the whole chain with its floor) the total of series.csv.
+  std::ifstream above(dir / "energy_above.csv"), series(dir / "series.csv");
+  std::string line, series_line;
+  std::getline(above, line);
+  std::getline(series, series_line);
+  EXPECT_EQ(line, "time_s,energy_above_95,energy_above_200");
+  std::size_t rows = 0;
+  const auto cells = [](const std::string& text) {
+    std::vector<double> v;
+    std::stringstream in(text);
+    for (std::string cell; std::getline(in, cell, ',');) v.push_back(std::stod(cell));
+    return v;
+  };
+  for (; std::getline(above, line) && std::getline(series, series_line); ++rows) {
+    const std::vector<double> row = cells(line), thermo = cells(series_line);
+    ASSERT_EQ(row.size(), 3u);
+    ASSERT_LT(rows, expected_above.size());
+    EXPECT_EQ(row[0], thermo[0]);
+    EXPECT_NEAR(row[1], expected_above[rows][0], 1e-9 * std::abs(expected_above[rows][0]));
+    EXPECT_NEAR(row[2], expected_above[rows][1], 1e-9 * std::abs(expected_above[rows][1]));
+    EXPECT_NEAR(row[2], thermo[4], 1e-9 * std::abs(thermo[4]));
+  }
+  EXPECT_EQ(rows, static_cast<std::size_t>(counters.series));
   EXPECT_TRUE(std::filesystem::exists(dir / "signal.csv"));
   // The summary: damping (γ = 1e-3 N·s/m) removes a little energy, so the error is small but
   // not round-off; the signal is below the top.

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/granular/chain.hpp"
@@ -16,10 +17,11 @@
 namespace shockfield::granular {
 namespace {
 
-// Steel spheres of R = 2 mm on a rigid floor under gravity, with a mass, a radius and a modulus impurity.
+// Steel spheres of R = 2 mm on a rigid floor under gravity, with a mass, a radius, a modulus
+// and a modulus-and-Poisson-ratio impurity.
 ChainSpec steel_column(long long n) {
   return {.grains = n, .radius = 2e-3, .gravity = 9.81, .wall = WallKind::rigid,
-          .impurities = {{10, 0.3, 1.0, 1.0}, {20, 1.0, 1.7, 1.0}, {30, 1.0, 1.0, 4.0}}};
+          .impurities = {{10, 0.3, 1.0, 1.0, {}}, {20, 1.0, 1.7, 1.0, {}}, {30, 1.0, 1.0, 4.0, {}}, {35, 1.0, 1.0, 0.5, 0.45}}};
 }
 
 // Touching steel spheres on a horizontal line, no wall.
@@ -40,8 +42,19 @@ TEST(GranularChain, HertzKappaMatchesTheClosedFormsForEqualSpheresAndAFlatWall) 
   EXPECT_NEAR(c.kappa[0] / pair, 1.0, 1e-14);
   EXPECT_NEAR(c.wall_kappa / wall, 1.0, 1e-14);
   EXPECT_NEAR(hertz_kappa(E, nu, R, inf, 0.0, inf) / wall, 1.0, 1e-14);
-  // The modulus impurity at 30: 1/E* = (1-ν²)(1/E + 1/4E).
+  // The modulus impurity at 30: 1/E* = (1-ν²)(1/E + 1/4E), on both of its contacts.
   EXPECT_NEAR(c.kappa[30] / (4.0 / 3.0 / ((1 - nu * nu) * 1.25 / E) * std::sqrt(R / 2)), 1.0, 1e-14);
+  EXPECT_EQ(c.kappa[29], c.kappa[30]);
+  // The impurity at 35 with E/2 and its own ν = 0.45: 1/E* = (1-0.3²)/E + (1-0.45²)/(E/2)
+  // (= 2.505/E, against 2.73/E with the chain's ν: κ 9% higher, so a ν that were ignored fails).
+  const double own = 4.0 / 3.0 / ((1 - nu * nu) / E + (1 - 0.45 * 0.45) / (0.5 * E)) * std::sqrt(R / 2);
+  EXPECT_NEAR(c.kappa[34] / own, 1.0, 1e-14);
+  EXPECT_NEAR(c.kappa[35] / own, 1.0, 1e-14);
+  EXPECT_NEAR(c.kappa[36] / pair, 1.0, 1e-14);
+  // The same grain last, on the rigid floor: E* = (E/2)/(1-0.45²).
+  ChainSpec last = steel_column(36);
+  const Chain d = build_chain(last);
+  EXPECT_NEAR(d.wall_kappa / (4.0 / 3.0 * 0.5 * E / (1 - 0.45 * 0.45) * std::sqrt(R)), 1.0, 1e-14);
 }
 
 TEST(GranularChain, StaticEquilibriumUnderGravityBalancesEveryGrainToRoundOff) {
@@ -62,21 +75,34 @@ TEST(GranularChain, StaticEquilibriumUnderGravityBalancesEveryGrainToRoundOff) {
 }
 
 TEST(GranularChain, RefusesChainsThatAreNotChains) {
-  ChainSpec s = steel_column(10);
+  // A 40-grain column (its impurities inside) with one thing wrong at a time; each message is
+  // checked so that a chain refused for another reason fails the test.
+  const auto refused = [](const ChainSpec& s, const std::string& said) {
+    try {
+      build_chain(s);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(said), std::string::npos) << e.what();
+      return;
+    }
+    ADD_FAILURE() << "accepted; expected: " << said;
+  };
+  EXPECT_NO_THROW(build_chain(steel_column(40)));
+  ChainSpec s = steel_column(40);
   s.radius = 0;
-  EXPECT_THROW(build_chain(s), InputError);
-  s = steel_column(10);
-  s.impurities = {{12, 0.5, 1, 1}};
-  EXPECT_THROW(build_chain(s), InputError);
-  s = steel_column(10);
-  s.impurities = {{3, 1, -1, 1}};
-  EXPECT_THROW(build_chain(s), InputError);
-  s = steel_column(10);
+  refused(s, "radius");
+  s = steel_column(40);
+  s.impurities = {{40, 0.5, 1, 1, {}}};
+  refused(s, "outside the chain");
+  s.impurities = {{3, 1, -1, 1, {}}};
+  refused(s, "ratios must be positive");
+  s.impurities = {{3, 1, 1, 1, 0.5}};
+  refused(s, "Poisson's ratio 0.5");
+  s = steel_column(40);
   s.wall = WallKind::none;
-  EXPECT_THROW(build_chain(s), InputError);
+  refused(s, "bottom wall");
   s.gravity = 0;
   s.gap = -1e-6;
-  EXPECT_THROW(build_chain(s), InputError);
+  refused(s, "overlap");
 }
 
 TEST(GranularChain, RefusesATimeStepAboveTheStableStep) {
