@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The in-run [analysis] table of an MD case (tests/cli/cases/tiny_cu_analysis.toml: 4x4x4 Cu at
-# 1400 K, a-CNA, CNA, CSP, coordination and diamond every 25 steps, their columns in the dumps every 50):
-# structures.csv has a row per analysis step, and at the dump steps its counts and fractions are
-# exactly those `shockfield analyze atoms` finds on the run's own dumps (full precision: the same
-# atoms), and the dumps' per-atom columns are exactly what analyze atoms appends (the annotated
-# dump is byte-identical to the run's). Then bad [analysis] tables, refused by key.
+# 1400 K, a-CNA, CNA, CSP, coordination, diamond and the clusters of non-fcc atoms every 25 steps,
+# their columns in the dumps every 50): structures.csv has a row per analysis step, and at the dump
+# steps its counts and fractions, and clusters.csv's rows, are exactly those `shockfield analyze
+# atoms` finds on the run's own dumps (full precision: the same atoms), and the dumps' per-atom
+# columns are exactly what analyze atoms appends (the annotated dump is byte-identical to the
+# run's). Then bad [analysis] tables, refused by key.
 source "$(dirname "$0")/lib.bash"
 set -e
 case_file="$ROOT/tests/cli/cases/tiny_cu_analysis.toml"
@@ -15,17 +16,27 @@ head -1 "$s" | grep -q "^step,time_ps,atoms,cna_fcc,.*,acna_other_fraction,dia_c
 awk -F, 'NR > 1 && ($1 != (NR - 2) * 25 || $3 != 256) { exit 1 }' "$s" || fail "steps: $(cut -d, -f1-3 "$s")"
 awk -F, 'NR > 1 && $4 < 256 { hot++ } END { exit !hot }' "$s" || fail "no frame with non-fcc CNA atoms at 1400 K: the test would not see a difference"
 
-"$SF" analyze atoms "$WORK/run" --cna 3.0858 --adaptive-cna --csp 12 --coordination 3.0858 --diamond -o "$WORK/a" > /dev/null
+"$SF" analyze atoms "$WORK/run" --cna 3.0858 --adaptive-cna --csp 12 --coordination 3.0858 --diamond \
+  --clusters 3.0 --cluster-select 'acna:!fcc' -o "$WORK/a" > /dev/null
 awk -F, 'NR > 1 && $1 % 50 == 0' "$s" | cut -d, -f3- > "$WORK/inrun"
 awk -F, 'NR > 1' "$WORK/a/structures.csv" | cut -d, -f3- > "$WORK/post"
 [ "$(wc -l < "$WORK/post")" -eq 7 ] || fail "analyze atoms read $(wc -l < "$WORK/post") frames, expected 7"
 cmp "$WORK/inrun" "$WORK/post" || fail "in-run fractions differ from analyze atoms on the dumps: $(diff "$WORK/inrun" "$WORK/post" | head -5)"
 echo "ok: in-run structures.csv = analyze atoms on the run's 7 dumps ($(awk -F, 'NR > 1 { printf "%s ", $4 }' "$WORK/a/structures.csv")fcc by CNA)"
+c="$WORK/run/clusters.csv"
+head -1 "$c" | grep -q "^step,time_ps,cluster,size,x,y,z,a,b,c,axis1_x,.*,atomic_volume$" || fail "clusters.csv header: $(head -1 "$c")"
+awk -F, 'NR > 1 && $1 % 50 == 0' "$c" | cut -d, -f3- > "$WORK/inrun_clusters"
+awk -F, 'NR > 1' "$WORK/a/clusters.csv" | cut -d, -f3- > "$WORK/post_clusters"
+[ "$(wc -l < "$WORK/post_clusters")" -gt 7 ] || fail "fewer than one cluster per dump: the comparison would be empty"
+cmp "$WORK/inrun_clusters" "$WORK/post_clusters" || fail "in-run clusters differ from analyze atoms': $(diff "$WORK/inrun_clusters" "$WORK/post_clusters" | head -5)"
+[ "$(awk -F, 'NR > 1 { print $1 }' "$c" | sort -un | tr "\n" " ")" = "25 50 75 100 125 150 175 200 225 250 275 300 " ] \
+  || fail "clusters.csv steps: every analysis step but 0 (the perfect start has no non-fcc atom)"
+echo "ok: in-run clusters.csv = analyze atoms' on the dumps ($(wc -l < "$WORK/post_clusters") cluster rows in 7 frames)"
 for f in "$WORK"/run/dumps/*.lammpstrj; do
-  grep -q "^ITEM: ATOMS id type x y z vx vy vz coord cna acna csp dia$" "$f" || fail "$f columns: $(sed -n 9p "$f")"
+  grep -q "^ITEM: ATOMS id type x y z vx vy vz coord cna acna csp dia cluster$" "$f" || fail "$f columns: $(sed -n 9p "$f")"
   cmp "$f" "$WORK/a/$(basename "$f")" || fail "$(basename "$f"): the run's columns differ from analyze atoms'"
 done
-echo "ok: the dumps' coord cna acna csp dia columns = analyze atoms', byte for byte"
+echo "ok: the dumps' coord cna acna csp dia cluster columns = analyze atoms', byte for byte"
 
 # Bad tables: exit 2 before anything runs, the key named.
 base=$(cat "$case_file")
@@ -36,4 +47,9 @@ expect_error "${base/dump_every = 50/dump_every = 0}" "analysis.dump_columns" "d
 expect_error "${base/dump_columns = true/csp_neighbors = 7}" "analysis.csp_neighbors" "even"
 expect_error "${base/dump_columns = true/dump_columns = true
 coordinates = 1}" "analysis.coordinates"
+expect_error "${base/clusters = 3.0 /}" "analysis.clusters" "go together"
+expect_error "${base/cluster_select = \"acna:!fcc\"/cluster_select = \"cna:hcp,bogus\"}" "analysis.cluster_select" "expected cna|acna|bpa"
+expect_error "${base/cluster_select = \"acna:!fcc\"/cluster_select = \"excess>0.1\"}" "analysis.cluster_select" "a run does not compute"
+no_cna="${base/methods = \[\"acna\", \"cna\", \"csp\", \"coordination\", \"diamond\"\]/methods = [\"acna\", \"csp\"]}"
+expect_error "${no_cna/cluster_select = \"acna:!fcc\"/cluster_select = \"cna:hcp\"}" "analysis.cluster_select" 'selecting by cna needs "cna" in methods'
 echo "all md analysis checks passed"

@@ -12,7 +12,7 @@ cases="$ROOT/tests/cli/cases"
 case "$method" in
   md) case_file="$cases/tiny_cu.toml"; stop=130; files="dumps/dump.300.lammpstrj thermo.csv" ;;
   md_analysis) case_file="$cases/tiny_cu_analysis.toml"; stop=130
-               files="structures.csv dumps/dump.150.lammpstrj dumps/dump.300.lammpstrj thermo.csv" ;;
+               files="structures.csv clusters.csv dumps/dump.150.lammpstrj dumps/dump.300.lammpstrj thermo.csv" ;;
   mpm) case_file="$cases/mpm_tiny.toml"; stop=25; files="series.csv grid.pvd histograms/hist_0.csv thermo.csv" ;;
   pd) case_file="$cases/pd_tiny.toml"; stop=77
       files="series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4.csv thermo.csv" ;;

@@ -18,6 +18,7 @@
 #include <optional>
 #include <sstream>
 
+#include "shockfield/analysis/atoms/cluster_selection.hpp"
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/app/analyze_atoms_burgers.hpp"
@@ -55,77 +56,6 @@ struct AtomsArgs {
   int threads = 0;
 };
 
-// --cluster-select: "<cna|acna|bpa>:<structure>[,<structure>...]" (any of them),
-// "<method>:!<structure>[,...]" (none of them), "dia:[!]<diamond type>[,...]", "csp><value>" or
-// "excess><value>"; the analysis it reads must be on (acna and dia are switched on by it).
-aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s, bool excess_on) {
-  const std::string what = fmt::format("--cluster-select '{}'", spec);
-  // csp>VALUE (Å²) and excess>VALUE (eV): a threshold on a per-atom value.
-  for (const auto& [prefix, unit] : {std::pair{std::string("csp>"), "Å²"}, std::pair{std::string("excess>"), "eV"}}) {
-    if (spec.rfind(prefix, 0) != 0) continue;
-    const bool csp = prefix == "csp>";
-    if (csp && !s.centro_symmetry) throw InputError(what + ": selecting by csp needs --csp");
-    if (!csp && !excess_on) throw InputError(what + ": selecting by excess needs --excess-energy");
-    double threshold = 0;
-    try {
-      std::size_t used = 0;
-      threshold = std::stod(spec.substr(prefix.size()), &used);
-      if (used != spec.size() - prefix.size() || !std::isfinite(threshold)) throw std::invalid_argument(spec);
-    } catch (const std::exception&) {
-      throw InputError(fmt::format("{}: expected {}NUMBER ({})", what, prefix, unit));
-    }
-    return [threshold, csp](const aa::StructureAnalysisResult& r) {
-      const std::vector<double>& value = csp ? r.centro_symmetry : r.excess_energy;
-      std::vector<bool> out(value.size());
-      for (std::size_t i = 0; i < out.size(); ++i) out[i] = value[i] > threshold;
-      return out;
-    };
-  }
-  const auto colon = spec.find(':');
-  const std::string method = spec.substr(0, colon);
-  std::string names = colon == std::string::npos ? "" : spec.substr(colon + 1);
-  const bool negate = !names.empty() && names[0] == '!';
-  if (negate) names.erase(0, 1);
-  const std::string expected = what +
-                               ": expected cna|acna|bpa:[!]TYPE[,TYPE...] (TYPE fcc hcp bcc ico other), "
-                               "dia:[!]TYPE[,TYPE...] (TYPE cubic cubic_first cubic_second hexagonal hexagonal_first "
-                               "hexagonal_second other), csp>NUMBER or excess>NUMBER";
-  if (method != "cna" && method != "acna" && method != "bpa" && method != "dia") throw InputError(expected);
-  // The codes named (a comma-separated list of the method's type names).
-  const auto listed_codes = [&](const auto& all, const auto& name_of) {
-    std::vector<int> listed;
-    for (std::size_t begin = 0; begin <= names.size();) {
-      const std::size_t end = std::min(names.find(',', begin), names.size());
-      const std::string name = names.substr(begin, end - begin);
-      const auto t = std::find_if(all.begin(), all.end(), [&](auto x) { return name_of(x) == name; });
-      if (t == all.end()) throw InputError(expected);
-      listed.push_back(static_cast<int>(*t));
-      begin = end + 1;
-    }
-    return listed;
-  };
-  const std::vector<int> listed = method == "dia" ? listed_codes(aa::kDiamondStructures, aa::diamond_structure_name)
-                                                  : listed_codes(aa::kStructures, aa::structure_name);
-  if (method == "cna" && !s.cna) throw InputError(what + ": selecting by cna needs --cna");
-  if (method == "bpa" && !s.bond_pairs) throw InputError(what + ": selecting by bpa needs --bond-pairs");
-  if (method == "acna") s.adaptive_cna = aa::AdaptiveCna{};
-  if (method == "dia") s.diamond = aa::DiamondCna{};
-  return [method, listed, negate](const aa::StructureAnalysisResult& r) {
-    std::vector<int> codes;
-    if (method == "dia") {
-      for (aa::DiamondStructure t : r.diamond->structure) codes.push_back(static_cast<int>(t));
-    } else {
-      const auto& types = method == "cna" ? r.cna->structure : method == "acna" ? r.adaptive_cna->structure
-                                                                               : r.bond_pairs->structure;
-      for (aa::Structure t : types) codes.push_back(static_cast<int>(t));
-    }
-    std::vector<bool> out(codes.size());
-    for (std::size_t i = 0; i < out.size(); ++i)
-      out[i] = (std::find(listed.begin(), listed.end(), codes[i]) != listed.end()) != negate;
-    return out;
-  };
-}
-
 aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   aa::StructureAnalyses s;
   if (a.coordination) s.coordination = aa::Coordination{*a.coordination};
@@ -137,27 +67,24 @@ aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   if (a.clusters.has_value() != !a.cluster_select.empty())
     throw InputError("--clusters and --cluster-select go together: the cutoff and which atoms to cluster");
   if (a.clusters) {
-    s.select = parse_selection(a.cluster_select, s, !a.profile.excess_energy.empty());
+    s.select = aa::parse_cluster_selection(a.cluster_select, s, !a.profile.excess_energy.empty(),
+                                           fmt::format("--cluster-select '{}'", a.cluster_select),
+                                           [](const std::string& m) { return m == "excess" ? "--excess-energy" : m == "bpa" ? "--bond-pairs" : "--" + m; });
     s.clusters = aa::DefectClusters{*a.clusters, a.cluster_min_size};
   }
   return s;
 }
 
 // clusters.csv: one row per cluster per frame.
-const std::vector<std::string> kClusterColumns{
-    "frame", "timestep", "cluster", "size", "x", "y", "z", "a", "b", "c", "axis1_x", "axis1_y", "axis1_z",
-    "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y", "axis3_z", "ellipsoid_volume", "ellipsoid_surface",
-    "atomic_volume"};
+std::vector<std::string> cluster_file_columns() {
+  std::vector<std::string> columns{"frame", "timestep"};
+  for (std::string& c : aa::cluster_columns()) columns.push_back(std::move(c));
+  return columns;
+}
 
 void write_clusters(io::CsvWriter& out, std::size_t frame, long long timestep, const aa::ClusterResult& r) {
-  for (std::size_t k = 0; k < r.clusters.size(); ++k) {
-    const aa::Cluster& c = r.clusters[k];
-    std::vector<double> row{double(frame), double(timestep), double(k + 1), double(c.size)};
-    for (int d = 0; d < 3; ++d) row.push_back(c.centre[d]);
-    for (int d = 0; d < 3; ++d) row.push_back(c.semi_axes[d]);
-    for (int axis = 0; axis < 3; ++axis)
-      for (int d = 0; d < 3; ++d) row.push_back(c.axes(d, axis));
-    row.insert(row.end(), {c.ellipsoid_volume, c.ellipsoid_surface, c.atomic_volume});
+  for (std::vector<double>& row : aa::cluster_rows(r)) {
+    row.insert(row.begin(), {double(frame), double(timestep)});
     out.row(row);
   }
 }
@@ -223,7 +150,7 @@ void run_atoms(const AtomsArgs& a) {
   PendingOutputs pending(out_dir);
   io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
   io::CsvWriter clusters;
-  if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), kClusterColumns);
+  if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), cluster_file_columns());
   VoidOutput voids(a.voids, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
   ProfileOutput profiles(a.profile, analyses);
   if (profiles.profiles()) profiles.open(pending.add("profiles.csv"));

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 
+#include "shockfield/core/error.hpp"
+#include "shockfield/md/analysis_table.hpp"
+
 namespace shockfield::md {
 
 int read_axis(const Config& table, std::string_view key, const std::string& fallback) {
@@ -153,6 +156,19 @@ AnalysisSpec read_analysis(const Config& t) {
   a.csp_neighbors = static_cast<int>(t.get_int_or("csp_neighbors", 12, Range::closed(2, 64)));
   if (a.csp_neighbors % 2 != 0) t.fail("csp_neighbors", "an even number of neighbours (12 fcc, 8 bcc)");
   a.dump_columns = t.get_bool_or("dump_columns", false);
+  if (t.has("clusters") != t.has("cluster_select"))
+    t.fail(t.has("clusters") ? "cluster_select" : "clusters",
+           "clusters (a cutoff, Å) and cluster_select (which atoms) go together");
+  if (t.has("clusters")) {
+    a.clusters = t.get_double("clusters", Range{0.0, 100.0, true, false});
+    a.cluster_select = t.get_string("cluster_select");
+    a.cluster_min_size = static_cast<std::size_t>(t.get_int_or("cluster_min_size", 1, Range::closed(1, 1e12)));
+    try {
+      (void)structure_analyses(a);
+    } catch (const InputError& e) {
+      t.fail("cluster_select", e.what());
+    }
+  }
   return a;
 }
 

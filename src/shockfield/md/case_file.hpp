@@ -52,6 +52,9 @@ struct AnalysisSpec {
   double cutoff = 0;                         ///< Å: cna, coordination, bpa
   int csp_neighbors = 12;                    ///< N of the centro-symmetry parameter
   bool dump_columns = false;                 ///< the per-atom columns in every dump frame
+  double clusters = 0;                       ///< Å: cluster the selected atoms (0: no clusters.csv)
+  std::string cluster_select;                ///< which atoms, as analyze atoms --cluster-select
+  std::size_t cluster_min_size = 1;          ///< smaller clusters are dropped
 };
 
 struct OutputSpec {

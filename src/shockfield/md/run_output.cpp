@@ -85,6 +85,7 @@ RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::option
   if (spec.analysis.every > 0) {
     structure_.emplace(spec.analysis);
     structures_ = io::CsvWriter(folder / "structures.csv", structure_->columns(), keep);
+    if (structure_->clusters()) clusters_ = io::CsvWriter(folder / "clusters.csv", structure_->cluster_columns(), keep);
   }
   if (spec.dump_every > 0) {
     fs::create_directories(folder / "dumps");
@@ -119,7 +120,10 @@ void RunOutput::write(const Simulation& sim, bool force_thermo) {
   const bool dump_due = spec_.dump_every > 0 && sim.step % spec_.dump_every == 0;
   std::optional<analysis::atoms::StructureAnalysisResult> analysed;
   if (analysis_due || (structure_ && dump_due && spec_.analysis.dump_columns)) analysed = structure_->compute(sim);
-  if (analysis_due) structures_.row(structure_->row(sim, *analysed));
+  if (analysis_due) {
+    structures_.row(structure_->row(sim, *analysed));
+    for (const std::vector<double>& row : structure_->cluster_rows(sim, *analysed)) clusters_.row(row);
+  }
   if (dump_due) write_dump(sim, spec_.analysis.dump_columns ? &*analysed : nullptr);
 }
 

@@ -35,7 +35,7 @@ class RunOutput {
 
   std::filesystem::path folder_, profiles_file_;
   OutputSpec spec_;
-  io::CsvWriter thermo_, profiles_, structures_;
+  io::CsvWriter thermo_, profiles_, structures_, clusters_;
   std::optional<StructureDiagnostic> structure_;  ///< the [analysis] table, when the case has one
   std::int64_t last_thermo_step_ = -1, last_frame_step_ = -1;
 };

@@ -65,19 +65,6 @@ void mark_neighbours(const NeighborTable& table, std::vector<DiamondStructure>& 
 
 }  // namespace
 
-std::string_view diamond_structure_name(DiamondStructure s) {
-  switch (s) {
-    case DiamondStructure::cubic: return "cubic";
-    case DiamondStructure::cubic_first: return "cubic_first";
-    case DiamondStructure::cubic_second: return "cubic_second";
-    case DiamondStructure::hexagonal: return "hexagonal";
-    case DiamondStructure::hexagonal_first: return "hexagonal_first";
-    case DiamondStructure::hexagonal_second: return "hexagonal_second";
-    case DiamondStructure::other: return "other";
-  }
-  return "other";
-}
-
 DiamondResult DiamondCna::compute(const AtomFrame& frame, const NeighborTable& table) const {
   table.require(request(), "diamond structure");
   DiamondResult r;

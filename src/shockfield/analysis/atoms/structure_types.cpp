@@ -1,5 +1,7 @@
 #include "shockfield/analysis/atoms/structure_types.hpp"
 
+#include "shockfield/analysis/atoms/diamond_structure.hpp"
+
 namespace shockfield::analysis::atoms {
 
 std::string_view structure_name(Structure s) {
@@ -9,6 +11,19 @@ std::string_view structure_name(Structure s) {
     case Structure::bcc: return "bcc";
     case Structure::ico: return "ico";
     case Structure::other: return "other";
+  }
+  return "other";
+}
+
+std::string_view diamond_structure_name(DiamondStructure s) {
+  switch (s) {
+    case DiamondStructure::cubic: return "cubic";
+    case DiamondStructure::cubic_first: return "cubic_first";
+    case DiamondStructure::cubic_second: return "cubic_second";
+    case DiamondStructure::hexagonal: return "hexagonal";
+    case DiamondStructure::hexagonal_first: return "hexagonal_first";
+    case DiamondStructure::hexagonal_second: return "hexagonal_second";
+    case DiamondStructure::other: return "other";
   }
   return "other";
 }

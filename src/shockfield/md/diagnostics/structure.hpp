@@ -1,8 +1,9 @@
 #pragma once
 // The in-run structure analysis of an MD case's [analysis] table: the same per-atom analyses as
 // `shockfield analyze atoms` (analysis/atoms: adaptive and conventional CNA, centro-symmetry,
-// coordination, bond pairs) on the simulation's own atoms, for structures.csv (step, time, atoms,
-// counts and fractions per structure) and, optionally, the dump frames' columns.
+// coordination, bond pairs, defect clusters) on the simulation's own atoms, for structures.csv
+// (step, time, atoms, counts and fractions per structure), clusters.csv (step, time, then the
+// columns of analyze atoms' clusters.csv) and, optionally, the dump frames' columns.
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ class StructureDiagnostic {
   std::vector<std::string> columns() const;
   /// The analyses of the simulation's current atoms.
   analysis::atoms::StructureAnalysisResult compute(const Simulation& sim) const;
+  /// clusters.csv: step, time_ps, then the cluster columns of analyze atoms.
+  std::vector<std::string> cluster_columns() const;
+  /// Its rows (one per cluster) for a result computed at the simulation's current step.
+  std::vector<std::vector<double>> cluster_rows(const Simulation& sim, const analysis::atoms::StructureAnalysisResult& r) const;
+  bool clusters() const { return analyses_.clusters.has_value(); }
   /// The structures.csv row of a result computed at the simulation's current step.
   std::vector<double> row(const Simulation& sim, const analysis::atoms::StructureAnalysisResult& r) const;
 

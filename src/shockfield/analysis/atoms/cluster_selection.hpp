@@ -1,0 +1,29 @@
+#pragma once
+// Which atoms to cluster, and the rows of clusters.csv: shared by `shockfield analyze atoms`
+// (--cluster-select) and an MD run's in-run [analysis] (cluster_select).
+// The selection: "<cna|acna|bpa>:<structure>[,<structure>...]" (any of them),
+// "<method>:!<structure>[,...]" (none of them), "dia:[!]<diamond type>[,...]", "csp><value>" or
+// "excess><value>"; the analysis it reads must be on (acna and dia are switched on by it).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "shockfield/analysis/atoms/structure_analysis.hpp"
+
+namespace shockfield::analysis::atoms {
+
+/// Parses a selection; switches on acna or dia in `s` when the selection reads them, and throws
+/// InputError starting with `what` (the option or key) when it is malformed or reads an analysis
+/// that is off — `enabled_by(method)` names how the user turns that one on (csp, cna, bpa, excess).
+ClusterSelection parse_cluster_selection(const std::string& spec, StructureAnalyses& s, bool excess_on,
+                                         const std::string& what,
+                                         const std::function<std::string(const std::string&)>& enabled_by);
+
+/// clusters.csv's columns after the frame's own (frame/timestep or step/time): cluster (1, 2, ...
+/// largest first), size, centre x y z, semi-axes a b c, the three axes, ellipsoid volume and
+/// surface, atomic volume.
+std::vector<std::string> cluster_columns();
+/// Their values, one row per cluster.
+std::vector<std::vector<double>> cluster_rows(const ClusterResult& r);
+
+}  // namespace shockfield::analysis::atoms
