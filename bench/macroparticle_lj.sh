@@ -15,7 +15,7 @@ out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
 export OMP_WAIT_POLICY=passive
 rate() { grep -o '[0-9.e+]* [a-z]*-steps/s' "$1/log.txt" | tail -1 | cut -d' ' -f1; }
-force() { grep -o 'of which force [0-9.e+-]* s' "$1/log.txt" | tail -1 | awk '{print $3}'; }
+force() { grep -o 'of which force [0-9.e+-]* s' "$1/log.txt" | tail -1 | awk '{print $4}'; }
 for r in $(seq "$rounds"); do
   echo "# round $r, load $(cut -d' ' -f1-3 /proc/loadavg)"
   for j in 1 2; do
