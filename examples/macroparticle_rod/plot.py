@@ -4,9 +4,9 @@
 e_vs_division.png      E of the rod against n_phi for each n_h/n_phi (beside Fig 4)
 nu_vs_division.png     Poisson's ratio against n_phi (beside Fig 5)
 stress_strain.png      tension and compression with the plastic pair law (beside Fig 6)
-compression_slip.png   the compressed rod's particles, coloured by their displacement across z
+compression_buckling.png  the L/D = 3.5 rod in compression: its stress drop and the buckled slice
 """
-import csv, glob, os, sys
+import csv, glob, os, re, sys
 
 import matplotlib
 matplotlib.use("Agg")
@@ -69,47 +69,69 @@ def plot_stress_strain(out, pictures):
                       "Al rod (n_phi = 4, n_h = 8), plastic pair law (cf. Saitoh et al. Fig 6)")
 
 
-def read_last_dump(folder):
-    files = sorted(glob.glob(os.path.join(folder, "dumps", "dump.*.lammpstrj")),
-                   key=lambda p: int(p.split(".")[-2]))
+def read_dump(path):
+    lines = open(path).read().split("\n")
+    n = int(lines[lines.index("ITEM: NUMBER OF ATOMS") + 1])
+    head = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+    cols = lines[head].split()[2:]
+    a = np.array([[float(v) for v in l.split()] for l in lines[head + 1:head + 1 + n]])
+    a = a[np.argsort(a[:, cols.index("id")])]
+    return {c: a[:, k] for k, c in enumerate(cols)}
+
+
+def bonds(d, r0):
+    """Pairs of particle ids closer than the pair law's cutoff (1.2071 r0)."""
+    x = np.c_[d["x"], d["y"], d["z"]] / r0
+    i, j = np.nonzero(np.triu(np.linalg.norm(x[:, None] - x[None], axis=2) < 1.2071, 1))
+    return set(zip(d["id"][i].astype(int), d["id"][j].astype(int)))
+
+
+def plot_buckling(out, pictures):
+    """Stress-strain of the L/D = 3.5 rod in compression (imperfect with sliding ends, imperfect
+    with clamped ends, perfect) and the buckled rod's (1-10) slice through the axis."""
+    folder = os.path.join(out, "buckling")
+    files = sorted(glob.glob(os.path.join(folder, "dumps", "dump.*.lammpstrj")), key=lambda p: int(p.split(".")[-2]))
     if not files:
-        return None, None
-    def read(path):
-        lines = open(path).read().split("\n")
-        n = int(lines[lines.index("ITEM: NUMBER OF ATOMS") + 1])
-        head = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
-        cols = lines[head].split()[2:]
-        a = np.array([[float(v) for v in l.split()] for l in lines[head + 1:head + 1 + n]])
-        return {c: a[:, k] for k, c in enumerate(cols)}
-    return read(files[0]), read(files[-1])
-
-
-def plot_slip(out, pictures):
-    first, last = read_last_dump(os.path.join(out, "compression"))
-    if first is None:
         return
-    order0, order1 = np.argsort(first["id"]), np.argsort(last["id"])
-    x0, z0 = first["x"][order0], first["z"][order0]
-    x1, z1 = last["x"][order1], last["z"][order1]
-    fig, axes = plt.subplots(1, 2, figsize=(7, 5), sharey=True)
-    axes[0].scatter(x0 * 1e3, z0 * 1e3, s=6, c="0.5")
-    axes[0].set_title("start")
-    sc = axes[1].scatter(x1 * 1e3, z1 * 1e3, s=6, c=(x1 - x0) * 1e3, cmap="coolwarm")
-    axes[1].set_title("end of compression")
-    fig.colorbar(sc, ax=axes[1], label="x displacement (mm)")
-    for ax in axes:
-        ax.set_xlabel("x (mm)")
-        ax.set_aspect("equal")
-    axes[0].set_ylabel("z (mm)")
+    r0 = float(re.search(r"^r0 = ([0-9.e+-]+)", open(os.path.join(folder, "config.resolved.toml")).read(), re.M).group(1))
+    first, last = read_dump(files[0]), read_dump(files[-1])
+    lost = len(bonds(first, r0) - bonds(last, r0))
+    fig, axes = plt.subplots(1, 2, figsize=(10, 5), gridspec_kw={"width_ratios": [1.4, 1]})
+    runs = [(os.path.join(out, n), l) for n, l in (("buckling", "imperfect (1e-3 r0), sliding ends"),
+                                                  ("buckling_clamped", "imperfect, clamped ends"),
+                                                  ("buckling_perfect", "perfect, sliding ends"))]
+    runs = [(r, l) for r, l in runs if os.path.exists(os.path.join(r, "thermo.csv"))]
+    stress_strain([r for r, _ in runs], None, "", ax=axes[0], labels=[l for _, l in runs])
+    axes[0].axvline(3.2, color="0.5", ls=":", label="Saitoh et al. Fig 6(b): drop at 3.2 %")
+    axes[0].legend(fontsize=8)
+    axes[0].set_title("Al rod n_phi = 4, n_h = 16 (L/D = 3.5), compression")
+    # The slice through the axis normal to [1-10]: the sway is along [110] (x = y).
+    xc, yc = first["x"].mean(), first["y"].mean()
+    def slab(d, x0, y0):
+        along = ((d["x"] - x0) + (d["y"] - y0)) / np.sqrt(2)
+        across = ((d["x"] - x0) - (d["y"] - y0)) / np.sqrt(2)
+        return along, across
+    a0, c0 = slab(first, xc, yc)
+    keep = np.abs(c0) < 0.4 * r0
+    a1, _ = slab(last, xc, yc)
+    axes[1].scatter(a0[keep] * 1e3, first["z"][keep] * 1e3, s=14, facecolors="none", edgecolors="0.75", label="start")
+    sc = axes[1].scatter(a1[keep] * 1e3, last["z"][keep] * 1e3, s=14, c=last["szz"][keep] / 1e9, cmap="coolwarm_r",
+                         vmin=-2.5, vmax=0.5, label="5 % strain")
+    fig.colorbar(sc, ax=axes[1], label="particle σ_zz (GPa)")
+    axes[1].set_xlabel("x along [110] (mm)")
+    axes[1].set_ylabel("z along [001] (mm)")
+    axes[1].set_aspect("equal")
+    axes[1].set_title(f"slice through the axis at 5 %: bonds lost {lost}", fontsize=9)
+    axes[1].legend(fontsize=8, loc="lower right")
     fig.tight_layout()
-    fig.savefig(os.path.join(pictures, "compression_slip.png"), dpi=120)
+    fig.savefig(os.path.join(pictures, "compression_buckling.png"), dpi=120)
 
 
 def main():
     out, pictures = sys.argv[1], sys.argv[2]
     plot_division(out, pictures)
     plot_stress_strain(out, pictures)
-    plot_slip(out, pictures)
+    plot_buckling(out, pictures)
 
 
 if __name__ == "__main__":

@@ -13,19 +13,24 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 
-def stress_strain(runs, out, title="macroparticle rods"):
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for run in runs:
+def stress_strain(runs, out, title="macroparticle rods", ax=None, labels=None):
+    """The curves of `runs` into `out`, or into the axes `ax` (then `out` is not written)."""
+    fig = None
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(6, 4))
+    for k, run in enumerate(runs):
         rows = list(csv.DictReader(open(os.path.join(run, "thermo.csv"))))
         strain = np.array([float(r["Strain"]) for r in rows])
         stress = np.array([float(r["Stress"]) for r in rows])
-        ax.plot(np.abs(strain) * 100, np.abs(stress) / 1e6, label=os.path.basename(os.path.normpath(run)))
+        label = labels[k] if labels else os.path.basename(os.path.normpath(run))
+        ax.plot(np.abs(strain) * 100, np.abs(stress) / 1e6, label=label)
     ax.set_xlabel("|strain of the loaded layers| (%)")
     ax.set_ylabel("|virial stress σ_zz| (MPa)")
     ax.set_title(title)
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    ax.legend(fontsize=8)
+    if fig is not None:
+        fig.tight_layout()
+        fig.savefig(out, dpi=120)
 
 
 def main():

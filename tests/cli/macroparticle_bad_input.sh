@@ -36,3 +36,6 @@ expect_error "${base/cohesive_energy = 3.39      # eV per atom (Kittel)/cohesive
 expect_error "${base/dt = 1.0e-7                 # s/dt = 1.0e-7
 steps = 10}" "run.steps" "follow from loading.final_strain"
 expect_error "${base/seed = 7/sed = 7}" "unknown key" "langevin.sed"
+# An imperfection beyond 5 % of r0 (it would no longer be an imperfection of the packing).
+expect_error "${base/n_h = 8/n_h = 8
+perturbation = 0.1}" "specimen.perturbation" "expected a number"

@@ -90,6 +90,9 @@ SpecimenSpec read_specimen(const Config& t, const Config& pair, PairLawInput& in
     if (in.r0.has_value() == in.atoms_per_particle.has_value())
       pair.fail("r0", "a box needs its particle size: give exactly one of r0 (m) and atoms_per_particle");
   }
+  // An imperfection for instabilities a perfect packing under symmetric loading cannot start.
+  s.perturbation = t.get_double_or("perturbation", 0.0, Range::closed(0.0, 0.05));
+  s.perturbation_seed = static_cast<std::uint64_t>(t.get_int_or("perturbation_seed", 1, Range::closed(1, 9.0e15)));
   return s;
 }
 

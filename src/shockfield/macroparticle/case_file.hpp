@@ -22,6 +22,8 @@ struct SpecimenSpec {
   long long n_phi = 0;       ///< cubic cells of the packing across the diameter (Table 2, Fig 3)
   long long n_h = 0;         ///< cubic cells along the axis
   std::array<long long, 3> cells{0, 0, 0};  ///< box: cubic cells along x, y, z
+  double perturbation = 0;   ///< RMS random displacement per component of the free particles, in r0
+  std::uint64_t perturbation_seed = 1;
 };
 
 struct LoadingSpec {

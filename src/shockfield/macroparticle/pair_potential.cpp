@@ -6,19 +6,37 @@
 #include <cmath>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/macroparticle/inverse_powers.hpp"
 
 namespace shockfield::macroparticle {
 
 namespace {
 
-// x^n for a small positive integer n by multiplication.
-inline double int_pow(double x, int n) {
-  double r = 1.0;
-  for (int k = 0; k < n; ++k) r *= x;
-  return r;
+// The elastic pair law of eq 5 over the half list; powers(r², r^-p, r^-q) returns 1/r².
+template <class Powers>
+void elastic_forces(md::Atoms& atoms, const geometry::NeighborList& list, md::ForceResult& out,
+                    md::potentials::ThreadScratch& scratch, double p, double q, double cutoff, Powers powers) {
+  const double cutsq = cutoff * cutoff;
+  const double scale = p * q / (q - p);
+  const double ep = q / (q - p), eq = p / (q - p);
+  auto kernel = [=](int, int, double rsq, double& fpair, double& energy) {
+    if (rsq >= cutsq) return false;
+    double rp, rq;
+    const double r2inv = powers(rsq, rp, rq);
+    fpair = scale * (rq - rp) * r2inv;
+    energy = eq * rq - ep * rp;
+    return true;
+  };
+  md::potentials::accumulate_pair_forces(atoms, list, kernel, out, scratch);
 }
 
-bool is_small_integer(double v) { return v == std::floor(v) && v >= 1 && v <= 32; }
+// Runs `run` with the compile-time powers of (P, Q) when the exponents are those.
+template <int P, int Q, class Run>
+bool run_fixed(int ip, int iq, const Run& run) {
+  if (ip != P || iq != Q) return false;
+  run([](double s2, double& sp, double& sq) { return inverse_powers<P, Q>(s2, sp, sq); });
+  return true;
+}
 
 }  // namespace
 
@@ -75,34 +93,18 @@ void MacroparticlePotential::compute(md::Atoms& atoms, const geometry::NeighborL
     compute_plastic(atoms, list, out);
     return;
   }
-  const double cutsq = cutoff_ * cutoff_;
-  const double scale = p_ * q_ / (q_ - p_);
-  const double ep = q_ / (q_ - p_), eq = p_ / (q_ - p_);
-  if (is_small_integer(p_) && is_small_integer(q_)) {
-    // r^-p and r^-q from r^-1 = √(r^-2) by multiplication (p, q ≤ 32).
-    const int ip = static_cast<int>(p_), iq = static_cast<int>(q_);
-    auto kernel = [=](int, int, double rsq, double& fpair, double& energy) {
-      if (rsq >= cutsq) return false;
-      const double r2inv = 1.0 / rsq;
-      const double rinv = std::sqrt(r2inv);
-      const double rp = int_pow(rinv, ip);
-      const double rq = rp * int_pow(rinv, iq - ip);
-      fpair = scale * (rq - rp) * r2inv;
-      energy = eq * rq - ep * rp;
-      return true;
-    };
-    md::potentials::accumulate_pair_forces(atoms, list, kernel, out, scratch_);
+  const auto run = [&](auto powers) { elastic_forces(atoms, list, out, scratch_, p_, q_, cutoff_, powers); };
+  // The (p, q) of Table 1 as unrolled chains; other integers by a loop; the rest by std::pow.
+  const InversePowers powers(p_, q_);
+  const int ip = powers.ip(), iq = powers.iq();
+  if (run_fixed<3, 9>(ip, iq, run) || run_fixed<4, 8>(ip, iq, run) || run_fixed<4, 9>(ip, iq, run) ||
+      run_fixed<4, 10>(ip, iq, run) || run_fixed<5, 9>(ip, iq, run) || run_fixed<5, 10>(ip, iq, run) ||
+      run_fixed<6, 12>(ip, iq, run))
     return;
-  }
-  const double hp = -0.5 * p_, hq = -0.5 * q_;
-  auto kernel = [=](int, int, double rsq, double& fpair, double& energy) {
-    if (rsq >= cutsq) return false;
-    const double rp = std::pow(rsq, hp), rq = std::pow(rsq, hq);
-    fpair = scale * (rq - rp) / rsq;
-    energy = eq * rq - ep * rp;
-    return true;
-  };
-  md::potentials::accumulate_pair_forces(atoms, list, kernel, out, scratch_);
+  run([powers](double s2, double& sp, double& sq) {
+    powers(std::sqrt(s2), sp, sq);
+    return 1.0 / s2;
+  });
 }
 
 }  // namespace shockfield::macroparticle

@@ -5,8 +5,9 @@
 //   −φ'(r)/r = pq/(q − p)·(r^-q − r^-p)/r²  (fpair: force on i = (x_i − x_j)·fpair)
 // for r below the cutoff, which lies between the first (r0) and second (√2 r0) neighbour shells of
 // the fcc packing, so that each particle has the 12 bonds eq 10 shares its energy among. The
-// energy is not shifted: a bulk particle has φ = −6D = −P_atom exactly (eq 10). Integer
-// exponents (all of Table 1) take a multiply-only path as fast as lj/cut's. With a plastic route
+// energy is not shifted: a bulk particle has φ = −6D = −P_atom exactly (eq 10). Table 1's
+// exponents take compile-time multiplication chains (inverse_powers.hpp; per pair cheaper than
+// lj/cut's, bench/RESULTS.md), other integers a loop, the rest std::pow. With a plastic route
 // (plastic_bonds.hpp) every pair outside the elastic band follows its bond state instead.
 #include <memory>
 #include <optional>

@@ -6,29 +6,38 @@
 namespace shockfield::macroparticle {
 
 PlasticBondLaw::PlasticBondLaw(double p, double q, PlasticRoute route)
-    : p_(p), q_(q), k_(p * q), route_(std::move(route)), r_y_(1.0 + route_.yield_strain), r_c_(1.0 - route_.yield_strain) {
+    : p_(p), q_(q), k_(p * q), powers_(p, q), route_(std::move(route)), r_y_(1.0 + route_.yield_strain),
+      r_c_(1.0 - route_.yield_strain) {
   // φ_E″ = 0 at r^(q−p) = (q + 1)/(p + 1): the largest tension the elastic curve can carry.
   r_inflection_ = std::pow((q_ + 1.0) / (p_ + 1.0), 1.0 / (q_ - p_));
   t_peak_ = elastic_tension(r_inflection_);
+  t_yield_ = elastic_tension(r_y_);
+  t_compression_yield_ = elastic_tension(r_c_);
 }
 
 double PlasticBondLaw::elastic_energy(double s) const {
-  return (p_ * std::pow(s, -q_) - q_ * std::pow(s, -p_)) / (q_ - p_);
+  double sp, sq;
+  powers_(s, sp, sq);
+  return (p_ * sq - q_ * sp) / (q_ - p_);
 }
 
 double PlasticBondLaw::elastic_tension(double s) const {
-  return p_ * q_ / (q_ - p_) * (std::pow(s, -p_ - 1.0) - std::pow(s, -q_ - 1.0));
+  double sp, sq;
+  powers_(s, sp, sq);
+  return p_ * q_ / (q_ - p_) * (sp - sq) / s;
 }
 
 double PlasticBondLaw::elastic_curvature(double s) const {
-  return p_ * q_ / (q_ - p_) * ((q_ + 1.0) * std::pow(s, -q_ - 2.0) - (p_ + 1.0) * std::pow(s, -p_ - 2.0));
+  double sp, sq;
+  powers_(s, sp, sq);
+  return p_ * q_ / (q_ - p_) * ((q_ + 1.0) * sq - (p_ + 1.0) * sp) / (s * s);
 }
 
 double PlasticBondLaw::route_tension(double r, bool tension_side) const {
   const double u = tension_side ? r - r_y_ : r_c_ - r;
   double sum = 0, un = 1;
   for (double h : route_.hardening) sum += h * (un *= u);
-  return tension_side ? elastic_tension(r_y_) + k_ * sum : elastic_tension(r_c_) - k_ * sum;
+  return tension_side ? t_yield_ + k_ * sum : t_compression_yield_ - k_ * sum;
 }
 
 bool PlasticBondLaw::stiff_branch(double t, double guess, double& s) const {

@@ -20,6 +20,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "shockfield/macroparticle/inverse_powers.hpp"
 #include "shockfield/md/fix.hpp"
 
 namespace shockfield::macroparticle {
@@ -59,8 +60,10 @@ class PlasticBondLaw {
   bool stiff_branch(double t, double guess, double& s) const;
 
   double p_, q_, k_;
+  InversePowers powers_;
   PlasticRoute route_;
   double r_y_, r_c_, r_inflection_, t_peak_;
+  double t_yield_, t_compression_yield_;  ///< T_E(r_y), T_E(r_c): where the routes start
 };
 
 /// Bond states by pair of particle ids; updates found during a force evaluation are collected

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/rng.hpp"
 #include "shockfield/macroparticle/loaded_layers.hpp"
 #include "shockfield/macroparticle/pair_dissipation.hpp"
 #include "shockfield/macroparticle/pair_potential.hpp"
@@ -86,6 +87,11 @@ Rod::Rod(const MacroparticleCase& c)
     if (loaded && z < layer) a.mask[i] |= kBottomBit;
     else if (loaded && z > top_z - layer) a.mask[i] |= kTopBit;
     else a.mask[i] |= kFreeBit;
+    // The imperfection of [specimen] perturbation: Gaussian, keyed on (seed, particle id).
+    if ((a.mask[i] & kFreeBit) && c.specimen.perturbation > 0)
+      for (int d = 0; d < 3; ++d)
+        a.x[i][d] += c.specimen.perturbation *
+                     rng::normal(c.specimen.perturbation_seed, static_cast<std::uint64_t>(a.id[i]), static_cast<std::uint64_t>(d));
     if (z >= 0.25 * top_z - 1e-9 && z <= 0.75 * top_z + 1e-9) {
       a.mask[i] |= kMiddleBit;
       xc += a.x[i].x();

@@ -58,6 +58,25 @@ TEST(MacroparticlePotential, ForcesAreMinusTheEnergyGradient) {
   }
 }
 
+TEST(MacroparticlePotential, EveryExponentPathGivesTheEnergyOfEq5) {
+  // Table 1's (p, q) take compile-time chains, (7, 11) the loop, (3.5, 8.25) std::pow: each must
+  // give the pair sum of φ = [p r^-q − q r^-p]/(q − p) by std::pow over the perturbed cluster
+  // (the pairs closer than the cutoff), to round-off (1e-13 relative over ~300 bonds).
+  for (auto [p, q] : {std::pair{3.0, 9.0}, {4.0, 8.0}, {4.0, 9.0}, {4.0, 10.0}, {5.0, 9.0}, {5.0, 10.0}, {6.0, 12.0},
+                      {7.0, 11.0}, {3.5, 8.25}}) {
+    md::Simulation sim = fcc_block(p, q, {3, 3, 3}, geometry::Boundary::shrink);
+    md::fixture::perturb(sim.atoms, 0.04, 7);
+    const double engine = total_energy(sim);
+    double direct = 0;
+    for (std::size_t i = 0; i < sim.atoms.nlocal; ++i)
+      for (std::size_t j = i + 1; j < sim.atoms.nlocal; ++j) {
+        const double r = (sim.atoms.x[i] - sim.atoms.x[j]).norm();
+        if (r < kCutoff) direct += (p * std::pow(r, -q) - q * std::pow(r, -p)) / (q - p);
+      }
+    EXPECT_NEAR(engine / direct, 1.0, 1e-13) << p << " " << q;
+  }
+}
+
 TEST(MacroparticlePotential, ABulkParticleHoldsSixBondEnergies) {
   md::Simulation sim = fcc_block(4, 9, {3, 3, 3}, geometry::Boundary::periodic);
   const double e = total_energy(sim);
