@@ -24,16 +24,28 @@ void CellList::build(const std::vector<Vec3>& points, std::size_t n, const Vec3&
     inv_width_[d] = dims_[d] / std::max(extent[d], cell_size);
   }
   const int ncells = dims_[0] * dims_[1] * dims_[2];
-  start_.assign(static_cast<std::size_t>(ncells) + 1, 0);
+  start_.resize(static_cast<std::size_t>(ncells) + 1);
   cell_.resize(n);
+  points_.resize(n);
+  UninitializedVector<int> fill(static_cast<std::size_t>(ncells));
   const auto sn = static_cast<std::ptrdiff_t>(n);
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < sn; ++i) cell_[static_cast<std::size_t>(i)] = cell_of(points[static_cast<std::size_t>(i)]);
+#pragma omp parallel
+  {
+#pragma omp for schedule(static) nowait
+    for (int c = 0; c <= ncells; ++c) start_[static_cast<std::size_t>(c)] = 0;
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < sn; ++i) {
+      const auto u = static_cast<std::size_t>(i);
+      cell_[u] = cell_of(points[u]);
+      points_[u] = 0;  // first touch here, not in the serial scatter below
+    }
+  }
+  // Counting sort by cell: a point's index within its cell is its order among the cell's points.
   for (std::size_t i = 0; i < n; ++i) ++start_[static_cast<std::size_t>(cell_[i]) + 1];
   for (int c = 0; c < ncells; ++c) start_[c + 1] += start_[c];
-  points_.resize(n);
-  std::vector<int> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) points_[fill[cell_[i]]++] = static_cast<int>(i);
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < ncells; ++c) fill[static_cast<std::size_t>(c)] = start_[static_cast<std::size_t>(c)];
+  for (std::size_t i = 0; i < n; ++i) points_[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_[i])]++)] = static_cast<int>(i);
 }
 
 int CellList::cell_of(const Vec3& p) const {

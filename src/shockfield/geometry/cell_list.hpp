@@ -7,6 +7,8 @@
 #include <array>
 #include <vector>
 
+#include "shockfield/core/uninitialized_vector.hpp"
+
 #include "shockfield/core/types.hpp"
 
 namespace shockfield::geometry {
@@ -26,18 +28,20 @@ class CellList {
   int cell_index(int ix, int iy, int iz) const { return (iz * dims_[1] + iy) * dims_[0] + ix; }
   std::array<int, 3> cell_coords(int c) const;
   /// Points of cell c: cell_points()[cell_start()[c] .. cell_start()[c+1]).
-  const std::vector<int>& cell_start() const { return start_; }
-  const std::vector<int>& cell_points() const { return points_; }
+  const UninitializedVector<int>& cell_start() const { return start_; }
+  const UninitializedVector<int>& cell_points() const { return points_; }
   /// The cell of each point binned by the last build (size n).
-  const std::vector<int>& point_cells() const { return cell_; }
+  const UninitializedVector<int>& point_cells() const { return cell_; }
 
  private:
   Vec3 lo_ = Vec3::Zero();
   Vec3 inv_width_ = Vec3::Ones();
   std::array<int, 3> dims_{1, 1, 1};
-  std::vector<int> start_;
-  std::vector<int> points_;
-  std::vector<int> cell_;
+  // Filled by all threads where the work allows (first touch of fresh pages on one thread was a
+  // serial part of every neighbour-list build).
+  UninitializedVector<int> start_;
+  UninitializedVector<int> points_;
+  UninitializedVector<int> cell_;
 };
 
 }  // namespace shockfield::geometry
