@@ -25,6 +25,7 @@
 #include "shockfield/app/analyze_atoms_profiles.hpp"
 #include "shockfield/app/analyze_atoms_tracks.hpp"
 #include "shockfield/app/analyze_atoms_voids.hpp"
+#include "shockfield/app/analyze_atoms_voxels.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/csv_writer.hpp"
@@ -52,14 +53,16 @@ struct AtomsArgs {
   TrackArgs track;
   ProfileArgs profile;
   VoidArgs voids;
+  VoxelArgs voxel;
   int threads = 0;
 };
 
 // --cluster-select: "<cna|acna|bpa>:<structure>[,<structure>...]" (any of them),
 // "<method>:!<structure>[,...]" (none of them), "dia:[!]<diamond type>[,...]", "csp><value>" or
 // "excess><value>"; the analysis it reads must be on (acna and dia are switched on by it).
-aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s, bool excess_on) {
-  const std::string what = fmt::format("--cluster-select '{}'", spec);
+aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s, bool excess_on,
+                                     const char* option = "--cluster-select") {
+  const std::string what = fmt::format("{} '{}'", option, spec);
   // csp>VALUE (Å²) and excess>VALUE (eV): a threshold on a per-atom value.
   for (const auto& [prefix, unit] : {std::pair{std::string("csp>"), "Å²"}, std::pair{std::string("excess>"), "eV"}}) {
     if (spec.rfind(prefix, 0) != 0) continue;
@@ -233,6 +236,10 @@ void run_atoms(const AtomsArgs& a) {
     analyses.excess_energy = [&](const aa::StructureAnalysisResult& r) {
       return profiles.excess_energy(*current_frame, r, *current_dump);
     };
+  VoxelOutput voxels(a.voxel, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
+  const aa::ClusterSelection voxel_select =
+      voxels.on() ? parse_selection(a.voxel.select, analyses, !a.profile.excess_energy.empty(), "--voxel-select")
+                  : aa::ClusterSelection{};
   std::optional<TrackOutput> tracks;
   fs::path tracks_file, growth_file;
   if (a.track.track) {
@@ -264,6 +271,7 @@ void run_atoms(const AtomsArgs& a) {
       aa::append_structure_columns(dumps[f], result, frame.size());
       if (profiles.profiles() || profiles.excess()) profiles.add(frame_index, frame, result, dumps[f]);
       if (voids.on()) voids.add(frame_index, frame);
+      if (voxels.on()) voxels.add(frame, voxel_select(result));
       if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);
       if (burgers) burgers->analyze(frame_index, frame, result.clusters ? &*result.clusters : nullptr, dumps[f]);
       writer.write(dumps[f]);
@@ -280,6 +288,7 @@ void run_atoms(const AtomsArgs& a) {
   std::printf("analysed %zu frames (%zu atoms) from %zu files; wrote %s/structures.csv and the annotated dumps\n",
               frame_index, total_atoms, files.size(), out_dir.string().c_str());
   if (voids.on()) std::printf("%zu voids in %s/voids.csv\n", voids.voids(), out_dir.string().c_str());
+  if (voxels.on()) std::printf("%s\n", voxels.summary().c_str());
   if (burgers) std::printf("%zu Burgers circuits in %s/burgers.csv\n", burgers->circuits(), out_dir.string().c_str());
   if (burgers && burgers->skipped() > 0)
     std::printf("%zu clusters without a closed Burgers circuit were skipped (first: %s)\n", burgers->skipped(),
@@ -350,6 +359,7 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       ->check(CLI::PositiveNumber);
   add_profile_options(*cmd, a->profile);
   add_void_options(*cmd, a->voids);
+  add_voxel_options(*cmd, a->voxel);
   add_track_options(*cmd, a->track);
   add_burgers_options(*cmd, a->burgers);
   cmd->add_option("-j,--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
