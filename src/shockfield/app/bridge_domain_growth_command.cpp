@@ -82,8 +82,8 @@ void run(const DomainGrowthOptions& o, const std::vector<std::string>& command_l
   const double W = o.width, c0 = fit.c0, D = fit.D;
   if (!(D > 0.0))
     throw InputError(fmt::format(
-        "{}: the fitted D = {:.4g} +- {:.2g} A^2/ps is not positive (c0 = {:.4g} +- {:.2g} A/ps, {} points): the domain "
-        "speeds up as it shrinks in 1/R, i.e. it decelerates as it grows (R from {:.4g} to {:.4g} A). The well-posed "
+        "{}: the fitted D = {:.4g} +- {:.2g} A^2/ps is not positive (c0 = {:.4g} +- {:.2g} A/ps, {} points): its growth "
+        "speed rises with 1/R, i.e. the domain decelerates as it grows (R from {:.4g} to {:.4g} A). The well-posed "
         "phase-field model (Allen-Cahn gradient flow) has dR/dt = c0 - 2D/R with D > 0: a small domain grows slower "
         "than a flat front. Decelerating growth such as Xu et al. (2015)'s L ~ t^0.465 would need D < 0, the "
         "anti-diffusive sign of their eq 39 as printed, which has no well-posed model (docs/theory/phasefield.md). "
