@@ -62,7 +62,7 @@ VoxelField voxel_fraction(const AtomFrame& frame, const std::vector<bool>& selec
     g.periodic[d] = frame.box.periodic(d);
     g.origin[d] = frame.box.lo[d];
     const long cells = std::lround(L / o.spacing);
-    if (cells < 1)
+    if (cells < 1 || o.spacing > L)
       throw InputError(fmt::format("voxel spacing {} Å is longer than the box along {} ({} Å)", o.spacing, "xyz"[d], L));
     g.n[d] = static_cast<std::size_t>(cells + (g.periodic[d] ? 0 : 1));
     g.stretch[d] = static_cast<double>(cells) * o.spacing / L;
