@@ -16,7 +16,7 @@ export OMP_WAIT_POLICY=passive
 rm -rf "$out" && mkdir -p "$out/frames" "$out/decelerating"
 py=/usr/bin/python3
 $py "$here/generate.py" "$out/frames" allen-cahn > "$out/frames/law.txt"
-frames() { ls "$1"/grow.*.dump | sort -t. -k2 -n; }
+frames() { ls "$1"/grow.*.dump | sort -V; }
 "$exe" analyze atoms $(frames "$out/frames") --clusters 3.0 --cluster-select acna:hcp --cluster-min-size 20 --track \
   --timestep-size 0.001 -o "$out/analysis" | tail -n 1
 "$exe" bridge domain-growth "$out/analysis" --interface-width $width --until $fit -o "$out/fe_pf.toml" | tee "$out/bridge.txt"
