@@ -119,6 +119,11 @@ GrowthFit fit_growth_law(const std::vector<double>& t, const std::vector<double>
   fit.R0_stderr = std::sqrt(C(0, 0)), fit.c0_stderr = std::sqrt(C(1, 1)), fit.D_stderr = std::sqrt(C(2, 2));
   fit.c0_D_covariance = C(1, 2);
   fit.residual_rms = std::sqrt(current / static_cast<double>(m));
+  for (double v : {fit.R0, fit.c0, fit.D, fit.R0_stderr, fit.c0_stderr, fit.D_stderr, fit.c0_D_covariance})
+    if (!std::isfinite(v))
+      throw InputError(fmt::format("{}: the points do not determine R0, c0 and D (the least-squares fit has no finite "
+                                   "solution or covariance: R from {} to {} over t from {} to {})",
+                                   what, R.front(), R.back(), t.front(), t.back()));
   return fit;
 }
 
