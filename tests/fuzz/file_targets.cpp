@@ -105,6 +105,20 @@ Target bridge_strength(const Context& c, const std::string& bridge) {
           }};
 }
 
+// `shockfield bridge domain-growth` on the tracks.csv of a synthetic growing hcp domain (the first
+// 11 frames of examples/phasefield_from_md, tests/fixtures/fuzz/inputs/bridge_domain_growth).
+Target bridge_domain_growth(const Context& c) {
+  return {"bridge_domain_growth", {c.source / "tests/fixtures/fuzz/inputs/bridge_domain_growth/tracks.csv"}, false,
+          false, "", [c](const fs::path& file, const fs::path& work) {
+            fs::create_directories(work / "out");
+            const fs::path out = work / "out/pf.toml";
+            return check_material_output(run_program({c.shockfield.string(), "bridge", "domain-growth", file.string(),
+                                                      "--interface-width", "2", "-o", out.string()},
+                                                     work, c.limits),
+                                         out);
+          }};
+}
+
 }  // namespace
 
 std::vector<Target> file_targets(const Context& c, const std::function<bool(const std::string&)>& wanted) {
@@ -115,6 +129,7 @@ std::vector<Target> file_targets(const Context& c, const std::function<bool(cons
   t.push_back(bridge_elastic(c));
   t.push_back(bridge_strength(c, "spall"));
   t.push_back(bridge_strength(c, "yield"));
+  t.push_back(bridge_domain_growth(c));
   return t;
 }
 

@@ -26,6 +26,7 @@
 #include "shockfield/app/analyze_atoms_profiles.hpp"
 #include "shockfield/app/analyze_atoms_tracks.hpp"
 #include "shockfield/app/analyze_atoms_voids.hpp"
+#include "shockfield/app/analyze_atoms_voxels.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/csv_writer.hpp"
@@ -53,8 +54,18 @@ struct AtomsArgs {
   TrackArgs track;
   ProfileArgs profile;
   VoidArgs voids;
+  VoxelArgs voxel;
   int threads = 0;
 };
+
+// --cluster-select and --voxel-select: the selection language of analysis/atoms/cluster_selection,
+// with errors naming the option and the option that turns a needed analysis on.
+aa::ClusterSelection parse_selection(const std::string& spec, aa::StructureAnalyses& s, bool excess_on,
+                                     const char* option = "--cluster-select") {
+  return aa::parse_cluster_selection(spec, s, excess_on, fmt::format("{} '{}'", option, spec), [](const std::string& m) {
+    return m == "excess" ? std::string("--excess-energy") : m == "bpa" ? std::string("--bond-pairs") : "--" + m;
+  });
+}
 
 aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   aa::StructureAnalyses s;
@@ -67,9 +78,7 @@ aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   if (a.clusters.has_value() != !a.cluster_select.empty())
     throw InputError("--clusters and --cluster-select go together: the cutoff and which atoms to cluster");
   if (a.clusters) {
-    s.select = aa::parse_cluster_selection(a.cluster_select, s, !a.profile.excess_energy.empty(),
-                                           fmt::format("--cluster-select '{}'", a.cluster_select),
-                                           [](const std::string& m) { return m == "excess" ? "--excess-energy" : m == "bpa" ? "--bond-pairs" : "--" + m; });
+    s.select = parse_selection(a.cluster_select, s, !a.profile.excess_energy.empty());
     s.clusters = aa::DefectClusters{*a.clusters, a.cluster_min_size};
   }
   return s;
@@ -160,6 +169,10 @@ void run_atoms(const AtomsArgs& a) {
     analyses.excess_energy = [&](const aa::StructureAnalysisResult& r) {
       return profiles.excess_energy(*current_frame, r, *current_dump);
     };
+  VoxelOutput voxels(a.voxel, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
+  const aa::ClusterSelection voxel_select =
+      voxels.on() ? parse_selection(a.voxel.select, analyses, !a.profile.excess_energy.empty(), "--voxel-select")
+                  : aa::ClusterSelection{};
   std::optional<TrackOutput> tracks;
   fs::path tracks_file, growth_file;
   if (a.track.track) {
@@ -191,6 +204,7 @@ void run_atoms(const AtomsArgs& a) {
       aa::append_structure_columns(dumps[f], result, frame.size());
       if (profiles.profiles() || profiles.excess()) profiles.add(frame_index, frame, result, dumps[f]);
       if (voids.on()) voids.add(frame_index, frame);
+      if (voxels.on()) voxels.add(frame, voxel_select(result));
       if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);
       if (burgers) burgers->analyze(frame_index, frame, result.clusters ? &*result.clusters : nullptr, dumps[f]);
       writer.write(dumps[f]);
@@ -207,6 +221,7 @@ void run_atoms(const AtomsArgs& a) {
   std::printf("analysed %zu frames (%zu atoms) from %zu files; wrote %s/structures.csv and the annotated dumps\n",
               frame_index, total_atoms, files.size(), out_dir.string().c_str());
   if (voids.on()) std::printf("%zu voids in %s/voids.csv\n", voids.voids(), out_dir.string().c_str());
+  if (voxels.on()) std::printf("%s\n", voxels.summary().c_str());
   if (burgers) std::printf("%zu Burgers circuits in %s/burgers.csv\n", burgers->circuits(), out_dir.string().c_str());
   if (burgers && burgers->skipped() > 0)
     std::printf("%zu clusters without a closed Burgers circuit were skipped (first: %s)\n", burgers->skipped(),
@@ -230,7 +245,8 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       "method the count and fraction of each structure) and, with --clusters, OUTPUT/clusters.csv\n"
       "(Xu et al. (2015) §4.4.2's central-moment method); with --burgers-*, OUTPUT/burgers.csv (Burgers\n"
       "vectors of fcc dislocations by the Frank scheme of Xu et al. (2015) §3.2.3, FS/RH); with --track,\n"
-      "OUTPUT/tracks.csv and OUTPUT/growth.csv (clusters followed in time, growth laws, Fig 72).\n"
+      "OUTPUT/tracks.csv and OUTPUT/growth.csv (clusters followed in time, growth laws, Fig 72); with\n"
+      "--voxel, OUTPUT/voxels_<timestep>.vti (the hcp fraction on a grid: a phase-field [initial] file).\n"
       "Inputs: LAMMPS text dumps (one file or several, frames in order; orthogonal boxes; .gz\n"
       "through gzip, written back uncompressed), LAMMPS data files (atom style atomic), extended XYZ\n"
       "(ASE/OVITO .xyz/.extxyz, one or many frames, orthogonal Lattice; written back as <stem>.dump),\n"
@@ -277,6 +293,7 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       ->check(CLI::PositiveNumber);
   add_profile_options(*cmd, a->profile);
   add_void_options(*cmd, a->voids);
+  add_voxel_options(*cmd, a->voxel);
   add_track_options(*cmd, a->track);
   add_burgers_options(*cmd, a->burgers);
   cmd->add_option("-j,--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")

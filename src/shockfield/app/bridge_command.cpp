@@ -28,6 +28,7 @@ void add_bridge_command(CLI::App& app, const std::vector<std::string>& command_l
   add_bridge_eam_to_macroparticle_command(*bridge, command_line);
   add_bridge_spall_command(*bridge, command_line);
   add_bridge_yield_command(*bridge, command_line);
+  add_bridge_domain_growth_command(*bridge, command_line);
 }
 
 }  // namespace shockfield::app

@@ -15,14 +15,10 @@ namespace shockfield::app {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-constexpr double kBarToPa = 1e5, kPsToS = 1e-12, kAToM = 1e-10;
-
-// thermo.csv as columns by name; a row with a non-numeric cell is refused.
-std::vector<std::vector<double>> read_columns(const fs::path& file, const std::vector<std::string>& wanted) {
+std::vector<std::vector<double>> read_columns(const fs::path& file, const std::vector<std::string>& wanted,
+                                              const std::string& expected) {
   std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot read (expected the thermo table of an MD run)", file.string()));
+  if (!in) throw InputError(fmt::format("{}: cannot read (expected {})", file.string(), expected));
   std::string line, cell;
   std::getline(in, line);
   std::vector<std::string> names;
@@ -31,8 +27,7 @@ std::vector<std::vector<double>> read_columns(const fs::path& file, const std::v
   for (const std::string& w : wanted) {
     const auto it = std::find(names.begin(), names.end(), w);
     if (it == names.end())
-      throw InputError(fmt::format("{}: no column '{}' (expected the thermo.csv of an MD run: step, time_ps, "
-                                   "press_bar, pxx_bar, ..., volume_A3, lx_A, ly_A, lz_A)", file.string(), w));
+      throw InputError(fmt::format("{}: no column '{}' (expected {})", file.string(), w, expected));
     index.push_back(static_cast<std::size_t>(it - names.begin()));
   }
   std::vector<std::vector<double>> cols(wanted.size());
@@ -50,6 +45,10 @@ std::vector<std::vector<double>> read_columns(const fs::path& file, const std::v
   }
   return cols;
 }
+
+namespace {
+
+constexpr double kBarToPa = 1e5, kPsToS = 1e-12, kAToM = 1e-10;
 
 // Quadratic least squares y = a + b·x + c·x² (x = t − t*, in the rows' own time unit) with
 // C = σ²(XᵀX)⁻¹, σ² = χ²/(n − 3).
@@ -178,7 +177,8 @@ DeformRun read_deform_run(const fs::path& folder, const std::string& stage, std:
     throw InputError(fmt::format("{}: no thermo.csv in the run folder ({} reads the stress of the thermo table)",
                                  folder.string(), command));
   const auto cols = read_columns(r.thermo_file, {"step", "time_ps", "press_bar", "pxx_bar", "pyy_bar", "pzz_bar",
-                                                 "pxy_bar", "pxz_bar", "pyz_bar", "volume_A3", "lx_A", "ly_A", "lz_A"});
+                                                 "pxy_bar", "pxz_bar", "pyz_bar", "volume_A3", "lx_A", "ly_A", "lz_A"},
+                                 "the thermo.csv of an MD run: step, time_ps, press_bar, pxx_bar, ..., volume_A3, lx_A, ly_A, lz_A");
   // Bounds no MD run reaches, so that the fits' sums stay finite: |p| <= 1e9 bar (1e5 GPa),
   // 0 < volume <= 1e18 Å³, 0 < lengths <= 1e6 Å, |t| <= 1e9 ps.
   for (std::size_t i = 0; i < cols[0].size(); ++i) {

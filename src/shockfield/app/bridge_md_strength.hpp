@@ -77,6 +77,11 @@ double log_rate(const std::vector<double>& t, const std::vector<double>& x, std:
 /// --fit-rows, --drop, --max-drop-time; `event` names the break in the help ("void nucleation").
 void add_peak_options(CLI::App& cmd, PeakOptions& o, const std::string& event);
 
+/// The columns `wanted` of a CSV file with a header row, by name; InputError naming the file and
+/// `expected` (what the file should be) for a missing column, and the line of a non-numeric cell.
+std::vector<std::vector<double>> read_columns(const std::filesystem::path& file, const std::vector<std::string>& wanted,
+                                              const std::string& expected);
+
 /// The [provenance] input entry of a run: folder, config_sha256, thermo file and its SHA-256, stage.
 toml::table deform_run_input(const DeformRun& run);
 

@@ -35,5 +35,6 @@ void add_bridge_elastic_command(CLI::App& bridge, const std::vector<std::string>
 void add_bridge_eam_to_macroparticle_command(CLI::App& bridge, const std::vector<std::string>& command_line);
 void add_bridge_spall_command(CLI::App& bridge, const std::vector<std::string>& command_line);
 void add_bridge_yield_command(CLI::App& bridge, const std::vector<std::string>& command_line);
+void add_bridge_domain_growth_command(CLI::App& bridge, const std::vector<std::string>& command_line);
 
 }  // namespace shockfield::app

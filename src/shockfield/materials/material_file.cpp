@@ -41,13 +41,16 @@ const std::vector<MaterialKey>& material_keys() {
       {"atoms.cohesive_energy", positive, "J", "cohesive (binding) energy per atom e0 of the relaxed crystal, > 0"},
       {"atoms.lattice_constant", positive, "m", "zero-pressure lattice constant a0 of the atoms' cubic crystal"},
       {"atoms.atomic_mass", positive, "kg", "mass of one atom"},
+      {"phasefield.a", Range::closed(0.0, 1.0), "-", "bulk parameter a of the double well f (Xu et al. (2015) eq 38)"},
+      {"phasefield.interface_width", positive, "m", "logistic length W = sqrt(2 D tau) of the diffuse front"},
+      {"phasefield.relaxation_time", positive, "s", "relaxation time tau of f, the time unit of the model"},
   };
   return keys;
 }
 
 namespace {
 
-constexpr const char* kSections[] = {"eos", "elasticity", "strength", "thermal", "spall", "atoms"};
+constexpr const char* kSections[] = {"eos", "elasticity", "strength", "thermal", "spall", "atoms", "phasefield"};
 
 std::pair<std::string, std::string> split(std::string_view dotted) {
   const auto dot = dotted.find('.');

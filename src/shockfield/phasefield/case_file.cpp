@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "shockfield/core/size_limits.hpp"
+#include "shockfield/materials/material_file.hpp"
 
 namespace shockfield::phasefield {
 namespace {
@@ -73,8 +74,24 @@ PhasefieldCase read_phasefield_case(const Config& root) {
   PhasefieldCase c;
   c.grid = read_grid(root.table("grid"));
   const Config model = root.table("model");
-  c.model.a = model.get_double("a", Range::closed(0.0, 1.0));
-  c.model.D = model.get_double("D", Range::positive());
+  // [model] file: a material file with [phasefield] (bridge domain-growth): a from it, and
+  // D = W²/(2ℓ²) in the case's length unit ℓ = length_unit (m) from its interface width W; its
+  // relaxation time is the model's time unit. The case's own a and D win.
+  const auto material = materials::open_material_file(model);
+  const materials::MaterialFile* file = material ? &*material : nullptr;
+  c.model.a = materials::case_or_file(model, "a", file, {"phasefield.a"}, std::nullopt, Range::closed(0.0, 1.0),
+                                      "the phase-field model");
+  if (file && !model.has("D")) {
+    const double unit = model.get_double("length_unit", Range::positive());
+    const auto width = file->get("phasefield.interface_width");
+    if (!width) file->missing("phasefield.interface_width", "the phase-field model's D = W^2/2", model.key_path("D"));
+    c.model.D = materials::file_default(model, "D", *file, "phasefield.interface_width", 0.5 * (*width / unit) * (*width / unit),
+                                        Range::positive());
+    if (const auto tau = file->get("phasefield.relaxation_time")) root.derive("time_unit_s", *tau);
+  } else {
+    c.model.D = model.get_double("D", Range::positive());
+    if (file) model.get_double_or("length_unit", 1.0, Range::positive());
+  }
   if (model.has("anisotropy")) {
     const auto w = model.get_doubles("anisotropy", static_cast<std::size_t>(c.grid.dim), Range::closed(1e-3, 1e3));
     for (int d = 0; d < c.grid.dim; ++d) c.model.anisotropy[d] = w[d];
