@@ -84,20 +84,6 @@ aa::StructureAnalyses analyses_of(const AtomsArgs& a) {
   return s;
 }
 
-// clusters.csv: one row per cluster per frame.
-std::vector<std::string> cluster_file_columns() {
-  std::vector<std::string> columns{"frame", "timestep"};
-  for (std::string& c : aa::cluster_columns()) columns.push_back(std::move(c));
-  return columns;
-}
-
-void write_clusters(io::CsvWriter& out, std::size_t frame, long long timestep, const aa::ClusterResult& r) {
-  for (std::vector<double>& row : aa::cluster_rows(r)) {
-    row.insert(row.begin(), {double(frame), double(timestep)});
-    out.row(row);
-  }
-}
-
 // structures.csv: frame, timestep, atoms, then the counts and fractions of each structure method.
 std::vector<std::string> summary_columns(const aa::StructureAnalyses& s) {
   std::vector<std::string> columns{"frame", "timestep", "atoms"};
@@ -159,7 +145,7 @@ void run_atoms(const AtomsArgs& a) {
   PendingOutputs pending(out_dir);
   io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
   io::CsvWriter clusters;
-  if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), cluster_file_columns());
+  if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), aa::cluster_columns("frame", "timestep"));
   VoidOutput voids(a.voids, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
   ProfileOutput profiles(a.profile, analyses);
   if (profiles.profiles()) profiles.open(pending.add("profiles.csv"));
@@ -208,7 +194,8 @@ void run_atoms(const AtomsArgs& a) {
       if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);
       if (burgers) burgers->analyze(frame_index, frame, result.clusters ? &*result.clusters : nullptr, dumps[f]);
       writer.write(dumps[f]);
-      if (result.clusters) write_clusters(clusters, frame_index, frame.timestep, *result.clusters);
+      if (result.clusters)
+        for (const auto& row : aa::cluster_rows(*result.clusters, double(frame_index), double(frame.timestep))) clusters.row(row);
       summary.row(summary_row(frame_index++, frame.timestep, frame.size(), result));
       total_atoms += frame.size();
     }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 
+#include "shockfield/analysis/atoms/cluster_selection.hpp"
 #include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/checked_file.hpp"
@@ -85,7 +86,7 @@ RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::option
   if (spec.analysis.every > 0) {
     structure_.emplace(spec.analysis);
     structures_ = io::CsvWriter(folder / "structures.csv", structure_->columns(), keep);
-    if (structure_->clusters()) clusters_ = io::CsvWriter(folder / "clusters.csv", structure_->cluster_columns(), keep);
+    if (structure_->clusters()) clusters_ = io::CsvWriter(folder / "clusters.csv", analysis::atoms::cluster_columns("step", "time_ps"), keep);
   }
   if (spec.dump_every > 0) {
     fs::create_directories(folder / "dumps");
@@ -122,7 +123,9 @@ void RunOutput::write(const Simulation& sim, bool force_thermo) {
   if (analysis_due || (structure_ && dump_due && spec_.analysis.dump_columns)) analysed = structure_->compute(sim);
   if (analysis_due) {
     structures_.row(structure_->row(sim, *analysed));
-    for (const std::vector<double>& row : structure_->cluster_rows(sim, *analysed)) clusters_.row(row);
+    if (analysed->clusters)
+      for (const auto& row : analysis::atoms::cluster_rows(*analysed->clusters, static_cast<double>(sim.step), sim.time))
+        clusters_.row(row);
   }
   if (dump_due) write_dump(sim, spec_.analysis.dump_columns ? &*analysed : nullptr);
 }

@@ -78,16 +78,17 @@ ClusterSelection parse_cluster_selection(const std::string& spec, StructureAnaly
   };
 }
 
-std::vector<std::string> cluster_columns() {
-  return {"cluster", "size", "x", "y", "z", "a", "b", "c", "axis1_x", "axis1_y", "axis1_z", "axis2_x", "axis2_y",
-          "axis2_z", "axis3_x", "axis3_y", "axis3_z", "ellipsoid_volume", "ellipsoid_surface", "atomic_volume"};
+std::vector<std::string> cluster_columns(const std::string& frame_column, const std::string& time_column) {
+  return {frame_column, time_column, "cluster", "size", "x", "y", "z", "a", "b", "c", "axis1_x", "axis1_y",
+          "axis1_z", "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y", "axis3_z", "ellipsoid_volume",
+          "ellipsoid_surface", "atomic_volume"};
 }
 
-std::vector<std::vector<double>> cluster_rows(const ClusterResult& r) {
+std::vector<std::vector<double>> cluster_rows(const ClusterResult& r, double frame_value, double time_value) {
   std::vector<std::vector<double>> rows;
   for (std::size_t k = 0; k < r.clusters.size(); ++k) {
     const Cluster& c = r.clusters[k];
-    std::vector<double> row{double(k + 1), double(c.size)};
+    std::vector<double> row{frame_value, time_value, double(k + 1), double(c.size)};
     for (int d = 0; d < 3; ++d) row.push_back(c.centre[d]);
     for (int d = 0; d < 3; ++d) row.push_back(c.semi_axes[d]);
     for (int axis = 0; axis < 3; ++axis)

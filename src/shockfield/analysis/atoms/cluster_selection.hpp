@@ -19,11 +19,11 @@ ClusterSelection parse_cluster_selection(const std::string& spec, StructureAnaly
                                          const std::string& what,
                                          const std::function<std::string(const std::string&)>& enabled_by);
 
-/// clusters.csv's columns after the frame's own (frame/timestep or step/time): cluster (1, 2, ...
-/// largest first), size, centre x y z, semi-axes a b c, the three axes, ellipsoid volume and
-/// surface, atomic volume.
-std::vector<std::string> cluster_columns();
-/// Their values, one row per cluster.
-std::vector<std::vector<double>> cluster_rows(const ClusterResult& r);
+/// clusters.csv's columns: the frame's two (frame, timestep for analyze atoms; step, time_ps in a
+/// run), then cluster (1, 2, ... largest first), size, centre x y z, semi-axes a b c, the three
+/// axes, ellipsoid volume and surface, atomic volume.
+std::vector<std::string> cluster_columns(const std::string& frame_column, const std::string& time_column);
+/// Their values, one row per cluster, starting with the frame's two values.
+std::vector<std::vector<double>> cluster_rows(const ClusterResult& r, double frame_value, double time_value);
 
 }  // namespace shockfield::analysis::atoms

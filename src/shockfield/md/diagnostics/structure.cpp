@@ -4,9 +4,8 @@
 
 #include <algorithm>
 
-#include "shockfield/analysis/atoms/cluster_selection.hpp"
-#include "shockfield/md/analysis_table.hpp"
 #include "shockfield/analysis/atoms/structure_columns.hpp"
+#include "shockfield/md/analysis_table.hpp"
 
 namespace shockfield::md {
 
@@ -24,23 +23,6 @@ aa::StructureAnalysisResult StructureDiagnostic::compute(const Simulation& sim) 
   const aa::AtomFrame frame =
       aa::frame_from_atoms(sim.step, sim.box, sim.atoms, fmt::format("[analysis] at step {}", sim.step));
   return aa::analyze_structure(frame, analyses_);
-}
-
-std::vector<std::vector<double>> StructureDiagnostic::cluster_rows(const Simulation& sim,
-                                                                   const aa::StructureAnalysisResult& r) const {
-  std::vector<std::vector<double>> rows;
-  if (!r.clusters) return rows;
-  for (std::vector<double>& row : aa::cluster_rows(*r.clusters)) {
-    row.insert(row.begin(), {static_cast<double>(sim.step), sim.time});
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
-std::vector<std::string> StructureDiagnostic::cluster_columns() const {
-  std::vector<std::string> c{"step", "time_ps"};
-  for (std::string& name : aa::cluster_columns()) c.push_back(std::move(name));
-  return c;
 }
 
 std::vector<double> StructureDiagnostic::row(const Simulation& sim, const aa::StructureAnalysisResult& r) const {

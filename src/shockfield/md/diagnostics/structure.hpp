@@ -22,11 +22,7 @@ class StructureDiagnostic {
   std::vector<std::string> columns() const;
   /// The analyses of the simulation's current atoms.
   analysis::atoms::StructureAnalysisResult compute(const Simulation& sim) const;
-  /// clusters.csv: step, time_ps, then the cluster columns of analyze atoms.
-  std::vector<std::string> cluster_columns() const;
-  /// Its rows (one per cluster) for a result computed at the simulation's current step.
-  std::vector<std::vector<double>> cluster_rows(const Simulation& sim, const analysis::atoms::StructureAnalysisResult& r) const;
-  bool clusters() const { return analyses_.clusters.has_value(); }
+  bool clusters() const { return analyses_.clusters.has_value(); }  ///< clusters.csv is written
   /// The structures.csv row of a result computed at the simulation's current step.
   std::vector<double> row(const Simulation& sim, const analysis::atoms::StructureAnalysisResult& r) const;
 
