@@ -143,18 +143,18 @@ void run_atoms(const AtomsArgs& a) {
 
   const fs::path out_dir(a.output);
   PendingOutputs pending(out_dir);
-  io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
-  io::CsvWriter clusters;
-  if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), aa::cluster_columns("frame", "timestep"));
-  VoidOutput voids(a.voids, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
   ProfileOutput profiles(a.profile, analyses);
-  if (profiles.profiles()) profiles.open(pending.add("profiles.csv"));
   const aa::AtomFrame* current_frame = nullptr;  // the frame being analysed and its dump: the excess
   const io::DumpFrame* current_dump = nullptr;   // energy's pe column
   if (profiles.excess())
     analyses.excess_energy = [&](const aa::StructureAnalysisResult& r) {
       return profiles.excess_energy(*current_frame, r, *current_dump);
     };
+  io::CsvWriter summary(pending.add("structures.csv"), summary_columns(analyses));
+  io::CsvWriter clusters;
+  if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), aa::cluster_columns("frame", "timestep"));
+  VoidOutput voids(a.voids, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
+  if (profiles.profiles()) profiles.open(pending.add("profiles.csv"));
   VoxelOutput voxels(a.voxel, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
   const aa::ClusterSelection voxel_select =
       voxels.on() ? parse_selection(a.voxel.select, analyses, !a.profile.excess_energy.empty(), "--voxel-select")
@@ -188,7 +188,7 @@ void run_atoms(const AtomsArgs& a) {
       current_dump = &dumps[f];
       const auto result = aa::analyze_structure(frame, analyses);
       aa::append_structure_columns(dumps[f], result, frame.size());
-      if (profiles.profiles() || profiles.excess()) profiles.add(frame_index, frame, result, dumps[f]);
+      if (profiles.profiles()) profiles.add(frame_index, frame, result);
       if (voids.on()) voids.add(frame_index, frame);
       if (voxels.on()) voxels.add(frame, voxel_select(result));
       if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);

@@ -65,12 +65,7 @@ void ProfileOutput::open(const std::filesystem::path& file) {
   out_.write(header + "\n");
 }
 
-const std::vector<aa::Structure>& ProfileOutput::structures_of(const aa::StructureAnalysisResult& r) const {
-  const std::string& first = methods_.front();  // the structure the excess reference uses
-  return first == "cna" ? r.cna->structure : first == "acna" ? r.adaptive_cna->structure : r.bond_pairs->structure;
-}
-
-std::vector<double> ProfileOutput::excess_energy(const aa::AtomFrame& frame, const aa::StructureAnalysisResult& r,
+aa::ExcessEnergy ProfileOutput::excess_energy(const aa::AtomFrame& frame, const aa::StructureAnalysisResult& r,
                                                  const io::DumpFrame& dump) const {
   std::string column = args_.pe_column;
   if (column.empty())
@@ -85,18 +80,16 @@ std::vector<double> ProfileOutput::excess_energy(const aa::AtomFrame& frame, con
                                  dump.where(), column.empty() ? "none of pe, c_pe, c_peatom, c_pe_atom, v_pe" : column));
   const std::vector<double>& pe = dump.column(column);
   const std::vector<aa::Structure> none(frame.size(), crystal_);
-  const aa::ExcessEnergy e =
-      aa::excess_energy(pe, methods_.empty() ? none : structures_of(r), crystal_, reference_ ? &*reference_ : nullptr);
+  const std::vector<aa::Structure>* structures = aa::reference_structures(r);
+  aa::ExcessEnergy e = aa::excess_energy(pe, structures ? *structures : none, crystal_, reference_ ? &*reference_ : nullptr);
   if (!reference_)
     std::printf("timestep %lld: excess energy reference e0 = %.10g eV (median pe of %s atoms)\n", frame.timestep,
                 e.reference, args_.crystal.c_str());
-  return e.excess;
+  return e;
 }
 
-void ProfileOutput::add(std::size_t frame_index, const aa::AtomFrame& frame, const aa::StructureAnalysisResult& r,
-                        io::DumpFrame& dump) {
+void ProfileOutput::add(std::size_t frame_index, const aa::AtomFrame& frame, const aa::StructureAnalysisResult& r) {
   const std::vector<double>& excess = r.excess_energy;
-  if (excess_ && frame.size() > 0) dump.set_column("excess", excess);
   if (!profile_) return;
   std::vector<std::vector<aa::ProfileBin>> per_method;
   for (const std::string& m : methods_) {

@@ -34,23 +34,21 @@ class ProfileOutput {
   void open(const std::filesystem::path& file);
   /// The frame's per-atom excess energy pe − e0 from the dump's pe column (e0 printed when it is
   /// the median of the crystal atoms); the source of StructureAnalyses::excess_energy.
-  std::vector<double> excess_energy(const analysis::atoms::AtomFrame& frame,
-                                    const analysis::atoms::StructureAnalysisResult& result,
-                                    const io::DumpFrame& dump) const;
-  /// Appends the result's excess energy as column `excess` and writes the frame's profile rows.
+  analysis::atoms::ExcessEnergy excess_energy(const analysis::atoms::AtomFrame& frame,
+                                              const analysis::atoms::StructureAnalysisResult& result,
+                                              const io::DumpFrame& dump) const;
+  /// Writes the frame's profile rows.
   void add(std::size_t frame_index, const analysis::atoms::AtomFrame& frame,
-           const analysis::atoms::StructureAnalysisResult& result, io::DumpFrame& dump);
+           const analysis::atoms::StructureAnalysisResult& result);
   void close();
 
  private:
-  const std::vector<analysis::atoms::Structure>& structures_of(const analysis::atoms::StructureAnalysisResult& r) const;
-
   ProfileArgs args_;
   std::optional<analysis::atoms::StructureProfile> profile_;
   bool excess_ = false;
   std::optional<double> reference_;
   analysis::atoms::Structure crystal_ = analysis::atoms::Structure::fcc;
-  std::vector<std::string> methods_;  ///< structure methods on, in column order
+  std::vector<std::string> methods_;  ///< structure methods on, in column order (cna, acna, bpa)
   io::CheckedOutput out_;
 };
 

@@ -20,10 +20,9 @@ aa::StructureAnalyses structure_analyses(const AnalysisSpec& spec) {
   }
   if (spec.clusters > 0) {
     analyses.select = aa::parse_cluster_selection(
-        spec.cluster_select, analyses, false, fmt::format("cluster_select \"{}\"", spec.cluster_select),
+        spec.cluster_select, analyses, spec.excess_energy, fmt::format("cluster_select \"{}\"", spec.cluster_select),
         [](const std::string& m) {
-          return m == "excess" ? std::string("the excess energy, which a run does not compute (analyze atoms --excess-energy does)")
-                               : fmt::format("\"{}\" in methods", m);
+          return m == "excess" ? std::string("excess_energy = true") : fmt::format("\"{}\" in methods", m);
         });
     analyses.clusters = aa::DefectClusters{spec.clusters, spec.cluster_min_size};
   }

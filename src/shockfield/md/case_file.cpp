@@ -156,6 +156,21 @@ AnalysisSpec read_analysis(const Config& t) {
   a.csp_neighbors = static_cast<int>(t.get_int_or("csp_neighbors", 12, Range::closed(2, 64)));
   if (a.csp_neighbors % 2 != 0) t.fail("csp_neighbors", "an even number of neighbours (12 fcc, 8 bcc)");
   a.dump_columns = t.get_bool_or("dump_columns", false);
+  // The excess energy (Xu et al. 2015 §3.2.3): e0 given, or the median pe of the crystal's atoms
+  // by the first structure method (cna, acna, bpa) — one must run.
+  a.excess_energy = t.get_bool_or("excess_energy", false);
+  if (a.excess_energy) {
+    if (t.has("excess_reference")) a.excess_reference = t.get_double("excess_reference", Range::closed(-1e4, 1e4));
+    a.excess_crystal = t.get_choice_or("excess_crystal", {"fcc", "hcp", "bcc"}, "fcc");
+    const bool structures = std::any_of(a.methods.begin(), a.methods.end(),
+                                        [](const std::string& m) { return m == "acna" || m == "cna" || m == "bpa"; });
+    if (!a.excess_reference && !structures)
+      t.fail("excess_energy", "\"acna\", \"cna\" or \"bpa\" in methods (to find the crystal atoms whose median pe is "
+                              "the reference), or excess_reference (eV)");
+  } else {
+    for (const char* key : {"excess_reference", "excess_crystal"})
+      if (t.has(key)) t.fail(key, "excess_energy = true (this key sets its reference)");
+  }
   if (t.has("clusters") != t.has("cluster_select"))
     t.fail(t.has("clusters") ? "cluster_select" : "clusters",
            "clusters (a cutoff, Å) and cluster_select (which atoms) go together");

@@ -55,6 +55,9 @@ struct AnalysisSpec {
   double clusters = 0;                       ///< Å: cluster the selected atoms (0: no clusters.csv)
   std::string cluster_select;                ///< which atoms, as analyze atoms --cluster-select
   std::size_t cluster_min_size = 1;          ///< smaller clusters are dropped
+  bool excess_energy = false;                ///< per-atom excess energy pe − e0 (column excess)
+  std::optional<double> excess_reference;    ///< e0, eV; none: the median pe of excess_crystal atoms
+  std::string excess_crystal = "fcc";        ///< fcc | hcp | bcc
 };
 
 struct OutputSpec {

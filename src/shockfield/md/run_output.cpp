@@ -105,6 +105,10 @@ bool RunOutput::dump_needs_per_atom() const {
 
 bool RunOutput::needs_per_atom(std::int64_t step) const {
   if (spec_.profile_every > 0 && step % spec_.profile_every == 0) return true;
+  if (structure_ && structure_->excess_energy()) {  // the analysis of this step reads the per-atom energies
+    if (step % spec_.analysis.every == 0) return true;
+    if (spec_.analysis.dump_columns && spec_.dump_every > 0 && step % spec_.dump_every == 0) return true;
+  }
   return spec_.dump_every > 0 && step % spec_.dump_every == 0 && dump_needs_per_atom();
 }
 

@@ -102,7 +102,7 @@ TEST(DefectClusters, SelectedByExcessEnergyInAnalyzeStructure) {
     std::vector<double> e(frame.size(), 0.05);  // thermal-sized excess: below the threshold
     for (std::size_t i = 0; i < e.size(); ++i)
       if (ball[i]) e[i] = 0.1 + 1e-9;  // just above it
-    return e;
+    return ExcessEnergy{e, -3.54};
   };
   analyses.clusters = DefectClusters{kBond, 1};
   analyses.select = [](const StructureAnalysisResult& r) {
@@ -113,11 +113,12 @@ TEST(DefectClusters, SelectedByExcessEnergyInAnalyzeStructure) {
   const auto r = analyze_structure(frame, analyses);
   EXPECT_EQ(fcc_seen, frame.size());  // the source saw the a-CNA result
   ASSERT_EQ(r.excess_energy.size(), frame.size());
+  EXPECT_EQ(r.excess_reference, -3.54);  // the source's reference is kept for structures.csv
   ASSERT_EQ(r.clusters->clusters.size(), 2u);
   EXPECT_EQ(r.clusters->clusters[0].size, large.size());
   EXPECT_EQ(r.clusters->clusters[1].size, small.size());
   // A source of the wrong length is refused.
-  analyses.excess_energy = [](const StructureAnalysisResult&) { return std::vector<double>(3, 0.0); };
+  analyses.excess_energy = [](const StructureAnalysisResult&) { return ExcessEnergy{std::vector<double>(3, 0.0), 0.0}; };
   EXPECT_THROW(analyze_structure(frame, analyses), InputError);
 }
 

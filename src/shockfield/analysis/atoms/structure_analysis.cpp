@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <utility>
+
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::analysis::atoms {
@@ -18,11 +21,19 @@ NeighborRequest StructureAnalyses::request() const {
   return r;
 }
 
+const std::vector<Structure>* reference_structures(const StructureAnalysisResult& r) {
+  if (r.cna) return &r.cna->structure;
+  if (r.adaptive_cna) return &r.adaptive_cna->structure;
+  if (r.bond_pairs) return &r.bond_pairs->structure;
+  return nullptr;
+}
+
 StructureAnalysisResult analyze_structure(const AtomFrame& frame, const StructureAnalyses& analyses) {
   if (analyses.empty()) throw InputError("structure analysis: no analysis asked for");
   if (analyses.clusters && !analyses.select) throw InputError("structure analysis: clusters need a selection of atoms");
   StructureAnalysisResult out;
   if (frame.size() == 0) {  // nothing to search: empty results for what was asked
+    if (analyses.excess_energy) out.excess_reference = NAN;
     if (analyses.cna) out.cna = StructureResult{};
     if (analyses.adaptive_cna) out.adaptive_cna = StructureResult{};
     if (analyses.bond_pairs) out.bond_pairs = BondPairResult{{0}, {}, {}, {}, {}};
@@ -39,7 +50,9 @@ StructureAnalysisResult analyze_structure(const AtomFrame& frame, const Structur
   if (analyses.bond_pairs) out.bond_pairs = analyses.bond_pairs->compute(frame, table);
   if (analyses.diamond) out.diamond = analyses.diamond->compute(frame, table);
   if (analyses.excess_energy) {
-    out.excess_energy = analyses.excess_energy(out);
+    ExcessEnergy e = analyses.excess_energy(out);
+    out.excess_energy = std::move(e.excess);
+    out.excess_reference = e.reference;
     if (out.excess_energy.size() != frame.size())
       throw InputError(fmt::format("structure analysis: {} excess energies for {} atoms", out.excess_energy.size(),
                                    frame.size()));

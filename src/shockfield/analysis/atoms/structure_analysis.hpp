@@ -18,9 +18,14 @@ struct StructureAnalysisResult;
 
 /// Which atoms to cluster, from the other analyses' results (one flag per atom).
 using ClusterSelection = std::function<std::vector<bool>(const StructureAnalysisResult&)>;
-/// Per-atom excess energy (eV) from the analyses' results — the caller's potential energies less
-/// a reference that may depend on the structures (the median pe of the crystal atoms).
-using ExcessEnergySource = std::function<std::vector<double>(const StructureAnalysisResult&)>;
+/// Per-atom excess energy pe − e0 (eV) and the reference e0 it used.
+struct ExcessEnergy {
+  std::vector<double> excess;
+  double reference = 0;  ///< e0, eV
+};
+/// Per-atom excess energy from the analyses' results — the caller's potential energies less a
+/// reference that may depend on the structures (the median pe of the crystal atoms).
+using ExcessEnergySource = std::function<ExcessEnergy(const StructureAnalysisResult&)>;
 
 struct StructureAnalyses {
   std::optional<Coordination> coordination;
@@ -51,9 +56,14 @@ struct StructureAnalysisResult {
   std::optional<BondPairResult> bond_pairs;
   std::optional<DiamondResult> diamond;
   std::vector<double> excess_energy;        ///< eV; empty unless an excess_energy source is given
+  std::optional<double> excess_reference;   ///< e0 of excess_energy, eV; set when a source is given
   std::optional<ClusterResult> clusters;
   std::size_t neighbor_table_bytes = 0;
 };
+
+/// The structures whose crystal atoms give the excess energy's reference: those of the first of
+/// cna, acna, bpa that ran (the order of structures.csv); null when none ran.
+const std::vector<Structure>* reference_structures(const StructureAnalysisResult& r);
 
 /// Runs every analysis asked for on the frame (InputError when none is, or when clusters are
 /// asked for without a selection).

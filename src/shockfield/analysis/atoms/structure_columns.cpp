@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace shockfield::analysis::atoms {
@@ -33,6 +34,7 @@ void append_structure_columns(io::DumpFrame& dump, const StructureAnalysisResult
     for (std::size_t i = 0; i < natoms; ++i) cluster[i] = r.clusters->cluster_of[i] + 1;
     dump.set_column("cluster", std::move(cluster));
   }
+  if (!r.excess_energy.empty()) dump.set_column("excess", r.excess_energy);
 }
 
 std::vector<std::string> structure_count_columns(const StructureAnalyses& s) {
@@ -48,6 +50,7 @@ std::vector<std::string> structure_count_columns(const StructureAnalyses& s) {
     for (DiamondStructure t : kDiamondStructures)
       columns.push_back(fmt::format("dia_{}_fraction", diamond_structure_name(t)));
   }
+  if (s.excess_energy) columns.insert(columns.end(), {"excess_reference_eV", "excess_mean_eV"});
   return columns;
 }
 
@@ -63,6 +66,11 @@ std::vector<double> structure_count_values(const StructureAnalysisResult& r) {
   if (r.diamond) {
     for (DiamondStructure t : kDiamondStructures) row.push_back(double(r.diamond->of(t)));
     for (DiamondStructure t : kDiamondStructures) row.push_back(r.diamond->fraction(t));
+  }
+  if (r.excess_reference) {
+    double sum = 0;
+    for (double e : r.excess_energy) sum += e;
+    row.insert(row.end(), {*r.excess_reference, r.excess_energy.empty() ? NAN : sum / double(r.excess_energy.size())});
   }
   return row;
 }

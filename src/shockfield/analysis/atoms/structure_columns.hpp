@@ -11,13 +11,14 @@
 namespace shockfield::analysis::atoms {
 
 /// Appends the per-atom results to the dump frame as columns coord, cna, acna, csp, bpa (codes
-/// 1 fcc ... 5 other), dia (OVITO's diamond codes 0-6) and cluster (1, 2, ... largest first; 0
-/// none). `natoms` = the frame's atoms.
+/// 1 fcc ... 5 other), dia (OVITO's diamond codes 0-6), cluster (1, 2, ... largest first; 0
+/// none) and excess (eV). `natoms` = the frame's atoms.
 void append_structure_columns(io::DumpFrame& dump, const StructureAnalysisResult& r, std::size_t natoms);
 
 /// The count columns of structures.csv for the structure methods asked for, in the order cna,
 /// acna, bpa, dia: <method>_<structure> for each structure, then <method>_<structure>_fraction
-/// (dia: cubic, cubic_first, cubic_second, hexagonal, hexagonal_first, hexagonal_second, other).
+/// (dia: cubic, cubic_first, cubic_second, hexagonal, hexagonal_first, hexagonal_second, other);
+/// with an excess energy, then excess_reference_eV (e0) and excess_mean_eV (over all atoms).
 std::vector<std::string> structure_count_columns(const StructureAnalyses& analyses);
 /// Their values for one frame's result (the same order).
 std::vector<double> structure_count_values(const StructureAnalysisResult& r);

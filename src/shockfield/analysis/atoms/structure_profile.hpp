@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "shockfield/analysis/atoms/atom_frame.hpp"
+#include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/analysis/atoms/structure_types.hpp"
 
 namespace shockfield::analysis::atoms {
@@ -30,10 +31,6 @@ struct StructureProfile {
 /// given reference or, when absent, the median pe of the atoms whose structure is `crystal`
 /// (the crystal's energy at the frame's temperature and pressure). InputError when no atom has
 /// that structure or the sizes differ.
-struct ExcessEnergy {
-  std::vector<double> excess;
-  double reference = 0;  ///< e0 used, eV
-};
 ExcessEnergy excess_energy(const std::vector<double>& pe, const std::vector<Structure>& structure, Structure crystal,
                            const double* reference = nullptr);
 
