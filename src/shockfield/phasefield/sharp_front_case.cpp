@@ -57,7 +57,7 @@ bool is_sharp_front(const Config& root) {
 SharpFrontCase read_sharp_front_case(const Config& root) {
   SharpFrontCase c;
   const Config grid = root.table("grid");
-  if (grid.has("boundary")) grid.fail("boundary", std::string("not with ") + kWhy + ", in a periodic box");
+  if (grid.has("boundary")) grid.fail("boundary", std::string("not allowed: ") + kWhy + ", in a periodic box");
   c.grid = read_phasefield_grid(grid);
   c.law = read_law(root.table("model"), c.grid.dim);
   const Config time = root.table("time");
@@ -69,7 +69,7 @@ SharpFrontCase read_sharp_front_case(const Config& root) {
   const auto initial = root.optional_table("initial");
   if (initial) {
     for (const char* key : {"ellipsoid", "slab", "file"})
-      if (initial->has(key)) initial->fail(key, std::string("not with ") + kWhy + "; use [[initial.sphere]] or [initial.random]");
+      if (initial->has(key)) initial->fail(key, std::string("not allowed: ") + kWhy + "; use [[initial.sphere]] or [initial.random]");
     c.domains = sharp_domains(read_phasefield_domains(*initial, c.grid));
   }
   if (c.domains.empty()) root.fail("initial", "at least one [[initial.sphere]] or [initial.random] (the sharp-front domains)");
