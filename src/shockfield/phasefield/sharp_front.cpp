@@ -70,13 +70,16 @@ NodeCover cover_nodes(const Grid& grid, const std::vector<SharpDomain>& domains,
   out.nodes_inside.assign(domains.size(), 0);
   for (std::size_t m = 0; m < domains.size(); ++m) {
     const SharpDomain& dom = domains[m];
-    // The nodes of the domain's bounding box along each axis (all of a periodic axis shorter than it).
+    // The nodes of the domain's bounding box along each axis (all of a periodic axis shorter than
+    // it), bounded in floating point before the conversion: any finite centre and radius is safe.
     std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0};
     for (int d = 0; d < grid.dim; ++d) {
-      lo[d] = static_cast<int>(std::floor((dom.center[d] - dom.radius) / grid.dx));
-      hi[d] = static_cast<int>(std::ceil((dom.center[d] + dom.radius) / grid.dx));
-      if (!grid.periodic(d)) lo[d] = std::max(lo[d], 0), hi[d] = std::min(hi[d], grid.n[d] - 1);
-      else if (hi[d] - lo[d] + 1 >= grid.n[d]) lo[d] = 0, hi[d] = grid.n[d] - 1;
+      const double L = grid.length(d), n = grid.n[d];
+      const double c = grid.periodic(d) ? dom.center[d] - L * std::floor(dom.center[d] / L) : dom.center[d];
+      double first = std::floor((c - dom.radius) / grid.dx), last = std::ceil((c + dom.radius) / grid.dx);
+      if (!grid.periodic(d)) first = std::clamp(first, 0.0, n), last = std::clamp(last, -1.0, n - 1);
+      else if (!(last - first + 1 < n)) first = 0, last = n - 1;
+      lo[d] = static_cast<int>(first), hi[d] = static_cast<int>(last);
     }
     const double R2 = dom.radius * dom.radius;
     for (int k = lo[2]; k <= hi[2]; ++k)

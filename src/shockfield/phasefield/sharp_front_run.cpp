@@ -54,14 +54,22 @@ class SharpFrontMethod final : public Method {
   void resume(RunContext& run) override {
     const io::CheckpointReader checkpoint(run.checkpoint);
     checkpoint.require_format(kFormatVersion);
+    // 'domains': the count, then (track, radius, centre x, y, z) per domain; every value checked
+    // before it is used (a whole track number, a finite positive radius, a finite centre).
     const std::vector<double> flat = checkpoint.h5().read_doubles("domains");
-    const std::size_t count = flat.empty() ? 0 : static_cast<std::size_t>(flat[0]);
-    if (flat.empty() || flat.size() != 1 + kPerDomain * count)
-      throw InputError(fmt::format("{}: dataset 'domains' has {} values, expected 1 + 5 per domain", run.checkpoint.string(),
-                                   flat.size()));
+    const std::size_t count = flat.empty() ? 0 : (flat.size() - 1) / kPerDomain;
+    const auto bad = [&](const std::string& what) {
+      return InputError(fmt::format("{}: dataset 'domains': {}", run.checkpoint.string(), what));
+    };
+    if (flat.empty() || flat.size() != 1 + kPerDomain * count || flat[0] != static_cast<double>(count))
+      throw bad(fmt::format("{} values, expected the domain count and 5 values per domain", flat.size()));
     domains_.clear();
     for (std::size_t m = 0; m < count; ++m) {
       const double* d = flat.data() + 1 + kPerDomain * m;
+      if (!(d[0] >= 1 && d[0] <= 9.0e15 && d[0] == std::floor(d[0])) || !(d[1] > 0 && std::isfinite(d[1])) ||
+          !std::isfinite(d[2]) || !std::isfinite(d[3]) || !std::isfinite(d[4]))
+        throw bad(fmt::format("domain {} (track {}, radius {}) is not a track number, a positive radius and a finite centre",
+                              m + 1, d[0], d[1]));
       domains_.push_back({static_cast<std::int64_t>(d[0]), {d[2], d[3], d[4]}, d[1]});
     }
     steps_ = checkpoint.count("step");
