@@ -8,7 +8,8 @@
 #    the series within 3x the fit's rms residual at every point, and its own tracks.csv fitted again
 #    gives the same c0 and D to 1e-6 relative (the round trip closes);
 # 3. refusals: an accelerating series under --law paper, --interface-width with --law paper, none
-#    with the default law; every case key the option cannot represent, named.
+#    with the default law; every case key the option cannot represent, named;
+# 4. (run before 3) the allen_cahn law against the field model's disc (a peer run).
 source "$(dirname "$0")/lib.bash"
 source "$(dirname "$0")/bridge_lib.bash"
 set -e
@@ -80,6 +81,40 @@ for k in front_speed curvature_coefficient; do
   within "$b" "$a" "$(/usr/bin/python3 -c "print(abs($a) * 1e-6)")" 1 || fail "round trip $k: $a -> $b"
 done
 echo "ok: the run's tracks.csv gives the same c0 and D back"
+# 4. Peer run: the allen_cahn sharp front against the field model it is the limit of (2D disc,
+# a = 0.4, D = 1: c0 = sqrt(1/2)(1 - 2a), R* = 7.07; R = 10 -> 12 over t = 40). The radius of the
+# field's xi > 1/2 area must be within 1% of the sharp front's at every row (measured 0.46%: the
+# node count of a 20-node disc at t = 0, then <= 0.27%), the paper's law ends 30% away.
+field='method = "phasefield"
+[grid]
+dimensions = 2
+nodes = [128, 128]
+spacing = 0.5
+[time]
+dt = 0.05
+end_time = 40.0
+[[initial.sphere]]
+center = [32.0, 32.0]
+radius = 10.0
+[output]
+series_interval = 10.0'
+printf '%s\n[model]\na = 0.4\nD = 1.0\n' "$field" > "$WORK/field.toml"
+for law in allen_cahn paper; do
+  printf '%s\n[model]\nkind = "sharp_front"\nlaw = "%s"\nc0 = %s\nD = 1.0\n' "$field" $law \
+    "$(/usr/bin/python3 -c 'print(0.5 ** 0.5 * 0.2)')" > "$WORK/sf_$law.toml"
+  "$SF" run "$WORK/sf_$law.toml" -o "$WORK/sf_$law" -q
+done
+"$SF" run "$WORK/field.toml" -o "$WORK/field" -q
+/usr/bin/python3 - "$WORK" <<'PY' || fail "the allen_cahn sharp front is not the field model's limit"
+import csv, math, sys
+w = sys.argv[1]
+field, ac, paper = (list(csv.DictReader(open(f"{w}/{n}/series.csv"))) for n in ("field", "sf_allen_cahn", "sf_paper"))
+dev = [math.sqrt(float(f["volume_fraction"]) * 64 * 64 / math.pi) / float(s["max_radius"]) - 1 for f, s in zip(field, ac)]
+end = float(paper[-1]["max_radius"]) / float(ac[-1]["max_radius"]) - 1
+print(f"ok: field vs allen_cahn sharp front: largest |R_field/R_sharp - 1| {max(map(abs, dev)):.4f} over {len(dev)} rows; "
+      f"paper's law {end:+.2f} at the end")
+sys.exit(0 if len(dev) == 5 and max(map(abs, dev)) <= 0.01 and end > 0.3 else 1)
+PY
 # 3. Refusals of the bridge.
 bad "of the paper's law" "is not positive" "--law allen_cahn" "Nothing written" -- domain-growth "$WORK/accel.csv" --law paper -o "$WORK/x.toml"
 [ ! -e "$WORK/x.toml" ] || fail "a material was written for an accelerating series"
