@@ -65,6 +65,8 @@ radius = $R0
 series_interval = 2.0
 EOF
 "$SF" run "$WORK/run.toml" -o "$WORK/run" -q
+"$SF" plot phasefield "$WORK/run" > /dev/null
+[ -s "$WORK/run/phasefield.png" ] || fail "shockfield plot phasefield wrote no PNG for a sharp-front run"
 /usr/bin/python3 - "$WORK" <<'PY' || fail "the sharp-front run does not reproduce t^0.465"
 import csv, sys, tomllib
 w = sys.argv[1]
