@@ -11,6 +11,8 @@ import tomllib
 
 import numpy as np
 
+from growth_io import fitted, md_radius
+
 C0, D = 1.0, 4.0  # the law generate.py used (Å/ps, Å²/ps)
 runs, t_fit, tau = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
 
@@ -27,12 +29,8 @@ def law(R0, c0, d, t):  # RK4 of dR/dt = c0 - 2D/R from R0 at t[0]
     return np.array(out)
 
 
-tracks = [r for r in csv.DictReader(open(f"{runs}/analysis/tracks.csv")) if r["track"] == "1"]
-tm = np.array([float(r["time"]) for r in tracks])
-Rm = np.cbrt(3 * np.array([float(r["atomic_volume"]) for r in tracks]) / (4 * math.pi))
-fit = tomllib.load(open(f"{runs}/fe_pf.toml", "rb"))["provenance"]["domain_growth"]["fit"]
-c0, c0_e = fit["c0_m_s"] / 100, fit["c0_stderr_m_s"] / 100
-d, d_e = fit["D_m2_s"] * 1e8, fit["D_stderr_m2_s"] * 1e8
+tm, Rm = md_radius(f"{runs}/analysis/tracks.csv")
+fit, c0, c0_e, d, d_e = fitted(f"{runs}/fe_pf.toml")
 series = list(csv.DictReader(open(f"{runs}/pf/series.csv")))
 resolved = tomllib.load(open(f"{runs}/pf/config.resolved.toml", "rb"))
 n, dx = resolved["grid"]["nodes"], resolved["grid"]["spacing"]

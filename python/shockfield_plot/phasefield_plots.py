@@ -3,7 +3,7 @@
 
   phasefield_plots.py phasefield RUN_DIR [--out FILE]
       left: the equivalent radius and the principal semi-axes of the hcp set against time
-      (series.csv), with the growth speed dR/dt (central differences between rows) on a second
+      (series.csv; a sharp-front run: its largest and mean radius), with the growth speed dR/dt (central differences between rows) on a second
       axis; right: ξ on the middle slice (z in 3D) of the last frame, the ξ = 1/2 contour drawn
       -> RUN_DIR/phasefield.png
 """
@@ -40,8 +40,10 @@ def phasefield(run, out):
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
     t = s["time"]
     left.plot(t, s["equivalent_radius"], "k-", label="equivalent radius")
-    for key, style in (("axis_a", "C0--"), ("axis_b", "C1--"), ("axis_c", "C2--")):
-        if np.any(s[key] > 0):
+    # The field model's semi-axes; the sharp-front option's (kind = "sharp_front") largest and mean radius.
+    for key, style in (("axis_a", "C0--"), ("axis_b", "C1--"), ("axis_c", "C2--"), ("max_radius", "C3--"),
+                       ("mean_radius", "C4:")):
+        if key in s and np.any(s[key] > 0):
             left.plot(t, s[key], style, label=key.replace("_", " "))
     left.set_xlabel("time (model units)")
     left.set_ylabel("length (model units)")

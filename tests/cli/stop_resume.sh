@@ -24,6 +24,8 @@ case "$method" in
   macroparticle) case_file="$cases/macroparticle_tiny.toml"; stop=123
                  files="thermo.csv dumps/dump.250.lammpstrj particles.pvd particles/particles_250.vtp" ;;
   phasefield) case_file="$cases/phasefield_tiny.toml"; stop=23; files="series.csv fields.pvd fields/xi_3.vti thermo.csv" ;;
+  phasefield_sharp_front) case_file="$cases/phasefield_sharp_front_tiny.toml"; stop=57
+                          files="series.csv tracks.csv fields.pvd fields/xi_2.vti fields/xi_3.vti thermo.csv" ;;
   *) fail "unknown method '$method'" ;;
 esac
 "$SF" run "$case_file" --output "$WORK/straight" -q > /dev/null

@@ -115,7 +115,8 @@ constexpr CheckpointCase kCheckpointCases[] = {{"mpm", "mpm_tiny.toml", 5},
                                                {"pd", "pd_tiny.toml", 5},
                                                {"dbm", "dbm_sod.toml", 5},
                                                {"granular", "granular_tiny.toml", 5},
-                                               {"phasefield", "phasefield_tiny.toml", 5}};
+                                               {"phasefield", "phasefield_tiny.toml", 5},
+                                               {"phasefield_sharp_front", "phasefield_sharp_front_tiny.toml", 5}};
 
 // A target whose inputs go through a parser in a fork of the fuzzer.
 Target in_process(const Context& c, const std::string& name, std::vector<fs::path> inputs,

@@ -44,6 +44,8 @@ const std::vector<MaterialKey>& material_keys() {
       {"phasefield.a", Range::closed(0.0, 1.0), "-", "bulk parameter a of the double well f (Xu et al. (2015) eq 38)"},
       {"phasefield.interface_width", positive, "m", "logistic length W = sqrt(2 D tau) of the diffuse front"},
       {"phasefield.relaxation_time", positive, "s", "relaxation time tau of f, the time unit of the model"},
+      {"phasefield.front_speed", {}, "m/s", "c0 of the sharp-front law v = c0 + s D kappa (kind = sharp_front)"},
+      {"phasefield.curvature_coefficient", positive, "m^2/s", "D of the sharp-front law v = c0 + s D kappa"},
   };
   return keys;
 }
@@ -115,6 +117,10 @@ MaterialFile MaterialFile::load(const fs::path& file) {
     t->get_string_or("note", "");
     if (std::string_view(section) == "eos") t->get_choice_or("model", {"mie_gruneisen"}, "mie_gruneisen");
     if (std::string_view(section) == "atoms") t->get_choice_or("crystal", {"sc", "bcc", "fcc", "diamond"}, "fcc");
+    if (std::string_view(section) == "phasefield") {
+      m.strings_["phasefield.kind"] = t->get_choice_or("kind", {"field", "sharp_front"}, "field");
+      if (t->has("law")) m.strings_["phasefield.law"] = t->get_choice("law", {"paper", "allen_cahn"});
+    }
     if (std::string_view(section) == "elasticity") {
       t->get_choice_or("average", {"voigt", "reuss", "hill"}, "hill");
       check_cubic(*t);
@@ -132,6 +138,12 @@ MaterialFile MaterialFile::load(const fs::path& file) {
 std::optional<double> MaterialFile::get(std::string_view key) const {
   const auto it = values_.find(key);
   if (it == values_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<std::string> MaterialFile::get_string(std::string_view key) const {
+  const auto it = strings_.find(key);
+  if (it == strings_.end()) return std::nullopt;
   return it->second;
 }
 

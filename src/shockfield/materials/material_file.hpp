@@ -43,6 +43,8 @@ class MaterialFile {
   const toml::table& provenance() const { return provenance_; }
   /// The value of a dotted key ("eos.c0"), or nothing when the file does not give it.
   std::optional<double> get(std::string_view key) const;
+  /// A checked string value ("phasefield.kind", "phasefield.law"), or nothing when not given.
+  std::optional<std::string> get_string(std::string_view key) const;
   /// InputError: the file lacks `key`, which `needed_by` (e.g. "MPM [[material]] 'cu'") needs;
   /// `alternative` says where else it may be given.
   [[noreturn]] void missing(std::string_view key, const std::string& needed_by, const std::string& alternative) const;
@@ -53,6 +55,7 @@ class MaterialFile {
   std::filesystem::path path_;
   std::string sha256_;
   std::map<std::string, double, std::less<>> values_;
+  std::map<std::string, std::string, std::less<>> strings_;
   toml::table provenance_;
 };
 

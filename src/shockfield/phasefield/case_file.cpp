@@ -9,9 +9,8 @@
 #include "shockfield/materials/material_file.hpp"
 
 namespace shockfield::phasefield {
-namespace {
 
-Grid read_grid(const Config& t) {
+Grid read_phasefield_grid(const Config& t) {
   Grid g;
   g.dim = static_cast<int>(t.get_int("dimensions", Range::closed(1, 3)));
   const auto cells = t.get_ints("nodes", static_cast<std::size_t>(g.dim), Range::closed(3, 1 << 14));
@@ -34,6 +33,8 @@ Grid read_grid(const Config& t) {
   return g;
 }
 
+namespace {
+
 std::array<double, 3> point(const Config& t, const char* key, const Grid& g, Range range = {}) {
   const auto v = t.get_doubles(key, static_cast<std::size_t>(g.dim), range);
   std::array<double, 3> p{0, 0, 0};
@@ -41,7 +42,9 @@ std::array<double, 3> point(const Config& t, const char* key, const Grid& g, Ran
   return p;
 }
 
-std::vector<Domain> read_domains(const Config& t, const Grid& g) {
+}  // namespace
+
+std::vector<Domain> read_phasefield_domains(const Config& t, const Grid& g) {
   std::vector<Domain> out;
   for (const Config& s : t.tables("sphere")) {
     const double R = s.get_double("radius", Range::positive());
@@ -66,19 +69,22 @@ std::vector<Domain> read_domains(const Config& t, const Grid& g) {
   return out;
 }
 
-}  // namespace
-
 double reaction_step_limit(const Model& model) { return 1.0 / std::max(model.a, 1.0 - model.a); }
 
 PhasefieldCase read_phasefield_case(const Config& root) {
   PhasefieldCase c;
-  c.grid = read_grid(root.table("grid"));
+  c.grid = read_phasefield_grid(root.table("grid"));
   const Config model = root.table("model");
+  model.get_choice_or("kind", {"field", "sharp_front"}, "field");
   // [model] file: a material file with [phasefield] (bridge domain-growth): a from it, and
   // D = W²/(2ℓ²) in the case's length unit ℓ = length_unit (m) from its interface width W; its
   // relaxation time is the model's time unit. The case's own a and D win.
   const auto material = materials::open_material_file(model);
   const materials::MaterialFile* file = material ? &*material : nullptr;
+  if (file && file->get_string("phasefield.kind") == "sharp_front")
+    model.fail("file", fmt::format("{} holds a sharp-front law (bridge domain-growth --law paper: kind = \"sharp_front\"), "
+                                   "not the field model's a and interface width; set [model] kind = \"sharp_front\"",
+                                   file->path().string()));
   c.model.a = materials::case_or_file(model, "a", file, {"phasefield.a"}, std::nullopt, Range::closed(0.0, 1.0),
                                       "the phase-field model");
   if (file && !model.has("D")) {
@@ -131,7 +137,7 @@ PhasefieldCase read_phasefield_case(const Config& root) {
   c.steps = static_cast<long long>(std::ceil(c.end_time / c.dt - 1e-9));
   const auto initial = root.optional_table("initial");
   if (initial) {
-    c.domains = read_domains(*initial, c.grid);
+    c.domains = read_phasefield_domains(*initial, c.grid);
     if (initial->has("file")) {
       c.field_file = {initial->get_input_file("file"), initial->get_string_or("array", "")};
       read_field_file(c.field_file, c.grid);  // validated now; read again when the run starts

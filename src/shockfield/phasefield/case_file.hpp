@@ -27,6 +27,11 @@ struct PhasefieldCase {
   OutputIntervals output;          ///< series_interval, field_interval (frames), checkpoint_every, thermo_every
 };
 
+/// [grid] (dimensions, nodes, spacing, [grid.boundary]).
+Grid read_phasefield_grid(const Config& grid);
+/// The domains of [initial]: spheres, ellipsoids, slabs and the random nuclei (spheres).
+std::vector<Domain> read_phasefield_domains(const Config& initial, const Grid& grid);
+
 /// The largest dt that keeps the explicit reaction step monotone about both wells, 1/max(a, 1 − a).
 double reaction_step_limit(const Model& model);
 

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <numbers>
 #include <optional>
 
 #include "shockfield/core/error.hpp"
@@ -13,19 +12,13 @@
 #include "shockfield/phasefield/case_file.hpp"
 #include "shockfield/phasefield/checkpoint.hpp"
 #include "shockfield/phasefield/domain_measures.hpp"
+#include "shockfield/phasefield/sharp_front_case.hpp"
 
 namespace shockfield::phasefield {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// Radius of the n-ball with the hcp volume V = Σ ξ dV (n = 1: the half length of a slab).
-double equivalent_radius(double volume, int dim) {
-  if (dim == 1) return 0.5 * volume;
-  if (dim == 2) return std::sqrt(volume / std::numbers::pi);
-  return std::cbrt(volume / (4.0 / 3.0 * std::numbers::pi));
-}
 
 void derive(const Config& root, const PhasefieldCase& c) {
   root.derive("nodes", static_cast<long long>(c.grid.size()));
@@ -160,15 +153,7 @@ class PhasefieldMethod final : public Method {
                  shape.center[2]});
   }
   void write_frame(std::int64_t k) {
-    io::VtkImage image;
-    for (int d = 0; d < 3; ++d) {
-      image.points[d] = static_cast<std::size_t>(c_.grid.n[d]);
-      image.spacing[d] = c_.grid.dx;
-    }
-    image.point_data.push_back({"xi", 1, solver_.field(), "1"});  // the order parameter, dimensionless
-    const std::string file = fmt::format("fields/xi_{}.vti", k);
-    io::write_vti(run_->folder / file, image, c_.output.vtk);
-    pvd_.add(solver_.time(), file);
+    write_xi_frame(run_->folder, c_.grid, solver_.field(), k, c_.output.vtk, solver_.time(), pvd_);
   }
 
   PhasefieldCase c_;
@@ -182,7 +167,21 @@ class PhasefieldMethod final : public Method {
 
 }  // namespace
 
-std::unique_ptr<Method> make_method(const Config& root, const RunOptions&) {
+void write_xi_frame(const fs::path& folder, const Grid& grid, const std::vector<double>& xi, std::int64_t k,
+                    const io::VtkFormat& format, double time, io::PvdSeries& pvd) {
+  io::VtkImage image;
+  for (int d = 0; d < 3; ++d) {
+    image.points[d] = static_cast<std::size_t>(grid.n[d]);
+    image.spacing[d] = grid.dx;
+  }
+  image.point_data.push_back({"xi", 1, xi, "1"});  // the order parameter, dimensionless
+  const std::string file = fmt::format("fields/xi_{}.vti", k);
+  io::write_vti(folder / file, image, format);
+  pvd.add(time, file);
+}
+
+std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options) {
+  if (is_sharp_front(root)) return make_sharp_front_method(root, options);
   const PhasefieldCase c = read_phasefield_case(root);
   root.check_unknown_keys();
   derive(root, c);
