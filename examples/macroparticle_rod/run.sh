@@ -31,12 +31,14 @@ buckle=(--set 'loading.mode="compression"' --set specimen.n_h=16 --set loading.s
 "$sf" analyze atoms "$out/buckling" -o "$out/buckling/analysis" > /dev/null
 # Fig 6(b)'s slip: bonds that yield at 1.1 % and do not harden (h_1 = 0), the n_phi = 4, n_h = 8 rod
 # (L/D = 1.7: too short to buckle) in compression, imperfect with sliding ends (one {111} layer
-# pair slides), perfect, clamped, and in tension (none slides); slip.py measures the slip between
-# neighbouring layers and draws slip.png.
+# pair slides; also at n_phi = 8, n_h = 16, about 1 min), perfect, clamped, and in tension (none
+# slides); slip.py measures the slip between neighbouring layers and draws slip.png.
 slip=(--set 'loading.mode="compression"' --set loading.final_strain=0.06 --set plasticity.yield_strain=0.011
       --set 'plasticity.hardening=[0.0]' --set output.vtk_every=0 --set output.dump_every=0)
 "$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/slip" "${slip[@]}" \
   --set specimen.perturbation=0.001 --set output.dump_every=1025
+"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/slip_fine" "${slip[@]}" \
+  --set specimen.perturbation=0.001 --set specimen.n_phi=8 --set specimen.n_h=16 --set output.dump_every=2050
 "$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/slip_perfect" "${slip[@]}"
 "$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/slip_clamped" "${slip[@]}" \
   --set specimen.perturbation=0.001 --set 'loading.ends="clamped"'

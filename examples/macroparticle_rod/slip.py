@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """The compressive instability as {111} slip (Saitoh et al., Fig 6(b)). Usage: slip.py OUT HERE.
 
-OUT holds the runs of run.sh: slip (compression, sliding ends, imperfect), slip_perfect,
-slip_clamped and slip_tension. Prints and draws (HERE/slip.png):
+OUT holds the runs of run.sh: slip (compression, sliding ends, imperfect; n_phi = 4, n_h = 8),
+slip_fine (the same at n_phi = 8, n_h = 16), slip_perfect, slip_clamped and slip_tension. Prints and draws (HERE/slip.png):
 - the onset predicted for the infinite packing: the uniaxial-stress path of the nearest-neighbour
   fcc network with the plastic bond law, and the smallest eigenvalue of its acoustic tensor
   Q_ik(N) = ½ Σ_b (R_b·N)² [k_t n_i n_k + (T/r)(δ_ik − n_i n_k)] over band normals N (loss of
@@ -11,8 +11,8 @@ slip_clamped and slip_tension. Prints and draws (HERE/slip.png):
   the start's bonds (r < 1.2 r0) between adjacent layers, their relative displacement less the
   rod's best affine map, in-plane part averaged over the layer pair (the measure of the test
   MacroparticleSlip.CompressedRodSlipsOnA111PlaneAndControlsDoNot);
-- stress-strain of the four runs, the particles viewed edge-on to the slip plane coloured by
-  their slip, and the slip of every layer pair of the slip plane set against strain.
+- stress-strain of the five runs, the particles of slip_fine viewed edge-on to its slip plane
+  coloured by their slip, and the largest layer-pair slip of each family against strain.
 """
 import csv
 import glob
@@ -129,6 +129,7 @@ def main(out, here):
 
     run = f"{out}/slip"
     r0, eps_y, h, p, q = resolved(run)
+    r0s = {name: resolved(f"{out}/{name}")[0] for name in ("slip", "slip_fine")}
     e_c, normal, qmin = onset(p, q, eps_y, h, np.arange(0.001, 0.06, 0.001))
     if e_c is not None:
         angle = np.degrees(np.arccos(min(1.0, np.max(np.abs(np.array(FAMILIES["111"][0]) @ normal)) / np.sqrt(3))))
@@ -136,25 +137,24 @@ def main(out, here):
               f"strain, band normal {np.round(normal, 2)} ({angle:.1f} deg from <111>), Q_min/k = {qmin:.4f}")
     else:
         print(f"infinite packing (eps_y = {eps_y}, h = {h}): acoustic tensor positive to 6 %")
-    files = frames(run)
-    X = positions(files[0], r0)
-    bonds = np.array(sorted(cKDTree(X).query_pairs(1.2)))
-    history = []
-    for f in files:
-        s = layer_slip(X, positions(f, r0), bonds)
-        history.append({k: v[0] for k, v in s.items()})
-    strain, stress, step = thermo(run)
-    dump_strain = np.interp([int(re.search(r"dump\.(\d+)\.", f).group(1)) for f in files], step, strain)
-    final = layer_slip(X, positions(files[-1], r0), bonds)
-    s111, n111, pairs, L, d, dl = final["111"]
-    print(f"slip at {100 * dump_strain[-1]:.1f} %: largest {{111}} layer pair {s111:.3f} r0 on ({' '.join(f'{v:+.0f}' for v in n111 * np.sqrt(3))}) "
-          f"(median of its set {np.median(list(pairs.values())):.3f}), {{100}} {final['100'][0]:.3f}, {{110}} {final['110'][0]:.3f}")
-    i = int(np.argmax(stress))
-    print(f"slip: peak {stress[i] / 1e9:.2f} GPa at {100 * strain[i]:.2f} %, "
-          f"{stress[-1] / 1e9:.2f} GPa at {100 * strain[-1]:.1f} %")
-
+    histories = {}
+    for name in ("slip", "slip_fine"):
+        files = frames(f"{out}/{name}")
+        X = positions(files[0], r0s[name])
+        bonds = np.array(sorted(cKDTree(X).query_pairs(1.2)))
+        strain, stress, step = thermo(f"{out}/{name}")
+        at = np.interp([int(re.search(r"dump\.(\d+)\.", f).group(1)) for f in files], step, strain)
+        histories[name] = (at, [{k: v[0] for k, v in layer_slip(X, positions(f, r0s[name]), bonds).items()} for f in files])
+        final = layer_slip(X, positions(files[-1], r0s[name]), bonds)
+        s111, n111, pairs, L, d, dl = final["111"]
+        print(f"{name} at {100 * at[-1]:.1f} %: largest {{111}} layer pair {s111:.3f} r0 on "
+              f"({' '.join(f'{v:+.0f}' for v in n111 * np.sqrt(3))}) (median of its set {np.median(list(pairs.values())):.3f}), "
+              f"{{100}} {final['100'][0]:.3f}, {{110}} {final['110'][0]:.3f}; layer pairs above 0.1 r0: "
+              f"{sorted(k for k, v in pairs.items() if v > 0.1)}")
+        view_data = (X, bonds, positions(files[-1], r0s[name]), n111, d, dl, at[-1])  # the finest run drawn
     fig, ax = plt.subplots(1, 3, figsize=(15, 5.2))
-    for name, colour, label in [("slip", "C3", "compression, sliding ends, imperfect 1e-3 r0 (slips)"),
+    for name, colour, label in [("slip_fine", "k", "the same, n_phi = 8, n_h = 16 (slips)"),
+                                ("slip", "C3", "compression, sliding ends, imperfect 1e-3 r0 (slips)"),
                                 ("slip_perfect", "C2", "compression, perfect"),
                                 ("slip_clamped", "C1", "compression, clamped ends"),
                                 ("slip_tension", "C0", "tension")]:
@@ -163,10 +163,11 @@ def main(out, here):
         j = int(np.argmax(sgm))
         print(f"{name}: peak {sgm[j] / 1e9:.2f} GPa at {100 * e[j]:.2f} %, end {sgm[-1] / 1e9:.2f} GPa")
     ax[0].set(xlabel="|strain| (%)", ylabel="|stress| (GPa)",
-              title=f"bonds yield at {100 * eps_y:.1f} %, no hardening (n_phi = 4, n_h = 8)")
+              title=f"bonds yield at {100 * eps_y:.1f} %, h_1 = 0")
+    ax[0].set_ylim(bottom=0)
     ax[0].legend(fontsize=8)
     # Particles edge-on to the slip plane: view along the horizontal direction in the plane.
-    x = positions(files[-1], r0)
+    X, bonds, x, n111, d, dl, drawn_at = view_data
     view = np.cross(n111, [0, 0, 1.0])
     view /= np.linalg.norm(view)
     across = np.cross([0, 0, 1.0], view)
@@ -179,15 +180,16 @@ def main(out, here):
         np.add.at(count, bonds[cross, c], 1)
     per_particle /= np.maximum(count, 1)
     order = np.argsort(x @ view)
-    sc = ax[1].scatter((x @ across)[order], x[order, 2], c=per_particle[order], s=28, cmap="magma_r", vmin=0, vmax=0.3)
+    sc = ax[1].scatter((x @ across)[order], x[order, 2], c=per_particle[order], s=9, cmap="magma_r", vmin=0, vmax=0.3)
     ax[1].set_aspect("equal")
     ax[1].set(xlabel="r0 (horizontal, normal to the view)", ylabel="z (r0)",
-              title=f"{100 * dump_strain[-1]:.1f} %: view along [{' '.join(f'{v:.2f}' for v in view)}], "
-                    f"slip plane edge-on")
+              title=f"n_phi = 8 at {100 * drawn_at:.1f} %: view along [{' '.join(f'{v:.2f}' for v in view)}]")
     fig.colorbar(sc, ax=ax[1], label="slip of the particle's bonds across its layers (r0)")
-    for name, style in [("111", "C3"), ("100", "C0"), ("110", "C2")]:
-        ax[2].plot(100 * np.array(dump_strain), [hh.get(name, 0) for hh in history], style, marker="o", ms=3,
-                   label=f"largest {{{name}}} layer pair")
+    for run_name, ls in (("slip", "-"), ("slip_fine", "--")):
+        at, history = histories[run_name]
+        for name, style in [("111", "C3"), ("100", "C0"), ("110", "C2")]:
+            ax[2].plot(100 * at, [hh.get(name, 0) for hh in history], style, ls=ls, marker="o", ms=3,
+                       label=f"largest {{{name}}} layer pair, n_phi = {4 if run_name == 'slip' else 8}")
     ax[2].axvline(100 * e_c if e_c else 0, color="grey", ls=":", label="infinite packing loses ellipticity")
     ax[2].set(xlabel="|strain| (%)", ylabel="slip between neighbouring layers (r0)",
               title="slip concentrates on one {111} layer pair")
