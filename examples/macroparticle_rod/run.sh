@@ -2,7 +2,7 @@
 # The aluminium rod of Saitoh et al.: E and ν against division (Figs 4, 5) and the plastic
 # stress–strain curves in tension and compression (Fig 6). Usage: run.sh [SHOCKFIELD] [OUT]
 # (defaults: build/release/shockfield of the repository, runs/macroparticle_rod). About 16 min on
-# one core; FINEST=8 skips the n_phi = 16 rods (about 3 min).
+# one core; FINEST=8 skips the n_phi = 16 rods (about 4 min).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -29,4 +29,21 @@ buckle=(--set 'loading.mode="compression"' --set specimen.n_h=16 --set loading.s
 "$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/buckling_perfect" "${buckle[@]}" --set output.dump_every=0
 # Slip on {111} would leave hcp stacking faults in the packing: adaptive CNA of the particle dumps.
 "$sf" analyze atoms "$out/buckling" -o "$out/buckling/analysis" > /dev/null
+# Fig 6(b)'s slip: bonds that yield at 1.1 % and do not harden (h_1 = 0), the n_phi = 4, n_h = 8 rod
+# (L/D = 1.7: too short to buckle) in compression, imperfect with sliding ends (one {111} layer
+# pair slides; also at n_phi = 8, n_h = 16, about 1 min), perfect, clamped, and in tension (none
+# slides); slip.py measures the slip between neighbouring layers and draws slip.png.
+slip=(--set 'loading.mode="compression"' --set loading.final_strain=0.06 --set plasticity.yield_strain=0.011
+      --set 'plasticity.hardening=[0.0]' --set output.vtk_every=0 --set output.dump_every=0)
+"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/slip" "${slip[@]}" \
+  --set specimen.perturbation=0.001 --set output.dump_every=1025
+"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/slip_fine" "${slip[@]}" \
+  --set specimen.perturbation=0.001 --set specimen.n_phi=8 --set specimen.n_h=16 --set output.dump_every=2050
+"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/slip_perfect" "${slip[@]}"
+"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/slip_clamped" "${slip[@]}" \
+  --set specimen.perturbation=0.001 --set 'loading.ends="clamped"'
+"$sf" run "$here/rod_plastic.toml" -q --overwrite --output "$out/slip_tension" "${slip[@]}" \
+  --set specimen.perturbation=0.001 --set 'loading.mode="tension"'
+"$sf" analyze atoms "$out/slip" -o "$out/slip/analysis" > /dev/null
+/usr/bin/python3 "$here/slip.py" "$out" "$here"
 /usr/bin/python3 "$here/plot.py" "$out" "$here"

@@ -39,3 +39,7 @@ expect_error "${base/seed = 7/sed = 7}" "unknown key" "langevin.sed"
 # An imperfection beyond 5 % of r0 (it would no longer be an imperfection of the packing).
 expect_error "${base/n_h = 8/n_h = 8
 perturbation = 0.1}" "specimen.perturbation" "expected a number"
+# The plastic route: 1 to 8 polynomial coefficients, h_1 in [0, 1).
+expect_error "${base/hardening = \[0.1\]/hardening = []}" "plasticity.hardening" "1 to 8 polynomial coefficients"
+expect_error "${base/hardening = \[0.1\]/hardening = [0.1, 0, 0, 0, 0, 0, 0, 0, 1]}" "plasticity.hardening" "1 to 8 polynomial coefficients"
+expect_error "${base/hardening = \[0.1\]/hardening = [1.0, 0.5]}" "plasticity.hardening" "must be in [0, 1)"

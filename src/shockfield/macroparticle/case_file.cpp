@@ -135,8 +135,10 @@ LangevinSpec read_langevin(const Config& t, const PairLaw& law) {
 PlasticRoute read_plasticity(const Config& t) {
   PlasticRoute r;
   r.yield_strain = t.get_double("yield_strain", {0.0, 0.2, true, false});
-  r.hardening = t.get_doubles_or("hardening", {0.0});
-  if (r.hardening.size() > 8) t.fail("hardening", "at most 8 polynomial coefficients h_1 ... h_8");
+  // Any number of coefficients (get_doubles_or would demand the default's one).
+  r.hardening = t.has("hardening") ? t.get_doubles("hardening", 0) : t.get_doubles_or("hardening", {0.0});
+  if (r.hardening.empty() || r.hardening.size() > 8)
+    t.fail("hardening", "expected 1 to 8 polynomial coefficients h_1 ... h_8");
   if (r.hardening[0] < 0 || r.hardening[0] >= 1)
     t.fail("hardening", fmt::format("h_1 = {} must be in [0, 1): the plastic route's slope as a fraction of the "
                                     "elastic stiffness k", r.hardening[0]));
