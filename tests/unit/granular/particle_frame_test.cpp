@@ -21,7 +21,10 @@ Simulation struck_column(std::vector<int>& types) {
   s.radius = 2e-3;
   s.gravity = 9.81;
   s.wall = WallKind::rigid;
-  s.impurities.push_back({20, 0.25});
+  Impurity light;
+  light.index = 20;
+  light.mass_ratio = 0.25;
+  s.impurities.push_back(light);
   types.assign(50, 1);
   types[20] = 2;
   Simulation sim(build_chain(s), Impulse{Impulse::Kind::velocity, 0.1, 2, {}, {}});
