@@ -27,7 +27,7 @@ double overlap_below(const Simulation& sim, std::size_t i) {
 }  // namespace
 
 std::vector<std::string> RunOutputs::thermo_columns() {
-  return {"time_s", "step", "kinetic", "potential", "total", "external_work", "signal_depth"};
+  return {"time_s", "step", "kinetic_J", "potential_J", "total_J", "external_work_J", "signal_depth_m"};
 }
 
 std::vector<double> RunOutputs::thermo_values(const Thermo& t) {
