@@ -58,14 +58,16 @@ void write_train(const std::filesystem::path& dir) {
   s.radius = 5e-3;
   const Impulse kick{Impulse::Kind::velocity, 0.5, 5, {}, {}};
   Simulation sim(build_chain(s), kick, std::nullopt, 0.02);
-  OutputSpec out;
+  GranularCase train;
+  train.chain = s;
+  OutputSpec& out = train.output;
   out.schedule.series_interval = 1e-5;
   out.schedule.field_interval = 2e-5;
   out.probes = {50, 150, 250};
   out.probe_interval = 1e-6;
   const auto folder = dir / "train";
   std::filesystem::create_directories(folder);
-  RunOutputs outputs(folder, out, sim);
+  RunOutputs outputs(folder, train, sim, 0);
   OutputCounters counters;
   while (sim.time() < 4e-3) {  // the front (~670 m/s) reaches the far end at ~4.5 ms
     sim.step();

@@ -148,7 +148,8 @@ class Run:
 
     def frames(self, array="", kind=None):
         """Iterates over the run's frames in time order, of ``kind`` (default: the first the run
-        has): "dumps" (md's LAMMPS dumps, structured arrays of their columns), "fields" (the grid
+        has): "dumps" (LAMMPS dumps: md's, macroparticle's, and pd's and granular's with [output]
+        dump = true; structured arrays of their columns), "fields" (the grid
         fields of its .pvd of .vti files: mpm, dbm, phasefield; ``array`` names the data array,
         default the first) or "profiles" (pd, dbm: profiles/profile_<k>.csv as structured arrays
         at the times of profiles/index.csv). InputError naming its tables when it has none."""

@@ -25,7 +25,7 @@ printf '0 0\n0.1 0\n5 0.05\n5.1 0.05\n' > "$WORK/pairs.txt"
 "$SF" analyze geometry "$WORK/pairs.txt" --dimension 2 -d 1 -o "$WORK/pairs" > /dev/null
 grep -q "^seed_rule_clusters 1$" "$WORK/pairs/summary.txt" || fail "seed rule: $(cat "$WORK/pairs/summary.txt")"
 grep -q "^single_linkage_clusters 2$" "$WORK/pairs/summary.txt" || fail "single linkage"
-[ "$(sed -n 4p "$WORK/pairs/clusters.csv")" = "2,5,0.050000000000000003,0,1" ] || fail "clusters.csv row: $(sed -n 4p "$WORK/pairs/clusters.csv")"
+[ "$(sed -n 4p "$WORK/pairs/clusters.csv")" = "2,5,0.05,0,1" ] || fail "clusters.csv row: $(sed -n 4p "$WORK/pairs/clusters.csv")"
 echo "ok: clusters"
 cat > "$WORK/atoms.dump" <<'DUMP'
 ITEM: TIMESTEP

@@ -6,7 +6,9 @@
 Every .vti/.vtp file: each DataArray but a vertex cell's connectivity and offsets and VTK's
 blanking array vtkGhostType carries a units attribute. Every .csv file: at most one time column (time, time_s, time_ps, Time), and
 its name is the one of the method's unit system (the method is read from the run folder's
-config.resolved.toml). Prints each violation with its file and exits 1 if there is any.
+config.resolved.toml). The series.csv of a method listed in UNITS_IN_COLUMNS: every column
+carries its unit as a suffix (time_s, kinetic_J, signal_depth_m) or is a pure number listed in
+DIMENSIONLESS. Prints each violation with its file and exits 1 if there is any.
 """
 import pathlib
 import re
@@ -17,6 +19,12 @@ TIME_COLUMNS = {"time", "time_s", "time_ps", "Time"}
 # "time_ps", methods in model units "time". The thermo table keeps LAMMPS's "Time".
 TIME_NAME = {"md": "time_ps", "mpm": "time_s", "pd": "time_s", "granular": "time_s", "macroparticle": "time_s",
              "dbm": "time", "phasefield": "time"}
+
+# Methods whose series.csv names every column with its unit (docs/conventions.md, "Units in
+# column names"); the others are listed there as not uniform yet.
+UNITS_IN_COLUMNS = {"granular"}
+SI_UNITS = ("s", "J", "m", "N", "Pa", "K", "kg", "m_s", "kg_m3", "J_kg", "kg_m_s")
+DIMENSIONLESS = {"step", "steps", "profile", "grain", "count"}
 
 
 def method_of(run):
@@ -47,6 +55,10 @@ def check_csv(path, method):
         return  # the thermo table, LAMMPS's column names (docs/architecture.md)
     if times and method in TIME_NAME and times[0] != TIME_NAME[method]:
         yield f"{path}: time column '{times[0]}'; a {method} run names it '{TIME_NAME[method]}'"
+    if path.name == "series.csv" and method in UNITS_IN_COLUMNS:
+        for c in header:
+            if c not in DIMENSIONLESS and not any(c.endswith("_" + u) for u in SI_UNITS):
+                yield f"{path}: column '{c}' has no unit suffix (_{', _'.join(SI_UNITS)})"
 
 
 def main():

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The output conventions (docs/conventions.md) hold for the run folder of every method's test case
 # (tests/cli/cases): units on every VTK array, one time column per file named for the method's unit
-# system. The checker itself fails on a folder that breaks them (a second time column, a time
-# column of another unit system, an array without units).
+# system, units in the series.csv column names of the methods that have them. The checker itself
+# fails on a folder that breaks them (a second time column, a time column of another unit system,
+# an array without units, a granular series column without its unit).
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -22,7 +23,14 @@ printf "step,time_s,time\n0,0,0\n" > "$WORK/broken/series.csv"
 printf "step,time_ps\n0,0\n" > "$WORK/broken/profile.csv"
 cp "$WORK/mpm_tiny/fields/grid_000000000.vti" "$WORK/broken/fields/"
 sed -i '0,/ units="K"/s/ units="K"//' "$WORK/broken/fields/grid_000000000.vti"
+mkdir -p "$WORK/broken_granular"
+cp "$WORK/granular_tiny/config.resolved.toml" "$WORK/broken_granular/"
+sed '1s/,kinetic_J,/,kinetic,/' "$WORK/granular_tiny/series.csv" > "$WORK/broken_granular/series.csv"
 set +e
+check "$WORK/broken_granular" > "$WORK/broken_granular.txt"
+[ $? -eq 1 ] || fail "the checker passed a granular series column without its unit"
+grep -qF "series.csv: column 'kinetic' has no unit suffix" "$WORK/broken_granular.txt" ||
+  fail "the checker did not name the column without a unit: $(cat "$WORK/broken_granular.txt")"
 check "$WORK/broken" > "$WORK/broken.txt"
 code=$?
 set -e

@@ -47,7 +47,7 @@ grep -qF "material file: $WORK/cu.toml (sha256 $sha)" "$WORK/file/log.txt" || fa
 grep -qF 'material file: provenance.yield.command = shockfield bridge yield runs/x' "$WORK/file/log.txt" \
   || fail "log.txt lacks the material file's provenance"
 grep -qF "$sha" "$WORK/file/config.resolved.toml" || fail "config.resolved.toml lacks the material file's hash"
-grep -q "^g0 = 20000000" "$WORK/file/config.resolved.toml" || fail "g0 not taken from the material file"
+grep -q "^g0 = 2e+07$" "$WORK/file/config.resolved.toml" || fail "g0 not taken from the material file"
 echo "ok: homogeneous run names its material file"
 
 expect_error "${case_text/end_strain = -0.05/end_strain = 0.05}" "homogeneous.end_strain" "sign of strain_rate"

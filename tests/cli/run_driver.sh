@@ -37,7 +37,7 @@ grep -q "^end_time = 1.5e-7" "$WORK/pd_edited.toml" || fail "the edit did not ap
 run "$WORK/pd_edited.toml" --output "$WORK/edited"
 run "$cases/pd_tiny.toml" --output "$WORK/set" --set solver.end_time=1.5e-7
 same_files "$WORK/edited" "$WORK/set" series.csv thermo.csv profiles/index.csv profiles/profile_3.csv
-grep -q "^end_time = 1.49999" "$WORK/set/config.resolved.toml" || fail "--set value not in config.resolved.toml"
+grep -q "^end_time = 1.5e-07$" "$WORK/set/config.resolved.toml" || fail "--set value not in config.resolved.toml"
 echo "ok: --set is the same run as the edited file"
 # A wrong key or type given with --set is refused (exit 2, no run folder), naming --set.
 set +e
@@ -80,7 +80,7 @@ grep -q "body.horizon_factor: 3.0 -> 3.5" "$WORK/err" && grep -q "solver.end_tim
 $CHECK "$WORK/pds/summary.json" --method pd --status stopped > /dev/null || fail "no valid stopped summary"
 run "$cases/pd_tiny.toml" --output "$WORK/pds" --resume --set solver.end_time=3e-7
 grep -q "resume: solver.end_time changed" "$WORK/pds/log.txt" || fail "the safe change is not logged"
-grep -q "^end_time = 2.99999" "$WORK/pds/config.resolved.toml" || fail "config.resolved.toml not rewritten"
+grep -q "^end_time = 3e-07$" "$WORK/pds/config.resolved.toml" || fail "config.resolved.toml not rewritten"
 grep -q "finished: t = 3e-07 s" "$WORK/pds/log.txt" || fail "the resumed run did not run to the new end time"
 "$SF" run "$cases/pd_tiny.toml" --output "$WORK/pds" --resume --set solver.end_time=3e-7 | grep -q "nothing to do" ||
   fail "a finished run resumed again did not say nothing to do"

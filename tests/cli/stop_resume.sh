@@ -15,12 +15,14 @@ case "$method" in
                files="structures.csv clusters.csv dumps/dump.150.lammpstrj dumps/dump.300.lammpstrj thermo.csv" ;;
   mpm) case_file="$cases/mpm_tiny.toml"; stop=25; files="series.csv grid.pvd histograms/hist_0.csv thermo.csv" ;;
   pd) case_file="$cases/pd_tiny.toml"; stop=77
-      files="series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4.csv thermo.csv" ;;
+      files="series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4.csv thermo.csv
+             profiles/points.pvd profiles/points_4.vtp dumps/dump.103.lammpstrj dumps/dump.138.lammpstrj" ;;
   dbm) case_file="$cases/dbm_sod.toml"; stop=17
        files="series.csv profiles/index.csv profiles/profile_1.csv profiles/profile_2.csv grid.pvd
               fields/grid_000000040.vti thermo.csv" ;;
   granular) case_file="$cases/granular_tiny.toml"; stop=123
-            files="series.csv energy_above.csv probes.csv spacetime_force.csv spacetime_velocity.csv signal.csv thermo.csv" ;;
+            files="series.csv energy_above.csv probes.csv spacetime_force.csv spacetime_velocity.csv signal.csv thermo.csv
+                   profiles/grains.pvd profiles/grains_1.vtp profiles/grains_2.vtp dumps/dump.617.lammpstrj" ;;
   macroparticle) case_file="$cases/macroparticle_tiny.toml"; stop=123
                  files="thermo.csv dumps/dump.250.lammpstrj particles.pvd particles/particles_250.vtp" ;;
   phasefield) case_file="$cases/phasefield_tiny.toml"; stop=23; files="series.csv fields.pvd fields/xi_3.vti thermo.csv" ;;

@@ -7,7 +7,7 @@ Every file is read by VTK's XML reader and by vtk_arrays: the two must give the 
 bit for bit, and every array but the vertex connectivity must carry a units attribute. Each
 further FILE (the same frame written in another encoding or precision) must equal REFERENCE_FILE
 (ascii, Float64): exactly for Float64, as the nearest float for Float32. The categorical arrays
-(material, body, grain) must be Int32 in every file. Where an image has VTK's blanking array
+(material, body, grain, type) must be Int32 in every file. Where an image has VTK's blanking array
 vtkGhostType, its points must be hidden (HIDDENPOINT, as VTK's IsPointVisible reports) exactly
 where the real arrays that have NaN (mass_density is 0 there) are NaN. Exit 77 when
 python3-vtk9 is absent (the test then says it skipped).
@@ -28,7 +28,7 @@ except ImportError:
     sys.exit(77)
 
 
-CATEGORICAL = {"material", "body", "grain"}
+CATEGORICAL = {"material", "body", "grain", "type"}
 
 
 def vtk_arrays(path):

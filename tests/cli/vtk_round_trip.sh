@@ -2,7 +2,7 @@
 # VTK output in every encoding and precision ([output] vtk_encoding, vtk_precision), read back by
 # VTK itself (python3-vtk9), by shockfield_plot.vtk_arrays and by `shockfield analyze`: the same
 # values in each (Float32: the nearest float), units on every array; for MPM (grid .vti and
-# particle .vtp), DBM, phase field and the macroscopic particles. Skips the VTK part with a
+# particle .vtp), DBM, phase field, PD points and granular grains. Skips the VTK part with a
 # message when python3-vtk9 is absent (scripts/install-deps.sh installs it).
 source "$(dirname "$0")/lib.bash"
 set -e
@@ -87,4 +87,30 @@ assert np.allclose(vtp["pressure"], csv["pressure_Pa"], rtol=1e-9, atol=1e-6), "
 assert np.array_equal(vtp["grain"], csv["grain"].astype(np.int32)), "grain"
 print("ok: PD points_4.vtp holds profile_4.csv's values at the deformed positions")
 PYEOF
-echo "vtk_round_trip: mpm, dbm, phasefield and pd VTK files read alike by VTK, vtk_arrays and analyze in every format"
+# Granular grains: profiles/grains_<k>.vtp at profile_interval, the column along z (z = −depth).
+run_formats granular "$ROOT/tests/cli/cases/granular_tiny.toml"
+check $(variants granular profiles/grains_2.vtp)
+"$PY" - "$WORK/granular_ascii" "$ROOT/python" <<'PYEOF' || fail "granular grains_2.vtp differs from probes.csv"
+import re, sys
+import numpy as np
+sys.path.insert(0, sys.argv[2])
+from shockfield_plot.vtk_arrays import read_vtk_arrays
+run = sys.argv[1]
+pvd = open(f"{run}/profiles/grains.pvd").read()
+times = {f: float(t) for t, f in re.findall(r'timestep="([^"]+)" part="0" file="([^"]+)"', pvd)}
+assert sorted(times) == ["grains_0.vtp", "grains_1.vtp", "grains_2.vtp"], times
+vtp = read_vtk_arrays(f"{run}/profiles/grains_2.vtp")
+probes = np.genfromtxt(f"{run}/probes.csv", delimiter=",", names=True)
+row = probes[np.argmin(abs(probes["time_s"] - times["grains_2.vtp"]))]
+# The frame and the probe row due at 1e-4 s come from the same step (first at or past it).
+assert abs(row["time_s"] - times["grains_2.vtp"]) <= 1e-9 * times["grains_2.vtp"], (row["time_s"], times)
+for g in (0, 100, 199):  # "+ down" in the CSV, z up in the frame; the CSV holds 10 digits
+    assert np.isclose(vtp["velocity"][g, 2], -row[f"velocity_{g}"], rtol=1e-9, atol=1e-15), ("velocity", g)
+    assert np.isclose(vtp["contact_force"][g], row[f"force_{g}"], rtol=1e-9), ("force", g)
+    assert np.isclose(vtp["overlap"][g], row[f"overlap_{g}"], rtol=1e-9), ("overlap", g)
+assert not vtp["velocity"][:, :2].any() and not vtp["points"][:, :2].any(), "the column is not on the z axis"
+assert np.all(np.diff(vtp["points"][:, 2]) < 0), "grain 0 is not on top"
+assert np.array_equal(vtp["grain"], np.arange(200)) and vtp["type"][100] == 2 and (vtp["type"] == 1).sum() == 199
+print("ok: granular grains_2.vtp holds probes.csv's values of its step, the column along z")
+PYEOF
+echo "vtk_round_trip: mpm, dbm, phasefield, pd and granular VTK files read alike by VTK, vtk_arrays and analyze in every format"

@@ -102,23 +102,28 @@ class Cases(unittest.TestCase):
         print("ok: from_dict + set + check + run (mpm),", len(frames), "field frames;", caught.exception)
 
     def test_every_method_opens(self):
-        expected = {"pd_tiny": "profiles", "dbm_sod": "profiles", "phasefield_tiny": "fields", "granular_tiny": None}
+        expected = {"pd_tiny": "profiles", "dbm_sod": "profiles", "phasefield_tiny": "fields", "granular_tiny": "dumps"}
         for name, frames in expected.items():
             run = shockfield.Case.load(CASES / f"{name}.toml").run(output=self.dir / name, threads=1, quiet=True)
             self.assertEqual(run.summary["status"], "finished", name)
             self.assertGreater(len(run.thermo), 1, name)
             self.assertGreater(len(run.series), 1, name)
-            if frames is None:
-                with self.assertRaises(shockfield.InputError) as caught:
-                    next(run.frames())
-                self.assertIn("its tables: ", str(caught.exception))
-                continue
             got = list(run.frames(kind=frames))
             self.assertGreaterEqual(len(got), 2, name)
             self.assertTrue(all(a.time < b.time for a, b in zip(got, got[1:])), name)
             if name == "pd_tiny":
                 self.assertIn("sxx_Pa", got[-1].data.dtype.names)
-                self.assertEqual([f.step for f in run.frames()], [f.step for f in got])  # pd: profiles first
+                # pd with dump = true: its dumps first, one per profile, at the profiles' steps and times
+                dumps = list(run.frames())
+                self.assertEqual([f.step for f in dumps], [f.step for f in got])
+                self.assertTrue(np.allclose([f.time for f in dumps], [f.time for f in got], rtol=1e-9))  # CSV: 10 digits
+            elif name == "granular_tiny":  # the grain frames' dumps, ITEM: TIME in s
+                self.assertEqual([f.step for f in got], [0, 309, 617])
+                self.assertEqual(got[0].data["vz"][0], -0.05)  # grain 0 struck downward, z up
+                self.assertAlmostEqual(got[-1].time, 1e-4, delta=2e-7)  # due at 1e-4 s, the step at or past
+                with self.assertRaises(shockfield.InputError) as caught:
+                    next(run.frames(kind="fields"))
+                self.assertIn("has no fields (it has: dumps); its tables: ", str(caught.exception))
             elif name == "dbm_sod":
                 self.assertEqual(next(run.frames()).data.dtype, np.float64)  # dbm: fields first
             else:

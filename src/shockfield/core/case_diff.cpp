@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/toml_text.hpp"
 
 namespace shockfield {
 namespace {
@@ -40,12 +41,7 @@ toml::table parse_case(std::string_view text, const char* which) {
   }
 }
 
-std::string toml_text(const toml::node* node) {
-  if (!node) return "(absent)";
-  std::ostringstream out;
-  node->visit([&](const auto& v) { out << v; });
-  return out.str();
-}
+std::string toml_text(const toml::node* node) { return node ? shockfield::toml_text(*node) : "(absent)"; }
 
 // Equal TOML text (the writer's canonical form), or an integer and a float of the same value.
 bool same_value(const toml::node& a, const toml::node& b) {

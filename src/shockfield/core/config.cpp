@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/toml_text.hpp"
 
 namespace shockfield {
 
@@ -355,7 +356,7 @@ std::string Config::resolved_toml() const {
   toml::table resolved = shared_->resolved;
   if (shared_->provenance) resolved.insert_or_assign("provenance", *shared_->provenance);
   out << resolved << "\n";
-  return out.str();
+  return shortest_floats(out.str());
 }
 
 }  // namespace shockfield

@@ -9,6 +9,7 @@
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/toml_text.hpp"
 
 namespace shockfield {
 namespace {
@@ -57,12 +58,6 @@ std::optional<std::vector<KeySegment>> split_key(const std::string& key) {
 bool is_within(const std::string& inner, const std::string& outer) {
   return inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 &&
          (inner[outer.size()] == '.' || inner[outer.size()] == '[');
-}
-
-std::string toml_text(const toml::node& node) {
-  std::ostringstream out;
-  node.visit([&](const auto& v) { out << v; });
-  return out.str();
 }
 
 // A replayed derived value equals a fresh one: doubles to 1e-12 relative (NaN equal to NaN),

@@ -44,6 +44,7 @@ OutputIntervals read_output_intervals(const std::optional<Config>& output, doubl
         t.get_choice_or("vtk_precision", {"float32", "float64"}, "float32") == "float32" ? io::VtkPrecision::Float32
                                                                                         : io::VtkPrecision::Float64;
   }
+  if (kinds.dumps) s.dumps = t.get_bool_or("dump", false);
   s.checkpoint_every = t.get_int_or("checkpoint_every", 0, Range::non_negative());
   s.thermo_every = t.get_int_or("thermo_every", 0, Range::non_negative());
   return s;

@@ -32,6 +32,8 @@ struct OutputIntervals {
   /// How field frames store their arrays (vtk_encoding, vtk_precision; methods with fields):
   /// appended binary compressed with zlib, in single precision, unless the case says otherwise.
   io::VtkFormat vtk{io::VtkEncoding::Zlib, io::VtkPrecision::Float32};
+  /// With every particle frame also a LAMMPS text dump (`dump`; methods with particle frames).
+  bool dumps = false;
 };
 
 /// Which of the optional frame kinds a method writes (the keys of the others stay unknown, so a
@@ -40,6 +42,7 @@ struct OutputKinds {
   bool profiles = false;
   bool fields = false;
   bool vtk = false;  ///< field frames are VTK files (vtk_encoding, vtk_precision)
+  bool dumps = false;  ///< particle frames can also be LAMMPS dumps (dump)
 };
 
 /// Reads the schedule keys of [output] (absent table: the defaults), validated, including the

@@ -18,7 +18,7 @@ void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivisio
   out << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
          "format=\"ascii\">\n";
   for (const auto& p : d.points)
-    out << fmt::format("{:.17g} {:.17g} {:.17g}\n", p[0], p[1], N == 3 ? p[N - 1] : 0.0);
+    out << fmt::format("{} {} {}\n", p[0], p[1], N == 3 ? p[N - 1] : 0.0);
   out << "        </DataArray>\n      </Points>\n      <Cells>\n";
   out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (const auto& s : d.simplices) {
@@ -64,7 +64,7 @@ void write_surface_vtp(const std::filesystem::path& file,
   out << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
          "format=\"ascii\">\n";
   for (std::int32_t v : used)
-    out << fmt::format("{:.17g} {:.17g} {:.17g}\n", points[v][0], points[v][1], points[v][2]);
+    out << fmt::format("{} {} {}\n", points[v][0], points[v][1], points[v][2]);
   out << "        </DataArray>\n      </Points>\n      <Polys>\n";
   out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (const auto& t : triangles) out << index[t[0]] << ' ' << index[t[1]] << ' ' << index[t[2]] << '\n';
@@ -84,7 +84,7 @@ void write_clusters_csv(const std::filesystem::path& file, const DelaunayDivisio
   out << '\n';
   for (std::size_t i = 0; i < d.points.size(); ++i) {
     out << i;
-    for (double x : d.points[i]) out << fmt::format(",{:.17g}", x);
+    for (double x : d.points[i]) out << fmt::format(",{}", x);
     for (const auto& [name, c] : clusterings) out << ',' << c->label[i];
     out << '\n';
   }

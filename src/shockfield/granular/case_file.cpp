@@ -65,9 +65,12 @@ Impulse read_impulse(const Config& t, long long grains) {
 
 OutputSpec read_output(const std::optional<Config>& t, double end_time, double dt, long long grains) {
   OutputSpec o;
-  o.schedule = read_output_intervals(t, end_time, {false, true});
+  o.schedule = read_output_intervals(t, end_time, {.profiles = true, .fields = true, .vtk = true, .dumps = true});
   o.probe_interval = dt;
   if (!t) return o;
+  if (o.schedule.dumps && o.schedule.profile_interval == 0)
+    t->fail("dump", "dump = true writes a LAMMPS dump with every particle frame, and profile_interval = 0 writes "
+                    "none: give profile_interval > 0");
   if (t->has("probes"))
     for (long long g : t->get_ints("probes", 0, Range::closed(0, static_cast<double>(grains - 1))))
       o.probes.push_back(static_cast<std::size_t>(g));

@@ -8,7 +8,7 @@
 namespace shockfield::granular {
 namespace {
 
-constexpr double kFormatVersion = 2;  // 2: checksummed (io/checkpoint_file)
+constexpr double kFormatVersion = 3;  // 2: checksummed (io/checkpoint_file); 3: the profiles counter
 
 }  // namespace
 
@@ -23,6 +23,7 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
   h5.set_attribute("probes", static_cast<double>(counters.probes));
   h5.set_attribute("spacetime", static_cast<double>(counters.spacetime));
   h5.set_attribute("signal", static_cast<double>(counters.signal));
+  h5.set_attribute("profiles", static_cast<double>(counters.profiles));
   h5.write("displacement", sim.displacement());
   h5.write("velocity", sim.velocity());
   h5.write("force", sim.force());
@@ -44,7 +45,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
     throw InputError(fmt::format("{}: {}", f, e.what()));
   }
   return {checkpoint.count("series"), checkpoint.count("probes"), checkpoint.count("spacetime"),
-          checkpoint.count("signal")};
+          checkpoint.count("signal"), checkpoint.count("profiles")};
 }
 
 }  // namespace shockfield::granular

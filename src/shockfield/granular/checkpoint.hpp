@@ -16,6 +16,7 @@ struct OutputCounters {
   std::int64_t probes = 0;     ///< probe rows written
   std::int64_t spacetime = 0;  ///< space–time rows written
   std::int64_t signal = 0;     ///< signal measurements written
+  std::int64_t profiles = 0;   ///< particle frames written
 };
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters);

@@ -27,16 +27,47 @@ double overlap_below(const Simulation& sim, std::size_t i) {
 }  // namespace
 
 std::vector<std::string> RunOutputs::thermo_columns() {
-  return {"time_s", "step", "kinetic", "potential", "total", "external_work", "signal_depth"};
+  return {"time_s", "step", "kinetic_J", "potential_J", "total_J", "external_work_J", "signal_depth_m"};
 }
 
 std::vector<double> RunOutputs::thermo_values(const Thermo& t) {
   return {t.time, static_cast<double>(t.step), t.kinetic, t.potential, t.total, t.external_work, t.signal_depth};
 }
 
-RunOutputs::RunOutputs(const std::filesystem::path& folder, const OutputSpec& spec, const Simulation& sim,
-                       const double* resume_from)
-    : spec_(spec) {
+io::ParticleFrame RunOutputs::grain_frame(const Simulation& sim, const std::vector<int>& types) {
+  const std::size_t n = sim.size();
+  const Chain& chain = sim.chain();
+  std::vector<double> xyz(3 * n), velocity(3 * n), force(3 * n), displacement(3 * n), contact(n), overlap(n), grain(n);
+  const auto up = [](double down) { return 0.0 - down; };  // (not −x: no "-0" in the files)
+  for (std::size_t i = 0; i < n; ++i) {  // along z, up: the chain's depth and "+ down" turned over
+    xyz[3 * i + 2] = up(sim.position(i));
+    velocity[3 * i + 2] = up(sim.velocity()[i]);
+    force[3 * i + 2] = up(sim.force()[i]);
+    displacement[3 * i + 2] = up(sim.displacement()[i]);
+    contact[i] = force_below(sim, i);
+    overlap[i] = overlap_below(sim, i);
+    grain[i] = static_cast<double>(i);
+  }
+  return {sim.step_count(), sim.time(), std::move(xyz), types,
+          *std::max_element(chain.radius.begin(), chain.radius.end()),
+          {{"velocity", 3, std::move(velocity), "m/s"},
+           {"force", 3, std::move(force), "N"},
+           {"displacement", 3, std::move(displacement), "m"},
+           {"contact_force", 1, std::move(contact), "N"},
+           {"overlap", 1, std::move(overlap), "m"},
+           {"radius", 1, chain.radius, "m"},
+           {"mass", 1, chain.mass, "kg"},
+           {"grain", 1, std::move(grain), "1", true}}};
+}
+
+RunOutputs::RunOutputs(const std::filesystem::path& folder, const GranularCase& c, const Simulation& sim,
+                       long long last_step, const double* resume_from)
+    : spec_(c.output), types_(sim.size(), 1) {
+  for (std::size_t k = 0; k < c.chain.impurities.size(); ++k)
+    types_[static_cast<std::size_t>(c.chain.impurities[k].index)] = 2 + static_cast<int>(k);
+  if (spec_.schedule.profile_interval > 0)
+    grains_ = io::ParticleOutput(folder, folder / "profiles", "grains", spec_.schedule.vtk, spec_.schedule.dumps,
+                                 io::step_digits(last_step), resume_from);
   series_ = io::CsvWriter(folder / "series.csv", thermo_columns(), resume_from);
   if (!spec_.energy_above.empty())
     energy_above_ = io::CsvWriter(folder / "energy_above.csv", grain_columns(spec_.energy_above, "energy_above"), resume_from);
@@ -81,6 +112,9 @@ void RunOutputs::write_due(const Simulation& sim, OutputCounters& n) {
       force_field_.row(force);
       velocity_field_.row(velocity);
     });
+  if (spec_.schedule.profile_interval > 0)
+    write_due_frames(n.profiles, spec_.schedule.profile_interval, t,
+                     [&](auto k) { grains_.write(grain_frame(sim, types_), k); });
   if (signal_.is_open())
     write_due_frames(n.signal, spec_.signal_interval, t, [&](auto) {
       const SignalFront f = measure_signal(sim);

@@ -11,7 +11,11 @@
 //   spacetime_velocity.csv      one row per field_interval: the dynamic contact force F_k − F⁰_k and
 //                               the grain velocity of every spacetime_stride-th grain (grain index × time);
 //   signal.csv                  the leading peak's position, depth, velocity, force and width
-//                               (signal.hpp) every signal_interval.
+//                               (signal.hpp) every signal_interval;
+//   profiles/grains_<k>.vtp     every profile_interval, every grain as a VTK vertex, indexed by
+//                               profiles/grains.pvd, and with dump = true the same frame as a LAMMPS
+//                               dump dumps/dump.<step>.lammpstrj (io/particle_frame; the column
+//                               stands along z, grain 0 on top: z = −depth).
 // A row due at time k·interval is written at the first step at or past it (core/output_schedule).
 #include <filesystem>
 #include <string>
@@ -22,24 +26,33 @@
 #include "shockfield/granular/checkpoint.hpp"
 #include "shockfield/granular/simulation.hpp"
 #include "shockfield/io/csv_writer.hpp"
+#include "shockfield/io/particle_frame.hpp"
 
 namespace shockfield::granular {
 
 class RunOutputs {
  public:
   /// Opens the files; with `resume_from`, keeps the rows up to that time (a resumed run).
-  RunOutputs(const std::filesystem::path& folder, const OutputSpec& spec, const Simulation& sim,
+  /// `last_step`: the run's last step (the digits of the dump names).
+  RunOutputs(const std::filesystem::path& folder, const GranularCase& c, const Simulation& sim, long long last_step,
              const double* resume_from = nullptr);
   /// Writes every row due by sim.time(), advancing the counters.
   void write_due(const Simulation& sim, OutputCounters& counters);
 
   static std::vector<std::string> thermo_columns();
   static std::vector<double> thermo_values(const Thermo& t);
+  /// Every grain now as a particle frame: positions (0, 0, −depth) [m]; velocity, force (net, on
+  /// the grain) and displacement as vectors along z (+ up); contact_force and overlap of the
+  /// contact below (the wall's for the last grain); radius, mass; grain (index, Int32); type 1,
+  /// an impurity 2 + its place in the [[impurity]] list.
+  static io::ParticleFrame grain_frame(const Simulation& sim, const std::vector<int>& types);
 
  private:
   OutputSpec spec_;
   std::vector<std::size_t> field_grains_;
+  std::vector<int> types_;
   io::CsvWriter series_, energy_above_, probes_, force_field_, velocity_field_, signal_;
+  io::ParticleOutput grains_;
 };
 
 /// A run's key results (for summary.json), by name: time, steps, kinetic, potential, total

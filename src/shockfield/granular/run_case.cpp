@@ -103,7 +103,7 @@ class GranularMethod final : public Method {
  private:
   void open(RunContext& run, const double* resume_from) {
     log_ = &run.log;
-    outputs_.emplace(run.folder, c_.output, sim_, resume_from);
+    outputs_.emplace(run.folder, c_, sim_, steps_, resume_from);
     log_->info("running to t = {} s: {} steps of {} s ({} of the stable {} s)", c_.run.end_time, steps_,
                sim_.time_step(), sim_.time_step() / c_.run.stable_step, c_.run.stable_step);
   }

@@ -296,7 +296,7 @@ void write_dump_frame(std::ostream& out, const DumpFrame& frame, const DumpWrite
   auto it = std::back_inserter(buf);
   // Header as written by LAMMPS DumpCustom::header_item (units and time first, when present).
   if (!frame.units.empty()) fmt::format_to(it, "ITEM: UNITS\n{}\n", frame.units);
-  if (frame.time) fmt::format_to(it, "ITEM: TIME\n{:.16g}\n", *frame.time);
+  if (frame.time) fmt::format_to(it, "ITEM: TIME\n{}\n", *frame.time);
   fmt::format_to(it, "ITEM: TIMESTEP\n{}\nITEM: NUMBER OF ATOMS\n{}\n", frame.timestep, n);
   fmt::format_to(it, "ITEM: BOX BOUNDS {} {} {}\n", frame.bounds[0], frame.bounds[1], frame.bounds[2]);
   for (int d = 0; d < 3; ++d) fmt::format_to(it, "{:.16e} {:.16e}\n", frame.box.lo[d], frame.box.hi[d]);

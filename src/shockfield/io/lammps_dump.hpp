@@ -9,7 +9,8 @@
 // Optional `ITEM: UNITS` and `ITEM: TIME` sections (dump_modify units/time yes) are read too, and
 // an `element` column of names (dump custom ... element with dump_modify element Cu ...).
 // The writer produces the same header LAMMPS writes (dump custom, box bounds "%-1.16e"), which
-// OVITO and LAMMPS `read_dump` open.
+// OVITO and LAMMPS `read_dump` open, except ITEM: TIME: the shortest text that reads back to the
+// same double (LAMMPS's "%.16g" does not always, docs/conventions.md "Numbers in text").
 #include <array>
 #include <cstdint>
 #include <filesystem>

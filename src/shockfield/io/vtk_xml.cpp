@@ -133,7 +133,7 @@ void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkForm
   const std::string extent = fmt::format("0 {} 0 {} 0 {}", n[0] - 1, n[1] - 1, n[2] - 1);
   out << "<?xml version=\"1.0\"?>\n"
       << arrays.file_tag("ImageData")
-      << fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{:.17g} {:.17g} {:.17g}\" Spacing=\"{:.17g} {:.17g} {:.17g}\">\n",
+      << fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{} {} {}\" Spacing=\"{} {} {}\">\n",
                      extent, image.origin[0], image.origin[1], image.origin[2], image.spacing[0], image.spacing[1],
                      image.spacing[2])
       << fmt::format("    <Piece Extent=\"{}\">\n", extent) << "      <PointData>\n";
@@ -198,7 +198,7 @@ void PvdSeries::add(double time, const std::string& data_file) {
 void PvdSeries::write() const {
   std::string text = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\">\n  <Collection>\n";
   for (const auto& [t, f] : entries_)
-    text += fmt::format("    <DataSet timestep=\"{:.17g}\" part=\"0\" file=\"{}\"/>\n", t, f);
+    text += fmt::format("    <DataSet timestep=\"{}\" part=\"0\" file=\"{}\"/>\n", t, f);
   text += "  </Collection>\n</VTKFile>\n";
   write_file_atomically(file_, text);
 }

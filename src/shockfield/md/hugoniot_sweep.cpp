@@ -52,8 +52,8 @@ std::string value_folder(const std::string& method, double value) {
 }
 
 void set_value(RunOptions& r, const std::string& method, std::size_t stage, double value) {
-  if (method == "msst") r.overrides.push_back(fmt::format("stage[{}].msst.shock_speed={:.17g}", stage, value / A_per_ps_to_km_per_s));
-  else if (method == "nphug") r.overrides.push_back(fmt::format("stage[{}].nphug.pressure={:.17g}", stage, value / units::metal::bar_to_GPa));
+  if (method == "msst") r.overrides.push_back(fmt::format("stage[{}].msst.shock_speed={}", stage, value / A_per_ps_to_km_per_s));
+  else if (method == "nphug") r.overrides.push_back(fmt::format("stage[{}].nphug.pressure={}", stage, value / units::metal::bar_to_GPa));
   else r.piston_speed = value / A_per_ps_to_km_per_s;
 }
 

@@ -40,7 +40,7 @@ class Simulation {
   /// (LAMMPS Domain::small, set by create_box / read_data and kept while the box changes).
   Vec3 shrink_margin;
   std::int64_t step = 0;
-  double time = 0;        ///< ps
+  double time = 0;        ///< ps, step·dt (set by advance)
   std::vector<std::unique_ptr<Fix>> fixes;
   bool per_atom_this_step = false;  ///< set by diagnostics that need per-atom energy/virial
   std::int64_t rebuilds = 0;

@@ -214,7 +214,7 @@ void RunOutput::write_histograms(const Simulation& sim, std::size_t index) {
   const double hi = case_.diagnostics.histogram_all ? INFINITY : lo + case_.diagnostics.windows.heights.at(0);
   const auto names = quantity_names(dim);
   io::CheckedOutput out(folder_ / "histograms" / fmt::format("hist_{}.csv", index));
-  out << fmt::format("# t = {:.17g} s, particles with {} <= x[{}] < {} m\n", sim.time(), lo, axis, hi);
+  out << fmt::format("# t = {} s, particles with {} <= x[{}] < {} m\n", sim.time(), lo, axis, hi);
   out << "quantity,bin_lo,bin_hi,count,mean,std,skewness,kurtosis\n";
   for (std::size_t q = 0; q < names.size(); ++q) {
     analysis::GridField f;

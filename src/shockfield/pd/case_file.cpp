@@ -129,7 +129,7 @@ SolverSpec read_solver(const Config& t) {
 }
 
 OutputSpec read_output(const std::optional<Config>& o, double end_time) {
-  return read_output_intervals(o, end_time, {.profiles = true, .fields = false, .vtk = true});
+  return read_output_intervals(o, end_time, {.profiles = true, .fields = false, .vtk = true, .dumps = true});
 }
 
 }  // namespace

@@ -259,8 +259,7 @@ class PdMethod final : public Method {
             broken};
   }
   std::int64_t thermo_every() const override {
-    return thermo_interval(c_.output.thermo_every,
-                           static_cast<long long>(std::ceil(c_.solver.end_time / dt_ - 1e-9)));
+    return thermo_interval(c_.output.thermo_every, total_steps());
   }
   double work_items() const override { return static_cast<double>(cloud_.size()); }
   std::string work_item_name() const override { return "point"; }
@@ -284,11 +283,12 @@ class PdMethod final : public Method {
   void open(RunContext& run, std::optional<ResumePoint> resume) {
     log_ = &run.log;
     for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
-    output_.emplace(run.folder, model_.fields, c_.output.vtk, resume);
+    output_.emplace(run.folder, model_.fields, c_.output, total_steps(), resume);
     if (!finished())
       log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
                  c_.solver.end_time, dt_, dt_ / stable_, stable_);
   }
+  long long total_steps() const { return static_cast<long long>(std::ceil(c_.solver.end_time / dt_ - 1e-9)); }
   void write_due() {
     const double t = sim_.time() + tol_;
     write_due_frames(counters_.series, c_.output.series_interval, t, [&](auto) { output_->write_series(sim_); });

@@ -9,8 +9,9 @@ namespace shockfield::pd {
 
 namespace fs = std::filesystem;
 
-RunOutput::RunOutput(const fs::path& folder, PointFields fields, io::VtkFormat vtk, std::optional<ResumePoint> resume)
-    : folder_(folder), fields_(std::move(fields)), vtk_(vtk) {
+RunOutput::RunOutput(const fs::path& folder, PointFields fields, const OutputIntervals& output, long long last_step,
+                     std::optional<ResumePoint> resume)
+    : folder_(folder), fields_(std::move(fields)) {
   fs::create_directories(folder / "profiles");
   const double keep_step = resume ? static_cast<double>(resume->step) : 0.0;
   // index.csv's first column is the profile number: keep those written before the checkpoint.
@@ -21,7 +22,8 @@ RunOutput::RunOutput(const fs::path& folder, PointFields fields, io::VtkFormat v
                           resume ? &keep_step : nullptr);
   index_ = io::CsvWriter(folder / "profiles" / "index.csv", {"profile", "time_s", "step"},
                          resume ? &keep_profile : nullptr);
-  points_pvd_ = io::PvdSeries(folder / "profiles" / "points.pvd", resume ? &resume->time : nullptr);
+  points_ = io::ParticleOutput(folder, folder / "profiles", "points", output.vtk, output.dumps,
+                              io::step_digits(last_step), resume ? &resume->time : nullptr);
 }
 
 Mat3 RunOutput::stress(std::size_t i) const {
@@ -82,17 +84,15 @@ void RunOutput::write_points(const Simulation& sim, std::int64_t index, PointVal
     }
     grain[i] = fields_.grain[i];
   }
-  const std::string file = fmt::format("points_{}.vtp", index);
-  io::write_vtp(folder_ / "profiles" / file, xyz,
-                {{"displacement", 3, std::move(displacement), "m"},
-                 {"velocity", 3, std::move(velocity), "m/s"},
-                 {"stress", 9, std::move(values.stress), "Pa"},
-                 {"pressure", 1, std::move(values.pressure), "Pa"},
-                 {"plastic", 1, std::move(values.plastic), "1"},
-                 {"grain", 1, std::move(grain), "1", true},
-                 {"damage", 1, std::move(values.damage), "1"}},
-                vtk_);
-  points_pvd_.add(sim.time(), file);
+  io::ParticleFrame frame{sim.step_count(), sim.time(), std::move(xyz), {}, sim.cloud().spacing / 2,
+                          {{"displacement", 3, std::move(displacement), "m"},
+                           {"velocity", 3, std::move(velocity), "m/s"},
+                           {"stress", 9, std::move(values.stress), "Pa"},
+                           {"pressure", 1, std::move(values.pressure), "Pa"},
+                           {"plastic", 1, std::move(values.plastic), "1"},
+                           {"grain", 1, std::move(grain), "1", true},
+                           {"damage", 1, std::move(values.damage), "1"}}};
+  points_.write(frame, index);
 }
 
 }  // namespace shockfield::pd

@@ -4,15 +4,17 @@
 // profiles/profile_<k>.csv (position, displacement, velocity, Cauchy stress, pressure, plastic
 // measure, grain and damage of every point) indexed with their times by profiles/index.csv; each
 // profile is also a VTK PolyData file profiles/points_<k>.vtp at the deformed positions (the same
-// fields, displacement as a vector, grain as Int32) indexed by profiles/points.pvd for ParaView.
+// fields, displacement as a vector, grain as Int32) indexed by profiles/points.pvd for ParaView,
+// and with [output] dump = true a LAMMPS dump dumps/dump.<step>.lammpstrj (io/particle_frame).
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
 #include <vector>
 
+#include "shockfield/core/output_schedule.hpp"
 #include "shockfield/io/csv_writer.hpp"
-#include "shockfield/io/vtk_xml.hpp"
+#include "shockfield/io/particle_frame.hpp"
 #include "shockfield/pd/simulation.hpp"
 
 namespace shockfield::pd {
@@ -35,11 +37,12 @@ struct ResumePoint {
 
 class RunOutput {
  public:
-  RunOutput(const std::filesystem::path& folder, PointFields fields, io::VtkFormat vtk,
-            std::optional<ResumePoint> resume);
+  /// `last_step`: the run's last step, the digits of the dump names.
+  RunOutput(const std::filesystem::path& folder, PointFields fields, const OutputIntervals& output,
+            long long last_step, std::optional<ResumePoint> resume);
 
   void write_series(const Simulation& sim);
-  /// profiles/profile_<index>.csv and profiles/points_<index>.vtp at the current time.
+  /// profiles/profile_<index>.csv and profiles/points_<index>.vtp (and the dump) at the current time.
   void write_profile(const Simulation& sim, std::int64_t index);
 
  private:
@@ -57,9 +60,8 @@ class RunOutput {
 
   std::filesystem::path folder_;
   PointFields fields_;
-  io::VtkFormat vtk_;
   io::CsvWriter series_, index_;
-  io::PvdSeries points_pvd_;
+  io::ParticleOutput points_;
 };
 
 }  // namespace shockfield::pd

@@ -113,6 +113,11 @@ TEST(GranularCase, RefusesBadInputNamingFileAndKey) {
       {"energy_above = [95, 200]", "energy_above = [0, 95]", "output.energy_above"},
       {"mass_ratio = 0.25", "mass_ratio = 0.25\npoisson_ratio = 0.5", "impurity[0].poisson_ratio"},
       {"damping = 1e-3", "damping = 1e-3\nstiffness = 2", "chain.stiffness"},
+      {"signal_interval = 1e-5", "signal_interval = 1e-5\ndump = true", "output.dump"},
+      {"signal_interval = 1e-5", "signal_interval = 1e-5\ndump = true", "profile_interval > 0"},
+      {"signal_interval = 1e-5", "signal_interval = 1e-5\nprofile_interval = 1e-10", "output.profile_interval"},
+      {"signal_interval = 1e-5", "signal_interval = 1e-5\nprofile_interval = 5e-5\nvtk_encoding = \"gz\"",
+       "output.vtk_encoding"},
       {"kind = \"velocity\"\nvelocity = 0.05\ngrains = 2",
        "kind = \"force\"\ntimes = [0, 1e-5, 5e-6]\nforces = [0, 1, 0]", "impulse.times"},
   };
@@ -136,7 +141,7 @@ TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
   OutputCounters counters;
   std::vector<std::array<double, 2>> expected_above;  ///< excess_energy(0, 95), (0, 200) at each series row
   {
-    RunOutputs out(dir, c.output, stopped);
+    RunOutputs out(dir, c, stopped, 600);
     for (int s = 0; s < 300; ++s) {
       stopped.step();
       straight.step();

@@ -139,6 +139,31 @@ TEST(LammpsDump, ElementColumnAndTimeAsLammpsWritesThem) {
   EXPECT_THROW(make_dump_frame(3, box, atoms, {"element"}), InputError);  // type 2 has no name
 }
 
+// ITEM: TIME in the shortest text that reads back to the same double: 2000 MD steps of 0.001 ps
+// summed give 1.9999999999998905, which LAMMPS's "%.16g" would print as 1.999999999999891 (another
+// double) and 17 digits as 1.9999999999998905 only by luck of this value.
+TEST(LammpsDump, TimeIsTheShortestTextThatReadsBack) {
+  DumpFrame frame;
+  frame.set_column("id", {1.0});
+  double t = 0.0;
+  for (int k = 0; k < 2000; ++k) t += 0.001;
+  for (const double time : {t, 0.1 + 0.2, 2.0, 5.014800766619083e-05}) {
+    frame.time = time;
+    std::ostringstream out;
+    write_dump_frame(out, frame);
+    std::istringstream in(out.str());
+    EXPECT_EQ(read_dump(in, "t.dump").at(0).time.value(), time) << out.str();
+  }
+  frame.time = t;
+  std::ostringstream out;
+  write_dump_frame(out, frame);
+  EXPECT_NE(out.str().find("ITEM: TIME\n1.9999999999998905\n"), std::string::npos) << out.str();
+  frame.time = 0.2;
+  std::ostringstream short_text;
+  write_dump_frame(short_text, frame);
+  EXPECT_NE(short_text.str().find("ITEM: TIME\n0.2\n"), std::string::npos) << short_text.str();
+}
+
 TEST(LammpsDump, ScaledPositions) {
   std::istringstream in(header + "ITEM: ATOMS id xs ys zs\n1 0.5 0 1\n2 0.25 0.5 0\n");
   const auto f = read_dump(in, "s.dump").at(0);
