@@ -6,12 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
-#include <fstream>
 #include <string>
 
-#include "shockfield/core/units.hpp"
-#include "shockfield/io/lammps_dump.hpp"
 #include "shockfield/md/potentials/eam.hpp"
 #include "unit/md_potentials/potential_test_support.hpp"
 
@@ -41,66 +37,13 @@ const std::string kLj =
     "[[potential.pair]]\ntypes = [1, 1]\nepsilon = 0.0104\nsigma = 3.40\n"
     "[[potential.pair]]\ntypes = [2, 2]\nepsilon = 0.0080\nsigma = 3.00\ncutoff = 7.0\n";
 
-struct Totals {
-  double energy = 0, volume = 0;
-  Voigt6 pressure_virial = Voigt6::Zero();
-};
-
-Totals read_totals(const std::string& file) {
-  std::ifstream in(file);
-  Totals t;
-  std::string key;
-  in >> key >> t.energy >> key >> t.volume >> key;
-  for (int k = 0; k < 6; ++k) in >> t.pressure_virial[k];
-  EXPECT_TRUE(in.good()) << file;
-  return t;
-}
-
 class LammpsCrossCheck : public ::testing::TestWithParam<Case> {};
 
 TEST_P(LammpsCrossCheck, EnergyForcesAndVirialMatchLammps) {
   const Case& c = GetParam();
-  const std::string base = "fixtures/lammps/" + c.name;
-  const System system = load_dump_system(base + ".dump");
-  const auto frame = io::read_dump(base + ".dump").front();
-  const Totals totals = read_totals(base + ".totals");
-  auto potential = potential_from_toml(c.toml, system.atoms.ntypes());
-  potential->check_types(system.atoms);
-  const Evaluation ours = evaluate(system, *potential);
-
-  const std::size_t n = system.atoms.nlocal;
-  std::vector<double> f, f_ref, e, e_ref, v, v_ref;
-  const char* fcol[3] = {"fx", "fy", "fz"};
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int d = 0; d < 3; ++d) {
-      f.push_back(ours.force[i][d]);
-      f_ref.push_back(frame.column(fcol[d])[i]);
-    }
-    e.push_back(ours.result.energy_atom[i]);
-    e_ref.push_back(frame.column("c_pe")[i]);
-    for (int k = 0; k < 6; ++k) {
-      // compute stress/atom NULL virial = -virial in bar·Å³.
-      v.push_back(ours.result.virial_atom[i][k]);
-      v_ref.push_back(-frame.column("c_st[" + std::to_string(k + 1) + "]")[i] / units::metal::nktv2p);
-    }
-  }
-  std::vector<double> vt, vt_ref;
-  for (int k = 0; k < 6; ++k) {
-    vt.push_back(ours.result.virial[k]);
-    vt_ref.push_back(totals.pressure_virial[k] * totals.volume / units::metal::nktv2p);
-  }
-  const double de = std::abs(ours.result.energy - totals.energy) / std::abs(totals.energy);
-  const double dea = max_norm_relative(e, e_ref);
-  const double df = max_norm_relative(f, f_ref);
-  const double dv = max_norm_relative(v, v_ref);
-  const double dvt = max_norm_relative(vt, vt_ref);
-  std::printf("%-18s atoms %4zu  energy %.1e  energy/atom %.1e  force %.1e  virial/atom %.1e  "
-              "virial %.1e\n", c.name.c_str(), n, de, dea, df, dv, dvt);
-  EXPECT_LT(de, kTolerance);
-  EXPECT_LT(dea, kTolerance);
-  EXPECT_LT(df, kTolerance);
-  EXPECT_LT(dv, kTolerance);
-  EXPECT_LT(dvt, kTolerance);
+  const LammpsDeviation d = compare_with_lammps("fixtures/lammps/" + c.name, c.toml);
+  d.print(c.name);
+  d.expect_below(kTolerance);
 }
 
 // The compressed fixture must reach beyond the F(rho) table, so that LAMMPS's linear extension

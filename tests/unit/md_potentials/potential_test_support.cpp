@@ -1,8 +1,13 @@
 #include "unit/md_potentials/potential_test_support.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 
+#include "shockfield/core/units.hpp"
 #include "shockfield/geometry/neighbor_list.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 #include "shockfield/md/force_evaluation.hpp"
@@ -54,6 +59,77 @@ double max_norm_relative(const std::vector<double>& a, const std::vector<double>
     scale = std::max(scale, std::abs(b[k]));
   }
   return diff / scale;
+}
+
+namespace {
+
+struct Totals {
+  double energy = 0, volume = 0;
+  Voigt6 pressure_virial = Voigt6::Zero();
+};
+
+Totals read_totals(const std::string& file) {
+  std::ifstream in(file);
+  Totals t;
+  std::string key;
+  in >> key >> t.energy >> key >> t.volume >> key;
+  for (int k = 0; k < 6; ++k) in >> t.pressure_virial[k];
+  EXPECT_TRUE(in.good()) << file;
+  return t;
+}
+
+}  // namespace
+
+void LammpsDeviation::print(const std::string& name) const {
+  std::printf("%-18s atoms %4zu  energy %.1e  energy/atom %.1e  force %.1e  virial/atom %.1e  "
+              "virial %.1e\n", name.c_str(), atoms, energy, energy_atom, force, virial_atom, virial);
+}
+
+void LammpsDeviation::expect_below(double tolerance) const {
+  EXPECT_LT(energy, tolerance);
+  EXPECT_LT(energy_atom, tolerance);
+  EXPECT_LT(force, tolerance);
+  EXPECT_LT(virial_atom, tolerance);
+  EXPECT_LT(virial, tolerance);
+}
+
+LammpsDeviation compare_with_lammps(const std::string& base, const std::string& toml) {
+  const System system = load_dump_system(base + ".dump");
+  const auto frame = io::read_dump(base + ".dump").front();
+  const Totals totals = read_totals(base + ".totals");
+  auto potential = potential_from_toml(toml, system.atoms.ntypes());
+  potential->check_types(system.atoms);
+  const Evaluation ours = evaluate(system, *potential);
+
+  const std::size_t n = system.atoms.nlocal;
+  std::vector<double> f, f_ref, e, e_ref, v, v_ref;
+  const char* fcol[3] = {"fx", "fy", "fz"};
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < 3; ++d) {
+      f.push_back(ours.force[i][d]);
+      f_ref.push_back(frame.column(fcol[d])[i]);
+    }
+    e.push_back(ours.result.energy_atom[i]);
+    e_ref.push_back(frame.column("c_pe")[i]);
+    for (int k = 0; k < 6; ++k) {
+      // compute stress/atom NULL virial = -virial in bar·Å³.
+      v.push_back(ours.result.virial_atom[i][k]);
+      v_ref.push_back(-frame.column("c_st[" + std::to_string(k + 1) + "]")[i] / units::metal::nktv2p);
+    }
+  }
+  std::vector<double> vt, vt_ref;
+  for (int k = 0; k < 6; ++k) {
+    vt.push_back(ours.result.virial[k]);
+    vt_ref.push_back(totals.pressure_virial[k] * totals.volume / units::metal::nktv2p);
+  }
+  LammpsDeviation d;
+  d.atoms = n;
+  d.energy = std::abs(ours.result.energy - totals.energy) / std::abs(totals.energy);
+  d.energy_atom = max_norm_relative(e, e_ref);
+  d.force = max_norm_relative(f, f_ref);
+  d.virial_atom = max_norm_relative(v, v_ref);
+  d.virial = max_norm_relative(vt, vt_ref);
+  return d;
 }
 
 }  // namespace shockfield::md::potentials::testing

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/geometry/box.hpp"
@@ -33,5 +34,20 @@ Evaluation evaluate(const System& system, Potential& potential, bool per_atom = 
 
 /// max_k |a_k - b_k| / max_k |b_k| over all entries: the norm-relative (∞-norm) deviation.
 double max_norm_relative(const std::vector<double>& a, const std::vector<double>& b);
+
+/// The deviations (max_norm_relative) from LAMMPS of one potential on one LAMMPS fixture.
+struct LammpsDeviation {
+  std::size_t atoms = 0;
+  double energy = 0, energy_atom = 0, force = 0, virial_atom = 0, virial = 0;
+  void print(const std::string& name) const;
+  /// gtest expectations: each deviation below `tolerance`.
+  void expect_below(double tolerance) const;
+};
+
+/// Evaluates the potential of the [potential] TOML `toml` on the atoms of `<base>.dump` (a
+/// LAMMPS dump of id type x y z fx fy fz c_pe and the six c_st components of `compute
+/// stress/atom NULL virial`) and compares with it and with `<base>.totals` (lines "energy E",
+/// "volume V", "pressure_virial p1 .. p6" of `compute pressure NULL virial`).
+LammpsDeviation compare_with_lammps(const std::string& base, const std::string& toml);
 
 }  // namespace shockfield::md::potentials::testing

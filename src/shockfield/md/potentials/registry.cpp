@@ -11,6 +11,8 @@
 #include "shockfield/md/potentials/eam_file.hpp"
 #include "shockfield/md/potentials/eam_tables.hpp"
 #include "shockfield/md/potentials/lj_cut.hpp"
+#include "shockfield/md/potentials/pair_table.hpp"
+#include "shockfield/md/potentials/pair_table_file.hpp"
 
 namespace shockfield::md::potentials {
 namespace {
@@ -83,10 +85,77 @@ std::unique_ptr<Potential> make_lj_cut(const Config& table, const std::filesyste
   }
 }
 
+// The most nodes of one inner table (`points`): 40 bytes each, 400 MB at this bound.
+constexpr long long kMaxTablePoints = 10'000'000;
+
+// One pair_coeff of pair_style table: the table `keyword` of `file`, up to `cutoff` (nullopt: the
+// table's last distance), and the case table that gave it (for messages).
+struct TableCoeff {
+  Config where;
+  std::filesystem::path file;
+  std::string keyword;
+  std::optional<double> cutoff;
+};
+
+std::optional<double> optional_cutoff(const Config& table) {
+  if (!table.has("cutoff")) return std::nullopt;
+  return table.get_double("cutoff", Range::positive());
+}
+
+InnerTable tabulate(const TableCoeff& c, TableInterpolation interpolation, int points) {
+  const auto section = read_for_key(c.where, "keyword", [&] { return read_pair_table(c.file, c.keyword); });
+  try {
+    return build_inner_table(section, interpolation, points, c.cutoff.value_or(section.last_r()));
+  } catch (const InputError& e) {
+    c.where.fail(c.cutoff ? "cutoff" : "keyword", e.what());
+  }
+}
+
+// pair_style table linear|spline N; `file`, `keyword`, `cutoff` stand for pair_coeff * *, each
+// [[potential.pair]] for pair_coeff i j (its own file optional). Every type pair needs a table.
+std::unique_ptr<Potential> make_table(const Config& table, const std::filesystem::path& case_dir, int ntypes) {
+  const auto interpolation = table.get_choice("interpolation", {"linear", "spline"}) == "linear"
+                                 ? TableInterpolation::linear : TableInterpolation::spline;
+  const int points = static_cast<int>(table.get_int("points", Range::closed(2, kMaxTablePoints)));
+  std::optional<std::filesystem::path> file;
+  if (table.has("file")) file = find_potential_file(table, "file", case_dir);
+  const auto cutoff = optional_cutoff(table);
+  const auto n = static_cast<std::size_t>(ntypes);
+  std::vector<std::optional<TableCoeff>> set(n * n);
+  if (table.has("keyword")) {
+    if (!file) table.fail("file", "a table file for `keyword` (pair_coeff * * file keyword)");
+    std::fill(set.begin(), set.end(), TableCoeff{table, *file, table.get_string("keyword"), cutoff});
+  }
+  for (const auto& pair : table.tables("pair")) {
+    const auto types = pair.get_ints("types", 2, Range::closed(1, ntypes));
+    std::filesystem::path pair_file;
+    if (pair.has("file")) pair_file = find_potential_file(pair, "file", case_dir);
+    else if (file) pair_file = *file;
+    else pair.fail("file", "a table file, here or in [potential]");
+    const auto pair_cutoff = optional_cutoff(pair);
+    const TableCoeff c{pair, pair_file, pair.get_string("keyword"), pair_cutoff ? pair_cutoff : cutoff};
+    const auto i = static_cast<std::size_t>(types[0] - 1), j = static_cast<std::size_t>(types[1] - 1);
+    set[i * n + j] = set[j * n + i] = c;
+  }
+  std::vector<InnerTable> tables;
+  std::vector<int> pair_table(n * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i; j < n; ++j) {
+      if (!set[i * n + j])
+        table.fail("pair", fmt::format("a table for type pair {} {} (`keyword`, or a [[potential.pair]] "
+                                       "with types = [{}, {}]; LAMMPS does not mix tables)", i + 1, j + 1, i + 1, j + 1));
+      pair_table[i * n + j] = pair_table[j * n + i] = static_cast<int>(tables.size());
+      tables.push_back(tabulate(*set[i * n + j], interpolation, points));
+    }
+  }
+  return std::make_unique<TablePotential>(interpolation, ntypes, std::move(tables), std::move(pair_table));
+}
+
 // The explicit style table.
 const std::vector<std::pair<std::string, Factory>>& factories() {
   static const std::vector<std::pair<std::string, Factory>> table{
       {"lj/cut", make_lj_cut},
+      {"table", make_table},
       {"eam", make_funcfl},
       {"eam/alloy", [](const Config& c, const std::filesystem::path& d, int n) { return make_setfl(c, d, n, false); }},
       {"eam/fs", [](const Config& c, const std::filesystem::path& d, int n) { return make_setfl(c, d, n, true); }},
