@@ -13,6 +13,7 @@
 #include "shockfield/md/case_file.hpp"
 #include "shockfield/materials/material_file.hpp"
 #include "shockfield/md/potentials/eam_file.hpp"
+#include "shockfield/md/potentials/pair_table_file.hpp"
 #include "shockfield/pd/point_cloud.hpp"
 #include "shockfield/phasefield/case_file.hpp"
 
@@ -43,6 +44,10 @@ void parse_eam(const fs::path& file) {
   if (name.ends_with(".eam.alloy")) md::potentials::read_setfl(file, false);
   else if (name.ends_with(".eam.fs")) md::potentials::read_setfl(file, true);
   else md::potentials::read_funcfl(file);
+}
+
+void parse_pair_table(const fs::path& file) {
+  for (const char* keyword : {"M11", "M22", "M12"}) md::potentials::read_pair_table(file, keyword);
 }
 
 void parse_data(const fs::path& file) { io::read_data(file); }

@@ -15,6 +15,8 @@ void parse_extxyz(const std::filesystem::path& file);
 void parse_field(const std::filesystem::path& file);
 /// An EAM file by its extension: .eam (funcfl), .eam.alloy (setfl), .eam.fs (Finnis-Sinclair).
 void parse_eam(const std::filesystem::path& file);
+/// A pair_style table file: its sections M11, M22 and M12 (those of the cross-check's pair.table).
+void parse_pair_table(const std::filesystem::path& file);
 /// A LAMMPS data file, periodic in x, y and z.
 void parse_data(const std::filesystem::path& file);
 /// A point set (`analyze geometry`): 2D for a .txt file, else 3D.

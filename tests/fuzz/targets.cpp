@@ -50,6 +50,20 @@ Target eam_target(const Context& c, const std::string& name, const fs::path& inp
           }};
 }
 
+// Every mutant of `input` runs the case tests/fixtures/fuzz/cases/<case_template> with @FILE@ its path.
+Target template_target(const Context& c, const std::string& name, const fs::path& input,
+                       const std::string& case_template) {
+  return {name, {input}, false, false, "case.toml", [c, case_template](const fs::path& file, const fs::path& work) {
+            const std::string text = read_text(c.source / "tests/fixtures/fuzz/cases" / case_template);
+            write_text(work / "case.toml", replace_all(text, "@FILE@", file.string()));
+            return run_case(c, work / "case.toml", work, {});
+          }};
+}
+
+// The Morse tables of the pair_style table cross-check (sections M11 with an r column and FPRIME,
+// M22 with R, M12 with RSQ).
+fs::path pair_table_input(const Context& c) { return c.source / "tests/fixtures/lammps_table/pair.table"; }
+
 // Every mutant of the checkpoint resumes a copy of the stopped run folder.
 Target checkpoint_target(const Context& c, const std::string& name, const fs::path& case_file, int steps) {
   const fs::path base = stopped_run(c, name, case_file, steps);
@@ -187,6 +201,7 @@ std::vector<Target> parser_targets(const Context& c) {
           in_process(c, "eam_funcfl", {kPotentials / "Cu_u3.eam"}, parse_eam),
           in_process(c, "eam_setfl", {kPotentials / "CuNi.eam.alloy"}, parse_eam),
           in_process(c, "eam_fs", {kPotentials / "NiAlH_jea.eam.fs"}, parse_eam),
+          in_process(c, "pair_table", {pair_table_input(c)}, parse_pair_table),
           in_process(c, "data", {c.source / "tests/fixtures/io/data_fcc.data"}, parse_data),
           in_process(c, "dump", dump_inputs(c), parse_dump),
           in_process(c, "extxyz", extxyz_inputs(c), parse_extxyz),
@@ -221,12 +236,8 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
   t.push_back(eam_target(c, "eam_funcfl", kPotentials / "Cu_u3.eam", {"eam", "Cu", "3.615", false}));
   t.push_back(eam_target(c, "eam_setfl", kPotentials / "CuNi.eam.alloy", {"eam/alloy", "Cu", "3.615", true}));
   t.push_back(eam_target(c, "eam_fs", kPotentials / "NiAlH_jea.eam.fs", {"eam/fs", "Ni", "3.52", true}));
-  t.push_back({"data", {c.source / "tests/fixtures/io/data_fcc.data"}, false, false, "case.toml",
-               [c](const fs::path& file, const fs::path& work) {
-                 const std::string text = read_text(c.source / "tests/fixtures/fuzz/cases/data.toml");
-                 write_text(work / "case.toml", replace_all(text, "@FILE@", file.string()));
-                 return run_case(c, work / "case.toml", work, {});
-               }});
+  t.push_back(template_target(c, "pair_table", pair_table_input(c), "pair_table.toml"));
+  t.push_back(template_target(c, "data", c.source / "tests/fixtures/io/data_fcc.data", "data.toml"));
   t.push_back(in_process(c, "dump", dump_inputs(c), parse_dump));
   t.push_back(in_process(c, "extxyz", extxyz_inputs(c), parse_extxyz));
   t.push_back(in_process(c, "field", field_inputs(c), parse_field));

@@ -44,18 +44,6 @@ class BadInput : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
-// Runs `f`, expecting an InputError whose message contains every fragment.
-template <class F>
-void expect_input_error(F&& f, const std::vector<std::string>& fragments) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError";
-  } catch (const InputError& e) {
-    for (const auto& s : fragments)
-      EXPECT_NE(std::string(e.what()).find(s), std::string::npos) << "'" << s << "' not in: " << e.what();
-  }
-}
-
 TEST_F(BadInput, TruncatedFuncflNamesFileLineAndTable) {
   const auto file = write("cut.eam", kPotentials / "Cu_u3.eam", 150);
   expect_input_error([&] { read_funcfl(file); },

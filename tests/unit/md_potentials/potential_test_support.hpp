@@ -1,4 +1,6 @@
 #pragma once
+#include <gtest/gtest.h>
+
 // Test support for tests/unit/md_potentials: atoms from a LAMMPS dump, one complete force
 // evaluation (ghosts, half list, evaluate_forces), potentials from TOML text.
 #include <filesystem>
@@ -7,6 +9,7 @@
 #include <vector>
 
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/error.hpp"
 #include "shockfield/geometry/box.hpp"
 #include "shockfield/md/atoms.hpp"
 #include "shockfield/md/potential.hpp"
@@ -49,5 +52,18 @@ struct LammpsDeviation {
 /// stress/atom NULL virial`) and compares with it and with `<base>.totals` (lines "energy E",
 /// "volume V", "pressure_virial p1 .. p6" of `compute pressure NULL virial`).
 LammpsDeviation compare_with_lammps(const std::string& base, const std::string& toml);
+
+/// Runs `f`, expecting an error of type E (InputError by default) whose message contains every
+/// fragment.
+template <class E = InputError, class F>
+void expect_input_error(F&& f, const std::vector<std::string>& fragments) {
+  try {
+    f();
+    ADD_FAILURE() << "no error";
+  } catch (const E& e) {
+    for (const auto& s : fragments)
+      EXPECT_NE(std::string(e.what()).find(s), std::string::npos) << "'" << s << "' not in: " << e.what();
+  }
+}
 
 }  // namespace shockfield::md::potentials::testing
