@@ -2,7 +2,7 @@
 // Potentials by name, from the [potential] table of a case file:
 //
 //   [potential]                       # EAM: one LAMMPS potential file
-//   style = "eam/alloy"               # "eam" (funcfl), "eam/alloy" (setfl), "eam/fs", "lj/cut"
+//   style = "eam/alloy"               # "eam" (funcfl), "eam/alloy" (setfl), "eam/fs", "lj/cut", "table"
 //   file = "CuNi.eam.alloy"           # relative to the case file's folder, then
 //                                     # $LAMMPS_POTENTIALS, /usr/share/lammps/potentials
 //   elements = ["Cu", "Ni"]           # eam/alloy, eam/fs: element of atom types 1..n
@@ -19,6 +19,17 @@
 //   epsilon = 0.02
 //   sigma = 3.0
 //   cutoff = 7.0                      # optional, default the global cutoff
+//
+//   [potential]                       # tabulated pair potential (LAMMPS pair_style table)
+//   style = "table"
+//   interpolation = "linear"          # or "spline" (pair_style table linear 1000)
+//   points = 1000                     # N of the inner table, >= 2
+//   file = "pair.table"               # default file of every pair; relative as for EAM files
+//   keyword = "LJ"                    # optional: every pair (pair_coeff * * pair.table LJ)
+//   cutoff = 8.0                      # optional, Å; default the section's last distance
+//   [[potential.pair]]                # pair_coeff i j [file] keyword [cutoff]; no mixing:
+//   types = [1, 2]                    # every type pair needs a table
+//   keyword = "LJ12"
 //
 // Every value is read through Config, so a mistake names the case file, the key and its line.
 // The MD driver calls
