@@ -10,17 +10,9 @@
 # load-independent ratio.
 # Usage: bench/run_md_bench.sh [RUNS=5]    (repository root; Release build in build/release)
 # Prints a Markdown section for bench/RESULTS.md.
-set -euo pipefail
-runs=${1:-5}
-root=$(cd "$(dirname "$0")/.." && pwd)
-sf=${SHOCKFIELD:-$root/build/release/shockfield}
-work=$(mktemp -d /tmp/md_bench.XXXXXX)
-trap 'rm -rf "$work"' EXIT
+bench_name=md_bench
+source "$(dirname "$0")/md_bench_lib.bash" "$@"
 export LAMMPS_POTENTIALS=${LAMMPS_POTENTIALS:-/usr/share/lammps/potentials}
-atoms=32000
-steps=100
-
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 # Peak RSS (kB) of the command in "$work/time.txt" (written by /usr/bin/time -v).
 peak_kb() { awk -F': ' '/Maximum resident set size/ {print $2}' "$work/time.txt"; }
 

@@ -123,6 +123,12 @@ TEST_F(PairTableBadInput, MalformedLines) {
                      {"t.table", "unexpected end of file after 2 of the 3 lines of section B"});
 }
 
+TEST_F(PairTableBadInput, ValuesThatOverflowTheSplines) {
+  // Finite in the file, infinite once splined (found by the fuzzer: a SIGSEGV before).
+  expect_input_error([&] { potential_from_toml(toml(write("2 3.0 0.2 0.5", "2 3.0 0.2 1e308"), "A"), 1); },
+                     {"potential.keyword", "t.table section A", "non-finite energy or force"});
+}
+
 TEST_F(PairTableBadInput, BitmapIsRefused) {
   expect_input_error([&] { read_pair_table(write("N 3 R 2.0 4.0", "N 4 BITMAP 2.0 4.0"), "B"); },
                      {"t.table:12:", "BITMAP tables", "not supported"});

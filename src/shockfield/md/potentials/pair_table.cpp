@@ -75,6 +75,18 @@ void node_spline(std::vector<InnerTable::Node>& node, Member value, Member secon
   for (std::size_t k = 0; k < node.size(); ++k) node[k].*second = y2[k];
 }
 
+// The table, or an InputError when a value overflowed (a file value near 1e308 splined).
+InnerTable check_finite(InnerTable t) {
+  for (std::size_t k = 0; k < t.node.size(); ++k) {
+    const auto& n = t.node[k];
+    if (!std::isfinite(n.e) || !std::isfinite(n.f) || !std::isfinite(n.de) || !std::isfinite(n.df))
+      throw InputError(fmt::format("the table {} gives a non-finite energy or force at r = {} Å once "
+                                   "interpolated: are its values (or FPRIME) near the largest double?",
+                                   t.source, std::sqrt(n.rsq)));
+  }
+  return t;
+}
+
 }  // namespace
 
 InnerTable build_inner_table(const PairTableSection& s, TableInterpolation interpolation, int points,
@@ -113,7 +125,7 @@ InnerTable build_inner_table(const PairTableSection& s, TableInterpolation inter
       t.node[k].de = t.node[k + 1].e - t.node[k].e;
       t.node[k].df = t.node[k + 1].f - t.node[k].f;
     }
-    return t;
+    return check_finite(std::move(t));
   }
   // Spline in s = r²: dE/ds = −F/(2r) at both ends.
   const double inner = std::sqrt(t.innersq);
@@ -136,7 +148,7 @@ InnerTable build_inner_table(const PairTableSection& s, TableInterpolation inter
   }
   for (auto& node : t.node) node.f /= std::sqrt(node.rsq);
   node_spline(t.node, &InnerTable::Node::f, &InnerTable::Node::df, fp0, fpn);
-  return t;
+  return check_finite(std::move(t));
 }
 
 namespace {
@@ -163,8 +175,9 @@ struct TableKernel {
   bool operator()(int i, int j, double rsq, double& fpair, double& energy) const {
     const PairView& p = views[type[i] * ntypes + type[j]];
     if (rsq >= p.cutsq) return false;
-    const int k = table_bin(rsq, p.innersq, p.invdelta);
-    if (rsq < p.innersq || k >= p.bins) {
+    // A NaN distance (atoms gone non-finite) is outside too: int(NaN) would index anywhere.
+    const int k = rsq >= p.innersq ? table_bin(rsq, p.innersq, p.invdelta) : -1;
+    if (k < 0 || k >= p.bins) {
       outside->store(true, std::memory_order_relaxed);
       return false;
     }
