@@ -18,8 +18,9 @@ Evaluation evaluate_on(int threads, const System& system, Potential& potential) 
   return e;
 }
 
+// `fixture`: a dump under fixtures/, without ".dump".
 void expect_same(const std::string& fixture, const std::string& toml) {
-  const System system = load_dump_system("fixtures/lammps/" + fixture + ".dump");
+  const System system = load_dump_system("fixtures/" + fixture + ".dump");
   auto potential = potential_from_toml(toml, system.atoms.ntypes());
   const Evaluation one = evaluate_on(1, system, *potential);
   const Evaluation two = evaluate_on(2, system, *potential);
@@ -34,13 +35,19 @@ void expect_same(const std::string& fixture, const std::string& toml) {
 }
 
 TEST(Threads, EamResultsDoNotDependOnTheThreadCount) {
-  expect_same("cuni_void", "[potential]\nstyle = \"eam/alloy\"\nfile = \"CuNi.eam.alloy\"\n"
+  expect_same("lammps/cuni_void", "[potential]\nstyle = \"eam/alloy\"\nfile = \"CuNi.eam.alloy\"\n"
                            "elements = [\"Cu\", \"Ni\"]\n");
 }
 
 TEST(Threads, LjResultsDoNotDependOnTheThreadCount) {
-  expect_same("lj_void", "[potential]\nstyle = \"lj/cut\"\ncutoff = 8.5\nepsilon = 0.0104\n"
+  expect_same("lammps/lj_void", "[potential]\nstyle = \"lj/cut\"\ncutoff = 8.5\nepsilon = 0.0104\n"
                          "sigma = 3.4\n");
+}
+
+TEST(Threads, TableResultsDoNotDependOnTheThreadCount) {
+  expect_same("lammps_table/spline_300_cut",
+              "[potential]\nstyle = \"table\"\ninterpolation = \"spline\"\npoints = 300\n"
+              "file = \"fixtures/lammps_table/pair.table\"\nkeyword = \"M12\"\n");
 }
 
 }  // namespace
