@@ -27,7 +27,7 @@ struct ForceResult {
 class Potential {
  public:
   virtual ~Potential() = default;
-  /// LAMMPS pair style name ("eam", "eam/alloy", "eam/fs", "lj/cut").
+  /// LAMMPS pair style name ("eam", "eam/alloy", "eam/fs", "lj/cut", "table").
   virtual std::string style() const = 0;
   /// Interaction cutoff, Å.
   virtual double cutoff() const = 0;
