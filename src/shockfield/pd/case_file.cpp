@@ -143,6 +143,7 @@ PdCase read_pd_case(const Config& root) {
   const Config loading = root.table("loading");
   loading.get_choice_or("type", {"impact"}, "impact");
   c.impact_speed = loading.get_double("speed", Range::positive());
+  for (const Config& t : root.tables("crack")) c.cracks.push_back(read_crack(t, c.body.dim));
   const auto output = root.optional_table("output");
   c.output = read_output(output, c.solver.end_time);
   if (output && c.solver.time_step) check_intervals_against_step(*output, c.output, *c.solver.time_step);

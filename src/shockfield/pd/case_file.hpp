@@ -16,6 +16,7 @@
 #include "shockfield/pd/crystal_case.hpp"
 #include "shockfield/pd/family.hpp"
 #include "shockfield/pd/influence.hpp"
+#include "shockfield/pd/precrack.hpp"
 
 namespace shockfield::pd {
 
@@ -57,11 +58,12 @@ struct PdCase {
   std::variant<SmallStrainJ2, CrystalSpec, PmbSpec, LpsSpec> material;
   SolverSpec solver;
   double impact_speed = 0.0;  ///< left half at +v, right half at rest [m/s]
+  std::vector<Crack> cracks;  ///< [[crack]]: bonds cut before the first step
   OutputSpec output;
   std::vector<std::string> material_notes;  ///< the material file used: path, SHA-256, provenance (for the log)
 };
 
-/// Reads [body], [material], [solver], [loading] and [output].
+/// Reads [body], [material], [solver], [loading], [[crack]] and [output].
 PdCase read_pd_case(const Config& root);
 
 }  // namespace shockfield::pd

@@ -96,7 +96,7 @@ struct ModelRun {
 // Correspondence (J2 or crystal): σ, the plastic measure and the material state of every point.
 template <class Spec>
 ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const PointCloud& cloud,
-                    const Family& family) {
+                    const Family& family, const std::vector<unsigned char>&) {
   auto [materials, grain] = point_materials(spec, cloud);
   using Force = CorrespondenceForce<typename std::decay_t<decltype(materials)>::value_type>;
   std::unique_ptr<Force> model;
@@ -121,11 +121,12 @@ ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const
 
 // PMB or LPS: no stress nor plastic measure (NaN columns), damage only; the checkpoint keeps the
 // bonds' intact flags and the points' critical stretches (BondForce::saved_state); the contact
-// force has no state (contact.hpp).
+// force has no state (contact.hpp). The bonds a pre-crack cuts are broken before the first step.
 template <class Law>
 ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, const PointCloud& cloud,
-                    const Family& family) {
+                    const Family& family, const std::vector<unsigned char>& cut) {
   auto model = std::make_unique<BondForce<Law>>(cloud, family, spec.law, c.body.influence, spec.damage, spec.contact);
+  if (!cut.empty()) model->break_bonds(cut);
   BondForce<Law>& force = *model;
   ModelRun run{nullptr,
                spec.density,
@@ -135,6 +136,39 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
                {}};
   run.force = std::move(model);
   return run;
+}
+
+// The family a model runs on and the bonds the pre-cracks cut (precrack.hpp): the bond models keep
+// the cut bonds in their family (broken from step 0, counted in the damage); the correspondence
+// models, which have no broken-bond state, run on the family without them.
+struct CrackedFamily {
+  Family family;
+  std::vector<unsigned char> cut;  ///< per bond of `family`, for the bond models (empty: none cut)
+  std::size_t cut_count = 0;       ///< bonds cut (each counted from both ends)
+};
+
+// `whole`: the body is the case's own (not --check's sub-body), so a crack that cuts no bond of it
+// lies outside the body or along a lattice line: refused under its [[crack]] table.
+CrackedFamily cracked_family(const Config& root, const PdCase& c, const PointCloud& cloud, const BodySpec& body,
+                             bool whole) {
+  CrackedFamily f{build_family(cloud, body.horizon(), body.correction), {}, 0};
+  if (c.cracks.empty()) return f;
+  std::vector<std::size_t> cut_by;
+  std::vector<unsigned char> cut = cut_bonds(cloud, f.family, c.cracks, &cut_by);
+  const auto [lo, hi] = cloud.bounds();
+  for (std::size_t k = 0; k < cut_by.size() && whole; ++k)
+    if (cut_by[k] == 0)
+      root.tables("crack")[k].fail(c.body.dim == 2 ? "from" : "vertices",
+                                   fmt::format("the crack cuts no bond of the body (points from ({}, {}, {}) to ({}, {}, "
+                                               "{}) m): it lies outside the body, or along a row of points",
+                                               lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]));
+  f.cut_count = static_cast<std::size_t>(std::count(cut.begin(), cut.end(), 1));
+  const bool bond_model = std::holds_alternative<PmbSpec>(c.material) || std::holds_alternative<LpsSpec>(c.material);
+  if (bond_model)
+    f.cut = std::move(cut);
+  else
+    f.family = without_bonds(f.family, cut);
+  return f;
 }
 
 // The body --check builds the model on: at most 4⌈m⌉ + 1 points along each axis (m the horizon
@@ -182,8 +216,9 @@ class PdMethod final : public Method {
   PdMethod(const Config& root, const PdCase& c, bool check)
       : c_(c), built_(check ? checked_body(c_.body) : c_.body),
         cloud_(lattice_cloud(built_.dim, built_.counts, built_.spacing)),
-        family_(build_family(cloud_, built_.horizon(), built_.correction)),
-        model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, family_); }, c_.material)),
+        cracked_(cracked_family(root, c_, cloud_, built_, !check)), family_(cracked_.family),
+        model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, family_, cracked_.cut); },
+                          c_.material)),
         sim_(cloud_, family_, std::move(model_.force), {model_.density}), stable_(sim_.stable_step()),
         dt_(c_.solver.time_step.value_or(c_.solver.safety * stable_)), tol_(1e-9 * dt_) {
     if (dt_ > stable_)
@@ -283,6 +318,9 @@ class PdMethod final : public Method {
   void open(RunContext& run, std::optional<ResumePoint> resume) {
     log_ = &run.log;
     for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
+    if (!c_.cracks.empty())
+      log_->info("pre-cracks: {} crack(s) cut {} bonds ({})", c_.cracks.size(), cracked_.cut_count / 2,
+                 cracked_.cut.empty() ? "left out of the correspondence family" : "broken from step 0");
     output_.emplace(run.folder, model_.fields, c_.output, total_steps(), resume);
     if (!finished())
       log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
@@ -315,7 +353,8 @@ class PdMethod final : public Method {
   PdCase c_;
   BodySpec built_;  ///< c_.body, or for --check its sub-body
   PointCloud cloud_;
-  Family family_;
+  CrackedFamily cracked_;
+  const Family& family_;  ///< cracked_.family
   ModelRun model_;
   Simulation sim_;
   double stable_, dt_, tol_;
