@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# PD loading and geometry from case files (docs/pd.md): a pre-cracked plate runs with damage along
-# its crack and none elsewhere, and bad [[crack]] tables are refused before the run with the file,
-# key and what was expected (a crack outside the body, a zero-length crack, a corner of the wrong
-# dimension, a crack in a 1D bar, a non-planar polygon in 3D).
+# PD loading and geometry from case files (docs/pd.md): a pre-cracked plate whose edge is pushed
+# at a prescribed velocity runs with damage along its crack and none elsewhere, the pushed edge at
+# x + v·t and v, and stopped and resumed gives the same files bitwise; bad [[crack]] and [[region]]
+# tables are refused before the run with the file, key and what was expected (a crack outside the
+# body, a zero-length crack, a corner of the wrong dimension, a crack in a 1D bar, a non-planar
+# polygon in 3D; a region selecting no point, with both or neither velocity, a velocity of the
+# wrong size, no loading at all).
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
-case="$ROOT/tests/cli/cases/pd_plate_precrack.toml"
+case="$ROOT/tests/cli/cases/pd_plate_loading.toml"
 plate=$(cat "$case")
 "$SF" run "$case" --output "$WORK/plate" -q > /dev/null
 grep -q "pre-cracks: 1 crack(s) cut" "$WORK/plate/log.txt" || fail "the log does not report the cut bonds"
@@ -23,6 +26,18 @@ for point in "0.019 0.015" "0.005 0.005" "0.035 0.005"; do
   [ "$(damage_at $point)" = "0" ] || fail "damage away from the crack at ($point): $(damage_at $point)"
 done
 echo "ok: pre-cracked plate damaged along its crack only"
+# The pushed edge (x <= 2.5 mm) at t = 2 µs: ux = 20 m/s · 2 µs = 4e-5 m, vx = 20 m/s (profile digits).
+awk -F, 'NR > 1 && $1 <= 0.0025 { if ($4 != 4e-05 || $5 != 20 || $6 != 0) bad = bad " " $1 "," $2 ": " $4 " " $5 " " $6; n++ }
+         END { if (bad != "" || n != 60) { print n " points, held wrongly:" bad; exit 1 } }' \
+  "$WORK/plate/profiles/profile_0.csv" || fail "the prescribed edge did not move at exactly 20 m/s"
+echo "ok: the 60 points of the pushed edge at x + v·t with v"
+echo "${plate/series_interval = 1e-7/series_interval = 1e-7
+profile_interval = 5e-7}" > "$WORK/resume.toml"
+"$SF" run "$WORK/resume.toml" --output "$WORK/straight" -q > /dev/null
+stop_then_resume "$WORK/resume.toml" "$WORK/split" 7
+same_files "$WORK/straight" "$WORK/split" series.csv profiles/index.csv \
+  $(cd "$WORK/straight" && ls profiles/profile_*.csv profiles/points_*.vtp)
+echo "ok: held region and pre-crack resumed bitwise"
 
 crack='from = [19.5e-3, -1e-3]
 to = [19.5e-3, 9.5e-3]'
@@ -46,4 +61,16 @@ vertices = [5e-3, -1e-3, -1e-3, 5e-3, 9e-3, -1e-3, 5e-3, 9e-3, 9e-3, 5.1e-3, -1e
 expect_error "$block
 [[crack]]
 vertices = [5e-3, -1e-3, -1e-3, 5e-3, 9e-3, -1e-3]" "crack[0].vertices" "at least three corners"
+edge='xhi = 2.5e-3
+prescribed_velocity = [20.0, 0.0]'
+expect_error "${plate/"$edge"/xlo = 50e-3
+prescribed_velocity = [20.0, 0.0]}" "region[0].shape" "selects no point of the body"
+expect_error "${plate/"$edge"/xhi = 2.5e-3
+velocity = [1.0, 0.0]
+prescribed_velocity = [20.0, 0.0]}" "region[0]" "exactly one of velocity"
+expect_error "${plate/"$edge"/xhi = 2.5e-3}" "region[0]" "exactly one of velocity"
+expect_error "${plate/"$edge"/xhi = 2.5e-3
+prescribed_velocity = [20.0, 0.0, 0.0]}" "region[0].prescribed_velocity" "2 numbers"
+expect_error "${plate/shape = \"sphere\"/shape = \"cone\"}" "region[1].shape" "expected one of"
+expect_error "$(sed '/^\[loading\]/,/^speed/d' <<< "$bar")" "loading" "missing required table [loading]"
 echo "pd_loading: all cases passed"

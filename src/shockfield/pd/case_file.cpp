@@ -140,9 +140,14 @@ PdCase read_pd_case(const Config& root) {
   c.material = read_material(root.table("material"), c.material_notes);
   if (auto* lps = std::get_if<LpsSpec>(&c.material)) lps->law.dim = c.body.dim;  // the 1D/2D/3D LPS
   c.solver = read_solver(root.table("solver"));
-  const Config loading = root.table("loading");
-  loading.get_choice_or("type", {"impact"}, "impact");
-  c.impact_speed = loading.get_double("speed", Range::positive());
+  for (const Config& t : root.tables("region"))
+    c.regions.push_back(read_load_region(t, c.body.dim, c.body.counts, c.body.spacing));
+  if (const auto loading = root.optional_table("loading")) {
+    loading->get_choice_or("type", {"impact"}, "impact");
+    c.impact_speed = loading->get_double("speed", Range::positive());
+  } else if (c.regions.empty()) {
+    root.fail("loading", "missing required table [loading] (or [[region]] tables giving velocities)");
+  }
   for (const Config& t : root.tables("crack")) c.cracks.push_back(read_crack(t, c.body.dim));
   const auto output = root.optional_table("output");
   c.output = read_output(output, c.solver.end_time);

@@ -51,7 +51,8 @@ void derive_material(const Config& root, const PdCase& c, const std::vector<Smal
   root.derive("elastic_wave_speed_m_s", cl);
   root.derive("plastic_wave_speed_m_s", cp);
   root.derive("hel_Pa", hel);
-  root.derive("impact_axial_stress_Pa", up <= u_hel ? rho * cl * up : hel + rho * cp * (up - u_hel));
+  if (c.impact_speed > 0.0)
+    root.derive("impact_axial_stress_Pa", up <= u_hel ? rho * cl * up : hel + rho * cp * (up - u_hel));
 }
 
 // Crystal: the elastic wave speed along x and the Schmid factor of a single crystal, the grain
@@ -246,6 +247,7 @@ class PdMethod final : public Method {
 
   void start(RunContext& run) override {
     set_impact_velocity(sim_, c_.impact_speed);
+    apply_regions(sim_, c_.regions, true);
     sim_.setup();
     open(run, std::nullopt);
     write_due();
@@ -254,6 +256,7 @@ class PdMethod final : public Method {
     std::vector<double> state;
     counters_ = read_checkpoint(run.checkpoint, sim_, state);
     model_.restore(state);
+    apply_regions(sim_, c_.regions, false);
     open(run, ResumePoint{sim_.step_count(), counters_.profiles, sim_.time()});
   }
   bool finished() const override { return !(sim_.time() < c_.solver.end_time - tol_); }
