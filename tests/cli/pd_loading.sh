@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # PD loading and geometry from case files (docs/pd.md): a pre-cracked plate whose edge is pushed
 # at a prescribed velocity runs with damage along its crack and none elsewhere, the pushed edge at
-# x + v·t and v, and stopped and resumed gives the same files bitwise; bad [[crack]] and [[region]]
+# x + v·t and v, and stopped and resumed gives the same files bitwise; the J2 plate runs with the
+# same crack left out of its families; bad [[crack]] and [[region]]
 # tables are refused before the run with the file, key and what was expected (a crack outside the
 # body, a zero-length crack, a corner of the wrong dimension, a crack in a 1D bar, a non-planar
 # polygon in 3D; a region selecting no point, with both or neither velocity, a velocity of the
@@ -11,6 +12,7 @@ set -e
 export OMP_NUM_THREADS=1
 case="$ROOT/tests/cli/cases/pd_plate_loading.toml"
 plate=$(cat "$case")
+"$SF" run "$case" --check | grep -q "valid pd case (800 points" || fail "--check does not report the case"
 "$SF" run "$case" --output "$WORK/plate" -q > /dev/null
 grep -q "pre-cracks: 1 crack(s) cut" "$WORK/plate/log.txt" || fail "the log does not report the cut bonds"
 # damage_at X_M Y_M: the damage column of the last profile at that reference point.
@@ -38,11 +40,27 @@ stop_then_resume "$WORK/resume.toml" "$WORK/split" 7
 same_files "$WORK/straight" "$WORK/split" series.csv profiles/index.csv \
   $(cd "$WORK/straight" && ls profiles/profile_*.csv profiles/points_*.vtp)
 echo "ok: held region and pre-crack resumed bitwise"
+# The correspondence model (J2) runs on the family without the cut bonds (damage stays 0).
+j2="${plate/model = \"lps\"/model = \"j2\"}"
+j2="${j2/bulk = 158e9
+shear = 73e9
+critical_stretch = 0.01/young = 190e9
+poisson = 0.3
+yield_stress = 1.9e9}"
+echo "$j2" > "$WORK/j2.toml"
+"$SF" run "$WORK/j2.toml" --output "$WORK/j2" -q > /dev/null
+grep -q "pre-cracks: 1 crack(s) cut 169 bonds (left out of the correspondence family)" "$WORK/j2/log.txt" ||
+  fail "J2 pre-crack not reported: $(grep pre-cracks "$WORK/j2/log.txt")"
+grep -q "pre-cracks: 1 crack(s) cut 169 bonds (broken from step 0)" "$WORK/plate/log.txt" ||
+  fail "LPS pre-crack count differs from J2's: $(grep pre-cracks "$WORK/plate/log.txt")"
+echo "ok: J2 plate with the same crack (169 bonds) runs"
 
 crack='from = [19.5e-3, -1e-3]
 to = [19.5e-3, 9.5e-3]'
 expect_error "${plate/"$crack"/from = [50e-3, -1e-3]
 to = [50e-3, 9.5e-3]}" "case.toml" "crack[0].from" "cuts no bond of the body"
+"$SF" run "$WORK/case.toml" --check > /dev/null 2> "$WORK/check.txt" && fail "--check passed a crack outside the body"
+grep -qF "crack[0].from" "$WORK/check.txt" || fail "--check does not name the crack: $(cat "$WORK/check.txt")"
 expect_error "${plate/"$crack"/from = [1e-3, 1e-3]
 to = [1e-3, 1e-3]}" "crack[0].to" "same point"
 expect_error "${plate/"$crack"/from = [1e-3, 1e-3, 0.0]

@@ -148,7 +148,15 @@ PdCase read_pd_case(const Config& root) {
   } else if (c.regions.empty()) {
     root.fail("loading", "missing required table [loading] (or [[region]] tables giving velocities)");
   }
-  for (const Config& t : root.tables("crack")) c.cracks.push_back(read_crack(t, c.body.dim));
+  for (const Config& t : root.tables("crack")) {
+    c.cracks.push_back(read_crack(t, c.body.dim));
+    const auto& n = c.body.counts;
+    if (!cuts_a_lattice_bond(c.cracks.back(), c.body.dim, n, c.body.spacing, c.body.horizon()))
+      t.fail(c.body.dim == 2 ? "from" : "vertices",
+             fmt::format("the crack cuts no bond of the body (points from (0, 0, 0) to ({}, {}, {}) m): it lies "
+                         "outside the body",
+                         (n[0] - 1) * c.body.spacing, (n[1] - 1) * c.body.spacing, (n[2] - 1) * c.body.spacing));
+  }
   const auto output = root.optional_table("output");
   c.output = read_output(output, c.solver.end_time);
   if (output && c.solver.time_step) check_intervals_against_step(*output, c.output, *c.solver.time_step);

@@ -105,16 +105,39 @@ Crack read_crack(const Config& t, int dim) {
   return Crack(dim, std::move(v));
 }
 
-std::vector<unsigned char> cut_bonds(const PointCloud& cloud, const Family& family, const std::vector<Crack>& cracks,
-                                     std::vector<std::size_t>* cut_by) {
+bool cuts_a_lattice_bond(const Crack& crack, int dim, const std::array<int, 3>& counts, double spacing, double horizon) {
+  const int reach = static_cast<int>(std::floor(horizon / spacing * (1.0 + 1e-9)));
+  const double cut2 = horizon * horizon * (1.0 + 1e-12);  // build_family's cut-off
+  std::array<int, 3> first{0, 0, 0}, last{0, 0, 0}, span{0, 0, 0};
+  for (int d = 0; d < dim; ++d) {
+    const double lo = std::floor((crack.lo()[d] - horizon) / spacing), hi = std::ceil((crack.hi()[d] + horizon) / spacing);
+    first[d] = static_cast<int>(std::clamp(lo, 0.0, counts[d] - 1.0));
+    last[d] = static_cast<int>(std::clamp(hi, 0.0, counts[d] - 1.0));
+    span[d] = reach;
+  }
+  const auto at = [spacing](int i, int j, int k) { return Vec3(spacing * Vec3(i, j, k)); };
+  for (int k = first[2]; k <= last[2]; ++k)
+    for (int j = first[1]; j <= last[1]; ++j)
+      for (int i = first[0]; i <= last[0]; ++i)
+        for (int c = -span[2]; c <= span[2]; ++c)
+          for (int b = -span[1]; b <= span[1]; ++b)
+            for (int a = -span[0]; a <= span[0]; ++a) {
+              const int p = i + a, q = j + b, r = k + c;
+              if (p < 0 || q < 0 || r < 0 || p >= counts[0] || q >= counts[1] || r >= counts[2]) continue;
+              const Vec3 x = at(i, j, k), y = at(p, q, r);
+              if ((y - x).squaredNorm() <= cut2 && crack.cuts(x, y)) return true;
+            }
+  return false;
+}
+
+std::vector<unsigned char> cut_bonds(const PointCloud& cloud, const Family& family, const std::vector<Crack>& cracks) {
   std::vector<unsigned char> cut(family.bonds(), 0);
-  if (cut_by) cut_by->assign(cracks.size(), 0);
   for (std::size_t i = 0; i < cloud.size(); ++i)
     for (int b = family.begin(i); b < family.end(i); ++b)
-      for (std::size_t k = 0; k < cracks.size(); ++k)
-        if (cracks[k].cuts(cloud.x[i], cloud.x[static_cast<std::size_t>(family.neighbor[b])])) {
+      for (const Crack& crack : cracks)
+        if (crack.cuts(cloud.x[i], cloud.x[static_cast<std::size_t>(family.neighbor[b])])) {
           cut[static_cast<std::size_t>(b)] = 1;
-          if (cut_by) ++(*cut_by)[k];
+          break;
         }
   return cut;
 }

@@ -30,6 +30,8 @@ class Crack {
   /// Whether the bond from a to b crosses the crack (reference positions).
   bool cuts(const Vec3& a, const Vec3& b) const;
   const std::vector<Vec3>& vertices() const { return vertices_; }
+  const Vec3& lo() const { return lo_; }  ///< bounding box of the corners
+  const Vec3& hi() const { return hi_; }
 
  private:
   int dim_;
@@ -44,10 +46,13 @@ class Crack {
 /// on a line). A 1D body has no crack.
 Crack read_crack(const Config& t, int dim);
 
-/// Per bond of the family: 1 when some crack cuts it. `cut_by[k]` (when given) receives the
-/// number of bonds crack k cuts (each bond counted from both ends, as the family stores it).
-std::vector<unsigned char> cut_bonds(const PointCloud& cloud, const Family& family, const std::vector<Crack>& cracks,
-                                     std::vector<std::size_t>* cut_by = nullptr);
+/// Whether the crack cuts some bond of the lattice of `counts` points `spacing` apart from the
+/// origin (as lattice_cloud places them) with horizon δ (build_family's rule), found without
+/// building the body: only the points within δ of the crack's box are visited.
+bool cuts_a_lattice_bond(const Crack& crack, int dim, const std::array<int, 3>& counts, double spacing, double horizon);
+
+/// Per bond of the family: 1 when some crack cuts it (both stored copies of a bond).
+std::vector<unsigned char> cut_bonds(const PointCloud& cloud, const Family& family, const std::vector<Crack>& cracks);
 
 /// The family without the bonds flagged in `cut` (the correspondence models' pre-crack).
 Family without_bonds(const Family& family, const std::vector<unsigned char>& cut);

@@ -148,21 +148,10 @@ struct CrackedFamily {
   std::size_t cut_count = 0;       ///< bonds cut (each counted from both ends)
 };
 
-// `whole`: the body is the case's own (not --check's sub-body), so a crack that cuts no bond of it
-// lies outside the body or along a lattice line: refused under its [[crack]] table.
-CrackedFamily cracked_family(const Config& root, const PdCase& c, const PointCloud& cloud, const BodySpec& body,
-                             bool whole) {
+CrackedFamily cracked_family(const PdCase& c, const PointCloud& cloud, const BodySpec& body) {
   CrackedFamily f{build_family(cloud, body.horizon(), body.correction), {}, 0};
   if (c.cracks.empty()) return f;
-  std::vector<std::size_t> cut_by;
-  std::vector<unsigned char> cut = cut_bonds(cloud, f.family, c.cracks, &cut_by);
-  const auto [lo, hi] = cloud.bounds();
-  for (std::size_t k = 0; k < cut_by.size() && whole; ++k)
-    if (cut_by[k] == 0)
-      root.tables("crack")[k].fail(c.body.dim == 2 ? "from" : "vertices",
-                                   fmt::format("the crack cuts no bond of the body (points from ({}, {}, {}) to ({}, {}, "
-                                               "{}) m): it lies outside the body, or along a row of points",
-                                               lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]));
+  std::vector<unsigned char> cut = cut_bonds(cloud, f.family, c.cracks);
   f.cut_count = static_cast<std::size_t>(std::count(cut.begin(), cut.end(), 1));
   const bool bond_model = std::holds_alternative<PmbSpec>(c.material) || std::holds_alternative<LpsSpec>(c.material);
   if (bond_model)
@@ -217,7 +206,7 @@ class PdMethod final : public Method {
   PdMethod(const Config& root, const PdCase& c, bool check)
       : c_(c), built_(check ? checked_body(c_.body) : c_.body),
         cloud_(lattice_cloud(built_.dim, built_.counts, built_.spacing)),
-        cracked_(cracked_family(root, c_, cloud_, built_, !check)), family_(cracked_.family),
+        cracked_(cracked_family(c_, cloud_, built_)), family_(cracked_.family),
         model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, family_, cracked_.cut); },
                           c_.material)),
         sim_(cloud_, family_, std::move(model_.force), {model_.density}), stable_(sim_.stable_step()),
