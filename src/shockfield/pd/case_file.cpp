@@ -154,7 +154,7 @@ PdCase read_pd_case(const Config& root) {
     if (!cuts_a_lattice_bond(c.cracks.back(), c.body.dim, n, c.body.spacing, c.body.horizon()))
       t.fail(c.body.dim == 2 ? "from" : "vertices",
              fmt::format("the crack cuts no bond of the body (points from (0, 0, 0) to ({}, {}, {}) m): it lies "
-                         "outside the body",
+                         "outside the body or on its surface",
                          (n[0] - 1) * c.body.spacing, (n[1] - 1) * c.body.spacing, (n[2] - 1) * c.body.spacing));
   }
   const auto output = root.optional_table("output");

@@ -60,6 +60,8 @@ Crack::Crack(int dim, std::vector<Vec3> vertices) : dim_(dim), vertices_(std::mo
   lo_ = hi_ = vertices_.front();
   for (const Vec3& v : vertices_) lo_ = lo_.cwiseMin(v), hi_ = hi_.cwiseMax(v);
   if (dim_ == 3) span_ = spanning_corners(vertices_), normal_ = newell_normal(vertices_);
+  const Vec3 along = vertices_[1] - vertices_[0];
+  unit_normal_ = (dim_ == 3 ? normal_ : Vec3(-along.y(), along.x(), 0.0)).normalized();
 }
 
 bool Crack::cuts(const Vec3& a, const Vec3& b) const {
@@ -78,18 +80,22 @@ bool Crack::cuts(const Vec3& a, const Vec3& b) const {
   return inside_polygon(vertices_, normal_, a + (da / (da - db)) * (b - a));
 }
 
+// Corners within 1e50 m, as point files (geometry/point_file.cpp): the exact predicates multiply up
+// to three coordinate differences, which stay finite.
+const Range kCoordinate = Range::closed(-1e50, 1e50);
+
 Crack read_crack(const Config& t, int dim) {
   if (dim == 1) t.fail("from", "a 1D bar has no pre-crack (cracks need a 2D or 3D body)");
   std::vector<Vec3> v;
   if (dim == 2) {
     for (const char* key : {"from", "to"}) {
-      const auto p = t.get_doubles(key, 2);
+      const auto p = t.get_doubles(key, 2, kCoordinate);
       v.emplace_back(p[0], p[1], 0.0);
     }
     if (v[0] == v[1]) t.fail("to", "the crack's two ends are the same point (expected a segment)");
     return Crack(dim, std::move(v));
   }
-  const auto xyz = t.get_doubles("vertices", 0);
+  const auto xyz = t.get_doubles("vertices", 0, kCoordinate);
   if (xyz.size() % 3 != 0 || xyz.size() < 9)
     t.fail("vertices", fmt::format("{} numbers; expected the x, y, z of at least three corners (a multiple of 3)",
                                    xyz.size()));
@@ -118,7 +124,8 @@ bool cuts_a_lattice_bond(const Crack& crack, int dim, const std::array<int, 3>& 
   const auto at = [spacing](int i, int j, int k) { return Vec3(spacing * Vec3(i, j, k)); };
   for (int k = first[2]; k <= last[2]; ++k)
     for (int j = first[1]; j <= last[1]; ++j)
-      for (int i = first[0]; i <= last[0]; ++i)
+      for (int i = first[0]; i <= last[0]; ++i) {
+        if (crack.distance_to_support(at(i, j, k)) > horizon * (1.0 + 1e-9)) continue;  // no bond reaches it
         for (int c = -span[2]; c <= span[2]; ++c)
           for (int b = -span[1]; b <= span[1]; ++b)
             for (int a = -span[0]; a <= span[0]; ++a) {
@@ -127,6 +134,7 @@ bool cuts_a_lattice_bond(const Crack& crack, int dim, const std::array<int, 3>& 
               const Vec3 x = at(i, j, k), y = at(p, q, r);
               if ((y - x).squaredNorm() <= cut2 && crack.cuts(x, y)) return true;
             }
+      }
   return false;
 }
 

@@ -12,6 +12,7 @@
 // The bond models (pmb, lps) keep cut bonds as broken (they count in the damage); the
 // correspondence models run on the family without them (they have no broken-bond state).
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "shockfield/core/config.hpp"
@@ -32,12 +33,15 @@ class Crack {
   const std::vector<Vec3>& vertices() const { return vertices_; }
   const Vec3& lo() const { return lo_; }  ///< bounding box of the corners
   const Vec3& hi() const { return hi_; }
+  /// Distance of x from the crack's line (2D) or plane (3D).
+  double distance_to_support(const Vec3& x) const { return std::abs(unit_normal_.dot(x - vertices_.front())); }
 
  private:
   int dim_;
   std::vector<Vec3> vertices_;
   std::array<std::size_t, 3> span_{0, 1, 1};  ///< 3D: three corners spanning the plane
   Vec3 normal_ = Vec3::Zero();               ///< 3D: Newell's normal (not normalised)
+  Vec3 unit_normal_ = Vec3::Zero();          ///< of the line (2D, in the xy plane) or plane (3D)
   Vec3 lo_, hi_;                             ///< bounding box of the corners
 };
 
@@ -48,7 +52,8 @@ Crack read_crack(const Config& t, int dim);
 
 /// Whether the crack cuts some bond of the lattice of `counts` points `spacing` apart from the
 /// origin (as lattice_cloud places them) with horizon δ (build_family's rule), found without
-/// building the body: only the points within δ of the crack's box are visited.
+/// building the body: only the points within δ of the crack's box and of its line or plane are
+/// visited.
 bool cuts_a_lattice_bond(const Crack& crack, int dim, const std::array<int, 3>& counts, double spacing, double horizon);
 
 /// Per bond of the family: 1 when some crack cuts it (both stored copies of a bond).
