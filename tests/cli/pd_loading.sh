@@ -15,6 +15,9 @@ plate=$(cat "$case")
 "$SF" run "$case" --check | grep -q "valid pd case (800 points" || fail "--check does not report the case"
 "$SF" run "$case" --output "$WORK/plate" -q > /dev/null
 grep -q "pre-cracks: 1 crack(s) cut" "$WORK/plate/log.txt" || fail "the log does not report the cut bonds"
+grep -q "region 0: 60 points held at (20, 0, 0) m/s" "$WORK/plate/log.txt" || fail "the log does not report the held region"
+# The disc of radius 2.5 mm around the point (33, 15) mm: the 21 points within 2.5 spacings.
+grep -q "region 1: 21 points starting at (0, -5, 0) m/s" "$WORK/plate/log.txt" || fail "the log does not report the disc"
 # damage_at X_M Y_M: the damage column of the last profile at that reference point.
 damage_at() {
   awk -F, -v x="$1" -v y="$2" 'NR > 1 && $1 == x && $2 == y { print $NF }' "$WORK/plate/profiles/profile_0.csv"
