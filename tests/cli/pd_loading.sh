@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # PD loading and geometry from case files (docs/pd.md): a pre-cracked plate whose edge is pushed
 # at a prescribed velocity runs with damage along its crack and none elsewhere, the pushed edge at
-# x + v·t and v, and stopped and resumed gives the same files bitwise; the J2 plate runs with the
-# same crack left out of its families; bad [[crack]] and [[region]]
+# x + v·t and v, and stopped and resumed gives the same files bitwise (a disc of it a separate
+# body); the J2 plate runs with the same crack left out of its families; a block runs as striker
+# and target (separate bodies); bad [[crack]] and [[region]]
 # tables are refused before the run with the file, key and what was expected (a crack outside the
 # body, a zero-length crack, a corner of the wrong dimension, a crack in a 1D bar, a non-planar
 # polygon in 3D; a region selecting no point, with both or neither velocity, a velocity of the
-# wrong size, no loading at all).
+# wrong size, no loading at all, overlapping bodies, a separate body without contact).
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -17,7 +18,7 @@ plate=$(cat "$case")
 grep -q "pre-cracks: 1 crack(s) cut" "$WORK/plate/log.txt" || fail "the log does not report the cut bonds"
 grep -q "region 0: 60 points held at (20, 0, 0) m/s" "$WORK/plate/log.txt" || fail "the log does not report the held region"
 # The disc of radius 2.5 mm around the point (33, 15) mm: the 21 points within 2.5 spacings.
-grep -q "region 1: 21 points starting at (0, -5, 0) m/s" "$WORK/plate/log.txt" || fail "the log does not report the disc"
+grep -q "region 1: 21 points starting at (0, -5, 0) m/s, a separate body" "$WORK/plate/log.txt" || fail "the log does not report the disc"
 # damage_at X_M Y_M: the damage column of the last profile at that reference point.
 damage_at() {
   awk -F, -v x="$1" -v y="$2" 'NR > 1 && $1 == x && $2 == y { print $NF }' "$WORK/plate/profiles/profile_0.csv"
@@ -44,7 +45,9 @@ same_files "$WORK/straight" "$WORK/split" series.csv profiles/index.csv \
   $(cd "$WORK/straight" && ls profiles/profile_*.csv profiles/points_*.vtp)
 echo "ok: held region and pre-crack resumed bitwise"
 # The correspondence model (J2) runs on the family without the cut bonds (damage stays 0).
-j2="${plate/model = \"lps\"/model = \"j2\"}"
+j2="${plate/separate = true
+/}"
+j2="${j2/model = \"lps\"/model = \"j2\"}"
 j2="${j2/bulk = 158e9
 shear = 73e9
 critical_stretch = 0.01/young = 190e9
@@ -94,4 +97,27 @@ expect_error "${plate/"$edge"/xhi = 2.5e-3
 prescribed_velocity = [20.0, 0.0, 0.0]}" "region[0].prescribed_velocity" "2 numbers"
 expect_error "${plate/shape = \"sphere\"/shape = \"cone\"}" "region[1].shape" "expected one of"
 expect_error "$(sed '/^\[loading\]/,/^speed/d' <<< "$bar")" "loading" "missing required table [loading]"
+# Separate bodies: the block of pd_block_contact.toml as a striker (left half, a separate region at
+# 100 m/s) and a target (the rest, at rest), bonded to nothing across: it runs; overlapping bodies
+# and a separate body without the contact force (J2) are refused.
+striker='[[region]]
+shape = "block"
+xhi = 4.75e-3
+separate = true
+velocity = [100.0, 0.0, 0.0]'
+two_bodies=$(sed '/^\[loading\]/,/^speed/d' <<< "$block")
+echo "$two_bodies
+$striker" > "$WORK/two_bodies.toml"
+"$SF" run "$WORK/two_bodies.toml" --output "$WORK/two_bodies" -q --set solver.end_time=2e-5 > /dev/null
+grep -q "region 0: 640 points starting at (100, 0, 0) m/s, a separate body" "$WORK/two_bodies/log.txt" ||
+  fail "the striker is not reported: $(grep region "$WORK/two_bodies/log.txt")"
+echo "ok: striker and target as separate bodies of one lattice"
+expect_error "$two_bodies
+$striker
+[[region]]
+shape = \"block\"
+xlo = 4.25e-3
+separate = true" "region[1].separate" "overlaps the separate body of region[0]"
+expect_error "${j2/"$edge"/xhi = 2.5e-3
+separate = true}" "region[0].separate" "contact force"
 echo "pd_loading: all cases passed"

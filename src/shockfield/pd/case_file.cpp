@@ -140,8 +140,15 @@ PdCase read_pd_case(const Config& root) {
   c.material = read_material(root.table("material"), c.material_notes);
   if (auto* lps = std::get_if<LpsSpec>(&c.material)) lps->law.dim = c.body.dim;  // the 1D/2D/3D LPS
   c.solver = read_solver(root.table("solver"));
-  for (const Config& t : root.tables("region"))
+  const std::vector<Config> regions = root.tables("region");
+  const bool bond_model = std::holds_alternative<PmbSpec>(c.material) || std::holds_alternative<LpsSpec>(c.material);
+  for (const Config& t : regions) {
     c.regions.push_back(read_load_region(t, c.body.dim, c.body.counts, c.body.spacing));
+    if (c.regions.back().separate && !bond_model)
+      t.fail("separate", "a separate body touches the rest only through the short-range contact force, which "
+                         "model = \"pmb\" and \"lps\" have (expected one of them, or no separate body)");
+  }
+  check_bodies_apart(regions, c.regions, c.body.counts, c.body.spacing);
   if (const auto loading = root.optional_table("loading")) {
     loading->get_choice_or("type", {"impact"}, "impact");
     c.impact_speed = loading->get_double("speed", Range::positive());

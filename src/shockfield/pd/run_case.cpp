@@ -139,7 +139,8 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
   return run;
 }
 
-// The family a model runs on and the bonds the pre-cracks cut (precrack.hpp): the bond models keep
+// The family a model runs on, without the bonds between separate bodies, and the bonds the
+// pre-cracks cut (precrack.hpp): the bond models keep
 // the cut bonds in their family (broken from step 0, counted in the damage); the correspondence
 // models, which have no broken-bond state, run on the family without them.
 struct CrackedFamily {
@@ -150,6 +151,9 @@ struct CrackedFamily {
 
 CrackedFamily cracked_family(const PdCase& c, const PointCloud& cloud, const BodySpec& body) {
   CrackedFamily f{build_family(cloud, body.horizon(), body.correction), {}, 0};
+  // Separate bodies (regions.hpp) first: their bonds to the rest never existed.
+  if (std::any_of(c.regions.begin(), c.regions.end(), [](const LoadRegion& r) { return r.separate; }))
+    f.family = without_bonds(f.family, bonds_between_bodies(cloud, f.family, c.regions));
   if (c.cracks.empty()) return f;
   std::vector<unsigned char> cut = cut_bonds(cloud, f.family, c.cracks);
   f.cut_count = static_cast<std::size_t>(std::count(cut.begin(), cut.end(), 1));
@@ -315,8 +319,11 @@ class PdMethod final : public Method {
                  cracked_.cut.empty() ? "left out of the correspondence family" : "broken from step 0");
     for (std::size_t k = 0; k < c_.regions.size(); ++k) {
       const LoadRegion& r = c_.regions[k];
-      log_->info("region {}: {} points {} ({}, {}, {}) m/s", k, points_in(r.shape, cloud_).size(),
-                 r.prescribed ? "held at" : "starting at", r.velocity[0], r.velocity[1], r.velocity[2]);
+      const std::string velocity = !r.sets_velocity ? "keeping its velocity"
+          : fmt::format("{} ({}, {}, {}) m/s", r.prescribed ? "held at" : "starting at", r.velocity[0], r.velocity[1],
+                        r.velocity[2]);
+      log_->info("region {}: {} points {}{}", k, points_in(r.shape, cloud_).size(), velocity,
+                 r.separate ? ", a separate body" : "");
     }
     output_.emplace(run.folder, model_.fields, c_.output, total_steps(), resume);
     if (!finished())
