@@ -26,6 +26,13 @@
       axis before and after, in the standard stereographic triangle [001]-[101]-[111] (inverse
       pole figure; seed Fig. 5(a) shows the initial orientations); prints the mean angle from <110>.
 
+  pd_plots.py damage RUN_DIR [RUN_DIR ...] [--tips X,Y ...] [--labels L ...] [--out FILE]
+      a 2D run's damage at the last profile time on the reference positions (mm); for each notch
+      tip (m; by default the `to` end of each [[crack]] of the run), the angle of the crack it grew, from the notch direction +x: the principal
+      direction through the tip of the points with damage >= 0.35 ahead of it (x > tip x), more
+      than 1 mm off its line and within 25 mm (the Kalthoff-Winkler angle; prints and draws it,
+      beside the experiment's ~70 deg, Kalthoff & Winkler 1988, dotted).
+
 Reads profiles/index.csv, profiles/profile_<k>.csv and config.resolved.toml. Uses only numpy
 and matplotlib from Debian (run with /usr/bin/python3).
 """
@@ -33,6 +40,7 @@ import argparse
 import csv
 import os
 import re
+import tomllib
 
 import matplotlib
 
@@ -243,14 +251,68 @@ def orientations(runs, labels, out):
     fig.savefig(out, dpi=100)
 
 
+def crack_angle(x, y, damage, tip, reach=25.0):
+    """Angle (deg, from +x) and side (+1 up, -1 down) of the crack grown from `tip` (mm)."""
+    near = (damage >= 0.35) & (x > tip[0]) & (np.abs(y - tip[1]) > 1.0) & (np.hypot(x - tip[0], y - tip[1]) < reach)
+    if near.sum() < 3:
+        return None, 0
+    side = 1.0 if np.mean(y[near] - tip[1]) > 0 else -1.0
+    near &= side * (y - tip[1]) > 0
+    points = np.vstack([x[near] - tip[0], side * (y[near] - tip[1])]).T
+    direction = np.linalg.svd(points, full_matrices=False)[2][0]
+    return float(np.degrees(np.arctan2(abs(direction[1]), abs(direction[0])))), side
+
+
+def crack_tips(run):
+    """The `to` ends (m) of the run's [[crack]] tables."""
+    with open(os.path.join(run, "config.resolved.toml"), "rb") as f:
+        return [tuple(c["to"]) for c in tomllib.load(f).get("crack", [])]
+
+
+def damage(runs, labels, out, given_tips):
+    fig, axes = plt.subplots(1, len(runs), figsize=(4.2 * len(runs), 7.5), squeeze=False)
+    for ax, run, label in zip(axes[0], runs, labels):
+        tips = given_tips or crack_tips(run)
+        t, p = last_profile(run)
+        x, y, phi = 1e3 * p["x_m"], 1e3 * p["y_m"], p["damage"]
+        dots = ax.scatter(x, y, c=phi, s=3.0, cmap="inferno_r", vmin=0.0, vmax=0.5, marker="s", linewidths=0)
+        for tip in tips:
+            tip = (1e3 * tip[0], 1e3 * tip[1])
+            angle, side = crack_angle(x, y, phi, tip)
+            if angle is None:
+                print(f"{label}: no crack from the tip at ({tip[0]:.2f}, {tip[1]:.2f}) mm")
+                continue
+            print(f"{label}: crack from ({tip[0]:.2f}, {tip[1]:.2f}) mm at {angle:.1f} deg from the notch direction")
+            r = 25.0
+            a = np.radians(angle)
+            ax.plot([tip[0], tip[0] + r * np.cos(a)], [tip[1], tip[1] + side * r * np.sin(a)], "c--", lw=1)
+            ax.annotate(f"{angle:.0f}°", (tip[0] + 4 + r * np.cos(a), tip[1] + side * r * np.sin(a)), color="c")
+            e = np.radians(70.0)  # Kalthoff & Winkler (1988)
+            ax.plot([tip[0], tip[0] + r * np.cos(e)], [tip[1], tip[1] + side * r * np.sin(e)], ":", color="0.4", lw=1.2,
+                    label="experiment, ~70°" if side > 0 else None)
+        ax.set_aspect("equal")
+        if tips:
+            ax.legend(loc="lower right", fontsize=8)
+        ax.set_xlabel("x (mm, impact direction)")
+        ax.set_ylabel("y (mm)")
+        ax.set_title(f"{label}, t = {1e6 * t:.0f} µs")
+        fig.colorbar(dots, ax=ax, label="damage", shrink=0.6)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["bar", "crystal", "compression", "orientations"])
+    ap.add_argument("kind", choices=["bar", "crystal", "compression", "orientations", "damage"])
     ap.add_argument("runs", nargs="+")
     ap.add_argument("--labels", nargs="*")
     ap.add_argument("--out", default="bar.png")
+    ap.add_argument("--tips", nargs="*", default=[], help="notch tips X,Y in m (damage)")
     a = ap.parse_args()
     labels = a.labels or [os.path.basename(os.path.normpath(r)) for r in a.runs]
+    if a.kind == "damage":
+        damage(a.runs, labels, a.out, [tuple(float(v) for v in tip.split(",")) for tip in a.tips])
+        return
     {"bar": bar, "crystal": crystal, "compression": compression, "orientations": orientations}[a.kind](
         a.runs, labels, a.out)
 

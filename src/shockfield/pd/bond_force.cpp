@@ -34,6 +34,14 @@ BondForce<Model>::BondForce(const PointCloud& cloud, const Family& family, Model
 }
 
 template <class Model>
+void BondForce<Model>::break_bonds(const std::vector<unsigned char>& cut) {
+  if (cut.size() != intact_.size())
+    throw InputError(fmt::format("pd {}: {} cut flags for {} bonds", name(), cut.size(), intact_.size()));
+  for (std::size_t b = 0; b < cut.size(); ++b)
+    if (cut[b]) intact_[b] = 0;
+}
+
+template <class Model>
 BondTerms BondForce<Model>::terms(std::size_t i, int b, double e) const {
   const auto j = static_cast<std::size_t>(family_.neighbor[b]);
   return {family_.length[b], e, omega_[b], theta_[i], theta_[j], weighted_volume_[i], weighted_volume_[j]};

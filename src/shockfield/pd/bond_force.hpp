@@ -30,6 +30,10 @@ class BondForce final : public ForceModel {
   std::vector<double> damage() const override;
   std::string name() const override;
 
+  /// Breaks the bonds flagged 1 in `cut` (one flag per bond of the family: a pre-crack,
+  /// precrack.hpp) before the first step; they count in the damage like any broken bond.
+  void break_bonds(const std::vector<unsigned char>& cut);
+
   const std::vector<double>& weighted_volume() const { return weighted_volume_; }
   const std::vector<double>& dilatation() const { return theta_; }
   std::size_t intact_bonds() const;

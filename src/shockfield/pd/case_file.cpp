@@ -140,9 +140,30 @@ PdCase read_pd_case(const Config& root) {
   c.material = read_material(root.table("material"), c.material_notes);
   if (auto* lps = std::get_if<LpsSpec>(&c.material)) lps->law.dim = c.body.dim;  // the 1D/2D/3D LPS
   c.solver = read_solver(root.table("solver"));
-  const Config loading = root.table("loading");
-  loading.get_choice_or("type", {"impact"}, "impact");
-  c.impact_speed = loading.get_double("speed", Range::positive());
+  const std::vector<Config> regions = root.tables("region");
+  const bool bond_model = std::holds_alternative<PmbSpec>(c.material) || std::holds_alternative<LpsSpec>(c.material);
+  for (const Config& t : regions) {
+    c.regions.push_back(read_load_region(t, c.body.dim, c.body.counts, c.body.spacing));
+    if (c.regions.back().separate && !bond_model)
+      t.fail("separate", "a separate body touches the rest only through the short-range contact force, which "
+                         "model = \"pmb\" and \"lps\" have (expected one of them, or no separate body)");
+  }
+  check_bodies_apart(regions, c.regions, c.body.counts, c.body.spacing);
+  if (const auto loading = root.optional_table("loading")) {
+    loading->get_choice_or("type", {"impact"}, "impact");
+    c.impact_speed = loading->get_double("speed", Range::positive());
+  } else if (c.regions.empty()) {
+    root.fail("loading", "missing required table [loading] (or [[region]] tables giving velocities)");
+  }
+  for (const Config& t : root.tables("crack")) {
+    c.cracks.push_back(read_crack(t, c.body.dim));
+    const auto& n = c.body.counts;
+    if (!cuts_a_lattice_bond(c.cracks.back(), c.body.dim, n, c.body.spacing, c.body.horizon()))
+      t.fail(c.body.dim == 2 ? "from" : "vertices",
+             fmt::format("the crack cuts no bond of the body (points from (0, 0, 0) to ({}, {}, {}) m): it lies "
+                         "outside the body or on its surface",
+                         (n[0] - 1) * c.body.spacing, (n[1] - 1) * c.body.spacing, (n[2] - 1) * c.body.spacing));
+  }
   const auto output = root.optional_table("output");
   c.output = read_output(output, c.solver.end_time);
   if (output && c.solver.time_step) check_intervals_against_step(*output, c.output, *c.solver.time_step);

@@ -2,7 +2,8 @@
 // The peridynamics case file (method = "pd"), read and validated completely before anything runs.
 // Keys are documented in docs/pd.md; every value goes through Config so that an error names the
 // file, the key and its line. SI units. The body is a regular lattice (Liu et al. 2025, §1) loaded by the
-// impact of its left half on its right half (Liu et al. 2025, Fig. 2).
+// impact of its left half on its right half (Liu et al. 2025, Fig. 2) and/or by regions with initial or
+// prescribed velocities, and cut by pre-cracks.
 #include <array>
 #include <optional>
 #include <string>
@@ -16,6 +17,8 @@
 #include "shockfield/pd/crystal_case.hpp"
 #include "shockfield/pd/family.hpp"
 #include "shockfield/pd/influence.hpp"
+#include "shockfield/pd/precrack.hpp"
+#include "shockfield/pd/regions.hpp"
 
 namespace shockfield::pd {
 
@@ -56,12 +59,15 @@ struct PdCase {
   /// model = "j2" (Liu et al. 2025, §3.1), "crystal", "pmb" or "lps"
   std::variant<SmallStrainJ2, CrystalSpec, PmbSpec, LpsSpec> material;
   SolverSpec solver;
-  double impact_speed = 0.0;  ///< left half at +v, right half at rest [m/s]
+  double impact_speed = 0.0;  ///< [loading] impact: left half at +v, right half at rest [m/s] (0: none)
+  std::vector<LoadRegion> regions;  ///< [[region]]: initial or prescribed velocities, after the impact
+  std::vector<Crack> cracks;  ///< [[crack]]: bonds cut before the first step
   OutputSpec output;
   std::vector<std::string> material_notes;  ///< the material file used: path, SHA-256, provenance (for the log)
 };
 
-/// Reads [body], [material], [solver], [loading] and [output].
+/// Reads [body], [material], [solver], [loading], [[region]], [[crack]] and [output]. [loading] may
+/// be left out when some [[region]] loads the body.
 PdCase read_pd_case(const Config& root);
 
 }  // namespace shockfield::pd

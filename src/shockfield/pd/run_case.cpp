@@ -51,7 +51,8 @@ void derive_material(const Config& root, const PdCase& c, const std::vector<Smal
   root.derive("elastic_wave_speed_m_s", cl);
   root.derive("plastic_wave_speed_m_s", cp);
   root.derive("hel_Pa", hel);
-  root.derive("impact_axial_stress_Pa", up <= u_hel ? rho * cl * up : hel + rho * cp * (up - u_hel));
+  if (c.impact_speed > 0.0)
+    root.derive("impact_axial_stress_Pa", up <= u_hel ? rho * cl * up : hel + rho * cp * (up - u_hel));
 }
 
 // Crystal: the elastic wave speed along x and the Schmid factor of a single crystal, the grain
@@ -96,7 +97,7 @@ struct ModelRun {
 // Correspondence (J2 or crystal): σ, the plastic measure and the material state of every point.
 template <class Spec>
 ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const PointCloud& cloud,
-                    const Family& family) {
+                    const Family& family, const std::vector<unsigned char>&) {
   auto [materials, grain] = point_materials(spec, cloud);
   using Force = CorrespondenceForce<typename std::decay_t<decltype(materials)>::value_type>;
   std::unique_ptr<Force> model;
@@ -121,11 +122,12 @@ ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const
 
 // PMB or LPS: no stress nor plastic measure (NaN columns), damage only; the checkpoint keeps the
 // bonds' intact flags and the points' critical stretches (BondForce::saved_state); the contact
-// force has no state (contact.hpp).
+// force has no state (contact.hpp). The bonds a pre-crack cuts are broken before the first step.
 template <class Law>
 ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, const PointCloud& cloud,
-                    const Family& family) {
+                    const Family& family, const std::vector<unsigned char>& cut) {
   auto model = std::make_unique<BondForce<Law>>(cloud, family, spec.law, c.body.influence, spec.damage, spec.contact);
+  if (!cut.empty()) model->break_bonds(cut);
   BondForce<Law>& force = *model;
   ModelRun run{nullptr,
                spec.density,
@@ -135,6 +137,32 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
                {}};
   run.force = std::move(model);
   return run;
+}
+
+// The family a model runs on, without the bonds between separate bodies, and the bonds the
+// pre-cracks cut (precrack.hpp): the bond models keep
+// the cut bonds in their family (broken from step 0, counted in the damage); the correspondence
+// models, which have no broken-bond state, run on the family without them.
+struct CrackedFamily {
+  Family family;
+  std::vector<unsigned char> cut;  ///< per bond of `family`, for the bond models (empty: none cut)
+  std::size_t cut_count = 0;       ///< bonds cut (each counted from both ends)
+};
+
+CrackedFamily cracked_family(const PdCase& c, const PointCloud& cloud, const BodySpec& body) {
+  CrackedFamily f{build_family(cloud, body.horizon(), body.correction), {}, 0};
+  // Separate bodies (regions.hpp) first: their bonds to the rest never existed.
+  if (std::any_of(c.regions.begin(), c.regions.end(), [](const LoadRegion& r) { return r.separate; }))
+    f.family = without_bonds(f.family, bonds_between_bodies(cloud, f.family, c.regions));
+  if (c.cracks.empty()) return f;
+  std::vector<unsigned char> cut = cut_bonds(cloud, f.family, c.cracks);
+  f.cut_count = static_cast<std::size_t>(std::count(cut.begin(), cut.end(), 1));
+  const bool bond_model = std::holds_alternative<PmbSpec>(c.material) || std::holds_alternative<LpsSpec>(c.material);
+  if (bond_model)
+    f.cut = std::move(cut);
+  else
+    f.family = without_bonds(f.family, cut);
+  return f;
 }
 
 // The body --check builds the model on: at most 4⌈m⌉ + 1 points along each axis (m the horizon
@@ -182,8 +210,9 @@ class PdMethod final : public Method {
   PdMethod(const Config& root, const PdCase& c, bool check)
       : c_(c), built_(check ? checked_body(c_.body) : c_.body),
         cloud_(lattice_cloud(built_.dim, built_.counts, built_.spacing)),
-        family_(build_family(cloud_, built_.horizon(), built_.correction)),
-        model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, family_); }, c_.material)),
+        cracked_(cracked_family(c_, cloud_, built_)), family_(cracked_.family),
+        model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, family_, cracked_.cut); },
+                          c_.material)),
         sim_(cloud_, family_, std::move(model_.force), {model_.density}), stable_(sim_.stable_step()),
         dt_(c_.solver.time_step.value_or(c_.solver.safety * stable_)), tol_(1e-9 * dt_) {
     if (dt_ > stable_)
@@ -211,6 +240,7 @@ class PdMethod final : public Method {
 
   void start(RunContext& run) override {
     set_impact_velocity(sim_, c_.impact_speed);
+    apply_regions(sim_, c_.regions, true);
     sim_.setup();
     open(run, std::nullopt);
     write_due();
@@ -219,6 +249,7 @@ class PdMethod final : public Method {
     std::vector<double> state;
     counters_ = read_checkpoint(run.checkpoint, sim_, state);
     model_.restore(state);
+    apply_regions(sim_, c_.regions, false);
     open(run, ResumePoint{sim_.step_count(), counters_.profiles, sim_.time()});
   }
   bool finished() const override { return !(sim_.time() < c_.solver.end_time - tol_); }
@@ -283,6 +314,17 @@ class PdMethod final : public Method {
   void open(RunContext& run, std::optional<ResumePoint> resume) {
     log_ = &run.log;
     for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
+    if (!c_.cracks.empty())
+      log_->info("pre-cracks: {} crack(s) cut {} bonds ({})", c_.cracks.size(), cracked_.cut_count / 2,
+                 cracked_.cut.empty() ? "left out of the correspondence family" : "broken from step 0");
+    for (std::size_t k = 0; k < c_.regions.size(); ++k) {
+      const LoadRegion& r = c_.regions[k];
+      const std::string velocity = !r.sets_velocity ? "keeping its velocity"
+          : fmt::format("{} ({}, {}, {}) m/s", r.prescribed ? "held at" : "starting at", r.velocity[0], r.velocity[1],
+                        r.velocity[2]);
+      log_->info("region {}: {} points {}{}", k, points_in(r.shape, cloud_).size(), velocity,
+                 r.separate ? ", a separate body" : "");
+    }
     output_.emplace(run.folder, model_.fields, c_.output, total_steps(), resume);
     if (!finished())
       log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
@@ -315,7 +357,8 @@ class PdMethod final : public Method {
   PdCase c_;
   BodySpec built_;  ///< c_.body, or for --check its sub-body
   PointCloud cloud_;
-  Family family_;
+  CrackedFamily cracked_;
+  const Family& family_;  ///< cracked_.family
   ModelRun model_;
   Simulation sim_;
   double stable_, dt_, tol_;

@@ -46,6 +46,9 @@ class Simulation {
   std::vector<Vec3>& velocities() { return v_; }
   const std::vector<Vec3>& positions() const { return y_; }
   const std::vector<Vec3>& velocities() const { return v_; }
+  /// The force density of the last evaluation; an after_force hook may change it (a held point:
+  /// regions.hpp) before the velocities are kicked with it.
+  std::vector<Vec3>& force_density() { return f_; }
   const std::vector<Vec3>& force_density() const { return f_; }
   long long step_count() const { return steps_; }
   double time() const { return time_; }
