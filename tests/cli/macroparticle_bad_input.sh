@@ -43,3 +43,10 @@ perturbation = 0.1}" "specimen.perturbation" "expected a number"
 expect_error "${base/hardening = \[0.1\]/hardening = []}" "plasticity.hardening" "1 to 8 polynomial coefficients"
 expect_error "${base/hardening = \[0.1\]/hardening = [0.1, 0, 0, 0, 0, 0, 0, 0, 1]}" "plasticity.hardening" "1 to 8 polynomial coefficients"
 expect_error "${base/hardening = \[0.1\]/hardening = [1.0, 0.5]}" "plasticity.hardening" "must be in [0, 1)"
+# Saturation inside the route (0 < ε_s <= ε_limit - ε_y), a compression yield strain in (0, 0.5].
+expect_error "${base/hardening = \[0.1\]/hardening = [0.1]
+saturation_strain = 0.0}" "plasticity.saturation_strain" "expected a number"
+expect_error "${base/hardening = \[0.1\]/hardening = [0.1]
+saturation_strain = 0.5}" "plasticity.saturation_strain" "expected a number"
+expect_error "${base/hardening = \[0.1\]/hardening = [0.1]
+compression_yield_strain = -0.01}" "plasticity.compression_yield_strain" "expected a number"

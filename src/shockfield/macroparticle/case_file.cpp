@@ -135,6 +135,7 @@ LangevinSpec read_langevin(const Config& t, const PairLaw& law) {
 PlasticRoute read_plasticity(const Config& t) {
   PlasticRoute r;
   r.yield_strain = t.get_double("yield_strain", {0.0, 0.2, true, false});
+  r.compression_yield_strain = t.get_double_or("compression_yield_strain", r.yield_strain, {0.0, 0.5, true, false});
   // Any number of coefficients (get_doubles_or would demand the default's one).
   r.hardening = t.has("hardening") ? t.get_doubles("hardening", 0) : t.get_doubles_or("hardening", {0.0});
   if (r.hardening.empty() || r.hardening.size() > 8)
@@ -143,6 +144,8 @@ PlasticRoute read_plasticity(const Config& t) {
     t.fail("hardening", fmt::format("h_1 = {} must be in [0, 1): the plastic route's slope as a fraction of the "
                                     "elastic stiffness k", r.hardening[0]));
   r.limit_strain = t.get_double_or("limit_strain", 0.3, {r.yield_strain, 1.0, true, false});
+  if (t.has("saturation_strain"))
+    r.saturation_strain = t.get_double("saturation_strain", {0.0, r.limit_strain - r.yield_strain, true, false});
   return r;
 }
 

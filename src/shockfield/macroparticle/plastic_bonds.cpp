@@ -7,7 +7,7 @@ namespace shockfield::macroparticle {
 
 PlasticBondLaw::PlasticBondLaw(double p, double q, PlasticRoute route)
     : p_(p), q_(q), k_(p * q), powers_(p, q), route_(std::move(route)), r_y_(1.0 + route_.yield_strain),
-      r_c_(1.0 - route_.yield_strain) {
+      r_c_(1.0 - (route_.compression_yield_strain > 0 ? route_.compression_yield_strain : route_.yield_strain)) {
   // φ_E″ = 0 at r^(q−p) = (q + 1)/(p + 1): the largest tension the elastic curve can carry.
   r_inflection_ = std::pow((q_ + 1.0) / (p_ + 1.0), 1.0 / (q_ - p_));
   t_peak_ = elastic_tension(r_inflection_);
@@ -34,7 +34,7 @@ double PlasticBondLaw::elastic_curvature(double s) const {
 }
 
 double PlasticBondLaw::route_tension(double r, bool tension_side) const {
-  const double u = tension_side ? r - r_y_ : r_c_ - r;
+  const double u = std::min(tension_side ? r - r_y_ : r_c_ - r, route_.saturation_strain);
   double sum = 0, un = 1;
   for (double h : route_.hardening) sum += h * (un *= u);
   return tension_side ? t_yield_ + k_ * sum : t_compression_yield_ - k_ * sum;

@@ -3,8 +3,11 @@
 // (r0 = D = 1, k = φ_E″(1) = pq). With T(r) = dφ/dr the bond's tension:
 //   elastic      φ_E(r) = [p r^-q − q r^-p]/(q − p)                     (eq 5)
 //   plastic      T_P(r) = T_E(r_y) + k Σ_n h_n (r − r_y)^n,  r ≥ r_y = 1 + ε_y    (tension route)
-//                T_P(r) = T_E(r_c) − k Σ_n h_n (r_c − r)^n,  r ≤ r_c = 1 − ε_y    (compression route)
-//                (φ_P = ∫ T_P dr: polynomials in r, the paper's "φ_P is just a polynomial of r_ij")
+//                T_P(r) = T_E(r_c) − k Σ_n h_n (r_c − r)^n,  r ≤ r_c = 1 − ε_c    (compression route)
+//                (ε_c = ε_y unless the compression yield strain is given)
+//                (φ_P = ∫ T_P dr: polynomials in r, the paper's "φ_P is just a polynomial of r_ij");
+//                with a saturation strain ε_s the route's tension stops changing at r − r_y = ε_s
+//                (r_c − r = ε_s): T_P(r) = T_P(r_y + ε_s) beyond it, a perfectly plastic bond
 //   unloading    φ_U(r) = φ_E(r − Δr0) + C_φ                            (eq 16)
 // A bond whose shifted elastic tension T_E(r − Δr0) passes a route follows the route; there Δr0
 // is set so that T_E(r − Δr0) = T_P(r) on the stiff branch (r − Δr0 below the inflection of φ_E)
@@ -36,9 +39,11 @@ struct BondState {
 };
 
 struct PlasticRoute {
-  double yield_strain = 0;           ///< ε_y of the bond
+  double yield_strain = 0;           ///< ε_y of the bond (tension route)
   std::vector<double> hardening;     ///< h_1, h_2, ... as fractions of k
   double limit_strain = 1e300;       ///< the bond breaks beyond 1 + ε_limit
+  double saturation_strain = 1e300;  ///< ε_s: the route's tension is constant beyond r_y + ε_s
+  double compression_yield_strain = 0;  ///< ε_c: the compression route starts at 1 − ε_c (0: ε_y)
 };
 
 class PlasticBondLaw {

@@ -83,6 +83,33 @@ TEST(MacroparticlePlasticBond, EnergyIsTheWorkOfTheTensionAlongAnyPath) {
   EXPECT_GT(w.s.r_max, 1.039);
 }
 
+// Saturation and a separate compression yield: the routes start at 1 + ε_y and 1 − ε_c, and past
+// ε_s along a route its tension stays at T_P(ε_s) (a perfectly plastic bond).
+TEST(MacroparticlePlasticBond, SaturatedRouteIsFlatAndTheCompressionRouteStartsAtItsOwnYield) {
+  const PlasticRoute route{0.01, {0.1}, 0.2, 0.005, 0.03};
+  const PlasticBondLaw law(4, 9, route);
+  const double k = 36.0;
+  auto walk = [&law](double from, double to, double dr) {
+    BondState s = law.initial();
+    double t = 0, e = 0;
+    for (double r = from; dr > 0 ? r <= to : r >= to; r += dr) law.evaluate(r, s, t, e);
+    law.evaluate(to, s, t, e);
+    return std::pair{t, s};
+  };
+  const double t_sat = law.elastic_tension(1.01) + k * 0.1 * 0.005;
+  EXPECT_NEAR(walk(1.0, 1.014, 1e-5).first, law.elastic_tension(1.01) + k * 0.1 * 0.004, 1e-12);  // before ε_s
+  EXPECT_NEAR(walk(1.0, 1.02, 1e-5).first, t_sat, 1e-12);
+  EXPECT_NEAR(walk(1.0, 1.05, 1e-5).first, t_sat, 1e-12);
+  // Compression: elastic down to 1 − ε_c = 0.97 (beyond the tension side's 0.99), then the route.
+  const auto [t_elastic, s_elastic] = walk(1.0, 0.975, -1e-5);
+  EXPECT_EQ(s_elastic.shift, 0.0);
+  EXPECT_DOUBLE_EQ(t_elastic, law.elastic_tension(0.975));
+  const auto [t_route, s_route] = walk(1.0, 0.965, -1e-5);
+  EXPECT_LT(s_route.shift, 0.0);
+  EXPECT_NEAR(t_route, law.elastic_tension(0.97) - k * 0.1 * 0.005, 1e-12);
+  EXPECT_NEAR(walk(1.0, 0.95, -1e-5).first, law.elastic_tension(0.97) - k * 0.1 * 0.005, 1e-12);  // saturated
+}
+
 TEST(MacroparticlePlasticBond, BreaksBeyondTheLimit) {
   Walk w;
   for (double r = 1.0; r < 1.25; r += 1e-3) w.at(r);

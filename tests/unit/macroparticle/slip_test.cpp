@@ -36,6 +36,8 @@ struct LayerSlip {
 struct SlipRun {
   double peak_stress = 0, peak_strain = 0;  ///< largest |σ| (Pa) and its |ε|
   double end_stress = 0;                    ///< |σ| at the end
+  double least_after_peak = 0;              ///< smallest |σ| after the peak
+  std::vector<std::pair<double, double>> curve;  ///< (|ε|, |σ|) every 25 steps
   std::map<std::string, LayerSlip> slip;    ///< by family: "111", "100", "110"
 };
 
@@ -81,7 +83,11 @@ std::map<std::string, LayerSlip> layer_slip(const std::vector<Vec3>& x0, const s
   return out;
 }
 
-SlipRun run(const std::string& mode, const std::string& ends, double perturbation) {
+// The bond law of the first test: yield at 1.1 %, no hardening (the default route).
+constexpr const char* kSoftBonds = "yield_strain = 0.011\nhardening = [0.0]\n";
+
+SlipRun run(const std::string& mode, const std::string& ends, double perturbation,
+            const std::string& plasticity = kSoftBonds, double final_strain = 0.05) {
   const std::string text = fmt::format(R"([specimen]
 diameter = 0.014
 n_phi = 4
@@ -90,13 +96,11 @@ perturbation = {}
 [loading]
 mode = "{}"
 strain_rate = 70.0
-final_strain = 0.05
+final_strain = {}
 ends = "{}"
 [plasticity]
-yield_strain = 0.011
-hardening = [0.0]
-[run]
-)", perturbation, mode, ends);
+{}[run]
+)", perturbation, mode, final_strain, ends, plasticity);
   Rod rod(fixture::read_case(text));
   const MacroparticleCase c = fixture::read_case(text);
   auto positions = [&rod] {  // by particle id: the engine may reorder its arrays
@@ -112,8 +116,10 @@ hardening = [0.0]
   while (rod.sim().step < c.steps) {
     for (int k = 0; k < 25 && rod.sim().step < c.steps; ++k) rod.advance(false);
     const RodMeasures m = rod.measure();
-    if (std::abs(m.stress) > r.peak_stress) r.peak_stress = std::abs(m.stress), r.peak_strain = std::abs(m.strain);
+    if (std::abs(m.stress) > r.peak_stress) r.peak_stress = r.least_after_peak = std::abs(m.stress), r.peak_strain = std::abs(m.strain);
+    r.least_after_peak = std::min(r.least_after_peak, std::abs(m.stress));
     r.end_stress = std::abs(m.stress);
+    r.curve.emplace_back(std::abs(m.strain), std::abs(m.stress));
   }
   r.slip = layer_slip(x0, positions());
   return r;
@@ -152,6 +158,54 @@ TEST(MacroparticleSlip, CompressedRodSlipsOnA111PlaneAndControlsDoNot) {
     EXPECT_LT(control.slip.at("111").largest, 0.05) << mode << " " << ends << " " << perturbation;
     EXPECT_GT(control.end_stress, 0.85 * control.peak_stress) << mode << " " << ends << " " << perturbation;
   }
+}
+
+// |σ| at the first sample at or past strain e.
+double stress_at(const SlipRun& r, double e) {
+  const auto it = std::find_if(r.curve.begin(), r.curve.end(), [e](const auto& p) { return p.first >= e; });
+  return it == r.curve.end() ? std::nan("") : it->second;
+}
+
+// One bond law for both halves of Fig 6 (theory §8, "One law for tension and compression"): bonds
+// yield in tension at ε_y = 0.33 % (rod yield ≈ 3ε_y ≈ 1 %, Fig 6(a)), harden with h_1 = 0.1 and
+// saturate 1.6 % past yield; in compression they yield only at ε_c = 2 %. Under [001] tension the
+// inclined bonds are stretched (they yield and harden: no peak); under compression the (001)
+// in-plane bonds are stretched by the lateral expansion, yield, harden and saturate, while the
+// compressed inclined bonds stay elastic and their geometric stiffness −T/r grows: the infinite
+// packing loses ellipticity at 2.9 % for a band normal within 1° of ⟨111⟩, and the rod slips on
+// one {111} layer pair (examples/macroparticle_rod/slip.py).
+TEST(MacroparticleSlip, OneBondLawYieldsNearOnePercentInTensionAndSlipsOnA111PlaneInCompression) {
+  const std::string law =
+      "yield_strain = 0.0033\nhardening = [0.1]\nsaturation_strain = 0.016\ncompression_yield_strain = 0.02\n";
+  const SlipRun tension = run("tension", "sliding", 0.001, law, 0.025);
+  // Elastic to 1 % (the slope over 0.75-1 % within 20 % of that over 0.25-0.75 %), yielded by
+  // 1.5-2 % (slope below 40 % of it: measured 78, 68 and 22 GPa, the knee at 1.2 %), hardening
+  // without a drop (the last stress the largest, within 1 %; to 2.5 % here, the example's rod
+  // hardens on to 5 %), no slip.
+  auto slope = [&tension](double a, double b) { return (stress_at(tension, b) - stress_at(tension, a)) / (b - a); };
+  const double young = slope(0.0025, 0.0075);
+  std::cout << "tension: slopes " << young << ", " << slope(0.0075, 0.01) << ", " << slope(0.015, 0.02) << " Pa; end "
+            << tension.end_stress << " Pa, slip {111} " << tension.slip.at("111").largest << " r0\n";
+  EXPECT_GT(slope(0.0075, 0.01), 0.8 * young);
+  EXPECT_LT(slope(0.015, 0.02), 0.4 * young);
+  EXPECT_GT(tension.end_stress, 0.99 * tension.peak_stress);
+  EXPECT_LT(tension.slip.at("111").largest, 0.05);
+  const SlipRun compression = run("compression", "sliding", 0.001, law);
+  std::cout << "compression: peak " << compression.peak_stress << " Pa at " << compression.peak_strain << ", least after "
+            << compression.least_after_peak << " Pa; slip {111} " << compression.slip.at("111").largest << " (median "
+            << compression.slip.at("111").median << "), {100} " << compression.slip.at("100").largest << ", {110} "
+            << compression.slip.at("110").largest << " r0\n";
+  // The peak near Fig 6(b)'s 3.2 % (measured 3.32 %; the infinite packing's onset 2.9 %), a drop
+  // of more than 20 % after it (measured 1.21 -> 0.80 GPa), and one {111} layer pair sliding
+  // (measured 0.23 r0 against a median of 0.044 and 0.016 / 0.037 for {100} / {110}).
+  EXPECT_GT(compression.peak_strain, 0.029);
+  EXPECT_LT(compression.peak_strain, 0.036);
+  EXPECT_LT(compression.least_after_peak, 0.8 * compression.peak_stress);
+  const LayerSlip s111 = compression.slip.at("111");
+  EXPECT_GT(s111.largest, 0.15);
+  EXPECT_GT(s111.largest, 3 * compression.slip.at("100").largest);
+  EXPECT_GT(s111.largest, 3 * compression.slip.at("110").largest);
+  EXPECT_GT(s111.largest, 4 * s111.median);
 }
 
 // The route's polynomial takes more than one coefficient (docs: h_1 ... h_8); the reader once
