@@ -10,7 +10,7 @@ slip_fine (the same at n_phi = 8, n_h = 16), slip_perfect, slip_clamped and slip
 - the slip between neighbouring layers of the planes {111}, {100}, {110} in the dumps of `slip`:
   the start's bonds (r < 1.2 r0) between adjacent layers, their relative displacement less the
   rod's best affine map, in-plane part averaged over the layer pair (the measure of the test
-  MacroparticleSlip.CompressedRodSlipsOnA111PlaneAndControlsDoNot);
+  MacroparticleSlip.OneBondLawYieldsNearOnePercentInTensionAndSlipsOnA111PlaneInCompression);
 - stress-strain of the five runs, the particles of slip_fine viewed edge-on to its slip plane
   coloured by their slip, and the largest layer-pair slip of each family against strain.
 """
@@ -31,10 +31,13 @@ FAMILIES = {"111": ([[1, 1, 1], [1, 1, -1], [1, -1, 1], [-1, 1, 1]], A / np.sqrt
 
 
 def resolved(run):
+    """r0 and the bond law of a run: p, q and the route (ε_y, h, ε_s, ε_c as in [plasticity])."""
     text = open(f"{run}/config.resolved.toml").read()
-    get = lambda key: re.search(rf"\n{key} = (\S+)", text).group(1)
+    get = lambda key, default=None: (lambda m: float(m.group(1)) if m else default)(re.search(rf"\n{key} = (\S+)", text))
     hardening = [float(v) for v in re.search(r"\nhardening = \[([^\]]*)\]", text).group(1).split(",")]
-    return float(get("r0")), float(get("yield_strain")), hardening, float(get("p")), float(get("q"))
+    route = dict(eps_y=get("yield_strain"), h=hardening, sat=get("saturation_strain", np.inf),
+                 eps_c=get("compression_yield_strain", get("yield_strain")))
+    return get("r0"), route, get("p"), get("q")
 
 
 def thermo(run):
@@ -58,27 +61,28 @@ def positions(path, r0):
 
 
 # --- the infinite packing (engine units: r0 = D = 1, k = pq) ---
-def bond_law(p, q, eps_y, h):
+def bond_law(p, q, eps_y, h, sat, eps_c):
     k = p * q
     te = lambda s: k / (q - p) * (s ** -p - s ** -q) / s
     ke = lambda s: k / (q - p) * ((q + 1) * s ** -q - (p + 1) * s ** -p) / s ** 2
 
     def law(r):  # monotonic loading: the route's tension and tangent, or the elastic ones
-        u = r - (1 + eps_y) if r >= 1 + eps_y else (1 - eps_y) - r if r <= 1 - eps_y else None
+        u = r - (1 + eps_y) if r >= 1 + eps_y else (1 - eps_c) - r if r <= 1 - eps_c else None
         if u is None:
             return te(r), ke(r)
         sign = 1 if r > 1 else -1
-        return (te(1 + sign * eps_y) + sign * k * sum(c * u ** (n + 1) for n, c in enumerate(h)),
-                k * sum((n + 1) * c * u ** n for n, c in enumerate(h)))
+        saturated, u = u >= sat, min(u, sat)  # past ε_s the route's tension is constant
+        return (te(1 + eps_y if sign > 0 else 1 - eps_c) + sign * k * sum(c * u ** (n + 1) for n, c in enumerate(h)),
+                0.0 if saturated else k * sum((n + 1) * c * u ** n for n, c in enumerate(h)))
     return law, k
 
 
 BONDS = np.array([v for v in itertools.product([-1, 0, 1], repeat=3) if sum(map(abs, v)) == 2], float) / A
 
 
-def onset(p, q, eps_y, h, strains):
+def onset(p, q, route, strains):
     """First strain of uniaxial [001] compression where the acoustic tensor has a negative eigenvalue."""
-    law, k = bond_law(p, q, eps_y, h)
+    law, k = bond_law(p, q, **route)
 
     def sums(lx, lz, normal=None):
         F = np.diag([lx, lx, lz])
@@ -128,15 +132,16 @@ def main(out, here):
     import matplotlib.pyplot as plt
 
     run = f"{out}/slip"
-    r0, eps_y, h, p, q = resolved(run)
+    r0, route, p, q = resolved(run)
+    law_text = (f"eps_y = {route['eps_y']}, h = {route['h']}, eps_s = {route['sat']}, eps_c = {route['eps_c']}")
     r0s = {name: resolved(f"{out}/{name}")[0] for name in ("slip", "slip_fine")}
-    e_c, normal, qmin = onset(p, q, eps_y, h, np.arange(0.001, 0.06, 0.001))
+    e_c, normal, qmin = onset(p, q, route, np.arange(0.001, 0.06, 0.001))
     if e_c is not None:
         angle = np.degrees(np.arccos(min(1.0, np.max(np.abs(np.array(FAMILIES["111"][0]) @ normal)) / np.sqrt(3))))
-        print(f"infinite packing (eps_y = {eps_y}, h = {h}): acoustic tensor loses positivity at {100 * e_c:.1f} % "
+        print(f"infinite packing ({law_text}): acoustic tensor loses positivity at {100 * e_c:.1f} % "
               f"strain, band normal {np.round(normal, 2)} ({angle:.1f} deg from <111>), Q_min/k = {qmin:.4f}")
     else:
-        print(f"infinite packing (eps_y = {eps_y}, h = {h}): acoustic tensor positive to 6 %")
+        print(f"infinite packing ({law_text}): acoustic tensor positive to 6 %")
     histories = {}
     for name in ("slip", "slip_fine"):
         files = frames(f"{out}/{name}")
@@ -152,18 +157,26 @@ def main(out, here):
               f"{{100}} {final['100'][0]:.3f}, {{110}} {final['110'][0]:.3f}; layer pairs above 0.1 r0: "
               f"{sorted(k for k, v in pairs.items() if v > 0.1)}")
         view_data = (X, bonds, positions(files[-1], r0s[name]), n111, d, dl, at[-1])  # the finest run drawn
+    for name in ("slip_perfect", "slip_clamped", "slip_tension"):  # the controls' last frames
+        files = frames(f"{out}/{name}")
+        r0c = resolved(f"{out}/{name}")[0]
+        X = positions(files[0], r0c)
+        final = layer_slip(X, positions(files[-1], r0c), np.array(sorted(cKDTree(X).query_pairs(1.2))))
+        print(f"{name}: largest {{111}} layer pair {final['111'][0]:.3f} r0 (median of its set "
+              f"{np.median(list(final['111'][2].values())):.3f}), {{100}} {final['100'][0]:.3f}, {{110}} {final['110'][0]:.3f}")
     fig, ax = plt.subplots(1, 3, figsize=(15, 5.2))
     for name, colour, label in [("slip_fine", "k", "the same, n_phi = 8, n_h = 16 (slips)"),
                                 ("slip", "C3", "compression, sliding ends, imperfect 1e-3 r0 (slips)"),
-                                ("slip_perfect", "C2", "compression, perfect"),
-                                ("slip_clamped", "C1", "compression, clamped ends"),
+                                ("slip_perfect", "C2", "compression, perfect (slips later)"),
+                                ("slip_clamped", "C1", "compression, clamped ends (slips)"),
                                 ("slip_tension", "C0", "tension")]:
         e, sgm, _ = thermo(f"{out}/{name}")
         ax[0].plot(100 * e, sgm / 1e9, colour, label=label)
         j = int(np.argmax(sgm))
         print(f"{name}: peak {sgm[j] / 1e9:.2f} GPa at {100 * e[j]:.2f} %, end {sgm[-1] / 1e9:.2f} GPa")
     ax[0].set(xlabel="|strain| (%)", ylabel="|stress| (GPa)",
-              title=f"bonds yield at {100 * eps_y:.1f} %, h_1 = 0")
+              title=f"bonds: tension yield {100 * route['eps_y']:.2f} %, h_1 = {route['h'][0]},\n"
+                    f"saturation {100 * route['sat']:.1f} % past it, compression yield {100 * route['eps_c']:.1f} %")
     ax[0].set_ylim(bottom=0)
     ax[0].legend(fontsize=8)
     # Particles edge-on to the slip plane: view along the horizontal direction in the plane.
@@ -183,7 +196,7 @@ def main(out, here):
     sc = ax[1].scatter((x @ across)[order], x[order, 2], c=per_particle[order], s=9, cmap="magma_r", vmin=0, vmax=0.3)
     ax[1].set_aspect("equal")
     ax[1].set(xlabel="r0 (horizontal, normal to the view)", ylabel="z (r0)",
-              title=f"n_phi = 8 at {100 * drawn_at:.1f} %: view along [{' '.join(f'{v:.2f}' for v in view)}]")
+              title=f"n_phi = 8 at {100 * drawn_at:.1f} %:\nview along [{' '.join(f'{v:.2f}' for v in view)}]")
     fig.colorbar(sc, ax=ax[1], label="slip of the particle's bonds across its layers (r0)")
     for run_name, ls in (("slip", "-"), ("slip_fine", "--")):
         at, history = histories[run_name]
