@@ -9,20 +9,12 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/predicates.hpp"
+#include "shockfield/geometry/vec3.hpp"
 
 namespace shockfield::geometry {
 namespace {
 
-using P3 = std::array<double, 3>;
-
-P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-P3 cross(const P3& a, const P3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-P3 add_scaled(const P3& a, const P3& b, double s) {
-  return {a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]};
-}
+using P3 = Vec3;
 
 /// Circumcentre of a tetrahedron: c − v0 = (|a|² (b×c) + |b|² (c×a) + |c|² (a×b)) / (2 a·(b×c)).
 P3 tet_circumcentre(const P3& v0, const P3& v1, const P3& v2, const P3& v3) {
@@ -32,14 +24,6 @@ P3 tet_circumcentre(const P3& v0, const P3& v1, const P3& v2, const P3& v3) {
   P3 r = v0;
   for (int k = 0; k < 3; ++k) r[k] += s * (dot(a, a) * bc[k] + dot(b, b) * ca[k] + dot(c, c) * ab[k]);
   return r;
-}
-
-/// Circumcentre of a triangle in 3D: q − v0 = ((|a|² b − |b|² a) × (a × b)) / (2 |a × b|²).
-P3 triangle_circumcentre(const P3& v0, const P3& v1, const P3& v2) {
-  const P3 a = sub(v1, v0), b = sub(v2, v0), n = cross(a, b);
-  P3 w;
-  for (int k = 0; k < 3; ++k) w[k] = dot(a, a) * b[k] - dot(b, b) * a[k];
-  return add_scaled(v0, cross(w, n), 0.5 / dot(n, n));
 }
 
 // The ball's moves over one division: circumcentres of the tetrahedra and whether a ball of
