@@ -50,8 +50,8 @@ std::optional<PivotCircle> pivot_about_axis(const Vec3& on_axis, const Vec3& axi
 std::optional<PivotCircle> pivot_about_edge(const Vec3& a, const Vec3& b, const Vec3& c, double r);
 
 /// Rotation angles within `kMetAtStart` below 0 count as 0: a point on the starting ball (four
-/// cospherical points) is met at once, whatever the rounding of its angle.
-inline constexpr double kMetAtStart = 1e-9;
+/// cospherical points) is met at once, whatever the rounding of its angle (about 1e-15 rad).
+inline constexpr double kMetAtStart = 1e-12;
 
 /// The angle θ ∈ [0, 2π) at which the turning ball first meets p (the value function of MS1 and
 /// MS3); +inf when it never does (p always outside, or inside from the start and never left).

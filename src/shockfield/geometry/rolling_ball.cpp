@@ -103,8 +103,18 @@ class BallPassage {
   std::vector<P3> centre_;
 };
 
-// Area, enclosed volume, Euler characteristic and edge-manifoldness of the triangles.
-void measure(TriangleSurface& s) {
+// Solid angle at vertex p of the tetrahedron (p, a, b, c) (Van Oosterom & Strackee 1983):
+// tan(ω/2) = |A·(B×C)| / (|A||B||C| + (A·B)|C| + (A·C)|B| + (B·C)|A|), A = a − p, ...
+double vertex_solid_angle(const P3& p, const P3& a, const P3& b, const P3& c) {
+  const P3 A = sub(a, p), B = sub(b, p), C = sub(c, p);
+  const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B)), lc = std::sqrt(dot(C, C));
+  const double denominator = la * lb * lc + dot(A, B) * lc + dot(A, C) * lb + dot(B, C) * la;
+  return 2.0 * std::atan2(std::abs(dot(A, cross(B, C))), denominator);
+}
+
+}  // namespace
+
+void measure_surface(TriangleSurface& s) {
   const auto& X = s.points;
   std::map<std::pair<std::int32_t, std::int32_t>, int> directed;
   std::vector<char> used(X.size(), 0);
@@ -131,17 +141,6 @@ void measure(TriangleSurface& s) {
                            static_cast<std::int64_t>(s.triangles.size());
 }
 
-// Solid angle at vertex p of the tetrahedron (p, a, b, c) (Van Oosterom & Strackee 1983):
-// tan(ω/2) = |A·(B×C)| / (|A||B||C| + (A·B)|C| + (A·C)|B| + (B·C)|A|), A = a − p, ...
-double vertex_solid_angle(const P3& p, const P3& a, const P3& b, const P3& c) {
-  const P3 A = sub(a, p), B = sub(b, p), C = sub(c, p);
-  const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B)), lc = std::sqrt(dot(C, C));
-  const double denominator = la * lb * lc + dot(A, B) * lc + dot(A, C) * lb + dot(B, C) * la;
-  return 2.0 * std::atan2(std::abs(dot(A, cross(B, C))), denominator);
-}
-
-}  // namespace
-
 TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius) {
   const BallPassage ball(d, radius);
   const std::vector<std::int32_t> region = ball.exterior();
@@ -163,7 +162,7 @@ TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius
     throw InputError(fmt::format("a ball of radius {} passes between the points everywhere and "
                                  "touches no surface: give a larger radius",
                                  radius));
-  measure(s);
+  measure_surface(s);
   return s;
 }
 
@@ -207,7 +206,7 @@ std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double r
   }
   for (Cavity& c : cavities) {
     for (double& x : c.centroid) x /= c.cell_volume;
-    measure(c.surface);
+    measure_surface(c.surface);
   }
   std::stable_sort(cavities.begin(), cavities.end(), [](const Cavity& a, const Cavity& b) { return a.cell_volume > b.cell_volume; });
   return cavities;

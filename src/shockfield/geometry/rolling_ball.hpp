@@ -29,6 +29,9 @@ struct TriangleSurface {
   bool manifold = false;
 };
 
+/// Fills area, volume, euler_characteristic and manifold from the points and triangles.
+void measure_surface(TriangleSurface& s);
+
 /// A cavity: a set of tetrahedra where a ball of the radius can sit and move, not reachable from
 /// outside — a void inside the point set (a vacancy cluster, a void in a crystal). Its surface
 /// is where the ball is stopped (the triangles of the atoms it touches), normals out of the
