@@ -53,6 +53,23 @@ TEST(PivotingBall, SphereEqualsTheDelaunaySurface) {
   EXPECT_NEAR(pivot.volume, 4 * pi / 3, 0.01 * 4 * pi / 3);
 }
 
+TEST(PivotingBall, TorusEqualsTheDelaunaySurfaceWithEulerCharacteristicZero) {
+  // 10 000 points uniform in area on a torus R = 1, a = 0.4, ball 0.2: the hole stays open.
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> u(0, 2 * std::numbers::pi), w(0, 1);
+  const double R = 1.0, a = 0.4;
+  std::vector<Vec3> points;
+  while (points.size() < 10000) {
+    const double t = u(rng), v = u(rng);
+    if (w(rng) > (R + a * std::cos(v)) / (R + a)) continue;
+    points.push_back({(R + a * std::cos(v)) * std::cos(t), (R + a * std::cos(v)) * std::sin(t), a * std::sin(v)});
+  }
+  const auto pivot = pivoting_ball_surface(points, 0.2);
+  EXPECT_TRUE(pivot.manifold);
+  EXPECT_EQ(pivot.euler_characteristic, 0);
+  EXPECT_EQ(canonical(pivot), canonical(rolling_ball_surface(delaunay_division<3>(points), 0.2)));
+}
+
 TEST(PivotingBall, LatticeBlockWithCosphericalTiesIsItsBox) {
   // A 6×6×6 simple cubic block: every face square is four cocircular points (exact ties, broken
   // by the 1e-9 move of the points). A ball of radius 3 rolls over the box: area 6·5², volume 5³,
