@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/delaunay.hpp"
@@ -70,6 +71,18 @@ TEST(PivotingBall, TorusEqualsTheDelaunaySurfaceWithEulerCharacteristicZero) {
   EXPECT_EQ(canonical(pivot), canonical(rolling_ball_surface(delaunay_division<3>(points), 0.2)));
 }
 
+TEST(PivotingBall, FollowsOnlyTheComponentOfItsSeed) {
+  // Two unit spheres 3 apart (documented limit): the Delaunay surface has both (χ = 4), the
+  // pivot the one on the point of largest x (χ = 2, half the volume).
+  auto points = sphere_points(3000, 1.0, 3);
+  for (auto p : sphere_points(3000, 1.0, 4)) points.push_back({p[0] + 3.0, p[1], p[2]});
+  const auto pivot = pivoting_ball_surface(points, 0.3);
+  const auto delaunay = rolling_ball_surface(delaunay_division<3>(points), 0.3);
+  EXPECT_EQ(delaunay.euler_characteristic, 4);
+  EXPECT_EQ(pivot.euler_characteristic, 2);
+  EXPECT_NEAR(pivot.volume, 0.5 * delaunay.volume, 0.01 * delaunay.volume);
+}
+
 TEST(PivotingBall, LatticeBlockWithCosphericalTiesIsItsBox) {
   // A 6×6×6 simple cubic block: every face square is four cocircular points (exact ties, broken
   // by the 1e-9 move of the points). A ball of radius 3 rolls over the box: area 6·5², volume 5³,
@@ -90,8 +103,17 @@ TEST(PivotingBall, LatticeBlockWithCosphericalTiesIsItsBox) {
 
 TEST(PivotingBall, RefusesRadiiThatCannotCloseAndTooFewPoints) {
   const auto points = sphere_points(2000, 1.0, 2);
-  // Far below the spacing (~0.08): the ball falls between the points.
+  // Far below the spacing (~0.08): the seed ball meets too few points.
   EXPECT_THROW(pivoting_ball_surface(points, 0.01), InputError);
+  // About the spacing: the ball falls through the sampling into the sphere (the Delaunay
+  // surface is not manifold there); the pivot makes triangles twice and says so.
+  EXPECT_FALSE(rolling_ball_surface(delaunay_division<3>(points), 0.08).manifold);
+  try {
+    pivoting_ball_surface(points, 0.08);
+    ADD_FAILURE() << "no error for an open surface";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the surface does not close"), std::string::npos) << e.what();
+  }
   EXPECT_THROW(pivoting_ball_surface(points, -1.0), InputError);
   EXPECT_THROW(pivoting_ball_surface({{0, 0, 0}, {1, 0, 0}}, 1.0), InputError);
   std::vector<Vec3> bad = points;
