@@ -9,6 +9,7 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/pivot_searches.hpp"
+#include "shockfield/geometry/space_tree_queries.hpp"
 
 namespace shockfield::geometry {
 namespace {
@@ -117,20 +118,37 @@ std::vector<Vec3> moved_off_ties(const std::vector<Vec3>& points) {
   return moved;
 }
 
+/// The points to pivot on: the first of each set of equal points (MS2 finds an equal point
+/// already held), so that no triangle is made between copies of one point.
+std::vector<std::uint32_t> distinct_points(const std::vector<Vec3>& points) {
+  const auto adaptor = adaptor_of(points);
+  PointTree tree(adaptor);
+  std::vector<std::uint32_t> keep;
+  for (std::uint32_t i = 0; i < points.size(); ++i) {
+    if (tree.size() > 0 && nearest<3>(tree, points[i]).distance == 0.0) continue;
+    tree.insert(i);
+    keep.push_back(i);
+  }
+  return keep;
+}
+
 }  // namespace
 
 TriangleSurface pivoting_ball_surface(const std::vector<Vec3>& points, double radius) {
   if (!(radius > 0.0) || !std::isfinite(radius))
     throw InputError(fmt::format("rolling-ball radius must be a positive finite length, got {}", radius));
-  if (points.size() < 3)
-    throw InputError(fmt::format("{} points: a pivoting-ball surface needs at least 3", points.size()));
   for (std::size_t i = 0; i < points.size(); ++i)
     for (double c : points[i])
       if (!std::isfinite(c))
         throw InputError(fmt::format("point {} has a non-finite coordinate", i));
+  const auto distinct = distinct_points(points);
+  if (distinct.size() < 3)
+    throw InputError(fmt::format("{} distinct points: a pivoting-ball surface needs at least 3",
+                                 distinct.size()));
   const std::vector<Vec3> moved = moved_off_ties(points);  // every decision on these
   const auto adaptor = adaptor_of(moved);
-  const auto tree = PointTree::with_all(adaptor);
+  PointTree tree(adaptor);
+  for (std::uint32_t i : distinct) tree.insert(i);
   TriangleSurface s;
   s.points = points;
   std::set<std::array<std::uint32_t, 3>> made;  // vertex sets, to refuse a triangle made twice

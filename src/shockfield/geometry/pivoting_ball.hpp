@@ -20,8 +20,8 @@
 
 namespace shockfield::geometry {
 
-/// The surface the ball of radius `radius` touches, pivoted from the seed of step I. Throws
-/// InputError for fewer than 3 points, a non-finite coordinate or radius, when the seed cannot
+/// The surface the ball of radius `radius` touches, pivoted from the seed of step I; of equal
+/// points only the first is used. Throws InputError for fewer than 3 distinct points, a non-finite coordinate or radius, when the seed cannot
 /// be placed (the ball meets fewer than three points), and when the surface does not close (an
 /// edge about which the ball meets no point, a triangle made twice, or an edge on more than two
 /// triangles: the radius is too small or too large for the sampling).

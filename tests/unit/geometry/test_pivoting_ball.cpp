@@ -52,6 +52,10 @@ TEST(PivotingBall, SphereEqualsTheDelaunaySurface) {
   const double pi = std::numbers::pi;
   EXPECT_NEAR(pivot.area, 4 * pi, 0.01 * 4 * pi);
   EXPECT_NEAR(pivot.volume, 4 * pi / 3, 0.01 * 4 * pi / 3);
+  // Copies of 500 points appended: the copies are left out, the surface is the same.
+  auto with_copies = points;
+  for (std::size_t i = 0; i < 500; ++i) with_copies.push_back(points[37 * i]);
+  EXPECT_EQ(canonical(pivoting_ball_surface(with_copies, r)), canonical(pivot));
 }
 
 TEST(PivotingBall, TorusEqualsTheDelaunaySurfaceWithEulerCharacteristicZero) {
@@ -116,6 +120,7 @@ TEST(PivotingBall, RefusesRadiiThatCannotCloseAndTooFewPoints) {
   }
   EXPECT_THROW(pivoting_ball_surface(points, -1.0), InputError);
   EXPECT_THROW(pivoting_ball_surface({{0, 0, 0}, {1, 0, 0}}, 1.0), InputError);
+  EXPECT_THROW(pivoting_ball_surface({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}}, 1.0), InputError);
   std::vector<Vec3> bad = points;
   bad[7][1] = std::nan("");
   EXPECT_THROW(pivoting_ball_surface(bad, 0.3), InputError);
