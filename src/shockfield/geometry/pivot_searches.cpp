@@ -56,7 +56,8 @@ std::optional<PivotCircle> pivot_about_edge(const Vec3& a, const Vec3& b, const 
 
 double angle_met(const PivotCircle& pivot, const Vec3& p) {
   const auto [first, alpha] = reach_interval(pivot, p, pivot.ball_radius);
-  if (!(alpha < std::numbers::pi)) return std::numeric_limits<double>::infinity();  // never or always inside
+  if (!(alpha < std::numbers::pi))
+    return std::numeric_limits<double>::infinity();  // never or always inside
   const double theta = first < -kMetAtStart ? first + kTwoPi : first;
   return std::max(theta, 0.0);
 }

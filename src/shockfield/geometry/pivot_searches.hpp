@@ -123,7 +123,9 @@ std::optional<std::uint32_t> find_segment(const Tree& tree, std::uint32_t p1, st
   const auto& b = (*segments.points)[p2];
   std::optional<std::uint32_t> best;
   tree.conditional_search(
-      [&](const TreeCube<N>& cube) { return cube.distance2_to(a) == 0.0 && cube.distance2_to(b) == 0.0; },
+      [&](const TreeCube<N>& cube) {
+        return cube.distance2_to(a) == 0.0 && cube.distance2_to(b) == 0.0;
+      },
       [&](std::uint32_t id) {
         const auto& e = (*segments.ends)[id];
         return (e[0] == p1 && e[1] == p2) || (e[0] == p2 && e[1] == p1);

@@ -28,13 +28,17 @@ Vec3 centre_at(const PivotCircle& c, double angle) {
 std::array<std::uint32_t, 3> seed_triangle(const PointTree& tree, const std::vector<Vec3>& x,
                                            double r) {
   const auto largest_x = tree.minimum_search(
-      1, [](const TreeCube<3>& cube) { return std::pair{-cube.hi(0), -cube.lo(0)}; },
+      1,
+      [](const TreeCube<3>& cube) {
+        return std::pair{-cube.hi(0), -cube.lo(0)};
+      },
       [&](std::uint32_t id) { return -x[id][0]; });
   const std::uint32_t p1 = largest_x.front().id;
   auto fail = [&](const char* what) {
-    return InputError(fmt::format("pivoting ball of radius {}: {} (the ball on the point of "
-                                  "largest x meets too few points; give a larger radius)",
-                                  r, what));
+    return InputError(
+        fmt::format("pivoting ball of radius {}: {} (the ball on the point of "
+                    "largest x meets too few points; give a larger radius)",
+                    r, what));
   };
   const Vec3 start = add_scaled(x[p1], {1.0, 0.0, 0.0}, r);
   const auto turn1 = pivot_about_axis(x[p1], {0.0, 0.0, 1.0}, start, r);
@@ -100,8 +104,8 @@ class Front {
 std::vector<Vec3> moved_off_ties(const std::vector<Vec3>& points) {
   double extent = 0.0;
   for (int k = 0; k < 3; ++k) {
-    const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
-                                              [k](const Vec3& p, const Vec3& q) { return p[k] < q[k]; });
+    const auto [lo, hi] = std::minmax_element(
+        points.begin(), points.end(), [k](const Vec3& p, const Vec3& q) { return p[k] < q[k]; });
     extent = std::max(extent, (*hi)[k] - (*lo)[k]);
   }
   const double step = 1e-9 * extent;
@@ -136,7 +140,8 @@ std::vector<std::uint32_t> distinct_points(const std::vector<Vec3>& points) {
 
 TriangleSurface pivoting_ball_surface(const std::vector<Vec3>& points, double radius) {
   if (!(radius > 0.0) || !std::isfinite(radius))
-    throw InputError(fmt::format("rolling-ball radius must be a positive finite length, got {}", radius));
+    throw InputError(
+        fmt::format("rolling-ball radius must be a positive finite length, got {}", radius));
   for (std::size_t i = 0; i < points.size(); ++i)
     for (double c : points[i])
       if (!std::isfinite(c))
@@ -182,9 +187,10 @@ TriangleSurface pivoting_ball_surface(const std::vector<Vec3>& points, double ra
     front.meet(a, p, b);
     front.meet(p, b, a);
     if (s.triangles.size() > 4 * points.size() + 16)
-      throw InputError(fmt::format("pivoting ball of radius {}: more than {} triangles, the ball "
-                                   "does not close a surface",
-                                   radius, 4 * points.size() + 16));
+      throw InputError(
+          fmt::format("pivoting ball of radius {}: more than {} triangles, the ball "
+                      "does not close a surface",
+                      radius, 4 * points.size() + 16));
   }
   measure_surface(s);
   if (stuck > 0 || twice > 0 || !s.manifold)

@@ -21,10 +21,11 @@
 namespace shockfield::geometry {
 
 /// The surface the ball of radius `radius` touches, pivoted from the seed of step I; of equal
-/// points only the first is used. Throws InputError for fewer than 3 distinct points, a non-finite coordinate or radius, when the seed cannot
-/// be placed (the ball meets fewer than three points), and when the surface does not close (an
-/// edge about which the ball meets no point, a triangle made twice, or an edge on more than two
-/// triangles: the radius is too small or too large for the sampling).
+/// points only the first is used. Throws InputError for fewer than 3 distinct points, a non-finite
+/// coordinate or radius, when the seed cannot be placed (the ball meets fewer than three points),
+/// and when the surface does not close (an edge about which the ball meets no point, a triangle
+/// made twice, or an edge on more than two triangles: the radius is too small or too large for the
+/// sampling).
 TriangleSurface pivoting_ball_surface(const std::vector<Vec3>& points, double radius);
 
 }  // namespace shockfield::geometry

@@ -104,9 +104,13 @@ void check_searchers(const Points& pts, double r_scale, int queries, std::uint64
   EXPECT_GT(ms1, queries / 4);  // enough triangles had a ball of the radius
 }
 
-TEST(PivotSearches, Ms1Ms3EqualBruteForceOnUniformPoints) { check_searchers(uniform_points(20000, 1), 0.05, 400, 2); }
+TEST(PivotSearches, Ms1Ms3EqualBruteForceOnUniformPoints) {
+  check_searchers(uniform_points(20000, 1), 0.05, 400, 2);
+}
 
-TEST(PivotSearches, Ms1Ms3EqualBruteForceOnBlobs) { check_searchers(blob_points(20000, 3), 0.02, 400, 4); }
+TEST(PivotSearches, Ms1Ms3EqualBruteForceOnBlobs) {
+  check_searchers(blob_points(20000, 3), 0.02, 400, 4);
+}
 
 TEST(PivotSearches, Ms1Ms3EqualBruteForceOnLatticeWithTies) {
   // Lattice triangles of neighbouring points and radii that put many points on the ball at
@@ -127,7 +131,8 @@ TEST(PivotSearches, Ms1Ms3EqualBruteForceOnLatticeWithTies) {
         expect_same(first_point_met(tree, *pivot, tri), brute, i * 100 + j);
         int at_same_angle = 0;
         for (std::uint32_t p = 0; p < pts.size(); ++p)
-          at_same_angle += p != tri[0] && p != tri[1] && p != tri[2] && angle_met(*pivot, pts[p]) == brute->angle;
+          at_same_angle += p != tri[0] && p != tri[1] && p != tri[2] &&
+                           angle_met(*pivot, pts[p]) == brute->angle;
         ties += at_same_angle > 1;
       }
   EXPECT_GT(ties, 0);  // the lattice does produce ties
@@ -166,20 +171,24 @@ TEST(PivotSearches, Ms1PivotBallIsEmptyAndTouchesThreePoints) {
     const auto pivot = pivot_about_edge(pts[tri[0]], pts[tri[1]], pts[tri[2]], r);
     if (!pivot) continue;
     auto centre_at = [&](double angle) {
-      return add_scaled(add_scaled(pivot->centre, pivot->x, pivot->radius * std::cos(angle)), pivot->y,
-                        pivot->radius * std::sin(angle));
+      return add_scaled(add_scaled(pivot->centre, pivot->x, pivot->radius * std::cos(angle)),
+                        pivot->y, pivot->radius * std::sin(angle));
     };
-    if (!within_radius<3>(tree, centre_at(0.0), r * (1 - 1e-9)).empty()) continue;  // start not empty
+    if (!within_radius<3>(tree, centre_at(0.0), r * (1 - 1e-9)).empty())
+      continue;                                               // start not empty
     const std::array<std::uint32_t, 2> edge{tri[0], tri[1]};  // C is met again coming round
     const auto hit = first_point_met(tree, *pivot, edge);
     ASSERT_EQ(hit.has_value(), brute_first_met(pts, *pivot, edge).has_value());
     if (!hit) continue;  // at the edge of the cloud the ball turns through empty space
     const Vec3 centre = centre_at(hit->angle);
-    auto distance = [&](std::uint32_t i) { return std::sqrt(dot(sub(pts[i], centre), sub(pts[i], centre))); };
+    auto distance = [&](std::uint32_t i) {
+      return std::sqrt(dot(sub(pts[i], centre), sub(pts[i], centre)));
+    };
     EXPECT_NEAR(distance(tri[0]), r, 1e-12);
     EXPECT_NEAR(distance(tri[1]), r, 1e-12);
     EXPECT_NEAR(distance(hit->id), r, 1e-9);  // acos near a tangent: 1e-9 of r
-    for (std::uint32_t i = 0; i < pts.size(); ++i) ASSERT_GE(distance(i), r - 1e-9) << "point " << i;
+    for (std::uint32_t i = 0; i < pts.size(); ++i)
+      ASSERT_GE(distance(i), r - 1e-9) << "point " << i;
     ++checked;
   }
   EXPECT_GT(checked, 20);
@@ -233,10 +242,12 @@ TEST(PivotSearches, Cs1FindsSegmentsLikeBruteForce) {
   ASSERT_EQ(tree.check(), "");
   int found = 0;
   for (int t = 0; t < 4000; ++t) {
-    const std::uint32_t p1 = t < 2000 ? ends[t][0] : pick(rng), p2 = t < 2000 ? ends[t][1] : pick(rng);
+    const std::uint32_t p1 = t < 2000 ? ends[t][0] : pick(rng),
+                        p2 = t < 2000 ? ends[t][1] : pick(rng);
     std::optional<std::uint32_t> brute;
     for (std::uint32_t s = 0; s < ends.size() && !brute; ++s)
-      if (tree.contains(s) && ((ends[s][0] == p1 && ends[s][1] == p2) || (ends[s][0] == p2 && ends[s][1] == p1)))
+      if (tree.contains(s) &&
+          ((ends[s][0] == p1 && ends[s][1] == p2) || (ends[s][0] == p2 && ends[s][1] == p1)))
         brute = s;
     ASSERT_EQ(find_segment<3>(tree, p1, p2), brute) << "pair " << p1 << " " << p2;
     found += brute.has_value();

@@ -67,7 +67,8 @@ TEST(PivotingBall, TorusEqualsTheDelaunaySurfaceWithEulerCharacteristicZero) {
   while (points.size() < 10000) {
     const double t = u(rng), v = u(rng);
     if (w(rng) > (R + a * std::cos(v)) / (R + a)) continue;
-    points.push_back({(R + a * std::cos(v)) * std::cos(t), (R + a * std::cos(v)) * std::sin(t), a * std::sin(v)});
+    points.push_back({(R + a * std::cos(v)) * std::cos(t), (R + a * std::cos(v)) * std::sin(t),
+                      a * std::sin(v)});
   }
   const auto pivot = pivoting_ball_surface(points, 0.2);
   EXPECT_TRUE(pivot.manifold);
@@ -99,7 +100,7 @@ TEST(PivotingBall, LatticeBlockWithCosphericalTiesIsItsBox) {
   const auto delaunay = rolling_ball_surface(delaunay_division<3>(points), 3.0);
   EXPECT_TRUE(pivot.manifold);
   EXPECT_EQ(pivot.euler_characteristic, 2);
-  EXPECT_NEAR(pivot.area, 150.0, 1e-9);   // rounding only: the triangles are the box's
+  EXPECT_NEAR(pivot.area, 150.0, 1e-9);  // rounding only: the triangles are the box's
   EXPECT_NEAR(pivot.volume, 125.0, 1e-9);
   EXPECT_NEAR(delaunay.area, 150.0, 1e-9);
   EXPECT_EQ(pivot.triangles.size(), delaunay.triangles.size());
@@ -116,7 +117,8 @@ TEST(PivotingBall, RefusesRadiiThatCannotCloseAndTooFewPoints) {
     pivoting_ball_surface(points, 0.08);
     ADD_FAILURE() << "no error for an open surface";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("the surface does not close"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("the surface does not close"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(pivoting_ball_surface(points, -1.0), InputError);
   EXPECT_THROW(pivoting_ball_surface({{0, 0, 0}, {1, 0, 0}}, 1.0), InputError);
