@@ -2,7 +2,7 @@
 # `shockfield analyze geometry`: the Delaunay division of the 8 corners of a unit cube plus its
 # centre (total volume 1 exactly, every tetrahedron checked), clusters of two separated pairs
 # (seed rule 1 cluster, single linkage 2), the rolling-ball surface of the cube (its hull: 12
-# triangles, area 6, volume 1, χ = 2), a LAMMPS dump and an .xyz file as input, and bad input
+# triangles, area 6, volume 1, χ = 2; the same by the pivoting ball), a LAMMPS dump and an .xyz file as input, and bad input
 # (NaN coordinate, fewer points than a simplex, coplanar points in 3D, collinear in 2D, a ball
 # radius too small to find a surface): one clear
 # message, exit code 2, no output folder.
@@ -21,6 +21,11 @@ for want in "surface_triangles 12" "surface_area 6" "surface_volume 1" "surface_
 done
 grep -q 'NumberOfPolys="12"' "$WORK/ball/surface.vtp" || fail "surface.vtp polygon count"
 echo "ok: rolling-ball surface of the cube"
+"$SF" analyze geometry "$WORK/cube.csv" -r 5 --surface-method pivot --no-mesh -o "$WORK/pivot" > /dev/null
+for want in "surface_triangles 12" "surface_area 6" "surface_volume 1" "surface_euler_characteristic 2" "surface_manifold yes"; do
+  grep -qx "$want" "$WORK/pivot/summary.txt" || fail "pivoting ball: no '$want' in $(cat "$WORK/pivot/summary.txt")"
+done
+echo "ok: pivoting-ball surface of the cube (cocircular faces)"
 printf '0 0\n0.1 0\n5 0.05\n5.1 0.05\n' > "$WORK/pairs.txt"
 "$SF" analyze geometry "$WORK/pairs.txt" --dimension 2 -d 1 -o "$WORK/pairs" > /dev/null
 grep -q "^seed_rule_clusters 1$" "$WORK/pairs/summary.txt" || fail "seed rule: $(cat "$WORK/pairs/summary.txt")"
@@ -63,4 +68,5 @@ bad line.csv "all 3 distinct points lie on one line" --dimension 2
 printf '0,0,0\n1,0\n' > "$WORK/short.csv"
 bad short.csv "short.csv:2: expected at least 3 values per line, got 2"
 bad cube.csv "a ball of radius 0.001 passes between the points everywhere" -r 0.001
+bad cube.csv "pivoting ball of radius 0.001: no second point met turning about z" -r 0.001 --surface-method pivot
 bad pairs.txt "--ball-radius: the rolling-ball surface needs --dimension 3" --dimension 2 -r 1

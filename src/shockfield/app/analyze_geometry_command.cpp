@@ -13,6 +13,7 @@
 #include "shockfield/geometry/delaunay_clusters.hpp"
 #include "shockfield/geometry/delaunay_output.hpp"
 #include "shockfield/geometry/point_file.hpp"
+#include "shockfield/geometry/pivoting_ball.hpp"
 #include "shockfield/geometry/rolling_ball.hpp"
 #include "shockfield/io/checked_file.hpp"
 
@@ -30,6 +31,7 @@ struct GeometryArgs {
   double cluster_distance = 0.0;  // 0: no clusters
   double ball_radius = 0.0;       // 0: no rolling-ball surface (3D only)
   std::string rule = "both";
+  std::string surface_method = "delaunay";
   bool check = false;
   bool no_mesh = false;
 };
@@ -53,7 +55,9 @@ void run_geometry(const GeometryArgs& a) {
   std::optional<sg::TriangleSurface> surface;
   if (a.ball_radius > 0.0) {
     if constexpr (N == 3)
-      surface = sg::rolling_ball_surface(division, a.ball_radius);
+      surface = a.surface_method == "pivot"
+                    ? sg::pivoting_ball_surface(division.points, a.ball_radius)
+                    : sg::rolling_ball_surface(division, a.ball_radius);
     else
       throw InputError("--ball-radius: the rolling-ball surface needs --dimension 3");
   }
@@ -132,6 +136,12 @@ void add_analyze_geometry_command(CLI::App& analyze) {
                   "oriented surface the ball touches rolled from outside, with its area, "
                   "enclosed volume and Euler characteristic in summary.txt")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--surface-method", a->surface_method,
+                  "How the rolling-ball surface is found: delaunay (from the Delaunay division: "
+                  "every component the ball touches) or pivot (the paper's pivoting ball, steps "
+                  "I-III with the searchers MS1/MS3/CS1: the component on the point of largest x)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"delaunay", "pivot"}));
   cmd->add_flag("--check", a->check,
                 "Check the division exactly (orientation, neighbour links, empty circumspheres) "
                 "before writing");

@@ -9,20 +9,12 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/predicates.hpp"
+#include "shockfield/geometry/vec3.hpp"
 
 namespace shockfield::geometry {
 namespace {
 
-using P3 = std::array<double, 3>;
-
-P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-P3 cross(const P3& a, const P3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-P3 add_scaled(const P3& a, const P3& b, double s) {
-  return {a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]};
-}
+using P3 = Vec3;
 
 /// Circumcentre of a tetrahedron: c − v0 = (|a|² (b×c) + |b|² (c×a) + |c|² (a×b)) / (2 a·(b×c)).
 P3 tet_circumcentre(const P3& v0, const P3& v1, const P3& v2, const P3& v3) {
@@ -32,14 +24,6 @@ P3 tet_circumcentre(const P3& v0, const P3& v1, const P3& v2, const P3& v3) {
   P3 r = v0;
   for (int k = 0; k < 3; ++k) r[k] += s * (dot(a, a) * bc[k] + dot(b, b) * ca[k] + dot(c, c) * ab[k]);
   return r;
-}
-
-/// Circumcentre of a triangle in 3D: q − v0 = ((|a|² b − |b|² a) × (a × b)) / (2 |a × b|²).
-P3 triangle_circumcentre(const P3& v0, const P3& v1, const P3& v2) {
-  const P3 a = sub(v1, v0), b = sub(v2, v0), n = cross(a, b);
-  P3 w;
-  for (int k = 0; k < 3; ++k) w[k] = dot(a, a) * b[k] - dot(b, b) * a[k];
-  return add_scaled(v0, cross(w, n), 0.5 / dot(n, n));
 }
 
 // The ball's moves over one division: circumcentres of the tetrahedra and whether a ball of
@@ -119,8 +103,18 @@ class BallPassage {
   std::vector<P3> centre_;
 };
 
-// Area, enclosed volume, Euler characteristic and edge-manifoldness of the triangles.
-void measure(TriangleSurface& s) {
+// Solid angle at vertex p of the tetrahedron (p, a, b, c) (Van Oosterom & Strackee 1983):
+// tan(ω/2) = |A·(B×C)| / (|A||B||C| + (A·B)|C| + (A·C)|B| + (B·C)|A|), A = a − p, ...
+double vertex_solid_angle(const P3& p, const P3& a, const P3& b, const P3& c) {
+  const P3 A = sub(a, p), B = sub(b, p), C = sub(c, p);
+  const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B)), lc = std::sqrt(dot(C, C));
+  const double denominator = la * lb * lc + dot(A, B) * lc + dot(A, C) * lb + dot(B, C) * la;
+  return 2.0 * std::atan2(std::abs(dot(A, cross(B, C))), denominator);
+}
+
+}  // namespace
+
+void measure_surface(TriangleSurface& s) {
   const auto& X = s.points;
   std::map<std::pair<std::int32_t, std::int32_t>, int> directed;
   std::vector<char> used(X.size(), 0);
@@ -147,17 +141,6 @@ void measure(TriangleSurface& s) {
                            static_cast<std::int64_t>(s.triangles.size());
 }
 
-// Solid angle at vertex p of the tetrahedron (p, a, b, c) (Van Oosterom & Strackee 1983):
-// tan(ω/2) = |A·(B×C)| / (|A||B||C| + (A·B)|C| + (A·C)|B| + (B·C)|A|), A = a − p, ...
-double vertex_solid_angle(const P3& p, const P3& a, const P3& b, const P3& c) {
-  const P3 A = sub(a, p), B = sub(b, p), C = sub(c, p);
-  const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B)), lc = std::sqrt(dot(C, C));
-  const double denominator = la * lb * lc + dot(A, B) * lc + dot(A, C) * lb + dot(B, C) * la;
-  return 2.0 * std::atan2(std::abs(dot(A, cross(B, C))), denominator);
-}
-
-}  // namespace
-
 TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius) {
   const BallPassage ball(d, radius);
   const std::vector<std::int32_t> region = ball.exterior();
@@ -179,7 +162,7 @@ TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius
     throw InputError(fmt::format("a ball of radius {} passes between the points everywhere and "
                                  "touches no surface: give a larger radius",
                                  radius));
-  measure(s);
+  measure_surface(s);
   return s;
 }
 
@@ -223,7 +206,7 @@ std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double r
   }
   for (Cavity& c : cavities) {
     for (double& x : c.centroid) x /= c.cell_volume;
-    measure(c.surface);
+    measure_surface(c.surface);
   }
   std::stable_sort(cavities.begin(), cavities.end(), [](const Cavity& a, const Cavity& b) { return a.cell_volume > b.cell_volume; });
   return cavities;

@@ -2,7 +2,7 @@
 // The rolling-ball surface of a 3D point set (Xu et al. 2015 §3.2.3, "Rolling-ball method for
 // finding interfaces"): the triangles whose three points a ball of radius r, rolled over the points
 // from outside, touches at once. Computed here from the Delaunay division rather than by the paper's
-// pivot searches (MS1/MS3/CS1, not implemented): an empty ball of radius r can sit at the
+// pivoting (pivoting_ball.hpp, on MS1/MS3/CS1): an empty ball of radius r can sit at the
 // circumcentre of a tetrahedron whose circumradius exceeds r, and can move between two neighbouring
 // tetrahedra along the Voronoi edge of their common face when every point of that edge stays at
 // least r from the face's vertices (the smallest distance on the edge is the face's circumradius
@@ -28,6 +28,9 @@ struct TriangleSurface {
   /// Every edge on exactly two triangles, once in each direction (edge-manifold, consistently oriented).
   bool manifold = false;
 };
+
+/// Fills area, volume, euler_characteristic and manifold from the points and triangles.
+void measure_surface(TriangleSurface& s);
 
 /// A cavity: a set of tetrahedra where a ball of the radius can sit and move, not reachable from
 /// outside — a void inside the point set (a vacancy cluster, a void in a crystal). Its surface

@@ -149,7 +149,9 @@ class SpaceTree {
   /// when fewer objects have a finite value). range(cube) returns {m, M}: bounds of the values
   /// of the objects in the cube's region, m(b) <= value <= M(b) (M = +inf when unknown). Cubes
   /// are opened in increasing m(b); a cube is skipped when m(b) exceeds the k-th value found, or
-  /// (k = 1) the smallest M(b) of a cube seen (every cube holds an object).
+  /// (k = 1) the smallest M(b) of a cube seen (every cube holds an object); a cube with
+  /// m(b) = +inf is never opened. Ties in value are resolved by the lower id (a cube whose m(b)
+  /// equals the k-th value is still opened), so the result does not depend on the tree's shape.
   template <class Range, class Value>
   std::vector<Found> minimum_search(std::size_t k, Range&& range, Value&& value) const;
 

@@ -247,7 +247,10 @@ auto SpaceTree<N, A>::minimum_search(std::size_t k, Range&& range, Value&& value
     -> std::vector<Found> {
   std::vector<Found> best;  // max-heap on value, at most k
   if (root_ < 0 || k == 0) return best;
-  auto worse = [](const Found& a, const Found& b) { return a.value < b.value; };
+  // Ties in value go to the lower id: (value, id) compared lexicographically.
+  auto worse = [](const Found& a, const Found& b) {
+    return a.value < b.value || (a.value == b.value && a.id < b.id);
+  };
   struct Open {
     double m;
     int node;
@@ -257,6 +260,7 @@ auto SpaceTree<N, A>::minimum_search(std::size_t k, Range&& range, Value&& value
   double upper = std::numeric_limits<double>::infinity();  // min M(b) seen, used when k == 1
   auto push = [&](int n) {
     const auto [m, M] = range(nodes_[n].cube);
+    if (!(m < std::numeric_limits<double>::infinity())) return;  // no finite value inside
     if (k == 1) upper = std::min(upper, M);
     open.push_back({m, n});
     std::push_heap(open.begin(), open.end());
@@ -266,7 +270,7 @@ auto SpaceTree<N, A>::minimum_search(std::size_t k, Range&& range, Value&& value
     std::pop_heap(open.begin(), open.end());
     const Open top = open.back();
     open.pop_back();
-    if (top.m > upper || (best.size() == k && top.m >= best.front().value)) break;
+    if (top.m > upper || (best.size() == k && top.m > best.front().value)) break;
     const Node& node = nodes_[top.node];
     for (Id id : node.objects) {
       const double v = value(id);
@@ -274,7 +278,7 @@ auto SpaceTree<N, A>::minimum_search(std::size_t k, Range&& range, Value&& value
       if (best.size() < k) {
         best.push_back({v, id});
         std::push_heap(best.begin(), best.end(), worse);
-      } else if (v < best.front().value) {
+      } else if (worse(Found{v, id}, best.front())) {
         std::pop_heap(best.begin(), best.end(), worse);
         best.back() = {v, id};
         std::push_heap(best.begin(), best.end(), worse);
