@@ -15,6 +15,13 @@ grep -q "^particles = " "$WORK/straight/config.resolved.toml" || fail "no derive
 grep -q "^time_step_initial_s = " "$WORK/straight/config.resolved.toml" || fail "no derived time step"
 grep -q "^hugoniot_pressure_Pa = " "$WORK/straight/config.resolved.toml" || fail "no derived Hugoniot"
 grep -q "^heat_conduction = false" "$WORK/straight/config.resolved.toml" || fail "heat_conduction (default off) not echoed"
+# The HEL of the J2 solid, (K + 4G/3)·Y0/(2G) = ρ0 c_L² Y0/(2G), with G from the derived speeds:
+# 4G/3 = ρ0 (c_L² − c0²) (docs/mpm.md; the two-wave test of test_waves.cpp measures its plateau).
+awk -F' = ' '$1 == "al_hel_Pa" { hel = $2 } $1 == "al_longitudinal_speed_m_s" { cl = $2 }
+  $1 == "c0" { c0 = $2 } $1 == "rho0" { rho = $2 } $1 == "yield_stress" { y = $2 }
+  END { g = 0.75 * rho * (cl * cl - c0 * c0); want = rho * cl * cl * y / (2 * g)
+        exit !(hel > 0 && (hel - want) / want < 1e-9 && (want - hel) / want < 1e-9) }' \
+  "$WORK/straight/config.resolved.toml" || fail "derived al_hel_Pa is not (K + 4G/3) Y0 / (2G)"
 [ "$(grep -c DataSet "$WORK/straight/grid.pvd")" -eq 5 ] || fail "grid.pvd should list 5 frames"
 [ "$(wc -l < "$WORK/straight/series.csv")" -eq 22 ] || fail "series.csv should have 21 rows"
 # Stress outputs (docs/mpm.md, "Stress outputs"): tensors and the shock-axis and von Mises scalars.

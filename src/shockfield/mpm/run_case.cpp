@@ -36,6 +36,14 @@ void derive(const Config& root, const MpmCase& c, const BuiltSample& sample, con
   for (const auto& m : c.materials) {
     root.derive(m.name + "_longitudinal_speed_m_s", m.longitudinal_speed(m.eos.rho0, 0.0));
     root.derive(m.name + "_bulk_sound_speed_m_s", m.eos.c0);
+    // Hugoniot elastic limit of the J2 solid in uniaxial strain (1D, plane strain or 3D along the
+    // shock): the longitudinal stress where the deviator reaches yield, s_xx = (2/3)Y0 with
+    // σ_xx = −P + s_xx and P = K ε_v, s_xx = (4/3)G ε: σ_HEL = (K + 4G/3) Y0 / (2G), K = ρ0 c0².
+    const double g = m.strength.shear_modulus, y0 = m.strength.yield_stress0;
+    if (g > 0 && y0 > 0) {
+      const double bulk = m.eos.rho0 * m.eos.c0 * m.eos.c0;
+      root.derive(m.name + "_hel_Pa", (bulk + 4.0 * g / 3.0) * y0 / (2.0 * g));
+    }
   }
   if (c.loading == LoadingKind::Wall || c.loading == LoadingKind::Symmetric) {
     const auto& eos = c.materials[static_cast<std::size_t>(c.bodies[0].body.material)].eos;
