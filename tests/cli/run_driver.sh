@@ -31,6 +31,15 @@ grep -qE "^wall time: step .* \(of which force [0-9.e+-]+ s, neighbour (0\.0*[1-
   || fail "md phase times (force, neighbour, ghosts) missing from the performance summary"
 echo "ok: summary.json valid, provenance and performance logged for md, mpm, pd, dbm"
 
+# [md] is optional (every key has a default): without it the run uses and echoes the defaults,
+# and --set reaches its keys; with the table's values given by --set the run equals the case's.
+awk '/^\[md\]/ { skip = 1; next } /^\[/ { skip = 0 } !skip' "$cases/tiny_cu.toml" > "$WORK/no_md.toml"
+grep -q '^\[md\]' "$WORK/no_md.toml" && fail "the [md] table was not removed"
+run "$WORK/no_md.toml" --output "$WORK/no_md" --set md.timestep=0.002 --set md.skin=1.0
+grep -A8 '^\[md\]' "$WORK/no_md/config.resolved.toml" | grep -q '^neighbor_every = 1$' ||
+  fail "[md] defaults not echoed without the table"
+same_files "$WORK/tiny_cu" "$WORK/no_md" thermo.csv
+
 # --set equals editing the file, bitwise.
 sed 's/^end_time = 2e-7/end_time = 1.5e-7/' "$cases/pd_tiny.toml" > "$WORK/pd_edited.toml"
 grep -q "^end_time = 1.5e-7" "$WORK/pd_edited.toml" || fail "the edit did not apply"

@@ -283,6 +283,13 @@ std::optional<Config> Config::optional_table(std::string_view key) const {
   return Config(shared_, t, key_path(key));
 }
 
+Config Config::table_or_empty(std::string_view key) const {
+  if (auto t = optional_table(key)) return *t;
+  static const toml::table empty;
+  table_at(shared_->resolved, key_path(key));
+  return Config(shared_, &empty, key_path(key));
+}
+
 std::vector<Config> Config::tables(std::string_view key) const {
   const toml::node* n = node(key);
   if (!n) return {};

@@ -86,6 +86,9 @@ class Config {
   /// A sub-table; required() throws if it is missing.
   Config table(std::string_view key) const;
   std::optional<Config> optional_table(std::string_view key) const;
+  /// A sub-table whose keys all have defaults: when absent, an empty one (its get_*_or give, and
+  /// record, their defaults, so the resolved configuration still shows the table).
+  Config table_or_empty(std::string_view key) const;
   /// An array of tables ([[key]]); empty when absent.
   std::vector<Config> tables(std::string_view key) const;
 

@@ -191,7 +191,7 @@ AnalysisSpec read_analysis(const Config& t) {
 
 MdCase read_md_case(const Config& root) {
   MdCase c;
-  const Config md = root.table("md");
+  const Config md = root.table_or_empty("md");  // every key has a default
   c.timestep = md.get_double_or("timestep", 0.001, Range{0.0, 0.1, true, false});
   c.skin = md.get_double_or("skin", 2.0, Range::positive());
   c.neighbor_every = static_cast<int>(md.get_int_or("neighbor_every", 1, Range::closed(1, 1000)));
