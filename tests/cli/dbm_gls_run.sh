@@ -3,7 +3,8 @@
 # phase-separation columns, summary.csv (t_SD, D_max, peak of L), field frames with D and D^F and
 # the derived time-step limit; a stopped and resumed run writes the same series and summary;
 # bad GLS input is refused (exit 2, key named): dt above the stable limit with its cause, rho0
-# outside the EOS domain, q >= tau, gamma != 2, NND convection, a non-periodic side; a blow-up
+# outside the EOS domain, q >= tau, gamma != 2, NND convection, the state filter with NND, a
+# non-periodic side; a blow-up
 # (a deep quench of a dense liquid) stops with exit 3 and keeps series and summary.
 source "$(dirname "$0")/lib.bash"
 set -e
@@ -53,10 +54,14 @@ expect_error "${gls/kind = \"gls\"/kind = \"gls\"
 gamma = 1.4}" "model.gamma" "2"
 expect_error "${gls/kind = \"gls\"/kind = \"gls\"
 convection = \"nnd\"}" "model.convection" "spectral"
+expect_error "${gls/kind = \"gls\"/kind = \"bgk\"
+filter_state = true}" "model.filter_state" "spectral"
 expect_error "$gls
 [boundary]
 x_low = \"outflow\"" "boundary.x_low" "periodic"
-deep="${gls/rho0 = 1.0/rho0 = 2.6}"; deep="${deep/noise = 0.05/noise = 0.15}"
+# (without the state filter: with it, this quench no longer breaks down within t = 0.02)
+deep="${gls/rho0 = 1.0/rho0 = 2.6}"; deep="${deep/noise = 0.05/noise = 0.15}"; deep="${deep/q = -0.019/q = -0.019
+filter_state = false}"
 run_expecting 3 "${deep/T = 0.85/T = 0.2}" "broke down"
 [ -s "$WORK/out/series.csv" ] && [ -s "$WORK/out/summary.csv" ] || fail "a blown-up GLS run lost its output"
 echo "dbm_gls_run: series, summary, fields, derived dt limit, bitwise resume, refused GLS input, blow-up"

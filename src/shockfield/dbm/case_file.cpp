@@ -59,6 +59,11 @@ VelocityModel read_model(const Config& t, BgkSettings& bgk) {
   if (gls && !bgk.spectral_convection)
     t.fail("convection", "\"spectral\" for kind = \"gls\": with NND the ideal and the non-ideal pressure see different "
                          "gradients and interfaces blow up (docs/theory/dbm.md)");
+  // On by default for GLS: without it the modes the derivative filter removes stay in f, damped by
+  // nothing, and fill with the force's aliased products until a cell's T crosses zero.
+  bgk.filter_state = t.get_bool_or("filter_state", gls);
+  if (bgk.filter_state && !bgk.spectral_convection)
+    t.fail("filter_state", "true needs convection = \"spectral\" (the filter acts on FFT spectra)");
   return model;
 }
 

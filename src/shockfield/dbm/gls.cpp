@@ -1,6 +1,7 @@
 #include "shockfield/dbm/gls.hpp"
 
 #include <cmath>
+#include <functional>
 
 #include <fmt/format.h>
 
@@ -66,6 +67,17 @@ std::vector<Macro> GlsForce::macros(const std::vector<double>& f) const {
   return m;
 }
 
+namespace {
+
+/// Runs independent jobs over the threads, each one serial (an FFT and its products, writing only its
+/// own result): the same numbers for any thread count.
+void run_jobs(const std::vector<std::function<void()>>& jobs) {
+#pragma omp parallel for schedule(dynamic)
+  for (std::size_t j = 0; j < jobs.size(); ++j) jobs[j]();
+}
+
+}  // namespace
+
 void GlsForce::coefficients(const std::vector<double>& f) {
   const std::vector<Macro> m = macros(f);
   const std::size_t n = m.size();
@@ -77,13 +89,16 @@ void GlsForce::coefficients(const std::vector<double>& f) {
     P[c] = eos_pressure(settings_.eos, rho[c], T[c]);
   }
   const PeriodicSpectral& s = spectral_;
-  const auto s_rho = s.forward(rho), s_ux = s.forward(ux), s_uy = s.forward(uy),
-             s_T = s.forward(T);
-  const auto rx = s.derivative(s_rho, 1, 0), ry = s.derivative(s_rho, 0, 1),
-             lap = s.laplacian(s_rho);
-  const auto uxx = s.derivative(s_ux, 1, 0), uxy = s.derivative(s_ux, 0, 1),  // ∂x ux, ∂y ux
-      uyx = s.derivative(s_uy, 1, 0), uyy = s.derivative(s_uy, 0, 1);
-  const auto Tx = s.derivative(s_T, 1, 0), Ty = s.derivative(s_T, 0, 1);
+  using Spectrum = PeriodicSpectral::Spectrum;
+  Spectrum s_rho, s_ux, s_uy, s_T;
+  run_jobs({[&] { s_rho = s.forward(rho); }, [&] { s_ux = s.forward(ux); }, [&] { s_uy = s.forward(uy); },
+            [&] { s_T = s.forward(T); }});
+  std::vector<double> rx, ry, lap, uxx, uxy, uyx, uyy, Tx, Ty;  // uxy = ∂y ux, uyx = ∂x uy
+  run_jobs({[&] { rx = s.derivative(s_rho, 1, 0); }, [&] { ry = s.derivative(s_rho, 0, 1); },
+            [&] { lap = s.laplacian(s_rho); }, [&] { uxx = s.derivative(s_ux, 1, 0); },
+            [&] { uxy = s.derivative(s_ux, 0, 1); }, [&] { uyx = s.derivative(s_uy, 1, 0); },
+            [&] { uyy = s.derivative(s_uy, 0, 1); }, [&] { Tx = s.derivative(s_T, 1, 0); },
+            [&] { Ty = s.derivative(s_T, 0, 1); }});
   std::vector<double> div(n), nonideal(n), Lxx(n), Lxy(n), Lyy(n), hx(n), hy(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t c = 0; c < n; ++c) {
@@ -99,12 +114,16 @@ void GlsForce::coefficients(const std::vector<double>& f) {
     hx[c] = 2.0 * q * rho[c] * T[c] * Tx[c];  // eq. 18 flux
     hy[c] = 2.0 * q * rho[c] * T[c] * Ty[c];
   }
-  const auto s_div = s.forward(div), s_ni = s.forward(nonideal);
-  const auto divx = s.derivative(s_div, 1, 0), divy = s.derivative(s_div, 0, 1);
-  const auto nix = s.derivative(s_ni, 1, 0), niy = s.derivative(s_ni, 0, 1);
-  const auto s_xx = s.forward(Lxx), s_xy = s.forward(Lxy), s_yy = s.forward(Lyy);
-  const auto dLx = s.divergence(s_xx, s_xy), dLy = s.divergence(s_xy, s_yy);
-  const auto dh = q != 0.0 ? s.divergence(s.forward(hx), s.forward(hy)) : std::vector<double>(n);
+  Spectrum s_div, s_ni, s_xx, s_xy, s_yy, s_hx, s_hy;
+  run_jobs({[&] { s_div = s.forward(div); }, [&] { s_ni = s.forward(nonideal); }, [&] { s_xx = s.forward(Lxx); },
+            [&] { s_xy = s.forward(Lxy); }, [&] { s_yy = s.forward(Lyy); },
+            [&] { s_hx = q != 0.0 ? s.forward(hx) : Spectrum(); },
+            [&] { s_hy = q != 0.0 ? s.forward(hy) : Spectrum(); }});
+  std::vector<double> divx, divy, nix, niy, dLx, dLy, dh;
+  run_jobs({[&] { divx = s.derivative(s_div, 1, 0); }, [&] { divy = s.derivative(s_div, 0, 1); },
+            [&] { nix = s.derivative(s_ni, 1, 0); }, [&] { niy = s.derivative(s_ni, 0, 1); },
+            [&] { dLx = s.divergence(s_xx, s_xy); }, [&] { dLy = s.divergence(s_xy, s_yy); },
+            [&] { dh = q != 0.0 ? s.divergence(s_hx, s_hy) : std::vector<double>(n); }});
 #pragma omp parallel for schedule(static)
   for (std::size_t c = 0; c < n; ++c) {
     const double r = rho[c], t = T[c], d = div[c];

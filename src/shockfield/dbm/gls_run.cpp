@@ -51,7 +51,8 @@ const char* GlsRunPart::blow_up_hint() {
   return "GLS runs break down (docs/dbm.md, \"When a GLS run blows up\") when the interfaces are under-resolved "
          "(width ~ 2 sqrt(2K/|dP/drho|_T) should span 4 or more cells: raise K or refine dx), when tau is long for "
          "the grid (keep tau (pi/dx) sqrt(2T) near 0.3 or below and raise the heat conduction with q < 0 instead), "
-         "or when coalescing domains drive fast flows (the bulk viscosity zeta damps them)";
+         "when coalescing domains drive fast flows (the bulk viscosity zeta damps them), or with [model] filter_state = "
+         "false (grid-scale modes of T then grow undamped)";
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "shockfield/dbm/gls_stability.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -24,6 +25,19 @@ GlsStepLimit gls_step_limit(const GlsSettings& gls, const Lattice& lattice, doub
   if (s.diffusion < s.dt) s.dt = s.diffusion, s.cause = "diffusion";
   if (s.collision < s.dt) s.dt = s.collision, s.cause = "collision";
   return s;
+}
+
+double gls_mode_amplification(const StabilityProblem& problem, const Macro& state, double theta_x, double theta_y,
+                              bool state_filter) {
+  const RealMatrix16 J = collision_jacobian(problem, state);
+  const ComplexMatrix16 collision = problem.dt * J.cast<std::complex<double>>();
+  const double eta_x = std::abs(theta_x) / std::numbers::pi, eta_y = std::abs(theta_y) / std::numbers::pi;
+  const ComplexMatrix16 A =
+      collision + PeriodicSpectral::derivative_filter(eta_x, eta_y) *
+                      (step_matrix(problem, J, theta_x, theta_y, Stencil::exact) - collision);
+  const ComplexMatrix16 G = ComplexMatrix16::Identity() + A + A * A / 2.0 + A * A * A / 6.0;
+  const double radius = Eigen::ComplexEigenSolver<ComplexMatrix16>(G, false).eigenvalues().cwiseAbs().maxCoeff();
+  return state_filter ? radius * PeriodicSpectral::state_filter(eta_x, eta_y) : radius;
 }
 
 }  // namespace shockfield::dbm

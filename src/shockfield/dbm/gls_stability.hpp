@@ -15,6 +15,7 @@
 
 #include "shockfield/dbm/gls.hpp"
 #include "shockfield/dbm/lattice.hpp"
+#include "shockfield/dbm/linear_stability.hpp"
 
 namespace shockfield::dbm {
 
@@ -27,5 +28,14 @@ struct GlsStepLimit {
 /// The bounds for densities up to rho_liquid and down to rho_vapour at temperature T.
 GlsStepLimit gls_step_limit(const GlsSettings& gls, const Lattice& lattice, double max_speed,
                             double tau, double T, double rho_vapour, double rho_liquid);
+
+/// Per-step amplification ρ(G) of a mode θ = (k_xΔx, k_yΔy) of the FFT-GLS scheme linearised about
+/// the uniform `state` (problem.stencil is ignored): G = I + A + A²/2 + A³/6 with
+/// A = Δt(−iσ_d(θ) v·k + J), σ_d the derivative filter, times the state filter σ_s(θ) when
+/// `state_filter` is on. The GLS force is made of filtered derivatives and vanishes with σ_d, so
+/// beyond θ ≈ 0.8π (σ_d < 1e-3) A → ΔtJ, whose four conserved moments have eigenvalue 0: without
+/// the state filter ρ(G) = 1 there, the undamped band (docs/theory/dbm.md).
+double gls_mode_amplification(const StabilityProblem& problem, const Macro& state, double theta_x, double theta_y,
+                              bool state_filter);
 
 }  // namespace shockfield::dbm

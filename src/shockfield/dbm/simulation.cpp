@@ -44,6 +44,8 @@ Simulation::Simulation(VelocityModel model, const Lattice& lattice, const Bounda
         "unstable; use dt <= {:.4g}",
         courant, BgkSettings::max_courant, model_.max_speed(),
         BgkSettings::max_courant * std::min(lattice.dx, lattice.dy) / model_.max_speed()));
+  if (settings.filter_state && !settings.spectral_convection)
+    throw InputError("the state filter acts on FFT spectra and needs spectral convection");
   if (settings.spectral_convection) {
     for (const BoundarySide& s : boundaries.side)
       if (s.kind != BoundaryKind::periodic)
@@ -88,19 +90,45 @@ Macro Simulation::macro(int i, int j) const {
   return macro_of(model_, f_.data() + lattice_.at(i, j), lattice_.cells(), b_);
 }
 
+void Simulation::interior(const std::vector<double>& f, int k, std::vector<double>& field) const {
+  const std::size_t N = lattice_.cells();
+  for (int j = 0; j < lattice_.ny; ++j)
+    for (int i = 0; i < lattice_.nx; ++i)
+      field[i + static_cast<std::size_t>(lattice_.nx) * j] = f[k * N + lattice_.at(i, j)];
+}
+
 void Simulation::spectral_convection(const std::vector<double>& f) {
-  const std::size_t N = lattice_.cells(), n = spectral_->size();
-  std::vector<double> field(n);
-  for (int k = 0; k < model_.size(); ++k) {
-    for (int j = 0; j < lattice_.ny; ++j)
-      for (int i = 0; i < lattice_.nx; ++i)
-        field[i + static_cast<std::size_t>(lattice_.nx) * j] = f[k * N + lattice_.at(i, j)];
-    auto s = spectral_->forward(field);
-    auto sy = s;
-    for (auto& v : s) v *= model_.vx[k];
-    for (auto& v : sy) v *= model_.vy[k];
-    const std::vector<double> d = spectral_->divergence(s, sy);
-    std::copy(d.begin(), d.end(), convection_.begin() + static_cast<std::ptrdiff_t>(k * n));
+  const std::size_t n = spectral_->size();
+  // One velocity per thread, each transform serial: the same numbers for any thread count.
+#pragma omp parallel
+  {
+    std::vector<double> field(n);
+#pragma omp for schedule(static)
+    for (int k = 0; k < model_.size(); ++k) {
+      interior(f, k, field);
+      auto s = spectral_->forward(field);
+      auto sy = s;
+      for (auto& v : s) v *= model_.vx[k];
+      for (auto& v : sy) v *= model_.vy[k];
+      const std::vector<double> d = spectral_->divergence(s, sy);
+      std::copy(d.begin(), d.end(), convection_.begin() + static_cast<std::ptrdiff_t>(k * n));
+    }
+  }
+}
+
+void Simulation::apply_state_filter() {
+  const std::size_t N = lattice_.cells();
+#pragma omp parallel
+  {
+    std::vector<double> field(spectral_->size());
+#pragma omp for schedule(static)
+    for (int k = 0; k < model_.size(); ++k) {
+      interior(f_, k, field);
+      const std::vector<double> smooth = spectral_->filtered(field);
+      for (int j = 0; j < lattice_.ny; ++j)
+        for (int i = 0; i < lattice_.nx; ++i)
+          f_[k * N + lattice_.at(i, j)] = smooth[i + static_cast<std::size_t>(lattice_.nx) * j];
+    }
   }
 }
 
@@ -146,6 +174,7 @@ void Simulation::step() {
     combine(1.0 / 3.0, f1_, f1_);
   }
   std::swap(f_, f1_);
+  if (settings_.filter_state) apply_state_filter();
   time_ += dt;
   ++steps_;
 }

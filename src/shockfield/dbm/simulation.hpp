@@ -23,6 +23,8 @@ struct BgkSettings {
   double tau = 1e-3;                 // relaxation time
   double dt = 1e-4;                  // time step
   bool spectral_convection = false;  // v·∇f by FFT (needs periodic boundaries on all sides)
+  /// The state filter (PeriodicSpectral::filtered) on f after every step; spectral convection only.
+  bool filter_state = false;
   /// Largest accepted Courant number max|v|·Δt/Δx of the NND + RK3 scheme.
   static constexpr double max_courant = 1.0;
   /// Largest accepted Δt/τ: RK3 is stable on the negative real axis up to about 2.51.
@@ -77,6 +79,10 @@ class Simulation {
   void stage(std::vector<double>& f, const RowOutput& output);
   /// v_k·∇f_k of every velocity by FFT into convection_ (interior cells, i + nx·j per k).
   void spectral_convection(const std::vector<double>& f);
+  /// The state filter of PeriodicSpectral applied to every f_k (interior cells).
+  void apply_state_filter();
+  /// f_k of the interior cells into field (i + nx·j).
+  void interior(const std::vector<double>& f, int k, std::vector<double>& field) const;
 
   VelocityModel model_;
   MomentInversion inversion_;

@@ -7,6 +7,14 @@
 
 namespace shockfield::dbm {
 
+double PeriodicSpectral::derivative_filter(double eta_x, double eta_y) {
+  return std::exp(-36.0 * (std::pow(eta_x, 8) + std::pow(eta_y, 8)));
+}
+
+double PeriodicSpectral::state_filter(double eta_x, double eta_y) {
+  return std::exp(-36.0 * (std::pow(eta_x, 16) + std::pow(eta_y, 16)));
+}
+
 PeriodicSpectral::PeriodicSpectral(int nx, int ny, double dx, double dy)
     : nx_(nx), ny_(ny), hx_(nx / 2 + 1), kx_(hx_), ky_(ny) {
   for (int i = 0; i < hx_; ++i) kx_[i] = 2.0 * std::numbers::pi * i / (nx * dx);
@@ -16,11 +24,12 @@ PeriodicSpectral::PeriodicSpectral(int nx, int ny, double dx, double dy)
   // alone and removes the Nyquist mode, which a centred spectral derivative leaves uncoupled
   // (odd–even decoupling that the non-linear force otherwise drives unstable).
   filter_.resize(static_cast<std::size_t>(hx_) * ny);
+  state_filter_.resize(filter_.size());
   for (int iy = 0; iy < ny; ++iy)
     for (int ix = 0; ix < hx_; ++ix) {
       const double ex = 2.0 * ix / nx, ey = 2.0 * std::abs(iy <= ny / 2 ? iy : iy - ny) / ny;
-      filter_[ix + static_cast<std::size_t>(hx_) * iy] =
-          std::exp(-36.0 * (std::pow(ex, 8) + std::pow(ey, 8)));
+      filter_[ix + static_cast<std::size_t>(hx_) * iy] = derivative_filter(ex, ey);
+      state_filter_[ix + static_cast<std::size_t>(hx_) * iy] = state_filter(ex, ey);
     }
   std::vector<double> real(size());
   Spectrum spec(static_cast<std::size_t>(hx_) * ny_);
@@ -89,6 +98,12 @@ std::vector<double> PeriodicSpectral::laplacian(const Spectrum& s) const {
       d[c] = (factor(ix, iy, 2, 0) + factor(ix, iy, 0, 2)) * s[c];
     }
   return backward(std::move(d));
+}
+
+std::vector<double> PeriodicSpectral::filtered(const std::vector<double>& field) const {
+  Spectrum s = forward(field);
+  for (std::size_t c = 0; c < s.size(); ++c) s[c] *= state_filter_[c];
+  return backward(std::move(s));
 }
 
 }  // namespace shockfield::dbm

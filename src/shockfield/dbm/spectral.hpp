@@ -2,8 +2,11 @@
 // Spatial derivatives of periodic 2D fields by FFT (FFTW3), as the paper's refs 34–35 use for the
 // GLS force term: a field is transformed once, and any derivative ∂x^a ∂y^b of it is (ik_x)^a
 // (ik_y)^b in Fourier space, transformed back, with an exponential filter on the highest modes
-// (none on the Nyquist mode). Plans are made once per grid (FFTW plan creation is not thread-safe); each
-// transform runs single-threaded, so results do not depend on the OpenMP thread count.
+// (none on the Nyquist mode). The derivative filter alone leaves the modes it removes in the state,
+// seen by no derivative and so damped by nothing: filtered() is the state filter that removes them
+// (docs/theory/dbm.md, "The undamped band of the filtered derivatives"). Plans are made once per
+// grid (FFTW plan creation is not thread-safe); each transform runs single-threaded (callers may
+// run several at once), so results do not depend on the OpenMP thread count.
 #include <complex>
 #include <vector>
 
@@ -12,6 +15,11 @@ namespace shockfield::dbm {
 class PeriodicSpectral {
  public:
   using Spectrum = std::vector<std::complex<double>>;
+
+  /// The derivative filter exp(−36(η_x⁸ + η_y⁸)), η = |k|/k_Nyquist per axis.
+  static double derivative_filter(double eta_x, double eta_y);
+  /// The state filter exp(−36(η_x¹⁶ + η_y¹⁶)): 1 − 3e-4 at η = 0.6, 0.36 at 0.8, 2e-16 at 1.
+  static double state_filter(double eta_x, double eta_y);
 
   /// nx × ny cells of size dx × dy; fields are stored x fastest (i + nx·j).
   PeriodicSpectral(int nx, int ny, double dx, double dy);
@@ -27,13 +35,15 @@ class PeriodicSpectral {
   std::vector<double> divergence(const Spectrum& sx, const Spectrum& sy) const;
   /// ∇² of the field whose spectrum is s.
   std::vector<double> laplacian(const Spectrum& s) const;
+  /// The field with the state filter applied to its spectrum (the mean, k = 0, kept exactly).
+  std::vector<double> filtered(const std::vector<double>& field) const;
 
  private:
   std::complex<double> factor(int ix, int iy, int ax, int ay) const;
   std::vector<double> backward(Spectrum s) const;
 
   int nx_, ny_, hx_;
-  std::vector<double> kx_, ky_, filter_;
+  std::vector<double> kx_, ky_, filter_, state_filter_;
   void* forward_plan_;   // fftw_plan, kept opaque so this header does not need fftw3.h
   void* backward_plan_;
 };

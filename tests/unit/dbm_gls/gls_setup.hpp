@@ -16,6 +16,7 @@ struct GlsCase {
   double tau = 0.01, dt = 1e-3, K = 1e-4, zeta = 0.0, q = 0.0;
   double T = 0.9;
   bool spectral = true;
+  bool filter_state = false;  // the state filter (the case files' default for GLS is on)
   std::array<double, 4> speeds{1.0, 2.0, 3.0, 4.0};  // D2V16 speeds, eta0 = 2
   GlsEos eos = materials::VanDerWaals{};
 };
@@ -32,6 +33,7 @@ inline GlsRun make_gls(const GlsCase& c, const std::function<Macro(double, doubl
   Boundaries periodic;
   BgkSettings bgk;
   bgk.gamma = 2.0, bgk.tau = c.tau, bgk.dt = c.dt, bgk.spectral_convection = c.spectral;
+  bgk.filter_state = c.filter_state;
   GlsRun run;
   run.sim = std::make_unique<Simulation>(d2v16(c.speeds, 2.0), lattice, periodic, bgk);
   GlsSettings gls;

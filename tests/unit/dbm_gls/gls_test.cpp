@@ -198,6 +198,7 @@ TEST(DbmGls, DensityOutsideTheEosDomainStopsWithAClearMessage) {
 TEST(DbmGls, ResultsDoNotDependOnTheThreadCount) {
   GlsCase c;
   c.nx = 32, c.ny = 8, c.K = 1e-3, c.tau = 1e-3, c.dt = 2e-4;
+  c.q = -0.01, c.zeta = 0.01, c.filter_state = true;  // every threaded loop and transform
   const auto state = [](double x, double y) {
     return Macro{1.0 + 0.4 * std::sin(6.28318 * x) * std::cos(6.28318 * y), 0, 0, 0.9};
   };
