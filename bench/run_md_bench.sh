@@ -37,7 +37,18 @@ run_sf() {
   sed -n 's/.*done at step .* (\([0-9.]*\) steps\/s.*/\1/p' "$out/log.txt" | awk -v s=$steps '{print s / $1}'
 }
 
-# Loop counts: perf stat of the full run minus that of a 0-step run.
+# Loop counts: perf stat of the full run minus that of a 0-step run. On a machine without
+# hardware counters (perf missing, or its events "<not supported>", as in most VMs) the columns
+# say n/a and a line under the table says why, instead of printing 0 and NaN.
+counters_note() {  # -> empty when perf counts user-space instructions and cycles, else the reason
+  if ! command -v perf > /dev/null; then echo "perf is not installed (Debian: linux-perf)"; return; fi
+  local out
+  out=$(perf stat -x, -e instructions:u,cycles:u true 2>&1 || true)
+  if ! awk -F, '/instructions/ && $1 ~ /^[0-9]+$/ {i = 1} /cycles/ && $1 ~ /^[0-9]+$/ {c = 1} END {exit !(i && c)}' <<< "$out"; then
+    echo "perf cannot count instructions:u and cycles:u here ($(grep -m1 -o '<not [a-z ]*>' <<< "$out" || echo 'no count'): no hardware counters, e.g. a VM)"
+  fi
+}
+no_counters=$(counters_note)
 counts() {  # CMD... -> "instructions cycles" (user space)
   perf stat -x, -e instructions:u,cycles:u -o "$work/perf.txt" "$@" > /dev/null 2>&1
   awk -F, '/instructions/ {i = $1} /cycles/ {c = $1} END {print i, c}' "$work/perf.txt"
@@ -77,16 +88,21 @@ for case in eam lj; do
     run_sf $case 2 >> "$work/$case.sf2"
   done
   lmp_t=$(median < "$work/$case.lmp"); sf1=$(median < "$work/$case.sf1"); sf2=$(median < "$work/$case.sf2")
-  read -r il cl < <(loop_instructions_lmp $case)
-  read -r is cs < <(loop_instructions_sf $case)
+  if [ -z "$no_counters" ]; then
+    read -r il cl < <(loop_instructions_lmp $case)
+    read -r is cs < <(loop_instructions_sf $case)
+    loop_columns="$(awk -v a="$il" -v b="$is" 'BEGIN {printf "%.3g / %.3g (%.2f)", a, b, b / a}') | $(awk -v a="$cl" -v b="$cs" 'BEGIN {printf "%.3g / %.3g (%.2f)", a, b, b / a}')"
+  else
+    loop_columns="n/a | n/a"
+  fi
   rss() { median < "$work/$case.$1.rss" | awk -v n=$atoms '{printf "%.0f", $1 * 1024 / n}'; }
   echo "| $case | $(per_atom_step "$lmp_t") s/atom-step ($lmp_t s) | $(per_atom_step "$sf1") s/atom-step ($sf1 s) |" \
        "$(ratio "$sf1" "$lmp_t") | $(per_atom_step "$sf2") s/atom-step ($sf2 s) | $(ratio "$sf1" "$sf2")× |" \
        "$(cat "$work/$case.lmp.builds") / $(cat "$work/$case.sf.builds") |" \
-       "$(awk -v a="$il" -v b="$is" 'BEGIN {printf "%.3g / %.3g (%.2f)", a, b, b / a}') |" \
-       "$(awk -v a="$cl" -v b="$cs" 'BEGIN {printf "%.3g / %.3g (%.2f)", a, b, b / a}') |" \
+       "$loop_columns |" \
        "$(rss lmp) B / $(rss sf1) B / $(rss sf2) B |"
   echo "$case raw loop seconds: LAMMPS $(tr '\n' ' ' < "$work/$case.lmp")| sf 1t $(tr '\n' ' ' < "$work/$case.sf1")| sf 2t $(tr '\n' ' ' < "$work/$case.sf2")" >&2
 done
 echo
+[ -z "$no_counters" ] || echo "Loop instructions and cycles: n/a — $no_counters."
 echo "Load average after: $(cut -d' ' -f1-3 /proc/loadavg)."

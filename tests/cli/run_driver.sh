@@ -39,6 +39,20 @@ run "$WORK/no_md.toml" --output "$WORK/no_md" --set md.timestep=0.002 --set md.s
 grep -A8 '^\[md\]' "$WORK/no_md/config.resolved.toml" | grep -q '^neighbor_every = 1$' ||
   fail "[md] defaults not echoed without the table"
 same_files "$WORK/tiny_cu" "$WORK/no_md" thermo.csv
+# thermo_full_precision: the same run's thermo.csv in shortest round-trip text; every value rounded
+# to 10 significant digits is the default file's, and some need more than 10 digits.
+run "$cases/tiny_cu.toml" --output "$WORK/full_thermo" --set output.thermo_full_precision=true
+/usr/bin/python3 - "$WORK/tiny_cu/thermo.csv" "$WORK/full_thermo/thermo.csv" <<'PY' || fail "thermo_full_precision"
+import sys
+short, full = (open(f).read().splitlines() for f in sys.argv[1:])
+assert short[0] == full[0] and len(short) == len(full), "different header or rows"
+longer = 0
+for a, b in zip(short[1:], full[1:]):
+    for x, y in zip(a.split(","), b.split(",")):
+        assert f"{float(y):.10g}" == x, (x, y)
+        longer += len(y.replace("-", "").replace(".", "").split("e")[0].lstrip("0")) > 10
+assert longer > 0, "no value needed more than 10 digits"
+PY
 
 # --set equals editing the file, bitwise.
 sed 's/^end_time = 2e-7/end_time = 1.5e-7/' "$cases/pd_tiny.toml" > "$WORK/pd_edited.toml"

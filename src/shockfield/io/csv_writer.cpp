@@ -9,8 +9,8 @@
 namespace shockfield::io {
 
 CsvWriter::CsvWriter(const std::filesystem::path& file, std::vector<std::string> columns,
-                     const double* resume_from)
-    : columns_(std::move(columns)) {
+                     const double* resume_from, bool full_precision)
+    : columns_(std::move(columns)), full_precision_(full_precision) {
   std::vector<std::string> kept;
   if (resume_from && std::filesystem::exists(file)) {
     std::ifstream in(file);
@@ -38,7 +38,7 @@ void CsvWriter::row(const std::vector<double>& values) {
   std::string line;
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (i) line += ',';
-    line += fmt::format("{:.10g}", values[i]);
+    line += full_precision_ ? fmt::format("{}", values[i]) : fmt::format("{:.10g}", values[i]);
   }
   line += '\n';
   out_.write(line);

@@ -15,9 +15,11 @@ class CsvWriter {
  public:
   CsvWriter() = default;
   /// Creates `file` with `columns`. With `resume_from` set, keeps the existing rows whose first
-  /// column is <= *resume_from (a resumed run rewrites what came after its checkpoint).
+  /// column is <= *resume_from (a resumed run rewrites what came after its checkpoint). Values are
+  /// written with 10 significant digits, or with `full_precision` as the shortest text that reads
+  /// back to the same double.
   CsvWriter(const std::filesystem::path& file, std::vector<std::string> columns,
-            const double* resume_from = nullptr);
+            const double* resume_from = nullptr, bool full_precision = false);
 
   void row(const std::vector<double>& values);
   bool is_open() const { return out_.is_open(); }
@@ -26,6 +28,7 @@ class CsvWriter {
  private:
   CheckedOutput out_;
   std::vector<std::string> columns_;
+  bool full_precision_ = false;
 };
 
 }  // namespace shockfield::io

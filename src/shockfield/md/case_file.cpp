@@ -226,6 +226,7 @@ MdCase read_md_case(const Config& root) {
       }
     out.dump_format = o->get_choice_or("dump_format", {"lammps", "extxyz"}, "lammps");
     out.dump_full_precision = o->get_bool_or("dump_full_precision", false);
+    out.thermo_full_precision = o->get_bool_or("thermo_full_precision", false);
     out.dump_time = o->get_bool_or("dump_time", false);
     out.profile_every = o->get_int_or("profile_every", 0, Range::non_negative());
     out.profile_axis = read_axis(*o, "profile_axis", "z");

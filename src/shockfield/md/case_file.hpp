@@ -67,6 +67,7 @@ struct OutputSpec {
   std::vector<std::string> dump_fields;
   std::string dump_format = "lammps";  ///< lammps | extxyz
   bool dump_full_precision = false;
+  bool thermo_full_precision = false;  ///< thermo.csv values that read back bit for bit
   bool dump_time = false;              ///< ITEM: TIME / Time= (LAMMPS dump_modify time yes)
   int dump_pad = 0;                    ///< digits of the step in frame names (dump_modify pad)
   long long profile_every = 0;

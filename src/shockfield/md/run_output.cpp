@@ -81,7 +81,7 @@ RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::option
     keep_value = static_cast<double>(*resume_step);
     keep = &keep_value;
   }
-  thermo_ = io::CsvWriter(folder / "thermo.csv", thermo_columns(spec), keep);
+  thermo_ = io::CsvWriter(folder / "thermo.csv", thermo_columns(spec), keep, spec.thermo_full_precision);
   if (spec.profile_every > 0) profiles_ = io::CsvWriter(profiles_file_, profile_columns(), keep);
   if (spec.analysis.every > 0) {
     structure_.emplace(spec.analysis);
