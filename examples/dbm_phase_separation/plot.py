@@ -116,7 +116,7 @@ def main():
                      f"{s['u_max'].max():.3f} | "
                      f"{s['mass'][-1] / s['mass'][0] - 1:.1e} | {s['energy'][-1] / s['energy'][0] - 1:.1e} |")
     lines.append("")
-    lines.append(f"fits: t_SD = a + bK with a = {a:.4f}, b = {b:.4g} (seed eq. 36: a = 0.066, b = 1.51e3); "
+    lines.append(f"fits: t_SD = a + bK with a = {a:.4f}, b = {b:.4g} (Xu et al. (2015) eq. 36: a = 0.066, b = 1.51e3); "
                  f"D_max = c + d K^-0.5 with c = {c:.4f}, d = {d:.4g} (eq. 37: c = -0.073, d = 3.30e-3)")
     (HERE / "table.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
