@@ -10,8 +10,8 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// The angles θ at which the ball's centre c(θ) lies within `reach` of `target`:
 /// (p_x cos θ + p_y sin θ ≥ κ, p = target − m) gives θ ∈ [φ − α, φ + α]. Returns {φ − α, α};
 /// α = +inf for every θ, NaN for none.
-std::pair<double, double> reach_interval(const PivotCircle& c, const Vec3& target, double reach) {
-  const Vec3 p = sub(target, c.centre);
+std::pair<double, double> reach_interval(const PivotCircle& c, const Point3& target, double reach) {
+  const Point3 p = sub(target, c.centre);
   const double px = dot(p, c.x), py = dot(p, c.y);
   const double q = std::hypot(px, py);
   const double kappa = (c.radius * c.radius + dot(p, p) - reach * reach) / (2.0 * c.radius);
@@ -23,16 +23,16 @@ std::pair<double, double> reach_interval(const PivotCircle& c, const Vec3& targe
 
 }  // namespace
 
-std::optional<PivotCircle> pivot_about_axis(const Vec3& on_axis, const Vec3& axis,
-                                            const Vec3& start, double r) {
+std::optional<PivotCircle> pivot_about_axis(const Point3& on_axis, const Point3& axis,
+                                            const Point3& start, double r) {
   const double length = std::sqrt(dot(axis, axis));
   if (!(length > 0.0) || !(r > 0.0)) return std::nullopt;
   PivotCircle c;
   c.ball_radius = r;
   c.z = {axis[0] / length, axis[1] / length, axis[2] / length};
-  const Vec3 d = sub(start, on_axis);
+  const Point3 d = sub(start, on_axis);
   c.centre = add_scaled(on_axis, c.z, dot(d, c.z));
-  const Vec3 w = sub(start, c.centre);
+  const Point3 w = sub(start, c.centre);
   c.radius = std::sqrt(dot(w, w));
   if (!(c.radius > 1e-12 * std::sqrt(dot(d, d)))) return std::nullopt;
   c.x = {w[0] / c.radius, w[1] / c.radius, w[2] / c.radius};
@@ -40,21 +40,21 @@ std::optional<PivotCircle> pivot_about_axis(const Vec3& on_axis, const Vec3& axi
   return c;
 }
 
-std::optional<PivotCircle> pivot_about_edge(const Vec3& a, const Vec3& b, const Vec3& c, double r) {
+std::optional<PivotCircle> pivot_about_edge(const Point3& a, const Point3& b, const Point3& c, double r) {
   // r_o: the centre of the ball of radius r through A, B, C above the triangle, at height
   // h = √(r² − ρ²) over its circumcentre q (ρ the circumradius) along the unit normal.
-  const Vec3 n = cross(sub(b, a), sub(c, a));
+  const Point3 n = cross(sub(b, a), sub(c, a));
   const double n_length = std::sqrt(dot(n, n));
   if (!(n_length > 0.0)) return std::nullopt;
-  const Vec3 q = triangle_circumcentre(a, b, c);
-  const Vec3 qa = sub(a, q);
+  const Point3 q = triangle_circumcentre(a, b, c);
+  const Point3 qa = sub(a, q);
   const double h2 = r * r - dot(qa, qa);
   if (!(h2 >= 0.0)) return std::nullopt;
-  const Vec3 start = add_scaled(q, n, std::sqrt(h2) / n_length);
+  const Point3 start = add_scaled(q, n, std::sqrt(h2) / n_length);
   return pivot_about_axis(a, sub(b, a), start, r);
 }
 
-double angle_met(const PivotCircle& pivot, const Vec3& p) {
+double angle_met(const PivotCircle& pivot, const Point3& p) {
   const auto [first, alpha] = reach_interval(pivot, p, pivot.ball_radius);
   if (!(alpha < std::numbers::pi))
     return std::numeric_limits<double>::infinity();  // never or always inside
@@ -62,7 +62,7 @@ double angle_met(const PivotCircle& pivot, const Vec3& p) {
   return std::max(theta, 0.0);
 }
 
-double first_angle_touching(const PivotCircle& pivot, const Vec3& centre, double radius) {
+double first_angle_touching(const PivotCircle& pivot, const Point3& centre, double radius) {
   // Widened by 1e-9 relative, and the angle lowered by 1e-6 rad, so that rounding in the value
   // function (acos near ±1) never puts a point below its cube's bound.
   constexpr double kSlack = 1e-6;

@@ -33,21 +33,21 @@ namespace shockfield::geometry {
 /// A ball of radius `ball_radius` whose centre turns on the circle c(θ) = centre + radius
 /// (cos θ x + sin θ y) (x, y orthonormal, axis z = x × y).
 struct PivotCircle {
-  Vec3 centre{};
+  Point3 centre{};
   double radius = 0.0;
-  Vec3 x{}, y{}, z{};
+  Point3 x{}, y{}, z{};
   double ball_radius = 0.0;
 };
 
 /// MS3's ball: radius r, centred at `start` at θ = 0, turned about the line through `on_axis`
 /// along `axis`. None when the axis is zero or `start` lies on the axis (the ball cannot turn).
-std::optional<PivotCircle> pivot_about_axis(const Vec3& on_axis, const Vec3& axis,
-                                            const Vec3& start, double r);
+std::optional<PivotCircle> pivot_about_axis(const Point3& on_axis, const Point3& axis,
+                                            const Point3& start, double r);
 
 /// MS1's ball: radius r through A, B and C, on the side of the normal (B − A) × (C − A), turned
 /// about AB (away from C). None when no such ball exists (r below the circumradius of ABC, or
 /// A, B, C collinear or coincident) or when r = |AB|/2 (the ball's centre on the axis).
-std::optional<PivotCircle> pivot_about_edge(const Vec3& a, const Vec3& b, const Vec3& c, double r);
+std::optional<PivotCircle> pivot_about_edge(const Point3& a, const Point3& b, const Point3& c, double r);
 
 /// Rotation angles within `kMetAtStart` below 0 count as 0: a point on the starting ball (four
 /// cospherical points) is met at once, whatever the rounding of its angle (about 1e-15 rad).
@@ -55,11 +55,11 @@ inline constexpr double kMetAtStart = 1e-12;
 
 /// The angle θ ∈ [0, 2π) at which the turning ball first meets p (the value function of MS1 and
 /// MS3); +inf when it never does (p always outside, or inside from the start and never left).
-double angle_met(const PivotCircle& pivot, const Vec3& p);
+double angle_met(const PivotCircle& pivot, const Point3& p);
 
 /// A lower bound of angle_met over every point of the sphere (centre, radius): the first angle at
 /// which the ball touches the sphere (m(b)); 0 when it touches it at the start, +inf never.
-double first_angle_touching(const PivotCircle& pivot, const Vec3& centre, double radius);
+double first_angle_touching(const PivotCircle& pivot, const Point3& centre, double radius);
 
 struct PivotHit {
   std::uint32_t id;
@@ -74,7 +74,7 @@ template <class Tree>
 std::optional<PivotHit> first_point_met(const Tree& tree, const PivotCircle& pivot,
                                         std::span<const std::uint32_t> exclude = {}) {
   auto point = [&](std::uint32_t id) {
-    Vec3 lo, hi;
+    Point3 lo, hi;
     tree.objects().bounds(id, lo, hi);
     return lo;
   };

@@ -14,18 +14,18 @@
 namespace shockfield::geometry {
 namespace {
 
-auto adaptor_of(const std::vector<Vec3>& points) {
+auto adaptor_of(const std::vector<Point3>& points) {
   return points_adaptor<3>(points.size(), [&points](std::size_t i, int k) { return points[i][k]; });
 }
-using PointTree = SpaceTree<3, decltype(adaptor_of(std::declval<const std::vector<Vec3>&>()))>;
+using PointTree = SpaceTree<3, decltype(adaptor_of(std::declval<const std::vector<Point3>&>()))>;
 
-Vec3 centre_at(const PivotCircle& c, double angle) {
+Point3 centre_at(const PivotCircle& c, double angle) {
   return add_scaled(add_scaled(c.centre, c.x, c.radius * std::cos(angle)), c.y,
                     c.radius * std::sin(angle));
 }
 
 /// Step I: the seed triangle, oriented with its normal towards the ball.
-std::array<std::uint32_t, 3> seed_triangle(const PointTree& tree, const std::vector<Vec3>& x,
+std::array<std::uint32_t, 3> seed_triangle(const PointTree& tree, const std::vector<Point3>& x,
                                            double r) {
   const auto largest_x = tree.minimum_search(
       1,
@@ -40,18 +40,18 @@ std::array<std::uint32_t, 3> seed_triangle(const PointTree& tree, const std::vec
                     "largest x meets too few points; give a larger radius)",
                     r, what));
   };
-  const Vec3 start = add_scaled(x[p1], {1.0, 0.0, 0.0}, r);
+  const Point3 start = add_scaled(x[p1], {1.0, 0.0, 0.0}, r);
   const auto turn1 = pivot_about_axis(x[p1], {0.0, 0.0, 1.0}, start, r);
   const std::array<std::uint32_t, 1> not_p1{p1};
   const auto p2 = first_point_met(tree, *turn1, not_p1);
   if (!p2) throw fail("no second point met turning about z");
-  const Vec3 centre1 = centre_at(*turn1, p2->angle);
+  const Point3 centre1 = centre_at(*turn1, p2->angle);
   const auto turn2 = pivot_about_axis(x[p1], sub(x[p2->id], x[p1]), centre1, r);
   const std::array<std::uint32_t, 2> not_p1_p2{p1, p2->id};
   const auto p3 = turn2 ? first_point_met(tree, *turn2, not_p1_p2) : std::nullopt;
   if (!p3) throw fail("no third point met turning about P1P2");
-  const Vec3 centre2 = centre_at(*turn2, p3->angle);
-  const Vec3 normal = cross(sub(x[p2->id], x[p1]), sub(x[p3->id], x[p1]));
+  const Point3 centre2 = centre_at(*turn2, p3->angle);
+  const Point3 normal = cross(sub(x[p2->id], x[p1]), sub(x[p3->id], x[p1]));
   if (dot(normal, sub(centre2, x[p1])) < 0.0) return {p1, p3->id, p2->id};
   return {p1, p2->id, p3->id};
 }
@@ -60,7 +60,7 @@ std::array<std::uint32_t, 3> seed_triangle(const PointTree& tree, const std::vec
 /// triangle's third point, in a segment tree for CS1.
 class Front {
  public:
-  explicit Front(const std::vector<Vec3>& points) : segments_{&points, &ends_}, tree_(segments_) {}
+  explicit Front(const std::vector<Point3>& points) : segments_{&points, &ends_}, tree_(segments_) {}
   void add(std::uint32_t u, std::uint32_t v, std::uint32_t third) {
     ends_.push_back({u, v});
     opposite_.push_back(third);
@@ -101,15 +101,15 @@ class Front {
 /// point's index (splitmix64): exact ties — four or more points on one ball, as on a lattice,
 /// where the pivot would otherwise make crossing triangles — become distinct angles, all
 /// decided on one moved point set, so the triangles stay consistent.
-std::vector<Vec3> moved_off_ties(const std::vector<Vec3>& points) {
+std::vector<Point3> moved_off_ties(const std::vector<Point3>& points) {
   double extent = 0.0;
   for (int k = 0; k < 3; ++k) {
     const auto [lo, hi] = std::minmax_element(
-        points.begin(), points.end(), [k](const Vec3& p, const Vec3& q) { return p[k] < q[k]; });
+        points.begin(), points.end(), [k](const Point3& p, const Point3& q) { return p[k] < q[k]; });
     extent = std::max(extent, (*hi)[k] - (*lo)[k]);
   }
   const double step = 1e-9 * extent;
-  std::vector<Vec3> moved = points;
+  std::vector<Point3> moved = points;
   for (std::size_t i = 0; i < moved.size(); ++i) {
     std::uint64_t z = 0x9e3779b97f4a7c15ull * (i + 1);
     for (int k = 0; k < 3; ++k) {
@@ -124,7 +124,7 @@ std::vector<Vec3> moved_off_ties(const std::vector<Vec3>& points) {
 
 /// The points to pivot on: the first of each set of equal points (MS2 finds an equal point
 /// already held), so that no triangle is made between copies of one point.
-std::vector<std::uint32_t> distinct_points(const std::vector<Vec3>& points) {
+std::vector<std::uint32_t> distinct_points(const std::vector<Point3>& points) {
   const auto adaptor = adaptor_of(points);
   PointTree tree(adaptor);
   std::vector<std::uint32_t> keep;
@@ -138,7 +138,7 @@ std::vector<std::uint32_t> distinct_points(const std::vector<Vec3>& points) {
 
 }  // namespace
 
-TriangleSurface pivoting_ball_surface(const std::vector<Vec3>& points, double radius) {
+TriangleSurface pivoting_ball_surface(const std::vector<Point3>& points, double radius) {
   if (!(radius > 0.0) || !std::isfinite(radius))
     throw InputError(
         fmt::format("rolling-ball radius must be a positive finite length, got {}", radius));
@@ -150,7 +150,7 @@ TriangleSurface pivoting_ball_surface(const std::vector<Vec3>& points, double ra
   if (distinct.size() < 3)
     throw InputError(fmt::format("{} distinct points: a pivoting-ball surface needs at least 3",
                                  distinct.size()));
-  const std::vector<Vec3> moved = moved_off_ties(points);  // every decision on these
+  const std::vector<Point3> moved = moved_off_ties(points);  // every decision on these
   const auto adaptor = adaptor_of(moved);
   PointTree tree(adaptor);
   for (std::uint32_t i : distinct) tree.insert(i);

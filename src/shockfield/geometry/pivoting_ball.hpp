@@ -26,6 +26,6 @@ namespace shockfield::geometry {
 /// and when the surface does not close (an edge about which the ball meets no point, a triangle
 /// made twice, or an edge on more than two triangles: the radius is too small or too large for the
 /// sampling).
-TriangleSurface pivoting_ball_surface(const std::vector<Vec3>& points, double radius);
+TriangleSurface pivoting_ball_surface(const std::vector<Point3>& points, double radius);
 
 }  // namespace shockfield::geometry

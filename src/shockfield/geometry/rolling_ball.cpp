@@ -14,7 +14,7 @@
 namespace shockfield::geometry {
 namespace {
 
-using P3 = Vec3;
+using P3 = Point3;
 
 /// Circumcentre of a tetrahedron: c − v0 = (|a|² (b×c) + |b|² (c×a) + |c|² (a×b)) / (2 a·(b×c)).
 P3 tet_circumcentre(const P3& v0, const P3& v1, const P3& v2, const P3& v3) {

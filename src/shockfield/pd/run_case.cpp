@@ -210,10 +210,10 @@ class PdMethod final : public Method {
   PdMethod(const Config& root, const PdCase& c, bool check)
       : c_(c), built_(check ? checked_body(c_.body) : c_.body),
         cloud_(lattice_cloud(built_.dim, built_.counts, built_.spacing)),
-        cracked_(cracked_family(c_, cloud_, built_)), family_(cracked_.family),
-        model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, family_, cracked_.cut); },
+        cracked_(cracked_family(c_, cloud_, built_)),
+        model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, cracked_.family, cracked_.cut); },
                           c_.material)),
-        sim_(cloud_, family_, std::move(model_.force), {model_.density}), stable_(sim_.stable_step()),
+        sim_(cloud_, cracked_.family, std::move(model_.force), {model_.density}), stable_(sim_.stable_step()),
         dt_(c_.solver.time_step.value_or(c_.solver.safety * stable_)), tol_(1e-9 * dt_) {
     if (dt_ > stable_)
       root.table("solver").fail("time_step", fmt::format("{} s is beyond the stable step {} s of this body and horizon "
@@ -226,7 +226,7 @@ class PdMethod final : public Method {
 
   std::string name() const override { return "pd"; }
   std::string size_text() const override {
-    return fmt::format("{} points, {} bonds, {}D", cloud_.size(), family_.bonds(), c_.body.dim);
+    return fmt::format("{} points, {} bonds, {}D", cloud_.size(), cracked_.family.bonds(), c_.body.dim);
   }
   std::string check_text() const override {
     const auto& n = built_.counts;
@@ -274,7 +274,7 @@ class PdMethod final : public Method {
   void log_results(double steps_per_second) override {
     const Vec3 p = sim_.momentum();
     log_->info("finished: t = {} s after {} steps ({:.3g} bond-updates/s); kinetic energy {} J, momentum ({}, {}, {})",
-               sim_.time(), sim_.step_count(), steps_per_second * static_cast<double>(family_.bonds()),
+               sim_.time(), sim_.step_count(), steps_per_second * static_cast<double>(cracked_.family.bonds()),
                sim_.kinetic_energy(), p[0], p[1], p[2]);
   }
 
@@ -346,7 +346,7 @@ class PdMethod final : public Method {
                    : static_cast<double>(c_.body.counts[0]) * c_.body.counts[1] * c_.body.counts[2];
   }
   double bonds() const {
-    return whole() ? static_cast<double>(family_.bonds())
+    return whole() ? static_cast<double>(cracked_.family.bonds())
                    : lattice_bonds(c_.body.dim, c_.body.counts, c_.body.horizon_factor);
   }
   bool polycrystal() const {
@@ -358,7 +358,6 @@ class PdMethod final : public Method {
   BodySpec built_;  ///< c_.body, or for --check its sub-body
   PointCloud cloud_;
   CrackedFamily cracked_;
-  const Family& family_;  ///< cracked_.family
   ModelRun model_;
   Simulation sim_;
   double stable_, dt_, tol_;

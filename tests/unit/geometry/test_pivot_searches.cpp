@@ -16,7 +16,7 @@
 namespace shockfield::geometry {
 namespace {
 
-using Points = std::vector<Vec3>;
+using Points = std::vector<Point3>;
 
 auto adaptor_of(const Points& pts) {
   return points_adaptor<3>(pts.size(), [&pts](std::size_t i, int k) { return pts[i][k]; });
@@ -94,8 +94,8 @@ void check_searchers(const Points& pts, double r_scale, int queries, std::uint64
       expect_same(first_point_met(tree, *pivot, exclude), brute_first_met(pts, *pivot, exclude), t);
       ++ms1;
     }
-    const Vec3 axis{g(rng), g(rng), g(rng)};
-    const Vec3 start = add_scaled(pts[a], Vec3{g(rng), g(rng), g(rng)}, r);
+    const Point3 axis{g(rng), g(rng), g(rng)};
+    const Point3 start = add_scaled(pts[a], Point3{g(rng), g(rng), g(rng)}, r);
     if (const auto pivot = pivot_about_axis(pts[a], axis, start, r)) {
       const std::array<std::uint32_t, 1> exclude{a};
       expect_same(first_point_met(tree, *pivot, exclude), brute_first_met(pts, *pivot, exclude), t);
@@ -180,7 +180,7 @@ TEST(PivotSearches, Ms1PivotBallIsEmptyAndTouchesThreePoints) {
     const auto hit = first_point_met(tree, *pivot, edge);
     ASSERT_EQ(hit.has_value(), brute_first_met(pts, *pivot, edge).has_value());
     if (!hit) continue;  // at the edge of the cloud the ball turns through empty space
-    const Vec3 centre = centre_at(hit->angle);
+    const Point3 centre = centre_at(hit->angle);
     auto distance = [&](std::uint32_t i) {
       return std::sqrt(dot(sub(pts[i], centre), sub(pts[i], centre)));
     };

@@ -19,10 +19,10 @@
 namespace shockfield::geometry {
 namespace {
 
-std::vector<Vec3> sphere_points(std::size_t n, double r, std::uint64_t seed) {
+std::vector<Point3> sphere_points(std::size_t n, double r, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> g;
-  std::vector<Vec3> p(n);
+  std::vector<Point3> p(n);
   for (auto& x : p) {
     const double a = g(rng), b = g(rng), z = g(rng), s = r / std::sqrt(a * a + b * b + z * z);
     x = {a * s, b * s, z * s};
@@ -63,7 +63,7 @@ TEST(PivotingBall, TorusEqualsTheDelaunaySurfaceWithEulerCharacteristicZero) {
   std::mt19937_64 rng(2);
   std::uniform_real_distribution<double> u(0, 2 * std::numbers::pi), w(0, 1);
   const double R = 1.0, a = 0.4;
-  std::vector<Vec3> points;
+  std::vector<Point3> points;
   while (points.size() < 10000) {
     const double t = u(rng), v = u(rng);
     if (w(rng) > (R + a * std::cos(v)) / (R + a)) continue;
@@ -92,7 +92,7 @@ TEST(PivotingBall, LatticeBlockWithCosphericalTiesIsItsBox) {
   // A 6×6×6 simple cubic block: every face square is four cocircular points (exact ties, broken
   // by the 1e-9 move of the points). A ball of radius 3 rolls over the box: area 6·5², volume 5³,
   // χ = 2, as the Delaunay surface.
-  std::vector<Vec3> points;
+  std::vector<Point3> points;
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j)
       for (int k = 0; k < 6; ++k) points.push_back({double(i), double(j), double(k)});
@@ -123,7 +123,7 @@ TEST(PivotingBall, RefusesRadiiThatCannotCloseAndTooFewPoints) {
   EXPECT_THROW(pivoting_ball_surface(points, -1.0), InputError);
   EXPECT_THROW(pivoting_ball_surface({{0, 0, 0}, {1, 0, 0}}, 1.0), InputError);
   EXPECT_THROW(pivoting_ball_surface({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}}, 1.0), InputError);
-  std::vector<Vec3> bad = points;
+  std::vector<Point3> bad = points;
   bad[7][1] = std::nan("");
   EXPECT_THROW(pivoting_ball_surface(bad, 0.3), InputError);
 }

@@ -153,17 +153,26 @@ InnerTable build_inner_table(const PairTableSection& s, TableInterpolation inter
 
 namespace {
 
-// The node below s = r² (may be past the last bin or negative: the caller checks).
-int table_bin(double rsq, double innersq, double invdelta) {
-  return static_cast<int>((rsq - innersq) * invdelta);
-}
+}  // namespace
 
 // What the kernel needs of one type pair's table.
-struct PairView {
+struct TablePotential::PairView {
   double cutsq, innersq, invdelta, deltasq6;
   const InnerTable::Node* node;
   int bins;  // N − 1
 };
+
+namespace {
+
+using PairView = TablePotential::PairView;
+
+// The node below s = r² inside the cutoff, or −1 when s lies outside the table (below r_in, in or
+// past the last bin, or NaN: int(NaN) would index anywhere).
+int table_bin(const PairView& p, double rsq) {
+  if (!(rsq >= p.innersq)) return -1;
+  const int k = static_cast<int>((rsq - p.innersq) * p.invdelta);
+  return k < p.bins ? k : -1;
+}
 
 template <TableInterpolation I>
 struct TableKernel {
@@ -175,9 +184,8 @@ struct TableKernel {
   bool operator()(int i, int j, double rsq, double& fpair, double& energy) const {
     const PairView& p = views[type[i] * ntypes + type[j]];
     if (rsq >= p.cutsq) return false;
-    // A NaN distance (atoms gone non-finite) is outside too: int(NaN) would index anywhere.
-    const int k = rsq >= p.innersq ? table_bin(rsq, p.innersq, p.invdelta) : -1;
-    if (k < 0 || k >= p.bins) {
+    const int k = table_bin(p, rsq);
+    if (k < 0) {
       outside->store(true, std::memory_order_relaxed);
       return false;
     }
@@ -212,7 +220,7 @@ void TablePotential::check_types(const Atoms& atoms) const {
                                  ntypes_, atoms.ntypes()));
 }
 
-void TablePotential::compute(Atoms& atoms, const geometry::NeighborList& list, ForceResult& out) {
+std::vector<TablePotential::PairView> TablePotential::views() const {
   std::vector<PairView> views;
   for (const int t : pair_table_) {
     const InnerTable& table = tables_[static_cast<std::size_t>(t)];
@@ -220,24 +228,29 @@ void TablePotential::compute(Atoms& atoms, const geometry::NeighborList& list, F
                      table.delta * table.delta / 6.0, table.node.data(),
                      static_cast<int>(table.node.size()) - 1});
   }
+  return views;
+}
+
+void TablePotential::compute(Atoms& atoms, const geometry::NeighborList& list, ForceResult& out) {
+  const std::vector<PairView> views = this->views();
   outside_.store(false);
   if (interpolation_ == TableInterpolation::linear)
     accumulate_pair_forces(atoms, list, TableKernel<TableInterpolation::linear>{views.data(), atoms.type.data(), ntypes_, &outside_}, out, scratch_);
   else
     accumulate_pair_forces(atoms, list, TableKernel<TableInterpolation::spline>{views.data(), atoms.type.data(), ntypes_, &outside_}, out, scratch_);
-  if (outside_.load()) fail_outside_table(atoms, list);
+  if (outside_.load()) fail_outside_table(atoms, list, views);
 }
 
-void TablePotential::fail_outside_table(const Atoms& atoms, const geometry::NeighborList& list) const {
+void TablePotential::fail_outside_table(const Atoms& atoms, const geometry::NeighborList& list,
+                                        const std::vector<PairView>& views) const {
   for (std::size_t i = 0; i < list.nlocal(); ++i) {
     for (auto k = list.offset[i]; k < list.offset[i + 1]; ++k) {
       const auto j = static_cast<std::size_t>(list.neighbors[static_cast<std::size_t>(k)]);
       const double rsq = (atoms.x[i] - atoms.x[j]).squaredNorm();
       const int ti = atoms.type[i], tj = atoms.type[j];
-      const InnerTable& t = tables_[static_cast<std::size_t>(pair_table_[static_cast<std::size_t>(ti * ntypes_ + tj)])];
-      const bool inside = rsq >= t.innersq &&
-                          table_bin(rsq, t.innersq, 1.0 / t.delta) < static_cast<int>(t.node.size()) - 1;
-      if (rsq >= t.cut * t.cut || inside) continue;
+      const auto pair = static_cast<std::size_t>(ti * ntypes_ + tj);
+      if (rsq >= views[pair].cutsq || table_bin(views[pair], rsq) >= 0) continue;
+      const InnerTable& t = tables_[static_cast<std::size_t>(pair_table_[pair])];
       throw RunError(fmt::format(
           "pair style table: atoms {} and {} (types {} {}) are {} Å apart, outside the table {} "
           "(it covers {} to {} Å; LAMMPS stops with \"Pair distance < table inner cutoff\")",

@@ -61,8 +61,12 @@ class TablePotential final : public Potential {
   void check_types(const Atoms& atoms) const override;
   void compute(Atoms& atoms, const geometry::NeighborList& list, ForceResult& out) override;
 
+  struct PairView;  ///< one type pair's table as the kernel reads it
+
  private:
-  [[noreturn]] void fail_outside_table(const Atoms& atoms, const geometry::NeighborList& list) const;
+  std::vector<PairView> views() const;
+  [[noreturn]] void fail_outside_table(const Atoms& atoms, const geometry::NeighborList& list,
+                                       const std::vector<PairView>& views) const;
 
   TableInterpolation interpolation_;
   int ntypes_;
