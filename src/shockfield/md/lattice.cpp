@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/geometry/shrink_wrap.hpp"
 
 namespace shockfield::md {
 namespace {
@@ -147,7 +148,17 @@ void Lattice::for_each_site(const geometry::Box& box, const std::function<void(c
     fmin = fmin.cwiseMin(f);
     fmax = fmax.cwiseMax(f);
   }
+  // The half-open range a site must lie in, per axis (CreateAtoms::add_lattice; see lattice.hpp).
   const Vec3 eps = 1e-6 * box.length();
+  const Vec3 small = geometry::shrink_margin(box);
+  Vec3 lo_bound, hi_bound;
+  for (int d = 0; d < 3; ++d) {
+    switch (box.boundary[static_cast<std::size_t>(d)]) {
+      case geometry::Boundary::periodic: lo_bound[d] = box.lo[d] - eps[d], hi_bound[d] = box.hi[d] - 2 * eps[d]; break;
+      case geometry::Boundary::fixed: lo_bound[d] = box.lo[d] - eps[d], hi_bound[d] = box.hi[d] - eps[d]; break;
+      case geometry::Boundary::shrink: lo_bound[d] = box.lo[d] - small[d], hi_bound[d] = box.hi[d] + small[d]; break;
+    }
+  }
   std::array<long long, 3> lo{}, hi{};
   for (int d = 0; d < 3; ++d) {
     lo[d] = static_cast<long long>(std::floor(fmin[d])) - 1;
@@ -161,12 +172,12 @@ void Lattice::for_each_site(const geometry::Box& box, const std::function<void(c
           Vec3 x = site(cell, b);
           bool inside = true;
           for (int d = 0; d < 3 && inside; ++d)
-            inside = x[d] >= box.lo[d] - eps[d] && x[d] < box.hi[d] - (box.periodic(d) ? 2 : 1) * eps[d];
+            inside = x[d] >= lo_bound[d] && x[d] < hi_bound[d];
           if (!inside) continue;
           std::array<int, 3> image{0, 0, 0};
           box.wrap(x, image);
-          for (int d = 0; d < 3; ++d)  // a site within ε below a non-periodic lo face is on it
-            if (!box.periodic(d)) x[d] = std::max(x[d], box.lo[d]);
+          for (int d = 0; d < 3; ++d)  // a site a round-off below a fixed lo face is on it
+            if (box.boundary[static_cast<std::size_t>(d)] == geometry::Boundary::fixed) x[d] = std::max(x[d], box.lo[d]);
           visit(x, spec_.basis_types.empty() ? 0 : spec_.basis_types[b]);
         }
 }

@@ -55,9 +55,13 @@ class Lattice {
   geometry::Box box(const std::array<int, 3>& n, const std::array<geometry::Boundary, 3>& boundary) const;
   /// Appends every lattice site inside `box` to `atoms` (ids after atoms.max_id()), as LAMMPS
   /// `create_atoms <type> box` does (CreateAtoms::add_lattice): with ε = 10⁻⁶·L, a site is inside
-  /// when lo − ε ≤ x < hi − 2ε on periodic dimensions, then mapped into the box. On non-periodic
-  /// dimensions (where LAMMPS takes lo ≤ x < hi) lo − ε ≤ x < hi − ε, so that a face site is kept
-  /// or dropped regardless of round-off, and sites within ε below lo are put on lo.
+  /// when lo − ε ≤ x < hi − 2ε on periodic dimensions, then mapped into the box. On fixed
+  /// dimensions (where LAMMPS takes lo ≤ x < hi, so that it keeps a hi-face site whose computed
+  /// position falls a round-off below hi) lo − ε ≤ x < hi − ε: a face site is kept or dropped
+  /// regardless of round-off, and one within ε below lo is put on lo. On shrink-wrapped dimensions LAMMPS has grown the box by
+  /// Domain::small = 10⁻⁴·L on both sides first (Domain::set_initial_box), so the sites on the hi
+  /// face are created too: lo − 10⁻⁴L ≤ x < hi + 10⁻⁴L (4×4×10 fcc `p p s`: 672 atoms, `p p f`:
+  /// 640, as LAMMPS 29 Sep 2021). Face sites a round-off outside a non-periodic face are put on it.
   /// Returns the number of atoms added.
   std::size_t create_atoms(const geometry::Box& box, Atoms& atoms) const;
   /// Calls visit(x, type) for every site create_atoms would add to `box`, in the same order and

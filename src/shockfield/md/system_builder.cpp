@@ -77,10 +77,41 @@ struct CrystalSites {
   double cells = 0.0;
 };
 
+std::vector<std::size_t> sites_per_type(const Lattice& lattice, const geometry::Box& box, std::size_t ntypes) {
+  std::vector<std::size_t> per_type(ntypes, 0);
+  lattice.for_each_site(box, [&](const Vec3&, int type) { ++per_type[static_cast<std::size_t>(type)]; });
+  return per_type;
+}
+
+// The sites per type of a crystal without regions, without visiting them all: one repeat cell
+// counted and multiplied (create_atoms keeps a periodic or fixed face site in exactly one cell),
+// plus the hi face create_atoms also fills on each shrink-wrapped axis (Lattice::for_each_site):
+// the sites of a slab one cell thick along that axis with the face filled minus without it. The
+// axes are taken in turn, each slab filling the faces of the axes before it, so that a site on
+// two or three hi faces is counted once.
+std::vector<std::size_t> repeated_crystal_sites(const CrystalSites& c, std::size_t ntypes) {
+  geometry::Box faces_open = c.whole;
+  for (geometry::Boundary& b : faces_open.boundary)
+    if (b == geometry::Boundary::shrink) b = geometry::Boundary::fixed;
+  geometry::Box cell = c.cell;
+  cell.boundary = faces_open.boundary;
+  std::vector<std::size_t> per_type = sites_per_type(c.lattice, cell, ntypes);
+  for (std::size_t& n : per_type) n = static_cast<std::size_t>(static_cast<double>(n) * c.cells);
+  for (std::size_t d = 0; d < 3; ++d) {
+    if (c.whole.boundary[d] != geometry::Boundary::shrink) continue;
+    geometry::Box slab = faces_open;
+    slab.hi[static_cast<int>(d)] = slab.lo[static_cast<int>(d)] + cell.length()[static_cast<int>(d)];
+    const std::vector<std::size_t> without = sites_per_type(c.lattice, slab, ntypes);
+    slab.boundary[d] = faces_open.boundary[d] = geometry::Boundary::shrink;
+    const std::vector<std::size_t> with = sites_per_type(c.lattice, slab, ntypes);
+    for (std::size_t t = 0; t < ntypes; ++t) per_type[t] += with[t] - without[t];
+  }
+  return per_type;
+}
+
 // The crystal under --check: atoms per type after the deletions, and per group. Without regions
-// (no [[system.delete]], groups by type only) one repeat cell is counted and multiplied (the
-// crystal is that cell repeated, and create_atoms keeps a face site in exactly one cell); else
-// every site is visited once, without storing it (~3·10^7 sites a second: 9 s for 2.6·10^8).
+// (no [[system.delete]], groups by type only) repeated_crystal_sites; else every site is visited
+// once, without storing it (~3·10^7 sites a second: 9 s for 2.6·10^8).
 std::vector<std::size_t> count_crystal(const CrystalSites& c, std::size_t ntypes, const std::vector<Region>& deletes,
                                        const std::vector<GroupRule>& groups, std::vector<std::size_t>& in_group,
                                        std::size_t& deleted) {
@@ -90,8 +121,7 @@ std::vector<std::size_t> count_crystal(const CrystalSites& c, std::size_t ntypes
                          return g.region.has_value();
                        });
   if (!regions) {
-    c.lattice.for_each_site(c.cell, [&](const Vec3&, int type) { ++per_type[static_cast<std::size_t>(type)]; });
-    for (std::size_t& n : per_type) n = static_cast<std::size_t>(static_cast<double>(n) * c.cells);
+    per_type = repeated_crystal_sites(c, ntypes);
     for (std::size_t g = 0; g < groups.size(); ++g)
       for (int type : groups[g].types) in_group[g] += per_type[static_cast<std::size_t>(type)];
     return per_type;

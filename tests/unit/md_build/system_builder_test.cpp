@@ -41,6 +41,21 @@ masses = [63.546]
 elements = ["Cu"]
 )";
 
+// `run --check` counts a crystal larger than a few cells without building it; the count must be
+// the built crystal's for every boundary, the hi faces of shrink-wrapped axes included.
+TEST(SystemBuilder, CheckCountsTheAtomsTheRunCreates) {
+  for (const std::string boundary : {"ppp", "ppf", "pps", "sfs", "sss"}) {
+    SCOPED_TRACE(boundary);
+    std::string toml = fcc;
+    toml.replace(toml.find("\"ppf\""), 5, "\"" + boundary + "\"");
+    const Config root = Config::parse(toml, "fixtures/io/case.toml");
+    const BuiltSystem counted = build_system(root.table("system"), true);
+    const BuiltSystem built = build_system(root.table("system"));
+    ASSERT_FALSE(counted.counted_types.empty());  // 6 cells along x: counted, not built
+    EXPECT_EQ(counted.atom_count(), built.atoms.nlocal);
+  }
+}
+
 TEST(SystemBuilder, CrystalWithVoidAndGroups) {
   const Config* root = nullptr;
   const BuiltSystem s = build(R"(
