@@ -59,4 +59,13 @@ std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double r
 /// (no surface: the radius is too small for the point spacing).
 TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius);
 
+/// The packing-sculpting surface (Xu et al. 2015 §3.2.3): packing is the convex hull (here the
+/// boundary of the whole Delaunay division); sculpting removes, from the outside in, each
+/// tetrahedron behind a surface face ABC whose sphere through A, B, C, shrinking from infinite
+/// radius on the outer side, meets the tetrahedron's fourth point before its radius falls to the
+/// depth s or below (BallPassage::grows in rolling_ball.cpp has the rule). The surface is the
+/// boundary of the tetrahedra left, normals outwards, so `volume` is their total volume. InputError
+/// for a depth that is not positive and finite, and when sculpting removes every tetrahedron.
+TriangleSurface packing_sculpting_surface(const DelaunayDivision<3>& d, double depth);
+
 }  // namespace shockfield::geometry
