@@ -143,6 +143,15 @@ double vertex_solid_angle(const P3& p, const P3& a, const P3& b, const P3& c) {
   return 2.0 * std::atan2(std::abs(dot(A, cross(B, C))), denominator);
 }
 
+/// Σ over the four vertices of tetrahedron t of their solid angles in it (sr).
+double cell_vertex_solid_angle(const DelaunayDivision<3>& d, std::size_t t) {
+  const auto& q = d.simplices[t];
+  double sum = 0;
+  for (int j = 0; j < 4; ++j)
+    sum += vertex_solid_angle(d.points[q[j]], d.points[q[(j + 1) % 4]], d.points[q[(j + 2) % 4]], d.points[q[(j + 3) % 4]]);
+  return sum;
+}
+
 }  // namespace
 
 void measure_surface(TriangleSurface& s) {
@@ -173,10 +182,17 @@ void measure_surface(TriangleSurface& s) {
 }
 
 TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius) {
+  return rolling_ball_solid(d, radius).surface;
+}
+
+RollingBallSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius) {
   const BallPassage ball(d, radius);
   const std::vector<std::int32_t> region = ball.exterior();
+  RollingBallSolid solid;
+  for (std::size_t t = 0; t < d.simplices.size(); ++t)
+    if (region[t] != 0) solid.vertex_solid_angle += cell_vertex_solid_angle(d, t);
   // Faces where a ball of E is stopped, normal towards E.
-  TriangleSurface s;
+  TriangleSurface& s = solid.surface;
   s.points = d.points;
   for (std::size_t t = 0; t < d.simplices.size(); ++t)
     for (int i = 0; i < 4; ++i) {
@@ -194,7 +210,7 @@ TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius
                                  "touches no surface: give a larger radius",
                                  radius));
   measure_surface(s);
-  return s;
+  return solid;
 }
 
 TriangleSurface packing_sculpting_surface(const DelaunayDivision<3>& d, double depth) {
@@ -246,10 +262,7 @@ std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double r
       c.centroid[k] += v * mean;
     }
     c.cell_volume += v;
-    const auto& q = d.simplices[t];
-    for (int j = 0; j < 4; ++j)
-      c.vertex_solid_angle += vertex_solid_angle(d.points[q[j]], d.points[q[(j + 1) % 4]], d.points[q[(j + 2) % 4]],
-                                                 d.points[q[(j + 3) % 4]]);
+    c.vertex_solid_angle += cell_vertex_solid_angle(d, t);
     for (int i = 0; i < 4; ++i) {  // faces where the ball is stopped, normal out of the cavity
       const std::int32_t n = d.neighbours[t][i];
       if (n >= 0 && region[n] == region[t] && ball.passable(t, i)) continue;

@@ -59,6 +59,16 @@ std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double r
 /// (no surface: the radius is too small for the point spacing).
 TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius);
 
+/// The rolling-ball surface with what it encloses: the tetrahedra a ball of the radius cannot reach
+/// from outside (cavities included).
+struct RollingBallSolid {
+  TriangleSurface surface;
+  /// Σ over the enclosed tetrahedra of the solid angles at their vertices (sr): ω_i/4π of the space
+  /// around point i is enclosed (1 inside, about 1/2 on a flat part of the surface).
+  double vertex_solid_angle = 0.0;
+};
+RollingBallSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius);
+
 /// The packing-sculpting surface (Xu et al. 2015 §3.2.3): packing is the convex hull (here the
 /// boundary of the whole Delaunay division); sculpting removes, from the outside in, each
 /// tetrahedron behind a surface face ABC whose sphere through A, B, C, shrinking from infinite
