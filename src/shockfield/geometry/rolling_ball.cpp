@@ -231,6 +231,11 @@ TriangleSurface packing_sculpting_surface(const DelaunayDivision<3>& d, double d
                                  "surface: give a larger depth (about the point spacing or more)",
                                  depth));
   measure_surface(s);
+  if (!s.manifold)
+    throw InputError(fmt::format("sculpting to depth {} carves between the points in places and leaves a "
+                                 "surface that is not a manifold (an edge on more than two triangles): give a "
+                                 "larger depth (about the point spacing or more)",
+                                 depth));
   return s;
 }
 

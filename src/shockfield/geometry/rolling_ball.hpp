@@ -75,7 +75,8 @@ RollingBallSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius)
 /// radius on the outer side, meets the tetrahedron's fourth point before its radius falls to the
 /// depth s or below (BallPassage::grows in rolling_ball.cpp has the rule). The surface is the
 /// boundary of the tetrahedra left, normals outwards, so `volume` is their total volume. InputError
-/// for a depth that is not positive and finite, and when sculpting removes every tetrahedron.
+/// for a depth that is not positive and finite, when sculpting removes every tetrahedron, and when
+/// what is left is not edge-manifold (the depth is below the spacing somewhere).
 TriangleSurface packing_sculpting_surface(const DelaunayDivision<3>& d, double depth);
 
 }  // namespace shockfield::geometry
