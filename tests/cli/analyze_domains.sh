@@ -10,6 +10,8 @@
 #   of it (R = 10: the hull itself, to 10⁻⁶; R = 13: −2.7%, the ball of 3 Å follows notches of the
 #   CNA-labelled set); χ = 2, manifold;
 # - the same inclusion centred on the box corner (cut by every periodic face) gives the same row;
+# - the packing-sculpting surface (depth 3 Å) gives the same row as the rolling ball (measured:
+#   the same tetrahedra are carved);
 # - domains.png, domains_<timestep>.vtp written. Then bad input. Note: the inclusion's outer shell
 #   (about 2.5 Å) is "other" for CNA (the incoherent interface), so the bcc domain is smaller than
 #   the cut sphere — a property of the structure analysis, not of the surface.
@@ -70,6 +72,12 @@ for c in ("atoms", "volume", "area", "atoms_volume"):
 sys.exit(bad)
 PY
 echo "ok: bcc inclusions: volumes against the atoms' own and the convex hull's; the corner copy equal"
+"$SF" analyze atoms "$WORK/inclusion1000.dump" --clusters 3.0 --cluster-select acna:bcc --domains 3.0 \
+  --domains-surface packing --no-plot -o "$WORK/p" > /dev/null
+[ ! -e "$WORK/p/domains.png" ] || fail "--no-plot drew domains.png"
+[ "$(cut -d, -f3- "$WORK/p/domains.csv" | tail -1)" = "$(grep '^1,1000,' "$D" | cut -d, -f3-)" ] \
+  || fail "packing-sculpting domain differs from the rolling ball's: $(cat "$WORK/p/domains.csv")"
+echo "ok: --domains-surface packing gives the rolling ball's row (sculpting from the hull at s = r)"
 
 analyze_rejected "--domains needs the clusters that form the domains" -- atoms "$WORK/inclusion0.dump" --domains 3
 analyze_rejected "--domains" -- atoms "$WORK/inclusion0.dump" --clusters 3 --cluster-select acna:bcc --domains 0

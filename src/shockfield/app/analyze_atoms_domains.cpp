@@ -21,6 +21,12 @@ void add_domain_options(CLI::App& cmd, DomainArgs& a) {
                  "the surface through the centres of its outer atoms, the atoms' own volume, centre), "
                  "OUTPUT/domains_<timestep>.vtp and OUTPUT/domains.png (volume and area against time)")
       ->check(CLI::PositiveNumber);
+  cmd.add_option("--domains-surface", a.surface,
+                 "The domains' surfaces: rolling (a ball of radius R rolled from outside) or packing (the "
+                 "packing-sculpting surface of Xu et al. 2015 to depth R: the convex hull carved from outside; a "
+                 "depth that leaves no closed manifold is an error)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rolling", "packing"}));
   cmd.add_option("--domains-min-atoms", a.min_atoms, "Clusters with fewer atoms get no surface (at least 4)")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{4}, std::size_t{1} << 40));
@@ -65,9 +71,10 @@ void DomainOutput::add(std::size_t frame_index, const analysis::atoms::AtomFrame
       ++flat_;
       continue;
     }
-    const geometry::RollingBallSolid solid = [&] {
+    const geometry::EnclosedSolid solid = [&] {
       try {
-        return geometry::rolling_ball_solid(*division, *args_.probe);
+        return args_.surface == "packing" ? geometry::packing_sculpting_solid(*division, *args_.probe)
+                                          : geometry::rolling_ball_solid(*division, *args_.probe);
       } catch (const InputError& e) {
         throw InputError(fmt::format("{}: {}", name, e.what()));
       }

@@ -2,7 +2,8 @@
 // The phase domains of `shockfield analyze atoms --domains R` (Xu et al. (2015) §3.2.3, surfaces of
 // phase domains from the structure analysis): each cluster of --clusters/--cluster-select (e.g. the
 // bcc or hcp atoms by CNA) made whole across periodic faces, its Delaunay division and the surface
-// a ball of radius R rolled from outside touches (geometry/rolling_ball), with the volume and
+// a ball of radius R rolled from outside touches, or the packing-sculpting surface to depth R
+// (geometry/rolling_ball), with the volume and
 // area per domain and frame (OUTPUT/domains.csv), the surfaces (OUTPUT/domains_<timestep>.vtp)
 // and a plot of volume and area against time (OUTPUT/domains.png). The voids of --voids are the
 // model (analyze_atoms_voids).
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 
 #include "shockfield/analysis/atoms/atom_frame.hpp"
 #include "shockfield/analysis/atoms/defect_clusters.hpp"
@@ -19,7 +21,8 @@
 namespace shockfield::app {
 
 struct DomainArgs {
-  std::optional<double> probe;  ///< Å
+  std::optional<double> probe;  ///< Å: ball radius or sculpting depth
+  std::string surface = "rolling";  ///< rolling (ball) or packing (packing-sculpting)
   std::size_t min_atoms = 4;    ///< smaller clusters have no surface
 };
 

@@ -152,6 +152,14 @@ double cell_vertex_solid_angle(const DelaunayDivision<3>& d, std::size_t t) {
   return sum;
 }
 
+/// Σ of cell_vertex_solid_angle over the cells outside the exterior (region ≠ 0).
+double enclosed_solid_angle(const DelaunayDivision<3>& d, const std::vector<std::int32_t>& region) {
+  double sum = 0;
+  for (std::size_t t = 0; t < d.simplices.size(); ++t)
+    if (region[t] != 0) sum += cell_vertex_solid_angle(d, t);
+  return sum;
+}
+
 }  // namespace
 
 void measure_surface(TriangleSurface& s) {
@@ -185,12 +193,11 @@ TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius
   return rolling_ball_solid(d, radius).surface;
 }
 
-RollingBallSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius) {
+EnclosedSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius) {
   const BallPassage ball(d, radius);
   const std::vector<std::int32_t> region = ball.exterior();
-  RollingBallSolid solid;
-  for (std::size_t t = 0; t < d.simplices.size(); ++t)
-    if (region[t] != 0) solid.vertex_solid_angle += cell_vertex_solid_angle(d, t);
+  EnclosedSolid solid;
+  solid.vertex_solid_angle = enclosed_solid_angle(d, region);
   // Faces where a ball of E is stopped, normal towards E.
   TriangleSurface& s = solid.surface;
   s.points = d.points;
@@ -214,10 +221,16 @@ RollingBallSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius)
 }
 
 TriangleSurface packing_sculpting_surface(const DelaunayDivision<3>& d, double depth) {
+  return packing_sculpting_solid(d, depth).surface;
+}
+
+EnclosedSolid packing_sculpting_solid(const DelaunayDivision<3>& d, double depth) {
   const BallPassage sculptor(d, depth, Growth::sculpt);
   const std::vector<std::int32_t> region = sculptor.exterior();
+  EnclosedSolid solid;
+  solid.vertex_solid_angle = enclosed_solid_angle(d, region);
   // The boundary of the cells left, normals out of them.
-  TriangleSurface s;
+  TriangleSurface& s = solid.surface;
   s.points = d.points;
   for (std::size_t t = 0; t < d.simplices.size(); ++t) {
     if (region[t] == 0) continue;
@@ -236,7 +249,7 @@ TriangleSurface packing_sculpting_surface(const DelaunayDivision<3>& d, double d
                                  "surface that is not a manifold (an edge on more than two triangles): give a "
                                  "larger depth (about the point spacing or more)",
                                  depth));
-  return s;
+  return solid;
 }
 
 std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double radius) {

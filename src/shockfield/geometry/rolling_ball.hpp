@@ -59,15 +59,16 @@ std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double r
 /// (no surface: the radius is too small for the point spacing).
 TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius);
 
-/// The rolling-ball surface with what it encloses: the tetrahedra a ball of the radius cannot reach
-/// from outside (cavities included).
-struct RollingBallSolid {
+/// A surface from outside with what it encloses: the tetrahedra left (rolling ball: those the
+/// ball cannot reach from outside, cavities included; sculpting: those not carved).
+struct EnclosedSolid {
   TriangleSurface surface;
   /// Σ over the enclosed tetrahedra of the solid angles at their vertices (sr): ω_i/4π of the space
   /// around point i is enclosed (1 inside, about 1/2 on a flat part of the surface).
   double vertex_solid_angle = 0.0;
 };
-RollingBallSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius);
+/// rolling_ball_surface with what it encloses.
+EnclosedSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius);
 
 /// The packing-sculpting surface (Xu et al. 2015 §3.2.3): packing is the convex hull (here the
 /// boundary of the whole Delaunay division); sculpting removes, from the outside in, each
@@ -78,5 +79,7 @@ RollingBallSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius)
 /// for a depth that is not positive and finite, when sculpting removes every tetrahedron, and when
 /// what is left is not edge-manifold (the depth is below the spacing somewhere).
 TriangleSurface packing_sculpting_surface(const DelaunayDivision<3>& d, double depth);
+/// packing_sculpting_surface with what it encloses.
+EnclosedSolid packing_sculpting_solid(const DelaunayDivision<3>& d, double depth);
 
 }  // namespace shockfield::geometry
