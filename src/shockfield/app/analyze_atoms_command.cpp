@@ -212,16 +212,16 @@ void run_atoms(const AtomsArgs& a) {
   domains.close();
   if (tracks) tracks->write(tracks_file, growth_file);
   pending.commit();
+  if (!a.no_plot) {  // from the committed CSVs; before the summary lines, which scripts tail
+    voids.plot(out_dir);
+    domains.plot(out_dir);
+  }
   std::printf("analysed %zu frames (%zu atoms) from %zu files; wrote %s/structures.csv and the annotated dumps\n",
               frame_index, total_atoms, files.size(), out_dir.string().c_str());
   if (voids.on()) std::printf("%zu voids in %s/voids.csv\n", voids.voids(), out_dir.string().c_str());
   if (domains.on())
     std::printf("%zu domains in %s/domains.csv%s\n", domains.domains(), out_dir.string().c_str(),
                 domains.flat() > 0 ? fmt::format(" ({} flat ones without a surface)", domains.flat()).c_str() : "");
-  if (!a.no_plot) {
-    voids.plot(out_dir);
-    domains.plot(out_dir);
-  }
   if (voxels.on()) std::printf("%s\n", voxels.summary().c_str());
   if (burgers) std::printf("%zu Burgers circuits in %s/burgers.csv\n", burgers->circuits(), out_dir.string().c_str());
   if (burgers && burgers->skipped() > 0)
