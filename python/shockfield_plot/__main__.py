@@ -2,10 +2,13 @@
 
     python3 -m shockfield_plot minkowski minkowski.csv minkowski.png
     python3 -m shockfield_plot similarity similarity.csv similarity.png
+    python3 -m shockfield_plot surfaces voids.csv voids.png      (or domains.csv domains.png)
 
 minkowski: one panel per functional (columns after `threshold`), each functional against time
 with one curve per threshold (the paper's Figs. 32-41), or against the threshold when there is a
 single time. similarity: process distance d_P against the candidate threshold (Fig. 43's search).
+surfaces: the voids or phase domains of `analyze atoms --voids/--domains` (columns timestep, void or
+domain, volume, area): their total and the largest one's volume and area against the timestep.
 """
 import csv
 import sys
@@ -59,5 +62,23 @@ def similarity(csv_path, png_path):
     fig.savefig(png_path, dpi=120)
 
 
+def surfaces(csv_path, png_path):
+    with open(csv_path) as f:
+        rows = list(csv.DictReader(f))
+    what = "domain" if rows and "domain" in rows[0] else "void"
+    steps = sorted({int(r["timestep"]) for r in rows})
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.4))
+    for ax, column, unit in ((axes[0], "volume", "Å³"), (axes[1], "area", "Å²")):
+        total = [sum(float(r[column]) for r in rows if int(r["timestep"]) == t) for t in steps]
+        largest = [max((float(r[column]) for r in rows if int(r["timestep"]) == t), default=0.0) for t in steps]
+        ax.plot(steps, total, marker="o", label=f"all {what}s")
+        ax.plot(steps, largest, marker=".", ls="--", label=f"largest {what}")
+        ax.set_xlabel("timestep")
+        ax.set_ylabel(f"{column} ({unit})")
+    axes[0].legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(png_path, dpi=120)
+
+
 if __name__ == "__main__":
-    {"minkowski": minkowski, "similarity": similarity}[sys.argv[1]](sys.argv[2], sys.argv[3])
+    {"minkowski": minkowski, "similarity": similarity, "surfaces": surfaces}[sys.argv[1]](sys.argv[2], sys.argv[3])

@@ -2,9 +2,10 @@
 # `shockfield analyze geometry`: the Delaunay division of the 8 corners of a unit cube plus its
 # centre (total volume 1 exactly, every tetrahedron checked), clusters of two separated pairs
 # (seed rule 1 cluster, single linkage 2), the rolling-ball surface of the cube (its hull: 12
-# triangles, area 6, volume 1, χ = 2; the same by the pivoting ball), a LAMMPS dump and an .xyz file as input, and bad input
+# triangles, area 6, volume 1, χ = 2; the same by the pivoting ball and by packing-sculpting), a LAMMPS dump and an .xyz file as input, and bad input
 # (NaN coordinate, fewer points than a simplex, coplanar points in 3D, collinear in 2D, a ball
-# radius too small to find a surface): one clear
+# radius or sculpting depth too small to find a surface, a depth without packing or packing without
+# a depth): one clear
 # message, exit code 2, no output folder.
 source "$(dirname "$0")/lib.bash"
 set -e
@@ -26,6 +27,11 @@ for want in "surface_triangles 12" "surface_area 6" "surface_volume 1" "surface_
   grep -qx "$want" "$WORK/pivot/summary.txt" || fail "pivoting ball: no '$want' in $(cat "$WORK/pivot/summary.txt")"
 done
 echo "ok: pivoting-ball surface of the cube (cocircular faces)"
+"$SF" analyze geometry "$WORK/cube.csv" --surface-method packing --sculpt-depth 5 --no-mesh -o "$WORK/packing" > /dev/null
+for want in "surface_triangles 12" "surface_area 6" "surface_volume 1" "surface_euler_characteristic 2" "surface_manifold yes"; do
+  grep -qx "$want" "$WORK/packing/summary.txt" || fail "packing-sculpting: no '$want' in $(cat "$WORK/packing/summary.txt")"
+done
+echo "ok: packing-sculpting surface of the cube (the convex hull: nothing deeper than 5)"
 printf '0 0\n0.1 0\n5 0.05\n5.1 0.05\n' > "$WORK/pairs.txt"
 "$SF" analyze geometry "$WORK/pairs.txt" --dimension 2 -d 1 -o "$WORK/pairs" > /dev/null
 grep -q "^seed_rule_clusters 1$" "$WORK/pairs/summary.txt" || fail "seed rule: $(cat "$WORK/pairs/summary.txt")"
@@ -69,4 +75,8 @@ printf '0,0,0\n1,0\n' > "$WORK/short.csv"
 bad short.csv "short.csv:2: expected at least 3 values per line, got 2"
 bad cube.csv "a ball of radius 0.001 passes between the points everywhere" -r 0.001
 bad cube.csv "pivoting ball of radius 0.001: no second point met turning about z" -r 0.001 --surface-method pivot
-bad pairs.txt "--ball-radius: the rolling-ball surface needs --dimension 3" --dimension 2 -r 1
+bad pairs.txt "--ball-radius/--sculpt-depth: surfaces need --dimension 3" --dimension 2 -r 1
+bad cube.csv "sculpting to depth 0.001 removes every tetrahedron" --surface-method packing -s 0.001
+bad cube.csv "--surface-method packing needs --sculpt-depth S" --surface-method packing
+bad cube.csv "--surface-method packing takes --sculpt-depth, not --ball-radius" --surface-method packing -s 1 -r 1
+bad cube.csv "--sculpt-depth is the depth of --surface-method packing" -s 1

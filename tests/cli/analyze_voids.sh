@@ -30,16 +30,18 @@ awk -F, 'NR > 1 { n = ($2 == 6 ? 79 : $2 == 8 ? 177 : 369); expected = n * 3.615
                   if (e < -0.03 || e > 0.03 || c > 1e-12 || $14 != 2 || $15 != 1) { print "R", $2, "missing", $8, "expected", expected, $0; bad++ } }
          END { exit bad > 0 }' "$V" || fail "voids: $(cat "$V")"
 for t in 6 8 10; do [ -s "$WORK/v/voids_$t.vtp" ] || fail "no voids_$t.vtp"; grep -q "<Polys>" "$WORK/v/voids_$t.vtp" || fail "voids_$t.vtp has no polygons"; done
-echo "ok: static voids R = 6, 8, 10 Å: missing volume within 3% of the removed atoms'"
+[ -s "$WORK/v/voids.png" ] || fail "no voids.png"
+echo "ok: static voids R = 6, 8, 10 Å: missing volume within 3% of the removed atoms'; voids.png"
 
 # The same void of R = 6 Å centred on the box corner, cut by all three periodic faces: found once
 # and whole (periodic images within --voids-margin join the division), the same missing volume.
-"$SF" analyze atoms "$WORK/corner.dump" --voids 2.17 -o "$WORK/corner" > /dev/null
+"$SF" analyze atoms "$WORK/corner.dump" --voids 2.17 --no-plot -o "$WORK/corner" > /dev/null
+[ ! -e "$WORK/corner/voids.png" ] || fail "--no-plot drew voids.png"
 awk -F, -v ref="$(awk -F, '$2 == 6 { print $8 }' "$V")" 'NR > 1 { rows++; if ($8 < 0.999 * ref || $8 > 1.001 * ref || $14 != 2) bad++ }
          END { exit bad > 0 || rows != 1 }' "$WORK/corner/voids.csv" || fail "corner void: $(cat "$WORK/corner/voids.csv")"
 echo "ok: a void across the periodic faces is found once, whole"
 
-"$SF" analyze atoms "$ROOT/tests/fixtures/lammps_structure/cu_void_300K.dump" --voids 2.17 -o "$WORK/t" > /dev/null
+"$SF" analyze atoms "$ROOT/tests/fixtures/lammps_structure/cu_void_300K.dump" --voids 2.17 --no-plot -o "$WORK/t" > /dev/null
 awk -F, 'NR > 1 { r = $8 / (79 * 3.615^3 / 4); c = ($10 - 14.46)^2 + ($11 - 14.46)^2 + ($12 - 14.46)^2;
                   if (r < 0.80 || r > 1.0 || c > 0.3^2 || $14 != 2) bad++; rows++ }
          END { exit bad > 0 || rows != 1 }' "$WORK/t/voids.csv" || fail "300 K void: $(cat "$WORK/t/voids.csv")"

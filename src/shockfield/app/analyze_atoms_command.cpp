@@ -22,6 +22,7 @@
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/app/analyze_atoms_burgers.hpp"
+#include "shockfield/app/analyze_atoms_domains.hpp"
 #include "shockfield/app/analyze_atoms_inputs.hpp"
 #include "shockfield/app/analyze_atoms_profiles.hpp"
 #include "shockfield/app/analyze_atoms_tracks.hpp"
@@ -54,8 +55,10 @@ struct AtomsArgs {
   TrackArgs track;
   ProfileArgs profile;
   VoidArgs voids;
+  DomainArgs domains;
   VoxelArgs voxel;
   int threads = 0;
+  bool no_plot = false;
 };
 
 // --cluster-select and --voxel-select: the selection language of analysis/atoms/cluster_selection,
@@ -154,6 +157,8 @@ void run_atoms(const AtomsArgs& a) {
   io::CsvWriter clusters;
   if (analyses.clusters) clusters = io::CsvWriter(pending.add("clusters.csv"), aa::cluster_columns("frame", "timestep"));
   VoidOutput voids(a.voids, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
+  DomainOutput domains(a.domains, analyses.clusters.has_value(),
+                       [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
   if (profiles.profiles()) profiles.open(pending.add("profiles.csv"));
   VoxelOutput voxels(a.voxel, [&pending](const fs::path& name) { return fs::path(pending.add(name)); });
   const aa::ClusterSelection voxel_select =
@@ -190,6 +195,7 @@ void run_atoms(const AtomsArgs& a) {
       aa::append_structure_columns(dumps[f], result, frame.size());
       if (profiles.profiles()) profiles.add(frame_index, frame, result);
       if (voids.on()) voids.add(frame_index, frame);
+      if (domains.on()) domains.add(frame_index, frame, *result.clusters);
       if (voxels.on()) voxels.add(frame, voxel_select(result));
       if (tracks) tracks->add(frame_index, frame, *result.clusters, dumps[f]);
       if (burgers) burgers->analyze(frame_index, frame, result.clusters ? &*result.clusters : nullptr, dumps[f]);
@@ -203,11 +209,19 @@ void run_atoms(const AtomsArgs& a) {
   if (burgers) burgers->close();
   profiles.close();
   voids.close();
+  domains.close();
   if (tracks) tracks->write(tracks_file, growth_file);
   pending.commit();
+  if (!a.no_plot) {  // from the committed CSVs; before the summary lines, which scripts tail
+    voids.plot(out_dir);
+    domains.plot(out_dir);
+  }
   std::printf("analysed %zu frames (%zu atoms) from %zu files; wrote %s/structures.csv and the annotated dumps\n",
               frame_index, total_atoms, files.size(), out_dir.string().c_str());
   if (voids.on()) std::printf("%zu voids in %s/voids.csv\n", voids.voids(), out_dir.string().c_str());
+  if (domains.on())
+    std::printf("%zu domains in %s/domains.csv%s\n", domains.domains(), out_dir.string().c_str(),
+                domains.flat() > 0 ? fmt::format(" ({} flat ones without a surface)", domains.flat()).c_str() : "");
   if (voxels.on()) std::printf("%s\n", voxels.summary().c_str());
   if (burgers) std::printf("%zu Burgers circuits in %s/burgers.csv\n", burgers->circuits(), out_dir.string().c_str());
   if (burgers && burgers->skipped() > 0)
@@ -233,7 +247,9 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       "(Xu et al. (2015) §4.4.2's central-moment method); with --burgers-*, OUTPUT/burgers.csv (Burgers\n"
       "vectors of fcc dislocations by the Frank scheme of Xu et al. (2015) §3.2.3, FS/RH); with --track,\n"
       "OUTPUT/tracks.csv and OUTPUT/growth.csv (clusters followed in time, growth laws, Fig 72); with\n"
-      "--voxel, OUTPUT/voxels_<timestep>.vti (the hcp fraction on a grid: a phase-field [initial] file).\n"
+      "--voxel, OUTPUT/voxels_<timestep>.vti (the hcp fraction on a grid: a phase-field [initial] file);\n"
+      "with --voids or --domains, the surfaces, volumes and areas of voids or of the phase domains of\n"
+      "--clusters (OUTPUT/voids.csv or domains.csv, .vtp per frame, a PNG against time).\n"
       "Inputs: LAMMPS text dumps (one file or several, frames in order; orthogonal boxes; .gz\n"
       "through gzip, written back uncompressed), LAMMPS data files (atom style atomic), extended XYZ\n"
       "(ASE/OVITO .xyz/.extxyz, one or many frames, orthogonal Lattice; written back as <stem>.dump),\n"
@@ -280,9 +296,11 @@ void add_analyze_atoms_command(CLI::App& analyze) {
       ->check(CLI::PositiveNumber);
   add_profile_options(*cmd, a->profile);
   add_void_options(*cmd, a->voids);
+  add_domain_options(*cmd, a->domains);
   add_voxel_options(*cmd, a->voxel);
   add_track_options(*cmd, a->track);
   add_burgers_options(*cmd, a->burgers);
+  cmd->add_flag("--no-plot", a->no_plot, "No voids.png or domains.png (CSV and .vtp only)");
   cmd->add_option("-j,--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
       ->check(CLI::NonNegativeNumber);
   cmd->callback([a] { run_atoms(*a); });

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
+#include "shockfield/app/python_helpers.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/delaunay.hpp"
 #include "shockfield/geometry/delaunay_output.hpp"
@@ -18,7 +20,8 @@ void add_void_options(CLI::App& cmd, VoidArgs& a) {
                  "Voids: the cavities of the atoms' Delaunay division for a ball of this radius (Å; larger than the "
                  "crystal's interstitial holes, e.g. 0.6 a for fcc), regions the ball moves in without reaching the "
                  "outside; writes OUTPUT/voids.csv (per frame and void: volume and area of the surface through "
-                 "the centres of the atoms around it, centre, equivalent radius) and OUTPUT/voids_<timestep>.vtp")
+                 "the centres of the atoms around it, centre, equivalent radius), OUTPUT/voids_<timestep>.vtp and "
+                 "OUTPUT/voids.png (volume and area against time)")
       ->check(CLI::PositiveNumber);
   cmd.add_option("--voids-atomic-volume", a.atomic_volume,
                  "Volume per atom of the crystal (Å³) for the voids' missing_volume; default: (box volume − the voids' "
@@ -34,11 +37,36 @@ void add_void_options(CLI::App& cmd, VoidArgs& a) {
       ->check(CLI::NonNegativeNumber);
 }
 
+double equivalent_radius(double volume) { return std::cbrt(3.0 * std::max(volume, 0.0) / (4.0 * std::numbers::pi)); }
+
+SurfaceSeries::SurfaceSeries(std::string name, const std::string& csv_header,
+                             const std::function<std::filesystem::path(const std::filesystem::path&)>& add_file)
+    : name_(std::move(name)), add_file_(add_file), csv_(add_file(name_ + ".csv")) {
+  csv_.write(csv_header);
+}
+
+void SurfaceSeries::end_frame(long long timestep, const std::vector<std::array<double, 3>>& points,
+                              const std::vector<std::array<std::int32_t, 3>>& triangles) {
+  csv_.flush();
+  geometry::write_surface_vtp(add_file_(fmt::format("{}_{}.vtp", name_, timestep)), points, triangles);
+}
+
+void SurfaceSeries::close() {
+  if (csv_.is_open()) csv_.close();
+}
+
+void SurfaceSeries::plot(const std::filesystem::path& folder) const {
+  const auto png = folder / (name_ + ".png");
+  if (plot_csv("surfaces", folder / (name_ + ".csv"), png)) std::printf("wrote %s\n", png.string().c_str());
+}
+
 VoidOutput::VoidOutput(const VoidArgs& args, std::function<std::filesystem::path(const std::filesystem::path&)> add_file)
-    : args_(args), add_file_(std::move(add_file)) {
+    : args_(args) {
   if (!on()) return;
-  csv_ = io::CheckedOutput(add_file_("voids.csv"));
-  csv_.write("frame,timestep,void,cells,volume,area,equivalent_radius,missing_volume,missing_radius,x,y,z,surface_atoms,euler_characteristic,manifold\n");
+  files_ = SurfaceSeries("voids",
+                         "frame,timestep,void,cells,volume,area,equivalent_radius,missing_volume,missing_radius,x,y,z,"
+                         "surface_atoms,euler_characteristic,manifold\n",
+                         add_file);
 }
 
 // The atoms and, along periodic dimensions, their images within `margin` of the faces, so that
@@ -99,21 +127,15 @@ void VoidOutput::add(std::size_t frame_index, const analysis::atoms::AtomFrame& 
       for (std::int32_t v : t) on_surface[static_cast<std::size_t>(v)] = 1;
     // The missing atoms' volume: the polyhedron less the surface atoms' own cells' share in it.
     const double missing = c.surface.volume - omega * c.vertex_solid_angle / (4.0 * std::numbers::pi);
-    auto radius = [](double v) { return std::cbrt(3.0 * std::max(v, 0.0) / (4.0 * std::numbers::pi)); };
-    csv_ << fmt::format("{},{},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{},{}\n", frame_index,
-                        frame.timestep, ++number, c.cells, c.surface.volume, c.surface.area, radius(c.surface.volume),
-                        missing, radius(missing), c.centroid[0], c.centroid[1], c.centroid[2],
+    files_.csv() << fmt::format("{},{},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{},{}\n", frame_index,
+                        frame.timestep, ++number, c.cells, c.surface.volume, c.surface.area, equivalent_radius(c.surface.volume),
+                        missing, equivalent_radius(missing), c.centroid[0], c.centroid[1], c.centroid[2],
                         std::count(on_surface.begin(), on_surface.end(), 1), c.surface.euler_characteristic,
                         c.surface.manifold ? 1 : 0);
     triangles.insert(triangles.end(), c.surface.triangles.begin(), c.surface.triangles.end());
   }
-  csv_.flush();
   voids_ += number;
-  geometry::write_surface_vtp(add_file_(fmt::format("voids_{}.vtp", frame.timestep)), division.points, triangles);
-}
-
-void VoidOutput::close() {
-  if (csv_.is_open()) csv_.close();
+  files_.end_frame(frame.timestep, division.points, triangles);
 }
 
 }  // namespace shockfield::app

@@ -204,19 +204,8 @@ io::CheckedOutput open_output(const Common& c, const std::string& name) {
 void plot(const Common& c, const char* kind, const std::string& csv) {
   if (c.no_plot) return;
   const fs::path dir(c.output);
-  const std::string png = (dir / (std::string(kind) + ".png")).string();
-  std::string cmd;
-  try {
-    cmd = python_command(fmt::format("-m shockfield_plot {} {} {}", kind,
-                                     shell_quote((dir / csv).string()), shell_quote(png)));
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "warning: no plot (%s); the CSV is written\n", e.what());
-    return;
-  }
-  if (std::system(cmd.c_str()) != 0)
-    std::fprintf(stderr, "warning: no plot (%s failed); the CSV is written\n", cmd.c_str());
-  else
-    std::printf("wrote %s\n", png.c_str());
+  const fs::path png = dir / (std::string(kind) + ".png");
+  if (plot_csv(kind, dir / csv, png)) std::printf("wrote %s\n", png.string().c_str());
 }
 
 void set_threads(const Common& c) {

@@ -1,6 +1,7 @@
 // `shockfield analyze geometry`: the Delaunay division and clusters of a point set (Xu et al.
-// 2015 §3.2.3) from a CSV/XYZ file or a LAMMPS dump. Writes OUTPUT/delaunay.vtu (ParaView),
-// OUTPUT/clusters.csv and OUTPUT/summary.txt. Docs: docs/geometry-giso.md.
+// 2015 §3.2.3) from a CSV/XYZ file or a LAMMPS dump, and its rolling-ball or packing-sculpting
+// surface. Writes OUTPUT/delaunay.vtu (ParaView), OUTPUT/clusters.csv, OUTPUT/surface.vtp and
+// OUTPUT/summary.txt. Docs: docs/geometry-giso.md.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -30,6 +31,7 @@ struct GeometryArgs {
   int frame = 0;
   double cluster_distance = 0.0;  // 0: no clusters
   double ball_radius = 0.0;       // 0: no rolling-ball surface (3D only)
+  double sculpt_depth = 0.0;      // 0: no packing-sculpting surface (3D only)
   std::string rule = "both";
   std::string surface_method = "delaunay";
   bool check = false;
@@ -53,13 +55,16 @@ void run_geometry(const GeometryArgs& a) {
                                sg::single_linkage_clusters<N>(division, a.cluster_distance));
   }
   std::optional<sg::TriangleSurface> surface;
-  if (a.ball_radius > 0.0) {
-    if constexpr (N == 3)
-      surface = a.surface_method == "pivot"
-                    ? sg::pivoting_ball_surface(division.points, a.ball_radius)
-                    : sg::rolling_ball_surface(division, a.ball_radius);
-    else
-      throw InputError("--ball-radius: the rolling-ball surface needs --dimension 3");
+  if (a.ball_radius > 0.0 || a.sculpt_depth > 0.0) {
+    if constexpr (N == 3) {
+      if (a.surface_method == "packing")
+        surface = sg::packing_sculpting_surface(division, a.sculpt_depth);
+      else
+        surface = a.surface_method == "pivot" ? sg::pivoting_ball_surface(division.points, a.ball_radius)
+                                              : sg::rolling_ball_surface(division, a.ball_radius);
+    } else {
+      throw InputError("--ball-radius/--sculpt-depth: surfaces need --dimension 3");
+    }
   }
   // Everything is computed: only now create the output folder.
   fs::create_directories(a.output);
@@ -109,8 +114,8 @@ void add_analyze_geometry_command(CLI::App& analyze) {
       "OUTPUT/delaunay.vtu (ParaView; cell data volume, point data cluster labels),\n"
       "OUTPUT/clusters.csv (index, coordinates, one label column per rule) when\n"
       "--cluster-distance is given, OUTPUT/surface.vtp with --ball-radius (rolling-ball\n"
-      "surface), and OUTPUT/summary.txt. Input: CSV/text (x,y[,z] by header\n"
-      "name or the first columns), .xyz (count, comment, 'species x y z' lines) or a LAMMPS text\n"
+      "surface) or --sculpt-depth (packing-sculpting surface), and OUTPUT/summary.txt.\n"
+      "Input: CSV/text (x,y[,z] by header name or the first columns), .xyz (count, comment, 'species x y z' lines) or a LAMMPS text\n"
       "dump. See docs/geometry-giso.md.");
   cmd->add_option("points", a->input, "Point file (.csv/.txt, .xyz, or a LAMMPS dump)")
       ->required()
@@ -139,14 +144,29 @@ void add_analyze_geometry_command(CLI::App& analyze) {
   cmd->add_option("--surface-method", a->surface_method,
                   "How the rolling-ball surface is found: delaunay (from the Delaunay division: "
                   "every component the ball touches) or pivot (the paper's pivoting ball, steps "
-                  "I-III with the searchers MS1/MS3/CS1: the component on the point of largest x)")
+                  "I-III with the searchers MS1/MS3/CS1: the component on the point of largest x), "
+                  "or packing (the packing-sculpting surface of Xu et al. 2015 to --sculpt-depth)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"delaunay", "pivot"}));
+      ->check(CLI::IsMember({"delaunay", "pivot", "packing"}));
   cmd->add_flag("--check", a->check,
                 "Check the division exactly (orientation, neighbour links, empty circumspheres) "
                 "before writing");
   cmd->add_flag("--no-mesh", a->no_mesh, "Do not write delaunay.vtu");
+  cmd->add_option("-s,--sculpt-depth", a->sculpt_depth,
+                  "Sculpting depth s of --surface-method packing (3D): the convex hull, then "
+                  "every tetrahedron behind a surface face whose sphere through the face, shrinking "
+                  "from outside, meets its fourth point at a radius above s is removed; writes "
+                  "surface.vtp and the same summary lines as --ball-radius")
+      ->check(CLI::PositiveNumber);
   cmd->callback([a] {
+    // Each method takes its own length: refuse a mismatch rather than ignore it.
+    const bool packing = a->surface_method == "packing";
+    if (packing && a->sculpt_depth <= 0.0)
+      throw InputError("--surface-method packing needs --sculpt-depth S (a positive length)");
+    if (packing && a->ball_radius > 0.0)
+      throw InputError("--surface-method packing takes --sculpt-depth, not --ball-radius");
+    if (!packing && a->sculpt_depth > 0.0)
+      throw InputError("--sculpt-depth is the depth of --surface-method packing (the method is " + a->surface_method + ")");
     if (a->dimension == 2)
       run_geometry<2>(*a);
     else

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <system_error>
 
@@ -64,6 +65,21 @@ std::string python_command(const std::string& arguments) {
   std::string path = python_package_dir().string();
   if (old_path != nullptr && *old_path != '\0') path += std::string(":") + old_path;
   return fmt::format("PYTHONPATH={} {} {}", shell_quote(path), python_interpreter(), arguments);
+}
+
+bool plot_csv(const std::string& kind, const fs::path& csv, const fs::path& png) {
+  std::string cmd;
+  try {
+    cmd = python_command(fmt::format("-m shockfield_plot {} {} {}", kind, shell_quote(csv.string()), shell_quote(png.string())));
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "warning: no plot (%s); the CSV is written\n", e.what());
+    return false;
+  }
+  if (std::system(cmd.c_str()) != 0) {
+    std::fprintf(stderr, "warning: no plot (%s failed); the CSV is written\n", cmd.c_str());
+    return false;
+  }
+  return true;
 }
 
 }  // namespace shockfield::app

@@ -20,6 +20,11 @@ std::string python_interpreter();
 /// PYTHONPATH.
 std::string python_command(const std::string& arguments);
 
+/// Draws `python3 -m shockfield_plot KIND CSV PNG` (shockfield_plot/__main__.py); true when the PNG
+/// was written. A missing interpreter or a failing helper is a warning on stderr (the CSV stays the
+/// result), never an error.
+bool plot_csv(const std::string& kind, const std::filesystem::path& csv, const std::filesystem::path& png);
+
 /// `text` single-quoted for a POSIX shell.
 std::string shell_quote(const std::string& text);
 

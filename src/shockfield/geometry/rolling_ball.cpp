@@ -26,13 +26,19 @@ P3 tet_circumcentre(const P3& v0, const P3& v1, const P3& v2, const P3& v3) {
   return r;
 }
 
-// The ball's moves over one division: circumcentres of the tetrahedra and whether a ball of
-// radius r passes a face.
+// How the exterior grows over one division: a ball of radius r rolling between the cells
+// (rolling_ball_surface, rolling_ball_cavities) or sculpting to depth s (packing_sculpting_surface).
+enum class Growth { roll, sculpt };
+
+// The exterior's moves over one division: circumcentres of the tetrahedra and whether the exterior
+// passes a face.
 class BallPassage {
  public:
-  BallPassage(const DelaunayDivision<3>& d, double radius) : d_(d), radius_(radius), centre_(d.simplices.size()) {
+  BallPassage(const DelaunayDivision<3>& d, double radius, Growth growth = Growth::roll)
+      : d_(d), radius_(radius), growth_(growth), centre_(d.simplices.size()) {
     if (!(radius > 0.0) || !std::isfinite(radius))
-      throw InputError(fmt::format("rolling-ball radius must be a positive finite length, got {}", radius));
+      throw InputError(fmt::format("{} must be a positive finite length, got {}",
+                                   growth == Growth::roll ? "rolling-ball radius" : "sculpting depth", radius));
     const auto& S = d.simplices;
     const auto& X = d.points;
     for (std::size_t t = 0; t < S.size(); ++t)
@@ -54,28 +60,37 @@ class BallPassage {
     return f;
   }
   /// Can the ball move through face i of t (to its neighbour, or to infinity)? The Voronoi edge of
-  /// the face runs along its normal through the face's circumcentre q.
+  /// the face runs along its normal through the face's circumcentre.
   bool passable(std::size_t t, int i) const {
-    const auto& X = d_.points;
-    const auto f = outward_face(t, i);
-    const P3 q = triangle_circumcentre(X[f[0]], X[f[1]], X[f[2]]);
-    const double rho = std::sqrt(dot(sub(q, X[f[0]]), sub(q, X[f[0]])));
-    const P3 nu = cross(sub(X[f[1]], X[f[0]]), sub(X[f[2]], X[f[0]]));  // out of t
-    const double ht = dot(sub(centre_[t], q), nu);
+    const FaceAxis a = axis(t, i);
     const std::int32_t n = d_.neighbours[t][i];
-    const double hn = n < 0 ? INFINITY : dot(sub(centre_[n], q), nu);
-    const bool crosses_plane = std::min(ht, hn) <= 0.0 && std::max(ht, hn) >= 0.0;
-    const double least = crosses_plane ? rho : std::min(circumradius(t), n < 0 ? INFINITY : circumradius(n));
+    const bool crosses_plane = std::min(a.ht, a.hn) <= 0.0 && std::max(a.ht, a.hn) >= 0.0;
+    const double least = crosses_plane ? a.rho : std::min(circumradius(t), n < 0 ? INFINITY : circumradius(n));
     return least > radius_;
   }
-  /// Marks with `label` every cell a ball reaches from the cells already on `stack`.
+  /// Does the exterior grow through face i of t into the cell behind it — the neighbour, or t itself
+  /// when `into_t` (from infinity through a hull face)? Rolling: `passable`. Sculpting (Xu et al.
+  /// 2015): the sphere through the face's vertices, its centre coming from infinity on the exterior
+  /// side along the face's axis, first meets a point P at the inner cell's circumsphere (that cell
+  /// is Delaunay: no point is met before). Its radius √(ρ² + h²) (h: the centre's height above the
+  /// face) falls to the face's circumradius ρ at h = 0, so the least radius before P is met is the
+  /// inner cell's circumradius when its centre is on the exterior side (h ≥ 0), else ρ; the cell
+  /// is sculpted when that least radius exceeds the depth s.
+  bool grows(std::size_t t, int i, bool into_t) const {
+    if (growth_ == Growth::roll) return passable(t, i);
+    const FaceAxis a = axis(t, i);
+    const double h_inner = into_t ? a.ht : -a.hn;  // the inner centre's height towards the exterior
+    const double least = h_inner >= 0.0 ? circumradius(into_t ? t : static_cast<std::size_t>(d_.neighbours[t][i])) : a.rho;
+    return least > radius_;
+  }
+  /// Marks with `label` every cell the exterior reaches from the cells already on `stack`.
   void flood(std::vector<std::int32_t>& stack, std::vector<std::int32_t>& region, std::int32_t label) const {
     while (!stack.empty()) {
       const std::int32_t t = stack.back();
       stack.pop_back();
       for (int i = 0; i < 4; ++i) {
         const std::int32_t n = d_.neighbours[t][i];
-        if (n >= 0 && region[n] == kNone && passable(t, i)) {
+        if (n >= 0 && region[n] == kNone && grows(t, i, false)) {
           region[n] = label;
           stack.push_back(n);
         }
@@ -88,7 +103,7 @@ class BallPassage {
     std::vector<std::int32_t> stack;
     for (std::size_t t = 0; t < region.size(); ++t)
       for (int i = 0; i < 4; ++i)
-        if (d_.neighbours[t][i] < 0 && region[t] == kNone && passable(t, i)) {
+        if (d_.neighbours[t][i] < 0 && region[t] == kNone && grows(t, i, true)) {
           region[t] = 0;
           stack.push_back(static_cast<std::int32_t>(t));
         }
@@ -98,8 +113,24 @@ class BallPassage {
   static constexpr std::int32_t kNone = -1;
 
  private:
+  /// Face i of t: its circumradius ρ and the heights of the circumcentres of t and of its
+  /// neighbour (+∞ on the hull) above the face's plane, along the normal out of t (in units of
+  /// that unnormalised normal: only their signs are used).
+  struct FaceAxis {
+    double rho, ht, hn;
+  };
+  FaceAxis axis(std::size_t t, int i) const {
+    const auto& X = d_.points;
+    const auto f = outward_face(t, i);
+    const P3 q = triangle_circumcentre(X[f[0]], X[f[1]], X[f[2]]);
+    const P3 nu = cross(sub(X[f[1]], X[f[0]]), sub(X[f[2]], X[f[0]]));  // out of t
+    const std::int32_t n = d_.neighbours[t][i];
+    return {std::sqrt(dot(sub(q, X[f[0]]), sub(q, X[f[0]]))), dot(sub(centre_[t], q), nu),
+            n < 0 ? INFINITY : dot(sub(centre_[n], q), nu)};
+  }
   const DelaunayDivision<3>& d_;
   double radius_;
+  Growth growth_;
   std::vector<P3> centre_;
 };
 
@@ -110,6 +141,23 @@ double vertex_solid_angle(const P3& p, const P3& a, const P3& b, const P3& c) {
   const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B)), lc = std::sqrt(dot(C, C));
   const double denominator = la * lb * lc + dot(A, B) * lc + dot(A, C) * lb + dot(B, C) * la;
   return 2.0 * std::atan2(std::abs(dot(A, cross(B, C))), denominator);
+}
+
+/// Σ over the four vertices of tetrahedron t of their solid angles in it (sr).
+double cell_vertex_solid_angle(const DelaunayDivision<3>& d, std::size_t t) {
+  const auto& q = d.simplices[t];
+  double sum = 0;
+  for (int j = 0; j < 4; ++j)
+    sum += vertex_solid_angle(d.points[q[j]], d.points[q[(j + 1) % 4]], d.points[q[(j + 2) % 4]], d.points[q[(j + 3) % 4]]);
+  return sum;
+}
+
+/// Σ of cell_vertex_solid_angle over the cells outside the exterior (region ≠ 0).
+double enclosed_solid_angle(const DelaunayDivision<3>& d, const std::vector<std::int32_t>& region) {
+  double sum = 0;
+  for (std::size_t t = 0; t < d.simplices.size(); ++t)
+    if (region[t] != 0) sum += cell_vertex_solid_angle(d, t);
+  return sum;
 }
 
 }  // namespace
@@ -142,10 +190,16 @@ void measure_surface(TriangleSurface& s) {
 }
 
 TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius) {
+  return rolling_ball_solid(d, radius).surface;
+}
+
+EnclosedSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius) {
   const BallPassage ball(d, radius);
   const std::vector<std::int32_t> region = ball.exterior();
+  EnclosedSolid solid;
+  solid.vertex_solid_angle = enclosed_solid_angle(d, region);
   // Faces where a ball of E is stopped, normal towards E.
-  TriangleSurface s;
+  TriangleSurface& s = solid.surface;
   s.points = d.points;
   for (std::size_t t = 0; t < d.simplices.size(); ++t)
     for (int i = 0; i < 4; ++i) {
@@ -163,7 +217,39 @@ TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius
                                  "touches no surface: give a larger radius",
                                  radius));
   measure_surface(s);
-  return s;
+  return solid;
+}
+
+TriangleSurface packing_sculpting_surface(const DelaunayDivision<3>& d, double depth) {
+  return packing_sculpting_solid(d, depth).surface;
+}
+
+EnclosedSolid packing_sculpting_solid(const DelaunayDivision<3>& d, double depth) {
+  const BallPassage sculptor(d, depth, Growth::sculpt);
+  const std::vector<std::int32_t> region = sculptor.exterior();
+  EnclosedSolid solid;
+  solid.vertex_solid_angle = enclosed_solid_angle(d, region);
+  // The boundary of the cells left, normals out of them.
+  TriangleSurface& s = solid.surface;
+  s.points = d.points;
+  for (std::size_t t = 0; t < d.simplices.size(); ++t) {
+    if (region[t] == 0) continue;
+    for (int i = 0; i < 4; ++i) {
+      const std::int32_t n = d.neighbours[t][i];
+      if (n < 0 || region[n] == 0) s.triangles.push_back(sculptor.outward_face(t, i));
+    }
+  }
+  if (s.triangles.empty())
+    throw InputError(fmt::format("sculpting to depth {} removes every tetrahedron and leaves no "
+                                 "surface: give a larger depth (about the point spacing or more)",
+                                 depth));
+  measure_surface(s);
+  if (!s.manifold)
+    throw InputError(fmt::format("sculpting to depth {} carves between the points in places and leaves a "
+                                 "surface that is not a manifold (an edge on more than two triangles): give a "
+                                 "larger depth (about the point spacing or more)",
+                                 depth));
+  return solid;
 }
 
 std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double radius) {
@@ -194,10 +280,7 @@ std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double r
       c.centroid[k] += v * mean;
     }
     c.cell_volume += v;
-    const auto& q = d.simplices[t];
-    for (int j = 0; j < 4; ++j)
-      c.vertex_solid_angle += vertex_solid_angle(d.points[q[j]], d.points[q[(j + 1) % 4]], d.points[q[(j + 2) % 4]],
-                                                 d.points[q[(j + 3) % 4]]);
+    c.vertex_solid_angle += cell_vertex_solid_angle(d, t);
     for (int i = 0; i < 4; ++i) {  // faces where the ball is stopped, normal out of the cavity
       const std::int32_t n = d.neighbours[t][i];
       if (n >= 0 && region[n] == region[t] && ball.passable(t, i)) continue;

@@ -59,4 +59,27 @@ std::vector<Cavity> rolling_ball_cavities(const DelaunayDivision<3>& d, double r
 /// (no surface: the radius is too small for the point spacing).
 TriangleSurface rolling_ball_surface(const DelaunayDivision<3>& d, double radius);
 
+/// A surface from outside with what it encloses: the tetrahedra left (rolling ball: those the
+/// ball cannot reach from outside, cavities included; sculpting: those not carved).
+struct EnclosedSolid {
+  TriangleSurface surface;
+  /// Σ over the enclosed tetrahedra of the solid angles at their vertices (sr): ω_i/4π of the space
+  /// around point i is enclosed (1 inside, about 1/2 on a flat part of the surface).
+  double vertex_solid_angle = 0.0;
+};
+/// rolling_ball_surface with what it encloses.
+EnclosedSolid rolling_ball_solid(const DelaunayDivision<3>& d, double radius);
+
+/// The packing-sculpting surface (Xu et al. 2015 §3.2.3): packing is the convex hull (here the
+/// boundary of the whole Delaunay division); sculpting removes, from the outside in, each
+/// tetrahedron behind a surface face ABC whose sphere through A, B, C, shrinking from infinite
+/// radius on the outer side, meets the tetrahedron's fourth point before its radius falls to the
+/// depth s or below (BallPassage::grows in rolling_ball.cpp has the rule). The surface is the
+/// boundary of the tetrahedra left, normals outwards, so `volume` is their total volume. InputError
+/// for a depth that is not positive and finite, when sculpting removes every tetrahedron, and when
+/// what is left is not edge-manifold (the depth is below the spacing somewhere).
+TriangleSurface packing_sculpting_surface(const DelaunayDivision<3>& d, double depth);
+/// packing_sculpting_surface with what it encloses.
+EnclosedSolid packing_sculpting_solid(const DelaunayDivision<3>& d, double depth);
+
 }  // namespace shockfield::geometry

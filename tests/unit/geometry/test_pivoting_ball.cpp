@@ -9,25 +9,18 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <random>
 #include <string>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/delaunay.hpp"
 #include "shockfield/geometry/pivoting_ball.hpp"
+#include "unit/geometry/sampled_shapes.hpp"
 
 namespace shockfield::geometry {
 namespace {
 
 std::vector<Point3> sphere_points(std::size_t n, double r, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> g;
-  std::vector<Point3> p(n);
-  for (auto& x : p) {
-    const double a = g(rng), b = g(rng), z = g(rng), s = r / std::sqrt(a * a + b * b + z * z);
-    x = {a * s, b * s, z * s};
-  }
-  return p;
+  return testing::sphere(n, r, {0, 0, 0}, seed);
 }
 
 /// The triangles as sorted vertex triples, each rotated to start at its smallest vertex (the
@@ -60,16 +53,7 @@ TEST(PivotingBall, SphereEqualsTheDelaunaySurface) {
 
 TEST(PivotingBall, TorusEqualsTheDelaunaySurfaceWithEulerCharacteristicZero) {
   // 10 000 points uniform in area on a torus R = 1, a = 0.4, ball 0.2: the hole stays open.
-  std::mt19937_64 rng(2);
-  std::uniform_real_distribution<double> u(0, 2 * std::numbers::pi), w(0, 1);
-  const double R = 1.0, a = 0.4;
-  std::vector<Point3> points;
-  while (points.size() < 10000) {
-    const double t = u(rng), v = u(rng);
-    if (w(rng) > (R + a * std::cos(v)) / (R + a)) continue;
-    points.push_back({(R + a * std::cos(v)) * std::cos(t), (R + a * std::cos(v)) * std::sin(t),
-                      a * std::sin(v)});
-  }
+  const auto points = testing::torus(10000, 1.0, 0.4, 2);
   const auto pivot = pivoting_ball_surface(points, 0.2);
   EXPECT_TRUE(pivot.manifold);
   EXPECT_EQ(pivot.euler_characteristic, 0);

@@ -5,40 +5,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
+#include <numbers>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/rolling_ball.hpp"
+#include "unit/geometry/sampled_shapes.hpp"
 
 namespace shockfield::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-std::vector<std::array<double, 3>> sphere(std::size_t n, double r, std::array<double, 3> c,
-                                          std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> g;
-  std::vector<std::array<double, 3>> p(n);
-  for (auto& x : p) {
-    const double a = g(rng), b = g(rng), z = g(rng), s = r / std::sqrt(a * a + b * b + z * z);
-    x = {c[0] + a * s, c[1] + b * s, c[2] + z * s};
-  }
-  return p;
-}
-
-// Uniform in area on the torus: accept the tube angle with probability (R + a cos v)/(R + a).
-std::vector<std::array<double, 3>> torus(std::size_t n, double R, double a, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 2 * kPi), w(0, 1);
-  std::vector<std::array<double, 3>> p;
-  while (p.size() < n) {
-    const double t = u(rng), v = u(rng);
-    if (w(rng) > (R + a * std::cos(v)) / (R + a)) continue;
-    p.push_back({(R + a * std::cos(v)) * std::cos(t), (R + a * std::cos(v)) * std::sin(t), a * std::sin(v)});
-  }
-  return p;
-}
+constexpr double kPi = std::numbers::pi;
+using testing::sphere;
+using testing::torus;
 
 TEST(RollingBall, SphereIsAClosedSphere) {
   const auto s = rolling_ball_surface(delaunay_division<3>(sphere(20000, 1.0, {0, 0, 0}, 1)), 0.3);
@@ -60,10 +38,7 @@ TEST(RollingBall, TorusHasEulerCharacteristicZero) {
 // Two unit spheres 0.6 apart: a ball of diameter 0.3 goes between them (two surfaces, χ = 4); a
 // ball of radius 2 bridges the gap (one surface, χ = 2).
 TEST(RollingBall, TwoSpheresSeparateOrMergeWithTheBallRadius) {
-  auto p = sphere(10000, 1.0, {-1.3, 0, 0}, 3);
-  const auto q = sphere(10000, 1.0, {1.3, 0, 0}, 4);
-  p.insert(p.end(), q.begin(), q.end());
-  const auto d = delaunay_division<3>(p);
+  const auto d = delaunay_division<3>(testing::two_spheres(10000, 0.6));
   const auto apart = rolling_ball_surface(d, 0.15);
   EXPECT_TRUE(apart.manifold);
   EXPECT_EQ(apart.euler_characteristic, 4);
