@@ -8,8 +8,13 @@ blanking array vtkGhostType carries a units attribute. Every .csv file: at most 
 its name is the one of the method's unit system (the method is read from the run folder's
 config.resolved.toml). The series.csv of a method listed in UNITS_IN_COLUMNS: every column
 carries its unit as a suffix (time_s, kinetic_J, signal_depth_m) or is a pure number listed in
-DIMENSIONLESS. Prints each violation with its file and exits 1 if there is any.
+DIMENSIONLESS. Every checkpoint.h5 (docs/checkpoints.md; read with h5py): the root attributes
+format, method (the run's), format_version, shockfield_version, git_commit, case (the text of the
+run's config.resolved.toml) and case_sha256 (its SHA-256); integer counters (step, format_version)
+stored as integers; a units attribute on every dataset. Prints each violation with its file and
+exits 1 if there is any.
 """
+import hashlib
 import pathlib
 import re
 import sys
@@ -61,6 +66,42 @@ def check_csv(path, method):
                 yield f"{path}: column '{c}' has no unit suffix (_{', _'.join(SI_UNITS)})"
 
 
+CHECKPOINT_ATTRIBUTES = ("format", "method", "format_version", "shockfield_version", "git_commit", "case",
+                         "case_sha256")
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def check_checkpoint(path, method):
+    import h5py  # Debian python3-h5py (scripts/install-deps.sh)
+    import numpy
+    with h5py.File(path, "r") as f:
+        attrs = f.attrs
+        for a in CHECKPOINT_ATTRIBUTES:
+            if a not in attrs:
+                yield f"{path}: no root attribute '{a}'"
+        if "format" in attrs and text(attrs["format"]) != "shockfield checkpoint":
+            yield f"{path}: format '{text(attrs['format'])}', expected 'shockfield checkpoint'"
+        for a in ("format_version", "step"):
+            if a in attrs and not numpy.issubdtype(numpy.asarray(attrs[a]).dtype, numpy.integer):
+                yield f"{path}: attribute '{a}' is not stored as an integer"
+        if "case" in attrs:
+            case = text(attrs["case"])
+            resolved = path.parent / "config.resolved.toml"
+            if resolved.exists() and case != resolved.read_text():
+                yield f"{path}: attribute 'case' is not the run's config.resolved.toml"
+            if "case_sha256" in attrs and hashlib.sha256(case.encode()).hexdigest() != text(attrs["case_sha256"]):
+                yield f"{path}: attribute 'case_sha256' is not the SHA-256 of 'case'"
+        # A variant of a method names itself after it: phasefield.sharp_front in a phasefield run.
+        if method and "method" in attrs and text(attrs["method"]).split(".")[0] != method:
+            yield f"{path}: method '{text(attrs['method'])}' in a {method} run"
+        for name, dataset in f.items():
+            if "units" not in dataset.attrs:
+                yield f"{path}: dataset '{name}' has no units attribute"
+
+
 def main():
     problems = []
     for run in map(pathlib.Path, sys.argv[1:]):
@@ -70,6 +111,8 @@ def main():
                 problems += check_vtk(path)
             elif path.suffix == ".csv":
                 problems += check_csv(path, method)
+            elif path.name == "checkpoint.h5":
+                problems += check_checkpoint(path, method)
     for p in problems:
         print(p)
     if problems:
