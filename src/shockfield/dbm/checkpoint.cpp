@@ -6,16 +6,10 @@
 #include "shockfield/io/checkpoint_file.hpp"
 
 namespace shockfield::dbm {
-namespace {
-
-// 2: self-describing (units, integer counters, the grid's shape).
-constexpr std::int64_t kFormatVersion = 2;
-
-}  // namespace
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters,
                       const std::vector<double>* reactant) {
-  io::CheckpointWriter h5(file, "dbm", kFormatVersion);
+  io::CheckpointWriter h5(file, "dbm", kCheckpointFormat);
   h5.set_count("step", sim.steps());
   h5.set_attribute("time", sim.time());
   h5.set_count("series", counters.series);
@@ -46,7 +40,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string name = file.string();
-  checkpoint.require("dbm", kFormatVersion);
+  checkpoint.require("dbm", kCheckpointFormat);
   std::vector<double> f = h5.read_doubles("f");
   if (f.size() != sim.f().size())
     throw InputError(fmt::format("{}: dataset 'f' has {} values, the case needs {} (a different grid or velocity model)",

@@ -6,15 +6,9 @@
 #include "shockfield/io/checkpoint_file.hpp"
 
 namespace shockfield::granular {
-namespace {
-
-// 2: checksummed (io/checkpoint_file); 3: the profiles counter; 4: self-describing (units, integer counters)
-constexpr std::int64_t kFormatVersion = 4;
-
-}  // namespace
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters) {
-  io::CheckpointWriter h5(file, "granular", kFormatVersion);
+  io::CheckpointWriter h5(file, "granular", kCheckpointFormat);
   h5.set_count("step", sim.step_count());
   h5.set_attribute("time", sim.time());
   h5.set_attribute("external_work", sim.thermo().external_work);
@@ -27,6 +21,11 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
   h5.write("velocity", "m/s", sim.velocity());
   h5.write("force", "N", sim.force());
   h5.write("contact_force", "N", sim.contact_force());
+  // The chain itself (fixed by the case), so that the file alone gives the grains' positions
+  // (depth + displacement, downwards) for `shockfield convert`.
+  h5.write("depth", "m", sim.chain().depth);
+  h5.write("radius", "m", sim.chain().radius);
+  h5.write("mass", "kg", sim.chain().mass);
   h5.commit();
 }
 
@@ -34,7 +33,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string f = file.string();
-  checkpoint.require("granular", kFormatVersion);
+  checkpoint.require("granular", kCheckpointFormat);
   try {
     sim.restore(h5.read_doubles("displacement"), h5.read_doubles("velocity"), h5.read_doubles("force"),
                 h5.read_doubles("contact_force"), checkpoint.count("step"),

@@ -164,6 +164,13 @@ std::string Hdf5File::units(const std::string& name) const {
   return read_string_attribute(set.get(), path_, name + "/units", "units", bytes_on_disk_);
 }
 
+bool Hdf5File::is_integer(const std::string& name) const {
+  Handle set(has(name) ? H5Dopen2(file_, name.c_str(), H5P_DEFAULT) : -1, H5Dclose);
+  Handle type(set.ok() ? H5Dget_type(set.get()) : -1, H5Tclose);
+  if (!type.ok()) throw InputError(fmt::format("{}: checkpoint has no dataset '{}'", path_, name));
+  return H5Tget_class(type.get()) == H5T_INTEGER;
+}
+
 std::vector<hsize_t> Hdf5File::shape(const std::string& name) const {
   Handle set(has(name) ? H5Dopen2(file_, name.c_str(), H5P_DEFAULT) : -1, H5Dclose);
   Handle space(set.ok() ? H5Dget_space(set.get()) : -1, H5Sclose);

@@ -33,6 +33,8 @@ class Hdf5File {
   bool has(const std::string& name) const;
   /// The dataset's `units` attribute; InputError naming the file and dataset when it has none.
   std::string units(const std::string& name) const;
+  /// Whether a dataset holds integers (read_ints) rather than reals.
+  bool is_integer(const std::string& name) const;
   /// The shape of a dataset (its dimensions, slowest first).
   std::vector<hsize_t> shape(const std::string& name) const;
   /// The datasets of the root group, in name order.

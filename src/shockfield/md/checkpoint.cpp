@@ -9,8 +9,6 @@
 namespace shockfield::md {
 namespace {
 
-// 2: self-describing (named datasets with units, integer counters).
-constexpr std::int64_t kFormatVersion = 2;
 
 std::vector<double> flatten(const std::vector<Vec3>& v, std::size_t n) {
   std::vector<double> out(3 * n);
@@ -38,7 +36,7 @@ void set_box(geometry::Box& b, const std::vector<double>& d) {
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const CheckpointPosition& where,
                       const CheckpointUnits& units) {
-  io::CheckpointWriter h5(file, units.method, kFormatVersion);
+  io::CheckpointWriter h5(file, units.method, kCheckpointFormat);
   const Atoms& a = sim.atoms;
   const std::size_t n = a.nlocal;
   const auto n3 = std::vector<hsize_t>{n, 3};
@@ -79,13 +77,13 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
 
 CheckpointPosition read_checkpoint_header(const std::filesystem::path& file, const std::string& method) {
   const io::CheckpointReader checkpoint(file);
-  checkpoint.require(method, kFormatVersion);
+  checkpoint.require(method, kCheckpointFormat);
   return {checkpoint.count("stage"), checkpoint.count("stage_step")};
 }
 
 void read_checkpoint(const std::filesystem::path& file, Simulation& sim, const std::string& method) {
   const io::CheckpointReader checkpoint(file);
-  checkpoint.require(method, kFormatVersion);
+  checkpoint.require(method, kCheckpointFormat);
   const io::Hdf5File& h5 = checkpoint.h5();
   Atoms& a = sim.atoms;
   const auto id = h5.read_ints("id");

@@ -5,6 +5,7 @@
 // forces in the identical order: bitwise restart with the same thread count), the fixes' state
 // and where in the stage list the run was. Written through
 // io/checkpoint_file: checksummed, verified, then renamed; read only after its checksum matches.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,6 +13,10 @@
 #include "shockfield/md/simulation.hpp"
 
 namespace shockfield::md {
+
+/// The layout (docs/checkpoints.md), md and macroparticle. 2: self-describing (named datasets with
+/// units, integer counters, type masses and names).
+inline constexpr std::int64_t kCheckpointFormat = 2;
 
 struct CheckpointPosition {
   std::int64_t stage = 0;        ///< index in the case's [[stage]] list

@@ -10,9 +10,6 @@
 namespace shockfield::mpm {
 namespace {
 
-// 2: damage added; 3: self-describing (one dataset per quantity with units, integer counters).
-constexpr std::int64_t kFormatVersion = 3;
-
 // The scalars of materials::PointState, one dataset each, in the layout of docs/checkpoints.md.
 struct ScalarField {
   const char* name;
@@ -67,7 +64,7 @@ std::string mass_units(int dim) { return dim == 3 ? "kg" : "kg/m"; }
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters,
                       const std::vector<double>& cavity_state) {
-  io::CheckpointWriter h5(file, "mpm", kFormatVersion);
+  io::CheckpointWriter h5(file, "mpm", kCheckpointFormat);
   const Particles& p = sim.particles();
   const std::size_t n = p.size();
   h5.set_count("step", sim.step_count());
@@ -107,7 +104,7 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
 OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, std::vector<double>& cavity_state) {
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
-  checkpoint.require("mpm", kFormatVersion);
+  checkpoint.require("mpm", kCheckpointFormat);
   Particles& p = sim.particles();
   const std::size_t n = p.size();
   unpack<3>(h5, "position", n, [&](std::size_t i, const double* d) { p.x[i] = Vec3(d); });

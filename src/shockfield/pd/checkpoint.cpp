@@ -8,8 +8,6 @@
 namespace shockfield::pd {
 namespace {
 
-// 2: self-describing (named datasets with units, integer counters).
-constexpr std::int64_t kFormatVersion = 2;
 
 std::vector<double> flatten(const std::vector<Vec3>& a) {
   std::vector<double> out;
@@ -31,7 +29,7 @@ std::vector<Vec3> unflatten(const std::vector<double>& d, std::size_t n, const s
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const std::vector<double>& model_state,
                       const OutputCounters& counters) {
-  io::CheckpointWriter h5(file, "pd", kFormatVersion);
+  io::CheckpointWriter h5(file, "pd", kCheckpointFormat);
   const hsize_t n = sim.cloud().size();
   h5.set_count("step", sim.step_count());
   h5.set_attribute("time", sim.time());
@@ -51,7 +49,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string f = file.string();
-  checkpoint.require("pd", kFormatVersion);
+  checkpoint.require("pd", kCheckpointFormat);
   const std::size_t n = sim.cloud().size();
   sim.restore(unflatten(h5.read_doubles("position"), n, "position", f),
               unflatten(h5.read_doubles("velocity"), n, "velocity", f),

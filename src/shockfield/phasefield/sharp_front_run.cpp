@@ -21,8 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// 2: self-describing (one dataset per domain quantity, integer counters and tracks).
-constexpr std::int64_t kFormatVersion = 2;
 
 void derive(const Config& root, const SharpFrontCase& c) {
   root.derive("steps", c.steps);
@@ -53,7 +51,7 @@ class SharpFrontMethod final : public Method {
   }
   void resume(RunContext& run) override {
     const io::CheckpointReader checkpoint(run.checkpoint);
-    checkpoint.require("phasefield.sharp_front", kFormatVersion);
+    checkpoint.require("phasefield.sharp_front", kSharpFrontCheckpointFormat);
     // One track, radius and centre per domain; every value checked before it is used (a
     // positive track number, a finite positive radius, a finite centre).
     const io::Hdf5File& h5 = checkpoint.h5();
@@ -95,7 +93,7 @@ class SharpFrontMethod final : public Method {
   std::int64_t steps_left() const override { return c_.steps - steps_; }
   std::int64_t checkpoint_every() const override { return c_.output.checkpoint_every; }
   void write_checkpoint(const fs::path& file) override {
-    io::CheckpointWriter h5(file, "phasefield.sharp_front", kFormatVersion);
+    io::CheckpointWriter h5(file, "phasefield.sharp_front", kSharpFrontCheckpointFormat);
     h5.set_count("step", steps_);
     h5.set_attribute("time", time());
     h5.set_count("series", counters_.series);
