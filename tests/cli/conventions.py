@@ -32,6 +32,33 @@ SI_UNITS = ("s", "J", "m", "N", "Pa", "K", "kg", "m_s", "kg_m3", "J_kg", "kg_m_s
 DIMENSIONLESS = {"step", "steps", "profile", "grain", "count"}
 
 
+# The extensive totals of the MPM and PD series (docs/conventions.md, "Per length and per area"):
+# a unit suffix, then in a 1D or 2D run the label of the missing dimensions.
+TOTAL_UNITS = ("kg", "kg_m_s", "J")
+PER_MISSING = {1: "_per_m2", 2: "_per_m", 3: ""}
+
+
+def dim_of(run):
+    resolved = run / "config.resolved.toml"
+    if resolved.exists():
+        m = re.search(r"^dim = (\d)", resolved.read_text(), re.M)
+        if m:
+            return int(m.group(1))
+    return 3
+
+
+def check_totals(path, header, dim):
+    per = PER_MISSING.get(dim, "")
+    for c in header:
+        base = c[: len(c) - len(per)] if per and c.endswith(per) else c
+        if not re.match(r"^(mass|momentum|kinetic|internal|total)", c):
+            continue
+        if not any(base.endswith("_" + u) for u in TOTAL_UNITS):
+            yield f"{path}: column '{c}' has no unit suffix (_{', _'.join(TOTAL_UNITS)})"
+        elif per and not c.endswith(per):
+            yield f"{path}: column '{c}' is a total of a {dim}D run; name it '{c}{per}'"
+
+
 def method_of(run):
     resolved = run / "config.resolved.toml"
     if resolved.exists():
@@ -50,7 +77,7 @@ def check_vtk(path):
             yield f"{path}: DataArray '{name}' has no units attribute"
 
 
-def check_csv(path, method):
+def check_csv(path, method, dim=3):
     with open(path) as f:
         header = f.readline().strip().split(",")
     times = [c for c in header if c in TIME_COLUMNS]
@@ -60,6 +87,8 @@ def check_csv(path, method):
         return  # the thermo table, LAMMPS's column names (docs/architecture.md)
     if times and method in TIME_NAME and times[0] != TIME_NAME[method]:
         yield f"{path}: time column '{times[0]}'; a {method} run names it '{TIME_NAME[method]}'"
+    if path.name == "series.csv" and method in ("mpm", "pd"):
+        yield from check_totals(path, header, dim)
     if path.name == "series.csv" and method in UNITS_IN_COLUMNS:
         for c in header:
             if c not in DIMENSIONLESS and not any(c.endswith("_" + u) for u in SI_UNITS):
@@ -110,7 +139,7 @@ def main():
             if path.suffix in (".vti", ".vtp"):
                 problems += check_vtk(path)
             elif path.suffix == ".csv":
-                problems += check_csv(path, method)
+                problems += check_csv(path, method, dim_of(run))
             elif path.name == "checkpoint.h5":
                 problems += check_checkpoint(path, method)
     for p in problems:

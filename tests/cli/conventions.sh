@@ -37,6 +37,15 @@ check "$WORK/broken_granular" > "$WORK/broken_granular.txt"
 [ $? -eq 1 ] || fail "the checker passed a granular series column without its unit"
 grep -qF "series.csv: column 'kinetic' has no unit suffix" "$WORK/broken_granular.txt" ||
   fail "the checker did not name the column without a unit: $(cat "$WORK/broken_granular.txt")"
+mkdir -p "$WORK/broken_pd"
+cp "$WORK/pd_tiny/config.resolved.toml" "$WORK/broken_pd/"
+printf "step,time_s,kinetic_energy,momentum_x_kg_m_s\n0,0,0,0\n" > "$WORK/broken_pd/series.csv"
+check "$WORK/broken_pd" > "$WORK/broken_pd.txt"
+[ $? -eq 1 ] || fail "the checker passed a 1D PD series without units or per-area labels"
+for p in "column 'kinetic_energy' has no unit suffix" \
+         "column 'momentum_x_kg_m_s' is a total of a 1D run; name it 'momentum_x_kg_m_s_per_m2'"; do
+  grep -qF "$p" "$WORK/broken_pd.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken_pd.txt"))"
+done
 check "$WORK/broken" > "$WORK/broken.txt"
 code=$?
 set -e
