@@ -6,9 +6,10 @@
 Every .vti/.vtp file: each DataArray but a vertex cell's connectivity and offsets and VTK's
 blanking array vtkGhostType carries a units attribute. Every .csv file: at most one time column (time, time_s, time_ps, Time), and
 its name is the one of the method's unit system (the method is read from the run folder's
-config.resolved.toml). The series.csv of a method listed in UNITS_IN_COLUMNS: every column
-carries its unit as a suffix (time_s, kinetic_J, signal_depth_m) or is a pure number listed in
-DIMENSIONLESS. Every checkpoint.h5 (docs/checkpoints.md; read with h5py): the root attributes
+config.resolved.toml). The series.csv of a method listed in UNITS_IN_COLUMNS (and its other
+files in UNITS_IN_FILES): every column carries its unit as a suffix (time_s, kinetic_J,
+signal_depth_m) or is a pure number listed in DIMENSIONLESS. The totals of the MPM and PD series:
+a unit suffix and, in 1D or 2D, the per-area or per-length label. Every checkpoint.h5 (docs/checkpoints.md; read with h5py): the root attributes
 format, method (the run's), format_version, shockfield_version, git_commit, case (the text of the
 run's config.resolved.toml) and case_sha256 (its SHA-256); integer counters (step, format_version)
 stored as integers; a units attribute on every dataset. Prints each violation with its file and
@@ -29,7 +30,9 @@ TIME_NAME = {"md": "time_ps", "mpm": "time_s", "pd": "time_s", "granular": "time
 # column names"); the others are listed there as not uniform yet.
 UNITS_IN_COLUMNS = {"granular"}
 SI_UNITS = ("s", "J", "m", "N", "Pa", "K", "kg", "m_s", "kg_m3", "J_kg", "kg_m_s")
-DIMENSIONLESS = {"step", "steps", "profile", "grain", "count"}
+DIMENSIONLESS = {"step", "steps", "profile", "grain", "count", "width_grains"}
+# The files of those methods that follow the rule besides series.csv.
+UNITS_IN_FILES = {"granular": {"series.csv", "probes.csv", "signal.csv", "energy_above.csv"}}
 
 
 # The extensive totals of the MPM and PD series (docs/conventions.md, "Per length and per area"):
@@ -89,7 +92,7 @@ def check_csv(path, method, dim=3):
         yield f"{path}: time column '{times[0]}'; a {method} run names it '{TIME_NAME[method]}'"
     if path.name == "series.csv" and method in ("mpm", "pd"):
         yield from check_totals(path, header, dim)
-    if path.name == "series.csv" and method in UNITS_IN_COLUMNS:
+    if path.name in UNITS_IN_FILES.get(method, {"series.csv"}) and method in UNITS_IN_COLUMNS:
         for c in header:
             if c not in DIMENSIONLESS and not any(c.endswith("_" + u) for u in SI_UNITS):
                 yield f"{path}: column '{c}' has no unit suffix (_{', _'.join(SI_UNITS)})"
