@@ -20,7 +20,8 @@ constexpr const char* kChecksum = "checksum";
 constexpr const char* kItems = "checksum_items";
 constexpr const char* kFormat = "shockfield checkpoint";
 
-// The resolved case of the running case (CheckpointCaseScope); one run per process.
+// The resolved case of the running case (CheckpointCaseScope): runs in one process follow each
+// other (hugoniot sweeps, Python) and nest their scopes; parallel sweeps are separate processes.
 std::string& current_case() {
   static std::string text;
   return text;
