@@ -55,6 +55,7 @@ def spacetime():
 
 
 DERIVED = {"speed": 1 / 6, "velocity": -1 / 4, "force": -1 / 12, "width": 1 / 3}
+COLUMN = {"velocity": "velocity_m_s", "force": "force_N", "width": "width_grains"}  # signal.csv
 # The column runs of run.sh, by impulse v0 [m/s]: the weakly nonlinear one and the sweep.
 SWEEP = {1e-4: "column_weak", 1e-3: "column_v0.001", 1e-2: "column_v0.01", 0.1: "column_v0.1",
          1.0: "column_strong", 5.0: "column_v5"}
@@ -65,12 +66,12 @@ def depth_fits(name):
     100 and 2400 as the C++ test fits them), and the fitted exponent and its standard error of
     each quantity against depth (least squares on the logarithms, docs/granular.md)."""
     d = read(name, "signal.csv")
-    speed = central_speed(d["time_s"], d["depth"])
-    keep = (d["position"] > 100) & (d["position"] < 2400)
-    z = d["depth"][keep]
+    speed = central_speed(d["time_s"], d["depth_m"])
+    keep = (d["grain"] > 100) & (d["grain"] < 2400)
+    z = d["depth_m"][keep]
     data, fits = {}, {}
     for q in DERIVED:
-        y = (speed if q == "speed" else d[q])[keep]
+        y = (speed if q == "speed" else d[COLUMN[q]])[keep]
         (p, c), cov = np.polyfit(np.log(z), np.log(y), 1, cov=True)
         data[q], fits[q] = y, (p, np.sqrt(cov[0, 0]), c)
     return z, data, fits
@@ -132,7 +133,7 @@ def backscatter():
     impurity = config["impurity"][0]["index"]
     mass = config["derived"]["grain_mass"]
     impulse_energy = 0.5 * mass * config["impulse"]["velocity"] ** 2
-    column = f"energy_above_{impurity - 5}"
+    column = f"energy_above_{impurity - 5}_J"
     ref = read("column_no_impurity", "energy_above.csv")
     fig, (a, b) = plt.subplots(1, 2, figsize=(10, 3.8))
     for run, label in (("column_light_impurity", "light impurity (m/10)"),
@@ -143,7 +144,7 @@ def backscatter():
         a.plot(d["time_s"] * 1e3, reflected, label=label)
         p = read(run, "probes.csv")
         ratio = resolved(run)["impurity"][0]["mass_ratio"]
-        kinetic = 0.5 * ratio * mass * p[f"velocity_{impurity}"] ** 2 / impulse_energy
+        kinetic = 0.5 * ratio * mass * p[f"velocity_{impurity}_m_s"] ** 2 / impulse_energy
         b.semilogy(p["time_s"] * 1e3, kinetic + 1e-12, label=label)
         after = d["time_s"] > 1.3e-3
         print(f"{run}: reflected energy after the echo {reflected[after].min():.4f} .. {reflected[after].max():.4f}"

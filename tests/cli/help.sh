@@ -3,7 +3,7 @@
 source "$(dirname "$0")/lib.bash"
 set -e
 "$SF" --help | grep -q "run" || fail "--help does not list run"
-for sub in run plot; do
+for sub in run plot convert; do
   "$SF" $sub --help > "$WORK/help.txt" || fail "$sub --help failed"
   [ "$(wc -l < "$WORK/help.txt")" -gt 5 ] || fail "$sub --help is too short"
 done
@@ -26,6 +26,8 @@ usage_error run "$WORK/does_not_exist.toml"
 usage_error run
 usage_error run "$ROOT/tests/cli/cases/tiny_cu.toml" -j minus-one
 usage_error analyze minkowski
+usage_error convert
+usage_error convert "$ROOT/tests/cli/cases/tiny_cu.toml" --format no-such-format
 usage_error no-such-subcommand
 usage_error
 "$SF" analyze --help > /dev/null || fail "analyze --help did not exit 0"

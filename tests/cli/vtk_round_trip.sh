@@ -105,9 +105,9 @@ row = probes[np.argmin(abs(probes["time_s"] - times["grains_2.vtp"]))]
 # The frame and the probe row due at 1e-4 s come from the same step (first at or past it).
 assert abs(row["time_s"] - times["grains_2.vtp"]) <= 1e-9 * times["grains_2.vtp"], (row["time_s"], times)
 for g in (0, 100, 199):  # "+ down" in the CSV, z up in the frame; the CSV holds 10 digits
-    assert np.isclose(vtp["velocity"][g, 2], -row[f"velocity_{g}"], rtol=1e-9, atol=1e-15), ("velocity", g)
-    assert np.isclose(vtp["contact_force"][g], row[f"force_{g}"], rtol=1e-9), ("force", g)
-    assert np.isclose(vtp["overlap"][g], row[f"overlap_{g}"], rtol=1e-9), ("overlap", g)
+    assert np.isclose(vtp["velocity"][g, 2], -row[f"velocity_{g}_m_s"], rtol=1e-9, atol=1e-15), ("velocity", g)
+    assert np.isclose(vtp["contact_force"][g], row[f"force_{g}_N"], rtol=1e-9), ("force", g)
+    assert np.isclose(vtp["overlap"][g], row[f"overlap_{g}_m"], rtol=1e-9), ("overlap", g)
 assert not vtp["velocity"][:, :2].any() and not vtp["points"][:, :2].any(), "the column is not on the z axis"
 assert np.all(np.diff(vtp["points"][:, 2]) < 0), "grain 0 is not on top"
 assert np.array_equal(vtp["grain"], np.arange(200)) and vtp["type"][100] == 2 and (vtp["type"] == 1).sum() == 199

@@ -17,6 +17,7 @@ void add_analyze_command(CLI::App& app);
 /// `analyze atoms`, attached to the analyze subcommand by add_analyze_command.
 void add_analyze_atoms_command(CLI::App& analyze);
 void add_hugoniot_command(CLI::App& app);
+void add_convert_command(CLI::App& app);
 void add_analyze_geometry_command(CLI::App& analyze);
 /// What `shockfield --version` prints: version, git commit, compiler and library versions.
 std::string version_text();

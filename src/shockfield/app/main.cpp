@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
       "Simulate with molecular dynamics (md), the material point method (mpm), peridynamics (pd);\n"
       "analyse the fields, atoms and point sets that come out (analyze); sweep shock Hugoniots\n"
       "(hugoniot); run a case for several values of its keys (sweep); carry what one scale measured\n"
-      "to the next as a material file (bridge). `--version` names the build.\n"
+      "to the next as a material file (bridge); turn a run's checkpoint into a LAMMPS data file or\n"
+      "VTK file (convert). `--version` names the build.\n"
       "Run `shockfield SUBCOMMAND --help` for each subcommand's options.",
       "shockfield"};
   app.require_subcommand(1);
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
   shockfield::app::add_hugoniot_command(app);
   shockfield::app::add_analyze_command(app);
   shockfield::app::add_sweep_command(app);
+  shockfield::app::add_convert_command(app);
   shockfield::app::add_bridge_command(app, std::vector<std::string>(argv, argv + argc));
   try {
     app.parse(argc, argv);

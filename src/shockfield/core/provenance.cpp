@@ -42,11 +42,14 @@ std::string shell_command_line(const std::vector<std::string>& argv) {
   return out;
 }
 
+std::string shockfield_version() { return SHOCKFIELD_VERSION; }
+std::string shockfield_git_commit() { return SHOCKFIELD_GIT_COMMIT; }
+
 Provenance collect_provenance(const std::vector<std::string>& command_line,
                               const std::vector<std::filesystem::path>& input_files) {
   Provenance p;
-  p.version = SHOCKFIELD_VERSION;
-  p.git_commit = SHOCKFIELD_GIT_COMMIT;
+  p.version = shockfield_version();
+  p.git_commit = shockfield_git_commit();
   p.build_type = SHOCKFIELD_BUILD_TYPE;
   p.compiler = fmt::format("{} {}",
 #if defined(__clang__)

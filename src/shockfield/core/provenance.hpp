@@ -30,6 +30,10 @@ struct Provenance {
 Provenance collect_provenance(const std::vector<std::string>& command_line,
                               const std::vector<std::filesystem::path>& input_files);
 
+/// This build's version and the git commit CMake saw at configure time (as in Provenance).
+std::string shockfield_version();
+std::string shockfield_git_commit();
+
 /// The current time as ISO 8601 UTC to the second, e.g. "2026-12-01T20:50:07Z".
 std::string iso8601_utc_now();
 

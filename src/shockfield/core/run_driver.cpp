@@ -18,6 +18,7 @@
 #include "shockfield/core/run_session.hpp"
 #include "shockfield/core/run_summary.hpp"
 #include "shockfield/core/run_thermo.hpp"
+#include "shockfield/io/checkpoint_file.hpp"
 
 namespace shockfield {
 
@@ -124,6 +125,7 @@ void run_method(const Config& root, const RunOptions& options, const MethodFacto
   Provenance provenance = collect_provenance(options.command_line, root.input_files());
   if (options.resume) check_resume_inputs(options, provenance);
   root.set_provenance(provenance_toml(provenance));
+  const io::CheckpointCaseScope checkpoint_case(root.resolved_toml());
   RunSession session = open_run_session(root, options, m.name(), m.size_text(), provenance_lines(provenance),
                                         !changes.empty());
   RunContext run{session.folder, session.checkpoint, session.log, options};

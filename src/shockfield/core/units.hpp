@@ -25,4 +25,15 @@ inline constexpr double boltz = 1.380649e-23;     ///< Boltzmann constant, J/K (
 inline constexpr double hbar = 1.054571817e-34;   ///< reduced Planck constant, J·s (exact)
 inline constexpr double angstrom = 1e-10;         ///< m
 
+/// A model in dim < 3 dimensions stands for a slab (2D: per metre of thickness) or a bar (1D: per
+/// square metre of cross-section), its points' volumes ΔX^dim: its extensive totals (mass,
+/// momentum, energy) are per unit of the missing dimensions. The suffix a CSV column name carries
+/// after its unit (`kinetic_J_per_m`), and the words a log line adds after the unit.
+inline constexpr const char* per_missing_dimensions_column(int dim) {
+  return dim >= 3 ? "" : dim == 2 ? "_per_m" : "_per_m2";
+}
+inline constexpr const char* per_missing_dimensions_text(int dim) {
+  return dim >= 3 ? "" : dim == 2 ? " per m of thickness" : " per m2 of cross-section";
+}
+
 }  // namespace shockfield::units::si

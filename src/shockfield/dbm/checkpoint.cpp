@@ -6,24 +6,33 @@
 #include "shockfield/io/checkpoint_file.hpp"
 
 namespace shockfield::dbm {
-namespace {
-
-constexpr double kFormatVersion = 1;
-
-}  // namespace
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters,
                       const std::vector<double>* reactant) {
-  io::CheckpointWriter h5(file);
-  h5.set_attribute("format_version", kFormatVersion);
-  h5.set_attribute("step", static_cast<double>(sim.steps()));
+  io::CheckpointWriter h5(file, "dbm", kCheckpointFormat);
+  h5.set_count("step", sim.steps());
   h5.set_attribute("time", sim.time());
-  h5.set_attribute("series", static_cast<double>(counters.series));
-  h5.set_attribute("profiles", static_cast<double>(counters.profiles));
-  h5.set_attribute("fields", static_cast<double>(counters.fields));
-  const std::vector<double>& f = sim.f();
-  h5.write("f", f, {static_cast<hsize_t>(sim.model().size()), f.size() / static_cast<std::size_t>(sim.model().size())});
-  if (reactant) h5.write("reactant", *reactant, {static_cast<hsize_t>(reactant->size())});
+  h5.set_count("series", counters.series);
+  h5.set_count("profiles", counters.profiles);
+  h5.set_count("fields", counters.fields);
+  // The lattice (lattice.hpp): f_k on (ny + 2g) × (nx + 2g) cells, g ghost layers on every side,
+  // cell (i, j) of the interior at [k][j + g][i + g]; model units throughout.
+  const Lattice& lattice = sim.lattice();
+  h5.set_count("nx", lattice.nx);
+  h5.set_count("ny", lattice.ny);
+  h5.set_count("ghosts", Lattice::ghosts);
+  h5.set_attribute("dx", lattice.dx);
+  h5.set_attribute("dy", lattice.dy);
+  h5.set_attribute("b", sim.b());
+  const VelocityModel& model = sim.model();
+  h5.set_attribute("velocity_model", model.name);
+  h5.write("velocity_x", "1", model.vx);
+  h5.write("velocity_y", "1", model.vy);
+  h5.write("eta", "1", model.eta);
+  const auto rows = static_cast<hsize_t>(lattice.ny + 2 * Lattice::ghosts);
+  const auto columns = static_cast<hsize_t>(lattice.stride());
+  h5.write("f", "1", sim.f(), {static_cast<hsize_t>(model.size()), rows, columns});
+  if (reactant) h5.write("reactant", "1", *reactant, {rows, columns});
   h5.commit();
 }
 
@@ -31,7 +40,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string name = file.string();
-  checkpoint.require_format(kFormatVersion);
+  checkpoint.require("dbm", kCheckpointFormat);
   std::vector<double> f = h5.read_doubles("f");
   if (f.size() != sim.f().size())
     throw InputError(fmt::format("{}: dataset 'f' has {} values, the case needs {} (a different grid or velocity model)",

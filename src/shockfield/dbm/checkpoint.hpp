@@ -10,6 +10,10 @@
 
 namespace shockfield::dbm {
 
+/// The layout (docs/checkpoints.md). 2: self-describing (units, integer counters, the lattice's
+/// shape and the velocity model).
+inline constexpr std::int64_t kCheckpointFormat = 2;
+
 /// How far the driver's output schedule had got.
 struct OutputCounters {
   std::int64_t series = 0;    ///< series rows written (row k at k·series_interval)

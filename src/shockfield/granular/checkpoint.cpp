@@ -6,28 +6,26 @@
 #include "shockfield/io/checkpoint_file.hpp"
 
 namespace shockfield::granular {
-namespace {
-
-constexpr double kFormatVersion = 3;  // 2: checksummed (io/checkpoint_file); 3: the profiles counter
-
-}  // namespace
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const OutputCounters& counters) {
-  io::CheckpointWriter h5(file);
-  h5.set_attribute("format_version", kFormatVersion);
-  h5.set_attribute("method", "granular");
-  h5.set_attribute("step", static_cast<double>(sim.step_count()));
+  io::CheckpointWriter h5(file, "granular", kCheckpointFormat);
+  h5.set_count("step", sim.step_count());
   h5.set_attribute("time", sim.time());
   h5.set_attribute("external_work", sim.thermo().external_work);
-  h5.set_attribute("series", static_cast<double>(counters.series));
-  h5.set_attribute("probes", static_cast<double>(counters.probes));
-  h5.set_attribute("spacetime", static_cast<double>(counters.spacetime));
-  h5.set_attribute("signal", static_cast<double>(counters.signal));
-  h5.set_attribute("profiles", static_cast<double>(counters.profiles));
-  h5.write("displacement", sim.displacement());
-  h5.write("velocity", sim.velocity());
-  h5.write("force", sim.force());
-  h5.write("contact_force", sim.contact_force());
+  h5.set_count("series", counters.series);
+  h5.set_count("probes", counters.probes);
+  h5.set_count("spacetime", counters.spacetime);
+  h5.set_count("signal", counters.signal);
+  h5.set_count("profiles", counters.profiles);
+  h5.write("displacement", "m", sim.displacement());
+  h5.write("velocity", "m/s", sim.velocity());
+  h5.write("force", "N", sim.force());
+  h5.write("contact_force", "N", sim.contact_force());
+  // The chain itself (fixed by the case), so that the file alone gives the grains' positions
+  // (depth + displacement, downwards) for `shockfield convert`.
+  h5.write("depth", "m", sim.chain().depth);
+  h5.write("radius", "m", sim.chain().radius);
+  h5.write("mass", "kg", sim.chain().mass);
   h5.commit();
 }
 
@@ -35,8 +33,7 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string f = file.string();
-  if (h5.attribute("format_version") != kFormatVersion || h5.string_attribute("method") != "granular")
-    throw InputError(fmt::format("{}: not a granular checkpoint of format {}", f, kFormatVersion));
+  checkpoint.require("granular", kCheckpointFormat);
   try {
     sim.restore(h5.read_doubles("displacement"), h5.read_doubles("velocity"), h5.read_doubles("force"),
                 h5.read_doubles("contact_force"), checkpoint.count("step"),

@@ -10,6 +10,10 @@
 
 namespace shockfield::granular {
 
+/// The layout (docs/checkpoints.md). 2: checksummed (io/checkpoint_file); 3: the profiles counter;
+/// 4: self-describing (units, integer counters, the chain's depth, radius and mass).
+inline constexpr std::int64_t kCheckpointFormat = 4;
+
 /// How far the output schedule had got.
 struct OutputCounters {
   std::int64_t series = 0;     ///< thermo rows written

@@ -10,9 +10,11 @@
 namespace shockfield::granular {
 namespace {
 
-std::vector<std::string> grain_columns(const std::vector<std::size_t>& grains, const char* prefix) {
+// "time_s", then "<prefix>_<g><suffix>" per grain g (suffix: the unit, "_J", or none).
+std::vector<std::string> grain_columns(const std::vector<std::size_t>& grains, const char* prefix,
+                                       const char* suffix = "") {
   std::vector<std::string> out{"time_s"};
-  for (std::size_t g : grains) out.push_back(fmt::format("{}_{}", prefix, g));
+  for (std::size_t g : grains) out.push_back(fmt::format("{}_{}{}", prefix, g, suffix));
   return out;
 }
 
@@ -70,11 +72,11 @@ RunOutputs::RunOutputs(const std::filesystem::path& folder, const GranularCase& 
                                  io::step_digits(last_step), resume_from);
   series_ = io::CsvWriter(folder / "series.csv", thermo_columns(), resume_from);
   if (!spec_.energy_above.empty())
-    energy_above_ = io::CsvWriter(folder / "energy_above.csv", grain_columns(spec_.energy_above, "energy_above"), resume_from);
+    energy_above_ = io::CsvWriter(folder / "energy_above.csv", grain_columns(spec_.energy_above, "energy_above", "_J"), resume_from);
   if (!spec_.probes.empty()) {
     std::vector<std::string> cols{"time_s"};
     for (std::size_t g : spec_.probes)
-      for (const char* q : {"velocity", "force", "overlap"}) cols.push_back(fmt::format("{}_{}", q, g));
+      for (const char* q : {"velocity_{}_m_s", "force_{}_N", "overlap_{}_m"}) cols.push_back(fmt::format(fmt::runtime(q), g));
     probes_ = io::CsvWriter(folder / "probes.csv", cols, resume_from);
   }
   if (spec_.schedule.field_interval > 0) {
@@ -83,7 +85,7 @@ RunOutputs::RunOutputs(const std::filesystem::path& folder, const GranularCase& 
     velocity_field_ = io::CsvWriter(folder / "spacetime_velocity.csv", grain_columns(field_grains_, "velocity"), resume_from);
   }
   if (spec_.signal_interval > 0)
-    signal_ = io::CsvWriter(folder / "signal.csv", {"time_s", "position", "depth", "velocity", "force", "width"}, resume_from);
+    signal_ = io::CsvWriter(folder / "signal.csv", {"time_s", "grain", "depth_m", "velocity_m_s", "force_N", "width_grains"}, resume_from);
 }
 
 void RunOutputs::write_due(const Simulation& sim, OutputCounters& n) {

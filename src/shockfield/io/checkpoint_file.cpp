@@ -9,6 +9,8 @@
 #include <string_view>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/provenance.hpp"
+#include "shockfield/core/sha256.hpp"
 #include "shockfield/io/checked_file.hpp"
 
 namespace shockfield::io {
@@ -16,6 +18,14 @@ namespace {
 
 constexpr const char* kChecksum = "checksum";
 constexpr const char* kItems = "checksum_items";
+constexpr const char* kFormat = "shockfield checkpoint";
+
+// The resolved case of the running case (CheckpointCaseScope): runs in one process follow each
+// other (hugoniot sweeps, Python) and nest their scopes; parallel sweeps are separate processes.
+std::string& current_case() {
+  static std::string text;
+  return text;
+}
 
 // The whole-file checksum: a trailer after the HDF5 image, "<tag><16 hex digits>\n", the FNV-1a
 // hash of every byte before it. It is checked before libhdf5 parses anything: HDF5 trusts its own
@@ -83,8 +93,14 @@ std::string recompute(const Hdf5File& h5) {
     if (kind == 'f') {
       const double v = h5.attribute(name);
       sum.add(kind, name, &v, sizeof v);
+    } else if (kind == 'n') {
+      const std::int64_t v = h5.int_attribute(name);
+      sum.add(kind, name, &v, sizeof v);
     } else if (kind == 's') {
       const std::string v = h5.string_attribute(name);
+      sum.add(kind, name, v.data(), v.size());
+    } else if (kind == 'u') {
+      const std::string v = h5.units(name);
       sum.add(kind, name, v.data(), v.size());
     } else if (kind == 'd') {
       const auto v = h5.read_doubles(name);
@@ -131,8 +147,21 @@ void PayloadChecksum::add(char kind, const std::string& name, const void* data, 
 
 std::string PayloadChecksum::hex() const { return fmt::format("{:016x}", hash_); }
 
-CheckpointWriter::CheckpointWriter(std::filesystem::path file)
-    : file_(std::move(file)), h5_(file_, Hdf5File::Mode::memory) {}
+CheckpointCaseScope::CheckpointCaseScope(std::string resolved_case) : previous_(std::move(current_case())) {
+  current_case() = std::move(resolved_case);
+}
+CheckpointCaseScope::~CheckpointCaseScope() { current_case() = std::move(previous_); }
+
+CheckpointWriter::CheckpointWriter(std::filesystem::path file, const std::string& method, std::int64_t format_version)
+    : file_(std::move(file)), h5_(file_, Hdf5File::Mode::memory) {
+  set_attribute("format", std::string(kFormat));
+  set_attribute("method", method);
+  set_count("format_version", format_version);
+  set_attribute("shockfield_version", shockfield_version());
+  set_attribute("git_commit", shockfield_git_commit());
+  set_attribute("case", current_case());
+  set_attribute("case_sha256", sha256_hex(current_case()));
+}
 
 void CheckpointWriter::set_attribute(const std::string& name, double value) {
   h5_.set_attribute(name, value);
@@ -144,15 +173,23 @@ void CheckpointWriter::set_attribute(const std::string& name, const std::string&
   sum_.add('s', name, value.data(), value.size());
 }
 
-void CheckpointWriter::write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> shape) {
-  h5_.write(name, data, std::move(shape));
-  sum_.add('d', name, data.data(), data.size() * sizeof(double));
+void CheckpointWriter::set_count(const std::string& name, std::int64_t value) {
+  h5_.set_int_attribute(name, value);
+  sum_.add('n', name, &value, sizeof value);
 }
 
-void CheckpointWriter::write(const std::string& name, const std::vector<std::int64_t>& data,
+void CheckpointWriter::write(const std::string& name, const std::string& units, const std::vector<double>& data,
                              std::vector<hsize_t> shape) {
-  h5_.write(name, data, std::move(shape));
+  h5_.write(name, data, std::move(shape), units);
+  sum_.add('d', name, data.data(), data.size() * sizeof(double));
+  sum_.add('u', name, units.data(), units.size());
+}
+
+void CheckpointWriter::write(const std::string& name, const std::string& units, const std::vector<std::int64_t>& data,
+                             std::vector<hsize_t> shape) {
+  h5_.write(name, data, std::move(shape), units);
   sum_.add('i', name, data.data(), data.size() * sizeof(std::int64_t));
+  sum_.add('u', name, units.data(), units.size());
 }
 
 void CheckpointWriter::commit() {
@@ -184,18 +221,30 @@ void CheckpointWriter::commit() {
 CheckpointReader::CheckpointReader(const std::filesystem::path& file) : h5_(open_checkpoint(file)) { verify(h5_); }
 
 std::int64_t CheckpointReader::count(const std::string& name) const {
-  constexpr double kExact = 9007199254740992.0;  // 2^53
-  const double v = h5_.attribute(name);
-  if (!(v >= 0 && v <= kExact) || v != std::floor(v))
-    throw InputError(fmt::format("{}: attribute '{}' = {} is not a count (a whole number in [0, 2^53])", h5_.path(),
-                                 name, v));
-  return static_cast<std::int64_t>(v);
+  const std::int64_t v = h5_.int_attribute(name);
+  if (v < 0) throw InputError(fmt::format("{}: attribute '{}' = {} is not a count (negative)", h5_.path(), name, v));
+  return v;
 }
 
-void CheckpointReader::require_format(double version) const {
-  const double found = h5_.attribute("format_version");
-  if (found != version)
-    throw InputError(fmt::format("{}: checkpoint format {} is not the supported {}", h5_.path(), found, version));
+std::string CheckpointReader::method() const {
+  return h5_.has_attribute("method") ? h5_.string_attribute("method") : std::string();
+}
+
+void CheckpointReader::require(const std::string& method, std::int64_t version) const {
+  const std::string found = this->method();
+  if (!found.empty() && found != method)
+    throw InputError(fmt::format("{}: a {} checkpoint, not a {} one", h5_.path(), found, method));
+  const double stored = h5_.has_attribute("format_version") ? h5_.attribute("format_version") : 0;
+  const bool described = h5_.has_attribute("format") && h5_.string_attribute("format") == kFormat;
+  if (described && stored == static_cast<double>(version)) return;
+  if (!described || stored < static_cast<double>(version))
+    throw InputError(fmt::format("{}: {} checkpoint format {} is older than the supported {} (written before "
+                                 "self-describing checkpoints, docs/checkpoints.md); resume it with the shockfield "
+                                 "that wrote it, or start a new run",
+                                 h5_.path(), method, stored, version));
+  throw InputError(fmt::format("{}: {} checkpoint format {} is newer than the supported {}; use the shockfield that "
+                               "wrote it",
+                               h5_.path(), method, stored, version));
 }
 
 }  // namespace shockfield::io

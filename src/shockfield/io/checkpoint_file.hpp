@@ -13,6 +13,12 @@
 //          checksum verified before anything is used; a truncated or damaged checkpoint (or
 //          one written without checksums) is refused by name with InputError (exit 2), never
 //          read as zeros.
+//
+// Self-description (docs/checkpoints.md): the writer stores on the root group `format`
+// ("shockfield checkpoint"), `method`, `format_version` (an integer, one sequence per method),
+// `shockfield_version`, `git_commit`, the resolved case of the run that wrote it (`case`, the
+// text of its config.resolved.toml) and `case_sha256`; every dataset is one named quantity with
+// a `units` attribute; counters (steps, rows written, ids) are integers.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -36,13 +42,34 @@ class PayloadChecksum {
   std::string items_;                             // "<kind> <name>\n" per item, in order
 };
 
+/// The resolved case text stored in every checkpoint written while a CheckpointCaseScope is alive
+/// (the run driver holds one for the run). Outside one (unit tests) the `case` attribute is empty.
+class CheckpointCaseScope {
+ public:
+  explicit CheckpointCaseScope(std::string resolved_case);
+  ~CheckpointCaseScope();
+  CheckpointCaseScope(const CheckpointCaseScope&) = delete;
+  CheckpointCaseScope& operator=(const CheckpointCaseScope&) = delete;
+
+ private:
+  std::string previous_;
+};
+
 class CheckpointWriter {
  public:
-  explicit CheckpointWriter(std::filesystem::path file);
+  /// Starts a checkpoint of `method` in its layout `format_version` (the self-describing
+  /// attributes above are written here).
+  CheckpointWriter(std::filesystem::path file, const std::string& method, std::int64_t format_version);
+  /// A real-valued attribute (a time, a time step, an accumulated energy).
   void set_attribute(const std::string& name, double value);
   void set_attribute(const std::string& name, const std::string& value);
-  void write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> shape = {});
-  void write(const std::string& name, const std::vector<std::int64_t>& data, std::vector<hsize_t> shape = {});
+  /// An integer attribute: a step, a number of rows or frames written, an index.
+  void set_count(const std::string& name, std::int64_t value);
+  /// One named quantity and its unit ("m", "m/s", "Pa", "1" for a pure number or a model unit).
+  void write(const std::string& name, const std::string& units, const std::vector<double>& data,
+             std::vector<hsize_t> shape = {});
+  void write(const std::string& name, const std::string& units, const std::vector<std::int64_t>& data,
+             std::vector<hsize_t> shape = {});
   /// Writes, verifies and renames (see the top of this file). Nothing reaches `file` before.
   void commit();
 
@@ -57,12 +84,14 @@ class CheckpointReader {
   /// Opens `file` and verifies its checksum; InputError naming the file when it does not match.
   explicit CheckpointReader(const std::filesystem::path& file);
   const Hdf5File& h5() const { return h5_; }
-  /// A step or row count stored as a double attribute: a whole number in [0, 2^53] (the
-  /// doubles that convert to an integer exactly), else InputError naming the file and the
-  /// attribute — never an unclamped cast of NaN or 1e300.
+  /// A step or row count: an integer attribute ≥ 0, else InputError naming the file and the
+  /// attribute.
   std::int64_t count(const std::string& name) const;
-  /// InputError naming the file unless its `format_version` attribute is `version`.
-  void require_format(double version) const;
+  /// The `method` attribute ("" for a checkpoint older than self-describing ones).
+  std::string method() const;
+  /// InputError naming the file unless it is a checkpoint of `method` in layout `version`; an
+  /// older layout is named with its version and what to do.
+  void require(const std::string& method, std::int64_t version) const;
 
  private:
   Hdf5File h5_;

@@ -1,6 +1,7 @@
 #pragma once
 // Minimal RAII wrapper over the HDF5 C API for checkpoints: flat datasets of doubles and 64-bit
-// integers with a shape, and scalar attributes on the root group. Every H5* return code is
+// integers with a shape and an optional `units` string attribute, and scalar attributes (double,
+// 64-bit integer, string) on the root group. Every H5* return code is
 // tested: a failed write or close throws RunError, a failed read InputError, each naming the
 // file. Checkpoints are built in memory (Mode::memory) and written to disk by
 // io/checkpoint_file with checked POSIX calls, so libhdf5 itself never meets a full disk.
@@ -22,16 +23,31 @@ class Hdf5File {
   Hdf5File(const Hdf5File&) = delete;
   Hdf5File& operator=(const Hdf5File&) = delete;
 
-  void write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> shape = {});
-  void write(const std::string& name, const std::vector<std::int64_t>& data, std::vector<hsize_t> shape = {});
+  /// `units` non-empty: stored as the dataset's string attribute `units`.
+  void write(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> shape = {},
+             const std::string& units = "");
+  void write(const std::string& name, const std::vector<std::int64_t>& data, std::vector<hsize_t> shape = {},
+             const std::string& units = "");
   std::vector<double> read_doubles(const std::string& name) const;
   std::vector<std::int64_t> read_ints(const std::string& name) const;
   bool has(const std::string& name) const;
+  /// The dataset's `units` attribute; InputError naming the file and dataset when it has none.
+  std::string units(const std::string& name) const;
+  /// Whether a dataset holds integers (read_ints) rather than reals.
+  bool is_integer(const std::string& name) const;
+  /// The shape of a dataset (its dimensions, slowest first).
+  std::vector<hsize_t> shape(const std::string& name) const;
+  /// The datasets of the root group, in name order.
+  std::vector<std::string> dataset_names() const;
 
   void set_attribute(const std::string& name, double value);
   void set_attribute(const std::string& name, const std::string& value);
+  void set_int_attribute(const std::string& name, std::int64_t value);
   bool has_attribute(const std::string& name) const;
+  /// A numeric attribute as a double (an integer one converted).
   double attribute(const std::string& name) const;
+  /// An attribute stored as an integer; InputError when it is stored as a real or a string.
+  std::int64_t int_attribute(const std::string& name) const;
   std::string string_attribute(const std::string& name) const;
 
   /// The bytes of the whole file as it would be on disk (flushed first).

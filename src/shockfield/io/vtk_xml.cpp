@@ -154,7 +154,7 @@ void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkForm
 }
 
 void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz, const std::vector<VtkArray>& point_data,
-               VtkFormat format) {
+               VtkFormat format, const std::string& position_units) {
   const std::size_t n = xyz.size() / 3;
   std::ostringstream out;
   ArrayWriter arrays(out, format);
@@ -166,7 +166,7 @@ void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz
       << "      <PointData>\n";
   for (const VtkArray& a : point_data) arrays.data(a);
   out << "      </PointData>\n      <Points>\n";
-  arrays.reals("points", 3, xyz, "m");
+  arrays.reals("points", 3, xyz, position_units);
   out << "      </Points>\n      <Verts>\n";
   // One vertex cell per point: connectivity 0..n-1, offsets 1..n.
   std::vector<std::int64_t> conn(n), offs(n);

@@ -63,9 +63,10 @@ struct VtkImage {
 };
 
 void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkFormat format);
-/// Points (x, y, z interleaved) with one vertex cell each, so every ParaView representation shows them.
+/// Points (x, y, z interleaved, in `position_units`) with one vertex cell each, so every ParaView
+/// representation shows them.
 void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz, const std::vector<VtkArray>& point_data,
-               VtkFormat format);
+               VtkFormat format, const std::string& position_units = "m");
 
 /// RFC 4648 base64 of `size` bytes.
 std::string base64(const unsigned char* data, std::size_t size);

@@ -16,6 +16,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The rod runs in the MD engine's reduced units (reduced_units.hpp): its checkpoint says so.
+const md::CheckpointUnits kCheckpointUnits{"macroparticle", "reduced (macroparticle/reduced_units.hpp)", "1", "1", "1",
+                                           "1"};
+
 class MacroparticleMethod final : public Method {
   // md's health check (non-finite values, a particle faster than the neighbour skin allows) runs
   // every kHealthEvery steps and on the last one.
@@ -36,7 +40,7 @@ class MacroparticleMethod final : public Method {
     write_outputs();
   }
   void resume(RunContext& run) override {
-    md::read_checkpoint(run.checkpoint, rod_.sim());
+    md::read_checkpoint(run.checkpoint, rod_.sim(), kCheckpointUnits.method);
     open(run, rod_.sim().step);
   }
   bool finished() const override { return rod_.sim().step >= c_.steps; }
@@ -49,7 +53,9 @@ class MacroparticleMethod final : public Method {
   std::string position() const override { return fmt::format(" (t = {} s)", rod_.sim().time * rod_.units().time()); }
   std::int64_t steps_left() const override { return c_.steps - rod_.sim().step; }
   std::int64_t checkpoint_every() const override { return c_.output.checkpoint_every; }
-  void write_checkpoint(const fs::path& file) override { md::write_checkpoint(file, rod_.sim(), {0, rod_.sim().step}); }
+  void write_checkpoint(const fs::path& file) override {
+    md::write_checkpoint(file, rod_.sim(), {0, rod_.sim().step}, kCheckpointUnits);
+  }
   void log_results(double steps_per_second) override {
     const RodMeasures m = rod_.measure();
     log_->info("finished: t = {} s after {} steps ({:.3g} particle-steps/s); strain {:.6g}, stress {:.6g} Pa, "

@@ -9,7 +9,6 @@
 namespace shockfield::md {
 namespace {
 
-constexpr double kFormatVersion = 1;
 
 std::vector<double> flatten(const std::vector<Vec3>& v, std::size_t n) {
   std::vector<double> out(3 * n);
@@ -35,50 +34,56 @@ void set_box(geometry::Box& b, const std::vector<double>& d) {
 
 }  // namespace
 
-void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const CheckpointPosition& where) {
-  io::CheckpointWriter h5(file);
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const CheckpointPosition& where,
+                      const CheckpointUnits& units) {
+  io::CheckpointWriter h5(file, units.method, kCheckpointFormat);
   const Atoms& a = sim.atoms;
   const std::size_t n = a.nlocal;
   const auto n3 = std::vector<hsize_t>{n, 3};
-  h5.set_attribute("format_version", kFormatVersion);
-  h5.set_attribute("step", static_cast<double>(sim.step));
+  h5.set_count("step", sim.step);
   h5.set_attribute("time", sim.time);
-  h5.set_attribute("neighbor_rebuilds", static_cast<double>(sim.rebuilds));
-  h5.set_attribute("steps_since_rebuild", static_cast<double>(sim.steps_since_rebuild));
-  h5.set_attribute("stage", static_cast<double>(where.stage));
-  h5.set_attribute("stage_step", static_cast<double>(where.stage_step));
+  h5.set_attribute("units", units.system);
+  h5.set_count("neighbor_rebuilds", sim.rebuilds);
+  h5.set_count("steps_since_rebuild", sim.steps_since_rebuild);
+  h5.set_count("stage", where.stage);
+  h5.set_count("stage_step", where.stage_step);
   h5.set_attribute("boundary", sim.box.boundary_codes());
-  h5.write("x", flatten(a.x, n), n3);
-  h5.write("v", flatten(a.v, n), n3);
-  h5.write("f", flatten(a.f, n), n3);
-  h5.write("x_rebuild", flatten(sim.positions_at_rebuild(), n), n3);
+  h5.write("position", units.length, flatten(a.x, n), n3);
+  h5.write("velocity", units.velocity, flatten(a.v, n), n3);
+  h5.write("force", units.force, flatten(a.f, n), n3);
+  h5.write("position_at_rebuild", units.length, flatten(sim.positions_at_rebuild(), n), n3);
   std::vector<std::int64_t> image(3 * n), type(n), mask(n);
   for (std::size_t i = 0; i < n; ++i) {
     for (int d = 0; d < 3; ++d) image[3 * i + d] = a.image[i][d];
     type[i] = a.type[i];
     mask[i] = a.mask[i];
   }
-  h5.write("image", image, n3);
-  h5.write("id", a.id);
-  h5.write("type", type);
-  h5.write("mask", mask);
-  h5.write("box", box_data(sim.box));
-  h5.write("box_rebuild", box_data(sim.box_at_rebuild()));
+  h5.write("image", "1", image, n3);
+  h5.write("id", "1", a.id);
+  h5.write("type", "1", type);
+  h5.write("mask", "1", mask);
+  h5.write("type_mass", units.mass, a.mass);
+  std::string names;
+  for (const std::string& name : a.type_names) names += (names.empty() ? "" : " ") + (name.empty() ? "-" : name);
+  h5.set_attribute("type_names", names);
+  h5.write("box", units.length, box_data(sim.box));
+  h5.write("box_at_rebuild", units.length, box_data(sim.box_at_rebuild()));
   for (std::size_t k = 0; k < sim.fixes.size(); ++k) {
     auto state = sim.fixes[k]->state();
-    if (!state.empty()) h5.write(fmt::format("fix{}_{}", k, sim.fixes[k]->name()), state);
+    if (!state.empty()) h5.write(fmt::format("fix{}_{}", k, sim.fixes[k]->name()), "mixed", state);
   }
   h5.commit();
 }
 
-CheckpointPosition read_checkpoint_header(const std::filesystem::path& file) {
+CheckpointPosition read_checkpoint_header(const std::filesystem::path& file, const std::string& method) {
   const io::CheckpointReader checkpoint(file);
-  checkpoint.require_format(kFormatVersion);
+  checkpoint.require(method, kCheckpointFormat);
   return {checkpoint.count("stage"), checkpoint.count("stage_step")};
 }
 
-void read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
+void read_checkpoint(const std::filesystem::path& file, Simulation& sim, const std::string& method) {
   const io::CheckpointReader checkpoint(file);
+  checkpoint.require(method, kCheckpointFormat);
   const io::Hdf5File& h5 = checkpoint.h5();
   Atoms& a = sim.atoms;
   const auto id = h5.read_ints("id");
@@ -90,8 +95,8 @@ void read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
   const auto mask = h5.read_ints("mask");
   const auto image = h5.read_ints("image");
   a.clear_ghosts();
-  a.x = unflatten(h5.read_doubles("x"));
-  a.v = unflatten(h5.read_doubles("v"));
+  a.x = unflatten(h5.read_doubles("position"));
+  a.v = unflatten(h5.read_doubles("velocity"));
   a.f.assign(n, Vec3::Zero());
   a.id = id;
   a.type.resize(n);
@@ -109,18 +114,18 @@ void read_checkpoint(const std::filesystem::path& file, Simulation& sim) {
   sim.time = h5.attribute("time");
   set_box(sim.box, h5.read_doubles("box"));
   geometry::Box rebuild_box = sim.box;
-  set_box(rebuild_box, h5.read_doubles("box_rebuild"));
+  set_box(rebuild_box, h5.read_doubles("box_at_rebuild"));
   for (std::size_t k = 0; k < sim.fixes.size(); ++k) {
     const std::string name = fmt::format("fix{}_{}", k, sim.fixes[k]->name());
     if (h5.has(name)) sim.fixes[k]->restore(h5.read_doubles(name));
   }
-  sim.restore_rebuild_state(unflatten(h5.read_doubles("x_rebuild")), rebuild_box);
+  sim.restore_rebuild_state(unflatten(h5.read_doubles("position_at_rebuild")), rebuild_box);
   sim.rebuilds = checkpoint.count("neighbor_rebuilds");
   sim.steps_since_rebuild = checkpoint.count("steps_since_rebuild");
   // Energies and virial of the restored step, then the saved forces: they include what fixes
   // added after the force evaluation (Langevin bath forces), which a recomputation would lose.
   evaluate_forces(a, *sim.potential, sim.list, sim.forces, false);
-  a.f = unflatten(h5.read_doubles("f"));
+  a.f = unflatten(h5.read_doubles("force"));
 }
 
 }  // namespace shockfield::md

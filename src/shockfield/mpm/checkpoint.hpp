@@ -11,6 +11,10 @@
 
 namespace shockfield::mpm {
 
+/// The layout (docs/checkpoints.md). 2: damage added; 3: self-describing (one dataset per
+/// quantity with units, integer counters).
+inline constexpr std::int64_t kCheckpointFormat = 3;
+
 /// How far the driver's output schedule had got.
 struct OutputCounters {
   std::int64_t series = 0;      ///< series rows written (row k at k·series_interval)

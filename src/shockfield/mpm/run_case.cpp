@@ -10,6 +10,7 @@
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/size_limits.hpp"
+#include "shockfield/core/units.hpp"
 #include "shockfield/mpm/case_builder.hpp"
 #include "shockfield/mpm/case_file.hpp"
 #include "shockfield/mpm/checkpoint.hpp"
@@ -157,9 +158,10 @@ class MpmMethod final : public Method {
 
   void log_results(double steps_per_second) override {
     const Totals t = totals(sim_.particles());
-    log_->info("finished: t = {} s after {} steps ({:.3g} particle-steps/s); energy {} J, momentum ({}, {}, {}) kg m/s",
+    const char* per = units::si::per_missing_dimensions_text(sim_.grid().dim());
+    log_->info("finished: t = {} s after {} steps ({:.3g} particle-steps/s); energy {} J{}, momentum ({}, {}, {}) kg m/s{}",
                sim_.time(), sim_.step_count(), steps_per_second * static_cast<double>(sim_.particles().size()),
-               t.total(), t.momentum[0], t.momentum[1], t.momentum[2]);
+               t.total(), per, t.momentum[0], t.momentum[1], t.momentum[2], per);
   }
 
   std::vector<std::string> thermo_columns() const override {

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "shockfield/analysis/field_statistics.hpp"
+#include "shockfield/core/units.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/mpm/diagnostics.hpp"
 
@@ -44,9 +45,12 @@ RunOutput::RunOutput(const fs::path& folder, const MpmCase& c, std::optional<Cav
 
 std::vector<std::string> RunOutput::columns() const {
   const int dim = case_.grid.dim;
-  std::vector<std::string> cols{"step", "time_s", "dt_stable_s", "mass", "momentum_x", "momentum_y"};
-  if (dim == 3) cols.emplace_back("momentum_z");
-  for (const char* c : {"kinetic_J", "internal_J", "total_J", "top", "rot2", "div2", "strain_rate2"}) cols.emplace_back(c);
+  const std::string per = units::si::per_missing_dimensions_column(dim);
+  std::vector<std::string> cols{"step", "time_s", "dt_stable_s", "mass_kg" + per, "momentum_x_kg_m_s" + per,
+                                "momentum_y_kg_m_s" + per};
+  if (dim == 3) cols.emplace_back("momentum_z_kg_m_s");
+  for (const char* c : {"kinetic_J", "internal_J", "total_J"}) cols.push_back(c + per);
+  for (const char* c : {"top", "rot2", "div2", "strain_rate2"}) cols.emplace_back(c);
   const auto names = quantity_names(dim);
   for (const char* where : {"bottom", "top"})
     for (double h : case_.diagnostics.windows.heights) {

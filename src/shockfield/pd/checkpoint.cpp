@@ -8,7 +8,6 @@
 namespace shockfield::pd {
 namespace {
 
-constexpr double kFormatVersion = 1;
 
 std::vector<double> flatten(const std::vector<Vec3>& a) {
   std::vector<double> out;
@@ -30,17 +29,19 @@ std::vector<Vec3> unflatten(const std::vector<double>& d, std::size_t n, const s
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const std::vector<double>& model_state,
                       const OutputCounters& counters) {
-  io::CheckpointWriter h5(file);
+  io::CheckpointWriter h5(file, "pd", kCheckpointFormat);
   const hsize_t n = sim.cloud().size();
-  h5.set_attribute("format_version", kFormatVersion);
-  h5.set_attribute("step", static_cast<double>(sim.step_count()));
+  h5.set_count("step", sim.step_count());
   h5.set_attribute("time", sim.time());
-  h5.set_attribute("series", static_cast<double>(counters.series));
-  h5.set_attribute("profiles", static_cast<double>(counters.profiles));
-  h5.write("y", flatten(sim.positions()), {n, 3});
-  h5.write("v", flatten(sim.velocities()), {n, 3});
-  h5.write("force_density", flatten(sim.force_density()), {n, 3});
-  h5.write("model_state", model_state);
+  h5.set_count("dim", sim.cloud().dim);
+  h5.set_count("series", counters.series);
+  h5.set_count("profiles", counters.profiles);
+  h5.write("position", "m", flatten(sim.positions()), {n, 3});
+  h5.write("velocity", "m/s", flatten(sim.velocities()), {n, 3});
+  h5.write("force_density", "N/m3", flatten(sim.force_density()), {n, 3});
+  // The force model's own state, in its layout (docs/checkpoints.md): bond flags then s0 (pmb,
+  // lps), or F then the material state per point (correspondence); mixed units.
+  h5.write("model_state", "mixed", model_state);
   h5.commit();
 }
 
@@ -48,9 +49,10 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string f = file.string();
-  checkpoint.require_format(kFormatVersion);
+  checkpoint.require("pd", kCheckpointFormat);
   const std::size_t n = sim.cloud().size();
-  sim.restore(unflatten(h5.read_doubles("y"), n, "y", f), unflatten(h5.read_doubles("v"), n, "v", f),
+  sim.restore(unflatten(h5.read_doubles("position"), n, "position", f),
+              unflatten(h5.read_doubles("velocity"), n, "velocity", f),
               unflatten(h5.read_doubles("force_density"), n, "force_density", f),
               checkpoint.count("step"), h5.attribute("time"));
   model_state = h5.read_doubles("model_state");

@@ -11,6 +11,9 @@
 
 namespace shockfield::pd {
 
+/// The layout (docs/checkpoints.md). 2: self-describing (named datasets with units, integer counters).
+inline constexpr std::int64_t kCheckpointFormat = 2;
+
 /// How far the driver's output schedule had got.
 struct OutputCounters {
   std::int64_t series = 0;    ///< series rows written (row k at k·series_interval)

@@ -13,6 +13,7 @@
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/size_limits.hpp"
+#include "shockfield/core/units.hpp"
 #include "shockfield/pd/bar_impact.hpp"
 #include "shockfield/pd/bond_force.hpp"
 #include "shockfield/pd/case_file.hpp"
@@ -273,9 +274,11 @@ class PdMethod final : public Method {
   }
   void log_results(double steps_per_second) override {
     const Vec3 p = sim_.momentum();
-    log_->info("finished: t = {} s after {} steps ({:.3g} bond-updates/s); kinetic energy {} J, momentum ({}, {}, {})",
+    const char* per = units::si::per_missing_dimensions_text(c_.body.dim);
+    log_->info("finished: t = {} s after {} steps ({:.3g} bond-updates/s); kinetic energy {} J{}, momentum ({}, {}, {}) "
+               "kg m/s{}",
                sim_.time(), sim_.step_count(), steps_per_second * static_cast<double>(cracked_.family.bonds()),
-               sim_.kinetic_energy(), p[0], p[1], p[2]);
+               sim_.kinetic_energy(), per, p[0], p[1], p[2], per);
   }
 
   std::vector<std::string> thermo_columns() const override {
@@ -325,7 +328,7 @@ class PdMethod final : public Method {
       log_->info("region {}: {} points {}{}", k, points_in(r.shape, cloud_).size(), velocity,
                  r.separate ? ", a separate body" : "");
     }
-    output_.emplace(run.folder, model_.fields, c_.output, total_steps(), resume);
+    output_.emplace(run.folder, c_.body.dim, model_.fields, c_.output, total_steps(), resume);
     if (!finished())
       log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
                  c_.solver.end_time, dt_, dt_ / stable_, stable_);

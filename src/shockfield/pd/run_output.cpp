@@ -5,20 +5,24 @@
 #include <cmath>
 #include <limits>
 
+#include "shockfield/core/units.hpp"
+
 namespace shockfield::pd {
 
 namespace fs = std::filesystem;
 
-RunOutput::RunOutput(const fs::path& folder, PointFields fields, const OutputIntervals& output, long long last_step,
-                     std::optional<ResumePoint> resume)
+RunOutput::RunOutput(const fs::path& folder, int dim, PointFields fields, const OutputIntervals& output,
+                     long long last_step, std::optional<ResumePoint> resume)
     : folder_(folder), fields_(std::move(fields)) {
   fs::create_directories(folder / "profiles");
   const double keep_step = resume ? static_cast<double>(resume->step) : 0.0;
   // index.csv's first column is the profile number: keep those written before the checkpoint.
   const double keep_profile = resume ? static_cast<double>(resume->profiles) - 1.0 : 0.0;
+  const std::string per = units::si::per_missing_dimensions_column(dim);
   series_ = io::CsvWriter(folder / "series.csv",
-                          {"step", "time_s", "kinetic_energy_J", "momentum_x", "momentum_y", "momentum_z",
-                           "max_axial_compression_Pa", "max_plastic"},
+                          {"step", "time_s", "kinetic_energy_J" + per, "momentum_x_kg_m_s" + per,
+                           "momentum_y_kg_m_s" + per, "momentum_z_kg_m_s" + per, "max_axial_compression_Pa",
+                           "max_plastic"},
                           resume ? &keep_step : nullptr);
   index_ = io::CsvWriter(folder / "profiles" / "index.csv", {"profile", "time_s", "step"},
                          resume ? &keep_profile : nullptr);

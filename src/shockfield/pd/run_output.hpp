@@ -37,8 +37,9 @@ struct ResumePoint {
 
 class RunOutput {
  public:
+  /// `dim`: the body's, for the per-length and per-area labels of the series' totals;
   /// `last_step`: the run's last step, the digits of the dump names.
-  RunOutput(const std::filesystem::path& folder, PointFields fields, const OutputIntervals& output,
+  RunOutput(const std::filesystem::path& folder, int dim, PointFields fields, const OutputIntervals& output,
             long long last_step, std::optional<ResumePoint> resume);
 
   void write_series(const Simulation& sim);

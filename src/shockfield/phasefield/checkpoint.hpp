@@ -8,6 +8,12 @@
 
 namespace shockfield::phasefield {
 
+/// The layouts (docs/checkpoints.md). Phase field 2: checksummed (io/checkpoint_file); 3:
+/// self-describing (units, integer counters, dim and dx). Sharp front 2: self-describing (one
+/// dataset per domain quantity, integer counters and tracks).
+inline constexpr std::int64_t kCheckpointFormat = 3;
+inline constexpr std::int64_t kSharpFrontCheckpointFormat = 2;
+
 struct OutputCounters {
   std::int64_t series = 0;  ///< series rows written (row k at k·series_interval)
   std::int64_t frames = 0;  ///< field frames written

@@ -21,8 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kFormatVersion = 1;
-constexpr int kPerDomain = 5;  // track, radius, centre x, y, z
 
 void derive(const Config& root, const SharpFrontCase& c) {
   root.derive("steps", c.steps);
@@ -53,24 +51,26 @@ class SharpFrontMethod final : public Method {
   }
   void resume(RunContext& run) override {
     const io::CheckpointReader checkpoint(run.checkpoint);
-    checkpoint.require_format(kFormatVersion);
-    // 'domains': the count, then (track, radius, centre x, y, z) per domain; every value checked
-    // before it is used (a whole track number, a finite positive radius, a finite centre).
-    const std::vector<double> flat = checkpoint.h5().read_doubles("domains");
-    const std::size_t count = flat.empty() ? 0 : (flat.size() - 1) / kPerDomain;
+    checkpoint.require("phasefield.sharp_front", kSharpFrontCheckpointFormat);
+    // One track, radius and centre per domain; every value checked before it is used (a
+    // positive track number, a finite positive radius, a finite centre).
+    const io::Hdf5File& h5 = checkpoint.h5();
+    const std::vector<std::int64_t> track = h5.read_ints("domain_track");
+    const std::vector<double> radius = h5.read_doubles("domain_radius"), centre = h5.read_doubles("domain_centre");
     const auto bad = [&](const std::string& what) {
-      return InputError(fmt::format("{}: dataset 'domains': {}", run.checkpoint.string(), what));
+      return InputError(fmt::format("{}: domains: {}", run.checkpoint.string(), what));
     };
-    if (flat.empty() || flat.size() != 1 + kPerDomain * count || flat[0] != static_cast<double>(count))
-      throw bad(fmt::format("{} values, expected the domain count and 5 values per domain", flat.size()));
+    if (radius.size() != track.size() || centre.size() != 3 * track.size())
+      throw bad(fmt::format("{} tracks, {} radii and {} centre values; expected one radius and 3 centre values per "
+                            "track", track.size(), radius.size(), centre.size()));
     domains_.clear();
-    for (std::size_t m = 0; m < count; ++m) {
-      const double* d = flat.data() + 1 + kPerDomain * m;
-      if (!(d[0] >= 1 && d[0] <= 9.0e15 && d[0] == std::floor(d[0])) || !(d[1] > 0 && std::isfinite(d[1])) ||
-          !std::isfinite(d[2]) || !std::isfinite(d[3]) || !std::isfinite(d[4]))
+    for (std::size_t m = 0; m < track.size(); ++m) {
+      const double* x = &centre[3 * m];
+      if (track[m] < 1 || !(radius[m] > 0 && std::isfinite(radius[m])) || !std::isfinite(x[0]) ||
+          !std::isfinite(x[1]) || !std::isfinite(x[2]))
         throw bad(fmt::format("domain {} (track {}, radius {}) is not a track number, a positive radius and a finite centre",
-                              m + 1, d[0], d[1]));
-      domains_.push_back({static_cast<std::int64_t>(d[0]), {d[2], d[3], d[4]}, d[1]});
+                              m + 1, track[m], radius[m]));
+      domains_.push_back({track[m], {x[0], x[1], x[2]}, radius[m]});
     }
     steps_ = checkpoint.count("step");
     counters_ = {checkpoint.count("series"), checkpoint.count("frames")};
@@ -93,17 +93,21 @@ class SharpFrontMethod final : public Method {
   std::int64_t steps_left() const override { return c_.steps - steps_; }
   std::int64_t checkpoint_every() const override { return c_.output.checkpoint_every; }
   void write_checkpoint(const fs::path& file) override {
-    io::CheckpointWriter h5(file);
-    h5.set_attribute("format_version", kFormatVersion);
-    h5.set_attribute("method", "phasefield.sharp_front");
-    h5.set_attribute("step", static_cast<double>(steps_));
+    io::CheckpointWriter h5(file, "phasefield.sharp_front", kSharpFrontCheckpointFormat);
+    h5.set_count("step", steps_);
     h5.set_attribute("time", time());
-    h5.set_attribute("series", static_cast<double>(counters_.series));
-    h5.set_attribute("frames", static_cast<double>(counters_.frames));
-    std::vector<double> flat{static_cast<double>(domains_.size())};
-    for (const SharpDomain& d : domains_)
-      flat.insert(flat.end(), {static_cast<double>(d.track), d.radius, d.center[0], d.center[1], d.center[2]});
-    h5.write("domains", flat);
+    h5.set_count("series", counters_.series);
+    h5.set_count("frames", counters_.frames);
+    std::vector<std::int64_t> track;
+    std::vector<double> radius, centre;
+    for (const SharpDomain& d : domains_) {
+      track.push_back(d.track);
+      radius.push_back(d.radius);
+      centre.insert(centre.end(), {d.center[0], d.center[1], d.center[2]});
+    }
+    h5.write("domain_track", "1", track);
+    h5.write("domain_radius", "1", radius);
+    h5.write("domain_centre", "1", centre, {track.size(), 3});
     h5.commit();
   }
   void write_final_outputs() override {

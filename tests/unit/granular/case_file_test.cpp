@@ -166,7 +166,7 @@ TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
   std::ifstream probes(dir / "probes.csv");
   std::string header;
   std::getline(probes, header);
-  EXPECT_EQ(header.rfind("time_s,velocity_0,force_0,overlap_0,velocity_100", 0), 0u) << header;
+  EXPECT_EQ(header.rfind("time_s,velocity_0_m_s,force_0_N,overlap_0_m,velocity_100_m_s", 0), 0u) << header;
   EXPECT_TRUE(std::filesystem::exists(dir / "spacetime_force.csv"));
   // energy_above.csv comes with every series row: Simulation::excess_energy(0, g) at the row's
   // step, and for g = N (the whole chain with its floor) the total of series.csv.
@@ -174,7 +174,7 @@ TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
   std::string line, series_line;
   std::getline(above, line);
   std::getline(series, series_line);
-  EXPECT_EQ(line, "time_s,energy_above_95,energy_above_200");
+  EXPECT_EQ(line, "time_s,energy_above_95_J,energy_above_200_J");
   std::size_t rows = 0;
   const auto cells = [](const std::string& text) {
     std::vector<double> v;

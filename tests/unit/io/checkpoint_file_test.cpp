@@ -3,7 +3,9 @@
 // flipped payload byte, a truncation or a missing checksum is refused by name (InputError); a
 // checkpoint that cannot be written leaves the previous one intact and no temporary file; 400
 // one-byte mutants are each refused by name or read back intact; a stored count that is not a
-// whole number in range is refused before its integer conversion.
+// non-negative integer is refused; a checkpoint describes itself (method, format, version, the
+// case and its SHA-256, units per dataset) and an older format or another method is refused by
+// name.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -20,6 +22,8 @@
 #include <iterator>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/provenance.hpp"
+#include "shockfield/core/sha256.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/checkpoint_file.hpp"
 #include "shockfield/io/csv_writer.hpp"
@@ -44,12 +48,12 @@ std::vector<double> marker_payload() {
   return v;
 }
 
-void write_sample(const fs::path& file, double step) {
-  io::CheckpointWriter w(file);
-  w.set_attribute("step", step);
+void write_sample(const fs::path& file, std::int64_t step) {
+  io::CheckpointWriter w(file, "sample", 2);
+  w.set_count("step", step);
   w.set_attribute("boundary", std::string("ppf"));
-  w.write("x", marker_payload(), {32, 2});
-  w.write("id", std::vector<std::int64_t>{7, 8, 9});
+  w.write("x", "m", marker_payload(), {32, 2});
+  w.write("id", "1", std::vector<std::int64_t>{7, 8, 9});
   w.commit();
 }
 
@@ -153,17 +157,54 @@ TEST_F(CheckpointFileTest, FailedWriteKeepsThePreviousCheckpoint) {
   EXPECT_EQ(io::CheckpointReader(file).h5().attribute("step"), 1);
 }
 
-TEST_F(CheckpointFileTest, CountsAreWholeNumbersInRangeBeforeTheirIntegerConversion) {
-  // Every method read its step and row counters with an unclamped cast of the stored double
-  // (undefined for NaN or 1e300); count() refuses what is not a whole number in [0, 2^53].
+TEST_F(CheckpointFileTest, CountsAreNonNegativeIntegers) {
+  // Counters are stored as integers; one stored as a real (as before format bumps of
+  // 2026-12-03, NaN or 1e300 included) or a negative one is refused by name.
   write_sample(file, 42);
   EXPECT_EQ(io::CheckpointReader(file).count("step"), 42);
-  for (const double bad : {std::nan(""), 1e300, -1.0, 2.5, 9007199254740994.0}) {
-    write_sample(file, bad);
-    const std::string msg = input_error_of([&] { io::CheckpointReader(file).count("step"); });
+  write_sample(file, -1);
+  std::string msg = input_error_of([&] { io::CheckpointReader(file).count("step"); });
+  EXPECT_NE(msg.find("'step' = -1 is not a count"), std::string::npos) << msg;
+  for (const double bad : {std::nan(""), 1e300, 2.0}) {
+    io::CheckpointWriter w(file, "sample", 2);
+    w.set_attribute("step", bad);
+    w.commit();
+    msg = input_error_of([&] { io::CheckpointReader(file).count("step"); });
     EXPECT_NE(msg.find(file.string()), std::string::npos) << bad << ": " << msg;
-    EXPECT_NE(msg.find("'step'"), std::string::npos) << bad << ": " << msg;
+    EXPECT_NE(msg.find("'step' is not stored as an integer"), std::string::npos) << bad << ": " << msg;
   }
+}
+
+TEST_F(CheckpointFileTest, DescribesItselfAndRefusesAnotherMethodOrFormatByName) {
+  const std::string resolved = "method = 'sample'\n[sample]\nsteps = 3\n";
+  {
+    const io::CheckpointCaseScope scope(resolved);
+    write_sample(file, 3);
+  }
+  const io::CheckpointReader r(file);
+  const io::Hdf5File& h5 = r.h5();
+  EXPECT_EQ(h5.string_attribute("format"), "shockfield checkpoint");
+  EXPECT_EQ(r.method(), "sample");
+  EXPECT_EQ(h5.int_attribute("format_version"), 2);
+  EXPECT_EQ(h5.string_attribute("shockfield_version"), shockfield_version());
+  EXPECT_EQ(h5.string_attribute("git_commit"), shockfield_git_commit());
+  EXPECT_EQ(h5.string_attribute("case"), resolved);
+  EXPECT_EQ(h5.string_attribute("case_sha256"), sha256_hex(resolved));
+  EXPECT_EQ(h5.dataset_names(), (std::vector<std::string>{"id", "x"}));
+  EXPECT_EQ(h5.units("x"), "m");
+  EXPECT_EQ(h5.units("id"), "1");
+  EXPECT_EQ(h5.shape("x"), (std::vector<hsize_t>{32, 2}));
+  EXPECT_NO_THROW(r.require("sample", 2));
+  std::string msg = input_error_of([&] { r.require("sample", 3); });
+  EXPECT_NE(msg.find("sample checkpoint format 2 is older than the supported 3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+  msg = input_error_of([&] { r.require("sample", 1); });
+  EXPECT_NE(msg.find("format 2 is newer than the supported 1"), std::string::npos) << msg;
+  msg = input_error_of([&] { r.require("mpm", 2); });
+  EXPECT_NE(msg.find("a sample checkpoint, not a mpm one"), std::string::npos) << msg;
+  // Outside a run (no scope) the case is empty, its hash that of the empty text.
+  write_sample(file, 3);
+  EXPECT_EQ(io::CheckpointReader(file).h5().string_attribute("case"), "");
 }
 
 TEST_F(CheckpointFileTest, EveryOneByteMutantIsReadWholeOrRefusedByName) {
@@ -184,7 +225,7 @@ TEST_F(CheckpointFileTest, EveryOneByteMutantIsReadWholeOrRefusedByName) {
     put_bytes(file, b);
     try {
       const io::CheckpointReader r(file);
-      EXPECT_EQ(r.h5().attribute("step"), 3) << "byte " << at;
+      EXPECT_EQ(r.h5().int_attribute("step"), 3) << "byte " << at;
       EXPECT_EQ(r.h5().read_doubles("x"), marker_payload()) << "byte " << at;
       EXPECT_EQ(r.h5().read_ints("id"), (std::vector<std::int64_t>{7, 8, 9})) << "byte " << at;
       ++intact;
