@@ -6,6 +6,7 @@
   ½ mvv2e m Σv² of it (to 1e-12 relative: the same formula evaluated in another order).
 - The views stay valid: over 120 steps at 600 K (neighbour rebuilds in the log) the arrays keep
   their address and an old view reads what a fresh one does.
+- Per-atom energies (computed for a `pe` dump column) sum to the thermo PotEng at a dump step.
 - The run is the command line's: the in-process run's thermo.csv, series.csv and dumps are
   bytewise those of `shockfield run` with the same values and thread count (md with views
   taken, mpm and pd without).
@@ -92,6 +93,14 @@ class InProcess(unittest.TestCase):
         rebuilds = [int(line.split("(")[1].split(",")[1].split()[0]) for line in log.splitlines()
                     if "neighbour rebuilds)" in line]
         self.assertGreater(sum(rebuilds), 0, log)
+
+    def test_per_atom_energies_sum_to_the_potential_energy(self):
+        case = small_cu(5, 5).set("output.dump_fields", ["id", "type", "x", "y", "z", "pe"])
+        sim = case.set("output.dump_every", 5).simulation(self.dir / "run", threads=1)
+        sim.step(5)  # a dump step: per-atom energies computed
+        e = sim["energies"]
+        self.assertEqual(e.shape, (256,))
+        self.assertAlmostEqual(e.sum() / sim.thermo()["PotEng"], 1.0, delta=1e-13)  # summed in another order
 
     def test_md_is_the_command_lines(self):
         sets = ["stage[0].steps=20", "stage[1].steps=20", "output.dump_every=20"]
