@@ -24,8 +24,8 @@ __version__ = _core.__version__ if _core is not None else "unknown"
 def _require_core():
     if _core is None:
         raise ImportError(
-            "shockfield.analysis needs the compiled module shockfield._core, which this build lacks "
-            f"({_import_error}); install pybind11-dev and python3-pybind11 and rebuild")
+            "shockfield.analysis and shockfield.Simulation need the compiled module shockfield._core, "
+            f"which this build lacks ({_import_error}); install pybind11-dev and python3-pybind11 and rebuild")
     return _core
 
 

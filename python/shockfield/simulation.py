@@ -16,7 +16,7 @@ import pathlib
 
 import numpy as np
 
-from . import _core
+from .analysis import _require_core
 from .case import Case
 
 
@@ -32,7 +32,7 @@ class Simulation:
         if not isinstance(case, Case):
             case = Case.load(case)
         with case._case_file() as case_file:
-            self._core = _core.Simulation(str(case_file), list(case.overrides), str(output), int(threads),
+            self._core = _require_core().Simulation(str(case_file), list(case.overrides), str(output), int(threads),
                                           bool(overwrite), bool(quiet))
         self.folder = pathlib.Path(self._core.folder)
 
