@@ -55,24 +55,19 @@ endif()
 
 if(SHOCKFIELD_PYTHON_MODULE)
   message(STATUS "shockfield: Python module for ${Python_EXECUTABLE} (${Python_VERSION}), pybind11 ${pybind11_VERSION}")
-  # A shared module needs position-independent code, and the library is built without it (as
-  # the executable wants). The module therefore compiles the sources it calls — the field
-  # analysis, which depends on nothing else of the library but io/vtk_zlib — once more with -fPIC. Cases run
-  # through the shockfield command (python/shockfield/case.py), so they need none of the rest.
-  set(shockfield_python_library_sources grid_field minkowski block_configurations similarity
-    field_statistics spectral_statistics fft field_reader vti_binary gaussian_random_field)
-  list(TRANSFORM shockfield_python_library_sources PREPEND ${CMAKE_SOURCE_DIR}/src/shockfield/analysis/)
-  list(TRANSFORM shockfield_python_library_sources APPEND .cpp)
-  list(APPEND shockfield_python_library_sources ${CMAKE_SOURCE_DIR}/src/shockfield/io/vtk_zlib.cpp)  # zlib .vti
+  # A shared module needs position-independent code, so the library is built with -fPIC when
+  # the module is (Debian's g++ builds PIE executables by default, --enable-default-pie, so the
+  # library's code is position-independent either way; bench/RESULTS.md measured -fPIC against
+  # it). -fno-semantic-interposition keeps the calls between the library's own functions direct
+  # and inlinable as under -fPIE. The module links the library: one build of every source.
+  set_target_properties(shockfield_lib PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  target_compile_options(shockfield_lib PRIVATE -fno-semantic-interposition)
   file(GLOB shockfield_binding_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/python/src/*.cpp)
   # NO_EXTRAS: no LTO (the library is built without it, and its serial link is slow on CI).
-  pybind11_add_module(shockfield_python MODULE NO_EXTRAS ${shockfield_binding_sources} ${shockfield_python_library_sources})
-  target_include_directories(shockfield_python PRIVATE ${CMAKE_SOURCE_DIR}/src)
-  target_compile_definitions(shockfield_python PRIVATE SHOCKFIELD_VERSION="${PROJECT_VERSION}")
-  target_link_libraries(shockfield_python PRIVATE OpenMP::OpenMP_CXX fmt::fmt PkgConfig::FFTW3 ZLIB::ZLIB shockfield_warnings)
-  # Hidden symbols and no semantic interposition: calls inside the analysis sources stay direct
-  # and inlinable, as in the (non-PIC) library.
-  target_compile_options(shockfield_python PRIVATE -fno-semantic-interposition)
+  pybind11_add_module(shockfield_python MODULE NO_EXTRAS ${shockfield_binding_sources})
+  target_link_libraries(shockfield_python PRIVATE shockfield_lib)
+  # Hidden symbols: the module exports only its init function, not the library it contains.
+  target_link_options(shockfield_python PRIVATE -Wl,--exclude-libs,ALL)
   set_target_properties(shockfield_python PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
     OUTPUT_NAME _core
     LIBRARY_OUTPUT_DIRECTORY ${SHOCKFIELD_PYTHON_BUILD_DIR}/shockfield)

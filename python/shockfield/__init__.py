@@ -12,10 +12,12 @@ command line); ``Run`` reads any method's run folder; ``analysis`` calls the C++
 numpy arrays in-process (module ``shockfield._core``). Documentation: docs/python.md.
 """
 
-from .errors import InputError, RunError, StopRequested
+from .errors import InputError, RunError, StaleViewError, StopRequested
 from .case import Case, shockfield_command
 from .run import Run
+from .simulation import Simulation
 from . import analysis, sweep
 
 __version__ = analysis.__version__
-__all__ = ["Case", "Run", "analysis", "InputError", "RunError", "StopRequested", "shockfield_command", "sweep"]
+__all__ = ["Case", "Run", "Simulation", "analysis", "InputError", "RunError", "StaleViewError", "StopRequested",
+           "shockfield_command", "sweep"]

@@ -24,8 +24,8 @@ __version__ = _core.__version__ if _core is not None else "unknown"
 def _require_core():
     if _core is None:
         raise ImportError(
-            "shockfield.analysis needs the compiled module shockfield._core, which this build lacks "
-            f"({_import_error}); install pybind11-dev and python3-pybind11 and rebuild")
+            "shockfield.analysis and shockfield.Simulation need the compiled module shockfield._core, "
+            f"which this build lacks ({_import_error}); install pybind11-dev and python3-pybind11 and rebuild")
     return _core
 
 
@@ -106,3 +106,40 @@ def gaussian_random_field(shape, correlation_length, seed=1):
         raise ValueError(f"shape: expected (ny, nx) or (nz, ny, nx), got {shape}")
     nz, ny, nx = (1,) + shape if len(shape) == 2 else shape
     return _require_core().gaussian_random_field(nx, ny, nz, float(correlation_length), int(seed))[0]
+
+
+def structure(positions, box, boundary="ppp", types=None, ids=None, coordination=None, cna=None,
+              adaptive_cna=False, csp=None, bond_pairs=None, threads=0):
+    """Per-atom structure of atoms, as ``shockfield analyze atoms`` computes it for one frame
+    (docs/analysis-atoms.md), over one neighbour pass.
+
+    ``positions``: float64 C-contiguous (n, 3) in Å; ``box``: ((xlo, ylo, zlo), (xhi, yhi, zhi));
+    ``boundary``: LAMMPS codes per axis ("ppp", "pps", ...); ``types`` 1-based and ``ids``
+    (default all 1 and 1..n). Analyses (at least one): ``coordination`` (cutoff Å), ``cna``
+    (conventional CNA cutoff Å), ``adaptive_cna``, ``csp`` ("fcc", "bcc" or an even N),
+    ``bond_pairs`` (cutoff Å). Returns a dict of arrays named like the CLI's dump columns:
+    ``coord`` (int32), ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5
+    other) with ``<name>_counts`` dicts, ``csp`` (float64, Å²), and for bond pairs the CSR
+    ``bond_offset``, ``bond_partner``, ``bond_index`` (Honeycutt–Andersen index).
+    """
+    lo, hi = box
+    return _require_core().atoms_structure(
+        positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
+        None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
+        coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, int(threads))
+
+
+def delaunay(points, cluster_distance=None, rule="both"):
+    """The Delaunay division of ``points`` (float64 C-contiguous (n, 2) or (n, 3)) and, with a
+    ``cluster_distance``, its point clusters, as ``shockfield analyze geometry`` computes them
+    (docs/geometry-giso.md; Xu et al. (2015) §3.2.3). ``rule``: "xu2015" (the paper's seed rule),
+    "single-linkage" or "both".
+
+    Returns a dict: ``simplices`` (int32 (m, d+1), positively oriented, point indices),
+    ``neighbours`` (int32 (m, d+1), the simplex across the face opposite each vertex, -1 on the
+    hull), ``representative`` (per point, the first equal point), ``duplicates``,
+    ``total_area``/``total_volume``, and per rule (``seed_rule``, ``single_linkage``) a dict with
+    ``label`` per point, ``count``, ``size`` per cluster (seed rule also ``simplex_set``,
+    ``shared_points``). Runs with the GIL released, on one thread (the division is serial).
+    """
+    return _require_core().delaunay(points, 0.0 if cluster_distance is None else float(cluster_distance), rule)

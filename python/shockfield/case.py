@@ -132,25 +132,28 @@ class Case:
         return self
 
     @contextlib.contextmanager
+    def _case_file(self):
+        """The case file's path for the time of a with block (a dict case written to a file
+        beside the relative files it names, removed afterwards)."""
+        if self._path is not None:
+            yield self._path
+            return
+        handle = tempfile.NamedTemporaryFile("w", suffix=".toml", prefix=".case-", dir=self._directory, delete=False)
+        with handle:
+            handle.write(self._text)
+        try:
+            yield pathlib.Path(handle.name)
+        finally:
+            pathlib.Path(handle.name).unlink(missing_ok=True)
+
+    @contextlib.contextmanager
     def _command(self):
         """``shockfield run CASE --set ...`` and a scratch folder, for the time of a with block."""
-        with tempfile.TemporaryDirectory(prefix="shockfield-case-") as scratch:
-            case_file = self._path
-            if case_file is None:
-                # Written beside the relative files it names, removed afterwards.
-                handle = tempfile.NamedTemporaryFile("w", suffix=".toml", prefix=".case-", dir=self._directory,
-                                                     delete=False)
-                with handle:
-                    handle.write(self._text)
-                case_file = pathlib.Path(handle.name)
-            try:
-                command = [shockfield_command(), "run", str(case_file)]
-                for override in self.overrides:
-                    command += ["--set", override]
-                yield command, pathlib.Path(scratch)
-            finally:
-                if self._path is None:
-                    case_file.unlink(missing_ok=True)
+        with tempfile.TemporaryDirectory(prefix="shockfield-case-") as scratch, self._case_file() as case_file:
+            command = [shockfield_command(), "run", str(case_file)]
+            for override in self.overrides:
+                command += ["--set", override]
+            yield command, pathlib.Path(scratch)
 
     def check(self):
         """Validates the case as ``shockfield run --check`` does and returns its resolved values:
@@ -191,6 +194,12 @@ class Case:
                 raise _error_from(subprocess.CompletedProcess(command, process.returncode, "", stderr),
                                   "shockfield run")
             return Run.open(output)
+
+    def simulation(self, output, threads=0, overwrite=False, quiet=True):
+        """The case run in-process, stepped from Python: a ``shockfield.Simulation``."""
+        from .simulation import Simulation
+
+        return Simulation(self, output, threads=threads, overwrite=overwrite, quiet=quiet)
 
     def __repr__(self):
         source = str(self._path) if self._path is not None else "<dict>"

@@ -15,3 +15,8 @@ class RunError(RuntimeError):
 
 class StopRequested(RuntimeError):
     """A run stopped on request (``--stop-after``, Ctrl-C) after writing its checkpoint (exit 130)."""
+
+
+class StaleViewError(RuntimeError):
+    """A ``Simulation``'s array storage moved or changed length during ``step()`` (docs/python.md):
+    arrays taken before no longer show the simulation; take them again."""

@@ -122,27 +122,6 @@ std::vector<double> thresholds_of(const std::optional<std::vector<double>>& thre
   return sa::linear_thresholds(fields, count > 0 ? count : 32);
 }
 
-// `threads` OpenMP threads for one call (0: the process's default), restored afterwards so that
-// a call's choice does not become the next call's default.
-class ThreadCount {
- public:
-  explicit ThreadCount(int threads) : saved_(omp_get_max_threads()) {
-    if (threads < 0) throw py::value_error("threads: expected 0 (the default) or more");
-    if (threads > 0) omp_set_num_threads(threads);
-  }
-  ~ThreadCount() { omp_set_num_threads(saved_); }
-  ThreadCount(const ThreadCount&) = delete;
-  ThreadCount& operator=(const ThreadCount&) = delete;
-
- private:
-  int saved_;
-};
-
-template <class T>
-py::array_t<T> to_numpy(const std::vector<T>& v) {
-  return py::array_t<T>(py::ssize_t(v.size()), v.data());
-}
-
 // The functionals of every threshold as columns, with the morphology points for similarity.
 struct Functionals {
   py::dict columns;

@@ -30,4 +30,7 @@ PYBIND11_MODULE(_core, m) {
     }
   });
   shockfield::python::bind_analysis(m);
+  shockfield::python::bind_simulation(m);
+  shockfield::python::bind_atoms(m);
+  shockfield::python::bind_geometry(m);
 }

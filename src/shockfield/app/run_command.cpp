@@ -1,44 +1,23 @@
 // `shockfield run CASE.toml`: validates the case file, then runs the method it names.
 #include <omp.h>
 
-#include <map>
-
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/run_options.hpp"
-#include "shockfield/dbm/run_case.hpp"
-#include "shockfield/granular/run_case.hpp"
 #include "shockfield/io/checked_file.hpp"
-#include "shockfield/macroparticle/run_case.hpp"
-#include "shockfield/md/run_case.hpp"
-#include "shockfield/mpm/run_case.hpp"
-#include "shockfield/pd/run_case.hpp"
-#include "shockfield/phasefield/run_case.hpp"
+#include "shockfield/registry/method_registry.hpp"
 
 namespace shockfield::app {
 namespace {
-
-// Explicit registry of the methods `run` knows, by the case file's `method` value: each entry is
-// the method's plug-in factory (core/method.hpp), run by the one run driver.
-const std::map<std::string, MethodFactory>& methods() {
-  static const std::map<std::string, MethodFactory> table{
-      {"dbm", &dbm::make_method}, {"md", &md::make_method}, {"mpm", &mpm::make_method}, {"pd", &pd::make_method},
-      {"granular", &granular::make_method}, {"macroparticle", &macroparticle::make_method},
-      {"phasefield", &phasefield::make_method}};
-  return table;
-}
 
 // `resolved_file`: with --check, where the resolved case (every value read, defaults and
 // [derived]) goes, as config.resolved.toml would hold it (the Python module's Case.check()).
 void run(const RunOptions& options, const std::string& resolved_file) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const Config root = Config::load(options.case_file, options.overrides);
-  std::vector<std::string> names;
-  for (const auto& [name, factory] : methods()) names.push_back(name);
-  const std::string method = root.get_choice("method", names);
-  run_method(root, options, methods().at(method));
+  run_method(root, options, method_factory(root));
   if (!resolved_file.empty()) io::replace_file(resolved_file, root.resolved_toml());
 }
 

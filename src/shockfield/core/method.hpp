@@ -9,6 +9,7 @@
 // file's `method` name from an explicit registry, so the driver needs one type for all of them;
 // a handful of virtual calls per step costs nothing next to a step (thousands of atoms, cells or
 // particles). The hot loops inside a method stay templates on their models.
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -29,6 +30,18 @@ struct RunContext {
   std::filesystem::path checkpoint;  ///< folder/checkpoint.h5
   Logger& log;
   const RunOptions& options;
+};
+
+/// One per-particle array of a method's state, for a program that steps the method itself and
+/// reads or writes its state between steps (the Python module's numpy views, docs/python.md):
+/// `rows` × `columns` values of `type`, row-major at `data`, owned by the method.
+struct StateArray {
+  enum class Type { f64, i32, i64 };
+  std::string name;  ///< "positions", "velocities", ...
+  void* data = nullptr;
+  std::size_t rows = 0, columns = 1;
+  Type type = Type::f64;
+  std::string unit;  ///< "Å", "m/s", "" for indices
 };
 
 /// A wall-time share a method measured itself (e.g. MD's force and neighbour phases).
@@ -101,6 +114,11 @@ class Method {
   virtual double ns_per_step() const { return 0.0; }
   /// Phases the method timed itself (seconds, cumulated over the session).
   virtual std::vector<PhaseTime> phase_times() const { return {}; }
+
+  // ---- In-process access (RunDriver's caller between steps).
+  /// The per-particle arrays (empty: the method offers none). Their storage stays in place for
+  /// the rest of the run: a method whose arrays can grow reserves their largest size here.
+  virtual std::vector<StateArray> state_arrays() { return {}; }
 
   // ---- summary.json and --resume.
   /// Simulated time and its unit ("ps", "s", "1" for lattice units).

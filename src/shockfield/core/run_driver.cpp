@@ -113,105 +113,124 @@ std::unique_ptr<Method> make_checked(const Config& root, const RunOptions& optio
 
 }  // namespace
 
-void run_method(const Config& root, const RunOptions& options, const MethodFactory& make_method) {
-  std::unique_ptr<Method> method = make_checked(root, options, make_method);
-  Method& m = *method;
-  root.check_replayed_derived();
-  if (options.validate_only) {
-    std::printf("%s: valid %s\n", options.case_file.string().c_str(), m.check_text().c_str());
-    return;
-  }
-  const std::vector<CaseChange> changes = options.resume ? check_resume_case(root, options, m) : std::vector<CaseChange>{};
-  Provenance provenance = collect_provenance(options.command_line, root.input_files());
-  if (options.resume) check_resume_inputs(options, provenance);
-  root.set_provenance(provenance_toml(provenance));
-  const io::CheckpointCaseScope checkpoint_case(root.resolved_toml());
-  RunSession session = open_run_session(root, options, m.name(), m.size_text(), provenance_lines(provenance),
-                                        !changes.empty());
-  RunContext run{session.folder, session.checkpoint, session.log, options};
-  Logger& log = session.log;
+RunDriver::RunDriver(Config root, RunOptions options, const MethodFactory& make_method)
+    : root_(std::move(root)), options_(std::move(options)), method_(make_checked(root_, options_, make_method)) {
+  root_.check_replayed_derived();
+}
+
+bool RunDriver::open(bool stop_handlers) {
+  Method& m = *method_;
+  const std::vector<CaseChange> changes =
+      options_.resume ? check_resume_case(root_, options_, m) : std::vector<CaseChange>{};
+  provenance_ = collect_provenance(options_.command_line, root_.input_files());
+  if (options_.resume) check_resume_inputs(options_, *provenance_);
+  root_.set_provenance(provenance_toml(*provenance_));
+  session_.emplace(open_run_session(root_, options_, m.name(), m.size_text(), provenance_lines(*provenance_),
+                                    !changes.empty()));
+  run_.emplace(RunContext{session_->folder, session_->checkpoint, session_->log, options_});
   for (const CaseChange& c : changes)
-    log.info("resume: {} changed from {} to {} (a safe change; config.resolved.toml rewritten)", c.key, c.before,
-             c.after);
-  const Clock::time_point wall_start = Clock::now();
-  RunTally tally;
-  const auto summary = [&](const std::string& status, const std::string& message) {
-    tally.wall_seconds = seconds_since(wall_start);
-    provenance.end_time = iso8601_utc_now();
-    write_run_summary(run.folder, options.case_file, m, status, message, tally, provenance);
-  };
-  if (options.resume) {
-    if (!fs::exists(run.checkpoint))
-      throw InputError(fmt::format("--resume: no checkpoint in '{}'", run.folder.string()));
-    m.resume(run);
-    log.info("resumed from {} at step {}{}", run.checkpoint.string(), m.step(), m.position());
+    run_->log.info("resume: {} changed from {} to {} (a safe change; config.resolved.toml rewritten)", c.key,
+                   c.before, c.after);
+  wall_start_ = Clock::now();
+  if (options_.resume) {
+    if (!fs::exists(run_->checkpoint))
+      throw InputError(fmt::format("--resume: no checkpoint in '{}'", run_->folder.string()));
+    m.resume(*run_);
+    run_->log.info("resumed from {} at step {}{}", run_->checkpoint.string(), m.step(), m.position());
     if (m.finished()) {
-      log.info("nothing to do: the run was finished at step {}{}", m.step(), m.position());
-      return;
+      run_->log.info("nothing to do: the run was finished at step {}{}", m.step(), m.position());
+      return false;
     }
   } else {
-    m.start(run);
+    m.start(*run_);
   }
-  RunThermo thermo(run, m);
-
+  thermo_.emplace(*run_, m);
   clear_stop_request();
-  install_stop_handlers();
-  const std::int64_t first = m.step();
-  Progress progress(m.name(), first, m.steps_left(), !options.quiet);
-  const auto save = [&] {
-    const Clock::time_point t0 = Clock::now();
-    m.write_checkpoint(run.checkpoint);
-    write_file_atomically(stored_case_path(run.folder), root.case_toml());
-    tally.checkpoint_seconds += seconds_since(t0);
-  };
+  if (stop_handlers) install_stop_handlers();
+  first_step_ = m.step();
+  progress_.emplace(m.name(), first_step_, m.steps_left(), !options_.quiet);
+  return true;
+}
+
+void RunDriver::save() {
+  const Clock::time_point t0 = Clock::now();
+  {
+    const io::CheckpointCaseScope stored_case(root_.resolved_toml());  // the checkpoint's `case`
+    method_->write_checkpoint(run_->checkpoint);
+  }
+  write_file_atomically(stored_case_path(run_->folder), root_.case_toml());
+  tally_.checkpoint_seconds += seconds_since(t0);
+}
+
+void RunDriver::write_summary(const std::string& status, const std::string& message) {
+  tally_.wall_seconds = seconds_since(wall_start_);
+  provenance_->end_time = iso8601_utc_now();
+  write_run_summary(run_->folder, options_.case_file, *method_, status, message, tally_, *provenance_);
+}
+
+void RunDriver::step() {
+  Method& m = *method_;
   try {
-    while (!m.finished()) {
-      Clock::time_point t0 = Clock::now();
-      m.advance();
-      m.check_health();
-      tally.step_seconds += seconds_since(t0);
-      t0 = Clock::now();
-      m.write_outputs();
-      thermo.at_step();
-      tally.output_seconds += seconds_since(t0);
-      const std::int64_t step = m.step();
-      tally.steps = step - first;
-      if (m.checkpoint_every() > 0 && step % m.checkpoint_every() == 0) save();
-      progress.update(step, m.fraction_done());
-      if (stop_requested() || (options.stop_after > 0 && step - first == options.stop_after)) {
-        progress.finish(step);
-        const std::string wrote = m.write_stop_state();
-        save();
-        log.info("stopped at step {}{}: checkpoint written to {}{}", step, m.position(), run.checkpoint.string(),
-                 wrote.empty() ? "" : ", " + wrote);
-        const std::string message = fmt::format(
-            "stopped at step {}; continue with: shockfield run {} --output {} --resume", step,
-            options.case_file.string(), run.folder.string());
-        summary("stopped", message);
-        throw StopRequested(message);
-      }
+    Clock::time_point t0 = Clock::now();
+    m.advance();
+    m.check_health();
+    tally_.step_seconds += seconds_since(t0);
+    t0 = Clock::now();
+    m.write_outputs();
+    thermo_->at_step();
+    tally_.output_seconds += seconds_since(t0);
+    const std::int64_t step = m.step();
+    tally_.steps = step - first_step_;
+    if (m.checkpoint_every() > 0 && step % m.checkpoint_every() == 0) save();
+    progress_->update(step, m.fraction_done());
+    if (stop_requested() || (options_.stop_after > 0 && step - first_step_ == options_.stop_after)) {
+      progress_->finish(step);
+      const std::string wrote = m.write_stop_state();
+      save();
+      run_->log.info("stopped at step {}{}: checkpoint written to {}{}", step, m.position(),
+                     run_->checkpoint.string(), wrote.empty() ? "" : ", " + wrote);
+      const std::string message = fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
+                                              step, options_.case_file.string(), run_->folder.string());
+      write_summary("stopped", message);
+      throw StopRequested(message);
     }
   } catch (const RunError& e) {
     // Reporting the failure writes too (log.txt, the failure state, summary.json); on a full disk
     // that fails as well, and must not hide the error that stopped the run.
     try {
-      log.info("run stopped: {}", e.what());
+      run_->log.info("run stopped: {}", e.what());
       const std::string wrote = m.write_failure_state();
-      log.info("the output written so far is kept in {}{}", run.folder.string(), wrote.empty() ? "" : "; " + wrote);
-      summary("failed", e.what());
+      run_->log.info("the output written so far is kept in {}{}", run_->folder.string(),
+                     wrote.empty() ? "" : "; " + wrote);
+      write_summary("failed", e.what());
     } catch (const RunError& reporting) {
       throw RunError(fmt::format("{} (then, saving the failure state: {})", e.what(), reporting.what()));
     }
     throw;
   }
-  progress.finish(m.step());
+}
+
+void RunDriver::finish() {
+  Method& m = *method_;
+  progress_->finish(m.step());
   m.write_final_outputs();
-  thermo.at_end();
+  thermo_->at_end();
   save();
-  tally.wall_seconds = seconds_since(wall_start);
-  m.log_results(progress.rate(m.step()));
-  log_performance(log, m, tally);
-  summary("finished", "");
+  tally_.wall_seconds = seconds_since(wall_start_);
+  m.log_results(progress_->rate(m.step()));
+  log_performance(run_->log, m, tally_);
+  write_summary("finished", "");
+}
+
+void run_method(const Config& root, const RunOptions& options, const MethodFactory& make_method) {
+  RunDriver driver(root, options, make_method);
+  if (options.validate_only) {
+    std::printf("%s: valid %s\n", options.case_file.string().c_str(), driver.method().check_text().c_str());
+    return;
+  }
+  if (!driver.open()) return;
+  while (!driver.finished()) driver.step();
+  driver.finish();
 }
 
 }  // namespace shockfield

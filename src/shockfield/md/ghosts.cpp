@@ -99,6 +99,12 @@ std::size_t ghost_capacity(std::size_t nlocal, const geometry::Box& box, double 
   return static_cast<std::size_t>(static_cast<double>(nlocal) * std::min(factor, 64.0)) + 64;
 }
 
+std::size_t most_entries(std::size_t nlocal, const geometry::Box& box, double cutoff) {
+  std::size_t images = 1;
+  for (int d = 0; d < 3; ++d) images *= static_cast<std::size_t>(2 * image_layers(box, d, cutoff) + 1);
+  return nlocal * images;
+}
+
 void append_ghosts(Atoms& atoms, const geometry::Box& box, double cutoff) {
   wrap_owned(atoms, box);
   for (int d = 0; d < 3; ++d) {

@@ -22,4 +22,9 @@ void append_ghosts(Atoms& atoms, const geometry::Box& box, double cutoff);
 /// (no reallocation copying the owned atoms on one thread).
 std::size_t ghost_capacity(std::size_t nlocal, const geometry::Box& box, double cutoff);
 
+/// The most owned + ghost entries the box can give, however the atoms lie: an entry has at most
+/// 2 k + 1 images along a periodic dimension with k = ceil(cutoff / L) image layers, so
+/// n Π(2 k + 1). Reserved, it keeps x, type and f in place through every rebuild in this box.
+std::size_t most_entries(std::size_t nlocal, const geometry::Box& box, double cutoff);
+
 }  // namespace shockfield::md

@@ -10,6 +10,7 @@
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/size_limits.hpp"
+#include "shockfield/core/state_array.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/mpm/case_builder.hpp"
 #include "shockfield/mpm/case_file.hpp"
@@ -182,6 +183,12 @@ class MpmMethod final : public Method {
   double work_items() const override { return static_cast<double>(sim_.particles().size()); }
   std::string work_item_name() const override { return "particle"; }
 
+  std::vector<StateArray> state_arrays() override {
+    Particles& p = sim_.particles();  // also tells the simulation its particles may be written
+    return {state_array("positions", p.x, p.size(), "m"), state_array("velocities", p.v, p.size(), "m/s"),
+            state_array("masses", p.mass, p.size(), "kg"), state_array("volumes0", p.volume0, p.size(), "m³"),
+            state_array("materials", p.material, p.size())};
+  }
   double time() const override { return sim_.time(); }
   std::string time_unit() const override { return "s"; }
   // Energies and momentum, and the means over all particles and over each bottom window of

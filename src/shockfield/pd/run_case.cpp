@@ -13,6 +13,7 @@
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/size_limits.hpp"
+#include "shockfield/core/state_array.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/pd/bar_impact.hpp"
 #include "shockfield/pd/bond_force.hpp"
@@ -298,6 +299,11 @@ class PdMethod final : public Method {
   double work_items() const override { return static_cast<double>(cloud_.size()); }
   std::string work_item_name() const override { return "point"; }
 
+  std::vector<StateArray> state_arrays() override {
+    const std::size_t n = sim_.positions().size();
+    return {state_array("positions", sim_.positions(), n, "m"), state_array("velocities", sim_.velocities(), n, "m/s"),
+            state_array("force_densities", sim_.force_density(), n, "N/m³")};
+  }
   double time() const override { return sim_.time(); }
   std::string time_unit() const override { return "s"; }
   Json results() const override {

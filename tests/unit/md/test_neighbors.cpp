@@ -174,3 +174,25 @@ TEST(Ghosts, ReservedCapacityHoldsTheGhostsOfAUniformCrystal) {
   EXPECT_EQ(atoms.nghost(), 2929u);  // 1.125³ − 1 of the owned atoms: 3 of 24 lattice planes per axis are within 3.6 Å of a face
   EXPECT_LE(atoms.size(), capacity);
 }
+
+// most_entries() bounds owned + ghost entries however the atoms lie (the in-process views of
+// docs/python.md rely on it): atoms anywhere in a box shorter than the interaction range along
+// some axes (two image layers there), and reserving the bound keeps x in place through rebuilds.
+TEST(Ghosts, MostEntriesBoundsEveryRebuild) {
+  geometry::Box box;
+  Atoms owned = fixture::fcc_atoms(3.615, {5, 1, 3}, box, 63.55);
+  const double cut = 5.5;  // y: 3.615 Å long, 2 layers; x, z: 1 layer
+  const std::size_t bound = most_entries(owned.nlocal, box, cut);
+  EXPECT_EQ(bound, owned.nlocal * 3 * 5 * 3);
+  Atoms atoms = owned;
+  atoms.x.reserve(bound);
+  const Vec3* before = atoms.x.data();
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    Atoms moved = owned;
+    fixture::perturb(moved, 0.2 * static_cast<double>(seed), seed);  // up to 4 Å: any arrangement
+    std::copy(moved.x.begin(), moved.x.begin() + static_cast<std::ptrdiff_t>(moved.nlocal), atoms.x.begin());
+    rebuild_ghosts(atoms, box, cut);
+    ASSERT_LE(atoms.size(), bound) << seed;
+    ASSERT_EQ(atoms.x.data(), before) << seed;
+  }
+}

@@ -1,0 +1,106 @@
+"""A case run in-process and stepped from Python, with numpy views of its particles.
+
+    sim = shockfield.Simulation("tests/cli/cases/tiny_cu.toml", output="runs/cu", threads=2)
+    sim.step(10)
+    v = sim["velocities"]          # (n, 3) float64 over the simulation's own memory
+    v[:] = 0.0                     # the next step starts from rest
+    sim.step(sim.steps_left)
+    sim.finish()                   # final outputs, summary.json
+
+The method is built by the same registry and run by the same driver as ``shockfield run``, so
+the run folder holds the same files (thermo.csv, series.csv, dumps, checkpoints, summary.json);
+docs/python.md says what each method offers and what happens to a view across steps.
+"""
+
+import pathlib
+
+import numpy as np
+
+from .analysis import _require_core
+from .case import Case
+
+
+class Simulation:
+    """``Simulation(case, output, threads=0, overwrite=False, quiet=True)``: opens the run folder
+    ``output`` and starts the case (a ``Case`` or the path of a case file) in this process.
+
+    ``threads``: OpenMP threads for every step (0: OMP_NUM_THREADS, else all cores); ``quiet``:
+    no progress line. Bad input raises ``InputError`` with the command line's message, a failed
+    step ``RunError`` (the run folder keeps what was written)."""
+
+    def __init__(self, case, output, threads=0, overwrite=False, quiet=True):
+        if not isinstance(case, Case):
+            case = Case.load(case)
+        with case._case_file() as case_file:
+            self._core = _require_core().Simulation(str(case_file), list(case.overrides), str(output), int(threads),
+                                          bool(overwrite), bool(quiet))
+        self.folder = pathlib.Path(self._core.folder)
+
+    method = property(lambda self: self._core.method, doc='The method\'s name ("md", "mpm", "pd", ...).')
+    step_number = property(lambda self: self._core.step_number, doc="The step counter.")
+    time = property(lambda self: self._core.time, doc="Simulated time, in time_unit.")
+    time_unit = property(lambda self: self._core.time_unit, doc='"ps", "s" or "1" (lattice units).')
+    steps_left = property(lambda self: self._core.steps_left, doc="Steps left (an estimate for adaptive steps).")
+    finished = property(lambda self: self._core.finished, doc="True when no step is left.")
+    closed = property(lambda self: self._core.closed, doc="True after finish().")
+
+    def step(self, n=1):
+        """Advances ``n`` steps (fewer if the run ends first) with the scheduled outputs; returns
+        the number made. Raises ``ValueError`` when no step is left or after ``finish()``."""
+        return self._core.step(int(n))
+
+    def finish(self):
+        """Writes the end of the run (final outputs, last checkpoint, summary.json); every step
+        must have been made."""
+        self._core.finish()
+
+    def thermo(self):
+        """The thermo columns at the current step, as a dict (the values of a thermo.csv row)."""
+        return self._core.thermo()
+
+    def arrays(self):
+        """Every per-particle array as a numpy view (no copy) of the simulation's memory, by name:
+        md ``positions``, ``velocities``, ``forces`` (n, 3), ``types`` (0-based), ``ids``,
+        ``images`` and, when computed, ``energies``; mpm ``positions``, ``velocities``,
+        ``masses``, ``volumes0``, ``materials``; pd ``positions``, ``velocities``,
+        ``force_densities``. Writing into a view changes the simulation."""
+        return self._core.arrays()
+
+    def units(self):
+        """The unit of each array, by name ("" for indices)."""
+        return self._core.units()
+
+    def __getitem__(self, name):
+        views = self.arrays()
+        if name not in views:
+            raise KeyError(f"{self.method} simulation has no array {name!r}; it has: {', '.join(views)}")
+        return views[name]
+
+    def __setitem__(self, name, values):
+        """Copies ``values`` into the array ``name``: the same dtype and shape, nothing cast or
+        broadcast (``TypeError`` / ``ValueError`` otherwise)."""
+        view = self[name]
+        if not isinstance(values, np.ndarray):
+            raise TypeError(f"{name}: expected a numpy array of dtype {view.dtype} and shape {view.shape}, "
+                            f"got {type(values).__name__}")
+        if values.dtype != view.dtype:
+            raise TypeError(f"{name}: expected dtype {view.dtype}, got {values.dtype} "
+                            f"(convert with values.astype(numpy.{view.dtype}))")
+        if values.shape != view.shape:
+            raise ValueError(f"{name}: expected shape {view.shape}, got {values.shape}")
+        view[...] = values
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, value, traceback):
+        """A with block that ends without an exception on a run with no step left finishes it."""
+        if kind is None and self.finished and not self.closed:
+            self.finish()
+        return False
+
+    def __repr__(self):
+        return f"Simulation({self.method}, step {self.step_number}, folder {str(self.folder)!r})"
+
+
+__all__ = ["Simulation"]

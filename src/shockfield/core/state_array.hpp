@@ -1,0 +1,35 @@
+#pragma once
+// StateArray (method.hpp) descriptions of a method's std::vector storage: Vec3 (3 doubles, the
+// Eigen vector has no padding), std::array<int, 3>, double, int and std::int64_t entries.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "shockfield/core/method.hpp"
+#include "shockfield/core/types.hpp"
+
+namespace shockfield {
+
+/// The first `rows` entries of `values` as the state array `name` in `unit`.
+template <class T>
+StateArray state_array(std::string name, std::vector<T>& values, std::size_t rows, std::string unit = "") {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(std::array<int, 3>) == 3 * sizeof(int));
+  StateArray a{std::move(name), values.data(), rows, 1, StateArray::Type::f64, std::move(unit)};
+  if constexpr (std::is_same_v<T, Vec3>) {
+    a.columns = 3;
+  } else if constexpr (std::is_same_v<T, std::array<int, 3>>) {
+    a.columns = 3;
+    a.type = StateArray::Type::i32;
+  } else if constexpr (std::is_same_v<T, int>) {
+    a.type = StateArray::Type::i32;
+  } else if constexpr (std::is_same_v<T, std::int64_t>) {
+    a.type = StateArray::Type::i64;
+  } else {
+    static_assert(std::is_same_v<T, double>, "a state array holds Vec3, int[3], double, int or int64 entries");
+  }
+  return a;
+}
+
+}  // namespace shockfield

@@ -1,0 +1,173 @@
+"""shockfield.Simulation: a case run in-process and stepped from Python (ctest python.test_simulation).
+
+- The arrays are views: zeroing the velocities of the 256-atom Cu crystal between two NVE steps
+  makes the next step start from rest, so velocity Verlet gives v = dt/(2m) (f0 + f1) ftm2v
+  from the forces before (f0) and after (f1) the step, and the thermo row's KinEng is
+  ½ mvv2e m Σv² of it (to 1e-12 relative: the same formula evaluated in another order).
+- The views stay valid: over 120 steps at 600 K (neighbour rebuilds in the log) the arrays keep
+  their address and an old view reads what a fresh one does.
+- Per-atom energies (computed for a `pe` dump column) sum to the thermo PotEng at a dump step.
+- The run is the command line's: the in-process run's thermo.csv, series.csv and dumps are
+  bytewise those of `shockfield run` with the same values and thread count (views taken).
+- Mistakes raise: a wrong dtype or shape on assignment, stepping a run with no step left or one
+  closed by finish(), finishing early, a bad key (the command line's message).
+"""
+
+import os
+import pathlib
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+import shockfield
+
+SF = os.environ["SHOCKFIELD_BIN"]
+CASES = pathlib.Path(os.environ["SHOCKFIELD_SOURCE"]) / "tests" / "cli" / "cases"
+MVV2E = 1.0364269e-4  # amu·Å²/ps² -> eV (core/units.hpp, LAMMPS metal units)
+FTM2V = 1.0 / MVV2E
+
+
+def small_cu(steps_warm, steps_run):
+    case = shockfield.Case.load(CASES / "tiny_cu.toml")
+    return case.set("stage[0].steps", steps_warm).set("stage[1].steps", steps_run)
+
+
+class InProcess(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = pathlib.Path(self.tmp.name)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def cli(self, case, folder, *args):
+        command = [SF, "run", str(case), "-o", str(folder), "-q", *args]
+        process = subprocess.run(command, capture_output=True, text=True)
+        self.assertEqual(process.returncode, 0, process.stderr)
+
+    def assert_same_files(self, a, b, suffixes):
+        names = sorted(str(p.relative_to(b)) for p in b.rglob("*") if p.suffix in suffixes)
+        self.assertTrue(names)
+        for name in names:
+            self.assertEqual((a / name).read_bytes(), (b / name).read_bytes(), name)
+        return names
+
+    def test_zeroed_velocities_give_the_predicted_next_step(self):
+        case = small_cu(10, 10).set("output.thermo_every", 1)
+        sim = shockfield.Simulation(case, self.dir / "run", threads=2)
+        self.assertEqual(sim.method, "md")
+        sim.step(11)  # into the NVE stage
+        v, f = sim["velocities"], sim["forces"]
+        self.assertEqual((v.shape, v.dtype, f.shape), ((256, 3), np.float64, (256, 3)))
+        mass = 2.0 * sim.thermo()["KinEng"] / (MVV2E * np.sum(v * v))  # one element: Cu
+        f0 = f.copy()
+        v[:] = 0.0
+        self.assertEqual(sim.step(1), 1)
+        predicted = 0.5 * 0.002 * FTM2V * (f0 + f) / mass
+        np.testing.assert_allclose(v, predicted, rtol=1e-12, atol=1e-14)
+        ke = 0.5 * MVV2E * mass * np.sum(predicted * predicted)
+        self.assertAlmostEqual(sim.thermo()["KinEng"] / ke, 1.0, delta=1e-12)
+        last = np.genfromtxt(self.dir / "run" / "thermo.csv", delimiter=",", names=True)[-1]
+        self.assertEqual(int(last["step"]), 12)
+        self.assertAlmostEqual(last["ke_eV"] / ke, 1.0, delta=1e-9)  # 10 printed digits
+        sim.step(sim.steps_left)
+        sim.finish()
+        self.assertTrue((self.dir / "run" / "summary.json").is_file())
+
+    def test_views_stay_valid_across_neighbour_rebuilds(self):
+        with shockfield.Simulation(small_cu(60, 60), self.dir / "run", threads=2) as sim:
+            old = sim.arrays()
+            address = {name: a.__array_interface__["data"][0] for name, a in old.items()}
+            while not sim.finished:
+                sim.step(15)
+                fresh = sim.arrays()
+                for name in ("positions", "velocities", "forces", "types", "ids", "images"):
+                    self.assertEqual(fresh[name].__array_interface__["data"][0], address[name], name)
+                    np.testing.assert_array_equal(old[name], fresh[name])
+            self.assertEqual(sim.step_number, 120)
+        log = (self.dir / "run" / "log.txt").read_text()
+        rebuilds = [int(line.split("(")[1].split(",")[1].split()[0]) for line in log.splitlines()
+                    if "neighbour rebuilds)" in line]
+        self.assertGreater(sum(rebuilds), 0, log)
+
+    def test_per_atom_energies_sum_to_the_potential_energy(self):
+        case = small_cu(5, 5).set("output.dump_fields", ["id", "type", "x", "y", "z", "pe"])
+        sim = case.set("output.dump_every", 5).simulation(self.dir / "run", threads=1)
+        sim.step(5)  # a dump step: per-atom energies computed
+        e = sim["energies"]
+        self.assertEqual(e.shape, (256,))
+        self.assertAlmostEqual(e.sum() / sim.thermo()["PotEng"], 1.0, delta=1e-13)  # summed in another order
+
+    def test_md_is_the_command_lines(self):
+        sets = ["stage[0].steps=20", "stage[1].steps=20", "output.dump_every=20"]
+        case = shockfield.Case.load(CASES / "tiny_cu.toml")
+        for s in sets:
+            key, value = s.split("=")
+            case.set(key, int(value))
+        sim = case.simulation(self.dir / "py", threads=2)
+        sim.arrays()  # views taken: they must not change the run
+        sim.step(7)
+        sim.step(100)
+        sim.finish()
+        self.cli(CASES / "tiny_cu.toml", self.dir / "cli", "-j", "2", *sum((["--set", s] for s in sets), []))
+        names = self.assert_same_files(self.dir / "py", self.dir / "cli", (".csv", ".lammpstrj"))
+        self.assertIn("thermo.csv", names)
+
+    def test_mpm_and_pd_are_the_command_lines(self):
+        for case in ("mpm_tiny.toml", "pd_tiny.toml"):
+            with self.subTest(case=case):
+                sim = shockfield.Simulation(CASES / case, self.dir / case / "py", threads=2)
+                sim.arrays()  # views taken (mpm then recomputes its fastest wave speed: the same value)
+                while not sim.finished:
+                    sim.step(25)
+                sim.finish()
+                self.cli(CASES / case, self.dir / case / "cli", "-j", "2")
+                names = self.assert_same_files(self.dir / case / "py", self.dir / case / "cli", (".csv",))
+                self.assertIn("series.csv", names)
+
+    def test_mpm_and_pd_views(self):
+        for case in ("mpm_tiny.toml", "pd_tiny.toml"):
+            with self.subTest(case=case):
+                sim = shockfield.Simulation(CASES / case, self.dir / case, threads=1)
+                x, v = sim["positions"], sim["velocities"]
+                self.assertEqual((x.ndim, x.shape[1], x.dtype), (2, 3, np.float64))
+                self.assertEqual(v.shape, x.shape)
+                self.assertEqual(sim.units()["velocities"], "m/s")
+                before = x.copy()
+                sim.step(3)
+                self.assertFalse(np.array_equal(before, x))  # the view follows the particles
+
+    def test_mistakes_raise(self):
+        sim = shockfield.Simulation(small_cu(2, 2), self.dir / "run", threads=1)
+        with self.assertRaisesRegex(TypeError, "velocities: expected dtype float64, got float32"):
+            sim["velocities"] = np.zeros((256, 3), dtype=np.float32)
+        with self.assertRaisesRegex(ValueError, r"velocities: expected shape \(256, 3\), got \(3, 256\)"):
+            sim["velocities"] = np.zeros((3, 256))
+        with self.assertRaisesRegex(KeyError, "md simulation has no array 'temperature'; it has: positions"):
+            sim["temperature"]
+        with self.assertRaisesRegex(ValueError, "finish\\(\\): 4 step\\(s\\) left"):
+            sim.finish()
+        with self.assertRaisesRegex(ValueError, "expected a number of steps >= 0"):
+            sim.step(-1)
+        self.assertEqual(sim.step(10), 4)
+        with self.assertRaisesRegex(ValueError, r"step\(1\): the run has no step left \(at step 4\)"):
+            sim.step(1)
+        sim.finish()
+        with self.assertRaisesRegex(ValueError, "the run was closed by finish"):
+            sim.step(1)
+        sim["velocities"][:] = 0.0  # a view outlives the run's end: the memory is the Simulation's
+        bad = shockfield.Case.load(CASES / "tiny_cu.toml")
+        bad.overrides.append("md.timestepp=0.001")
+        with self.assertRaises(shockfield.InputError) as caught:
+            shockfield.Simulation(bad, self.dir / "bad")
+        process = subprocess.run([SF, "run", str(CASES / "tiny_cu.toml"), "-o", str(self.dir / "bad2"),
+                                  "--set", "md.timestepp=0.001"], capture_output=True, text=True)
+        self.assertEqual(process.returncode, 2)
+        self.assertEqual(str(caught.exception), process.stderr.strip().removeprefix("error: "))
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0], "-v"])
