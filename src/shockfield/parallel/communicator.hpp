@@ -1,9 +1,10 @@
 #pragma once
 // The one place shockfield talks to MPI (docs/parallel.md). A Communicator is a group of ranks
 // (the world, or a Cartesian rank grid made from it) with the few operations the decomposition
-// needs. Two implementations share this header: communicator_mpi.cpp (SHOCKFIELD_MPI) and
-// communicator_serial.cpp (one rank, no MPI), so the code above it has no #ifdef. No MPI type
-// appears here: the MPI handle lives in the implementation file.
+// needs, carried out by a backend (communicator_backend.hpp): MPI's (communicator_mpi.cpp, in a
+// build with SHOCKFIELD_MPI, for a program started by mpirun) or one rank's (communicator_single.cpp:
+// a build without MPI, or a program started without mpirun, which then never starts MPI — its
+// start-up costs about a second). The code above this header has no #ifdef and sees no MPI type.
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -18,9 +19,10 @@ inline constexpr int no_rank = -1;
 /// "built (Open MPI v4.1.4, ...)" or "not built": for `shockfield --version`.
 std::string mpi_build_text();
 
-/// MPI for the life of the program (MPI_Init_thread with MPI_THREAD_FUNNELED: OpenMP threads
-/// compute, the main thread communicates); nothing in the serial build. Ranks other than 0 print
-/// nothing: their stdout and stderr go to /dev/null, so each message appears once.
+/// MPI for the life of the program when started by mpirun (MPI_Init_thread with
+/// MPI_THREAD_FUNNELED: OpenMP threads compute, the main thread communicates); nothing otherwise.
+/// Ranks other than 0 print nothing: their stdout and stderr go to /dev/null, so each message
+/// appears once.
 class Environment {
  public:
   Environment(int& argc, char**& argv);
@@ -60,11 +62,11 @@ class Communicator {
   std::array<int, 3> coordinates() const;
   std::array<int, 2> neighbours(int axis) const;
 
-  struct Handle;  // the MPI communicator (communicator_mpi.cpp)
+  class Backend;  // communicator_backend.hpp
+  explicit Communicator(std::shared_ptr<const Backend> backend) : backend_(std::move(backend)) {}
 
  private:
-  explicit Communicator(std::shared_ptr<const Handle> handle) : handle_(std::move(handle)) {}
-  std::shared_ptr<const Handle> handle_;
+  std::shared_ptr<const Backend> backend_;
 };
 
 }  // namespace shockfield::parallel

@@ -4,11 +4,13 @@
 
 namespace shockfield::parallel {
 
-HaloExchange::HaloExchange(const Communicator& grid, const GridLayout& layout) : comm_(grid), layout_(layout) {
+HaloExchange::HaloExchange(const Communicator& grid, const GridLayout& layout, const std::array<bool, 3>& exchanged)
+    : comm_(grid), layout_(layout) {
   for (int a = 0; a < 3; ++a) {
-    if (layout.ghosts[a] > layout.interior[a])
+    const bool used = exchanged[a] && layout.ghosts[a] > 0;
+    if (used && layout.ghosts[a] > layout.interior[a])
       throw std::logic_error("halo exchange: a block thinner than its ghost layers");
-    neighbours_[a] = layout.ghosts[a] > 0 ? grid.neighbours(a) : std::array<int, 2>{no_rank, no_rank};
+    neighbours_[a] = used ? grid.neighbours(a) : std::array<int, 2>{no_rank, no_rank};
   }
 }
 
@@ -43,8 +45,8 @@ void HaloExchange::copy_slab(double* data, int axis, int first, std::vector<doub
 
 void HaloExchange::exchange(double* data, int axis) const {
   const int w = layout_.ghosts[axis], n = layout_.interior[axis];
-  if (w == 0) return;
   const auto [low, high] = neighbours_[axis];
+  if (low == no_rank && high == no_rank) return;
   std::vector<double> send(slab_size(axis)), recv(slab_size(axis));
   // Low face to the low neighbour, the high neighbour's low face into the high ghosts; then back.
   copy_slab(data, axis, 0, send, true);

@@ -17,8 +17,11 @@ namespace shockfield::parallel {
 class HaloExchange {
  public:
   /// `grid`: a Cartesian communicator (RankGrid::comm()); `layout`: this rank's block, whose
-  /// interior must be at least ghosts[a] cells along each axis a with ghosts.
-  HaloExchange(const Communicator& grid, const GridLayout& layout);
+  /// interior must be at least ghosts[a] cells along each exchanged axis a; `exchanged`: the axes
+  /// whose ghosts come from the ranks (a method may keep an uncut axis to itself: the DBM fills
+  /// a periodic axis of one rank as its serial run does, which also serves a 1-cell axis).
+  HaloExchange(const Communicator& grid, const GridLayout& layout,
+               const std::array<bool, 3>& exchanged = {true, true, true});
 
   /// Fills the ghost layers of `axis` in `data` (layout.components × layout.component_stride).
   void exchange(double* data, int axis) const;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <limits>
 
 #include "shockfield/core/error.hpp"
@@ -72,6 +73,17 @@ void check_rank_grid(const Dims3& dims, const Cells3& cells, int ranks, int min_
       throw InputError(fmt::format("--rank-grid cuts {} ({} cells) into {} blocks: at most {} fit, each needs "
                                    "at least {} cells (the stencil's ghost layers)",
                                    axis_name[a], cells[a], dims[a], max_parts(cells[a], min_cells), min_cells));
+}
+
+Dims3 parse_rank_grid(const std::string& text) {
+  Dims3 dims{1, 1, 1};
+  char x1 = 0, x2 = 0, rest = 0;
+  const int read = std::sscanf(text.c_str(), "%d%c%d%c%d%c", &dims[0], &x1, &dims[1], &x2, &dims[2], &rest);
+  const bool ok = (read == 3 && x1 == 'x') || (read == 5 && x1 == 'x' && x2 == 'x');
+  if (!ok || dims[0] < 1 || dims[1] < 1 || dims[2] < 1)
+    throw InputError(fmt::format("--rank-grid '{}': expected the ranks along x, y (and z) as PxQ or PxQxR, "
+                                 "each at least 1 (e.g. 2x2)", text));
+  return dims;
 }
 
 RankGrid::RankGrid(const Communicator& world, const Dims3& dims, const std::array<bool, 3>& periodic,

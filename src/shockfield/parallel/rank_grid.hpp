@@ -3,6 +3,7 @@
 // each axis, which block of cells each rank owns, and its neighbours. The same grid serves every
 // grid method (DBM today; MPM's background grid and phase field later).
 #include <array>
+#include <string>
 
 #include "shockfield/parallel/communicator.hpp"
 
@@ -29,6 +30,9 @@ Dims3 choose_rank_grid(const Cells3& cells, int ranks, int min_cells);
 /// InputError unless `dims` (as given by the user) has `ranks` ranks and cuts no axis into blocks
 /// of fewer than `min_cells` cells.
 void check_rank_grid(const Dims3& dims, const Cells3& cells, int ranks, int min_cells);
+
+/// The rank grid of `--rank-grid`: "PxQ" or "PxQxR" (R = 1 when left out); InputError otherwise.
+Dims3 parse_rank_grid(const std::string& text);
 
 class RankGrid {
  public:
