@@ -23,6 +23,10 @@ class Communicator::Backend {
   virtual std::array<int, 2> neighbours(int axis) const = 0;
 };
 
+/// The rank count mpirun (Open MPI, or a PMI launcher: MPICH's Hydra, Slurm) left in this
+/// process's environment, or 0 when it was not started by one (communicator_single.cpp).
+int launcher_world_size();
+
 /// One rank, no MPI (communicator_single.cpp).
 std::shared_ptr<const Communicator::Backend> single_rank_backend();
 /// The world of this run: MPI's under mpirun in an MPI build, else single_rank_backend()

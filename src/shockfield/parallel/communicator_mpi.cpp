@@ -14,12 +14,7 @@
 namespace shockfield::parallel {
 namespace {
 
-// mpirun (Open MPI, or a PMI launcher: MPICH's Hydra, Slurm) leaves these in each rank's environment.
-bool launched_by_mpirun() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"})
-    if (std::getenv(name)) return true;
-  return false;
-}
+bool launched_by_mpirun() { return launcher_world_size() > 0; }
 
 bool mpi_running() {
   int initialized = 0, finalized = 0;

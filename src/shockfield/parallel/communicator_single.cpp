@@ -1,5 +1,7 @@
 // One rank without MPI (communicator_backend.hpp): every collective is a copy, and a Cartesian
 // grid is 1 × 1 × 1 whose periodic axes are their own neighbours.
+#include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "shockfield/parallel/communicator_backend.hpp"
@@ -38,6 +40,12 @@ class SingleRank final : public Communicator::Backend {
 };
 
 }  // namespace
+
+int launcher_world_size() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* value = std::getenv(name)) return std::max(1, std::atoi(value));
+  return std::getenv("PMIX_RANK") || std::getenv("PMI_RANK") ? 1 : 0;
+}
 
 std::shared_ptr<const Communicator::Backend> single_rank_backend() { return std::make_shared<SingleRank>(); }
 
