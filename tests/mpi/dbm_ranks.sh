@@ -8,7 +8,7 @@
 # --rank-grid that is not the rank count, a method that is not decomposed — exits 2 on every rank
 # with the message printed once; a blow-up exits 3 with the serial run's message.
 # Usage: dbm_ranks.sh SHOCKFIELD SOURCE_DIR MPIEXEC PART, PART one of sod (the tube on 1, 2, 4
-# ranks; stop and resume), grids_2d (the 2D cases on four rank grids; label slow), bad_input.
+# ranks and 2 ranks x 2 threads; stop and resume), grids_2d (the 2D cases on four rank grids; label slow), bad_input.
 source "$(dirname "$0")/../cli/lib.bash"
 MPIEXEC="$3"
 PART="$4"
@@ -48,6 +48,11 @@ for np in 1 2 4; do
   mpi $np run "$WORK/sod.toml" --output "$WORK/np$np" -q > /dev/null
   same_outputs "$WORK/serial" "$WORK/np$np" "sod on $np ranks"
 done
+grep -q "on 4 ranks (rank grid 4 x 1 x 1)" "$WORK/np4/log.txt" || fail "the log does not give the rank grid"
+# Hybrid: 2 ranks x 2 OpenMP threads (unbound, so the threads may use both cores).
+OMP_NUM_THREADS=2 "$MPIEXEC" --oversubscribe --allow-run-as-root --bind-to none -np 2 "$SF" run "$WORK/sod.toml" \
+  --output "$WORK/hybrid" -q > /dev/null
+same_outputs "$WORK/serial" "$WORK/hybrid" "sod on 2 ranks x 2 threads"
 fi
 if [ "$PART" = grids_2d ]; then
 for y in periodic walls; do

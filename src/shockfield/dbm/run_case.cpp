@@ -77,8 +77,13 @@ class DbmMethod final : public Method {
 
   std::string name() const override { return "dbm"; }
   std::string size_text() const override {
-    return fmt::format("{} x {} cells, D2V16{}, tau {}", c_.lattice.nx, c_.lattice.ny,
-                       c_.gls ? ", GLS liquid-vapour" : "", c_.bgk.tau);
+    const std::string ranks =
+        decomposition_ ? fmt::format(", on {} ranks (rank grid {} x {} x {})", decomposition_->grid().comm().size(),
+                                     decomposition_->grid().dims()[0], decomposition_->grid().dims()[1],
+                                     decomposition_->grid().dims()[2])
+                       : "";
+    return fmt::format("{} x {} cells, D2V16{}, tau {}{}", c_.lattice.nx, c_.lattice.ny,
+                       c_.gls ? ", GLS liquid-vapour" : "", c_.bgk.tau, ranks);
   }
   std::string check_text() const override {
     // The distributions, and per cell 5 reactant arrays with [reaction] and ~10 GLS values.
