@@ -260,8 +260,13 @@ std::unique_ptr<Method> make_method(const Config& root, const RunOptions& option
 }
 
 void serve_ranks(const Config& root, const RunOptions& options) {
-  const std::unique_ptr<Method> method = make_method(root, options);
-  static_cast<DbmMethod&>(*method).serve();
+  const std::unique_ptr<Method> method = make_method(root, options);  // bad input: thrown on every rank
+  try {
+    static_cast<DbmMethod&>(*method).serve();
+  } catch (const std::exception&) {
+    // A failure of this rank alone (out of memory): rank 0 waits in a collective, so end them all.
+    parallel::Communicator::world().abort(3);
+  }
 }
 
 void run_case(const Config& root, const RunOptions& options) { run_method(root, options, &make_method); }

@@ -23,6 +23,7 @@ std::vector<double> Communicator::scatter(const std::vector<std::vector<double>>
                                           int root) const {
   return backend_->scatter(pieces, count, root);
 }
+void Communicator::abort(int code) const { backend_->abort(code); }
 Communicator Communicator::cartesian(const std::array<int, 3>& dims, const std::array<bool, 3>& periodic) const {
   return Communicator(backend_->cartesian(dims, periodic));
 }

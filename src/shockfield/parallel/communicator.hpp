@@ -54,6 +54,10 @@ class Communicator {
   /// Rank r receives pieces[r] of `root` (pieces ignored elsewhere; `count` is this rank's length).
   std::vector<double> scatter(const std::vector<std::vector<double>>& pieces, std::size_t count, int root = 0) const;
 
+  /// Ends every rank of the run with exit code `code` (MPI_Abort): for a failure on one rank that
+  /// the others, waiting in a collective, would never learn of.
+  void abort(int code) const;
+
   /// A Cartesian grid of dims[0] × dims[1] × dims[2] ranks (MPI_Cart_create, no reordering, so
   /// the grid's rank r is the world's rank r); `periodic` per axis. Collective.
   Communicator cartesian(const std::array<int, 3>& dims, const std::array<bool, 3>& periodic) const;

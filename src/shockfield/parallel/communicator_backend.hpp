@@ -17,6 +17,7 @@ class Communicator::Backend {
   virtual std::vector<double> all_gather(const std::vector<double>& local) const = 0;
   virtual std::vector<double> scatter(const std::vector<std::vector<double>>& pieces, std::size_t count,
                                       int root) const = 0;
+  virtual void abort(int code) const = 0;
   virtual std::shared_ptr<const Backend> cartesian(const std::array<int, 3>& dims,
                                                    const std::array<bool, 3>& periodic) const = 0;
   virtual std::array<int, 3> coordinates() const = 0;

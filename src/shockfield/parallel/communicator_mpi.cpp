@@ -101,6 +101,7 @@ class MpiRanks final : public Communicator::Backend {
                  root, comm_);
     return mine;
   }
+  void abort(int code) const override { MPI_Abort(comm_, code); }
   std::shared_ptr<const Backend> cartesian(const std::array<int, 3>& dims,
                                            const std::array<bool, 3>& periodic) const override {
     const std::array<int, 3> periods{periodic[0], periodic[1], periodic[2]};

@@ -24,6 +24,7 @@ class SingleRank final : public Communicator::Backend {
   std::vector<double> scatter(const std::vector<std::vector<double>>& pieces, std::size_t, int) const override {
     return pieces.at(0);
   }
+  void abort(int code) const override { std::exit(code); }
   std::shared_ptr<const Backend> cartesian(const std::array<int, 3>& dims,
                                            const std::array<bool, 3>& periodic) const override {
     if (dims != std::array<int, 3>{1, 1, 1}) throw std::logic_error("one rank: its rank grid is 1 x 1 x 1");
