@@ -27,6 +27,11 @@ install(FILES ${CMAKE_BINARY_DIR}/shockfieldConfig.cmake ${CMAKE_BINARY_DIR}/sho
 # pkg-config: the include and link flags of the library and of the libraries it uses.
 string(REPLACE ";" " -I" shockfield_pc_hdf5_cflags "-I${HDF5_INCLUDE_DIRS}")
 string(REPLACE ";" " " shockfield_pc_hdf5_libs "${HDF5_C_LIBRARIES}")
+# Built with SHOCKFIELD_MPI: the MPI libraries too (Open MPI's ompi-cxx.pc is not always there).
+if(SHOCKFIELD_MPI)
+  string(REPLACE ";" " " shockfield_pc_mpi_libs "${MPI_CXX_LIBRARIES}")
+  string(APPEND shockfield_pc_hdf5_libs " ${shockfield_pc_mpi_libs}")
+endif()
 # The prefix is found from the .pc file's own place, so the tree can be moved after installing.
 file(RELATIVE_PATH shockfield_pc_to_prefix /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
 configure_file(${CMAKE_SOURCE_DIR}/cmake/shockfield.pc.in ${CMAKE_BINARY_DIR}/shockfield.pc @ONLY)

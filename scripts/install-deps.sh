@@ -8,6 +8,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libnanoflann-dev libcgal-dev zlib1g-dev
   lammps python3-numpy python3-scipy python3-skimage python3-matplotlib python3-ase python3-vtk9 python3-h5py
   pybind11-dev python3-pybind11 python3-dev
+  libopenmpi-dev openmpi-bin
 )
 missing=()
 for p in "${packages[@]}"; do

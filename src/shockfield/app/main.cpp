@@ -7,8 +7,11 @@
 #include "shockfield/app/commands.hpp"
 #include "shockfield/app/sweep_command.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/parallel/communicator.hpp"
 
 int main(int argc, char** argv) {
+  // MPI (when built) for the whole program; ranks other than 0 print nothing (docs/parallel.md).
+  const shockfield::parallel::Environment mpi(argc, argv);
   CLI::App app{
       "shockfield " SHOCKFIELD_VERSION
       " - shock response of heterogeneous materials, from atoms to the sample.\n"

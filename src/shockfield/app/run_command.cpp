@@ -1,23 +1,48 @@
 // `shockfield run CASE.toml`: validates the case file, then runs the method it names.
+#include <fmt/format.h>
 #include <omp.h>
+
+#include <map>
 
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/run_options.hpp"
+#include "shockfield/dbm/run_case.hpp"
 #include "shockfield/io/checked_file.hpp"
+#include "shockfield/parallel/communicator.hpp"
 #include "shockfield/registry/method_registry.hpp"
 
 namespace shockfield::app {
 namespace {
+
+// The methods whose lattice or box is decomposed over MPI ranks (docs/parallel.md), with what the
+// ranks other than 0 run: rank 0 runs the driver as in a serial run and drives them.
+using RankServer = void (*)(const Config&, const RunOptions&);
+const std::map<std::string, RankServer>& decomposed_methods() {
+  static const std::map<std::string, RankServer> table{{"dbm", &dbm::serve_ranks}};
+  return table;
+}
 
 // `resolved_file`: with --check, where the resolved case (every value read, defaults and
 // [derived]) goes, as config.resolved.toml would hold it (the Python module's Case.check()).
 void run(const RunOptions& options, const std::string& resolved_file) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const Config root = Config::load(options.case_file, options.overrides);
-  run_method(root, options, method_factory(root));
+  const MethodFactory& factory = method_factory(root);  // validates `method`
+  const parallel::Communicator world = parallel::Communicator::world();
+  if (world.size() > 1 || !options.rank_grid.empty()) {
+    const std::string method = root.get_string("method");
+    const auto server = decomposed_methods().find(method);
+    if (server == decomposed_methods().end())
+      throw InputError(fmt::format("{}: method '{}' runs on one rank only so far ({} ranks started{}); run it "
+                                   "without mpirun; docs/parallel.md lists the decomposed methods",
+                                   options.case_file.string(), method, world.size(),
+                                   options.rank_grid.empty() ? "" : ", --rank-grid given"));
+    if (!world.is_root()) return server->second(root, options);
+  }
+  run_method(root, options, factory);
   if (!resolved_file.empty()) io::replace_file(resolved_file, root.resolved_toml());
 }
 
@@ -47,6 +72,11 @@ void add_run_command(CLI::App& app, const std::vector<std::string>& command_line
                   "OpenMP threads (default: OMP_NUM_THREADS, else all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("-q,--quiet", options->quiet, "No progress line");
+  cmd->add_option("--rank-grid", options->rank_grid,
+                  "MPI ranks along x, y (and z) as PxQ or PxQxR, their product the rank count\n"
+                  "(mpirun -np); default: the grid with the least halo traffic (dbm only;\n"
+                  "docs/parallel.md)")
+      ->type_name("PxQ");
   cmd->add_option("--stop-after", options->stop_after,
                   "Stop after this many steps as Ctrl-C would (checkpoint, exit code 130)")
       ->check(CLI::NonNegativeNumber);

@@ -9,6 +9,7 @@
 #include "shockfield/app/python_helpers.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/provenance.hpp"
+#include "shockfield/parallel/communicator.hpp"
 
 namespace shockfield::app {
 namespace {
@@ -35,11 +36,7 @@ std::string version_text() {
                                  p.git_commit, p.build_type, p.compiler);
   text += fmt::format("  OpenMP: {}\n  FFTW: {}\n  HDF5: {}\n", openmp_version(), fftw_version,
                       hdf5_version());
-#ifdef SHOCKFIELD_WITH_MPI
-  text += "  MPI: built\n";
-#else
-  text += "  MPI: not built\n";
-#endif
+  text += fmt::format("  MPI: {}\n", parallel::mpi_build_text());
 #ifdef SHOCKFIELD_PYTHON_MODULE_FOR
   text += "  Python module: built for " SHOCKFIELD_PYTHON_MODULE_FOR "\n";
 #else

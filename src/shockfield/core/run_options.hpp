@@ -16,6 +16,7 @@ struct RunOptions {
   bool quiet = false;                            ///< no progress line
   bool validate_only = false;                    ///< check the case file and stop
   long long stop_after = 0;                      ///< stop as on Ctrl-C after this many steps (0: never)
+  std::string rank_grid;                         ///< --rank-grid PxQ[xR]: the MPI rank grid; empty: chosen
   std::optional<double> piston_speed;            ///< Å/ps: replaces the speed of every [stage.piston]
   std::vector<std::string> overrides;            ///< --set KEY=VALUE, in command-line order
   std::vector<std::string> command_line;         ///< argv of the program, for provenance

@@ -53,10 +53,12 @@ class GhostFiller {
   GhostFiller(const VelocityModel& model, const MomentInversion& inversion, double b,
               const Lattice& lattice, const Boundaries& boundaries);
   void fill(std::vector<double>& f) const;
+  /// Fills the ghosts of one side (x-low, x-high, y-low, y-high); x sides fill the interior rows,
+  /// y sides every column including the x ghosts (corners), so x sides go first.
+  void fill_side(std::vector<double>& f, int side) const;
 
  private:
   // Ghost cell g takes its value from interior cell s of the same row/column (mirror index).
-  void fill_side(std::vector<double>& f, int side) const;
   Macro moments_at(const std::vector<double>& f, std::size_t cell) const;
 
   const VelocityModel& model_;

@@ -12,6 +12,7 @@
 #include "shockfield/core/size_limits.hpp"
 #include "shockfield/dbm/case_file.hpp"
 #include "shockfield/dbm/checkpoint.hpp"
+#include "shockfield/dbm/decomposition.hpp"
 #include "shockfield/dbm/detonation.hpp"
 #include "shockfield/dbm/gls_run.hpp"
 #include "shockfield/dbm/reaction.hpp"
@@ -56,21 +57,33 @@ void derive(const Config& root, const DbmCase& c, const Simulation& sim) {
 
 // The discrete Boltzmann method as a plug-in of the run driver: a whole number of steps of dt to
 // end_time; rows and frames at the first step at or past k·interval.
+// Under mpirun (or with --rank-grid) the lattice is decomposed (decomposition.hpp): the ranks
+// step their blocks; sim_ is rank 0's whole lattice, refreshed from the blocks (current()) before
+// anything reads its state, and the other ranks only serve().
 class DbmMethod final : public Method {
  public:
-  DbmMethod(const Config& root, const DbmCase& c, const CaseStability& stability)
+  DbmMethod(const Config& root, const DbmCase& c, const CaseStability& stability, const RunOptions& options)
       : c_(c), sim_(c_.model, c_.lattice, c_.boundaries, c_.bgk, false), tol_(1e-9 * c_.bgk.dt) {
     // The lattice's arrays (distributions, reactant, GLS force) are allocated when the run starts
     // (allocate()), so that --check validates a lattice of any allowed size without them.
     if (c_.gls) GlsForce::validate(sim_, c_.boundaries, c_.gls->settings);
     derive(root, c_, sim_);
     derive_stability(root, stability);
+    if (parallel::Communicator::world().size() > 1 || !options.rank_grid.empty())
+      decomposition_ = std::make_unique<Decomposition>(c_, options.rank_grid);
   }
+  /// The ranks other than 0: the blocks' part of the run, driven by rank 0.
+  void serve() { decomposition_->serve(); }
 
   std::string name() const override { return "dbm"; }
   std::string size_text() const override {
-    return fmt::format("{} x {} cells, D2V16{}, tau {}", c_.lattice.nx, c_.lattice.ny,
-                       c_.gls ? ", GLS liquid-vapour" : "", c_.bgk.tau);
+    const std::string ranks =
+        decomposition_ ? fmt::format(", on {} ranks (rank grid {} x {} x {})", decomposition_->grid().comm().size(),
+                                     decomposition_->grid().dims()[0], decomposition_->grid().dims()[1],
+                                     decomposition_->grid().dims()[2])
+                       : "";
+    return fmt::format("{} x {} cells, D2V16{}, tau {}{}", c_.lattice.nx, c_.lattice.ny,
+                       c_.gls ? ", GLS liquid-vapour" : "", c_.bgk.tau, ranks);
   }
   std::string check_text() const override {
     // The distributions, and per cell 5 reactant arrays with [reaction] and ~10 GLS values.
@@ -94,30 +107,40 @@ class DbmMethod final : public Method {
       else
         sim_.initialize(initial);
     }
+    if (decomposition_) decomposition_->scatter(sim_);
     open(run, false);
     write_due();
   }
   void resume(RunContext& run) override {
     allocate();
     counters_ = read_checkpoint(run.checkpoint, sim_, reactant());
+    if (decomposition_) decomposition_->scatter(sim_);
     open(run, true);
   }
   bool finished() const override { return sim_.steps() >= c_.steps; }
-  void advance() override { sim_.step(); }
-  void check_health() override { sim_.check_state(); }
+  void advance() override {
+    if (!decomposition_) return sim_.step();
+    healthy_ = decomposition_->step();
+    sim_.restore_clock(decomposition_->block().time(), decomposition_->block().steps());
+  }
+  void check_health() override {
+    if (decomposition_ && healthy_) return;
+    current().check_state();  // the whole lattice names the cell, as a one-rank run does
+    if (!healthy_) throw RunError("DBM state broke down on a rank, but not in the gathered lattice");
+  }
   void write_outputs() override { write_due(); }
   std::int64_t step() const override { return sim_.steps(); }
   std::string position() const override { return fmt::format(" (t = {})", sim_.time()); }
   double fraction_done() const override { return sim_.time() / c_.end_time; }
   std::int64_t steps_left() const override { return c_.steps - sim_.steps(); }
   std::int64_t checkpoint_every() const override { return c_.output.checkpoint_every; }
-  void write_checkpoint(const fs::path& file) override { dbm::write_checkpoint(file, sim_, counters_, reactant()); }
+  void write_checkpoint(const fs::path& file) override { dbm::write_checkpoint(file, current(), counters_, reactant()); }
   std::string write_stop_state() override {
-    output_->write_profile(sim_, counters_.profiles);
+    output_->write_profile(current(), counters_.profiles);
     return fmt::format("the state in profiles/profile_{}.csv", counters_.profiles);
   }
   std::string write_failure_state() override {
-    output_->write_profile(sim_, counters_.profiles);
+    output_->write_profile(current(), counters_.profiles);
     if (gls_) {
       run_->log.info("{}", GlsRunPart::blow_up_hint());
       gls_->write_summary(run_->folder, run_->log);
@@ -125,11 +148,11 @@ class DbmMethod final : public Method {
     return fmt::format("the state at the failure: profiles/profile_{}.csv", counters_.profiles);
   }
   void write_final_outputs() override {
-    if (c_.output.profile_interval == 0.0) output_->write_profile(sim_, counters_.profiles++);
+    if (c_.output.profile_interval == 0.0) output_->write_profile(current(), counters_.profiles++);
   }
   void log_results(double steps_per_second) override {
     if (gls_) gls_->write_summary(run_->folder, run_->log);
-    const auto total = sim_.totals();
+    const auto total = current().totals();
     run_->log.info("finished: t = {} after {} steps ({:.3g} cell-steps/s); mass {}, momentum ({}, {}), energy {}",
                    sim_.time(), sim_.steps(), steps_per_second * work_items(), total[0], total[1], total[2],
                    total[3]);
@@ -144,7 +167,7 @@ class DbmMethod final : public Method {
     return columns;
   }
   std::vector<double> thermo_values() const override {
-    const auto total = sim_.totals();
+    const auto total = current().totals();
     std::vector<double> values{static_cast<double>(sim_.steps()), sim_.time(), total[0], total[1], total[3],
                                tne_measures(sim_).mean_strength};
     if (reaction_)
@@ -161,7 +184,7 @@ class DbmMethod final : public Method {
   // Domain totals, the mean TNE strength and the means of the central TNE measures (eq. 35 and
   // its components), and for [reaction] the chemical energy and the tracked front.
   Json results() const override {
-    const auto total = sim_.totals();
+    const auto total = current().totals();
     const TneFields tne = tne_measures(sim_);
     Json means = Json::object();
     for (std::size_t k = 0; k < tne.mean_central.size(); ++k) means.set(kTneNames[k], tne.mean_central[k]);
@@ -198,10 +221,19 @@ class DbmMethod final : public Method {
   }
   void write_due() {
     const double t = sim_.time() + tol_;
-    write_due_frames(counters_.series, c_.output.series_interval, t, [&](auto) { output_->write_series(sim_); });
+    write_due_frames(counters_.series, c_.output.series_interval, t, [&](auto) { output_->write_series(current()); });
     write_due_frames(counters_.profiles, c_.output.profile_interval, t,
-                     [&](auto k) { output_->write_profile(sim_, k); });
-    write_due_frames(counters_.fields, c_.output.field_interval, t, [&](auto) { output_->write_fields(sim_); });
+                     [&](auto k) { output_->write_profile(current(), k); });
+    write_due_frames(counters_.fields, c_.output.field_interval, t, [&](auto) { output_->write_fields(current()); });
+  }
+  // The whole lattice's state: with a decomposition, gathered from the blocks once per step
+  // that needs it (a const method may gather: sim_ is what the blocks hold, brought over).
+  const Simulation& current() const {
+    if (decomposition_ && gathered_step_ != sim_.steps()) {
+      decomposition_->gather(const_cast<Simulation&>(sim_));
+      gathered_step_ = sim_.steps();
+    }
+    return sim_;
   }
 
   DbmCase c_;
@@ -212,16 +244,29 @@ class DbmMethod final : public Method {
   OutputCounters counters_;
   std::optional<RunOutput> output_;
   RunContext* run_ = nullptr;
+  std::unique_ptr<Decomposition> decomposition_;
+  bool healthy_ = true;                      // the blocks' last check_state
+  mutable long long gathered_step_ = -1;     // the step sim_ was last gathered at
 };
 
 }  // namespace
 
-std::unique_ptr<Method> make_method(const Config& root, const RunOptions&) {
+std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options) {
   DbmCase c = read_dbm_case(root);
   // The linear check is for the BGK model; the GLS force is outside it (docs/theory/dbm.md).
   const CaseStability stability = c.gls ? CaseStability{} : check_case_stability(root.table("model"), c);
   root.check_unknown_keys();
-  return std::make_unique<DbmMethod>(root, c, stability);
+  return std::make_unique<DbmMethod>(root, c, stability, options);
+}
+
+void serve_ranks(const Config& root, const RunOptions& options) {
+  const std::unique_ptr<Method> method = make_method(root, options);  // bad input: thrown on every rank
+  try {
+    static_cast<DbmMethod&>(*method).serve();
+  } catch (const std::exception&) {
+    // A failure of this rank alone (out of memory): rank 0 waits in a collective, so end them all.
+    parallel::Communicator::world().abort(3);
+  }
 }
 
 void run_case(const Config& root, const RunOptions& options) { run_method(root, options, &make_method); }

@@ -13,6 +13,9 @@ namespace shockfield::dbm {
 
 /// Reads, validates and derives the case (the factory of the run driver's registry).
 std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options);
+/// A rank other than 0 of a decomposed run (docs/parallel.md): validates the case as rank 0 does
+/// (the same InputError, so every rank exits 2 on bad input), then steps its block as rank 0 says.
+void serve_ranks(const Config& root, const RunOptions& options);
 /// Runs the case through the run driver.
 void run_case(const Config& root, const RunOptions& options);
 

@@ -83,7 +83,16 @@ void Simulation::initialize(const std::function<Macro(double, double)>& state) {
       inversion_.equilibrium(m.rho, m.ux, m.uy, m.T, b_, eq.data());
       for (int k = 0; k < model_.size(); ++k) f_[k * N + lattice_.at(i, j)] = eq[k];
     }
-  ghosts_.fill(f_);
+  fill_ghosts(f_);
+}
+
+void Simulation::fill_ghosts(std::vector<double>& f) const {
+  if (!halo_) return ghosts_.fill(f);
+  for (int axis = 0; axis < 2; ++axis) {
+    halo_->exchange(f.data(), axis);
+    for (int high = 0; high < 2; ++high)
+      if (!halo_->has_neighbour(axis, high)) ghosts_.fill_side(f, 2 * axis + high);
+  }
 }
 
 Macro Simulation::macro(int i, int j) const {
@@ -133,7 +142,7 @@ void Simulation::apply_state_filter() {
 }
 
 void Simulation::stage(std::vector<double>& f, const RowOutput& output) {
-  ghosts_.fill(f);
+  fill_ghosts(f);
   if (spectral_) spectral_convection(f);
 #pragma omp parallel
   {

@@ -15,6 +15,7 @@
 #include "shockfield/dbm/lattice.hpp"
 #include "shockfield/dbm/spectral.hpp"
 #include "shockfield/dbm/velocity_model.hpp"
+#include "shockfield/parallel/halo_exchange.hpp"
 
 namespace shockfield::dbm {
 
@@ -58,6 +59,9 @@ class Simulation {
   void check_state() const;
 
   void set_source(Source source) { source_ = std::move(source); }
+  /// A block of a decomposed lattice (dbm/decomposition.hpp): the ghosts on the sides `halo` has
+  /// a neighbour on come from the neighbouring ranks, the others from the boundaries as before.
+  void set_halo(const parallel::HaloExchange* halo) { halo_ = halo; }
   /// Sets the clock of a state restored from a checkpoint (f() restored by the caller).
   void restore_clock(double time, long long steps) { time_ = time, steps_ = steps; }
   double b() const { return b_; }
@@ -75,6 +79,8 @@ class Simulation {
   std::array<double, 4> totals() const;
 
  private:
+  /// The ghosts of f: per axis, the halo's sides, then the boundaries' (the serial order).
+  void fill_ghosts(std::vector<double>& f) const;
   /// Fills the ghosts of f and writes L(f) of the BGK model (without the source) to output.
   void stage(std::vector<double>& f, const RowOutput& output);
   /// v_k·∇f_k of every velocity by FFT into convection_ (interior cells, i + nx·j per k).
@@ -90,6 +96,7 @@ class Simulation {
   BgkSettings settings_;
   double b_;
   GhostFiller ghosts_;
+  const parallel::HaloExchange* halo_ = nullptr;
   Source source_;
   std::unique_ptr<PeriodicSpectral> spectral_;
   std::vector<double> convection_;
