@@ -11,6 +11,9 @@ expect_error "${base/q = 9/q = 4}" "pair.q" "no energy minimum"
 expect_error "${base/p = 4/p = -4}" "pair.p" "expected a number"
 # A rod too thin for its division.
 expect_error "${base/n_phi = 4/n_phi = 1}" "specimen.n_phi" "too thin for its division"
+# A specimen larger than the particle bound, refused before the packing is made (--check too;
+# the fuzz found n_phi = 4000 building 1e9 particles for minutes).
+expect_error "${base/n_phi = 4/n_phi = 4000}" "specimen.n_phi" "would hold 5.76e+08 particles; expected at most 1e+08"
 # A cylinder's r0 follows from its diameter and n_phi.
 expect_error "${base/q = 9/q = 9
 r0 = 0.001}" "pair.r0" "follows from specimen.diameter"

@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/size_limits.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/materials/material_file.hpp"
 
@@ -90,6 +92,16 @@ SpecimenSpec read_specimen(const Config& t, const Config& pair, PairLawInput& in
     if (in.r0.has_value() == in.atoms_per_particle.has_value())
       pair.fail("r0", "a box needs its particle size: give exactly one of r0 (m) and atoms_per_particle");
   }
+  // The specimen is cut from a packing of (n + 1)³ fcc cells of 4 sites (macroparticle/rod.cpp),
+  // made whole before the cut, also under --check: bounded before anything is allocated.
+  const std::array<long long, 3> cells =
+      s.shape == SpecimenSpec::Shape::box ? s.cells : std::array<long long, 3>{s.n_phi, s.n_phi, s.n_h};
+  const double sites = 4.0 * static_cast<double>(cells[0] + 1) * static_cast<double>(cells[1] + 1) *
+                       static_cast<double>(cells[2] + 1);
+  if (sites > kMaxParticles)
+    t.fail(s.shape == SpecimenSpec::Shape::box ? "cells" : "n_phi",
+           fmt::format("{} x {} x {} cells: the packing the specimen is cut from would hold {:.3g} particles; expected at "
+                       "most {:.0e} (core/size_limits.hpp)", cells[0], cells[1], cells[2], sites, kMaxParticles));
   // An imperfection for instabilities a perfect packing under symmetric loading cannot start.
   s.perturbation = t.get_double_or("perturbation", 0.0, Range::closed(0.0, 0.05));
   s.perturbation_seed = static_cast<std::uint64_t>(t.get_int_or("perturbation_seed", 1, Range::closed(1, 9.0e15)));
