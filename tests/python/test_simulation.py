@@ -6,6 +6,10 @@
   ½ mvv2e m Σv² of it (to 1e-12 relative: the same formula evaluated in another order).
 - The views stay valid: over 120 steps at 600 K (neighbour rebuilds in the log) the arrays keep
   their address and an old view reads what a fresh one does.
+- A view that went stale raises: a 4×4×2 cell compressed along z at 5/ps (deform) falls below the
+  interaction range (cutoff + skin, 5.95 Å) at step 20, so ghosts need a second image layer and
+  positions, forces and types (owned + ghost storage) move; step() raises StaleViewError naming
+  those three and not the owned-only arrays, and arrays() then gives views that stay put.
 - Per-atom energies (computed for a `pe` dump column) sum to the thermo PotEng at a dump step.
 - The run is the command line's: the in-process run's thermo.csv, series.csv and dumps are
   bytewise those of `shockfield run` with the same values and thread count (views taken).
@@ -92,6 +96,27 @@ class InProcess(unittest.TestCase):
         rebuilds = [int(line.split("(")[1].split(",")[1].split()[0]) for line in log.splitlines()
                     if "neighbour rebuilds)" in line]
         self.assertGreater(sum(rebuilds), 0, log)
+
+    def test_a_moved_array_raises_stale_view_error(self):
+        case = small_cu(2, 40).set("system.lattice.repeat", [4, 4, 2]).set("stage[1].deform_rate", [0.0, 0.0, -5.0])
+        sim = shockfield.Simulation(case, self.dir / "run", threads=1)
+        sim.step(2)
+        sim.arrays()
+        with self.assertRaises(shockfield.errors.StaleViewError) as caught:
+            while not sim.finished:
+                sim.step(1)
+        self.assertEqual(sim.step_number, 20)  # 7.23 Å (1 - 5/ps · 0.036 ps) < 5.95 Å
+        message = str(caught.exception)
+        self.assertIn("positions (128 rows, now 128), forces (128 rows, now 128), types (128 rows, now 128) moved",
+                      message)
+        self.assertNotIn("velocities", message)
+        fresh = sim.arrays()
+        address = {name: a.__array_interface__["data"][0] for name, a in fresh.items()}
+        sim.step(5)  # no error: the storage was reserved for the two layers
+        for name, a in sim.arrays().items():
+            self.assertEqual(a.__array_interface__["data"][0], address[name], name)
+            np.testing.assert_array_equal(fresh[name], a)
+        self.assertLess(np.ptp(fresh["positions"][:, 2]), 5.95)  # the view shows the compressed cell
 
     def test_per_atom_energies_sum_to_the_potential_energy(self):
         case = small_cu(5, 5).set("output.dump_fields", ["id", "type", "x", "y", "z", "pe"])
