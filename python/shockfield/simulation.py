@@ -63,7 +63,7 @@ class Simulation:
         md ``positions``, ``velocities``, ``forces`` (n, 3), ``types`` (0-based), ``ids``,
         ``images`` and, when computed, ``energies``; mpm ``positions``, ``velocities``,
         ``masses``, ``volumes0``, ``materials``; pd ``positions``, ``velocities``,
-        ``force_densities``. Writing into a view changes the simulation."""
+        ``force_densities``; granular ``displacements``, ``velocities``, ``forces`` (n,). Writing into a view changes the simulation."""
         return self._core.arrays()
 
     def units(self):

@@ -10,6 +10,8 @@
   interaction range (cutoff + skin, 5.95 Å) at step 20, so ghosts need a second image layer and
   positions, forces and types (owned + ghost storage) move; step() raises StaleViewError naming
   those three and not the owned-only arrays, and arrays() then gives views that stay put.
+- Granular views: zeroing the velocities of the 200-grain column gives the velocity Verlet step
+  from rest, checked through (w1 − w0)(f0 + f1) = dt f0 v1, which needs no masses.
 - Per-atom energies (computed for a `pe` dump column) sum to the thermo PotEng at a dump step.
 - The run is the command line's: the in-process run's thermo.csv, series.csv and dumps are
   bytewise those of `shockfield run` with the same values and thread count (views taken).
@@ -164,6 +166,23 @@ class InProcess(unittest.TestCase):
                 before = x.copy()
                 sim.step(3)
                 self.assertFalse(np.array_equal(before, x))  # the view follows the particles
+
+    def test_granular_views(self):
+        sim = shockfield.Simulation(CASES / "granular_tiny.toml", self.dir / "run", threads=1)
+        self.assertEqual(sim.units(), {"displacements": "m", "velocities": "m/s", "forces": "N"})
+        sim.step(20)
+        w, v, f = sim["displacements"], sim["velocities"], sim["forces"]
+        self.assertEqual((w.shape, v.shape, f.shape, w.dtype), ((200,), (200,), (200,), np.float64))
+        w0, f0 = w.copy(), f.copy()
+        v[:] = 0.0
+        sim.step(1)
+        # velocity Verlet from rest: w1 - w0 = dt (dt/2m) f0 and v1 = (dt/2m)(f0 + f1), so
+        # (w1 - w0)(f0 + f1) = dt f0 v1 whatever the masses; w1 - w0 is ~1e-4 of w, so rounding
+        # leaves ~1e-12 of the largest term (measured 2.9e-13)
+        dt = sim.time / sim.step_number
+        lhs, rhs = (w - w0) * (f0 + f), dt * f0 * v
+        np.testing.assert_allclose(lhs, rhs, rtol=0, atol=1e-10 * np.max(np.abs(rhs)))
+        self.assertGreater(np.max(np.abs(rhs)), 0.0)
 
     def test_mistakes_raise(self):
         sim = shockfield.Simulation(small_cu(2, 2), self.dir / "run", threads=1)
