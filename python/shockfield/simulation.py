@@ -59,11 +59,13 @@ class Simulation:
         return self._core.thermo()
 
     def arrays(self):
-        """Every per-particle array as a numpy view (no copy) of the simulation's memory, by name:
-        md ``positions``, ``velocities``, ``forces`` (n, 3), ``types`` (0-based), ``ids``,
-        ``images`` and, when computed, ``energies``; mpm ``positions``, ``velocities``,
-        ``masses``, ``volumes0``, ``materials``; pd ``positions``, ``velocities``,
-        ``force_densities``; granular ``displacements``, ``velocities``, ``forces`` (n,). Writing into a view changes the simulation."""
+        """Every state array (per particle, or a grid's field) as a numpy view (no copy) of the
+        simulation's memory, by name: md ``positions``, ``velocities``, ``forces`` (n, 3),
+        ``types`` (0-based), ``ids``, ``images`` and, when computed, ``energies``; mpm
+        ``positions``, ``velocities``, ``masses``, ``volumes0``, ``materials``; pd ``positions``,
+        ``velocities``, ``force_densities``; granular ``displacements``, ``velocities``,
+        ``forces`` (n,); phasefield ``xi`` shaped as the grid ((ny, nx) in 2D, x last). Writing
+        into a view changes the simulation."""
         return self._core.arrays()
 
     def units(self):

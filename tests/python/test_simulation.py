@@ -12,6 +12,8 @@
   those three and not the owned-only arrays, and arrays() then gives views that stay put.
 - Granular views: zeroing the velocities of the 200-grain column gives the velocity Verlet step
   from rest, checked through (w1 − w0)(f0 + f1) = dt f0 v1, which needs no masses.
+- The phase-field view is the grid, shaped (ny, nx): a random field written into it gives the
+  forward-Euler step of the Ginzburg–Landau equation that numpy computes (two steps, 1e-14).
 - Per-atom energies (computed for a `pe` dump column) sum to the thermo PotEng at a dump step.
 - The run is the command line's: the in-process run's thermo.csv, series.csv and dumps are
   bytewise those of `shockfield run` with the same values and thread count (views taken).
@@ -183,6 +185,24 @@ class InProcess(unittest.TestCase):
         lhs, rhs = (w - w0) * (f0 + f), dt * f0 * v
         np.testing.assert_allclose(lhs, rhs, rtol=0, atol=1e-10 * np.max(np.abs(rhs)))
         self.assertGreater(np.max(np.abs(rhs)), 0.0)
+
+    def test_phasefield_view_is_the_grid(self):
+        # forward Euler on the 48 × 40 periodic grid: ξ1 = ξ0 + dt (D ∇²ξ0 − ξ0(ξ0 − a)(ξ0 − 1)) with
+        # the 5-point Laplacian, x along the last axis; twice, so the second step reads the view's
+        # storage after the first (the explicit step would otherwise swap buffers)
+        case = shockfield.Case.load(CASES / "phasefield_tiny.toml")
+        case.set("time.dt", 0.05).set("time.scheme", "explicit")
+        sim = shockfield.Simulation(case, self.dir / "run", threads=1)
+        xi = sim["xi"]
+        self.assertEqual((xi.shape, xi.dtype, sim.units()["xi"]), ((40, 48), np.float64, ""))
+        xi[...] = np.random.default_rng(23).uniform(0.0, 1.0, xi.shape)
+        dx, a, dt = 0.5, 0.4, 0.05
+        for _ in range(2):
+            before = xi.copy()
+            laplacian = (sum(np.roll(before, s, axis) for s in (1, -1) for axis in (0, 1)) - 4 * before) / dx**2
+            predicted = before + dt * (laplacian - before * (before - a) * (before - 1.0))
+            sim.step(1)
+            np.testing.assert_allclose(xi, predicted, rtol=0, atol=1e-14)  # the same sums, another order
 
     def test_mistakes_raise(self):
         sim = shockfield.Simulation(small_cu(2, 2), self.dir / "run", threads=1)
