@@ -64,8 +64,8 @@ class Simulation:
         ``types`` (0-based), ``ids``, ``images`` and, when computed, ``energies``; mpm
         ``positions``, ``velocities``, ``masses``, ``volumes0``, ``materials``; pd ``positions``,
         ``velocities``, ``force_densities``; granular ``displacements``, ``velocities``,
-        ``forces`` (n,); phasefield ``xi`` shaped as the grid ((ny, nx) in 2D, x last). Writing
-        into a view changes the simulation."""
+        ``forces`` (n,); phasefield ``xi`` shaped as the grid ((ny, nx) in 2D, x last); dbm ``f``
+        (Q, ny + 4, nx + 4), ghosts included. Writing into a view changes the simulation."""
         return self._core.arrays()
 
     def units(self):

@@ -14,9 +14,12 @@
   from rest, checked through (w1 − w0)(f0 + f1) = dt f0 v1, which needs no masses.
 - The phase-field view is the grid, shaped (ny, nx): a random field written into it gives the
   forward-Euler step of the Ginzburg–Landau equation that numpy computes (two steps, 1e-14).
+- The DBM view is f (16 velocities × the lattice with its ghosts): Σ f_k is the density of each
+  side of the Sod tube, and the left state's f^eq written into every cell stays put for two steps.
 - Per-atom energies (computed for a `pe` dump column) sum to the thermo PotEng at a dump step.
 - The run is the command line's: the in-process run's thermo.csv, series.csv and dumps are
-  bytewise those of `shockfield run` with the same values and thread count (views taken).
+  bytewise those of `shockfield run` with the same values and thread count (views taken), and so
+  are the CSV files of mpm, pd, granular, phasefield and dbm runs.
 - Mistakes raise: a wrong dtype or shape on assignment, stepping a run with no step left or one
   closed by finish(), finishing early, a bad key (the command line's message).
 """
@@ -145,11 +148,11 @@ class InProcess(unittest.TestCase):
         names = self.assert_same_files(self.dir / "py", self.dir / "cli", (".csv", ".lammpstrj"))
         self.assertIn("thermo.csv", names)
 
-    def test_mpm_and_pd_are_the_command_lines(self):
-        for case in ("mpm_tiny.toml", "pd_tiny.toml"):
+    def test_other_methods_are_the_command_lines(self):
+        for case in ("mpm_tiny.toml", "pd_tiny.toml", "granular_tiny.toml", "phasefield_tiny.toml", "dbm_sod.toml"):
             with self.subTest(case=case):
                 sim = shockfield.Simulation(CASES / case, self.dir / case / "py", threads=2)
-                sim.arrays()  # views taken (mpm then recomputes its fastest wave speed: the same value)
+                sim.arrays()  # views taken (mpm recomputes its fastest wave speed, dbm copies f: same values)
                 while not sim.finished:
                     sim.step(25)
                 sim.finish()
@@ -203,6 +206,21 @@ class InProcess(unittest.TestCase):
             predicted = before + dt * (laplacian - before * (before - a) * (before - 1.0))
             sim.step(1)
             np.testing.assert_allclose(xi, predicted, rtol=0, atol=1e-14)  # the same sums, another order
+
+    def test_dbm_view_is_f(self):
+        # f_k of the 100-cell Sod tube, ghosts included; Σ_k f_k = ρ (Xu et al. (2015), eq. 20).
+        # Writing the left state's f^eq into every cell makes the tube uniform: the step leaves
+        # it as it is (no gradient, no departure from equilibrium) instead of launching Sod's waves.
+        sim = shockfield.Simulation(CASES / "dbm_sod.toml", self.dir / "run", threads=1)
+        f = sim["f"]
+        self.assertEqual((f.shape, f.dtype), ((16, 5, 104), np.float64))
+        self.assertAlmostEqual(f[:, 2, 2].sum(), 1.0, delta=1e-14)  # left ρ
+        self.assertAlmostEqual(f[:, 2, -3].sum(), 0.125, delta=1e-14)  # right ρ
+        f[...] = f[:, 2:3, 2:3].copy()
+        uniform = f.copy()
+        for _ in range(2):  # one at a time: the view must show f after each step (buffers not swapped)
+            sim.step(1)
+            np.testing.assert_allclose(f, uniform, rtol=1e-13, atol=0)  # rounding: 1.5e-14 measured
 
     def test_mistakes_raise(self):
         sim = shockfield.Simulation(small_cu(2, 2), self.dir / "run", threads=1)
