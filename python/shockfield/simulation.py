@@ -65,7 +65,8 @@ class Simulation:
         ``positions``, ``velocities``, ``masses``, ``volumes0``, ``materials``; pd ``positions``,
         ``velocities``, ``force_densities``; granular ``displacements``, ``velocities``,
         ``forces`` (n,); phasefield ``xi`` shaped as the grid ((ny, nx) in 2D, x last); dbm ``f``
-        (Q, ny + 4, nx + 4), ghosts included. Writing into a view changes the simulation."""
+        (Q, ny + 4, nx + 4), ghosts included; macroparticle md's arrays in the engine's reduced
+        units (each unit text is one unit in SI). Writing into a view changes the simulation."""
         return self._core.arrays()
 
     def units(self):
