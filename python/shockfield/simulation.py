@@ -59,11 +59,14 @@ class Simulation:
         return self._core.thermo()
 
     def arrays(self):
-        """Every per-particle array as a numpy view (no copy) of the simulation's memory, by name:
-        md ``positions``, ``velocities``, ``forces`` (n, 3), ``types`` (0-based), ``ids``,
-        ``images`` and, when computed, ``energies``; mpm ``positions``, ``velocities``,
-        ``masses``, ``volumes0``, ``materials``; pd ``positions``, ``velocities``,
-        ``force_densities``. Writing into a view changes the simulation."""
+        """Every state array (per particle, or a grid's field) as a numpy view (no copy) of the
+        simulation's memory, by name: md ``positions``, ``velocities``, ``forces`` (n, 3),
+        ``types`` (0-based), ``ids``, ``images`` and, when computed, ``energies``; mpm
+        ``positions``, ``velocities``, ``masses``, ``volumes0``, ``materials``; pd ``positions``,
+        ``velocities``, ``force_densities``; granular ``displacements``, ``velocities``,
+        ``forces`` (n,); phasefield ``xi`` shaped as the grid ((ny, nx) in 2D, x last); dbm ``f``
+        (Q, ny + 4, nx + 4), ghosts included; macroparticle md's arrays in the engine's reduced
+        units (each unit text is one unit in SI). Writing into a view changes the simulation."""
         return self._core.arrays()
 
     def units(self):

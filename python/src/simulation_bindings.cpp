@@ -1,8 +1,9 @@
 // shockfield._core.Simulation: a case run in-process (python/shockfield/simulation.py wraps it).
 // The method comes from the same registry and runs through the same RunDriver as `shockfield
 // run` (run folder, log, thermo, outputs, checkpoints, summary.json), stepped from Python; between
-// steps its per-particle arrays (Method::state_arrays) are numpy arrays over the method's own
-// storage: views, not copies, kept alive by the Simulation they belong to.
+// steps its state arrays (Method::state_arrays: per particle, or a grid's field) are numpy
+// arrays over the method's own storage: views, not copies, kept alive by the Simulation they
+// belong to.
 //
 // Views stay valid: the method reserves its arrays' largest size when they are first asked for
 // (md: the most ghost entries the box can give), so a neighbour rebuild does not move them. The
@@ -117,7 +118,7 @@ class InProcessRun {
     check_views();
   }
 
-  /// The method's per-particle arrays as numpy views whose base is `self`.
+  /// The method's state arrays (per particle, or a grid's field) as numpy views whose base is `self`.
   static py::dict arrays(py::object self) {
     InProcessRun& run = self.cast<InProcessRun&>();
     if (!run.open_) throw py::value_error("arrays(): the resumed run had nothing left to do");
@@ -125,11 +126,12 @@ class InProcessRun {
     run.given_ = run.driver_->method().state_arrays();
     for (const StateArray& a : run.given_) {
       const std::size_t size = item_size(a.type);
-      std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(a.rows)}, strides{static_cast<py::ssize_t>(a.columns * size)};
-      if (a.columns > 1) {
-        shape.push_back(static_cast<py::ssize_t>(a.columns));
-        strides.push_back(static_cast<py::ssize_t>(size));
-      }
+      std::vector<py::ssize_t> shape;
+      for (std::size_t extent : a.shape) shape.push_back(static_cast<py::ssize_t>(extent));
+      if (shape.empty()) shape.push_back(static_cast<py::ssize_t>(a.rows));
+      if (a.shape.empty() && a.columns > 1) shape.push_back(static_cast<py::ssize_t>(a.columns));
+      std::vector<py::ssize_t> strides(shape.size(), static_cast<py::ssize_t>(size));  // row-major
+      for (std::size_t d = shape.size() - 1; d > 0; --d) strides[d - 1] = strides[d] * shape[d];
       views[py::str(a.name)] = py::array(dtype_of(a.type), shape, strides, a.data, self);
     }
     return views;

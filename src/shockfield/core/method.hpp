@@ -34,7 +34,8 @@ struct RunContext {
 
 /// One per-particle array of a method's state, for a program that steps the method itself and
 /// reads or writes its state between steps (the Python module's numpy views, docs/python.md):
-/// `rows` × `columns` values of `type`, row-major at `data`, owned by the method.
+/// `rows` × `columns` values of `type`, row-major at `data`, owned by the method; a grid's field
+/// gives its `shape` instead (slowest index first, x fastest: (nz, ny, nx) in 3D).
 struct StateArray {
   enum class Type { f64, i32, i64 };
   std::string name;  ///< "positions", "velocities", ...
@@ -42,6 +43,7 @@ struct StateArray {
   std::size_t rows = 0, columns = 1;
   Type type = Type::f64;
   std::string unit;  ///< "Å", "m/s", "" for indices
+  std::vector<std::size_t> shape;  ///< empty: rows × columns (or rows when columns = 1)
 };
 
 /// A wall-time share a method measured itself (e.g. MD's force and neighbour phases).

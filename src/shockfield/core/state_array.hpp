@@ -32,4 +32,13 @@ StateArray state_array(std::string name, std::vector<T>& values, std::size_t row
   return a;
 }
 
+/// The field `values` of a grid of `n` = (nx, ny, nz) nodes, x fastest, as the state array `name`
+/// shaped (nx), (ny, nx) or (nz, ny, nx) for `dim` = 1, 2, 3.
+inline StateArray grid_state_array(std::string name, std::vector<double>& values, int dim, std::array<int, 3> n,
+                                   std::string unit = "") {
+  StateArray a = state_array(std::move(name), values, values.size(), std::move(unit));
+  for (int d = dim - 1; d >= 0; --d) a.shape.push_back(static_cast<std::size_t>(n[static_cast<std::size_t>(d)]));
+  return a;
+}
+
 }  // namespace shockfield

@@ -10,6 +10,7 @@
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/size_limits.hpp"
+#include "shockfield/core/state_array.hpp"
 #include "shockfield/dbm/case_file.hpp"
 #include "shockfield/dbm/checkpoint.hpp"
 #include "shockfield/dbm/decomposition.hpp"
@@ -178,6 +179,15 @@ class DbmMethod final : public Method {
   std::int64_t thermo_every() const override { return thermo_interval(c_.output.thermo_every, c_.steps); }
   double work_items() const override { return static_cast<double>(c_.lattice.nx) * c_.lattice.ny; }
   std::string work_item_name() const override { return "cell"; }
+  // f_k on every cell, ghosts included: (Q, ny + 4, nx + 4), interior [:, 2:-2, 2:-2] (lattice.hpp).
+  // A decomposed run steps its blocks, not sim_ (rank 0's gathered copy): no views there.
+  std::vector<StateArray> state_arrays() override {
+    if (decomposition_) return {};
+    sim_.keep_f_in_place();
+    const Lattice& l = c_.lattice;
+    const int ghosts = 2 * Lattice::ghosts;
+    return {grid_state_array("f", sim_.f(), 3, {l.nx + ghosts, l.ny + ghosts, sim_.model().size()})};
+  }
 
   double time() const override { return sim_.time(); }
   std::string time_unit() const override { return "1"; }

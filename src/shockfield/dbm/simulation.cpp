@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "shockfield/core/error.hpp"
@@ -182,7 +183,10 @@ void Simulation::step() {
     combine(0.75, f1_, f1_);
     combine(1.0 / 3.0, f1_, f1_);
   }
-  std::swap(f_, f1_);
+  if (f_in_place_)
+    std::copy(f1_.begin(), f1_.end(), f_.begin());
+  else
+    std::swap(f_, f1_);
   if (settings_.filter_state) apply_state_filter();
   time_ += dt;
   ++steps_;

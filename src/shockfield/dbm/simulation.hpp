@@ -73,6 +73,9 @@ class Simulation {
   const BgkSettings& settings() const { return settings_; }
   const std::vector<double>& f() const { return f_; }
   std::vector<double>& f() { return f_; }
+  /// From now on step() copies the new f into f()'s storage instead of swapping buffers, so a
+  /// view of f() (Method::state_arrays) keeps showing it.
+  void keep_f_in_place() { f_in_place_ = true; }
   Macro macro(int i, int j) const;
   /// Total mass, x and y momentum and energy of the interior (eqs. 20–22), summed in a
   /// thread-count independent order.
@@ -101,6 +104,7 @@ class Simulation {
   std::unique_ptr<PeriodicSpectral> spectral_;
   std::vector<double> convection_;
   std::vector<double> f_, f1_, work_;  // work_: the second stage, or L(f) with a source
+  bool f_in_place_ = false;
   double time_ = 0.0;
   long long steps_ = 0;
 };

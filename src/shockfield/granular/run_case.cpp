@@ -8,6 +8,7 @@
 
 #include "shockfield/core/json.hpp"
 #include "shockfield/core/output_schedule.hpp"
+#include "shockfield/core/state_array.hpp"
 #include "shockfield/granular/case_file.hpp"
 #include "shockfield/granular/checkpoint.hpp"
 #include "shockfield/granular/outputs.hpp"
@@ -79,6 +80,12 @@ class GranularMethod final : public Method {
   std::int64_t thermo_every() const override { return thermo_interval(c_.output.schedule.thermo_every, steps_); }
   double work_items() const override { return static_cast<double>(sim_.size()); }
   std::string work_item_name() const override { return "grain"; }
+  // Grain i's displacement along the chain from its initial depth, velocity and force (+: deeper).
+  std::vector<StateArray> state_arrays() override {
+    const std::size_t n = sim_.size();
+    return {state_array("displacements", sim_.displacement(), n, "m"),
+            state_array("velocities", sim_.velocity(), n, "m/s"), state_array("forces", sim_.force(), n, "N")};
+  }
 
   double time() const override { return sim_.time(); }
   std::string time_unit() const override { return "s"; }

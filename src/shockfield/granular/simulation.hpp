@@ -78,6 +78,10 @@ class Simulation {
   const std::vector<double>& contact_force() const { return contact_force_; }
   /// f_i on each grain at the last force evaluation [N].
   const std::vector<double>& force() const { return f_; }
+  /// w, v and f for edits between steps (Method::state_arrays): the next step starts from them.
+  std::vector<double>& displacement() { return w_; }
+  std::vector<double>& velocity() { return v_; }
+  std::vector<double>& force() { return f_; }
   double overlap(std::size_t k) const { return chain_.rest_overlap[k] + w_[k] - w_[k + 1]; }
   double wall_overlap() const { return chain_.wall_rest_overlap + w_.back(); }
   double wall_force() const { return wall_force_; }

@@ -9,6 +9,7 @@
 #include "shockfield/macroparticle/outputs.hpp"
 #include "shockfield/macroparticle/rod.hpp"
 #include "shockfield/md/checkpoint.hpp"
+#include "shockfield/md/state_arrays.hpp"
 
 namespace shockfield::macroparticle {
 
@@ -75,6 +76,13 @@ class MacroparticleMethod final : public Method {
   std::int64_t thermo_every() const override { return thermo_interval(c_.output.thermo_every, c_.steps); }
   double work_items() const override { return static_cast<double>(rod_.size()); }
   std::string work_item_name() const override { return "particle"; }
+  // The engine's arrays in its reduced units: the unit text is one engine unit in SI.
+  std::vector<StateArray> state_arrays() override {
+    const ReducedUnits& u = rod_.units();
+    return md::atom_state_arrays(rod_.sim(),
+                                 {fmt::format("{:.9g} m", u.length), fmt::format("{:.9g} m/s", u.velocity()),
+                                  fmt::format("{:.9g} N", u.force()), fmt::format("{:.9g} J", u.energy)});
+  }
   std::vector<PhaseTime> phase_times() const override {
     const md::Simulation& s = rod_.sim();
     return {{"force", s.force_seconds}, {"neighbor", s.neighbor_seconds}, {"ghost", s.ghost_seconds}};

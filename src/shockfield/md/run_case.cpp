@@ -11,7 +11,6 @@
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/run_folder.hpp"
 #include "shockfield/core/size_limits.hpp"
-#include "shockfield/core/state_array.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/lammps_data.hpp"
@@ -28,6 +27,7 @@
 #include "shockfield/md/minimize.hpp"
 #include "shockfield/md/msst_report.hpp"
 #include "shockfield/md/nphug_report.hpp"
+#include "shockfield/md/state_arrays.hpp"
 #include "shockfield/md/potentials/registry.hpp"
 #include "shockfield/md/run_output.hpp"
 #include "shockfield/md/system_builder.hpp"
@@ -286,27 +286,7 @@ class MdMethod final : public Method {
     return {{"force", sim_->force_seconds}, {"neighbour", sim_->neighbor_seconds}, {"ghosts", sim_->ghost_seconds}};
   }
 
-  std::vector<StateArray> state_arrays() override {
-    Atoms& a = sim_->atoms;
-    // A neighbour rebuild resizes x, type and f (and energy_atom while computing) to owned +
-    // ghost entries: room for the most the box can give keeps them in place. Reserved, not
-    // touched: the pages beyond the entries in use are never written.
-    const std::size_t room = most_entries(a.nlocal, sim_->box, sim_->potential->cutoff() + sim_->skin);
-    a.x.reserve(room);
-    a.type.reserve(room);
-    a.f.reserve(room);
-    std::vector<StateArray> arrays{state_array("positions", a.x, a.nlocal, "Å"),
-                                   state_array("velocities", a.v, a.nlocal, "Å/ps"),
-                                   state_array("forces", a.f, a.nlocal, "eV/Å"),
-                                   state_array("types", a.type, a.nlocal),
-                                   state_array("ids", a.id, a.nlocal),
-                                   state_array("images", a.image, a.nlocal)};
-    if (!sim_->forces.energy_atom.empty()) {
-      sim_->forces.energy_atom.reserve(room);
-      arrays.push_back(state_array("energies", sim_->forces.energy_atom, a.nlocal, "eV"));
-    }
-    return arrays;
-  }
+  std::vector<StateArray> state_arrays() override { return atom_state_arrays(*sim_, {"Å", "Å/ps", "eV/Å", "eV"}); }
   double time() const override { return sim_->time; }
   std::string time_unit() const override { return "ps"; }
   // The Hugoniot state of every piston stage ended in this session and the final energies.

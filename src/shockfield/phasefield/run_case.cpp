@@ -7,6 +7,7 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/size_limits.hpp"
+#include "shockfield/core/state_array.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/vtk_xml.hpp"
 #include "shockfield/phasefield/case_file.hpp"
@@ -101,6 +102,10 @@ class PhasefieldMethod final : public Method {
   std::int64_t thermo_every() const override { return thermo_interval(c_.output.thermo_every, c_.steps); }
   double work_items() const override { return static_cast<double>(c_.grid.size()); }
   std::string work_item_name() const override { return "node"; }
+  std::vector<StateArray> state_arrays() override {
+    solver_.keep_field_in_place();
+    return {grid_state_array("xi", solver_.field(), c_.grid.dim, c_.grid.n)};
+  }
 
   double time() const override { return solver_.time(); }
   std::string time_unit() const override { return "1"; }

@@ -154,7 +154,10 @@ void Solver::step_explicit() {
   else
     explicit_update<true>();
   add_source();
-  xi_.swap(work_);
+  if (field_in_place_)
+    std::copy(work_.begin(), work_.end(), xi_.begin());
+  else
+    xi_.swap(work_);
 }
 
 template <bool kVaryingD>

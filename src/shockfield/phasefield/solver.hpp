@@ -65,6 +65,9 @@ class Solver {
   /// explicit limit shrinks by max s; std::invalid_argument otherwise, or for a wrong size.
   void set_diffusivity_scale(std::vector<double> scale);
   std::vector<double>& field() { return xi_; }
+  /// From now on the explicit step copies its result into the field's storage instead of
+  /// swapping buffers, so a view of field() (Method::state_arrays) keeps showing it.
+  void keep_field_in_place() { field_in_place_ = true; }
   const std::vector<double>& field() const { return xi_; }
   double time() const { return time_; }
   std::int64_t steps() const { return steps_; }
@@ -95,6 +98,7 @@ class Solver {
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   std::vector<double> xi_, work_;
+  bool field_in_place_ = false;
   std::vector<double> scale_;  ///< s(x) of set_diffusivity_scale; empty: uniform
   Source source_;
   struct Fourier;

@@ -1,0 +1,22 @@
+#pragma once
+// The owned atoms of an MD engine as Method::state_arrays (docs/python.md): shared by `method =
+// "md"` (metal units) and the macroparticle rod (its engine's reduced units).
+#include <string>
+#include <vector>
+
+#include "shockfield/core/method.hpp"
+#include "shockfield/md/simulation.hpp"
+
+namespace shockfield::md {
+
+/// The units of the engine's lengths, velocities, forces and energies, as the arrays' unit text.
+struct AtomUnits {
+  std::string length, velocity, force, energy;
+};
+
+/// positions, velocities, forces (n, 3), types, ids, images and, while computed, energies of the
+/// owned atoms. Reserves room for the most ghost entries the box can give first, so that a
+/// neighbour rebuild does not move positions, forces, types or energies.
+std::vector<StateArray> atom_state_arrays(Simulation& sim, const AtomUnits& units);
+
+}  // namespace shockfield::md
