@@ -8,6 +8,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/dbm/checkpoint.hpp"
 #include "shockfield/dbm/lattice.hpp"
+#include "shockfield/dbm/run_output.hpp"
 #include "shockfield/dbm/velocity_model.hpp"
 #include "shockfield/geometry/box.hpp"
 #include "shockfield/granular/checkpoint.hpp"
@@ -163,22 +164,14 @@ void write_dbm_grid(const io::CheckpointReader& checkpoint, const fs::path& out,
     throw InputError(fmt::format("{}: dataset 'f' has {} values, {} velocities on {} cells need {}", h5.path(),
                                  f.size(), model.vx.size(), l.cells(), model.vx.size() * l.cells()));
   const std::vector<double> phi = h5.has("reactant") ? h5.read_doubles("reactant") : std::vector<double>{};
-  const std::size_t n = static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(l.ny);
   const double b = h5.attribute("b");
-  std::vector<double> rho(n), u(3 * n, 0.0), T(n), reactant;
-  for (int j = 0; j < l.ny; ++j)
-    for (int i = 0; i < l.nx; ++i) {
-      const dbm::Macro m = dbm::macro_of(model, f.data() + l.at(i, j), l.cells(), b);
-      const std::size_t c = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(j);
-      rho[c] = m.rho, u[3 * c] = m.ux, u[3 * c + 1] = m.uy, T[c] = m.T;
-      if (phi.size() == l.cells()) reactant.push_back(phi[l.at(i, j)]);
-    }
-  // As the run's own frames (dbm/run_output.cpp): cell data on the cell corners' points.
-  io::VtkImage img;
-  img.points = {static_cast<std::size_t>(l.nx) + 1, static_cast<std::size_t>(l.ny) + 1, 1};
-  img.spacing = {l.dx, l.dy, 1.0};
-  img.cell_data = {{"rho", 1, std::move(rho), "1"}, {"velocity", 3, std::move(u), "1"}, {"T", 1, std::move(T), "1"}};
-  if (!reactant.empty()) img.cell_data.push_back({"reactant", 1, std::move(reactant), "1"});
+  io::VtkImage img = dbm::macro_cell_image(l, [&](int i, int j) { return dbm::macro_of(model, f.data() + l.at(i, j), l.cells(), b); });
+  if (phi.size() == l.cells()) {
+    std::vector<double> reactant;
+    for (int j = 0; j < l.ny; ++j)
+      for (int i = 0; i < l.nx; ++i) reactant.push_back(phi[l.at(i, j)]);
+    img.cell_data.push_back({"reactant", 1, std::move(reactant), "1"});
+  }
   io::write_vti(out, img, vtk);
 }
 

@@ -16,7 +16,7 @@ namespace shockfield {
 template <class T>
 StateArray state_array(std::string name, std::vector<T>& values, std::size_t rows, std::string unit = "") {
   static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(std::array<int, 3>) == 3 * sizeof(int));
-  StateArray a{std::move(name), values.data(), rows, 1, StateArray::Type::f64, std::move(unit)};
+  StateArray a{std::move(name), values.data(), rows, 1, StateArray::Type::f64, std::move(unit), {}};
   if constexpr (std::is_same_v<T, Vec3>) {
     a.columns = 3;
   } else if constexpr (std::is_same_v<T, std::array<int, 3>>) {

@@ -74,22 +74,7 @@ void RunOutput::write_profile(const Simulation& sim, std::int64_t index) {
 }
 
 void RunOutput::write_fields(const Simulation& sim) {
-  const Lattice& l = sim.lattice();
-  const std::size_t n = static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(l.ny);
-  // Cell-centred values as cell data on the (nx + 1) × (ny + 1) points of the cell corners.
-  io::VtkImage img;
-  img.points = {static_cast<std::size_t>(l.nx) + 1, static_cast<std::size_t>(l.ny) + 1, 1};
-  img.origin = {l.x(0) - 0.5 * l.dx, l.y(0) - 0.5 * l.dy, 0.0};
-  img.spacing = {l.dx, l.dy, 1.0};
-  std::vector<double> rho(n), u(3 * n), T(n);
-  for (int j = 0; j < l.ny; ++j)
-    for (int i = 0; i < l.nx; ++i) {
-      const Macro m = sim.macro(i, j);
-      const std::size_t c = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(j);
-      rho[c] = m.rho, u[3 * c] = m.ux, u[3 * c + 1] = m.uy, T[c] = m.T;
-    }
-  // Model units: dimensionless (docs/dbm.md), written as units="1".
-  img.cell_data = {{"rho", 1, std::move(rho), "1"}, {"velocity", 3, std::move(u), "1"}, {"T", 1, std::move(T), "1"}};
+  io::VtkImage img = macro_cell_image(sim.lattice(), [&](int i, int j) { return sim.macro(i, j); });
   if (gls_) {
     for (io::VtkArray& a : gls_->field_arrays()) img.cell_data.push_back(std::move(a));
   } else {

@@ -17,6 +17,26 @@
 
 namespace shockfield::dbm {
 
+/// ρ, u and T of every cell, `macro_at(i, j)`, as cell data on the (nx + 1) × (ny + 1) points of
+/// the cell corners, in model units (units="1"): the run's frames and `shockfield convert`.
+template <class MacroAt>
+io::VtkImage macro_cell_image(const Lattice& l, const MacroAt& macro_at) {
+  const std::size_t n = static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(l.ny);
+  io::VtkImage img;
+  img.points = {static_cast<std::size_t>(l.nx) + 1, static_cast<std::size_t>(l.ny) + 1, 1};
+  img.origin = {l.x(0) - 0.5 * l.dx, l.y(0) - 0.5 * l.dy, 0.0};
+  img.spacing = {l.dx, l.dy, 1.0};
+  std::vector<double> rho(n), u(3 * n, 0.0), T(n);
+  for (int j = 0; j < l.ny; ++j)
+    for (int i = 0; i < l.nx; ++i) {
+      const Macro m = macro_at(i, j);
+      const std::size_t c = static_cast<std::size_t>(i) + static_cast<std::size_t>(l.nx) * static_cast<std::size_t>(j);
+      rho[c] = m.rho, u[3 * c] = m.ux, u[3 * c + 1] = m.uy, T[c] = m.T;
+    }
+  img.cell_data = {{"rho", 1, std::move(rho), "1"}, {"velocity", 3, std::move(u), "1"}, {"T", 1, std::move(T), "1"}};
+  return img;
+}
+
 class RunOutput {
  public:
   /// `resumed`: the simulation restored from a checkpoint with `counters`, or null for a fresh
