@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
   lattice.dx = lattice.dy = 1.0 / 64;
   Quench quench;
   quench.rho0 = 1.0, quench.T = 0.85, quench.noise = 0.05, quench.seed = 7;
-  const auto state = [&](double x, double y) { return quench.state(lattice, x, y); };
+  const QuenchNoise xi = quench.noise_field(lattice);
+  const auto state = [&](double x, double y) { return quench.state(xi, x, y); };
 
   BgkSettings gls_bgk;
   gls_bgk.gamma = 2.0, gls_bgk.tau = 1e-3, gls_bgk.dt = 1e-3;

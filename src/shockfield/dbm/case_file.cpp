@@ -170,11 +170,13 @@ void read_gls_part(const Config& root, const Config& model, DbmCase& c) {
   g.settings = read_gls_model(model, c.bgk.tau);
   const Config initial = root.table("initial");
   initial.get_choice_or("type", {"quench"}, "quench");
-  g.quench = read_quench(initial, g.settings);
+  g.quench = read_quench(initial, g.settings, c.lattice);
   expected_density_range(g);
   const std::optional<Config> output = root.optional_table("output");
   g.threshold = output ? output->get_double_or("threshold", g.quench.rho0, {0.0, eos_max_density(g.settings.eos), true, true})
                        : g.quench.rho0;
+  if (output)
+    g.extra_thresholds = output->get_doubles_or("extra_thresholds", {}, {0.0, eos_max_density(g.settings.eos), true, true});
   check_gls_time_step(root.table("run"), g, c.lattice, c.model.max_speed(), c.bgk.tau, c.bgk.dt);
   c.gls = g;
 }

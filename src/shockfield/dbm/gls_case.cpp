@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "shockfield/core/error.hpp"
 #include "shockfield/dbm/coexistence.hpp"
 
 namespace shockfield::dbm {
@@ -34,7 +35,7 @@ GlsSettings read_gls_model(const Config& model, double tau) {
   return s;
 }
 
-Quench read_quench(const Config& initial, const GlsSettings& gls) {
+Quench read_quench(const Config& initial, const GlsSettings& gls, const Lattice& lattice) {
   Quench q;
   const double max_density = eos_max_density(gls.eos);
   q.rho0 = initial.get_double("rho0", {0.0, max_density, true, true});
@@ -42,9 +43,19 @@ Quench read_quench(const Config& initial, const GlsSettings& gls) {
   // noise > 0: a uniform quench is a steady state of the model and never separates (nothing to measure).
   q.noise = initial.get_double_or("noise", 0.01, {0.0, 1.0, true, true});
   q.seed = static_cast<std::uint64_t>(initial.get_int_or("seed", 1, Range::non_negative()));
-  if (q.rho0 * (1.0 + q.noise) >= max_density)
-    initial.fail("noise", fmt::format("rho0 (1 + noise) = {} reaches the EOS limit {} (excluded volume)",
-                                      q.rho0 * (1.0 + q.noise), max_density));
+  q.noise_wavelength = initial.get_double_or("noise_wavelength", 0.0, Range::non_negative());
+  double bound = 1.0;
+  try {
+    bound = q.noise_field(lattice).bound();
+  } catch (const InputError& e) {
+    initial.fail("noise_wavelength", e.what());
+  }
+  if (q.rho0 * (1.0 + q.noise * bound) >= max_density)
+    initial.fail("noise", fmt::format("rho0 (1 + noise max|xi|) = {} reaches the EOS limit {} (excluded volume)",
+                                      q.rho0 * (1.0 + q.noise * bound), max_density));
+  if (q.rho0 * (1.0 - q.noise * bound) <= 0.0)
+    initial.fail("noise", fmt::format("rho0 (1 - noise max|xi|) = {} is not positive (max|xi| = {:.3g})",
+                                      q.rho0 * (1.0 - q.noise * bound), bound));
   return q;
 }
 

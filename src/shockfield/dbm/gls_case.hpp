@@ -14,6 +14,7 @@ struct GlsCaseSpec {
   GlsSettings settings;
   Quench quench;
   double threshold = 0.0;    ///< density level of the boundary length L(t); default ρ0
+  std::vector<double> extra_thresholds;  ///< more levels of L(t) (series columns L_rho<level>)
   double rho_vapour = 0.0;   ///< density range expected in the run (Maxwell construction at the
   double rho_liquid = 0.0;   ///< quench T, or ρ0(1 ± noise) above T_c): EOS domain and Δt check
 };
@@ -22,8 +23,9 @@ struct GlsCaseSpec {
 /// the caller). InputError naming the key for values out of range.
 GlsSettings read_gls_model(const Config& model, double tau);
 
-/// [initial] type = "quench": rho0, T, noise, seed; refuses densities outside the EOS domain.
-Quench read_quench(const Config& initial, const GlsSettings& gls);
+/// [initial] type = "quench": rho0, T, noise, seed, noise_wavelength (0: white noise per cell); refuses
+/// densities outside the EOS domain and a noise wavelength the lattice cannot hold.
+Quench read_quench(const Config& initial, const GlsSettings& gls, const Lattice& lattice);
 
 /// The densities the quench will reach (Maxwell construction at T below T_c).
 void expected_density_range(GlsCaseSpec& spec);

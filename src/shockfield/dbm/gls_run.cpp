@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/analysis/minkowski.hpp"
 #include "shockfield/dbm/phase_separation.hpp"
 #include "shockfield/io/csv_writer.hpp"
 
@@ -19,12 +20,15 @@ GlsRunPart::GlsRunPart(Simulation& sim, const DbmCase& c)
 
 void GlsRunPart::initialize(Simulation& sim) const {
   const Lattice& lattice = sim.lattice();
-  sim.initialize([&](double x, double y) { return spec_.quench.state(lattice, x, y); });
+  const QuenchNoise xi = spec_.quench.noise_field(lattice);
+  sim.initialize([&](double x, double y) { return spec_.quench.state(xi, x, y); });
 }
 
-std::vector<std::string> GlsRunPart::series_columns() {
-  return {"step", "time", "D", "D_force", "D_gradient", "L", "R", "density_variance",
-          "rho_min", "rho_max", "T_mean", "u_max", "mass", "energy"};
+std::vector<std::string> GlsRunPart::series_columns() const {
+  std::vector<std::string> columns{"step", "time", "D", "D_force", "D_gradient", "L", "R", "density_variance",
+                                   "rho_min", "rho_max", "T_mean", "u_max", "mass", "energy"};
+  for (const double level : spec_.extra_thresholds) columns.push_back(fmt::format("L_rho{}", level));
+  return columns;
 }
 
 std::vector<double> GlsRunPart::series_row(const Simulation& sim) {
@@ -38,8 +42,12 @@ std::vector<double> GlsRunPart::series_row(const Simulation& sim) {
       u = std::max(u, std::hypot(m.ux, m.uy));
     }
   T /= static_cast<double>(l.nx) * l.ny;
-  return {static_cast<double>(sim.steps()), s.t, s.D, s.D_force, s.D_gradient, s.boundary_length,
-          s.domain_size, s.density_variance, lo, hi, T, u, s.mass, s.energy};
+  std::vector<double> row{static_cast<double>(sim.steps()), s.t, s.D, s.D_force, s.D_gradient, s.boundary_length,
+                          s.domain_size, s.density_variance, lo, hi, T, u, s.mass, s.energy};
+  if (!spec_.extra_thresholds.empty())
+    for (const analysis::Functionals2D& m : analysis::minkowski_2d(density_field(sim), spec_.extra_thresholds))
+      row.push_back(m.boundary_length);
+  return row;
 }
 
 std::vector<io::VtkArray> GlsRunPart::field_arrays() {

@@ -21,7 +21,8 @@ class GlsRunPart {
 
   /// f = f^eq of the quench on every cell.
   void initialize(Simulation& sim) const;
-  static std::vector<std::string> series_columns();
+  /// The columns of series_row; L_rho<level> per extra threshold.
+  std::vector<std::string> series_columns() const;
   std::vector<double> series_row(const Simulation& sim);
   /// D and D^F (eq. 35 of Δ* and Δ*^F) per cell, for the field frames.
   std::vector<io::VtkArray> field_arrays();

@@ -1,19 +1,57 @@
 #include "shockfield/dbm/phase_separation.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
 
 #include "shockfield/analysis/minkowski.hpp"
 #include "shockfield/analysis/spectral_statistics.hpp"
+#include "shockfield/core/error.hpp"
 #include "shockfield/core/rng.hpp"
 
 namespace shockfield::dbm {
 
-Macro Quench::state(const Lattice& lattice, double x, double y) const {
-  const auto i = static_cast<std::uint64_t>(std::floor(x / lattice.dx));
-  const auto j = static_cast<std::uint64_t>(std::floor(y / lattice.dy));
-  const double xi = 2.0 * rng::uniform(seed, i, j) - 1.0;
-  return Macro{rho0 * (1.0 + noise * xi), 0.0, 0.0, T};
+QuenchNoise::QuenchNoise(std::uint64_t seed, double shortest_wavelength, const Lattice& lattice)
+    : seed_(seed), lattice_(lattice) {
+  if (shortest_wavelength <= 0.0) return;
+  if (shortest_wavelength < 2.0 * std::max(lattice.dx, lattice.dy))
+    throw InputError(fmt::format("quench noise: the shortest wavelength {} is below two cells ({}): the grid cannot "
+                                 "hold its modes", shortest_wavelength, 2.0 * std::max(lattice.dx, lattice.dy)));
+  const double Lx = lattice.nx * lattice.dx, Ly = lattice.ny * lattice.dy;
+  // The relative slack keeps a mode on the cutoff circle on every grid of the box (Lx = nx dx rounds).
+  const double cut2 = (1.0 + 1e-9) / (shortest_wavelength * shortest_wavelength);
+  const int mx = static_cast<int>(Lx / shortest_wavelength) + 1, my = static_cast<int>(Ly / shortest_wavelength) + 1;
+  double power = 0.0, sum = 0.0;
+  for (int n = 0; n <= my; ++n)
+    for (int m = -mx; m <= mx; ++m) {
+      if ((n == 0 && m <= 0) || (m / Lx) * (m / Lx) + (n / Ly) * (n / Ly) > cut2) continue;
+      const auto a = static_cast<std::uint64_t>(static_cast<std::int64_t>(m)), b = static_cast<std::uint64_t>(n);
+      const double amplitude = rng::normal(seed, a, b, 0);
+      modes_.push_back({2.0 * std::numbers::pi * m / Lx, 2.0 * std::numbers::pi * n / Ly, amplitude,
+                        2.0 * std::numbers::pi * rng::uniform(seed, a, b, 2)});
+      power += 0.5 * amplitude * amplitude, sum += std::abs(amplitude);
+    }
+  const double scale = 1.0 / std::sqrt(3.0 * power);
+  for (Mode& mode : modes_) mode.amplitude *= scale;
+  bound_ = sum * scale;
+}
+
+double QuenchNoise::operator()(double x, double y) const {
+  if (modes_.empty()) {
+    const auto i = static_cast<std::uint64_t>(std::floor(x / lattice_.dx));
+    const auto j = static_cast<std::uint64_t>(std::floor(y / lattice_.dy));
+    return 2.0 * rng::uniform(seed_, i, j) - 1.0;
+  }
+  double xi = 0.0;
+  for (const Mode& m : modes_) xi += m.amplitude * std::cos(m.kx * x + m.ky * y + m.phase);
+  return xi;
+}
+
+Macro Quench::state(const QuenchNoise& xi, double x, double y) const {
+  return Macro{rho0 * (1.0 + noise * xi(x, y)), 0.0, 0.0, T};
 }
 
 analysis::GridField density_field(const Simulation& simulation) {

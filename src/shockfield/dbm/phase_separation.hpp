@@ -14,12 +14,40 @@
 
 namespace shockfield::dbm {
 
-/// ρ(x, y) = ρ0 (1 + noise·ξ), ξ uniform in [−1, 1) from a counter-based generator of (seed, cell),
-/// at rest at temperature T. The noise has zero mean only statistically.
+/// The density noise ξ(x, y) of a quench, with the mean square 1/3 of a uniform number in [−1, 1):
+/// - shortest wavelength λ = 0: white noise, ξ uniform in [−1, 1) per cell from a counter-based
+///   generator of (seed, i, j); a finer grid draws a different field (more, weaker modes);
+/// - λ > 0: band-limited noise, the same function of (x, y) on every grid of the same box:
+///   ξ = s Σ A_mn cos(k_mn·x + φ_mn) over the box's Fourier modes k_mn = 2π(m/L_x, n/L_y) with
+///   0 < |k_mn| ≤ 2π/λ (one of ±k each), A_mn standard normal and φ_mn uniform in [0, 2π) from the
+///   generator of (seed, m, n), s = (3 Σ A²/2)^(−1/2); its mean is 0 exactly, its spectrum flat up to
+///   the cutoff (docs/theory/dbm.md, "Thermal phase separation").
+class QuenchNoise {
+ public:
+  /// InputError when λ > 0 is shorter than two cells (the grid cannot hold its modes).
+  QuenchNoise(std::uint64_t seed, double shortest_wavelength, const Lattice& lattice);
+  double operator()(double x, double y) const;
+  /// An upper bound of |ξ| (1 for white noise, s Σ|A_mn| for the modes).
+  double bound() const { return bound_; }
+  std::size_t modes() const { return modes_.size(); }
+
+ private:
+  struct Mode {
+    double kx, ky, amplitude, phase;
+  };
+  std::uint64_t seed_;
+  Lattice lattice_;
+  std::vector<Mode> modes_;  // empty for white noise
+  double bound_ = 1.0;
+};
+
+/// ρ(x, y) = ρ0 (1 + noise·ξ(x, y)) at rest at temperature T (ξ: QuenchNoise).
 struct Quench {
   double rho0 = 1.0, T = 0.9, noise = 0.01;
   std::uint64_t seed = 1;
-  Macro state(const Lattice& lattice, double x, double y) const;
+  double noise_wavelength = 0.0;  // shortest wavelength of the noise; 0: white noise per cell
+  QuenchNoise noise_field(const Lattice& lattice) const { return {seed, noise_wavelength, lattice}; }
+  Macro state(const QuenchNoise& xi, double x, double y) const;
 };
 
 struct PhaseSample {

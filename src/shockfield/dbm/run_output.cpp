@@ -21,7 +21,7 @@ RunOutput::RunOutput(const fs::path& folder, const DbmOutputSpec& spec, const Si
   const double keep_step = resumed ? static_cast<double>(resumed->steps()) : 0.0;
   const double keep_profile = static_cast<double>(counters.profiles) - 1.0;
   std::vector<std::string> series_columns =
-      gls ? GlsRunPart::series_columns() : std::vector<std::string>{"step", "time", "rho", "ux", "uy", "T", "D"};
+      gls ? gls->series_columns() : std::vector<std::string>{"step", "time", "rho", "ux", "uy", "T", "D"};
   if (reaction_) series_columns.insert(series_columns.end(), {"lambda", "chemical_energy", "total_energy", "front_x"});
   series_ = io::CsvWriter(folder / "series.csv", series_columns, resumed ? &keep_step : nullptr);
   fs::create_directories(folder / "profiles");

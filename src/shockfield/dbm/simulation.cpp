@@ -61,6 +61,13 @@ void Simulation::allocate() {
   if (settings_.spectral_convection) {
     spectral_ = std::make_unique<PeriodicSpectral>(lattice_.nx, lattice_.ny, lattice_.dx, lattice_.dy);
     convection_.assign(spectral_->size() * model_.size(), 0.0);
+    const auto batch = [&](int count) {
+      return std::unique_ptr<VelocityPlans>(new VelocityPlans{
+          {*spectral_, count, lattice_.stride(), lattice_.cells()}, {*spectral_, count, lattice_.nx, spectral_->size()}});
+    };
+    full_batch_ = batch(std::min(kVelocityBatch, model_.size()));
+    if (model_.size() > kVelocityBatch && model_.size() % kVelocityBatch != 0)
+      last_batch_ = batch(model_.size() % kVelocityBatch);
   }
   f_.assign(n, 0.0);
   f1_.assign(n, 0.0);
@@ -100,46 +107,51 @@ Macro Simulation::macro(int i, int j) const {
   return macro_of(model_, f_.data() + lattice_.at(i, j), lattice_.cells(), b_);
 }
 
-void Simulation::interior(const std::vector<double>& f, int k, std::vector<double>& field) const {
-  const std::size_t N = lattice_.cells();
-  for (int j = 0; j < lattice_.ny; ++j)
-    for (int i = 0; i < lattice_.nx; ++i)
-      field[i + static_cast<std::size_t>(lattice_.nx) * j] = f[k * N + lattice_.at(i, j)];
+const Simulation::VelocityPlans& Simulation::plans(int b) const {
+  return last_batch_ && b == velocity_batches() - 1 ? *last_batch_ : *full_batch_;
 }
 
-void Simulation::spectral_convection(const std::vector<double>& f) {
-  const std::size_t n = spectral_->size();
-  // One velocity per thread, each transform serial: the same numbers for any thread count.
+namespace {
+
+/// Forward transforms of the velocities of f (batch b's first interior cell at first(b), plans(b)),
+/// op(spectrum, k) on velocity k's spectrum, back(b, spectra) for the batch's inverse transform.
+/// Batches spread over the threads, each transform serial: the same numbers for any thread count.
+template <class First, class Plans, class Op, class Back>
+void over_velocity_spectra(int batches, int per_batch, std::size_t spectrum_size, First first, Plans plans, Op op,
+                           Back back) {
 #pragma omp parallel
   {
-    std::vector<double> field(n);
+    std::vector<std::complex<double>> s(spectrum_size * per_batch);
 #pragma omp for schedule(static)
-    for (int k = 0; k < model_.size(); ++k) {
-      interior(f, k, field);
-      auto s = spectral_->forward(field);
-      auto sy = s;
-      for (auto& v : s) v *= model_.vx[k];
-      for (auto& v : sy) v *= model_.vy[k];
-      const std::vector<double> d = spectral_->divergence(s, sy);
-      std::copy(d.begin(), d.end(), convection_.begin() + static_cast<std::ptrdiff_t>(k * n));
+    for (int b = 0; b < batches; ++b) {
+      const SpectralBatch& forward = plans(b).ghosted;
+      forward.forward(first(b), s.data());
+      for (int m = 0; m < forward.count(); ++m) op(s.data() + m * spectrum_size, b * per_batch + m);
+      back(b, s.data());
     }
   }
+}
+
+}  // namespace
+
+void Simulation::spectral_convection(const std::vector<double>& f) {
+  const std::size_t n = spectral_->size(), N = lattice_.cells();
+  const auto plans = [this](int b) -> const VelocityPlans& { return this->plans(b); };
+  over_velocity_spectra(
+      velocity_batches(), kVelocityBatch, spectral_->spectrum_size(),
+      [&](int b) { return f.data() + b * kVelocityBatch * N + lattice_.at(0, 0); }, plans,
+      [&](std::complex<double>* s, int k) { spectral_->convect(s, model_.vx[k], model_.vy[k]); },
+      [&](int b, std::complex<double>* s) { plans(b).compact.backward(s, convection_.data() + b * kVelocityBatch * n); });
 }
 
 void Simulation::apply_state_filter() {
   const std::size_t N = lattice_.cells();
-#pragma omp parallel
-  {
-    std::vector<double> field(spectral_->size());
-#pragma omp for schedule(static)
-    for (int k = 0; k < model_.size(); ++k) {
-      interior(f_, k, field);
-      const std::vector<double> smooth = spectral_->filtered(field);
-      for (int j = 0; j < lattice_.ny; ++j)
-        for (int i = 0; i < lattice_.nx; ++i)
-          f_[k * N + lattice_.at(i, j)] = smooth[i + static_cast<std::size_t>(lattice_.nx) * j];
-    }
-  }
+  const auto first = [&](int b) { return f_.data() + b * kVelocityBatch * N + lattice_.at(0, 0); };
+  const auto plans = [this](int b) -> const VelocityPlans& { return this->plans(b); };
+  over_velocity_spectra(
+      velocity_batches(), kVelocityBatch, spectral_->spectrum_size(), first, plans,
+      [&](std::complex<double>* s, int) { spectral_->apply_state_filter(s); },
+      [&](int b, std::complex<double>* s) { plans(b).ghosted.backward(s, first(b)); });
 }
 
 void Simulation::stage(std::vector<double>& f, const RowOutput& output) {

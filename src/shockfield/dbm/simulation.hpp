@@ -90,8 +90,17 @@ class Simulation {
   void spectral_convection(const std::vector<double>& f);
   /// The state filter of PeriodicSpectral applied to every f_k (interior cells).
   void apply_state_filter();
-  /// f_k of the interior cells into field (i + nx·j).
-  void interior(const std::vector<double>& f, int k, std::vector<double>& field) const;
+
+  /// The velocities are transformed kVelocityBatch at a time (one FFTW call per batch, batches spread
+  /// over the threads, so the numbers do not depend on the thread count).
+  static constexpr int kVelocityBatch = 4;
+  /// The plans of one batch: f_k's interior cells in the ghosted layout, and convection_'s layout.
+  struct VelocityPlans {
+    SpectralBatch ghosted, compact;
+  };
+  int velocity_batches() const { return (model_.size() + kVelocityBatch - 1) / kVelocityBatch; }
+  /// Batch b's plans (the last batch may hold fewer velocities).
+  const VelocityPlans& plans(int b) const;
 
   VelocityModel model_;
   MomentInversion inversion_;
@@ -102,6 +111,7 @@ class Simulation {
   const parallel::HaloExchange* halo_ = nullptr;
   Source source_;
   std::unique_ptr<PeriodicSpectral> spectral_;
+  std::unique_ptr<VelocityPlans> full_batch_, last_batch_;  // last_batch_ only when Q % kVelocityBatch != 0
   std::vector<double> convection_;
   std::vector<double> f_, f1_, work_;  // work_: the second stage, or L(f) with a source
   bool f_in_place_ = false;

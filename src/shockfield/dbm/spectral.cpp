@@ -34,11 +34,10 @@ PeriodicSpectral::PeriodicSpectral(int nx, int ny, double dx, double dy)
   std::vector<double> real(size());
   Spectrum spec(static_cast<std::size_t>(hx_) * ny_);
   auto* c = reinterpret_cast<fftw_complex*>(spec.data());
-  // FFTW_ESTIMATE never touches the arrays, and new-array execution needs only equal alignment,
-  // which std::vector's allocator gives every array of the same type.
-  forward_plan_ = fftw_plan_dft_r2c_2d(ny, nx, real.data(), c, FFTW_ESTIMATE | FFTW_UNALIGNED);
-  backward_plan_ = fftw_plan_dft_c2r_2d(ny, nx, c, real.data(),
-                                        FFTW_ESTIMATE | FFTW_UNALIGNED | FFTW_DESTROY_INPUT);
+  // FFTW_ESTIMATE never touches the arrays, and new-array execution needs only equal (16-byte)
+  // alignment, which std::vector's allocator gives every array.
+  forward_plan_ = fftw_plan_dft_r2c_2d(ny, nx, real.data(), c, FFTW_ESTIMATE);
+  backward_plan_ = fftw_plan_dft_c2r_2d(ny, nx, c, real.data(), FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
 }
 
 PeriodicSpectral::~PeriodicSpectral() {
@@ -47,9 +46,9 @@ PeriodicSpectral::~PeriodicSpectral() {
 }
 
 PeriodicSpectral::Spectrum PeriodicSpectral::forward(const std::vector<double>& field) const {
-  std::vector<double> in(field);
   Spectrum out(static_cast<std::size_t>(hx_) * ny_);
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_plan_), in.data(),
+  // FFTW's r2c transforms leave their input alone (no FFTW_DESTROY_INPUT).
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_plan_), const_cast<double*>(field.data()),
                        reinterpret_cast<fftw_complex*>(out.data()));
   return out;
 }
@@ -100,10 +99,50 @@ std::vector<double> PeriodicSpectral::laplacian(const Spectrum& s) const {
   return backward(std::move(d));
 }
 
-std::vector<double> PeriodicSpectral::filtered(const std::vector<double>& field) const {
-  Spectrum s = forward(field);
-  for (std::size_t c = 0; c < s.size(); ++c) s[c] *= state_filter_[c];
-  return backward(std::move(s));
+void PeriodicSpectral::convect(std::complex<double>* s, double vx, double vy) const {
+  for (int iy = 0; iy < ny_; ++iy)
+    for (int ix = 0; ix < hx_; ++ix) {
+      const std::size_t c = ix + static_cast<std::size_t>(hx_) * iy;
+      s[c] = factor(ix, iy, 1, 0) * (s[c] * vx) + factor(ix, iy, 0, 1) * (s[c] * vy);
+    }
+}
+
+void PeriodicSpectral::apply_state_filter(std::complex<double>* s) const {
+  for (std::size_t c = 0; c < state_filter_.size(); ++c) s[c] *= state_filter_[c];
+}
+
+SpectralBatch::SpectralBatch(const PeriodicSpectral& grid, int count, int row_stride, std::size_t field_stride)
+    : nx_(grid.nx()), ny_(grid.ny()), count_(count), row_stride_(row_stride), field_stride_(field_stride) {
+  const int n[2] = {ny_, nx_}, embed[2] = {ny_, row_stride};
+  const auto spectrum = static_cast<int>(grid.spectrum_size());
+  std::vector<double> real(field_stride * count);
+  std::vector<std::complex<double>> spectra(grid.spectrum_size() * count);
+  auto* c = reinterpret_cast<fftw_complex*>(spectra.data());
+  const auto stride = static_cast<int>(field_stride);
+  forward_plan_ = fftw_plan_many_dft_r2c(2, n, count, real.data(), embed, 1, stride, c, nullptr, 1, spectrum,
+                                         FFTW_ESTIMATE);
+  backward_plan_ = fftw_plan_many_dft_c2r(2, n, count, c, nullptr, 1, spectrum, real.data(), embed, 1, stride,
+                                          FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+}
+
+SpectralBatch::~SpectralBatch() {
+  fftw_destroy_plan(static_cast<fftw_plan>(forward_plan_));
+  fftw_destroy_plan(static_cast<fftw_plan>(backward_plan_));
+}
+
+void SpectralBatch::forward(const double* fields, std::complex<double>* spectra) const {
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_plan_), const_cast<double*>(fields),
+                       reinterpret_cast<fftw_complex*>(spectra));
+}
+
+void SpectralBatch::backward(std::complex<double>* spectra, double* fields) const {
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_plan_), reinterpret_cast<fftw_complex*>(spectra), fields);
+  const double norm = 1.0 / (static_cast<double>(nx_) * ny_);
+  for (int m = 0; m < count_; ++m)
+    for (int j = 0; j < ny_; ++j) {
+      double* row = fields + m * field_stride_ + static_cast<std::size_t>(row_stride_) * j;
+      for (int i = 0; i < nx_; ++i) row[i] *= norm;
+    }
 }
 
 }  // namespace shockfield::dbm

@@ -3,8 +3,12 @@
 // peak of D(t). The long K study is not a unit test (see docs/theory/dbm.md for its status).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <numbers>
+
+#include "shockfield/core/error.hpp"
 
 #include "shockfield/dbm/phase_separation.hpp"
 #include "unit/dbm_gls/gls_setup.hpp"
@@ -17,11 +21,12 @@ TEST(DbmPhaseSeparation, QuenchIsSeededNoiseAroundTheMeanDensity) {
   lattice.nx = lattice.ny = 32, lattice.dx = lattice.dy = 1.0 / 32;
   Quench q;
   q.noise = 0.05;
+  const QuenchNoise xi = q.noise_field(lattice);
   double mean = 0, lo = 1e9, hi = -1e9;
   for (int j = 0; j < 32; ++j)
     for (int i = 0; i < 32; ++i) {
-      const Macro m = q.state(lattice, lattice.x(i), lattice.y(j));
-      EXPECT_EQ(m.rho, q.state(lattice, lattice.x(i), lattice.y(j)).rho);
+      const Macro m = q.state(xi, lattice.x(i), lattice.y(j));
+      EXPECT_EQ(m.rho, q.state(xi, lattice.x(i), lattice.y(j)).rho);
       mean += m.rho / 1024, lo = std::min(lo, m.rho), hi = std::max(hi, m.rho);
     }
   EXPECT_NEAR(mean, 1.0, 0.005);
@@ -29,7 +34,80 @@ TEST(DbmPhaseSeparation, QuenchIsSeededNoiseAroundTheMeanDensity) {
   EXPECT_LE(hi, 1.05);
   Quench other = q;
   other.seed = 2;
-  EXPECT_NE(other.state(lattice, 0.5, 0.5).rho, q.state(lattice, 0.5, 0.5).rho);
+  EXPECT_NE(other.state(other.noise_field(lattice), 0.5, 0.5).rho, q.state(xi, 0.5, 0.5).rho);
+}
+
+namespace {
+
+Lattice unit_box(int n) {
+  Lattice l;
+  l.nx = l.ny = n, l.dx = l.dy = 1.0 / n;
+  return l;
+}
+
+// ξ of the n² interior cells (i + n·j).
+std::vector<double> noise_on(const Quench& q, const Lattice& l) {
+  const QuenchNoise xi = q.noise_field(l);
+  std::vector<double> v(static_cast<std::size_t>(l.nx) * l.ny);
+  for (int j = 0; j < l.ny; ++j)
+    for (int i = 0; i < l.nx; ++i) v[i + static_cast<std::size_t>(l.nx) * j] = xi(l.x(i), l.y(j));
+  return v;
+}
+
+}  // namespace
+
+TEST(DbmPhaseSeparation, BandLimitedNoiseIsTheSameFieldOnEveryGrid) {
+  // The modes' noise is a function of (x, y) and the box alone: the 64² and 128² grids (and 96²,
+  // whose Δx = 1/96 rounds) see the same value at any point (round-off of a ~300-term cosine sum),
+  // the same Fourier coefficients on the modes both hold, nothing above the cutoff |k| ≤ 2π·16, a
+  // zero mean and the mean square 1/3 of white noise (exact on a grid that resolves the modes).
+  // White noise (wavelength 0) fails each of these: its 64² and 128² fields differ point by point.
+  Quench q;
+  q.seed = 7, q.noise_wavelength = 1.0 / 16;
+  const Lattice coarse = unit_box(64), fine = unit_box(128), odd = unit_box(96);
+  const QuenchNoise a = q.noise_field(coarse), b = q.noise_field(fine), c = q.noise_field(odd);
+  EXPECT_GT(a.modes(), 300u);  // π·16²/2 ≈ 402 modes in the half disc
+  for (const double x : {0.0, 0.123, 0.5, 0.77})
+    for (const double y : {0.0, 0.31, 0.9}) {
+      EXPECT_NEAR(a(x, y), b(x, y), 1e-12);
+      EXPECT_NEAR(a(x, y), c(x, y), 1e-12);
+    }
+  const std::vector<double> va = noise_on(q, coarse), vb = noise_on(q, fine);
+  const PeriodicSpectral sa(64, 64, 1.0 / 64, 1.0 / 64), sb(128, 128, 1.0 / 128, 1.0 / 128);
+  const auto fa = sa.forward(va), fb = sb.forward(vb);
+  // Coefficient of mode (m, n) of the field (half-spectrum rows n ≥ 0, then n < 0 at size + n), over the
+  // cell count and with the phase of the half-cell offset of the cell centres, e^{iπ(m + n)/size}, removed.
+  const auto coef = [](const std::vector<std::complex<double>>& s, int size, int m, int n) {
+    const std::complex<double> shift = std::polar(1.0, -std::numbers::pi * (m + n) / size);
+    return shift * s[m + static_cast<std::size_t>(size / 2 + 1) * (n >= 0 ? n : size + n)] /
+           static_cast<double>(size * size);
+  };
+  double beyond = 0.0, diff = 0.0;
+  for (int n = -63; n <= 64; ++n)
+    for (int m = 0; m <= 64; ++m) {
+      const bool inside = m * m + n * n <= 256;
+      if (!inside) beyond = std::max(beyond, std::abs(coef(fb, 128, m, n)));
+      if (inside && m <= 31 && std::abs(n) <= 31) diff = std::max(diff, std::abs(coef(fa, 64, m, n) - coef(fb, 128, m, n)));
+    }
+  EXPECT_LT(beyond, 1e-13);
+  EXPECT_LT(diff, 1e-13);
+  for (const std::vector<double>* v : {&va, &vb}) {
+    double mean = 0, square = 0;
+    for (const double x : *v) mean += x / v->size(), square += x * x / v->size();
+    EXPECT_NEAR(mean, 0.0, 1e-13);
+    EXPECT_NEAR(square, 1.0 / 3.0, 1e-12);
+    EXPECT_LE(*std::max_element(v->begin(), v->end()), a.bound());
+  }
+  q.noise_wavelength = 0.0;  // white noise: the two grids draw different fields
+  const QuenchNoise wa = q.noise_field(coarse), wb = q.noise_field(fine);
+  EXPECT_GT(std::abs(wa(0.123, 0.31) - wb(0.123, 0.31)), 1e-3);
+}
+
+TEST(DbmPhaseSeparation, NoiseShorterThanTwoCellsIsRefused) {
+  Quench q;
+  q.noise_wavelength = 1.0 / 40;
+  EXPECT_NO_THROW(q.noise_field(unit_box(80)));
+  EXPECT_THROW(q.noise_field(unit_box(64)), InputError);
 }
 
 TEST(DbmPhaseSeparation, SampleOfAStripe) {

@@ -85,7 +85,8 @@ TEST(DbmGlsStateFilter, QuenchThatBrokeDownRunsToTheEndWithMassConserved) {
     c.filter_state = filter;
     Lattice lattice;
     lattice.nx = lattice.ny = 16, lattice.dx = lattice.dy = c.length / 16;
-    auto run = gls_testing::make_gls(c, [&](double x, double y) { return quench.state(lattice, x, y); });
+    const QuenchNoise xi = quench.noise_field(lattice);
+    auto run = gls_testing::make_gls(c, [&](double x, double y) { return quench.state(xi, x, y); });
     const double m0 = mass(*run.sim);
     bool broke = false;
     try {
