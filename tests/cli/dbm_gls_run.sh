@@ -64,4 +64,18 @@ deep="${gls/rho0 = 1.0/rho0 = 2.6}"; deep="${deep/noise = 0.05/noise = 0.15}"; d
 filter_state = false}"
 run_expecting 3 "${deep/T = 0.85/T = 0.2}" "broke down"
 [ -s "$WORK/out/series.csv" ] && [ -s "$WORK/out/summary.csv" ] || fail "a blown-up GLS run lost its output"
-echo "dbm_gls_run: series, summary, fields, derived dt limit, bitwise resume, refused GLS input, blow-up"
+# [output] extra_thresholds: L at the default threshold (rho0 = 1) again as column L_rho1 equals column L;
+# [initial] noise_wavelength: band-limited noise runs, one shorter than two cells is refused.
+run_expecting 0 "${gls/checkpoint_every = 5/checkpoint_every = 5
+extra_thresholds = [1.0, 1.3]}"
+/usr/bin/python3 - "$WORK/out/series.csv" <<'PY' || fail "L_rho1 differs from L"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert "L_rho1.3" in rows[0], rows[0].keys()
+assert all(r["L_rho1"] == r["L"] for r in rows) and float(rows[1]["L"]) > 0, [(r["L"], r["L_rho1"]) for r in rows]
+PY
+run_expecting 0 "${gls/noise = 0.05/noise = 0.05
+noise_wavelength = 0.25}"
+expect_error "${gls/noise = 0.05/noise = 0.05
+noise_wavelength = 0.1}" "initial.noise_wavelength" "two cells"
+echo "dbm_gls_run: series, summary, fields, derived dt limit, bitwise resume, refused GLS input, blow-up, extra L thresholds, band-limited noise"
