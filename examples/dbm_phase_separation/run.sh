@@ -2,8 +2,8 @@
 # The phase-separation study of Xu et al. (2015), §4.3 (Figs. 63-64, eqs. 34-37): `shockfield sweep` of
 # case.toml over K, the convergence and sensitivity sweeps, then plot.py (table.md, fig63.png, fig64.png).
 # usage: run.sh [RUNS] [PART ...], PART in study, conv, sensitivity (default: all three).
-# Times on this machine (README; load average 8-9, one thread per run): study ~35 min of wall time
-# (K = 1e-5 on 128² alone ~20 min), conv ~15 min, sensitivity ~15 min per sweep.
+# Wall times measured on this machine (load average 6-9, one thread per run): 64² runs 2-5 min each,
+# K = 1e-5 on 128² 18 min, the convergence runs 2.4 (96²) to 16 min (128², K = 3e-5) each.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 exe=${SHOCKFIELD:-$here/../../build/release/shockfield}
