@@ -90,9 +90,9 @@ struct ModelRun {
   std::unique_ptr<ForceModel> force;
   double density = 0.0;
   PointFields fields;
-  std::function<std::vector<double>()> save;
+  std::function<ModelState()> save;
   /// Takes back the saved state.
-  std::function<void(const std::vector<double>&)> restore;
+  std::function<void(const ModelState&)> restore;
   std::function<void(const Config&)> derive;
 };
 
@@ -114,7 +114,7 @@ ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const
                {[&force](std::size_t i) { return force.stress(i); },
                 [&force](std::size_t i) { return plastic_measure(force.state(i)); }, grain, {}},
                [&force] { return force.saved_state(); },
-               [&force](const std::vector<double>& state) { force.restore_state(state); },
+               [&force](const ModelState& state) { force.restore_state(state); },
                [&c, materials = std::move(materials), grain = grain](const Config& r) {
                  derive_material(r, c, materials, grain);
                }};
@@ -135,7 +135,7 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
                spec.density,
                {{}, {}, std::vector<int>(cloud.size(), 0), {}},
                [&force] { return force.saved_state(); },
-               [&force](const std::vector<double>& state) { force.restore_state(state); },
+               [&force](const ModelState& state) { force.restore_state(state); },
                {}};
   run.force = std::move(model);
   return run;
@@ -248,7 +248,7 @@ class PdMethod final : public Method {
     write_due();
   }
   void resume(RunContext& run) override {
-    std::vector<double> state;
+    ModelState state;
     counters_ = read_checkpoint(run.checkpoint, sim_, state);
     model_.restore(state);
     apply_regions(sim_, c_.regions, false);
