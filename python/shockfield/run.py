@@ -150,9 +150,13 @@ class Run:
 
     @property
     def case_name(self):
-        """The case file's name (summary.json's ``case``), else the folder's name."""
+        """The case file's name (summary.json's ``case``; "<folder>/case.toml" for a file named
+        case.toml, as examples name theirs), else the run folder's name."""
         case = (self.summary or {}).get("case")
-        return pathlib.Path(case).name if case else self.folder.name
+        if not case:
+            return self.folder.name
+        case = pathlib.Path(case)
+        return f"{case.parent.name}/{case.name}" if case.name == "case.toml" and case.parent.name else case.name
 
     def title(self, what):
         """A figure title naming the run: "<method> run <folder> (<case file>): <what>"."""

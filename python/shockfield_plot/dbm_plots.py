@@ -62,8 +62,7 @@ def profiles(run, out):
 
 def tne(run, out):
     run = Run.open(run)
-    panels = [Panel("D2xx", "Δ*_2xx (non-organised momentum flux)"),
-              Panel("D31x", "Δ*_(3,1)x (non-organised energy flux)")]
+    panels = [Panel("D2xx", "Δ*_2xx (momentum flux)"), Panel("D31x", "Δ*_(3,1)x (energy flux)")]
     fig, (series_ax,) = draw_profiles(run, panels, "x", "x", out, title_what="TNE measures (lattice units)",
                                       extra_axes=1)
     s = run.series
@@ -90,15 +89,16 @@ def phase_separation(run, out):
     frames = list(run.frames(array="rho", kind="fields"))
     rho_v, rho_l = (run.derived.get(k) for k in ("gls_expected_rho_vapour", "gls_expected_rho_liquid"))
     fig = plt.figure(figsize=(14, 7))
-    grid = fig.add_gridspec(2, 12)
-    image = None
+    grid = fig.add_gridspec(2, 12, left=0.06, right=0.97, wspace=2.0, hspace=0.3)
+    image, pictures = None, []
     for k, frame in enumerate(_picks(frames, t_sd)):
         ax = fig.add_subplot(grid[0, 3 * k:3 * k + 3])
+        pictures.append(ax)
         image = ax.imshow(frame.data, origin="lower", cmap="viridis", vmin=rho_v, vmax=rho_l)
         ax.set_xticks([])
         ax.set_yticks([])
         ax.set_title(f"ρ at t = {frame.time:.3g}", fontsize="small")
-    fig.colorbar(image, ax=fig.axes, shrink=0.8,
+    fig.colorbar(image, ax=pictures, shrink=0.8,
                  label="ρ (colour range: Maxwell ρ_v to ρ_l)" if rho_v is not None else "ρ")
     threshold = run.config.get("output", {}).get("threshold", run.config.get("initial", {}).get("rho0"))
     curves = [fig.add_subplot(grid[1, 4 * k:4 * k + 4]) for k in range(3)]

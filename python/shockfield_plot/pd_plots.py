@@ -79,13 +79,16 @@ def bar(runs, labels, out):
 
 
 def profiles(runs, labels, out):
-    """The first run's profiles: displacements (µm), velocities (m/s) and damage against x."""
+    """The first run's profiles: displacements (µm), velocities (m/s) and damage against x; an
+    impact's v/2 (the velocity behind the waves of two equal halves) dashed on vx."""
     run = Run.open(runs[0])
     names = run.last_frame(kind="profiles").data.dtype.names
+    loading = run.config.get("loading", {})
+    half = [("impact speed / 2", loading["speed"] / 2)] if loading.get("type") == "impact" else []
     panels = ([Panel(c, f"displacement {c.removesuffix('_m')} (µm)", 1e6) for c in names
                if c.startswith("u") and c.endswith("_m")]
-              + [Panel(c, f"velocity {c.removesuffix('_m_s')} (m/s)") for c in names
-                 if c.startswith("v") and c.endswith("_m_s")]
+              + [Panel(c, f"velocity {c.removesuffix('_m_s')} (m/s)", levels=half if c == "vx_m_s" else [])
+                 for c in names if c.startswith("v") and c.endswith("_m_s")]
               + [Panel("damage", "damage")])
     draw_profiles(run, panels, "x_m", "x (mm)", out, x_scale=1e3, time_unit="s")
 
