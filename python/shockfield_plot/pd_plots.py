@@ -212,7 +212,7 @@ def compression(runs, labels, out):
     fig.tight_layout()
     fig.savefig(out, dpi=100)
     first = eps[np.argmax(spread >= 100.0)] if (spread >= 100.0).any() else float("nan")
-    print(f"{run}: Taylor average {taylor[-1]:.1f} MPa at strain {eps[-1]:.3g}; spread reaches 100 MPa at strain "
+    print(f"{runs[0]}: Taylor average {taylor[-1]:.1f} MPa at strain {eps[-1]:.3g}; spread reaches 100 MPa at strain "
           f"{first:.3g}, peaks at {spread.max():.1f} MPa (strain {eps[np.argmax(spread)]:.3g}); SD peaks at "
           f"{sd.max():.1f} MPa (strain {eps[np.argmax(sd)]:.3g}); at strain 0.01/0.05/0.1: spread "
           + ", ".join(f"{np.interp(e, eps, spread):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa, Taylor "
