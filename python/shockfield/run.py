@@ -10,11 +10,14 @@ Tables are numpy structured arrays, one field per CSV column (numbers as float64
 ``Run.table(name, pandas=True)`` gives a pandas DataFrame instead when pandas is installed.
 """
 
+import binascii
 import csv
+import functools
 import json
 import pathlib
 import re
 import tomllib
+import zlib
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -22,6 +25,26 @@ import numpy as np
 from .errors import InputError
 
 
+def _malformed(what):
+    """Decorates a reader of one file (its first argument): a file it cannot parse (bad bytes,
+    numbers, structure) raises InputError naming the file and `what` was expected, never another
+    exception (tests/python/test_plot.py mutates every kind of file)."""
+    def decorate(reader):
+        @functools.wraps(reader)
+        def read(path, *args, **kwargs):
+            try:
+                return reader(path, *args, **kwargs)
+            except InputError:
+                raise
+            except FileNotFoundError:
+                raise InputError(f"{path}: no such file") from None
+            except (ValueError, KeyError, IndexError, TypeError, AttributeError, zlib.error, binascii.Error) as error:
+                raise InputError(f"{path}: not {what} ({type(error).__name__}: {error})") from None
+        return read
+    return decorate
+
+
+@_malformed("a CSV table with a header line")
 def read_csv(path):
     """A CSV file with a header line (lines starting with '#' skipped) as a structured array: a
     column whose every value is a number (an empty value: NaN) is float64, any other str."""
@@ -46,18 +69,21 @@ def read_csv(path):
     return out
 
 
+@_malformed("TOML")
 def read_toml(path):
     """A TOML file (config.resolved.toml, hugoniot_fit.toml, a material file) as a dict;
     InputError naming the file when it is missing or not TOML."""
-    try:
-        with open(path, "rb") as f:
-            return tomllib.load(f)
-    except FileNotFoundError:
-        raise InputError(f"{path}: no such file") from None
-    except tomllib.TOMLDecodeError as error:
-        raise InputError(f"{path}: not TOML ({error})") from None
+    with open(path, "rb") as f:
+        return tomllib.load(f)
 
 
+@_malformed("JSON")
+def read_json(path):
+    """A JSON file (summary.json) as a dict or list."""
+    return json.loads(pathlib.Path(path).read_text())
+
+
+@_malformed("a ParaView collection (.pvd)")
 def read_pvd(path):
     """The frames a ParaView collection (.pvd) lists, as (time, absolute file path) in its order."""
     path = pathlib.Path(path)
@@ -65,6 +91,7 @@ def read_pvd(path):
     return [(float(t), str(path.parent / f)) for t, f in entries]
 
 
+@_malformed("VTK PolyData with point arrays (.vtp)")
 def read_points(path):
     """The points of a VTK PolyData file (.vtp) as a structured array, one row per point: the
     field ``points`` (3,) and one field per point-data array (vectors and tensors as subarrays)."""
@@ -93,6 +120,7 @@ class Frame:
     extra: dict = field(default_factory=dict)
 
 
+@_malformed("a LAMMPS text dump")
 def read_lammps_dump(path):
     """The frames of a LAMMPS text dump ([ITEM: UNITS] / [ITEM: TIME] / ITEM: TIMESTEP / [TIME] /
     NUMBER OF ATOMS / BOX BOUNDS / ATOMS ...) as (step, time or None, box, atoms structured array)
@@ -141,7 +169,7 @@ class Run:
         self.method = self.config.get("method")
         self.derived = self.config.get("derived", {})
         summary = self.folder / "summary.json"
-        self.summary = json.loads(summary.read_text()) if summary.is_file() else None
+        self.summary = read_json(summary) if summary.is_file() else None
 
     @classmethod
     def open(cls, folder):

@@ -21,7 +21,7 @@ import numpy as np  # noqa: E402
 
 import shockfield  # noqa: E402
 import shockfield.plot  # noqa: E402
-from shockfield.run import read_csv, read_points, read_pvd  # noqa: E402
+from shockfield.run import read_csv, read_json, read_lammps_dump, read_points, read_pvd, read_toml  # noqa: E402
 from shockfield.vtk_arrays import read_vtk_arrays  # noqa: E402
 
 SOURCE = pathlib.Path(os.environ["SHOCKFIELD_SOURCE"])
@@ -197,6 +197,41 @@ class Plot(unittest.TestCase):
         np.testing.assert_allclose(points.data["points"][:, 0], dump["x"], rtol=1e-6, atol=0)
         self.assertEqual(set(read_points(points.file).dtype.names), set(points.data.dtype.names))
         self.assertNotIn("points", read_csv(pd.folder / "series.csv").dtype.names)
+
+    def test_readers_refuse_mutated_files(self):
+        """Mutation fuzzing of the shared reader: every kind of file with random bytes replaced,
+        inserted, deleted or cut off (seeded) is read or refused with InputError naming it, never
+        another exception. 150 mutants of each of 7 files."""
+        rng = np.random.default_rng(2026)
+        pd, gls = self.folder("pd"), self.folder("gls")
+        files = [(read_csv, pd / "series.csv"), (read_toml, pd / "config.resolved.toml"),
+                 (read_json, pd / "summary.json"), (read_pvd, pd / "profiles" / "points.pvd"),
+                 (read_points, pd / "profiles" / "points_4.vtp"), (read_lammps_dump, self.runs["md"].last_frame().file),
+                 (read_csv, gls / "summary.csv")]
+        mutant = pathlib.Path(self.tmp.name) / "mutant"
+        for reader, original in files:
+            data = bytearray(pathlib.Path(original).read_bytes())
+            refused = 0
+            for _ in range(150):
+                m = bytearray(data)
+                for _ in range(rng.integers(1, 4)):
+                    k = int(rng.integers(0, len(m)))
+                    choice = rng.integers(0, 4)
+                    if choice == 0:
+                        m[k] = int(rng.integers(0, 256))
+                    elif choice == 1:
+                        m.insert(k, int(rng.choice(list(b',."=<>\n0-e'))))
+                    elif choice == 2:
+                        del m[k:k + int(rng.integers(1, 40))]
+                    else:
+                        m = m[:k]
+                mutant.write_bytes(bytes(m))
+                try:
+                    reader(mutant)
+                except shockfield.InputError as error:
+                    self.assertIn(str(mutant), str(error))
+                    refused += 1
+            self.assertGreater(refused, 0, f"no mutant of {original} was refused")
 
 
 if __name__ == "__main__":
