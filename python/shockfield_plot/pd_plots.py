@@ -7,8 +7,8 @@
       lines.
 
   python3 -m shockfield_plot.pd_plots profiles RUN_DIR [--out FILE]
-      every displacement and velocity component and the damage against x at up to six of the
-      run's profile times (points of a 2D or 3D body as dots).
+      every displacement and velocity component and the damage against the reference x at up to
+      six of the run's profile times (profiles/points.pvd; points of a 2D or 3D body as dots).
 
   python3 -m shockfield_plot.pd_plots crystal RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
       at the last profile time: axial compression (Fig. 8/10) and accumulated slip (Fig. 11)
@@ -49,8 +49,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from shockfield.run import Run  # noqa: E402
-from shockfield_plot.profile_plots import Panel, draw_profiles  # noqa: E402
+from shockfield.run import Frame, Run  # noqa: E402
+from shockfield_plot.profile_plots import Panel, chosen_frames, draw_profiles  # noqa: E402
 
 
 def bar(runs, labels, out):
@@ -78,19 +78,33 @@ def bar(runs, labels, out):
     fig.savefig(out, dpi=110)
 
 
+def point_columns(frame):
+    """A frame of profiles/points.pvd as profile columns: the reference x (m; the file holds
+    x + u), the displacement and velocity components and the damage of every point."""
+    p = frame.data
+    u, v = p["displacement"].astype(float), p["velocity"].astype(float)
+    columns = {"x_m": p["points"][:, 0] - u[:, 0]}
+    columns.update({f"u{a}_m": u[:, k] for k, a in enumerate("xyz")})
+    columns.update({f"v{a}_m_s": v[:, k] for k, a in enumerate("xyz")})
+    columns["damage"] = p["damage"]
+    table = np.empty(len(p), dtype=[(name, float) for name in columns])
+    for name, values in columns.items():
+        table[name] = values
+    return Frame(time=frame.time, data=table, file=frame.file)
+
+
 def profiles(runs, labels, out):
-    """The first run's profiles: displacements (µm), velocities (m/s) and damage against x; an
-    impact's v/2 (the velocity behind the waves of two equal halves) dashed on vx."""
+    """The first run's points (profiles/points.pvd, written with every profile): displacements
+    (µm), velocities (m/s) and damage against the reference x; an impact's v/2 (the velocity
+    behind the waves of two equal halves) dashed on vx."""
     run = Run.open(runs[0])
-    names = run.last_frame(kind="profiles").data.dtype.names
     loading = run.config.get("loading", {})
     half = [("impact speed / 2", loading["speed"] / 2)] if loading.get("type") == "impact" else []
-    panels = ([Panel(c, f"displacement {c.removesuffix('_m')} (µm)", 1e6) for c in names
-               if c.startswith("u") and c.endswith("_m")]
-              + [Panel(c, f"velocity {c.removesuffix('_m_s')} (m/s)", levels=half if c == "vx_m_s" else [])
-                 for c in names if c.startswith("v") and c.endswith("_m_s")]
+    panels = ([Panel(f"u{a}_m", f"displacement u{a} (µm)", 1e6) for a in "xyz"]
+              + [Panel(f"v{a}_m_s", f"velocity v{a} (m/s)", levels=half if a == "x" else []) for a in "xyz"]
               + [Panel("damage", "damage")])
-    draw_profiles(run, panels, "x_m", "x (mm)", out, x_scale=1e3, time_unit="s")
+    frames = [point_columns(frame) for frame in chosen_frames(run, kind="particles")]
+    draw_profiles(run, panels, "x_m", "x (mm)", out, x_scale=1e3, time_unit="s", columns=3, frames=frames)
 
 
 def last_profile(run):

@@ -26,10 +26,10 @@ class Panel:
     levels: list = field(default_factory=list)
 
 
-def chosen_frames(run):
-    """Up to MAX_TIMES profile frames of `run` evenly spread over its profile times (the first
-    and the last included)."""
-    frames = list(run.frames(kind="profiles"))
+def chosen_frames(run, kind="profiles"):
+    """Up to MAX_TIMES frames of `kind` of `run` evenly spread over its times (the first and the
+    last included)."""
+    frames = list(run.frames(kind=kind))
     picks = np.linspace(0, len(frames) - 1, min(MAX_TIMES, len(frames))).round().astype(int)
     return [frames[k] for k in np.unique(picks)]
 
@@ -40,11 +40,12 @@ def time_label(t, unit):
 
 
 def draw_profiles(run, panels, x_column, x_label, out, x_scale=1.0, time_unit="", title_what="profiles",
-                  extra_axes=0, columns=2):
-    """The profiles of `panels` against `x_column` into `out`; returns (figure, the axes left
-    free for the caller when `extra_axes` > 0) and leaves the saving to the caller then.
-    Points of a 2D or 3D body (several rows per x) are drawn as dots."""
-    frames = chosen_frames(run)
+                  extra_axes=0, columns=2, frames=None):
+    """The profiles of `panels` against `x_column` into `out` (of `frames`, default
+    chosen_frames(run)); returns (figure, the axes left free for the caller when `extra_axes` >
+    0) and leaves the saving to the caller then. Points of a 2D or 3D body (several rows per x)
+    are drawn as dots."""
+    frames = frames or chosen_frames(run)
     count = len(panels) + extra_axes
     cols = min(columns, count)
     rows = (count + cols - 1) // cols

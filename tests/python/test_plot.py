@@ -97,7 +97,7 @@ class Plot(unittest.TestCase):
     def test_every_kind_draws_its_panels(self):
         # (kind, run, panels): the figure's axes besides colour bars, as each helper lays them out.
         expected = [("thermo", "mpm", 7), ("series", "pd", 7), ("profiles", "md", 4), ("porous", "porous", 5),
-                    ("cavity", "mpm", 2), ("bar", "pd", 2), ("crystal", "pd", 2), ("profiles", "pd", 5),
+                    ("cavity", "mpm", 2), ("bar", "pd", 2), ("crystal", "pd", 2), ("profiles", "pd", 7),
                     ("profiles", "dbm", 4), ("tne", "dbm", 3), ("profiles", "gls", 5), ("tne", "gls", 3),
                     ("phase-separation", "gls", 7), ("chain", "granular", 3),
                     ("stress-strain", "macroparticle", 1), ("phasefield", "phasefield", 3)]
