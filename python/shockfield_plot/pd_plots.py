@@ -309,7 +309,7 @@ def damage(runs, labels, out, given_tips):
             ax.plot([tip[0], tip[0] + r * np.cos(e)], [tip[1], tip[1] + side * r * np.sin(e)], ":", color="0.4", lw=1.2,
                     label="experiment, ~70°" if side > 0 else None)
         ax.set_aspect("equal")
-        if tips:
+        if ax.get_legend_handles_labels()[0]:  # the experiment line is drawn for a crack going up
             ax.legend(loc="lower right", fontsize=8)
         ax.set_xlabel("x (mm, impact direction)")
         ax.set_ylabel("y (mm)")

@@ -85,6 +85,7 @@ class Plot(unittest.TestCase):
             "macroparticle": run(shockfield.Case.load(CASES / "macroparticle_tiny.toml"), "macroparticle"),
             "phasefield": run(shockfield.Case.load(CASES / "phasefield_tiny.toml"), "phasefield"),
             "md": run(md, "md"),
+            "plate": run(shockfield.Case.load(CASES / "pd_plate_loading.toml"), "plate"),
         }
 
     @classmethod
@@ -100,8 +101,9 @@ class Plot(unittest.TestCase):
                     ("cavity", "mpm", 2), ("bar", "pd", 2), ("crystal", "pd", 2), ("profiles", "pd", 7),
                     ("profiles", "dbm", 4), ("tne", "dbm", 3), ("profiles", "gls", 5), ("tne", "gls", 3),
                     ("phase-separation", "gls", 7), ("chain", "granular", 3),
-                    ("stress-strain", "macroparticle", 1), ("phasefield", "phasefield", 3)]
-        self.assertEqual({k for k, _, _ in expected} | {"damage", "hugoniot", "structures", "slice"},
+                    ("stress-strain", "macroparticle", 1), ("phasefield", "phasefield", 3), ("damage", "plate", 1)]
+        # structures and slice: tests/cli/plot_atoms.sh; hugoniot: test_hugoniot_folder.
+        self.assertEqual({k for k, _, _ in expected} | {"hugoniot", "structures", "slice"},
                          set(shockfield.plot.KINDS), "a kind without a test here")
         for kind, name, panels in expected:
             with self.subTest(kind=kind, run=name):
@@ -113,6 +115,21 @@ class Plot(unittest.TestCase):
         self.assertIn("dbm run dbm (dbm_sod.toml): profiles", axes[0].figure._suptitle.get_text())
         levels = [t.get_text() for t in axes[2].texts]  # rho, u_x, p, T
         self.assertTrue(any(t.startswith("exact p* ") for t in levels), levels)
+
+    def test_hugoniot_folder(self):
+        """The folder of `shockfield hugoniot`: its sweep (here LAMMPS's fixture sweep) and the
+        experimental line its hugoniot_fit.toml names, not one hard-coded in the helper."""
+        folder = pathlib.Path(self.tmp.name) / "hugoniot"
+        folder.mkdir()
+        (folder / "hugoniot_sweep.csv").write_bytes((SOURCE / "tests/fixtures/lammps_shock/lammps_sweep.csv").read_bytes())
+        (folder / "hugoniot_fit.toml").write_text("[experiment_nickel]\nc0_km_s = 4.6\ns = 1.44\n")
+        out, axes = drawn_axes("hugoniot", folder)
+        self.assertTrue(is_png(out))
+        labels = [t.get_text() for t in axes[0].get_legend().get_texts()]
+        self.assertIn("experiment, nickel: 4.6 + 1.44 Up", labels)
+        with self.assertRaises(shockfield.InputError) as caught:
+            shockfield.plot.plot("hugoniot", self.folder("md"))
+        self.assertIn("no hugoniot_sweep.csv", str(caught.exception))
 
     def test_wrong_kind_is_refused(self):
         cases = [("bar", "mpm", "a mpm run; 'bar' draws pd runs. Kinds for this run: thermo, series, porous, cavity"),
