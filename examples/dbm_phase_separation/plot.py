@@ -17,7 +17,7 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent.parent / "python"))
-from shockfield_plot.vtk_arrays import read_vtk_arrays  # noqa: E402
+from shockfield.vtk_arrays import read_vtk_arrays  # noqa: E402
 
 
 def read_csv(path):
@@ -27,7 +27,7 @@ def read_csv(path):
 
 
 def read_rho(vti):
-    """The density of a grid frame (any VTK encoding: shockfield_plot.vtk_arrays) as rows y, columns x."""
+    """The density of a grid frame (any VTK encoding: shockfield.vtk_arrays) as rows y, columns x."""
     head = Path(vti).read_bytes()[:2048].decode("ascii", "replace")
     ext = [int(v) for v in re.search(r'WholeExtent="([^"]+)"', head).group(1).split()]
     rho = read_vtk_arrays(str(vti))["rho"].astype(float)
