@@ -108,8 +108,19 @@ def gaussian_random_field(shape, correlation_length, seed=1):
     return _require_core().gaussian_random_field(nx, ny, nz, float(correlation_length), int(seed))[0]
 
 
+def _table(columns, integers=()):
+    """A dict of float64 columns as a structured array, the columns named in `integers` as int64."""
+    return _structured({n: c.astype(np.int64) if n in integers else c for n, c in columns.items()})
+
+
+_CLUSTER_INTEGERS = ("cluster", "size")
+_DOMAIN_INTEGERS = ("domain", "atoms", "euler_characteristic", "manifold")
+_VOID_INTEGERS = ("void", "cells", "surface_atoms", "euler_characteristic", "manifold")
+
+
 def structure(positions, box, boundary="ppp", types=None, ids=None, coordination=None, cna=None,
-              adaptive_cna=False, csp=None, bond_pairs=None, threads=0):
+              adaptive_cna=False, csp=None, bond_pairs=None, diamond=False, clusters=None, cluster_select=None,
+              cluster_min_size=1, domains=None, domains_surface="rolling", domains_min_atoms=4, threads=0):
     """Per-atom structure of atoms, as ``shockfield analyze atoms`` computes it for one frame
     (docs/analysis-atoms.md), over one neighbour pass.
 
@@ -117,16 +128,66 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     ``boundary``: LAMMPS codes per axis ("ppp", "pps", ...); ``types`` 1-based and ``ids``
     (default all 1 and 1..n). Analyses (at least one): ``coordination`` (cutoff Å), ``cna``
     (conventional CNA cutoff Å), ``adaptive_cna``, ``csp`` ("fcc", "bcc" or an even N),
-    ``bond_pairs`` (cutoff Å). Returns a dict of arrays named like the CLI's dump columns:
-    ``coord`` (int32), ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5
-    other) with ``<name>_counts`` dicts, ``csp`` (float64, Å²), and for bond pairs the CSR
-    ``bond_offset``, ``bond_partner``, ``bond_index`` (Honeycutt–Andersen index).
+    ``bond_pairs`` (cutoff Å), ``diamond`` (cubic/hexagonal diamond, Maras et al. 2016).
+    ``clusters`` (cutoff Å) with ``cluster_select`` (the CLI's ``--cluster-select`` language:
+    "acna:hcp", "acna:!fcc", "csp>4", "dia:cubic", ...) and ``cluster_min_size`` clusters the
+    selected atoms (Xu et al. (2015) §4.4.2); ``domains`` (Å: ball radius, or sculpting depth with
+    ``domains_surface="packing"``) adds the clusters' surfaces (``--domains``), for clusters of at
+    least ``domains_min_atoms`` atoms.
+
+    Returns a dict of arrays named like the CLI's dump columns: ``coord`` (int32),
+    ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other) with
+    ``<name>_counts`` dicts, ``csp`` (float64, Å²), ``dia`` (uint8, OVITO's codes 0 other, 1 cubic,
+    2/3 its first/second neighbours, 4 hexagonal, 5/6 its neighbours), ``cluster`` (int32, 1, 2, ...
+    largest first, 0 none), for bond pairs the CSR ``bond_offset``, ``bond_partner``,
+    ``bond_index`` (Honeycutt–Andersen index); ``counts`` (dict: the count and fraction columns
+    of structures.csv); ``clusters`` (structured array: clusters.csv's columns after frame and
+    timestep); ``domains`` (structured array: domains.csv's columns after frame and timestep),
+    ``domain_surfaces`` (dict ``points``, ``triangles``: domains_<timestep>.vtp's triangles) and
+    ``flat_domains`` (why each flat cluster has no surface; the CLI's warnings).
     """
     lo, hi = box
-    return _require_core().atoms_structure(
+    if domains_surface not in ("rolling", "packing"):
+        raise ValueError(f"domains_surface: expected 'rolling' or 'packing', got {domains_surface!r}")
+    r = _require_core().atoms_structure(
         positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
         None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
-        coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, int(threads))
+        coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, bool(diamond),
+        clusters, cluster_select, int(cluster_min_size), domains, domains_surface, int(domains_min_atoms),
+        int(threads))
+    if "clusters" in r:
+        r["clusters"] = _table(r["clusters"], _CLUSTER_INTEGERS)
+    if "domains" in r:
+        d = r.pop("domains")
+        r["domain_surfaces"], r["flat_domains"] = d.pop("surfaces"), d.pop("flat")
+        r["domains"] = _table(d, _DOMAIN_INTEGERS)
+    return r
+
+
+def voids(positions, box, probe, boundary="ppp", types=None, ids=None, atomic_volume=None, margin=None,
+          min_volume=0.0):
+    """The voids of a frame of atoms, as ``shockfield analyze atoms --voids PROBE`` finds them
+    (docs/analysis-atoms.md; Xu et al. (2015) §3.2.3): the cavities of the atoms' Delaunay
+    division (periodic images within ``margin`` Å of the faces included, default 15, at most half
+    the box) for a ball of radius ``probe`` Å — regions the ball moves in without reaching the
+    outside. ``atomic_volume`` (Å³) for missing_volume: default (box volume − voids) / atoms;
+    ``min_volume`` (Å³) leaves smaller voids out. ``positions``, ``box``, ``boundary``,
+    ``types``, ``ids`` as for ``structure``.
+
+    Returns a dict: ``voids`` (structured array, one row per void, largest first, the columns of
+    voids.csv after frame and timestep: ``void, cells, volume, area, equivalent_radius,
+    missing_volume, missing_radius, x, y, z, surface_atoms, euler_characteristic, manifold``) and
+    ``surfaces`` (dict ``points`` (atoms and images), ``triangles``: voids_<timestep>.vtp's
+    triangles, normals out of the voids). Runs with the GIL released, on one thread.
+    """
+    lo, hi = box
+    r = _require_core().atoms_voids(
+        positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
+        None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
+        float(probe), None if atomic_volume is None else float(atomic_volume),
+        None if margin is None else float(margin), float(min_volume))
+    surfaces = r.pop("surfaces")
+    return {"voids": _table(r, _VOID_INTEGERS), "surfaces": surfaces}
 
 
 def delaunay(points, cluster_distance=None, rule="both"):
@@ -143,3 +204,32 @@ def delaunay(points, cluster_distance=None, rule="both"):
     ``shared_points``). Runs with the GIL released, on one thread (the division is serial).
     """
     return _require_core().delaunay(points, 0.0 if cluster_distance is None else float(cluster_distance), rule)
+
+
+def surface(points, radius=None, method="delaunay", depth=None):
+    """The surface of ``points`` (float64 C-contiguous (n, 3)), as ``shockfield analyze geometry
+    --surface-method METHOD`` writes it to surface.vtp and summary.txt (docs/geometry-giso.md;
+    Xu et al. (2015) §3.2.3).
+
+    ``method``: "delaunay" (the rolling ball of ``radius`` on the Delaunay division: every
+    component the ball touches from outside), "pivot" (the paper's pivoting ball of ``radius``:
+    the component on the point of largest x) or "packing" (packing-sculpting to the ``depth``).
+
+    Returns a dict: ``points`` (float64 (k, 3), the points the triangles use, in surface.vtp's
+    order), ``point_index`` (int32 (k,), their rows in ``points`` given), ``triangles`` (int32
+    (m, 3) into the returned ``points``, normals outwards by the right-hand rule), ``area``,
+    ``volume`` (enclosed), ``euler_characteristic`` (V − E + F) and ``manifold`` (every edge on
+    two triangles, once each way). Runs with the GIL released, on one thread. A radius or depth
+    the points do not allow (the ball falls through, sculpting removes everything) raises
+    ``shockfield.InputError`` with the command line's message.
+    """
+    if method == "packing":
+        if depth is None or radius is not None:
+            raise ValueError("method 'packing' takes depth (the sculpting depth, a positive length), not radius")
+        length = depth
+    else:
+        if radius is None or depth is not None:
+            raise ValueError(f"method '{method}' takes radius (the ball's radius, a positive length); "
+                             "depth is for method 'packing'")
+        length = radius
+    return _require_core().surface(points, str(method), float(length))

@@ -25,7 +25,15 @@ def structure(positions: npt.NDArray[np.float64],
               box: tuple[Sequence[float], Sequence[float]], boundary: str = "ppp",
               types: Optional[Sequence[int]] = None, ids: Optional[Sequence[int]] = None,
               coordination: Optional[float] = None, cna: Optional[float] = None, adaptive_cna: bool = False,
-              csp: Optional[Union[str, int]] = None, bond_pairs: Optional[float] = None,
+              csp: Optional[Union[str, int]] = None, bond_pairs: Optional[float] = None, diamond: bool = False,
+              clusters: Optional[float] = None, cluster_select: Optional[str] = None, cluster_min_size: int = 1,
+              domains: Optional[float] = None, domains_surface: str = "rolling", domains_min_atoms: int = 4,
               threads: int = 0) -> dict[str, object]: ...
+def voids(positions: npt.NDArray[np.float64], box: tuple[Sequence[float], Sequence[float]], probe: float,
+          boundary: str = "ppp", types: Optional[Sequence[int]] = None, ids: Optional[Sequence[int]] = None,
+          atomic_volume: Optional[float] = None, margin: Optional[float] = None,
+          min_volume: float = 0.0) -> dict[str, object]: ...
 def delaunay(points: npt.NDArray[np.float64], cluster_distance: Optional[float] = None,
              rule: str = "both") -> dict[str, object]: ...
+def surface(points: npt.NDArray[np.float64], radius: Optional[float] = None, method: str = "delaunay",
+            depth: Optional[float] = None) -> dict[str, object]: ...

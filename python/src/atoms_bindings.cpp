@@ -1,9 +1,10 @@
-// shockfield._core's atom structure analysis on numpy arrays (python/shockfield/analysis.py's
-// `structure` wraps it): coordination, conventional and adaptive CNA, centro-symmetry and bond
-// pairs over one neighbour pass, the function `shockfield analyze atoms` calls per frame
-// (analysis/atoms/structure_analysis.hpp). Positions are a C-contiguous (n, 3) float64 array and
-// the box its lo/hi corners with a LAMMPS boundary code; they are copied once into the library's
-// AtomFrame (a memcpy, with the GIL released, as is the analysis).
+// shockfield._core's atom analyses on numpy arrays (python/shockfield/analysis.py's `structure`
+// and `voids` wrap them): coordination, conventional and adaptive CNA, centro-symmetry, bond
+// pairs, diamond structure and defect clusters over one neighbour pass with the clusters' domain
+// surfaces, and the voids — the functions `shockfield analyze atoms` calls per frame
+// (analysis/atoms/structure_analysis.hpp, atom_surfaces.hpp). Positions are a C-contiguous (n, 3)
+// float64 array and the box its lo/hi corners with a LAMMPS boundary code; they are copied once
+// into the library's AtomFrame (a memcpy, with the GIL released, as is the analysis).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -14,7 +15,10 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "shockfield/analysis/atoms/atom_surfaces.hpp"
+#include "shockfield/analysis/atoms/cluster_selection.hpp"
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
+#include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/core/error.hpp"
 
 namespace py = pybind11;
@@ -23,7 +27,8 @@ namespace aa = shockfield::analysis::atoms;
 namespace shockfield::python {
 namespace {
 
-py::array_t<std::uint8_t> codes(const std::vector<aa::Structure>& s) {
+template <class Code>
+py::array_t<std::uint8_t> codes(const std::vector<Code>& s) {
   py::array_t<std::uint8_t> out(static_cast<py::ssize_t>(s.size()));
   for (std::size_t i = 0; i < s.size(); ++i) out.mutable_at(static_cast<py::ssize_t>(i)) = static_cast<std::uint8_t>(s[i]);
   return out;
@@ -65,10 +70,58 @@ aa::AtomFrame make_frame(const py::array& positions, const std::vector<double>& 
   return frame;
 }
 
+// Columns of named values as a dict of numpy arrays (shockfield.analysis makes it a structured array).
+py::dict columns_dict(const std::vector<std::string>& names, const std::vector<std::vector<double>>& rows) {
+  py::dict out;
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    py::array_t<double> column(static_cast<py::ssize_t>(rows.size()));
+    for (std::size_t r = 0; r < rows.size(); ++r) column.mutable_at(static_cast<py::ssize_t>(r)) = rows[r][c];
+    out[py::str(names[c])] = column;
+  }
+  return out;
+}
+
+py::dict surface_set(const aa::SurfaceSet& s) {
+  py::dict out;
+  py::array_t<double> points({static_cast<py::ssize_t>(s.points.size()), py::ssize_t{3}});
+  if (!s.points.empty()) std::memcpy(points.mutable_data(), s.points.data(), s.points.size() * sizeof(s.points[0]));
+  py::array_t<std::int32_t> triangles({static_cast<py::ssize_t>(s.triangles.size()), py::ssize_t{3}});
+  if (!s.triangles.empty())
+    std::memcpy(triangles.mutable_data(), s.triangles.data(), s.triangles.size() * sizeof(s.triangles[0]));
+  out["points"] = points;
+  out["triangles"] = triangles;
+  return out;
+}
+
+// domains.csv's columns after frame and timestep.
+py::dict domains_dict(const aa::DomainResult& r) {
+  std::vector<std::vector<double>> rows;
+  for (const aa::Domain& d : r.domains)
+    rows.push_back({double(d.cluster + 1), double(d.atoms), d.volume, d.area, aa::equivalent_radius(d.volume),
+                    d.atoms_volume, aa::equivalent_radius(d.atoms_volume), d.centre.x(), d.centre.y(), d.centre.z(),
+                    double(d.euler_characteristic), d.manifold ? 1.0 : 0.0});
+  py::dict out = columns_dict({"domain", "atoms", "volume", "area", "equivalent_radius", "atoms_volume", "atoms_radius",
+                               "x", "y", "z", "euler_characteristic", "manifold"},
+                              rows);
+  out["surfaces"] = surface_set(r.surfaces);
+  out["flat"] = r.flat;
+  return out;
+}
+
+struct ClusterOptions {
+  std::optional<double> cutoff;
+  std::optional<std::string> select;
+  std::size_t min_size = 1;
+  std::optional<double> domains;  // probe, Å
+  std::string domains_surface;
+  std::size_t domains_min_atoms = 4;
+};
+
 py::dict structure(const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
                    const std::string& boundary, const py::object& types, const py::object& ids,
                    std::optional<double> coordination, std::optional<double> cna, bool adaptive_cna,
-                   const py::object& csp, std::optional<double> bond_pairs, int threads) {
+                   const py::object& csp, std::optional<double> bond_pairs, bool diamond,
+                   const ClusterOptions& c, int threads) {
   const ThreadCount thread_count(threads);
   const aa::AtomFrame frame = make_frame(positions, lo, hi, boundary, types, ids);
   aa::StructureAnalyses analyses;
@@ -78,13 +131,50 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   if (!csp.is_none())
     analyses.centro_symmetry = aa::CentroSymmetry{aa::CentroSymmetry::parse_neighbors(py::str(csp), "csp")};
   if (bond_pairs) analyses.bond_pairs = aa::BondPairAnalysis{*bond_pairs};
+  if (diamond) analyses.diamond = aa::DiamondCna{};
+  if (c.cutoff.has_value() != c.select.has_value())
+    throw InputError("clusters and cluster_select go together: the cutoff and which atoms to cluster");
+  if (c.cutoff) {
+    analyses.select = aa::parse_cluster_selection(*c.select, analyses, false, "cluster_select '" + *c.select + "'",
+                                                  [](const std::string& m) {
+                                                    return m == "excess" ? std::string("an excess energy (not offered from Python)")
+                                                         : m == "bpa"    ? std::string("bond_pairs=CUTOFF")
+                                                         : m == "csp"    ? std::string("csp=N")
+                                                                         : m + "=CUTOFF";
+                                                  });
+    analyses.clusters = aa::DefectClusters{*c.cutoff, c.min_size};
+  }
+  if (c.domains && !c.cutoff)
+    throw InputError("domains needs the clusters that form the domains: add clusters=CUTOFF and cluster_select "
+                     "(e.g. clusters=3, cluster_select='acna:bcc')");
   aa::StructureAnalysisResult r;
+  std::optional<aa::DomainResult> domains;
   {
     py::gil_scoped_release release;
     validate_frame(frame, "positions");
     r = analyze_structure(frame, analyses);
+    if (c.domains)
+      domains = aa::domain_surfaces(frame, *r.clusters,
+                                    aa::DomainSurfaces{*c.domains, c.domains_surface == "packing", c.domains_min_atoms});
   }
   py::dict out;
+  py::dict counts_row;  // structures.csv's count and fraction columns
+  const std::vector<std::string> count_names = aa::structure_count_columns(analyses);
+  const std::vector<double> count_values = aa::structure_count_values(r);
+  for (std::size_t k = 0; k < count_names.size(); ++k) counts_row[py::str(count_names[k])] = count_values[k];
+  out["counts"] = counts_row;
+  if (r.diamond) out["dia"] = codes(r.diamond->structure);
+  if (r.clusters) {
+    std::vector<std::int32_t> cluster(r.clusters->cluster_of.begin(), r.clusters->cluster_of.end());
+    for (std::int32_t& k : cluster) ++k;  // the dump column: 1, 2, ... largest first; 0 none
+    out["cluster"] = to_numpy(cluster);
+    std::vector<std::string> names = aa::cluster_columns("frame", "timestep");
+    std::vector<std::vector<double>> rows = aa::cluster_rows(*r.clusters, 0.0, 0.0);
+    names.erase(names.begin(), names.begin() + 2);
+    for (auto& row : rows) row.erase(row.begin(), row.begin() + 2);
+    out["clusters"] = columns_dict(names, rows);
+  }
+  if (domains) out["domains"] = domains_dict(*domains);
   if (!r.coordination.empty()) out["coord"] = to_numpy(r.coordination);
   for (const auto& [name, result] : {std::pair{"cna", &r.cna}, std::pair{"acna", &r.adaptive_cna}})
     if (*result) {
@@ -102,12 +192,55 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   return out;
 }
 
+// voids.csv's columns after frame and timestep, and the voids' surfaces.
+py::dict voids(const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
+               const std::string& boundary, const py::object& types, const py::object& ids, double probe,
+               std::optional<double> atomic_volume, std::optional<double> margin, double min_volume) {
+  const aa::AtomFrame frame = make_frame(positions, lo, hi, boundary, types, ids);
+  aa::VoidResult r;
+  {
+    py::gil_scoped_release release;
+    validate_frame(frame, "positions");
+    r = aa::find_voids(frame, aa::VoidSearch{probe, atomic_volume, margin, min_volume});
+  }
+  std::vector<std::vector<double>> rows;
+  for (std::size_t k = 0; k < r.voids.size(); ++k) {
+    const aa::Void& v = r.voids[k];
+    rows.push_back({double(k + 1), double(v.cells), v.volume, v.area, aa::equivalent_radius(v.volume), v.missing_volume,
+                    aa::equivalent_radius(v.missing_volume), v.centre.x(), v.centre.y(), v.centre.z(),
+                    double(v.surface_atoms), double(v.euler_characteristic), v.manifold ? 1.0 : 0.0});
+  }
+  py::dict out = columns_dict({"void", "cells", "volume", "area", "equivalent_radius", "missing_volume", "missing_radius",
+                               "x", "y", "z", "surface_atoms", "euler_characteristic", "manifold"},
+                              rows);
+  out["surfaces"] = surface_set(r.surfaces);
+  return out;
+}
+
 }  // namespace
 
 void bind_atoms(py::module_& m) {
-  m.def("atoms_structure", &structure, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"),
-        py::arg("types"), py::arg("ids"), py::arg("coordination"), py::arg("cna"), py::arg("adaptive_cna"),
-        py::arg("csp"), py::arg("bond_pairs"), py::arg("threads"));
+  m.def(
+      "atoms_structure",
+      [](const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
+         const std::string& boundary, const py::object& types, const py::object& ids, std::optional<double> coordination,
+         std::optional<double> cna, bool adaptive_cna, const py::object& csp, std::optional<double> bond_pairs,
+         bool diamond, std::optional<double> clusters, std::optional<std::string> cluster_select,
+         std::size_t cluster_min_size, std::optional<double> domains, const std::string& domains_surface,
+         std::size_t domains_min_atoms, int threads) {
+        return structure(positions, lo, hi, boundary, types, ids, coordination, cna, adaptive_cna, csp, bond_pairs,
+                         diamond,
+                         ClusterOptions{clusters, cluster_select, cluster_min_size, domains, domains_surface,
+                                        domains_min_atoms},
+                         threads);
+      },
+      py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"), py::arg("types"), py::arg("ids"),
+      py::arg("coordination"), py::arg("cna"), py::arg("adaptive_cna"), py::arg("csp"), py::arg("bond_pairs"),
+      py::arg("diamond"), py::arg("clusters"), py::arg("cluster_select"), py::arg("cluster_min_size"),
+      py::arg("domains"), py::arg("domains_surface"), py::arg("domains_min_atoms"), py::arg("threads"));
+  m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"),
+        py::arg("types"), py::arg("ids"), py::arg("probe"), py::arg("atomic_volume"), py::arg("margin"),
+        py::arg("min_volume"));
 }
 
 }  // namespace shockfield::python

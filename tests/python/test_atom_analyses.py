@@ -1,0 +1,175 @@
+"""shockfield.analysis.voids and structure()'s diamond, clusters and domains against `shockfield
+analyze atoms` on the same dump (ctest python.test_atom_analyses).
+
+Frames (written at full precision, so the CLI reads the same doubles):
+- voids: a periodic 6×6×6 fcc Cu crystal (a = 3.615 Å) less the atoms within 6 Å of the centre
+  (tests/cli/analyze_voids.sh's void, smaller box); `--voids 2.17 --voids-margin 6`;
+- domains: an 8×8×8 fcc crystal with a bcc inclusion of radius 7 Å at the centre (the same
+  atomic volume; tests/cli/analyze_domains.sh's construction); `--clusters 3 --cluster-select
+  acna:bcc --domains 3`;
+- diamond: 3×3×3 cells of cubic diamond Si (a = 5.431 Å) with 0.25 Å Gaussian displacements, so
+  that some atoms leave the cubic-diamond class (measured: 104 cubic, 89 first and 23 second
+  neighbours, 22 clusters; 0.15 Å leaves all 216 cubic); `--diamond --clusters 2.6
+  --cluster-select dia:!cubic`.
+Every per-atom column (acna, dia, cluster) equals the CLI's dump column exactly, the counts and
+fractions equal structures.csv as printed, and every row of voids.csv, domains.csv and clusters.csv equals the Python row
+printed as the CLI prints it ({:.10g}); the surfaces' triangles equal the .vtp's (after the same
+renumbering). The void must be one closed manifold (χ = 2) at the box centre, the domain one
+(χ = 2): a check that the frames show what they should. 1 and 2 threads give the same result.
+"""
+
+import csv
+import os
+import pathlib
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+import shockfield
+from shockfield import analysis
+from test_structure import read_dump_columns, write_dump
+from test_surface import read_vtp
+
+SF = os.environ["SHOCKFIELD_BIN"]
+FCC = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
+
+
+def lattice(basis, a, n):
+    cells = np.stack(np.meshgrid(*[np.arange(n)] * 3, indexing="ij"), -1).reshape(-1, 3)
+    return (cells[:, None, :] + basis[None]).reshape(-1, 3) * a
+
+
+def void_frame(a=3.615, n=6, radius=6.0):
+    x, length = lattice(FCC, a, n), n * a
+    x = x[np.linalg.norm(x - length / 2, axis=1) > radius]
+    return np.ascontiguousarray(x), (np.zeros(3), np.full(3, length))
+
+
+def inclusion_frame(a=3.615, n=8, radius=7.0):
+    length, ab = n * a, a / 2 ** (1 / 3)  # bcc of fcc's atomic volume: 2 ab³ = a³/2
+    x, centre = lattice(FCC, a, n), np.full(3, n * a / 2)
+    m = int(np.ceil(radius / ab)) + 1
+    g = np.stack(np.meshgrid(*[np.arange(-m, m + 1)] * 3, indexing="ij"), -1).reshape(-1, 3).astype(float)
+    b = np.concatenate([g, g + 0.5]) * ab
+    b = b[np.linalg.norm(b, axis=1) <= radius] + centre
+    x = np.concatenate([x[np.linalg.norm(x - centre, axis=1) > radius], b])
+    return np.ascontiguousarray(x), (np.zeros(3), np.full(3, length))
+
+
+def diamond_frame(a=5.431, n=3, jitter=0.25, seed=4):
+    basis = np.concatenate([FCC, FCC + 0.25])
+    x = lattice(basis, a, n) + np.random.default_rng(seed).normal(scale=jitter, size=(8 * n ** 3, 3))
+    return np.ascontiguousarray(x), (np.zeros(3), np.full(3, n * a))
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def renumbered(triangles):
+    """The triangles on the points they use, numbered in order of first use (as the .vtp)."""
+    index = {}
+    return np.array([[index.setdefault(v, len(index)) for v in t] for t in triangles.tolist()], dtype=np.int32)
+
+
+class AtomAnalyses(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = pathlib.Path(self.tmp.name)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def analyze(self, x, box, name, *options):
+        write_dump(self.dir / f"{name}.lammpstrj", x, box)
+        out = self.dir / name
+        process = subprocess.run([SF, "analyze", "atoms", str(self.dir / f"{name}.lammpstrj"), "--no-plot", "-o",
+                                  str(out), "-j", "2", *options], capture_output=True, text=True)
+        self.assertEqual(process.returncode, 0, process.stderr)
+        return out, read_dump_columns(out / f"{name}.lammpstrj")
+
+    def assert_rows_printed_equal(self, table, rows, digits):
+        self.assertEqual(len(table), len(rows))
+        for mine, theirs in zip(table, rows):
+            for column in table.dtype.names:
+                if table.dtype[column].kind == "i":
+                    self.assertEqual(int(mine[column]), int(theirs[column]), column)
+                else:
+                    self.assertEqual(f"{float(mine[column]):.{digits}g}", theirs[column], column)
+
+    def test_voids(self):
+        x, box = void_frame()
+        out, _ = self.analyze(x, box, "void", "--voids", "2.17", "--voids-margin", "6")
+        r = analysis.voids(x, box, 2.17, margin=6.0)
+        v = r["voids"]
+        self.assertEqual(len(v), 1)
+        self.assertEqual((v["euler_characteristic"][0], v["manifold"][0]), (2, 1))
+        np.testing.assert_allclose([v["x"][0], v["y"][0], v["z"][0]], box[1] / 2, atol=1e-6)
+        self.assert_rows_printed_equal(v, read_csv(out / "voids.csv"), 10)
+        points, triangles = read_vtp(out / "voids_0.vtp")
+        np.testing.assert_array_equal(renumbered(r["surfaces"]["triangles"]), triangles)
+        used = list(dict.fromkeys(r["surfaces"]["triangles"].ravel().tolist()))
+        np.testing.assert_array_equal(r["surfaces"]["points"][used], points)
+
+    def test_domains_and_clusters(self):
+        x, box = inclusion_frame()
+        out, cli = self.analyze(x, box, "inclusion", "--clusters", "3.0", "--cluster-select", "acna:bcc",
+                                "--domains", "3.0")
+        results = [analysis.structure(x, box, clusters=3.0, cluster_select="acna:bcc", domains=3.0, threads=t)
+                   for t in (1, 2)]
+        r = results[1]
+        np.testing.assert_array_equal(r["acna"], np.array(cli["acna"], dtype=int))
+        np.testing.assert_array_equal(r["cluster"], np.array(cli["cluster"], dtype=int))
+        self.assertEqual(len(r["domains"]), 1)
+        self.assertEqual((r["domains"]["euler_characteristic"][0], r["domains"]["manifold"][0]), (2, 1))
+        self.assert_rows_printed_equal(r["domains"], read_csv(out / "domains.csv"), 10)
+        self.assert_rows_printed_equal(r["clusters"], read_csv(out / "clusters.csv"), 10)
+        _, triangles = read_vtp(out / "domains_0.vtp")
+        np.testing.assert_array_equal(renumbered(r["domain_surfaces"]["triangles"]), triangles)
+        summary = read_csv(out / "structures.csv")[0]
+        for column, value in r["counts"].items():
+            self.assertEqual(f"{value:.10g}", summary[column], column)
+        for name in ("acna", "cluster"):
+            np.testing.assert_array_equal(results[0][name], r[name])
+        np.testing.assert_array_equal(results[0]["domains"], r["domains"])
+
+    def test_diamond(self):
+        x, box = diamond_frame()
+        out, cli = self.analyze(x, box, "si", "--diamond", "--clusters", "2.6", "--cluster-select", "dia:!cubic")
+        one, two = (analysis.structure(x, box, diamond=True, clusters=2.6, cluster_select="dia:!cubic", threads=t)
+                    for t in (1, 2))
+        np.testing.assert_array_equal(two["dia"], np.array(cli["dia"], dtype=int))
+        np.testing.assert_array_equal(two["cluster"], np.array(cli["cluster"], dtype=int))
+        self.assertGreater(two["counts"]["dia_cubic"], 0)
+        self.assertGreater(len(two["clusters"]), 0)  # the displacements made some atoms leave cubic diamond
+        summary = read_csv(out / "structures.csv")[0]
+        for column, value in two["counts"].items():
+            self.assertEqual(f"{value:.10g}", summary[column], column)
+        self.assert_rows_printed_equal(two["clusters"], read_csv(out / "clusters.csv"), 10)
+        np.testing.assert_array_equal(one["dia"], two["dia"])
+        np.testing.assert_array_equal(one["cluster"], two["cluster"])
+
+    def test_bad_input_raises(self):
+        x, box = void_frame(n=3, radius=2.0)
+        with self.assertRaisesRegex(TypeError, "positions: expected dtype float64"):
+            analysis.voids(x.astype(np.float32), box, 2.17)
+        with self.assertRaisesRegex(ValueError, "not C-contiguous"):
+            analysis.voids(np.asfortranarray(x), box, 2.17)
+        with self.assertRaisesRegex(shockfield.InputError, "positive"):
+            analysis.voids(x, box, 0.0)
+        with self.assertRaisesRegex(shockfield.InputError, "go together"):
+            analysis.structure(x, box, adaptive_cna=True, clusters=3.0)
+        with self.assertRaisesRegex(shockfield.InputError, "cluster_select 'csp>1': selecting by csp needs csp=N"):
+            analysis.structure(x, box, adaptive_cna=True, clusters=3.0, cluster_select="csp>1")
+        with self.assertRaisesRegex(shockfield.InputError, "domains needs the clusters"):
+            analysis.structure(x, box, adaptive_cna=True, domains=3.0)
+        with self.assertRaisesRegex(ValueError, "domains_surface"):
+            analysis.structure(x, box, adaptive_cna=True, domains=3.0, domains_surface="alpha")
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0], "-v"])
