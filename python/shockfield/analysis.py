@@ -120,7 +120,8 @@ _VOID_INTEGERS = ("void", "cells", "surface_atoms", "euler_characteristic", "man
 
 def structure(positions, box, boundary="ppp", types=None, ids=None, coordination=None, cna=None,
               adaptive_cna=False, csp=None, bond_pairs=None, diamond=False, clusters=None, cluster_select=None,
-              cluster_min_size=1, domains=None, domains_surface="rolling", domains_min_atoms=4, threads=0):
+              cluster_min_size=1, domains=None, domains_surface="rolling", domains_min_atoms=4, profile=None,
+              threads=0):
     """Per-atom structure of atoms, as ``shockfield analyze atoms`` computes it for one frame
     (docs/analysis-atoms.md), over one neighbour pass.
 
@@ -133,7 +134,8 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     "acna:hcp", "acna:!fcc", "csp>4", "dia:cubic", ...) and ``cluster_min_size`` clusters the
     selected atoms (Xu et al. (2015) §4.4.2); ``domains`` (Å: ball radius, or sculpting depth with
     ``domains_surface="packing"``) adds the clusters' surfaces (``--domains``), for clusters of at
-    least ``domains_min_atoms`` atoms.
+    least ``domains_min_atoms`` atoms. ``profile`` (AXIS, WIDTH), e.g. ("z", 5.0): the atoms binned
+    along the axis in bins of WIDTH Å from the box's lo face (``--profile z:5``).
 
     Returns a dict of arrays named like the CLI's dump columns: ``coord`` (int32),
     ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other) with
@@ -144,23 +146,28 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     of structures.csv); ``clusters`` (structured array: clusters.csv's columns after frame and
     timestep); ``domains`` (structured array: domains.csv's columns after frame and timestep),
     ``domain_surfaces`` (dict ``points``, ``triangles``: domains_<timestep>.vtp's triangles) and
-    ``flat_domains`` (why each flat cluster has no surface; the CLI's warnings).
+    ``flat_domains`` (why each flat cluster has no surface; the CLI's warnings); ``profile``
+    (structured array: profiles.csv's columns after frame and timestep, ``bin, lo, hi, centre,
+    atoms`` and ``<method>_<structure>_fraction`` of each structure method that ran).
     """
     lo, hi = box
     if domains_surface not in ("rolling", "packing"):
         raise ValueError(f"domains_surface: expected 'rolling' or 'packing', got {domains_surface!r}")
+    profile_axis, profile_width = ("", 0.0) if profile is None else (str(profile[0]), float(profile[1]))
     r = _require_core().atoms_structure(
         positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
         None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
         coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, bool(diamond),
         clusters, cluster_select, int(cluster_min_size), domains, domains_surface, int(domains_min_atoms),
-        int(threads))
+        profile_axis, profile_width, int(threads))
     if "clusters" in r:
         r["clusters"] = _table(r["clusters"], _CLUSTER_INTEGERS)
     if "domains" in r:
         d = r.pop("domains")
         r["domain_surfaces"], r["flat_domains"] = d.pop("surfaces"), d.pop("flat")
         r["domains"] = _table(d, _DOMAIN_INTEGERS)
+    if "profile" in r:
+        r["profile"] = _table(r["profile"], ("bin", "atoms"))
     return r
 
 

@@ -1,7 +1,7 @@
 // shockfield._core's atom analyses on numpy arrays (python/shockfield/analysis.py's `structure`
 // and `voids` wrap them): coordination, conventional and adaptive CNA, centro-symmetry, bond
 // pairs, diamond structure and defect clusters over one neighbour pass with the clusters' domain
-// surfaces, and the voids — the functions `shockfield analyze atoms` calls per frame
+// surfaces and the structure profiles along an axis, and the voids — the functions `shockfield analyze atoms` calls per frame
 // (analysis/atoms/structure_analysis.hpp, atom_surfaces.hpp). Positions are a C-contiguous (n, 3)
 // float64 array and the box its lo/hi corners with a LAMMPS boundary code; they are copied once
 // into the library's AtomFrame (a memcpy, with the GIL released, as is the analysis).
@@ -19,6 +19,7 @@
 #include "shockfield/analysis/atoms/cluster_selection.hpp"
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/analysis/atoms/structure_columns.hpp"
+#include "shockfield/analysis/atoms/structure_profile.hpp"
 #include "shockfield/core/error.hpp"
 
 namespace py = pybind11;
@@ -108,6 +109,25 @@ py::dict domains_dict(const aa::DomainResult& r) {
   return out;
 }
 
+// profiles.csv's columns after frame and timestep: per bin its range, atoms and the fraction of
+// each structure of each structure method.
+py::dict profile_dict(const std::vector<std::pair<std::string, std::vector<aa::ProfileBin>>>& per_method) {
+  std::vector<std::string> names{"bin", "lo", "hi", "centre", "atoms"};
+  for (const auto& [method, bins] : per_method)
+    if (!method.empty())
+      for (aa::Structure t : aa::kStructures) names.push_back(method + "_" + std::string(aa::structure_name(t)) + "_fraction");
+  std::vector<std::vector<double>> rows;
+  const auto& bins = per_method.front().second;
+  for (std::size_t b = 0; b < bins.size(); ++b) {
+    std::vector<double> row{double(b), bins[b].lo, bins[b].hi, 0.5 * (bins[b].lo + bins[b].hi), double(bins[b].counts.total)};
+    for (const auto& [method, method_bins] : per_method)
+      if (!method.empty())
+        for (aa::Structure t : aa::kStructures) row.push_back(method_bins[b].counts.fraction(t));
+    rows.push_back(std::move(row));
+  }
+  return columns_dict(names, rows);
+}
+
 struct ClusterOptions {
   std::optional<double> cutoff;
   std::optional<std::string> select;
@@ -115,6 +135,8 @@ struct ClusterOptions {
   std::optional<double> domains;  // probe, Å
   std::string domains_surface;
   std::size_t domains_min_atoms = 4;
+  std::string profile_axis;  // "": no profile
+  double profile_width = 0;  // Å
 };
 
 py::dict structure(const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
@@ -147,12 +169,20 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   if (c.domains && !c.cutoff)
     throw InputError("domains needs the clusters that form the domains: add clusters=CUTOFF and cluster_select "
                      "(e.g. clusters=3, cluster_select='acna:bcc')");
+  std::optional<aa::StructureProfile> profile;
+  if (!c.profile_axis.empty()) {
+    if (c.profile_axis != "x" && c.profile_axis != "y" && c.profile_axis != "z")
+      throw py::value_error("profile: expected (AXIS, WIDTH) with AXIS 'x', 'y' or 'z', got '" + c.profile_axis + "'");
+    profile = aa::StructureProfile{static_cast<int>(std::string("xyz").find(c.profile_axis[0])), c.profile_width};
+  }
   aa::StructureAnalysisResult r;
   std::optional<aa::DomainResult> domains;
+  std::vector<std::pair<std::string, std::vector<aa::ProfileBin>>> profiles;
   {
     py::gil_scoped_release release;
     validate_frame(frame, "positions");
     r = analyze_structure(frame, analyses);
+    if (profile) profiles = profile->per_method(frame, r);
     if (c.domains)
       domains = aa::domain_surfaces(frame, *r.clusters,
                                     aa::DomainSurfaces{*c.domains, c.domains_surface == "packing", c.domains_min_atoms});
@@ -175,6 +205,7 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
     out["clusters"] = columns_dict(names, rows);
   }
   if (domains) out["domains"] = domains_dict(*domains);
+  if (profile) out["profile"] = profile_dict(profiles);
   if (!r.coordination.empty()) out["coord"] = to_numpy(r.coordination);
   for (const auto& [name, result] : {std::pair{"cna", &r.cna}, std::pair{"acna", &r.adaptive_cna}})
     if (*result) {
@@ -227,17 +258,18 @@ void bind_atoms(py::module_& m) {
          std::optional<double> cna, bool adaptive_cna, const py::object& csp, std::optional<double> bond_pairs,
          bool diamond, std::optional<double> clusters, std::optional<std::string> cluster_select,
          std::size_t cluster_min_size, std::optional<double> domains, const std::string& domains_surface,
-         std::size_t domains_min_atoms, int threads) {
+         std::size_t domains_min_atoms, const std::string& profile_axis, double profile_width, int threads) {
         return structure(positions, lo, hi, boundary, types, ids, coordination, cna, adaptive_cna, csp, bond_pairs,
                          diamond,
                          ClusterOptions{clusters, cluster_select, cluster_min_size, domains, domains_surface,
-                                        domains_min_atoms},
+                                        domains_min_atoms, profile_axis, profile_width},
                          threads);
       },
       py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"), py::arg("types"), py::arg("ids"),
       py::arg("coordination"), py::arg("cna"), py::arg("adaptive_cna"), py::arg("csp"), py::arg("bond_pairs"),
       py::arg("diamond"), py::arg("clusters"), py::arg("cluster_select"), py::arg("cluster_min_size"),
-      py::arg("domains"), py::arg("domains_surface"), py::arg("domains_min_atoms"), py::arg("threads"));
+      py::arg("domains"), py::arg("domains_surface"), py::arg("domains_min_atoms"), py::arg("profile_axis"),
+      py::arg("profile_width"), py::arg("threads"));
   m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"),
         py::arg("types"), py::arg("ids"), py::arg("probe"), py::arg("atomic_volume"), py::arg("margin"),
         py::arg("min_volume"));

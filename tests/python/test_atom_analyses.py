@@ -6,13 +6,14 @@ Frames (written at full precision, so the CLI reads the same doubles):
   (tests/cli/analyze_voids.sh's void, smaller box); `--voids 2.17 --voids-margin 6`;
 - domains: an 8×8×8 fcc crystal with a bcc inclusion of radius 7 Å at the centre (the same
   atomic volume; tests/cli/analyze_domains.sh's construction); `--clusters 3 --cluster-select
-  acna:bcc --domains 3`;
+  acna:bcc --domains 3 --profile z:5`;
 - diamond: 3×3×3 cells of cubic diamond Si (a = 5.431 Å) with 0.25 Å Gaussian displacements, so
   that some atoms leave the cubic-diamond class (measured: 104 cubic, 89 first and 23 second
   neighbours, 22 clusters; 0.15 Å leaves all 216 cubic); `--diamond --clusters 2.6
   --cluster-select dia:!cubic`.
 Every per-atom column (acna, dia, cluster) equals the CLI's dump column exactly, the counts and
-fractions equal structures.csv as printed, and every row of voids.csv, domains.csv and clusters.csv equals the Python row
+fractions equal structures.csv as printed, and every row of voids.csv, domains.csv, clusters.csv and
+profiles.csv equals the Python row
 printed as the CLI prints it ({:.10g}); the surfaces' triangles equal the .vtp's (after the same
 renumbering). The void must be one closed manifold (χ = 2) at the box centre, the domain one
 (χ = 2): a check that the frames show what they should. 1 and 2 threads give the same result.
@@ -92,14 +93,15 @@ class AtomAnalyses(unittest.TestCase):
         self.assertEqual(process.returncode, 0, process.stderr)
         return out, read_dump_columns(out / f"{name}.lammpstrj")
 
-    def assert_rows_printed_equal(self, table, rows, digits):
+    def assert_rows_printed_equal(self, table, rows, digits, fraction_digits=None):
         self.assertEqual(len(table), len(rows))
         for mine, theirs in zip(table, rows):
             for column in table.dtype.names:
                 if table.dtype[column].kind == "i":
                     self.assertEqual(int(mine[column]), int(theirs[column]), column)
                 else:
-                    self.assertEqual(f"{float(mine[column]):.{digits}g}", theirs[column], column)
+                    d = fraction_digits if fraction_digits and column.endswith("_fraction") else digits
+                    self.assertEqual(f"{float(mine[column]):.{d}g}", theirs[column], column)
 
     def test_voids(self):
         x, box = void_frame()
@@ -118,9 +120,9 @@ class AtomAnalyses(unittest.TestCase):
     def test_domains_and_clusters(self):
         x, box = inclusion_frame()
         out, cli = self.analyze(x, box, "inclusion", "--clusters", "3.0", "--cluster-select", "acna:bcc",
-                                "--domains", "3.0")
-        results = [analysis.structure(x, box, clusters=3.0, cluster_select="acna:bcc", domains=3.0, threads=t)
-                   for t in (1, 2)]
+                                "--domains", "3.0", "--profile", "z:5")
+        results = [analysis.structure(x, box, clusters=3.0, cluster_select="acna:bcc", domains=3.0, profile=("z", 5.0),
+                                      threads=t) for t in (1, 2)]
         r = results[1]
         np.testing.assert_array_equal(r["acna"], np.array(cli["acna"], dtype=int))
         np.testing.assert_array_equal(r["cluster"], np.array(cli["cluster"], dtype=int))
@@ -136,6 +138,10 @@ class AtomAnalyses(unittest.TestCase):
         for name in ("acna", "cluster"):
             np.testing.assert_array_equal(results[0][name], r[name])
         np.testing.assert_array_equal(results[0]["domains"], r["domains"])
+        bcc = r["profile"]["acna_bcc_fraction"]  # 0.047 measured in the bins through the inclusion, 0 in the end bins
+        self.assertGreater(bcc.max(), 0.02)
+        self.assertEqual((bcc[0], bcc[-1]), (0.0, 0.0))
+        self.assert_rows_printed_equal(r["profile"], read_csv(out / "profiles.csv"), 10, fraction_digits=6)
 
     def test_diamond(self):
         x, box = diamond_frame()
@@ -167,6 +173,10 @@ class AtomAnalyses(unittest.TestCase):
             analysis.structure(x, box, adaptive_cna=True, clusters=3.0, cluster_select="csp>1")
         with self.assertRaisesRegex(shockfield.InputError, "domains needs the clusters"):
             analysis.structure(x, box, adaptive_cna=True, domains=3.0)
+        with self.assertRaisesRegex(ValueError, "profile: expected \\(AXIS, WIDTH\\)"):
+            analysis.structure(x, box, adaptive_cna=True, profile=("w", 5.0))
+        with self.assertRaisesRegex(shockfield.InputError, "width"):
+            analysis.structure(x, box, adaptive_cna=True, profile=("z", 0.0))
         with self.assertRaisesRegex(ValueError, "domains_surface"):
             analysis.structure(x, box, adaptive_cna=True, domains=3.0, domains_surface="alpha")
 

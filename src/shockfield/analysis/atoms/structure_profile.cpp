@@ -9,6 +9,16 @@
 
 namespace shockfield::analysis::atoms {
 
+std::vector<std::pair<std::string, std::vector<ProfileBin>>> StructureProfile::per_method(
+    const AtomFrame& frame, const StructureAnalysisResult& r, const std::vector<double>& value) const {
+  std::vector<std::pair<std::string, std::vector<ProfileBin>>> out;
+  for (const auto& [name, result] : {std::pair{"cna", &r.cna}, std::pair{"acna", &r.adaptive_cna}})
+    if (*result) out.emplace_back(name, compute(frame, (*result)->structure, value));
+  if (r.bond_pairs) out.emplace_back("bpa", compute(frame, r.bond_pairs->structure, value));
+  if (out.empty()) out.emplace_back("", compute(frame, std::vector<Structure>(frame.size(), Structure::other), value));
+  return out;
+}
+
 std::vector<ProfileBin> StructureProfile::compute(const AtomFrame& frame, const std::vector<Structure>& structure,
                                                   const std::vector<double>& value) const {
   if (axis < 0 || axis > 2) throw InputError(fmt::format("structure profile: axis {} is not 0, 1 or 2", axis));
