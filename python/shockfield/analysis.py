@@ -121,7 +121,7 @@ _VOID_INTEGERS = ("void", "cells", "surface_atoms", "euler_characteristic", "man
 def structure(positions, box, boundary="ppp", types=None, ids=None, coordination=None, cna=None,
               adaptive_cna=False, csp=None, bond_pairs=None, diamond=False, clusters=None, cluster_select=None,
               cluster_min_size=1, domains=None, domains_surface="rolling", domains_min_atoms=4, profile=None,
-              threads=0):
+              pe=None, excess_energy=None, excess_crystal="fcc", threads=0):
     """Per-atom structure of atoms, as ``shockfield analyze atoms`` computes it for one frame
     (docs/analysis-atoms.md), over one neighbour pass.
 
@@ -135,7 +135,11 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     selected atoms (Xu et al. (2015) §4.4.2); ``domains`` (Å: ball radius, or sculpting depth with
     ``domains_surface="packing"``) adds the clusters' surfaces (``--domains``), for clusters of at
     least ``domains_min_atoms`` atoms. ``profile`` (AXIS, WIDTH), e.g. ("z", 5.0): the atoms binned
-    along the axis in bins of WIDTH Å from the box's lo face (``--profile z:5``).
+    along the axis in bins of WIDTH Å from the box's lo face (``--profile z:5``). ``excess_energy``
+    ("auto" or a reference e0 in eV) with ``pe`` (per-atom potential energies, eV): the per-atom
+    excess energy pe − e0, e0 the median pe of the ``excess_crystal`` atoms ("fcc", "hcp", "bcc")
+    for "auto" (``--excess-energy``, Xu et al. (2015) §3.2.3); ``cluster_select`` may then read
+    "excess>VALUE".
 
     Returns a dict of arrays named like the CLI's dump columns: ``coord`` (int32),
     ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other) with
@@ -148,18 +152,31 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     ``domain_surfaces`` (dict ``points``, ``triangles``: domains_<timestep>.vtp's triangles) and
     ``flat_domains`` (why each flat cluster has no surface; the CLI's warnings); ``profile``
     (structured array: profiles.csv's columns after frame and timestep, ``bin, lo, hi, centre,
-    atoms`` and ``<method>_<structure>_fraction`` of each structure method that ran).
+    atoms`` and ``<method>_<structure>_fraction`` of each structure method that ran, then
+    ``mean_excess`` with an excess energy); ``excess`` (float64, eV; ``counts`` then has
+    ``excess_reference_eV`` and ``excess_mean_eV``).
     """
     lo, hi = box
     if domains_surface not in ("rolling", "packing"):
         raise ValueError(f"domains_surface: expected 'rolling' or 'packing', got {domains_surface!r}")
     profile_axis, profile_width = ("", 0.0) if profile is None else (str(profile[0]), float(profile[1]))
+    if excess_crystal not in ("fcc", "hcp", "bcc"):
+        raise ValueError(f"excess_crystal: expected 'fcc', 'hcp' or 'bcc', got {excess_crystal!r}")
+    if excess_energy is not None and excess_energy != "auto" and not isinstance(excess_energy, (int, float)):
+        raise ValueError(f"excess_energy: expected 'auto' or a reference energy in eV, got {excess_energy!r}")
+    excess_auto = excess_energy == "auto"
+    excess_reference = None if excess_energy is None or excess_auto else float(excess_energy)
+    if pe is not None:
+        pe = np.asarray(pe, dtype=np.float64)
+        if pe.ndim != 1:
+            raise ValueError(f"pe: expected one value per atom, an (n,) array, got shape {pe.shape}")
+        pe = pe.tolist()
     r = _require_core().atoms_structure(
         positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
         None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
         coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, bool(diamond),
         clusters, cluster_select, int(cluster_min_size), domains, domains_surface, int(domains_min_atoms),
-        profile_axis, profile_width, int(threads))
+        profile_axis, profile_width, pe, excess_auto, excess_reference, excess_crystal, int(threads))
     if "clusters" in r:
         r["clusters"] = _table(r["clusters"], _CLUSTER_INTEGERS)
     if "domains" in r:

@@ -28,7 +28,9 @@ def structure(positions: npt.NDArray[np.float64],
               csp: Optional[Union[str, int]] = None, bond_pairs: Optional[float] = None, diamond: bool = False,
               clusters: Optional[float] = None, cluster_select: Optional[str] = None, cluster_min_size: int = 1,
               domains: Optional[float] = None, domains_surface: str = "rolling", domains_min_atoms: int = 4,
-              profile: Optional[tuple[str, float]] = None, threads: int = 0) -> dict[str, object]: ...
+              profile: Optional[tuple[str, float]] = None, pe: Optional[Sequence[float]] = None,
+              excess_energy: Optional[Union[str, float]] = None, excess_crystal: str = "fcc",
+              threads: int = 0) -> dict[str, object]: ...
 def voids(positions: npt.NDArray[np.float64], box: tuple[Sequence[float], Sequence[float]], probe: float,
           boundary: str = "ppp", types: Optional[Sequence[int]] = None, ids: Optional[Sequence[int]] = None,
           atomic_volume: Optional[float] = None, margin: Optional[float] = None,

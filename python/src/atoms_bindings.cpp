@@ -5,6 +5,7 @@
 // (analysis/atoms/structure_analysis.hpp, atom_surfaces.hpp). Positions are a C-contiguous (n, 3)
 // float64 array and the box its lo/hi corners with a LAMMPS boundary code; they are copied once
 // into the library's AtomFrame (a memcpy, with the GIL released, as is the analysis).
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -111,11 +112,12 @@ py::dict domains_dict(const aa::DomainResult& r) {
 
 // profiles.csv's columns after frame and timestep: per bin its range, atoms and the fraction of
 // each structure of each structure method.
-py::dict profile_dict(const std::vector<std::pair<std::string, std::vector<aa::ProfileBin>>>& per_method) {
+py::dict profile_dict(const std::vector<std::pair<std::string, std::vector<aa::ProfileBin>>>& per_method, bool excess) {
   std::vector<std::string> names{"bin", "lo", "hi", "centre", "atoms"};
   for (const auto& [method, bins] : per_method)
     if (!method.empty())
       for (aa::Structure t : aa::kStructures) names.push_back(method + "_" + std::string(aa::structure_name(t)) + "_fraction");
+  if (excess) names.push_back("mean_excess");
   std::vector<std::vector<double>> rows;
   const auto& bins = per_method.front().second;
   for (std::size_t b = 0; b < bins.size(); ++b) {
@@ -123,6 +125,7 @@ py::dict profile_dict(const std::vector<std::pair<std::string, std::vector<aa::P
     for (const auto& [method, method_bins] : per_method)
       if (!method.empty())
         for (aa::Structure t : aa::kStructures) row.push_back(method_bins[b].counts.fraction(t));
+    if (excess) row.push_back(bins[b].mean_value());
     rows.push_back(std::move(row));
   }
   return columns_dict(names, rows);
@@ -139,11 +142,21 @@ struct ClusterOptions {
   double profile_width = 0;  // Å
 };
 
+// The per-atom excess energy pe − e0 (--excess-energy): pe per atom (eV), e0 the median pe of the
+// `crystal` atoms (auto) or the reference given.
+struct ExcessOptions {
+  std::optional<std::vector<double>> pe;
+  bool automatic = false;
+  std::optional<double> reference;
+  std::string crystal = "fcc";
+  bool on() const { return automatic || reference.has_value(); }
+};
+
 py::dict structure(const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
                    const std::string& boundary, const py::object& types, const py::object& ids,
                    std::optional<double> coordination, std::optional<double> cna, bool adaptive_cna,
                    const py::object& csp, std::optional<double> bond_pairs, bool diamond,
-                   const ClusterOptions& c, int threads) {
+                   const ClusterOptions& c, const ExcessOptions& e, int threads) {
   const ThreadCount thread_count(threads);
   const aa::AtomFrame frame = make_frame(positions, lo, hi, boundary, types, ids);
   aa::StructureAnalyses analyses;
@@ -157,14 +170,25 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   if (c.cutoff.has_value() != c.select.has_value())
     throw InputError("clusters and cluster_select go together: the cutoff and which atoms to cluster");
   if (c.cutoff) {
-    analyses.select = aa::parse_cluster_selection(*c.select, analyses, false, "cluster_select '" + *c.select + "'",
+    analyses.select = aa::parse_cluster_selection(*c.select, analyses, e.on(), "cluster_select '" + *c.select + "'",
                                                   [](const std::string& m) {
-                                                    return m == "excess" ? std::string("an excess energy (not offered from Python)")
+                                                    return m == "excess" ? std::string("excess_energy and pe")
                                                          : m == "bpa"    ? std::string("bond_pairs=CUTOFF")
                                                          : m == "csp"    ? std::string("csp=N")
                                                                          : m + "=CUTOFF";
                                                   });
     analyses.clusters = aa::DefectClusters{*c.cutoff, c.min_size};
+  }
+  if (e.on()) {
+    if (!e.pe) throw InputError("excess_energy needs the per-atom potential energies: pass pe (eV, one per atom)");
+    if (e.pe->size() != frame.size())
+      throw py::value_error(fmt::format("pe: expected {} values (one per atom), got {}", frame.size(), e.pe->size()));
+    if (e.automatic && !analyses.cna && !analyses.adaptive_cna && !analyses.bond_pairs)
+      throw InputError("excess_energy='auto' needs a structure method (adaptive_cna, cna or bond_pairs) to find the crystal atoms");
+    const aa::Structure crystal = e.crystal == "hcp" ? aa::Structure::hcp : e.crystal == "bcc" ? aa::Structure::bcc : aa::Structure::fcc;
+    analyses.excess_energy = [&e, crystal](const aa::StructureAnalysisResult& r) {
+      return aa::excess_energy(*e.pe, r, crystal, e.reference ? &*e.reference : nullptr);
+    };
   }
   if (c.domains && !c.cutoff)
     throw InputError("domains needs the clusters that form the domains: add clusters=CUTOFF and cluster_select "
@@ -182,7 +206,7 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
     py::gil_scoped_release release;
     validate_frame(frame, "positions");
     r = analyze_structure(frame, analyses);
-    if (profile) profiles = profile->per_method(frame, r);
+    if (profile) profiles = profile->per_method(frame, r, r.excess_energy);
     if (c.domains)
       domains = aa::domain_surfaces(frame, *r.clusters,
                                     aa::DomainSurfaces{*c.domains, c.domains_surface == "packing", c.domains_min_atoms});
@@ -205,7 +229,8 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
     out["clusters"] = columns_dict(names, rows);
   }
   if (domains) out["domains"] = domains_dict(*domains);
-  if (profile) out["profile"] = profile_dict(profiles);
+  if (profile) out["profile"] = profile_dict(profiles, e.on());
+  if (!r.excess_energy.empty()) out["excess"] = to_numpy(r.excess_energy);
   if (!r.coordination.empty()) out["coord"] = to_numpy(r.coordination);
   for (const auto& [name, result] : {std::pair{"cna", &r.cna}, std::pair{"acna", &r.adaptive_cna}})
     if (*result) {
@@ -258,18 +283,21 @@ void bind_atoms(py::module_& m) {
          std::optional<double> cna, bool adaptive_cna, const py::object& csp, std::optional<double> bond_pairs,
          bool diamond, std::optional<double> clusters, std::optional<std::string> cluster_select,
          std::size_t cluster_min_size, std::optional<double> domains, const std::string& domains_surface,
-         std::size_t domains_min_atoms, const std::string& profile_axis, double profile_width, int threads) {
+         std::size_t domains_min_atoms, const std::string& profile_axis, double profile_width,
+         std::optional<std::vector<double>> pe, bool excess_auto, std::optional<double> excess_reference,
+         const std::string& excess_crystal, int threads) {
         return structure(positions, lo, hi, boundary, types, ids, coordination, cna, adaptive_cna, csp, bond_pairs,
                          diamond,
                          ClusterOptions{clusters, cluster_select, cluster_min_size, domains, domains_surface,
                                         domains_min_atoms, profile_axis, profile_width},
-                         threads);
+                         ExcessOptions{std::move(pe), excess_auto, excess_reference, excess_crystal}, threads);
       },
       py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"), py::arg("types"), py::arg("ids"),
       py::arg("coordination"), py::arg("cna"), py::arg("adaptive_cna"), py::arg("csp"), py::arg("bond_pairs"),
       py::arg("diamond"), py::arg("clusters"), py::arg("cluster_select"), py::arg("cluster_min_size"),
       py::arg("domains"), py::arg("domains_surface"), py::arg("domains_min_atoms"), py::arg("profile_axis"),
-      py::arg("profile_width"), py::arg("threads"));
+      py::arg("profile_width"), py::arg("pe"), py::arg("excess_auto"), py::arg("excess_reference"),
+      py::arg("excess_crystal"), py::arg("threads"));
   m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"),
         py::arg("types"), py::arg("ids"), py::arg("probe"), py::arg("atomic_volume"), py::arg("margin"),
         py::arg("min_volume"));

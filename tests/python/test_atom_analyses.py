@@ -11,7 +11,10 @@ Frames (written at full precision, so the CLI reads the same doubles):
   that some atoms leave the cubic-diamond class (measured: 104 cubic, 89 first and 23 second
   neighbours, 22 clusters; 0.15 Å leaves all 216 cubic); `--diamond --clusters 2.6
   --cluster-select dia:!cubic`.
-Every per-atom column (acna, dia, cluster) equals the CLI's dump column exactly, the counts and
+- excess energy: test_structure's jittered 256-atom Cu crystal with a made-up pe column
+  (−3.54 + 0.5 u², u uniform); `--adaptive-cna --excess-energy auto --profile z:3.6 --clusters 3
+  --cluster-select excess>0.2`; a given e0 gives pe − e0.
+Every per-atom column (acna, dia, cluster, excess) equals the CLI's dump column exactly, the counts and
 fractions equal structures.csv as printed, and every row of voids.csv, domains.csv, clusters.csv and
 profiles.csv equals the Python row
 printed as the CLI prints it ({:.10g}); the surfaces' triangles equal the .vtp's (after the same
@@ -31,7 +34,7 @@ import numpy as np
 
 import shockfield
 from shockfield import analysis
-from test_structure import read_dump_columns, write_dump
+from test_structure import fcc_cu, read_dump_columns, write_dump
 from test_surface import read_vtp
 
 SF = os.environ["SHOCKFIELD_BIN"]
@@ -85,8 +88,8 @@ class AtomAnalyses(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
-    def analyze(self, x, box, name, *options):
-        write_dump(self.dir / f"{name}.lammpstrj", x, box)
+    def analyze(self, x, box, name, *options, columns=None):
+        write_dump(self.dir / f"{name}.lammpstrj", x, box, columns)
         out = self.dir / name
         process = subprocess.run([SF, "analyze", "atoms", str(self.dir / f"{name}.lammpstrj"), "--no-plot", "-o",
                                   str(out), "-j", "2", *options], capture_output=True, text=True)
@@ -159,6 +162,23 @@ class AtomAnalyses(unittest.TestCase):
         np.testing.assert_array_equal(one["dia"], two["dia"])
         np.testing.assert_array_equal(one["cluster"], two["cluster"])
 
+    def test_excess_energy(self):
+        x, box = fcc_cu()  # 256 Cu atoms jittered by 0.12 Å: some are not fcc
+        pe = -3.54 + 0.5 * np.random.default_rng(8).random(len(x)) ** 2
+        out, cli = self.analyze(x, box, "cu", "--adaptive-cna", "--excess-energy", "auto", "--profile", "z:3.6",
+                                "--clusters", "3.0", "--cluster-select", "excess>0.2", columns={"pe": pe})
+        r = analysis.structure(x, box, adaptive_cna=True, pe=pe, excess_energy="auto", profile=("z", 3.6), clusters=3.0,
+                               cluster_select="excess>0.2", threads=2)
+        np.testing.assert_array_equal(r["excess"], np.array(cli["excess"], dtype=float))
+        np.testing.assert_array_equal(r["cluster"], np.array(cli["cluster"], dtype=int))
+        self.assertGreater(len(r["clusters"]), 0)
+        summary = read_csv(out / "structures.csv")[0]
+        for column in ("excess_reference_eV", "excess_mean_eV", "acna_fcc"):
+            self.assertEqual(f"{r['counts'][column]:.10g}", summary[column], column)
+        self.assert_rows_printed_equal(r["profile"], read_csv(out / "profiles.csv"), 10, fraction_digits=6)
+        fixed = analysis.structure(x, box, coordination=3.0, pe=pe, excess_energy=-3.54)
+        np.testing.assert_allclose(fixed["excess"], pe + 3.54, rtol=0, atol=1e-15)  # pe − e0, e0 given
+
     def test_bad_input_raises(self):
         x, box = void_frame(n=3, radius=2.0)
         with self.assertRaisesRegex(TypeError, "positions: expected dtype float64"):
@@ -177,6 +197,14 @@ class AtomAnalyses(unittest.TestCase):
             analysis.structure(x, box, adaptive_cna=True, profile=("w", 5.0))
         with self.assertRaisesRegex(shockfield.InputError, "width"):
             analysis.structure(x, box, adaptive_cna=True, profile=("z", 0.0))
+        with self.assertRaisesRegex(shockfield.InputError, "excess_energy needs the per-atom potential energies"):
+            analysis.structure(x, box, adaptive_cna=True, excess_energy="auto")
+        with self.assertRaisesRegex(ValueError, "pe: expected"):
+            analysis.structure(x, box, adaptive_cna=True, excess_energy="auto", pe=np.zeros(3))
+        with self.assertRaisesRegex(shockfield.InputError, "needs a structure method"):
+            analysis.structure(x, box, coordination=3.0, excess_energy="auto", pe=np.zeros(len(x)))
+        with self.assertRaisesRegex(shockfield.InputError, "selecting by excess needs excess_energy and pe"):
+            analysis.structure(x, box, adaptive_cna=True, clusters=3.0, cluster_select="excess>0.1")
         with self.assertRaisesRegex(ValueError, "domains_surface"):
             analysis.structure(x, box, adaptive_cna=True, domains=3.0, domains_surface="alpha")
 

@@ -78,10 +78,7 @@ aa::ExcessEnergy ProfileOutput::excess_energy(const aa::AtomFrame& frame, const 
     throw InputError(fmt::format("{}: --excess-energy needs a per-atom potential energy column ({}); dump pe (LAMMPS: "
                                  "compute pe/atom) or name the column with --pe-column",
                                  dump.where(), column.empty() ? "none of pe, c_pe, c_peatom, c_pe_atom, v_pe" : column));
-  const std::vector<double>& pe = dump.column(column);
-  const std::vector<aa::Structure> none(frame.size(), crystal_);
-  const std::vector<aa::Structure>* structures = aa::reference_structures(r);
-  aa::ExcessEnergy e = aa::excess_energy(pe, structures ? *structures : none, crystal_, reference_ ? &*reference_ : nullptr);
+  aa::ExcessEnergy e = aa::excess_energy(dump.column(column), r, crystal_, reference_ ? &*reference_ : nullptr);
   if (!reference_)
     std::printf("timestep %lld: excess energy reference e0 = %.10g eV (median pe of %s atoms)\n", frame.timestep,
                 e.reference, args_.crystal.c_str());

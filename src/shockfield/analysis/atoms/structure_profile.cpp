@@ -70,4 +70,10 @@ ExcessEnergy excess_energy(const std::vector<double>& pe, const std::vector<Stru
   return r;
 }
 
+ExcessEnergy excess_energy(const std::vector<double>& pe, const StructureAnalysisResult& r, Structure crystal,
+                           const double* reference) {
+  const std::vector<Structure>* structures = reference_structures(r);
+  return excess_energy(pe, structures ? *structures : std::vector<Structure>(pe.size(), crystal), crystal, reference);
+}
+
 }  // namespace shockfield::analysis::atoms

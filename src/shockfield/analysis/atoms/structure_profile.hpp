@@ -41,5 +41,9 @@ struct StructureProfile {
 /// that structure or the sizes differ.
 ExcessEnergy excess_energy(const std::vector<double>& pe, const std::vector<Structure>& structure, Structure crystal,
                            const double* reference = nullptr);
+/// excess_energy with the structures of the frame's first structure method (reference_structures:
+/// cna, acna, bpa), or every atom counted as `crystal` when none ran (then a `reference` is needed).
+ExcessEnergy excess_energy(const std::vector<double>& pe, const StructureAnalysisResult& r, Structure crystal,
+                           const double* reference = nullptr);
 
 }  // namespace shockfield::analysis::atoms
