@@ -32,7 +32,8 @@ def atoms_structure(positions: npt.NDArray[np.float64], lo: Sequence[float], hi:
                     diamond: bool, clusters: Optional[float], cluster_select: Optional[str], cluster_min_size: int,
                     domains: Optional[float], domains_surface: str, domains_min_atoms: int, profile_axis: str,
                     profile_width: float, pe: Optional[Sequence[float]], excess_auto: bool,
-                    excess_reference: Optional[float], excess_crystal: str, threads: int) -> dict[str, object]: ...
+                    excess_reference: Optional[float], excess_crystal: str, burgers: Optional[dict[str, object]],
+                    threads: int) -> dict[str, object]: ...
 def atoms_voids(positions: npt.NDArray[np.float64], lo: Sequence[float], hi: Sequence[float], boundary: str,
                 types: Optional[Sequence[int]], ids: Optional[Sequence[int]], probe: float,
                 atomic_volume: Optional[float], margin: Optional[float], min_volume: float) -> dict[str, object]: ...

@@ -121,7 +121,9 @@ _VOID_INTEGERS = ("void", "cells", "surface_atoms", "euler_characteristic", "man
 def structure(positions, box, boundary="ppp", types=None, ids=None, coordination=None, cna=None,
               adaptive_cna=False, csp=None, bond_pairs=None, diamond=False, clusters=None, cluster_select=None,
               cluster_min_size=1, domains=None, domains_surface="rolling", domains_min_atoms=4, profile=None,
-              pe=None, excess_energy=None, excess_crystal="fcc", threads=0):
+              pe=None, excess_energy=None, excess_crystal="fcc", burgers_lines=(), burgers_ids=(),
+              burgers_clusters=False, burgers_orient=((1, 0, 0), (0, 1, 0), (0, 0, 1)), burgers_lattice=None,
+              burgers_band=None, burgers_slab=None, burgers_spacing=None, threads=0):
     """Per-atom structure of atoms, as ``shockfield analyze atoms`` computes it for one frame
     (docs/analysis-atoms.md), over one neighbour pass.
 
@@ -139,7 +141,11 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     ("auto" or a reference e0 in eV) with ``pe`` (per-atom potential energies, eV): the per-atom
     excess energy pe − e0, e0 the median pe of the ``excess_crystal`` atoms ("fcc", "hcp", "bcc")
     for "auto" (``--excess-energy``, Xu et al. (2015) §3.2.3); ``cluster_select`` may then read
-    "excess>VALUE".
+    "excess>VALUE". Burgers circuits (``--burgers-*``, Frank scheme FS/RH, Xu et al. (2015)
+    §3.2.3): ``burgers_lines`` [(centre, axis, radius)] Å, ``burgers_ids`` [[id, id, id, ...]],
+    ``burgers_clusters`` (around the line of each cluster), in the crystal of ``burgers_orient``
+    (the crystal directions of x, y, z) with ``burgers_lattice`` (a, Å; default √2 × the median
+    nearest-neighbour distance), ``burgers_band``, ``burgers_slab``, ``burgers_spacing``.
 
     Returns a dict of arrays named like the CLI's dump columns: ``coord`` (int32),
     ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other) with
@@ -154,7 +160,10 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     (structured array: profiles.csv's columns after frame and timestep, ``bin, lo, hi, centre,
     atoms`` and ``<method>_<structure>_fraction`` of each structure method that ran, then
     ``mean_excess`` with an excess energy); ``excess`` (float64, eV; ``counts`` then has
-    ``excess_reference_eV`` and ``excess_mean_eV``).
+    ``excess_reference_eV`` and ``excess_mean_eV``); ``burgers`` (structured array: burgers.csv's
+    columns after frame and timestep, ``source``, ``b`` and ``kind`` as text), ``burgers_circuit``
+    (int32 per atom: the circuit through it, 0 none) and ``burgers_skipped`` (automatic circuits
+    that could not close, with why).
     """
     lo, hi = box
     if domains_surface not in ("rolling", "packing"):
@@ -171,18 +180,27 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
         if pe.ndim != 1:
             raise ValueError(f"pe: expected one value per atom, an (n,) array, got shape {pe.shape}")
         pe = pe.tolist()
+    burgers = None
+    if len(burgers_lines) or len(burgers_ids) or burgers_clusters:
+        burgers = {"lines": [(tuple(map(float, c)), tuple(map(float, a)), float(radius)) for c, a, radius in burgers_lines],
+                   "ids": [[int(i) for i in ids] for ids in burgers_ids], "clusters": bool(burgers_clusters),
+                   "orient": [tuple(int(v) for v in row) for row in burgers_orient], "lattice": burgers_lattice,
+                   "band": burgers_band, "slab": burgers_slab, "spacing": burgers_spacing}
     r = _require_core().atoms_structure(
         positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
         None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
         coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, bool(diamond),
         clusters, cluster_select, int(cluster_min_size), domains, domains_surface, int(domains_min_atoms),
-        profile_axis, profile_width, pe, excess_auto, excess_reference, excess_crystal, int(threads))
+        profile_axis, profile_width, pe, excess_auto, excess_reference, excess_crystal, burgers, int(threads))
     if "clusters" in r:
         r["clusters"] = _table(r["clusters"], _CLUSTER_INTEGERS)
     if "domains" in r:
         d = r.pop("domains")
         r["domain_surfaces"], r["flat_domains"] = d.pop("surfaces"), d.pop("flat")
         r["domains"] = _table(d, _DOMAIN_INTEGERS)
+    if "burgers" in r:
+        r["burgers"] = _table({k: np.asarray(v) for k, v in r["burgers"].items()},
+                              ("circuit", "atoms", "b_h6", "b_k6", "b_l6", "reliable"))
     if "profile" in r:
         r["profile"] = _table(r["profile"], ("bin", "atoms"))
     return r

@@ -1,7 +1,7 @@
 // shockfield._core's atom analyses on numpy arrays (python/shockfield/analysis.py's `structure`
 // and `voids` wrap them): coordination, conventional and adaptive CNA, centro-symmetry, bond
 // pairs, diamond structure and defect clusters over one neighbour pass with the clusters' domain
-// surfaces and the structure profiles along an axis, and the voids — the functions `shockfield analyze atoms` calls per frame
+// surfaces, the structure profiles along an axis and the Burgers circuits, and the voids — the functions `shockfield analyze atoms` calls per frame
 // (analysis/atoms/structure_analysis.hpp, atom_surfaces.hpp). Positions are a C-contiguous (n, 3)
 // float64 array and the box its lo/hi corners with a LAMMPS boundary code; they are copied once
 // into the library's AtomFrame (a memcpy, with the GIL released, as is the analysis).
@@ -13,10 +13,12 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bindings.hpp"
 #include "shockfield/analysis/atoms/atom_surfaces.hpp"
+#include "shockfield/analysis/atoms/burgers_frame.hpp"
 #include "shockfield/analysis/atoms/cluster_selection.hpp"
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/analysis/atoms/structure_columns.hpp"
@@ -142,6 +144,61 @@ struct ClusterOptions {
   double profile_width = 0;  // Å
 };
 
+// The request of --burgers-* from shockfield.analysis.structure's burgers_* arguments (a dict with
+// every key: lines [(centre, axis, radius)], ids [[id, ...]], clusters, orient, lattice, band,
+// slab, spacing).
+aa::BurgersRequest burgers_request(const py::dict& b, bool clusters_on) {
+  aa::BurgersRequest r;
+  r.orient_name = "burgers_orient";
+  const auto orient = b["orient"].cast<std::vector<std::array<int, 3>>>();
+  if (orient.size() != 3) throw py::value_error("burgers_orient: expected three (i, j, k) directions");
+  for (std::size_t d = 0; d < 3; ++d) r.orient[d] = aa::Vec3i(orient[d][0], orient[d][1], orient[d][2]);
+  r.lattice = b["lattice"].cast<std::optional<double>>();
+  r.band = b["band"].cast<std::optional<double>>();
+  r.slab = b["slab"].cast<std::optional<double>>();
+  r.spacing = b["spacing"].cast<std::optional<double>>();
+  r.around_clusters = b["clusters"].cast<bool>();
+  if (r.around_clusters && !clusters_on)
+    throw InputError("burgers_clusters needs clusters and cluster_select (which defect atoms form the lines)");
+  const auto lines = b["lines"].cast<std::vector<std::tuple<std::array<double, 3>, std::array<double, 3>, double>>>();
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const auto& [c, a, radius] = lines[k];
+    const Vec3 axis(a[0], a[1], a[2]);
+    if (!(axis.norm() > 0)) throw InputError(fmt::format("burgers_lines[{}]: the axis is the zero vector", k));
+    if (!(radius > 0)) throw InputError(fmt::format("burgers_lines[{}]: the radius must be > 0", k));
+    r.lines.push_back({Vec3(c[0], c[1], c[2]), axis, radius});
+  }
+  for (const auto& ids : b["ids"].cast<std::vector<std::vector<std::int64_t>>>()) {
+    if (ids.size() < 3) throw InputError("burgers_ids: a circuit needs at least 3 atoms");
+    r.id_circuits.push_back(ids);
+  }
+  return r;
+}
+
+// burgers.csv's columns after frame and timestep (source, b and kind as text).
+py::dict burgers_dict(const aa::FrameBurgers& f) {
+  std::vector<std::vector<double>> rows;
+  py::list source, text, kind;
+  for (std::size_t k = 0; k < f.circuits.size(); ++k) {
+    const aa::BurgersResult& r = f.circuits[k].result;
+    const auto& spec = f.circuits[k].spec;
+    const Vec3 centre = spec ? spec->centre : Vec3::Constant(NAN), axis = spec ? Vec3(spec->axis.normalized()) : Vec3::Constant(NAN);
+    rows.push_back({double(k + 1), double(r.circuit.size()), centre.x(), centre.y(), centre.z(), axis.x(), axis.y(),
+                    axis.z(), spec ? spec->radius : NAN, double(r.sixths[0]), double(r.sixths[1]), double(r.sixths[2]),
+                    r.lab.x(), r.lab.y(), r.lab.z(), r.max_step_error, r.reliable ? 1.0 : 0.0});
+    source.append(f.circuits[k].source);
+    text.append(r.text());
+    kind.append(r.kind());
+  }
+  py::dict out = columns_dict({"circuit", "atoms", "centre_x", "centre_y", "centre_z", "axis_x", "axis_y", "axis_z", "radius",
+                               "b_h6", "b_k6", "b_l6", "bx", "by", "bz", "max_step_error", "reliable"},
+                              rows);
+  out["source"] = source;
+  out["b"] = text;
+  out["kind"] = kind;
+  return out;
+}
+
 // The per-atom excess energy pe − e0 (--excess-energy): pe per atom (eV), e0 the median pe of the
 // `crystal` atoms (auto) or the reference given.
 struct ExcessOptions {
@@ -156,7 +213,7 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
                    const std::string& boundary, const py::object& types, const py::object& ids,
                    std::optional<double> coordination, std::optional<double> cna, bool adaptive_cna,
                    const py::object& csp, std::optional<double> bond_pairs, bool diamond,
-                   const ClusterOptions& c, const ExcessOptions& e, int threads) {
+                   const ClusterOptions& c, const ExcessOptions& e, const py::object& burgers, int threads) {
   const ThreadCount thread_count(threads);
   const aa::AtomFrame frame = make_frame(positions, lo, hi, boundary, types, ids);
   aa::StructureAnalyses analyses;
@@ -190,6 +247,8 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
       return aa::excess_energy(*e.pe, r, crystal, e.reference ? &*e.reference : nullptr);
     };
   }
+  std::optional<aa::BurgersRequest> burgers_wanted;
+  if (!burgers.is_none()) burgers_wanted = burgers_request(burgers.cast<py::dict>(), c.cutoff.has_value());
   if (c.domains && !c.cutoff)
     throw InputError("domains needs the clusters that form the domains: add clusters=CUTOFF and cluster_select "
                      "(e.g. clusters=3, cluster_select='acna:bcc')");
@@ -202,11 +261,13 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   aa::StructureAnalysisResult r;
   std::optional<aa::DomainResult> domains;
   std::vector<std::pair<std::string, std::vector<aa::ProfileBin>>> profiles;
+  std::optional<aa::FrameBurgers> circuits;
   {
     py::gil_scoped_release release;
     validate_frame(frame, "positions");
     r = analyze_structure(frame, analyses);
     if (profile) profiles = profile->per_method(frame, r, r.excess_energy);
+    if (burgers_wanted) circuits = aa::burgers_circuits(frame, r.clusters ? &*r.clusters : nullptr, *burgers_wanted);
     if (c.domains)
       domains = aa::domain_surfaces(frame, *r.clusters,
                                     aa::DomainSurfaces{*c.domains, c.domains_surface == "packing", c.domains_min_atoms});
@@ -231,6 +292,12 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   if (domains) out["domains"] = domains_dict(*domains);
   if (profile) out["profile"] = profile_dict(profiles, e.on());
   if (!r.excess_energy.empty()) out["excess"] = to_numpy(r.excess_energy);
+  if (circuits) {
+    out["burgers"] = burgers_dict(*circuits);
+    std::vector<std::int32_t> on(circuits->on_circuit.begin(), circuits->on_circuit.end());
+    out["burgers_circuit"] = to_numpy(on);
+    out["burgers_skipped"] = circuits->skipped;
+  }
   if (!r.coordination.empty()) out["coord"] = to_numpy(r.coordination);
   for (const auto& [name, result] : {std::pair{"cna", &r.cna}, std::pair{"acna", &r.adaptive_cna}})
     if (*result) {
@@ -285,19 +352,20 @@ void bind_atoms(py::module_& m) {
          std::size_t cluster_min_size, std::optional<double> domains, const std::string& domains_surface,
          std::size_t domains_min_atoms, const std::string& profile_axis, double profile_width,
          std::optional<std::vector<double>> pe, bool excess_auto, std::optional<double> excess_reference,
-         const std::string& excess_crystal, int threads) {
+         const std::string& excess_crystal, const py::object& burgers, int threads) {
         return structure(positions, lo, hi, boundary, types, ids, coordination, cna, adaptive_cna, csp, bond_pairs,
                          diamond,
                          ClusterOptions{clusters, cluster_select, cluster_min_size, domains, domains_surface,
                                         domains_min_atoms, profile_axis, profile_width},
-                         ExcessOptions{std::move(pe), excess_auto, excess_reference, excess_crystal}, threads);
+                         ExcessOptions{std::move(pe), excess_auto, excess_reference, excess_crystal}, burgers,
+                         threads);
       },
       py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"), py::arg("types"), py::arg("ids"),
       py::arg("coordination"), py::arg("cna"), py::arg("adaptive_cna"), py::arg("csp"), py::arg("bond_pairs"),
       py::arg("diamond"), py::arg("clusters"), py::arg("cluster_select"), py::arg("cluster_min_size"),
       py::arg("domains"), py::arg("domains_surface"), py::arg("domains_min_atoms"), py::arg("profile_axis"),
       py::arg("profile_width"), py::arg("pe"), py::arg("excess_auto"), py::arg("excess_reference"),
-      py::arg("excess_crystal"), py::arg("threads"));
+      py::arg("excess_crystal"), py::arg("burgers"), py::arg("threads"));
   m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"),
         py::arg("types"), py::arg("ids"), py::arg("probe"), py::arg("atomic_volume"), py::arg("margin"),
         py::arg("min_volume"));

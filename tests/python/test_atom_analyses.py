@@ -14,7 +14,10 @@ Frames (written at full precision, so the CLI reads the same doubles):
 - excess energy: test_structure's jittered 256-atom Cu crystal with a made-up pe column
   (−3.54 + 0.5 u², u uniform); `--adaptive-cna --excess-energy auto --profile z:3.6 --clusters 3
   --cluster-select excess>0.2`; a given e0 gives pe − e0.
-Every per-atom column (acna, dia, cluster, excess) equals the CLI's dump column exactly, the counts and
+- Burgers circuits: the unrelaxed Volterra edge dislocation a/2[1-10] of
+  examples/md_dislocation_burgers (cylinder radius 22 Å, box ff ff pp) with a circuit about the
+  line (b = [1 -1 0]/2, perfect) and one in good crystal (0); burgers.csv's rows as printed.
+Every per-atom column (acna, dia, cluster, excess, burgers_circuit) equals the CLI's dump column exactly, the counts and
 fractions equal structures.csv as printed, and every row of voids.csv, domains.csv, clusters.csv and
 profiles.csv equals the Python row
 printed as the CLI prints it ({:.10g}); the surfaces' triangles equal the .vtp's (after the same
@@ -23,6 +26,7 @@ renumbering). The void must be one closed manifold (χ = 2) at the box centre, t
 """
 
 import csv
+import importlib.util
 import os
 import pathlib
 import subprocess
@@ -38,6 +42,7 @@ from test_structure import fcc_cu, read_dump_columns, write_dump
 from test_surface import read_vtp
 
 SF = os.environ["SHOCKFIELD_BIN"]
+SOURCE = pathlib.Path(os.environ["SHOCKFIELD_SOURCE"])
 FCC = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
 
 
@@ -88,8 +93,8 @@ class AtomAnalyses(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
-    def analyze(self, x, box, name, *options, columns=None):
-        write_dump(self.dir / f"{name}.lammpstrj", x, box, columns)
+    def analyze(self, x, box, name, *options, columns=None, bounds="pp pp pp"):
+        write_dump(self.dir / f"{name}.lammpstrj", x, box, columns, bounds)
         out = self.dir / name
         process = subprocess.run([SF, "analyze", "atoms", str(self.dir / f"{name}.lammpstrj"), "--no-plot", "-o",
                                   str(out), "-j", "2", *options], capture_output=True, text=True)
@@ -179,6 +184,35 @@ class AtomAnalyses(unittest.TestCase):
         fixed = analysis.structure(x, box, coordination=3.0, pe=pe, excess_energy=-3.54)
         np.testing.assert_allclose(fixed["excess"], pe + 3.54, rtol=0, atol=1e-15)  # pe − e0, e0 given
 
+    def test_burgers_circuits(self):
+        # The Volterra edge dislocation a/2[1-10] of examples/md_dislocation_burgers (unrelaxed, a
+        # cylinder of radius 22 Å, two repeats along the line): a circuit of radius 12 Å about the
+        # line gives the perfect vector, one about an axis 12 Å away in good crystal gives 0.
+        spec = importlib.util.spec_from_file_location("make_dislocation", SOURCE / "examples" / "md_dislocation_burgers"
+                                                      / "make_dislocation.py")
+        make = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(make)
+        x, lz = make.crystal(22.0, 2)
+        x = np.ascontiguousarray(make.add_edge(x, 0.37, make.A / np.sqrt(3) / 2, make.A / np.sqrt(2)))
+        box = (np.array([x[:, 0].min() - 1, x[:, 1].min() - 1, 0.0]), np.array([x[:, 0].max() + 1, x[:, 1].max() + 1, lz]))
+        orient = "1 -1 0,1 1 1,-1 -1 2"
+        out, cli = self.analyze(x, box, "edge", "--burgers-orient", orient, "--burgers-lattice", "3.615",
+                                "--burgers-line", f"0.37,1.04,{lz / 2!r}:0,0,1:12", "--burgers-line",
+                                f"0,-13,{lz / 2!r}:0,0,1:5", bounds="ff ff pp")
+        r = analysis.structure(x, box, boundary="ffp", adaptive_cna=True, burgers_orient=((1, -1, 0), (1, 1, 1), (-1, -1, 2)),
+                               burgers_lattice=3.615, burgers_lines=[((0.37, 1.04, lz / 2), (0, 0, 1), 12.0),
+                                                                     ((0.0, -13.0, lz / 2), (0, 0, 1), 5.0)])
+        b = r["burgers"]
+        self.assertEqual(list(b["b"]), ["[1 -1 0]/2", "0"])
+        self.assertEqual(b["kind"][0], "perfect a/2<110>")
+        rows = read_csv(out / "burgers.csv")
+        for column in ("source", "b", "kind"):
+            self.assertEqual(list(b[column]), [row[column] for row in rows], column)
+        numeric = b[[n for n in b.dtype.names if n not in ("source", "b", "kind", "max_step_error")]]
+        self.assert_rows_printed_equal(numeric, rows, 10)
+        self.assertEqual([f"{v:.4g}" for v in b["max_step_error"]], [row["max_step_error"] for row in rows])
+        np.testing.assert_array_equal(r["burgers_circuit"], np.array(cli["burgers_circuit"], dtype=int))
+
     def test_bad_input_raises(self):
         x, box = void_frame(n=3, radius=2.0)
         with self.assertRaisesRegex(TypeError, "positions: expected dtype float64"):
@@ -205,6 +239,13 @@ class AtomAnalyses(unittest.TestCase):
             analysis.structure(x, box, coordination=3.0, excess_energy="auto", pe=np.zeros(len(x)))
         with self.assertRaisesRegex(shockfield.InputError, "selecting by excess needs excess_energy and pe"):
             analysis.structure(x, box, adaptive_cna=True, clusters=3.0, cluster_select="excess>0.1")
+        with self.assertRaisesRegex(shockfield.InputError, "burgers_clusters needs clusters"):
+            analysis.structure(x, box, adaptive_cna=True, burgers_clusters=True)
+        with self.assertRaisesRegex(shockfield.InputError, "burgers_orient"):
+            analysis.structure(x, box, adaptive_cna=True, burgers_ids=[[1, 2, 3]],
+                               burgers_orient=((1, 0, 0), (1, 1, 0), (0, 0, 1)))
+        with self.assertRaisesRegex(shockfield.InputError, "radius must be > 0"):
+            analysis.structure(x, box, adaptive_cna=True, burgers_lines=[((0, 0, 0), (0, 0, 1), 0.0)])
         with self.assertRaisesRegex(ValueError, "domains_surface"):
             analysis.structure(x, box, adaptive_cna=True, domains=3.0, domains_surface="alpha")
 
