@@ -123,7 +123,8 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
               cluster_min_size=1, domains=None, domains_surface="rolling", domains_min_atoms=4, profile=None,
               pe=None, excess_energy=None, excess_crystal="fcc", burgers_lines=(), burgers_ids=(),
               burgers_clusters=False, burgers_orient=((1, 0, 0), (0, 1, 0), (0, 0, 1)), burgers_lattice=None,
-              burgers_band=None, burgers_slab=None, burgers_spacing=None, threads=0):
+              burgers_band=None, burgers_slab=None, burgers_spacing=None, voxel=None, voxel_smooth=0.0,
+              voxel_select="acna:hcp", threads=0):
     """Per-atom structure of atoms, as ``shockfield analyze atoms`` computes it for one frame
     (docs/analysis-atoms.md), over one neighbour pass.
 
@@ -146,6 +147,9 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     ``burgers_clusters`` (around the line of each cluster), in the crystal of ``burgers_orient``
     (the crystal directions of x, y, z) with ``burgers_lattice`` (a, Å; default √2 × the median
     nearest-neighbour distance), ``burgers_band``, ``burgers_slab``, ``burgers_spacing``.
+    ``voxel`` (node spacing h, Å; ``--voxel``): the fraction of the ``voxel_select`` atoms
+    (default the hcp atoms of the adaptive CNA) on a grid by cloud-in-cell, Gaussian-smoothed by
+    ``voxel_smooth`` Å — the phase field's order parameter ξ (Xu et al. (2015) §4.4.3).
 
     Returns a dict of arrays named like the CLI's dump columns: ``coord`` (int32),
     ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other) with
@@ -163,7 +167,8 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     ``excess_reference_eV`` and ``excess_mean_eV``); ``burgers`` (structured array: burgers.csv's
     columns after frame and timestep, ``source``, ``b`` and ``kind`` as text), ``burgers_circuit``
     (int32 per atom: the circuit through it, 0 none) and ``burgers_skipped`` (automatic circuits
-    that could not close, with why).
+    that could not close, with why); ``voxels`` (dict: ``fraction`` and ``density`` shaped (nz,
+    ny, nx), ``origin``, ``spacing``, ``stretch``, ``empty_nodes``, ``selected``: voxels_<timestep>.vti).
     """
     lo, hi = box
     if domains_surface not in ("rolling", "packing"):
@@ -191,7 +196,9 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
         None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
         coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, bool(diamond),
         clusters, cluster_select, int(cluster_min_size), domains, domains_surface, int(domains_min_atoms),
-        profile_axis, profile_width, pe, excess_auto, excess_reference, excess_crystal, burgers, int(threads))
+        profile_axis, profile_width, pe, excess_auto, excess_reference, excess_crystal, burgers,
+        None if voxel is None else {"spacing": float(voxel), "smoothing": float(voxel_smooth), "select": str(voxel_select)},
+        int(threads))
     if "clusters" in r:
         r["clusters"] = _table(r["clusters"], _CLUSTER_INTEGERS)
     if "domains" in r:

@@ -35,6 +35,7 @@ def structure(positions: npt.NDArray[np.float64],
               burgers_orient: Sequence[Sequence[int]] = ((1, 0, 0), (0, 1, 0), (0, 0, 1)),
               burgers_lattice: Optional[float] = None, burgers_band: Optional[float] = None,
               burgers_slab: Optional[float] = None, burgers_spacing: Optional[float] = None,
+              voxel: Optional[float] = None, voxel_smooth: float = 0.0, voxel_select: str = "acna:hcp",
               threads: int = 0) -> dict[str, object]: ...
 def voids(positions: npt.NDArray[np.float64], box: tuple[Sequence[float], Sequence[float]], probe: float,
           boundary: str = "ppp", types: Optional[Sequence[int]] = None, ids: Optional[Sequence[int]] = None,

@@ -1,7 +1,8 @@
 // shockfield._core's atom analyses on numpy arrays (python/shockfield/analysis.py's `structure`
 // and `voids` wrap them): coordination, conventional and adaptive CNA, centro-symmetry, bond
 // pairs, diamond structure and defect clusters over one neighbour pass with the clusters' domain
-// surfaces, the structure profiles along an axis and the Burgers circuits, and the voids — the functions `shockfield analyze atoms` calls per frame
+// surfaces, the structure profiles along an axis, the voxel field and the Burgers circuits, and the
+// voids — the functions `shockfield analyze atoms` calls per frame
 // (analysis/atoms/structure_analysis.hpp, atom_surfaces.hpp). Positions are a C-contiguous (n, 3)
 // float64 array and the box its lo/hi corners with a LAMMPS boundary code; they are copied once
 // into the library's AtomFrame (a memcpy, with the GIL released, as is the analysis).
@@ -23,6 +24,7 @@
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/analysis/atoms/structure_profile.hpp"
+#include "shockfield/analysis/atoms/voxel_field.hpp"
 #include "shockfield/core/error.hpp"
 
 namespace py = pybind11;
@@ -209,11 +211,37 @@ struct ExcessOptions {
   bool on() const { return automatic || reference.has_value(); }
 };
 
+// How a Python caller turns on the analysis a selection reads (parse_cluster_selection's `enabled_by`).
+std::string python_option_of(const std::string& method) {
+  return method == "excess" ? std::string("excess_energy and pe")
+       : method == "bpa"    ? std::string("bond_pairs=CUTOFF")
+       : method == "csp"    ? std::string("csp=N")
+                            : method + "=CUTOFF";
+}
+
+// The voxel field (--voxel) as numpy arrays shaped (nz, ny, nx), x fastest as in voxels_<timestep>.vti.
+py::dict voxel_dict(const aa::VoxelField& v) {
+  const std::vector<py::ssize_t> shape{py::ssize_t(v.n[2]), py::ssize_t(v.n[1]), py::ssize_t(v.n[0])};
+  py::array_t<double> fraction(shape), density(shape);
+  std::copy(v.fraction.begin(), v.fraction.end(), fraction.mutable_data());
+  std::copy(v.density.begin(), v.density.end(), density.mutable_data());
+  py::dict out;
+  out["fraction"] = fraction;
+  out["density"] = density;
+  out["origin"] = py::make_tuple(v.origin[0], v.origin[1], v.origin[2]);
+  out["spacing"] = v.spacing;
+  out["stretch"] = py::make_tuple(v.stretch[0], v.stretch[1], v.stretch[2]);
+  out["empty_nodes"] = v.empty_nodes;
+  out["selected"] = v.selected;
+  return out;
+}
+
 py::dict structure(const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
                    const std::string& boundary, const py::object& types, const py::object& ids,
                    std::optional<double> coordination, std::optional<double> cna, bool adaptive_cna,
                    const py::object& csp, std::optional<double> bond_pairs, bool diamond,
-                   const ClusterOptions& c, const ExcessOptions& e, const py::object& burgers, int threads) {
+                   const ClusterOptions& c, const ExcessOptions& e, const py::object& burgers, const py::object& voxel,
+                   int threads) {
   const ThreadCount thread_count(threads);
   const aa::AtomFrame frame = make_frame(positions, lo, hi, boundary, types, ids);
   aa::StructureAnalyses analyses;
@@ -227,13 +255,8 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   if (c.cutoff.has_value() != c.select.has_value())
     throw InputError("clusters and cluster_select go together: the cutoff and which atoms to cluster");
   if (c.cutoff) {
-    analyses.select = aa::parse_cluster_selection(*c.select, analyses, e.on(), "cluster_select '" + *c.select + "'",
-                                                  [](const std::string& m) {
-                                                    return m == "excess" ? std::string("excess_energy and pe")
-                                                         : m == "bpa"    ? std::string("bond_pairs=CUTOFF")
-                                                         : m == "csp"    ? std::string("csp=N")
-                                                                         : m + "=CUTOFF";
-                                                  });
+    analyses.select =
+        aa::parse_cluster_selection(*c.select, analyses, e.on(), "cluster_select '" + *c.select + "'", python_option_of);
     analyses.clusters = aa::DefectClusters{*c.cutoff, c.min_size};
   }
   if (e.on()) {
@@ -246,6 +269,14 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
     analyses.excess_energy = [&e, crystal](const aa::StructureAnalysisResult& r) {
       return aa::excess_energy(*e.pe, r, crystal, e.reference ? &*e.reference : nullptr);
     };
+  }
+  std::optional<aa::VoxelOptions> voxel_options;
+  aa::ClusterSelection voxel_select;
+  if (!voxel.is_none()) {
+    const py::dict v = voxel.cast<py::dict>();
+    const auto spec = v["select"].cast<std::string>();
+    voxel_select = aa::parse_cluster_selection(spec, analyses, e.on(), "voxel_select '" + spec + "'", python_option_of);
+    voxel_options = aa::VoxelOptions{v["spacing"].cast<double>(), v["smoothing"].cast<double>()};
   }
   std::optional<aa::BurgersRequest> burgers_wanted;
   if (!burgers.is_none()) burgers_wanted = burgers_request(burgers.cast<py::dict>(), c.cutoff.has_value());
@@ -262,11 +293,13 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   std::optional<aa::DomainResult> domains;
   std::vector<std::pair<std::string, std::vector<aa::ProfileBin>>> profiles;
   std::optional<aa::FrameBurgers> circuits;
+  std::optional<aa::VoxelField> voxels;
   {
     py::gil_scoped_release release;
     validate_frame(frame, "positions");
     r = analyze_structure(frame, analyses);
     if (profile) profiles = profile->per_method(frame, r, r.excess_energy);
+    if (voxel_options) voxels = aa::voxel_fraction(frame, voxel_select(r), *voxel_options);
     if (burgers_wanted) circuits = aa::burgers_circuits(frame, r.clusters ? &*r.clusters : nullptr, *burgers_wanted);
     if (c.domains)
       domains = aa::domain_surfaces(frame, *r.clusters,
@@ -292,6 +325,7 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   if (domains) out["domains"] = domains_dict(*domains);
   if (profile) out["profile"] = profile_dict(profiles, e.on());
   if (!r.excess_energy.empty()) out["excess"] = to_numpy(r.excess_energy);
+  if (voxels) out["voxels"] = voxel_dict(*voxels);
   if (circuits) {
     out["burgers"] = burgers_dict(*circuits);
     std::vector<std::int32_t> on(circuits->on_circuit.begin(), circuits->on_circuit.end());
@@ -352,12 +386,12 @@ void bind_atoms(py::module_& m) {
          std::size_t cluster_min_size, std::optional<double> domains, const std::string& domains_surface,
          std::size_t domains_min_atoms, const std::string& profile_axis, double profile_width,
          std::optional<std::vector<double>> pe, bool excess_auto, std::optional<double> excess_reference,
-         const std::string& excess_crystal, const py::object& burgers, int threads) {
+         const std::string& excess_crystal, const py::object& burgers, const py::object& voxel, int threads) {
         return structure(positions, lo, hi, boundary, types, ids, coordination, cna, adaptive_cna, csp, bond_pairs,
                          diamond,
                          ClusterOptions{clusters, cluster_select, cluster_min_size, domains, domains_surface,
                                         domains_min_atoms, profile_axis, profile_width},
-                         ExcessOptions{std::move(pe), excess_auto, excess_reference, excess_crystal}, burgers,
+                         ExcessOptions{std::move(pe), excess_auto, excess_reference, excess_crystal}, burgers, voxel,
                          threads);
       },
       py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"), py::arg("types"), py::arg("ids"),
@@ -365,7 +399,7 @@ void bind_atoms(py::module_& m) {
       py::arg("diamond"), py::arg("clusters"), py::arg("cluster_select"), py::arg("cluster_min_size"),
       py::arg("domains"), py::arg("domains_surface"), py::arg("domains_min_atoms"), py::arg("profile_axis"),
       py::arg("profile_width"), py::arg("pe"), py::arg("excess_auto"), py::arg("excess_reference"),
-      py::arg("excess_crystal"), py::arg("burgers"), py::arg("threads"));
+      py::arg("excess_crystal"), py::arg("burgers"), py::arg("voxel"), py::arg("threads"));
   m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"),
         py::arg("types"), py::arg("ids"), py::arg("probe"), py::arg("atomic_volume"), py::arg("margin"),
         py::arg("min_volume"));

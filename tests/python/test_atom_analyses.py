@@ -6,7 +6,8 @@ Frames (written at full precision, so the CLI reads the same doubles):
   (tests/cli/analyze_voids.sh's void, smaller box); `--voids 2.17 --voids-margin 6`;
 - domains: an 8×8×8 fcc crystal with a bcc inclusion of radius 7 Å at the centre (the same
   atomic volume; tests/cli/analyze_domains.sh's construction); `--clusters 3 --cluster-select
-  acna:bcc --domains 3 --profile z:5`;
+  acna:bcc --domains 3 --profile z:5 --voxel 2 --voxel-smooth 1 --voxel-select acna:bcc` (the
+  voxel field equals voxels_0.vti's arrays exactly);
 - diamond: 3×3×3 cells of cubic diamond Si (a = 5.431 Å) with 0.25 Å Gaussian displacements, so
   that some atoms leave the cubic-diamond class (measured: 104 cubic, 89 first and 23 second
   neighbours, 22 clusters; 0.15 Å leaves all 216 cubic); `--diamond --clusters 2.6
@@ -37,7 +38,7 @@ import unittest
 import numpy as np
 
 import shockfield
-from shockfield import analysis
+from shockfield import _core, analysis
 from test_structure import fcc_cu, read_dump_columns, write_dump
 from test_surface import read_vtp
 
@@ -128,9 +129,10 @@ class AtomAnalyses(unittest.TestCase):
     def test_domains_and_clusters(self):
         x, box = inclusion_frame()
         out, cli = self.analyze(x, box, "inclusion", "--clusters", "3.0", "--cluster-select", "acna:bcc",
-                                "--domains", "3.0", "--profile", "z:5")
+                                "--domains", "3.0", "--profile", "z:5", "--voxel", "2.0", "--voxel-smooth", "1.0",
+                                "--voxel-select", "acna:bcc")
         results = [analysis.structure(x, box, clusters=3.0, cluster_select="acna:bcc", domains=3.0, profile=("z", 5.0),
-                                      threads=t) for t in (1, 2)]
+                                      voxel=2.0, voxel_smooth=1.0, voxel_select="acna:bcc", threads=t) for t in (1, 2)]
         r = results[1]
         np.testing.assert_array_equal(r["acna"], np.array(cli["acna"], dtype=int))
         np.testing.assert_array_equal(r["cluster"], np.array(cli["cluster"], dtype=int))
@@ -150,6 +152,12 @@ class AtomAnalyses(unittest.TestCase):
         self.assertGreater(bcc.max(), 0.02)
         self.assertEqual((bcc[0], bcc[-1]), (0.0, 0.0))
         self.assert_rows_printed_equal(r["profile"], read_csv(out / "profiles.csv"), 10, fraction_digits=6)
+        voxels = r["voxels"]
+        self.assertEqual(voxels["fraction"].shape, (14, 14, 14))  # round(8 a / 2 Å) nodes per periodic axis
+        self.assertGreater(voxels["fraction"].max(), 0.5)  # the inclusion's centre
+        for name in ("fraction", "density"):
+            np.testing.assert_array_equal(_core.read_field(str(out / "voxels_0.vti"), name)[0], voxels[name], name)
+        np.testing.assert_array_equal(results[0]["voxels"]["fraction"], voxels["fraction"])
 
     def test_diamond(self):
         x, box = diamond_frame()
@@ -246,6 +254,10 @@ class AtomAnalyses(unittest.TestCase):
                                burgers_orient=((1, 0, 0), (1, 1, 0), (0, 0, 1)))
         with self.assertRaisesRegex(shockfield.InputError, "radius must be > 0"):
             analysis.structure(x, box, adaptive_cna=True, burgers_lines=[((0, 0, 0), (0, 0, 1), 0.0)])
+        with self.assertRaisesRegex(shockfield.InputError, "voxel_select 'csp>1': selecting by csp needs csp=N"):
+            analysis.structure(x, box, adaptive_cna=True, voxel=2.0, voxel_select="csp>1")
+        with self.assertRaisesRegex(shockfield.InputError, "spacing"):
+            analysis.structure(x, box, adaptive_cna=True, voxel=-1.0)
         with self.assertRaisesRegex(ValueError, "domains_surface"):
             analysis.structure(x, box, adaptive_cna=True, domains=3.0, domains_surface="alpha")
 
