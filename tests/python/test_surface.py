@@ -10,6 +10,9 @@
   surface.vtp's points (printed in shortest round-trip form, so exact) and connectivity equal the
   Python result exactly; summary.txt's area, volume (12 digits), triangle count, Euler
   characteristic and manifold flag equal it.
+- The GIL is released: while another thread computes the surface of 6000 points (0.13 s alone),
+  this thread's Python loop runs at more than half its rate when nothing else runs (measured
+  0.75-0.86; a C call that holds the GIL, sorted() of 300 000 floats, gives 0.23).
 - Bad arrays raise TypeError / ValueError, bad options ValueError, a ball that falls through the
   points InputError with the command line's message.
 """
@@ -19,6 +22,8 @@ import pathlib
 import subprocess
 import sys
 import tempfile
+import threading
+import time
 import unittest
 
 import numpy as np
@@ -84,6 +89,22 @@ class Surface(unittest.TestCase):
                 self.assertEqual(len(s["triangles"]), int(summary["surface_triangles"]))
                 self.assertEqual(s["euler_characteristic"], int(summary["surface_euler_characteristic"]))
                 self.assertEqual("yes" if s["manifold"] else "no", summary["surface_manifold"])
+
+    def test_the_gil_is_released(self):
+        def loop_rate(start_work):  # iterations per second of a Python loop until the work is done
+            done = threading.Event()
+            start = time.perf_counter()
+            start_work(done)
+            count = 0
+            while not done.is_set():
+                count += 1
+            return count / (time.perf_counter() - start)
+
+        alone = loop_rate(lambda done: threading.Timer(0.1, done.set).start())
+        points = fibonacci_sphere(6000)
+        during = loop_rate(lambda done: threading.Thread(
+            target=lambda: (analysis.surface(points, 0.3), done.set())).start())
+        self.assertGreater(during, 0.5 * alone)
 
     def test_bad_input_raises(self):
         points = fibonacci_sphere(200)
