@@ -124,7 +124,7 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
               pe=None, excess_energy=None, excess_crystal="fcc", burgers_lines=(), burgers_ids=(),
               burgers_clusters=False, burgers_orient=((1, 0, 0), (0, 1, 0), (0, 0, 1)), burgers_lattice=None,
               burgers_band=None, burgers_slab=None, burgers_spacing=None, voxel=None, voxel_smooth=0.0,
-              voxel_select="acna:hcp", threads=0):
+              voxel_select="acna:hcp", tracker=None, timestep=0, threads=0):
     """Per-atom structure of atoms, as ``shockfield analyze atoms`` computes it for one frame
     (docs/analysis-atoms.md), over one neighbour pass.
 
@@ -150,6 +150,8 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     ``voxel`` (node spacing h, Å; ``--voxel``): the fraction of the ``voxel_select`` atoms
     (default the hcp atoms of the adaptive CNA) on a grid by cloud-in-cell, Gaussian-smoothed by
     ``voxel_smooth`` Å — the phase field's order parameter ξ (Xu et al. (2015) §4.4.3).
+    ``tracker`` (a ``ClusterTracker``, with ``clusters``): this frame's clusters continue its tracks
+    (``--track``); ``timestep`` is the frame's (for the tracks' time).
 
     Returns a dict of arrays named like the CLI's dump columns: ``coord`` (int32),
     ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other) with
@@ -168,7 +170,8 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     columns after frame and timestep, ``source``, ``b`` and ``kind`` as text), ``burgers_circuit``
     (int32 per atom: the circuit through it, 0 none) and ``burgers_skipped`` (automatic circuits
     that could not close, with why); ``voxels`` (dict: ``fraction`` and ``density`` shaped (nz,
-    ny, nx), ``origin``, ``spacing``, ``stretch``, ``empty_nodes``, ``selected``: voxels_<timestep>.vti).
+    ny, nx), ``origin``, ``spacing``, ``stretch``, ``empty_nodes``, ``selected``: voxels_<timestep>.vti);
+    with a tracker ``track`` (int32 per atom: its cluster's track, 0 none; the dump column).
     """
     lo, hi = box
     if domains_surface not in ("rolling", "packing"):
@@ -198,7 +201,7 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
         clusters, cluster_select, int(cluster_min_size), domains, domains_surface, int(domains_min_atoms),
         profile_axis, profile_width, pe, excess_auto, excess_reference, excess_crystal, burgers,
         None if voxel is None else {"spacing": float(voxel), "smoothing": float(voxel_smooth), "select": str(voxel_select)},
-        int(threads))
+        None if tracker is None else tracker._core, int(timestep), int(threads))
     if "clusters" in r:
         r["clusters"] = _table(r["clusters"], _CLUSTER_INTEGERS)
     if "domains" in r:
@@ -211,6 +214,33 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     if "profile" in r:
         r["profile"] = _table(r["profile"], ("bin", "atoms"))
     return r
+
+
+class ClusterTracker:
+    """Clusters followed through a series of frames (``shockfield analyze atoms --track``; Xu et al.
+    (2015) §4.4.2, Figs 71–72): pass it to ``structure(..., clusters=..., cluster_select=...,
+    tracker=tracker, timestep=t)`` frame by frame, in order. A cluster continues the track of the
+    previous frame's cluster it shares most atom ids with."""
+
+    def __init__(self):
+        self._core = _require_core().ClusterTracker()
+
+    @property
+    def frames(self):
+        """Frames added so far."""
+        return self._core.frames
+
+    def tracks(self, origin=0, dt=1.0):
+        """tracks.csv as a structured array: ``track, frame, timestep, time, cluster, size, x, y, z,
+        a, b, c, L, area, volume, atomic_volume``, time = (timestep − ``origin``) · ``dt``."""
+        return _table(self._core.tracks(int(origin), float(dt)), ("track", "frame", "timestep", "cluster", "size"))
+
+    def growth(self, origin=0, dt=1.0):
+        """growth.csv as a structured array: the power law y = C t^k of each quantity of each track
+        with 3 or more points at t > 0: ``track, exponent, exponent_stderr, prefactor, points,
+        quantity``."""
+        g = self._core.growth(int(origin), float(dt))
+        return _table({k: np.asarray(v) for k, v in g.items()}, ("track", "points"))
 
 
 def voids(positions, box, probe, boundary="ppp", types=None, ids=None, atomic_volume=None, margin=None,

@@ -21,6 +21,7 @@
 #include "shockfield/analysis/atoms/atom_surfaces.hpp"
 #include "shockfield/analysis/atoms/burgers_frame.hpp"
 #include "shockfield/analysis/atoms/cluster_selection.hpp"
+#include "shockfield/analysis/atoms/cluster_tracking.hpp"
 #include "shockfield/analysis/atoms/structure_analysis.hpp"
 #include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/analysis/atoms/structure_profile.hpp"
@@ -211,6 +212,30 @@ struct ExcessOptions {
   bool on() const { return automatic || reference.has_value(); }
 };
 
+// The clusters of a series of frames followed in time (--track): each structure() call given
+// the tracker adds its frame's clusters.
+struct Tracker {
+  aa::ClusterTracker tracker;
+  std::size_t frames = 0;
+
+  py::dict tracks(long long origin, double dt) const {
+    return columns_dict(aa::track_columns(), aa::track_rows(tracker.tracks(), origin, dt));
+  }
+  // growth.csv: the power laws of each track with 3 or more points at t > 0.
+  py::dict growth(long long origin, double dt) const {
+    std::vector<std::vector<double>> rows;
+    py::list quantity;
+    for (const aa::ClusterTrack& t : tracker.tracks())
+      for (const aa::PowerLawFit& f : aa::fit_growth(t, origin, dt)) {
+        rows.push_back({double(t.number), f.exponent, f.exponent_stderr, f.prefactor, double(f.points)});
+        quantity.append(f.quantity);
+      }
+    py::dict out = columns_dict({"track", "exponent", "exponent_stderr", "prefactor", "points"}, rows);
+    out["quantity"] = quantity;
+    return out;
+  }
+};
+
 // How a Python caller turns on the analysis a selection reads (parse_cluster_selection's `enabled_by`).
 std::string python_option_of(const std::string& method) {
   return method == "excess" ? std::string("excess_energy and pe")
@@ -241,9 +266,11 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
                    std::optional<double> coordination, std::optional<double> cna, bool adaptive_cna,
                    const py::object& csp, std::optional<double> bond_pairs, bool diamond,
                    const ClusterOptions& c, const ExcessOptions& e, const py::object& burgers, const py::object& voxel,
-                   int threads) {
+                   Tracker* tracker, long long timestep, int threads) {
   const ThreadCount thread_count(threads);
-  const aa::AtomFrame frame = make_frame(positions, lo, hi, boundary, types, ids);
+  aa::AtomFrame frame = make_frame(positions, lo, hi, boundary, types, ids);
+  frame.timestep = timestep;
+  if (tracker && !c.cutoff) throw InputError("tracker needs clusters and cluster_select (the clusters it follows)");
   aa::StructureAnalyses analyses;
   if (coordination) analyses.coordination = aa::Coordination{*coordination};
   if (cna) analyses.cna = aa::ConventionalCna{*cna};
@@ -326,6 +353,14 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
   if (profile) out["profile"] = profile_dict(profiles, e.on());
   if (!r.excess_energy.empty()) out["excess"] = to_numpy(r.excess_energy);
   if (voxels) out["voxels"] = voxel_dict(*voxels);
+  if (tracker) {
+    tracker->tracker.add(tracker->frames++, frame.timestep, frame.ids, *r.clusters);
+    std::vector<std::int32_t> track(frame.size(), 0);
+    for (std::size_t i = 0; i < frame.size(); ++i)
+      if (r.clusters->cluster_of[i] >= 0)
+        track[i] = tracker->tracker.last_tracks()[static_cast<std::size_t>(r.clusters->cluster_of[i])];
+    out["track"] = to_numpy(track);
+  }
   if (circuits) {
     out["burgers"] = burgers_dict(*circuits);
     std::vector<std::int32_t> on(circuits->on_circuit.begin(), circuits->on_circuit.end());
@@ -386,20 +421,27 @@ void bind_atoms(py::module_& m) {
          std::size_t cluster_min_size, std::optional<double> domains, const std::string& domains_surface,
          std::size_t domains_min_atoms, const std::string& profile_axis, double profile_width,
          std::optional<std::vector<double>> pe, bool excess_auto, std::optional<double> excess_reference,
-         const std::string& excess_crystal, const py::object& burgers, const py::object& voxel, int threads) {
+         const std::string& excess_crystal, const py::object& burgers, const py::object& voxel, Tracker* tracker,
+         long long timestep, int threads) {
         return structure(positions, lo, hi, boundary, types, ids, coordination, cna, adaptive_cna, csp, bond_pairs,
                          diamond,
                          ClusterOptions{clusters, cluster_select, cluster_min_size, domains, domains_surface,
                                         domains_min_atoms, profile_axis, profile_width},
                          ExcessOptions{std::move(pe), excess_auto, excess_reference, excess_crystal}, burgers, voxel,
-                         threads);
+                         tracker, timestep, threads);
       },
       py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"), py::arg("types"), py::arg("ids"),
       py::arg("coordination"), py::arg("cna"), py::arg("adaptive_cna"), py::arg("csp"), py::arg("bond_pairs"),
       py::arg("diamond"), py::arg("clusters"), py::arg("cluster_select"), py::arg("cluster_min_size"),
       py::arg("domains"), py::arg("domains_surface"), py::arg("domains_min_atoms"), py::arg("profile_axis"),
       py::arg("profile_width"), py::arg("pe"), py::arg("excess_auto"), py::arg("excess_reference"),
-      py::arg("excess_crystal"), py::arg("burgers"), py::arg("voxel"), py::arg("threads"));
+      py::arg("excess_crystal"), py::arg("burgers"), py::arg("voxel"), py::arg("tracker").none(true),
+      py::arg("timestep"), py::arg("threads"));
+  py::class_<Tracker>(m, "ClusterTracker", "Clusters followed through frames; use shockfield.analysis.ClusterTracker")
+      .def(py::init<>())
+      .def_readonly("frames", &Tracker::frames)
+      .def("tracks", &Tracker::tracks, py::arg("origin"), py::arg("dt"))
+      .def("growth", &Tracker::growth, py::arg("origin"), py::arg("dt"));
   m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"),
         py::arg("types"), py::arg("ids"), py::arg("probe"), py::arg("atomic_volume"), py::arg("margin"),
         py::arg("min_volume"));

@@ -18,7 +18,10 @@ Frames (written at full precision, so the CLI reads the same doubles):
 - Burgers circuits: the unrelaxed Volterra edge dislocation a/2[1-10] of
   examples/md_dislocation_burgers (cylinder radius 22 Å, box ff ff pp) with a circuit about the
   line (b = [1 -1 0]/2, perfect) and one in good crystal (0); burgers.csv's rows as printed.
-Every per-atom column (acna, dia, cluster, excess, burgers_circuit) equals the CLI's dump column exactly, the counts and
+- tracks: the bcc inclusion of radius 5.5, 6.5, 7.5 Å at timesteps 1000-3000 through a
+  ClusterTracker and through `--track --timestep-size 0.001`: tracks.csv, growth.csv and the
+  track column equal.
+Every per-atom column (acna, dia, cluster, excess, burgers_circuit, track) equals the CLI's dump column exactly, the counts and
 fractions equal structures.csv as printed, and every row of voids.csv, domains.csv, clusters.csv and
 profiles.csv equals the Python row
 printed as the CLI prints it ({:.10g}); the surfaces' triangles equal the .vtp's (after the same
@@ -220,6 +223,37 @@ class AtomAnalyses(unittest.TestCase):
         self.assert_rows_printed_equal(numeric, rows, 10)
         self.assertEqual([f"{v:.4g}" for v in b["max_step_error"]], [row["max_step_error"] for row in rows])
         np.testing.assert_array_equal(r["burgers_circuit"], np.array(cli["burgers_circuit"], dtype=int))
+
+    def test_tracks(self):
+        # The bcc inclusion growing, radius 5.5, 6.5, 7.5 Å at timesteps 1000, 2000, 3000: one track,
+        # the domain's growth laws from three points.
+        tracker, files, cli_tracks = analysis.ClusterTracker(), [], []
+        for k, radius in enumerate((5.5, 6.5, 7.5)):
+            x, box = inclusion_frame(radius=radius)
+            files.append(self.dir / f"grow{k}.lammpstrj")
+            write_dump(files[-1], x, box, timestep=1000 * (k + 1))
+            r = analysis.structure(x, box, clusters=3.0, cluster_select="acna:bcc", tracker=tracker,
+                                   timestep=1000 * (k + 1), threads=2)
+            cli_tracks.append(r["track"])
+        out = self.dir / "grow"
+        process = subprocess.run([SF, "analyze", "atoms", *map(str, files), "--no-plot", "-o", str(out), "--clusters",
+                                  "3.0", "--cluster-select", "acna:bcc", "--track", "--timestep-size", "0.001"],
+                                 capture_output=True, text=True)
+        self.assertEqual(process.returncode, 0, process.stderr)
+        for k, track in enumerate(cli_tracks):
+            np.testing.assert_array_equal(track, np.array(read_dump_columns(out / f"grow{k}.lammpstrj")["track"], dtype=int))
+        tracks, growth = tracker.tracks(dt=0.001), tracker.growth(dt=0.001)
+        self.assertEqual(tracker.frames, 3)
+        self.assertEqual(list(tracks["track"][tracks["cluster"] == 1]), [1, 1, 1])  # the domain keeps its track
+        self.assert_rows_printed_equal(tracks, read_csv(out / "tracks.csv"), 10)
+        rows = read_csv(out / "growth.csv")
+        self.assertEqual(list(growth["quantity"]), [row["quantity"] for row in rows])
+        for mine, theirs in zip(growth, rows):
+            for column, digits in (("exponent", 6), ("exponent_stderr", 3), ("prefactor", 6)):
+                self.assertEqual(f"{mine[column]:.{digits}g}", theirs[column], column)
+        self.assertGreater(growth["exponent"][list(growth["quantity"]).index("V")], 1.0)  # grows: V ~ t^1.58 here
+        with self.assertRaisesRegex(shockfield.InputError, "tracker needs clusters"):
+            analysis.structure(x, box, adaptive_cna=True, tracker=tracker)
 
     def test_bad_input_raises(self):
         x, box = void_frame(n=3, radius=2.0)
