@@ -176,17 +176,8 @@ void RunDriver::step() {
     tally_.steps = step - first_step_;
     if (m.checkpoint_every() > 0 && step % m.checkpoint_every() == 0) save();
     progress_->update(step, m.fraction_done());
-    if (stop_requested() || (options_.stop_after > 0 && step - first_step_ == options_.stop_after)) {
-      progress_->finish(step);
-      const std::string wrote = m.write_stop_state();
-      save();
-      run_->log.info("stopped at step {}{}: checkpoint written to {}{}", step, m.position(),
-                     run_->checkpoint.string(), wrote.empty() ? "" : ", " + wrote);
-      const std::string message = fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
-                                              step, options_.case_file.string(), run_->folder.string());
-      write_summary("stopped", message);
-      throw StopRequested(message);
-    }
+    if (stop_requested() || (options_.stop_after > 0 && step - first_step_ == options_.stop_after))
+      throw StopRequested(stop());
   } catch (const RunError& e) {
     // Reporting the failure writes too (log.txt, the failure state, summary.json); on a full disk
     // that fails as well, and must not hide the error that stopped the run.
@@ -201,6 +192,20 @@ void RunDriver::step() {
     }
     throw;
   }
+}
+
+std::string RunDriver::stop() {
+  Method& m = *method_;
+  const std::int64_t step = m.step();
+  progress_->finish(step);
+  const std::string wrote = m.write_stop_state();
+  save();
+  run_->log.info("stopped at step {}{}: checkpoint written to {}{}", step, m.position(), run_->checkpoint.string(),
+                 wrote.empty() ? "" : ", " + wrote);
+  const std::string message = fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
+                                          step, options_.case_file.string(), run_->folder.string());
+  write_summary("stopped", message);
+  return message;
 }
 
 void RunDriver::finish() {
