@@ -142,13 +142,14 @@ PdCase read_pd_case(const Config& root) {
   c.solver = read_solver(root.table("solver"));
   const std::vector<Config> regions = root.tables("region");
   const bool bond_model = std::holds_alternative<PmbSpec>(c.material) || std::holds_alternative<LpsSpec>(c.material);
+  const BodyPoints points{c.body.counts, c.body.spacing};
   for (const Config& t : regions) {
-    c.regions.push_back(read_load_region(t, c.body.dim, c.body.counts, c.body.spacing));
+    c.regions.push_back(read_load_region(t, c.body.dim, points));
     if (c.regions.back().separate && !bond_model)
       t.fail("separate", "a separate body touches the rest only through the short-range contact force, which "
                          "model = \"pmb\" and \"lps\" have (expected one of them, or no separate body)");
   }
-  check_bodies_apart(regions, c.regions, c.body.counts, c.body.spacing);
+  check_bodies_apart(regions, c.regions, points);
   if (const auto loading = root.optional_table("loading")) {
     loading->get_choice_or("type", {"impact"}, "impact");
     c.impact_speed = loading->get_double("speed", Range::positive());

@@ -326,14 +326,8 @@ class PdMethod final : public Method {
     if (!c_.cracks.empty())
       log_->info("pre-cracks: {} crack(s) cut {} bonds ({})", c_.cracks.size(), cracked_.cut_count / 2,
                  cracked_.cut.empty() ? "left out of the correspondence family" : "broken from step 0");
-    for (std::size_t k = 0; k < c_.regions.size(); ++k) {
-      const LoadRegion& r = c_.regions[k];
-      const std::string velocity = !r.sets_velocity ? "keeping its velocity"
-          : fmt::format("{} ({}, {}, {}) m/s", r.prescribed ? "held at" : "starting at", r.velocity[0], r.velocity[1],
-                        r.velocity[2]);
-      log_->info("region {}: {} points {}{}", k, points_in(r.shape, cloud_).size(), velocity,
-                 r.separate ? ", a separate body" : "");
-    }
+    for (std::size_t k = 0; k < c_.regions.size(); ++k)
+      log_->info("region {}: {}", k, describe(c_.regions[k], points_in(c_.regions[k].shape, cloud_).size()));
     output_.emplace(run.folder, c_.body.dim, model_.fields, c_.output, total_steps(), resume);
     if (!finished())
       log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
