@@ -10,7 +10,9 @@
 # wrong size, no loading at all, overlapping bodies, a separate body without contact). A bar with a
 # ramped prescribed displacement and a velocity formula runs as prescribed, resumes bitwise, and
 # runs bitwise the same with the formula's values from a velocity file; bad formulas, files,
-# displacements and ramps are refused before the run.
+# displacements and ramps are refused before the run. The bar and the plate as point clouds from
+# files (points_file) run bitwise as their lattices; bad clouds (coinciding or isolated points,
+# counts beside points_file, a bad line) and regions selecting no point of a cloud are refused.
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -184,4 +186,45 @@ head -n 50 "$WORK/bar_velocity.csv" > "$WORK/short.csv"
 expect_error "${bar_text/"$formula"/velocity_file = \"$WORK/short.csv\"}" "region[1].velocity_file" \
   "49 velocity rows for the 100 points"
 echo "ok: bad formulas, velocity files, displacements and ramps refused"
+
+# Point clouds from files: the bar's and the plate's lattice points (x = ΔX·i, volume ΔX^dim as
+# lattice_cloud makes them; Python's float arithmetic and pow are the same IEEE operations) give
+# the lattice runs bitwise, pre-crack, held edge and separate disc included.
+/usr/bin/python3 -c "
+for i in range(400):
+    print(f'{50e-6 * i!r} 0 0 {pow(50e-6, 1)!r}')" > "$WORK/bar_cloud.txt"
+/usr/bin/python3 -c "
+print('# the 40 x 20 lattice of pd_plate_loading.toml, x fastest')
+for j in range(20):
+    for i in range(40):
+        print(f'{1e-3 * i!r} {1e-3 * j!r} 0 {pow(1e-3, 2)!r}')" > "$WORK/plate_cloud.txt"
+echo "${bar_text/"counts = [400]"/points_file = \"$WORK/bar_cloud.txt\"}" > "$WORK/bar_cloud.toml"
+"$SF" run "$WORK/bar_cloud.toml" --output "$WORK/bar_cloud" -q > /dev/null
+same_files "$WORK/bar" "$WORK/bar_cloud" $bar_files
+echo "${plate/"counts = [40, 20]"/points_file = \"$WORK/plate_cloud.txt\"}" > "$WORK/plate_cloud.toml"
+"$SF" run "$WORK/plate_cloud.toml" --output "$WORK/plate_cloud" -q > /dev/null
+same_files "$WORK/plate" "$WORK/plate_cloud" series.csv profiles/profile_0.csv
+grep -q "pre-cracks: 1 crack(s) cut 169 bonds (broken from step 0)" "$WORK/plate_cloud/log.txt" ||
+  fail "the cloud plate's pre-crack differs: $(grep pre-cracks "$WORK/plate_cloud/log.txt")"
+echo "ok: bar and plate from points_file run bitwise as their lattices"
+cloud_bar=$(cat "$WORK/bar_cloud.toml")
+expect_error "${cloud_bar/dim = 1/dim = 1
+counts = [400]}" "body.counts" "not both"
+{ cat "$WORK/bar_cloud.txt"; echo "5e-05 0 0 5e-05"; } > "$WORK/twice.txt"
+expect_error "${cloud_bar/bar_cloud.txt/twice.txt}" "body.points_file" "points 1 and 400" "overlap"
+{ cat "$WORK/bar_cloud.txt"; echo "0.05 0 0 5e-05"; } > "$WORK/isolated.txt"
+expect_error "${cloud_bar/bar_cloud.txt/isolated.txt}" "body.horizon_factor" "point 400" "no neighbour within the horizon"
+expect_error "${cloud_bar/horizon_factor = 3.015/horizon_factor = 0.5}" "body.horizon_factor" "smaller than the spacing"
+sed '3s/.*/0.0001 0 0/' "$WORK/bar_cloud.txt" > "$WORK/short_line.txt"
+expect_error "${cloud_bar/bar_cloud.txt/short_line.txt}" "body.points_file" "short_line.txt:3" "expected 'x y z volume'"
+expect_error "${cloud_bar/bar_cloud.txt/no_such_cloud.txt}" "body.points_file" "no_such_cloud.txt"
+expect_error "${cloud_bar/xlo = 15e-3/xlo = 25e-3}" "region[1].shape" "selects no point of the body (400 points within"
+plate_cloud=$(cat "$WORK/plate_cloud.toml")
+expect_error "$plate_cloud
+[[region]]
+shape = \"block\"
+xlo = 30e-3
+ylo = 12e-3
+separate = true" "region[2].separate" "overlaps the separate body of region[1]"
+echo "ok: bad point clouds refused"
 echo "pd_loading: all cases passed"

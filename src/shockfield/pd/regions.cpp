@@ -53,6 +53,11 @@ std::vector<Expression> read_formula(const Config& t, int dim, const std::vector
 }  // namespace
 
 std::string BodyPoints::extent() const {
+  if (cloud) {
+    const auto [lo, hi] = cloud->bounds();
+    return fmt::format("{} points within ({}, {}, {}) to ({}, {}, {}) m", cloud->size(), lo[0], lo[1], lo[2], hi[0],
+                       hi[1], hi[2]);
+  }
   return fmt::format("points from (0, 0, 0) to ({}, {}, {}) m", (counts[0] - 1) * spacing,
                      (counts[1] - 1) * spacing, (counts[2] - 1) * spacing);
 }

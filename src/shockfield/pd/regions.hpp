@@ -74,15 +74,21 @@ struct LoadRegion {
   }
 };
 
-/// The reference points of the body as a case reader sees them before it is built: the lattice
-/// of `counts` points `spacing` apart from the origin (numbered x fastest, as lattice_cloud does),
-/// walked in place.
+/// The reference points of the body as a case reader sees them before it is built: the points
+/// of a cloud read from a file, or else the lattice of `counts` points `spacing` apart from the
+/// origin (numbered x fastest, as lattice_cloud does), walked in place.
 struct BodyPoints {
   std::array<int, 3> counts{1, 1, 1};
   double spacing = 0.0;
+  const PointCloud* cloud = nullptr;
   /// The first point (in point order) that `selects` accepts, if any.
   template <class Selects>
   std::optional<Vec3> first(Selects selects) const {
+    if (cloud) {
+      for (const Vec3& x : cloud->x)
+        if (selects(x)) return x;
+      return std::nullopt;
+    }
     for (int k = 0; k < counts[2]; ++k)
       for (int j = 0; j < counts[1]; ++j)
         for (int i = 0; i < counts[0]; ++i)

@@ -179,7 +179,9 @@ CrackedFamily cracked_family(const PdCase& c, const PointCloud& cloud, const Bod
 // computes its own on the whole body before its folder exists).
 constexpr double kCheckBonds = 5e6;
 
+// A body from a points_file is checked whole (its file has been read anyway).
 BodySpec checked_body(const BodySpec& body) {
+  if (body.cloud) return body;
   const int m = static_cast<int>(std::ceil(body.horizon_factor));
   BodySpec sub = body;
   for (int most = 4 * m + 1; most >= 2; --most) {
@@ -211,7 +213,7 @@ class PdMethod final : public Method {
   /// sizes of the whole body are counted, not built.
   PdMethod(const Config& root, const PdCase& c, bool check)
       : c_(c), built_(check ? checked_body(c_.body) : c_.body),
-        cloud_(lattice_cloud(built_.dim, built_.counts, built_.spacing)),
+        cloud_(built_.cloud ? *built_.cloud : lattice_cloud(built_.dim, built_.counts, built_.spacing)),
         cracked_(cracked_family(c_, cloud_, built_)),
         model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, cracked_.family, cracked_.cut); },
                           c_.material)),
