@@ -143,7 +143,13 @@ awk -F, 'NR > 1 && ($1 == 0.0175 && $5 != 2.5 || $1 == 0.01 && $5 != 0) { bad = 
 awk -F, 'NR > 1 && $1 <= 0.000125 { if ($4 != 1e-06 || $5 != 0) bad = bad " " $1 ": " $4 " " $5; n++ }
          END { if (bad != "" || n != 3) { print n " points:" bad; exit 1 } }' "$WORK/bar/profiles/profile_4.csv" ||
   fail "the displaced end is not at 1 µm at rest after the ramp"
-echo "ok: ramped displacement and velocity formula applied"
+grep -q "region 2: 3 points with the body force (-1000000000000, 0, 0) N/m³" "$WORK/bar/log.txt" ||
+  fail "the body force is not reported: $(grep region "$WORK/bar/log.txt")"
+# The body force turns the last point back: vx at t = 0.4 µs is −0.28 m/s, +2.71 without it (its
+# impulse is checked in tests/unit/pd/test_regions.cpp).
+awk -F, 'NR > 1 && $1 == 0.01995 { exit !($5 < 0) }' "$WORK/bar/profiles/profile_4.csv" ||
+  fail "the pushed end was not slowed by the body force"
+echo "ok: ramped displacement, velocity formula and body force applied"
 # (Stopped mid-ramp and resumed bitwise: cli.stop_resume.pd_loading.)
 bar_files="series.csv profiles/index.csv $(cd "$WORK/bar" && ls profiles/profile_*.csv profiles/points_*.vtp)"
 # The formula's values at the lattice points (x = 50 µm · i, as lattice_cloud places them; the
@@ -172,6 +178,7 @@ ramp_time = 1e-7}" "region[1].ramp_time" "only a prescribed_displacement"
 expect_error "${bar_text/"$formula"/$formula
 velocity = [1.0]}" "region[1]" "exactly one of velocity, velocity_formula"
 expect_error "${bar_text/ramp_time = 2e-7/ramp_time = -1e-7}" "region[0].ramp_time"
+expect_error "${bar_text/"body_force = [-1e12]"/body_force = [-1e12, 0.0]}" "region[2].body_force" "1 number"
 expect_error "${bar_text/"prescribed_displacement = [1e-6]"/prescribed_displacement = [1e-6, 0.0]}" \
   "region[0].prescribed_displacement" "1 number"
 expect_error "${bar_text/"$formula"/velocity_file = \"missing.csv\"}" "region[1].velocity_file" "missing.csv"

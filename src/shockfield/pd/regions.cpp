@@ -68,11 +68,12 @@ LoadRegion read_load_region(const Config& t, int dim, const BodyPoints& body) {
   std::vector<const char*> given;
   for (const auto& [key, loading] : kLoadingKeys)
     if (t.has(key)) given.push_back(key), r.loading = loading;
-  if (given.size() > 1 || (given.empty() && !r.separate))
+  if (given.size() > 1 || (given.empty() && !r.separate && !t.has("body_force")))
     t.fail(
         given.empty() ? "shape" : given[1],
         "expected exactly one of velocity, velocity_formula, velocity_file (initial velocities), "
         "prescribed_velocity or prescribed_displacement (held for all time)");
+  if (t.has("body_force")) r.body_force = read_vector(t, "body_force", dim);
   if (!body.first([&](const Vec3& x) { return r.shape.match(x); }))
     t.fail("shape", fmt::format("the region selects no point of the body ({})", body.extent()));
   // The selected points themselves only where the velocities depend on them (a huge body is
@@ -160,6 +161,17 @@ void apply_regions(Simulation& sim, const std::vector<LoadRegion>& regions, bool
           v[static_cast<int>(d)] = r.formula[d](cloud.x[points[k]]);
     }
   }
+  std::vector<Vec3> force_sum(cloud.size(), Vec3::Zero());
+  for (const LoadRegion& r : regions)
+    if (r.body_force != Vec3::Zero())
+      for (std::size_t i : points_in(r.shape, cloud)) force_sum[i] += r.body_force;
+  std::vector<std::pair<std::size_t, Vec3>> pushed;
+  for (std::size_t i = 0; i < force_sum.size(); ++i)
+    if (force_sum[i] != Vec3::Zero()) pushed.emplace_back(i, force_sum[i]);
+  if (!pushed.empty())  // ρü = L + b (eq. 1), before held points drop their force
+    sim.add_hook(Simulation::Stage::after_force, [pushed = std::move(pushed)](Simulation& s) {
+      for (const auto& [i, b] : pushed) s.force_density()[i] += b;
+    });
   std::vector<std::pair<std::size_t, const LoadRegion*>> held, displaced;
   for (std::size_t i = 0; i < holder.size(); ++i) {
     if (!holder[i]) continue;
@@ -189,7 +201,7 @@ std::string describe(const LoadRegion& r, std::size_t count) {
   std::string what;
   switch (r.loading) {
     case Loading::none:
-      what = "keeping its velocity";
+      what = r.separate || r.body_force == Vec3::Zero() ? "keeping its velocity" : "";
       break;
     case Loading::velocity:
       what = fmt::format("starting at {} m/s", vector(r.velocity));
@@ -212,6 +224,8 @@ std::string describe(const LoadRegion& r, std::size_t count) {
                                : fmt::format("held displaced by {} m", vector(r.displacement));
       break;
   }
+  if (r.body_force != Vec3::Zero())
+    what += fmt::format("{}with the body force {} N/m³", what.empty() ? "" : ", ", vector(r.body_force));
   return fmt::format("{} points {}{}", count, what, r.separate ? ", a separate body" : "");
 }
 

@@ -15,6 +15,11 @@
 // on a held point is the reaction of the boundary, which the total momentum of the body then
 // follows (dP/dt = −Σ_held V_i L_i).
 //
+// A `body_force` b [N/m³] is added to the force density of the region's points after every
+// force evaluation, ρü = L + b (Liu et al. 2025, eq. 1), before held points drop theirs: a
+// traction σ on an edge as b = σ/ΔX on its outer layer of points (the crack-branching plates of
+// Ha & Bobaru 2010 and Bobaru & Zhang 2015 are loaded so).
+//
 // A `separate` region is a body of its own (an impactor, a projectile): the bonds between its
 // points and the points outside it are left out of every family, so it touches the rest only
 // through the short-range contact force of the bond models (contact.hpp). Separate regions must not
@@ -59,6 +64,7 @@ struct LoadRegion {
   double ramp_time = 0.0;            ///< [s] T of u(t) = U·min(t/T, 1); 0: U from t = 0
   std::vector<Expression> formula;   ///< velocity_formula: one per dimension of the body
   std::vector<Vec3> point_velocity;  ///< velocity_file: one per selected point, in point order
+  Vec3 body_force = Vec3::Zero();    ///< [N/m³] b added to the points' force density (any loading)
 
   bool held() const {
     return loading == Loading::prescribed_velocity || loading == Loading::prescribed_displacement;
@@ -101,7 +107,8 @@ struct BodyPoints {
 
 /// Reads one [[region]] table: the shape keys of geometry::region_from_config, `separate`, and
 /// exactly one of `velocity`, `velocity_formula`, `velocity_file`, `prescribed_velocity` or
-/// `prescribed_displacement` (with `ramp_time`); none for a separate body keeping its velocity.
+/// `prescribed_displacement` (with `ramp_time`); none for a separate body keeping its velocity or a
+/// region with a `body_force`.
 /// Refused with its `shape` key when it selects no point of the body; a formula that does not
 /// compile or is not finite at a selected point, and a file that does not give the selected
 /// points in order, with their keys.
@@ -120,8 +127,8 @@ std::vector<unsigned char> bonds_between_bodies(const PointCloud& cloud, const F
 std::vector<std::size_t> points_in(const geometry::Region& region, const PointCloud& cloud);
 
 /// Gives the regions' points their initial velocities (tables in order, a later one winning; a
-/// held point wins over an initial velocity) when `initial`, and holds the prescribed points from
-/// now on (hooks of the simulation; call before its first step or setup, and again on resume with
+/// held point wins over an initial velocity) when `initial`, and from now on adds the body forces
+/// (summed where regions overlap) and holds the prescribed points (hooks of the simulation; call before its first step or setup, and again on resume with
 /// `initial` false).
 void apply_regions(Simulation& sim, const std::vector<LoadRegion>& regions, bool initial);
 
