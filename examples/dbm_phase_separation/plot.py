@@ -28,7 +28,7 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent.parent / "python"))
-from shockfield_plot.vtk_arrays import read_vtk_arrays  # noqa: E402
+from shockfield.vtk_arrays import read_vtk_arrays  # noqa: E402
 
 PAPER = {"a": 0.066, "b": 1.51e3, "c": -0.073, "d": 3.30e-3, "e": 0.00764, "f": 1.51e2, "g": 8.06e2, "h": 1.02e3}
 

@@ -28,5 +28,5 @@ run_one() {  # radius_um yield_MPa
 for r in 3.5 4.4 5.3 6.2 7.1 8; do run_one "$r" 120; done  # radius series at σ_Y0 = 120 MPa
 for y in 40 240 360; do run_one 6.2 "$y"; done             # yield series at r = 6.2 µm (and 120 MPa)
 
-/usr/bin/python3 python/shockfield_plot/mpm_study.py collapsibility "$runs"/r*um_Y*MPa \
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.mpm_study collapsibility "$runs"/r*um_Y*MPa \
     --late 18e-9 --at 10e-9 --out "$here/collapsibility.png" --csv "$here/collapsibility.csv"

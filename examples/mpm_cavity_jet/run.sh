@@ -8,4 +8,4 @@ rm -rf "$runs/jet1500" "$runs/jet200"
 sed "s/speed = 1500.0/speed = 200.0/; s/end_time = 8e-9/end_time = 20e-9/" "$here/case.toml" > "$runs/jet200.toml"
 grep -q "speed = 200.0" "$runs/jet200.toml"
 "$bin" run "$runs/jet200.toml" -o "$runs/jet200" -j2 | tail -1
-/usr/bin/python3 python/shockfield_plot/mpm_plots.py cavity "$runs/jet1500" "$runs/jet200" --out "$here/cavity.png"
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.mpm_plots cavity "$runs/jet1500" "$runs/jet200" --out "$here/cavity.png"

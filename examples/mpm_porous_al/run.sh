@@ -5,4 +5,4 @@ set -eu
 . "$(dirname "$0")/../run_common.sh"
 rm -rf "$runs/run"
 "$bin" run "$here/case.toml" -o "$runs/run" -j2 | tail -1
-/usr/bin/python3 python/shockfield_plot/mpm_plots.py porous "$runs/run" --out "$here/porous.png"
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.mpm_plots porous "$runs/run" --out "$here/porous.png"

@@ -8,12 +8,11 @@ Plateau: the median of u_fs over the 60 ns after it first exceeds 90 % of its la
 pull-back Δu_fs: from the plateau to the first minimum after u_fs falls 15 % below it (the plateau
 rings by ±7 %); spall strength from the acoustic approximation σ = ½·ρ0·c0·Δu_fs (Antoun et al.,
 Spall Fracture, 2003, §2.2). The damaged zone and the density along y come from the last particle frame.
-Uses numpy and matplotlib from Debian (/usr/bin/python3) and the readers of mpm_plots.py.
+Uses numpy and matplotlib from Debian (/usr/bin/python3) and the run-folder reader shockfield.run.Run.
 """
 import argparse
 import csv
 import os
-import re
 import sys
 
 import matplotlib
@@ -22,8 +21,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python", "shockfield_plot"))
-import mpm_plots  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402
 
 RHO0, C0 = 2700.0, 5350.0  # aluminium_seed000
 
@@ -40,9 +39,8 @@ def pullback(t, u):
 
 
 def last_frame(run):
-    text = open(os.path.join(run, "particles.pvd")).read()
-    t, name = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', text)[-1]
-    return float(t), mpm_plots.read_vtp(os.path.join(run, name))
+    frame = Run.open(run).last_frame(kind="particles")
+    return frame.time, frame.data
 
 
 def main():
@@ -56,7 +54,7 @@ def main():
     fig, axes = plt.subplots(1, 3, figsize=(13, 4.6), gridspec_kw={"width_ratios": [2.2, 0.7, 1.4]})
     rows = []
     for run, style in ((a.spall, "-"), (a.no_spall, "--")):
-        s = mpm_plots.read_series(run)
+        s = Run.open(run).series
         t, u = s["time_s"], s["top_h10um_uy_mean"]
         plateau, low, t_low = pullback(t, u)
         sigma = 0.5 * RHO0 * C0 * (plateau - low)

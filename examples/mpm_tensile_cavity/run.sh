@@ -18,6 +18,6 @@ for v in 100 400; do
     "$bin" run "$runs/v$v.toml" -o "$runs/v$v" -j1 | tail -1
 done
 
-/usr/bin/python3 python/shockfield_plot/mpm_plots.py cavity "$runs/v100" "$runs/v400" --out "$here/cavity.png"
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.mpm_plots cavity "$runs/v100" "$runs/v400" --out "$here/cavity.png"
 /usr/bin/python3 "$here/tension.py" "$runs/v100" "$runs/v400" --times 4e-9 8e-9 --out "$here/pressure.png" \
     --csv "$here/cavity_area.csv"

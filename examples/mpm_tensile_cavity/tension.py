@@ -14,12 +14,11 @@ For every particle frame (particles.pvd) of every run:
   - highest tension: the lowest particle pressure (−tr σ/3) and where it sits relative to the
     cavity (the 0.5 % most negative particles: their mean |x − x_c| and mean y − y_c).
 The picture has one row per run: particle pressure at --times, and the cavity area against time.
-Uses numpy, scipy and matplotlib from Debian (/usr/bin/python3) and the reader of mpm_plots.py.
+Uses numpy, scipy and matplotlib from Debian (/usr/bin/python3) and the run-folder reader shockfield.run.Run.
 """
 import argparse
 import csv
 import os
-import re
 import sys
 
 import matplotlib
@@ -29,15 +28,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy import ndimage  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python", "shockfield_plot"))
-import mpm_plots  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402
 
 RHO0, SPACING, WIDTH, CELL = 2700.0, 0.25e-6, 40e-6, 0.0625e-6
 
 
-def frames(run):
-    text = open(os.path.join(run, "particles.pvd")).read()
-    return [(float(t), os.path.join(run, n)) for t, n in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', text)]
 
 
 def cavity_area(f, centre):
@@ -74,11 +70,11 @@ def cavity_area(f, centre):
 
 
 def analyse(run):
-    s = mpm_plots.read_series(run)
+    s = Run.open(run).series
     centre = np.array([WIDTH / 2, 20e-6])
     rows = []
-    for t, path in frames(run):
-        f = mpm_plots.read_vtp(path)
+    for frame in Run.open(run).frames(kind="particles"):
+        t, f = frame.time, frame.data
         area, centre = cavity_area(f, centre)
         k = np.argmin(np.abs(s["time_s"] - t))
         pr = f["pressure"]

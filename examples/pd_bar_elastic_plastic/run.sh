@@ -7,6 +7,6 @@ for c in bar_30 bar_30_plain bar_300; do
   rm -rf "$runs/$c"
   "$bin" run "$here/$c.toml" -o "$runs/$c" -j1 | tail -1
 done
-/usr/bin/python3 python/shockfield_plot/pd_plots.py bar "$runs/bar_30" "$runs/bar_30_plain" "$runs/bar_300" \
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.pd_plots bar "$runs/bar_30" "$runs/bar_30_plain" "$runs/bar_300" \
   --labels "30 m/s, Riemann-corrected" "30 m/s, uncorrected (eq. 11)" "300 m/s, Riemann-corrected" \
   --out "$here/bar.png"

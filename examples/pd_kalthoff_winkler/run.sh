@@ -6,7 +6,8 @@
 #   examples/pd_kalthoff_winkler/run.sh [RUNS_DIR]   (from the repository root; SHOCKFIELD=path/to/shockfield)
 set -eu
 . "$(dirname "$0")/../run_common.sh"
-plot="/usr/bin/python3 python/shockfield_plot/pd_plots.py damage"
+export PYTHONPATH=python
+plot="/usr/bin/python3 -m shockfield_plot.pd_plots damage"
 rm -rf "$runs/kw"
 "$bin" run "$here/case.toml" -o "$runs/kw" -j1 | tail -1
 $plot "$runs/kw" --labels "PMB, ΔX = 1 mm, δ = 3.015ΔX" --out "${PLOT:-$here/damage.png}" | tee "$runs/kw/angles.txt"

@@ -14,8 +14,8 @@ mkdir -p "$runs"
 sed 's/^hardening_law = "sech2"/hardening_law = "power"/' "$here/ofhc_compression.toml" \
     > "$runs/ofhc_compression_power.toml"
 "$bin" run "$runs/ofhc_compression_power.toml" -o "$runs/ofhc_compression_power" --overwrite -j2 | tail -1
-/usr/bin/python3 python/shockfield_plot/pd_plots.py compression "$runs/ofhc_compression" \
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.pd_plots compression "$runs/ofhc_compression" \
     "$runs/ofhc_compression_power" --labels "sech² hardening (eq. 40)" "power-law hardening (Kalidindi 1992)" \
     --out "$here/compression.png"
-/usr/bin/python3 python/shockfield_plot/pd_plots.py orientations "$runs/ofhc_compression" \
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.pd_plots orientations "$runs/ofhc_compression" \
     --out "$here/orientations.png"

@@ -9,5 +9,5 @@ for c in c100 c111; do
 done
 rm -rf "$runs/polycrystal"
 "$bin" run "$here/polycrystal.toml" -o "$runs/polycrystal" -j1 | tail -1
-/usr/bin/python3 python/shockfield_plot/pd_plots.py crystal "$runs/c100" "$runs/c111" "$runs/polycrystal" \
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.pd_plots crystal "$runs/c100" "$runs/c111" "$runs/polycrystal" \
   --labels "[100] single crystal" "[111] single crystal" "polycrystal" --out "$here/polycrystal.png"

@@ -7,7 +7,7 @@ for c in c100 c111 c111_50; do
   rm -rf "$runs/$c"
   "$bin" run "$here/$c.toml" -o "$runs/$c" -j1 | tail -1
 done
-/usr/bin/python3 python/shockfield_plot/pd_plots.py crystal "$runs/c100" "$runs/c111" \
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.pd_plots crystal "$runs/c100" "$runs/c111" \
   --labels "[100] single crystal" "[111] single crystal" --out "$here/crystal.png"
-/usr/bin/python3 python/shockfield_plot/pd_plots.py bar "$runs/c111_50" "$runs/c111" \
+PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.pd_plots bar "$runs/c111_50" "$runs/c111" \
   --labels "[111], 50 m/s" "[111], 100 m/s" --out "$here/c111_evolution.png"

@@ -13,7 +13,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
-from shockfield_plot.vtk_arrays import read_vtk_arrays  # noqa: E402
+from shockfield.vtk_arrays import read_vtk_arrays  # noqa: E402
 
 out, runs = sys.argv[1], sys.argv[2:]
 fig, axes = plt.subplots(2, len(runs), figsize=(3.2 * len(runs), 6.4))

@@ -108,8 +108,23 @@ def gaussian_random_field(shape, correlation_length, seed=1):
     return _require_core().gaussian_random_field(nx, ny, nz, float(correlation_length), int(seed))[0]
 
 
+def _table(columns, integers=()):
+    """A dict of float64 columns as a structured array, the columns named in `integers` as int64."""
+    return _structured({n: c.astype(np.int64) if n in integers else c for n, c in columns.items()})
+
+
+_CLUSTER_INTEGERS = ("cluster", "size")
+_DOMAIN_INTEGERS = ("domain", "atoms", "euler_characteristic", "manifold")
+_VOID_INTEGERS = ("void", "cells", "surface_atoms", "euler_characteristic", "manifold")
+
+
 def structure(positions, box, boundary="ppp", types=None, ids=None, coordination=None, cna=None,
-              adaptive_cna=False, csp=None, bond_pairs=None, threads=0):
+              adaptive_cna=False, csp=None, bond_pairs=None, diamond=False, clusters=None, cluster_select=None,
+              cluster_min_size=1, domains=None, domains_surface="rolling", domains_min_atoms=4, profile=None,
+              pe=None, excess_energy=None, excess_crystal="fcc", burgers_lines=(), burgers_ids=(),
+              burgers_clusters=False, burgers_orient=((1, 0, 0), (0, 1, 0), (0, 0, 1)), burgers_lattice=None,
+              burgers_band=None, burgers_slab=None, burgers_spacing=None, voxel=None, voxel_smooth=0.0,
+              voxel_select="acna:hcp", tracker=None, timestep=0, threads=0):
     """Per-atom structure of atoms, as ``shockfield analyze atoms`` computes it for one frame
     (docs/analysis-atoms.md), over one neighbour pass.
 
@@ -117,16 +132,141 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     ``boundary``: LAMMPS codes per axis ("ppp", "pps", ...); ``types`` 1-based and ``ids``
     (default all 1 and 1..n). Analyses (at least one): ``coordination`` (cutoff Å), ``cna``
     (conventional CNA cutoff Å), ``adaptive_cna``, ``csp`` ("fcc", "bcc" or an even N),
-    ``bond_pairs`` (cutoff Å). Returns a dict of arrays named like the CLI's dump columns:
-    ``coord`` (int32), ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5
-    other) with ``<name>_counts`` dicts, ``csp`` (float64, Å²), and for bond pairs the CSR
-    ``bond_offset``, ``bond_partner``, ``bond_index`` (Honeycutt–Andersen index).
+    ``bond_pairs`` (cutoff Å), ``diamond`` (cubic/hexagonal diamond, Maras et al. 2016).
+    ``clusters`` (cutoff Å) with ``cluster_select`` (the CLI's ``--cluster-select`` language:
+    "acna:hcp", "acna:!fcc", "csp>4", "dia:cubic", ...) and ``cluster_min_size`` clusters the
+    selected atoms (Xu et al. (2015) §4.4.2); ``domains`` (Å: ball radius, or sculpting depth with
+    ``domains_surface="packing"``) adds the clusters' surfaces (``--domains``), for clusters of at
+    least ``domains_min_atoms`` atoms. ``profile`` (AXIS, WIDTH), e.g. ("z", 5.0): the atoms binned
+    along the axis in bins of WIDTH Å from the box's lo face (``--profile z:5``). ``excess_energy``
+    ("auto" or a reference e0 in eV) with ``pe`` (per-atom potential energies, eV): the per-atom
+    excess energy pe − e0, e0 the median pe of the ``excess_crystal`` atoms ("fcc", "hcp", "bcc")
+    for "auto" (``--excess-energy``, Xu et al. (2015) §3.2.3); ``cluster_select`` may then read
+    "excess>VALUE". Burgers circuits (``--burgers-*``, Frank scheme FS/RH, Xu et al. (2015)
+    §3.2.3): ``burgers_lines`` [(centre, axis, radius)] Å, ``burgers_ids`` [[id, id, id, ...]],
+    ``burgers_clusters`` (around the line of each cluster), in the crystal of ``burgers_orient``
+    (the crystal directions of x, y, z) with ``burgers_lattice`` (a, Å; default √2 × the median
+    nearest-neighbour distance), ``burgers_band``, ``burgers_slab``, ``burgers_spacing``.
+    ``voxel`` (node spacing h, Å; ``--voxel``): the fraction of the ``voxel_select`` atoms
+    (default the hcp atoms of the adaptive CNA) on a grid by cloud-in-cell, Gaussian-smoothed by
+    ``voxel_smooth`` Å — the phase field's order parameter ξ (Xu et al. (2015) §4.4.3).
+    ``tracker`` (a ``ClusterTracker``, with ``clusters``): this frame's clusters continue its tracks
+    (``--track``); ``timestep`` is the frame's (for the tracks' time).
+
+    Returns a dict of arrays named like the CLI's dump columns: ``coord`` (int32),
+    ``cna``/``acna``/``bpa`` (uint8 codes 1 fcc, 2 hcp, 3 bcc, 4 ico, 5 other) with
+    ``<name>_counts`` dicts, ``csp`` (float64, Å²), ``dia`` (uint8, OVITO's codes 0 other, 1 cubic,
+    2/3 its first/second neighbours, 4 hexagonal, 5/6 its neighbours), ``cluster`` (int32, 1, 2, ...
+    largest first, 0 none), for bond pairs the CSR ``bond_offset``, ``bond_partner``,
+    ``bond_index`` (Honeycutt–Andersen index); ``counts`` (dict: the count and fraction columns
+    of structures.csv); ``clusters`` (structured array: clusters.csv's columns after frame and
+    timestep); ``domains`` (structured array: domains.csv's columns after frame and timestep),
+    ``domain_surfaces`` (dict ``points``, ``triangles``: domains_<timestep>.vtp's triangles) and
+    ``flat_domains`` (why each flat cluster has no surface; the CLI's warnings); ``profile``
+    (structured array: profiles.csv's columns after frame and timestep, ``bin, lo, hi, centre,
+    atoms`` and ``<method>_<structure>_fraction`` of each structure method that ran, then
+    ``mean_excess`` with an excess energy); ``excess`` (float64, eV; ``counts`` then has
+    ``excess_reference_eV`` and ``excess_mean_eV``); ``burgers`` (structured array: burgers.csv's
+    columns after frame and timestep, ``source``, ``b`` and ``kind`` as text), ``burgers_circuit``
+    (int32 per atom: the circuit through it, 0 none) and ``burgers_skipped`` (automatic circuits
+    that could not close, with why); ``voxels`` (dict: ``fraction`` and ``density`` shaped (nz,
+    ny, nx), ``origin``, ``spacing``, ``stretch``, ``empty_nodes``, ``selected``: voxels_<timestep>.vti);
+    with a tracker ``track`` (int32 per atom: its cluster's track, 0 none; the dump column).
     """
     lo, hi = box
-    return _require_core().atoms_structure(
+    if domains_surface not in ("rolling", "packing"):
+        raise ValueError(f"domains_surface: expected 'rolling' or 'packing', got {domains_surface!r}")
+    profile_axis, profile_width = ("", 0.0) if profile is None else (str(profile[0]), float(profile[1]))
+    if excess_crystal not in ("fcc", "hcp", "bcc"):
+        raise ValueError(f"excess_crystal: expected 'fcc', 'hcp' or 'bcc', got {excess_crystal!r}")
+    if excess_energy is not None and excess_energy != "auto" and not isinstance(excess_energy, (int, float)):
+        raise ValueError(f"excess_energy: expected 'auto' or a reference energy in eV, got {excess_energy!r}")
+    excess_auto = excess_energy == "auto"
+    excess_reference = None if excess_energy is None or excess_auto else float(excess_energy)
+    if pe is not None:
+        pe = np.asarray(pe, dtype=np.float64)
+        if pe.ndim != 1:
+            raise ValueError(f"pe: expected one value per atom, an (n,) array, got shape {pe.shape}")
+        pe = pe.tolist()
+    burgers = None
+    if len(burgers_lines) or len(burgers_ids) or burgers_clusters:
+        burgers = {"lines": [(tuple(map(float, c)), tuple(map(float, a)), float(radius)) for c, a, radius in burgers_lines],
+                   "ids": [[int(i) for i in ids] for ids in burgers_ids], "clusters": bool(burgers_clusters),
+                   "orient": [tuple(int(v) for v in row) for row in burgers_orient], "lattice": burgers_lattice,
+                   "band": burgers_band, "slab": burgers_slab, "spacing": burgers_spacing}
+    r = _require_core().atoms_structure(
         positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
         None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
-        coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, int(threads))
+        coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, bool(diamond),
+        clusters, cluster_select, int(cluster_min_size), domains, domains_surface, int(domains_min_atoms),
+        profile_axis, profile_width, pe, excess_auto, excess_reference, excess_crystal, burgers,
+        None if voxel is None else {"spacing": float(voxel), "smoothing": float(voxel_smooth), "select": str(voxel_select)},
+        None if tracker is None else tracker._core, int(timestep), int(threads))
+    if "clusters" in r:
+        r["clusters"] = _table(r["clusters"], _CLUSTER_INTEGERS)
+    if "domains" in r:
+        d = r.pop("domains")
+        r["domain_surfaces"], r["flat_domains"] = d.pop("surfaces"), d.pop("flat")
+        r["domains"] = _table(d, _DOMAIN_INTEGERS)
+    if "burgers" in r:
+        r["burgers"] = _table({k: np.asarray(v) for k, v in r["burgers"].items()},
+                              ("circuit", "atoms", "b_h6", "b_k6", "b_l6", "reliable"))
+    if "profile" in r:
+        r["profile"] = _table(r["profile"], ("bin", "atoms"))
+    return r
+
+
+class ClusterTracker:
+    """Clusters followed through a series of frames (``shockfield analyze atoms --track``; Xu et al.
+    (2015) §4.4.2, Figs 71–72): pass it to ``structure(..., clusters=..., cluster_select=...,
+    tracker=tracker, timestep=t)`` frame by frame, in order. A cluster continues the track of the
+    previous frame's cluster it shares most atom ids with."""
+
+    def __init__(self):
+        self._core = _require_core().ClusterTracker()
+
+    @property
+    def frames(self):
+        """Frames added so far."""
+        return self._core.frames
+
+    def tracks(self, origin=0, dt=1.0):
+        """tracks.csv as a structured array: ``track, frame, timestep, time, cluster, size, x, y, z,
+        a, b, c, L, area, volume, atomic_volume``, time = (timestep − ``origin``) · ``dt``."""
+        return _table(self._core.tracks(int(origin), float(dt)), ("track", "frame", "timestep", "cluster", "size"))
+
+    def growth(self, origin=0, dt=1.0):
+        """growth.csv as a structured array: the power law y = C t^k of each quantity of each track
+        with 3 or more points at t > 0: ``track, exponent, exponent_stderr, prefactor, points,
+        quantity``."""
+        g = self._core.growth(int(origin), float(dt))
+        return _table({k: np.asarray(v) for k, v in g.items()}, ("track", "points"))
+
+
+def voids(positions, box, probe, boundary="ppp", types=None, ids=None, atomic_volume=None, margin=None,
+          min_volume=0.0):
+    """The voids of a frame of atoms, as ``shockfield analyze atoms --voids PROBE`` finds them
+    (docs/analysis-atoms.md; Xu et al. (2015) §3.2.3): the cavities of the atoms' Delaunay
+    division (periodic images within ``margin`` Å of the faces included, default 15, at most half
+    the box) for a ball of radius ``probe`` Å — regions the ball moves in without reaching the
+    outside. ``atomic_volume`` (Å³) for missing_volume: default (box volume − voids) / atoms;
+    ``min_volume`` (Å³) leaves smaller voids out. ``positions``, ``box``, ``boundary``,
+    ``types``, ``ids`` as for ``structure``.
+
+    Returns a dict: ``voids`` (structured array, one row per void, largest first, the columns of
+    voids.csv after frame and timestep: ``void, cells, volume, area, equivalent_radius,
+    missing_volume, missing_radius, x, y, z, surface_atoms, euler_characteristic, manifold``) and
+    ``surfaces`` (dict ``points`` (atoms and images), ``triangles``: voids_<timestep>.vtp's
+    triangles, normals out of the voids). Runs with the GIL released, on one thread.
+    """
+    lo, hi = box
+    r = _require_core().atoms_voids(
+        positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
+        None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
+        float(probe), None if atomic_volume is None else float(atomic_volume),
+        None if margin is None else float(margin), float(min_volume))
+    surfaces = r.pop("surfaces")
+    return {"voids": _table(r, _VOID_INTEGERS), "surfaces": surfaces}
 
 
 def delaunay(points, cluster_distance=None, rule="both"):
@@ -143,3 +283,32 @@ def delaunay(points, cluster_distance=None, rule="both"):
     ``shared_points``). Runs with the GIL released, on one thread (the division is serial).
     """
     return _require_core().delaunay(points, 0.0 if cluster_distance is None else float(cluster_distance), rule)
+
+
+def surface(points, radius=None, method="delaunay", depth=None):
+    """The surface of ``points`` (float64 C-contiguous (n, 3)), as ``shockfield analyze geometry
+    --surface-method METHOD`` writes it to surface.vtp and summary.txt (docs/geometry-giso.md;
+    Xu et al. (2015) §3.2.3).
+
+    ``method``: "delaunay" (the rolling ball of ``radius`` on the Delaunay division: every
+    component the ball touches from outside), "pivot" (the paper's pivoting ball of ``radius``:
+    the component on the point of largest x) or "packing" (packing-sculpting to the ``depth``).
+
+    Returns a dict: ``points`` (float64 (k, 3), the points the triangles use, in surface.vtp's
+    order), ``point_index`` (int32 (k,), their rows in ``points`` given), ``triangles`` (int32
+    (m, 3) into the returned ``points``, normals outwards by the right-hand rule), ``area``,
+    ``volume`` (enclosed), ``euler_characteristic`` (V − E + F) and ``manifold`` (every edge on
+    two triangles, once each way). Runs with the GIL released, on one thread. A radius or depth
+    the points do not allow (the ball falls through, sculpting removes everything) raises
+    ``shockfield.InputError`` with the command line's message.
+    """
+    if method == "packing":
+        if depth is None or radius is not None:
+            raise ValueError("method 'packing' takes depth (the sculpting depth, a positive length), not radius")
+        length = depth
+    else:
+        if radius is None or depth is not None:
+            raise ValueError(f"method '{method}' takes radius (the ball's radius, a positive length); "
+                             "depth is for method 'packing'")
+        length = radius
+    return _require_core().surface(points, str(method), float(length))

@@ -25,7 +25,28 @@ def structure(positions: npt.NDArray[np.float64],
               box: tuple[Sequence[float], Sequence[float]], boundary: str = "ppp",
               types: Optional[Sequence[int]] = None, ids: Optional[Sequence[int]] = None,
               coordination: Optional[float] = None, cna: Optional[float] = None, adaptive_cna: bool = False,
-              csp: Optional[Union[str, int]] = None, bond_pairs: Optional[float] = None,
-              threads: int = 0) -> dict[str, object]: ...
+              csp: Optional[Union[str, int]] = None, bond_pairs: Optional[float] = None, diamond: bool = False,
+              clusters: Optional[float] = None, cluster_select: Optional[str] = None, cluster_min_size: int = 1,
+              domains: Optional[float] = None, domains_surface: str = "rolling", domains_min_atoms: int = 4,
+              profile: Optional[tuple[str, float]] = None, pe: Optional[Sequence[float]] = None,
+              excess_energy: Optional[Union[str, float]] = None, excess_crystal: str = "fcc",
+              burgers_lines: Sequence[tuple[Sequence[float], Sequence[float], float]] = (),
+              burgers_ids: Sequence[Sequence[int]] = (), burgers_clusters: bool = False,
+              burgers_orient: Sequence[Sequence[int]] = ((1, 0, 0), (0, 1, 0), (0, 0, 1)),
+              burgers_lattice: Optional[float] = None, burgers_band: Optional[float] = None,
+              burgers_slab: Optional[float] = None, burgers_spacing: Optional[float] = None,
+              voxel: Optional[float] = None, voxel_smooth: float = 0.0, voxel_select: str = "acna:hcp",
+              tracker: Optional["ClusterTracker"] = None, timestep: int = 0, threads: int = 0) -> dict[str, object]: ...
+class ClusterTracker:
+    frames: int
+    def __init__(self) -> None: ...
+    def tracks(self, origin: int = 0, dt: float = 1.0) -> np.ndarray: ...
+    def growth(self, origin: int = 0, dt: float = 1.0) -> np.ndarray: ...
+def voids(positions: npt.NDArray[np.float64], box: tuple[Sequence[float], Sequence[float]], probe: float,
+          boundary: str = "ppp", types: Optional[Sequence[int]] = None, ids: Optional[Sequence[int]] = None,
+          atomic_volume: Optional[float] = None, margin: Optional[float] = None,
+          min_volume: float = 0.0) -> dict[str, object]: ...
 def delaunay(points: npt.NDArray[np.float64], cluster_distance: Optional[float] = None,
              rule: str = "both") -> dict[str, object]: ...
+def surface(points: npt.NDArray[np.float64], radius: Optional[float] = None, method: str = "delaunay",
+            depth: Optional[float] = None) -> dict[str, object]: ...

@@ -10,11 +10,14 @@ Tables are numpy structured arrays, one field per CSV column (numbers as float64
 ``Run.table(name, pandas=True)`` gives a pandas DataFrame instead when pandas is installed.
 """
 
+import binascii
 import csv
+import functools
 import json
 import pathlib
 import re
 import tomllib
+import zlib
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -22,8 +25,29 @@ import numpy as np
 from .errors import InputError
 
 
+def _malformed(what):
+    """Decorates a reader of one file (its first argument): a file it cannot parse (bad bytes,
+    numbers, structure) raises InputError naming the file and `what` was expected, never another
+    exception (tests/python/test_plot.py mutates every kind of file)."""
+    def decorate(reader):
+        @functools.wraps(reader)
+        def read(path, *args, **kwargs):
+            try:
+                return reader(path, *args, **kwargs)
+            except InputError:
+                raise
+            except FileNotFoundError:
+                raise InputError(f"{path}: no such file") from None
+            except (ValueError, KeyError, IndexError, TypeError, AttributeError, zlib.error, binascii.Error) as error:
+                raise InputError(f"{path}: not {what} ({type(error).__name__}: {error})") from None
+        return read
+    return decorate
+
+
+@_malformed("a CSV table with a header line")
 def read_csv(path):
-    """A CSV file with a header line (lines starting with '#' skipped) as a structured array."""
+    """A CSV file with a header line (lines starting with '#' skipped) as a structured array: a
+    column whose every value is a number (an empty value: NaN) is float64, any other str."""
     with open(path, newline="") as f:
         rows = [row for row in csv.reader(line for line in f if not line.startswith("#")) if row]
     if not rows:
@@ -36,7 +60,7 @@ def read_csv(path):
     for k, name in enumerate(header):
         values = [row[k] for row in body]
         try:
-            columns.append(np.array([float(v) for v in values], dtype=np.float64))
+            columns.append(np.array([float(v) if v.strip() else np.nan for v in values], dtype=np.float64))
         except ValueError:
             columns.append(np.array(values, dtype=str))
     out = np.empty(len(body), dtype=[(name, c.dtype) for name, c in zip(header, columns)])
@@ -45,11 +69,49 @@ def read_csv(path):
     return out
 
 
+@_malformed("TOML")
+def read_toml(path):
+    """A TOML file (config.resolved.toml, hugoniot_fit.toml, a material file) as a dict;
+    InputError naming the file when it is missing or not TOML."""
+    with open(path, "rb") as f:
+        return tomllib.load(f)
+
+
+@_malformed("JSON")
+def read_json(path):
+    """A JSON file (summary.json) as a dict or list."""
+    return json.loads(pathlib.Path(path).read_text())
+
+
+@_malformed("a ParaView collection (.pvd)")
+def read_pvd(path):
+    """The frames a ParaView collection (.pvd) lists, as (time, absolute file path) in its order."""
+    path = pathlib.Path(path)
+    entries = re.findall(r'<DataSet\b[^>]*?timestep="([^"]+)"[^>]*?file="([^"]+)"', path.read_text())
+    return [(float(t), str(path.parent / f)) for t, f in entries]
+
+
+@_malformed("VTK PolyData with point arrays (.vtp)")
+def read_points(path):
+    """The points of a VTK PolyData file (.vtp) as a structured array, one row per point: the
+    field ``points`` (3,) and one field per point-data array (vectors and tensors as subarrays)."""
+    from .vtk_arrays import read_vtk_arrays
+    arrays = read_vtk_arrays(path)
+    rows = len(arrays["points"])
+    fields = {name: a for name, a in arrays.items()
+              if len(a) == rows and name not in ("connectivity", "offsets", "types")}  # not the vertex cells
+    out = np.empty(rows, dtype=[(name, a.dtype, a.shape[1:]) for name, a in fields.items()])
+    for name, a in fields.items():
+        out[name] = a
+    return out
+
+
 @dataclass
 class Frame:
     """One output frame: ``time`` (the method's unit), ``step`` (None for fields), ``data`` (a
-    field as an array shaped (ny, nx) or (nz, ny, nx), void cells NaN; atoms or a pd profile as a
-    structured array of the file's columns), ``file``, and for dumps ``box`` ((3, 2) bounds)."""
+    field as an array shaped (ny, nx) or (nz, ny, nx), void cells NaN; atoms, particles or a
+    profile as a structured array of the file's columns or arrays), ``file``, and for dumps
+    ``box`` ((3, 2) bounds)."""
     time: float
     data: np.ndarray
     file: str
@@ -58,6 +120,7 @@ class Frame:
     extra: dict = field(default_factory=dict)
 
 
+@_malformed("a LAMMPS text dump")
 def read_lammps_dump(path):
     """The frames of a LAMMPS text dump ([ITEM: UNITS] / [ITEM: TIME] / ITEM: TIMESTEP / [TIME] /
     NUMBER OF ATOMS / BOX BOUNDS / ATOMS ...) as (step, time or None, box, atoms structured array)
@@ -102,17 +165,35 @@ class Run:
         resolved = self.folder / "config.resolved.toml"
         if not resolved.is_file():
             raise InputError(f"{self.folder}: not a run folder (no config.resolved.toml)")
-        with open(resolved, "rb") as f:
-            self.config = tomllib.load(f)
+        self.config = read_toml(resolved)
         self.method = self.config.get("method")
         self.derived = self.config.get("derived", {})
         summary = self.folder / "summary.json"
-        self.summary = json.loads(summary.read_text()) if summary.is_file() else None
+        self.summary = read_json(summary) if summary.is_file() else None
 
     @classmethod
     def open(cls, folder):
         """The run in ``folder``; InputError when it holds no config.resolved.toml."""
         return cls(folder)
+
+    @property
+    def case_name(self):
+        """The case file's name (summary.json's ``case``; "<folder>/case.toml" for a file named
+        case.toml, as examples name theirs), else the run folder's name."""
+        case = (self.summary or {}).get("case")
+        if not case:
+            return self.folder.name
+        case = pathlib.Path(case)
+        return f"{case.parent.name}/{case.name}" if case.name == "case.toml" and case.parent.name else case.name
+
+    def title(self, what):
+        """A figure title naming the run: "<method> run <folder> (<case file>): <what>"."""
+        return f"{self.method} run {self.folder.name} ({self.case_name}): {what}"
+
+    def value(self, key):
+        """The first number named ``key`` in config.resolved.toml, in the file's order through its
+        tables and arrays of tables ([derived] included); None when it has none."""
+        return _first_number(self.config, key)
 
     def tables(self):
         """The CSV files of the folder (relative names), sorted."""
@@ -151,14 +232,28 @@ class Run:
         has): "dumps" (LAMMPS dumps: md's, macroparticle's, and pd's and granular's with [output]
         dump = true; structured arrays of their columns), "fields" (the grid
         fields of its .pvd of .vti files: mpm, dbm, phasefield; ``array`` names the data array,
-        default the first) or "profiles" (pd, dbm: profiles/profile_<k>.csv as structured arrays
-        at the times of profiles/index.csv). InputError naming its tables when it has none."""
+        default the first), "profiles" (pd, dbm: profiles/profile_<k>.csv as structured arrays
+        at the times of profiles/index.csv) or "particles" (the .pvd of .vtp files: mpm's
+        particles, pd's points, granular's grains; structured arrays, ``read_points``).
+        InputError naming its tables when it has none."""
+        for frames_of_file in self._frame_files(array, kind):
+            yield from frames_of_file()
+
+    def last_frame(self, array="", kind=None):
+        """The last frame ``frames(array, kind)`` would yield, reading only its file."""
+        return list(self._frame_files(array, kind)[-1]())[-1]
+
+    def _frame_files(self, array, kind):
+        """One callable per file of the frames of ``kind``, in time order, each returning the
+        file's frames (a dump file can hold several)."""
         dumps = sorted(self.folder.glob("dumps/*.lammpstrj"), key=_step_of) or sorted(
             self.folder.glob("*.lammpstrj"), key=_step_of)
-        series = [p for p in sorted(self.folder.glob("*.pvd")) if ".vti" in p.read_text()]
+        collections = sorted(self.folder.glob("*.pvd")) + sorted(self.folder.glob("profiles/*.pvd"))
+        series = [p for p in collections if ".vti" in p.read_text()]
+        particles = [p for p in collections if ".vtp" in p.read_text()]
         index = self.folder / "profiles" / "index.csv"
-        available = [k for k, present in (("dumps", dumps), ("fields", series), ("profiles", index.is_file()))
-                     if present]
+        available = [k for k, present in (("dumps", dumps), ("fields", series), ("profiles", index.is_file()),
+                                          ("particles", particles)) if present]
         if kind is None and available:
             kind = available[0]
         if kind not in available:
@@ -167,27 +262,44 @@ class Run:
         if kind == "dumps":
             # Steps to time: the method's [<method>] timestep (md: ps), when it has a fixed one.
             timestep = self.config.get(self.method, {}).get("timestep")
-            for path in dumps:
-                for step, time, box, atoms in read_lammps_dump(path):
-                    if time is None and timestep is not None:
-                        time = step * timestep
-                    yield Frame(time=time, data=atoms, file=str(path), step=step, box=box)
-        elif kind == "profiles":
+
+            def dump_frames(path):
+                return [Frame(time=step * timestep if time is None and timestep is not None else time, data=atoms,
+                              file=str(path), step=step, box=box) for step, time, box, atoms in read_lammps_dump(path)]
+            return [lambda path=path: dump_frames(path) for path in dumps]
+        if kind == "profiles":
             table = read_csv(index)
             time_column = "time_s" if "time_s" in table.dtype.names else "time"
-            for row in table:
-                file = self.folder / "profiles" / f"profile_{int(row['profile'])}.csv"
-                yield Frame(time=float(row[time_column]), data=read_csv(file), file=str(file), step=int(row["step"]))
-        else:
-            from . import analysis
-            core = analysis._require_core()
-            for time, file in core.read_series(str(series[0])):
-                values, _, spacing, origin = core.read_field(file, array)
-                yield Frame(time=time, data=values, file=file, extra={"spacing": spacing, "origin": origin})
+            files = [(float(row[time_column]), int(row["step"]), self.folder / "profiles" / f"profile_{int(row['profile'])}.csv")
+                     for row in table]
+            return [lambda t=t, step=step, file=file: [Frame(time=t, data=read_csv(file), file=str(file), step=step)]
+                    for t, step, file in files]
+        if kind == "particles":
+            return [lambda t=t, file=file: [Frame(time=t, data=read_points(file), file=file)]
+                    for t, file in read_pvd(particles[0])]
+        from . import analysis
+        core = analysis._require_core()
+
+        def field_frame(time, file):
+            values, _, spacing, origin = core.read_field(file, array)
+            return [Frame(time=time, data=values, file=file, extra={"spacing": spacing, "origin": origin})]
+        return [lambda t=t, file=file: field_frame(t, file) for t, file in core.read_series(str(series[0]))]
 
     def __repr__(self):
         status = self.summary.get("status") if self.summary else "no summary"
         return f"Run({str(self.folder)!r}, method={self.method!r}, {status})"
+
+
+def _first_number(table, key):
+    items = table.items() if isinstance(table, dict) else enumerate(table)
+    for name, value in items:
+        if name == key and isinstance(value, (int, float)) and not isinstance(value, bool):
+            return float(value)
+        if isinstance(value, (dict, list)):
+            found = _first_number(value, key)
+            if found is not None:
+                return found
+    return None
 
 
 def _step_of(path):

@@ -21,19 +21,23 @@ from .case import Case
 
 
 class Simulation:
-    """``Simulation(case, output, threads=0, overwrite=False, quiet=True)``: opens the run folder
-    ``output`` and starts the case (a ``Case`` or the path of a case file) in this process.
+    """``Simulation(case, output, threads=0, overwrite=False, quiet=True, resume=False)``: opens
+    the run folder ``output`` and starts the case (a ``Case`` or the path of a case file) in this
+    process.
 
     ``threads``: OpenMP threads for every step (0: OMP_NUM_THREADS, else all cores); ``quiet``:
-    no progress line. Bad input raises ``InputError`` with the command line's message, a failed
-    step ``RunError`` (the run folder keeps what was written)."""
+    no progress line; ``resume``: continue the run in ``output`` from its last checkpoint, as
+    ``shockfield run CASE --output OUTPUT --resume`` (the same case and values; a run stopped by
+    ``stop()``, Ctrl-C or ``--stop-after`` continues as if never stopped). Bad input raises
+    ``InputError`` with the command line's message, a failed step ``RunError`` (the run folder
+    keeps what was written)."""
 
-    def __init__(self, case, output, threads=0, overwrite=False, quiet=True):
+    def __init__(self, case, output, threads=0, overwrite=False, quiet=True, resume=False):
         if not isinstance(case, Case):
             case = Case.load(case)
         with case._case_file() as case_file:
             self._core = _require_core().Simulation(str(case_file), list(case.overrides), str(output), int(threads),
-                                          bool(overwrite), bool(quiet))
+                                                    bool(overwrite), bool(quiet), bool(resume))
         self.folder = pathlib.Path(self._core.folder)
 
     method = property(lambda self: self._core.method, doc='The method\'s name ("md", "mpm", "pd", ...).')
@@ -42,7 +46,7 @@ class Simulation:
     time_unit = property(lambda self: self._core.time_unit, doc='"ps", "s" or "1" (lattice units).')
     steps_left = property(lambda self: self._core.steps_left, doc="Steps left (an estimate for adaptive steps).")
     finished = property(lambda self: self._core.finished, doc="True when no step is left.")
-    closed = property(lambda self: self._core.closed, doc="True after finish().")
+    closed = property(lambda self: self._core.closed, doc="True after finish() or stop().")
 
     def step(self, n=1):
         """Advances ``n`` steps (fewer if the run ends first) with the scheduled outputs; returns
@@ -53,6 +57,12 @@ class Simulation:
         """Writes the end of the run (final outputs, last checkpoint, summary.json); every step
         must have been made."""
         self._core.finish()
+
+    def stop(self):
+        """Stops the run here as Ctrl-C does: the method's stop state, a checkpoint, summary.json
+        with status "stopped". ``Simulation(case, output, resume=True)`` continues it. Returns the
+        message saying how (the command line's)."""
+        return self._core.stop()
 
     def thermo(self):
         """The thermo columns at the current step, as a dict (the values of a thermo.csv row)."""
@@ -68,6 +78,14 @@ class Simulation:
         (Q, ny + 4, nx + 4), ghosts included; macroparticle md's arrays in the engine's reduced
         units (each unit text is one unit in SI). Writing into a view changes the simulation."""
         return self._core.arrays()
+
+    def fields(self):
+        """The fields the method computes from its state, by name, as numpy arrays that are
+        copies made at this call (writing into them changes nothing; call again after a step):
+        dbm ``rho`` (ny, nx), ``velocity`` (ny, nx, 2) (ux, uy) and ``T`` (ny, nx), the moments
+        of f in lattice units — the values the run's field frames hold for this step. Other
+        methods (and decomposed DBM runs) raise ``ValueError``."""
+        return self._core.fields()
 
     def units(self):
         """The unit of each array, by name ("" for indices)."""

@@ -10,37 +10,33 @@ single time. similarity: process distance d_P against the candidate threshold (F
 surfaces: the voids or phase domains of `analyze atoms --voids/--domains` (columns timestep, void or
 domain, volume, area): their total and the largest one's volume and area against the timestep.
 """
-import csv
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
-
-def read(path):
-    with open(path) as f:
-        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
-    return rows[0], [[float(v) if v not in ("", "nan") else float("nan") for v in r[1:]] for r in rows[1:]]
+from shockfield.run import read_csv  # noqa: E402
 
 
 def minkowski(csv_path, png_path):
-    header, rows = read(csv_path)
-    names = header[3:]  # columns: file, time, threshold, functionals...
-    times = sorted({r[0] for r in rows})
-    thresholds = sorted({r[1] for r in rows})
+    table = read_csv(csv_path)  # columns: file, time, threshold, functionals...
+    _, time_name, threshold_name, *names = table.dtype.names
+    time, threshold = table[time_name], table[threshold_name]
+    times, thresholds = np.unique(time), np.unique(threshold)
     fig, axes = plt.subplots(1, len(names), figsize=(4 * len(names), 3.4))
-    for i, name in enumerate(names):
-        ax = axes[i]
+    for ax, name in zip(axes, names):
         if len(times) > 1:
             step = max(1, len(thresholds) // 8)
             for t in thresholds[::step]:
-                pts = sorted((r[0], r[2 + i]) for r in rows if r[1] == t)
-                ax.plot([p[0] for p in pts], [p[1] for p in pts], label=f"{t:g}")
+                rows = np.flatnonzero(threshold == t)
+                rows = rows[np.argsort(time[rows], kind="stable")]
+                ax.plot(time[rows], table[name][rows], label=f"{t:g}")
             ax.set_xlabel("time")
         else:
-            ax.plot([r[1] for r in rows], [r[2 + i] for r in rows])
+            ax.plot(threshold, table[name])
             ax.set_xlabel("threshold")
         ax.set_title(name)
     if len(times) > 1:
@@ -50,11 +46,12 @@ def minkowski(csv_path, png_path):
 
 
 def similarity(csv_path, png_path):
-    header, rows = read(csv_path)
+    table = read_csv(csv_path)  # columns: candidate, threshold, d_P, S_D
+    threshold, distance = table["threshold"], table["d_P"]
     fig, ax = plt.subplots(figsize=(5, 3.4))
-    ax.plot([r[0] for r in rows], [r[1] for r in rows], marker=".")
-    best = min(rows, key=lambda r: r[1])
-    ax.axvline(best[0], color="grey", ls="--", label=f"best {best[0]:g}")
+    ax.plot(threshold, distance, marker=".")
+    best = threshold[np.argmin(distance)]
+    ax.axvline(best, color="grey", ls="--", label=f"best {best:g}")
     ax.set_xlabel("candidate threshold")
     ax.set_ylabel("process distance d_P")
     ax.legend()
@@ -63,16 +60,14 @@ def similarity(csv_path, png_path):
 
 
 def surfaces(csv_path, png_path):
-    with open(csv_path) as f:
-        rows = list(csv.DictReader(f))
-    what = "domain" if rows and "domain" in rows[0] else "void"
-    steps = sorted({int(r["timestep"]) for r in rows})
+    table = read_csv(csv_path)  # columns: timestep, void or domain, volume, area
+    what = "domain" if "domain" in table.dtype.names else "void"
+    steps = np.unique(table["timestep"]).astype(int)
     fig, axes = plt.subplots(1, 2, figsize=(9, 3.4))
     for ax, column, unit in ((axes[0], "volume", "Å³"), (axes[1], "area", "Å²")):
-        total = [sum(float(r[column]) for r in rows if int(r["timestep"]) == t) for t in steps]
-        largest = [max((float(r[column]) for r in rows if int(r["timestep"]) == t), default=0.0) for t in steps]
-        ax.plot(steps, total, marker="o", label=f"all {what}s")
-        ax.plot(steps, largest, marker=".", ls="--", label=f"largest {what}")
+        values = [table[column][table["timestep"] == t] for t in steps]
+        ax.plot(steps, [v.sum() for v in values], marker="o", label=f"all {what}s")
+        ax.plot(steps, [v.max(initial=0.0) for v in values], marker=".", ls="--", label=f"largest {what}")
         ax.set_xlabel("timestep")
         ax.set_ylabel(f"{column} ({unit})")
     axes[0].legend(fontsize="small")

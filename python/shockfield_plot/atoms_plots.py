@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """Plots of `shockfield analyze atoms` (and of an MD run's in-run [analysis]).
 
-  atoms_plots.py structures FOLDER [--out FILE]
+  python3 -m shockfield_plot.atoms_plots structures FOLDER [--out FILE]
       structure fractions against time from FOLDER/structures.csv (one panel per method: cna,
       acna, bpa; one curve per structure present) -> FOLDER/structures.png
-  atoms_plots.py slice DUMP [--out FILE] [--axis z] [--at POS] [--thickness W] [--column NAME]
+  python3 -m shockfield_plot.atoms_plots slice DUMP [--out FILE] [--axis z] [--at POS] [--thickness W] [--column NAME]
                             [--frame K]
       the atoms of a slice |r_axis - POS| < W/2 (default: the box middle, W = 3 A) of frame K
       (default the last) of an annotated dump, coloured by structure type (column acna, else cna,
@@ -13,18 +13,21 @@
       -> DUMP without its extension + _slice.png
 
 Each prints what it drew (frames and methods; atoms per type in the slice), so tests can check
-the figure's content. Uses only numpy and matplotlib from Debian (run with /usr/bin/python3).
+the figure's content. Reads structures.csv and the dump through shockfield.run (read_csv,
+read_lammps_dump); a missing file or column raises shockfield.InputError. Uses only numpy and
+matplotlib from Debian (run with /usr/bin/python3).
 """
 import argparse
-import csv
 import os
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+from shockfield.errors import InputError  # noqa: E402
+from shockfield.run import read_csv, read_lammps_dump  # noqa: E402
 
 STRUCTURES = ["fcc", "hcp", "bcc", "ico", "other"]
 # OVITO's colours of the types (fcc green, hcp red, bcc blue, ico yellow, other grey).
@@ -39,20 +42,18 @@ METHODS = {"cna": "conventional CNA", "acna": "adaptive CNA", "bpa": "bond pairs
 def structures(folder, out):
     path = os.path.join(folder, "structures.csv")
     if not os.path.exists(path):
-        sys.exit(f"{path}: not found (the output folder of `shockfield analyze atoms`, or an MD run with [analysis])")
-    with open(path, newline="") as f:
-        rows = [r for r in csv.reader(f) if r]
-    if len(rows) < 2:
-        sys.exit(f"{path}: no data rows")
-    header = rows[0]
-    data = np.array([[float(x) for x in r] for r in rows[1:]], dtype=float)
-    col = {name: data[:, k] for k, name in enumerate(header)}
+        raise InputError(f"{path}: not found (the output folder of `shockfield analyze atoms`, or an MD run with "
+                         "[analysis])")
+    table = read_csv(path)
+    if len(table) == 0:
+        raise InputError(f"{path}: no data rows")
+    col = {name: table[name] for name in table.dtype.names}
     x, xlabel = (col["time_ps"], "time (ps)") if "time_ps" in col else (col["timestep"], "timestep")
     if len(x) > 1 and not np.all(np.diff(x) > 0):  # frames of one timestep (separate samples)
         x, xlabel = col["frame"], "frame"
     methods = [m for m in METHODS if f"{m}_fcc_fraction" in col or f"{m}_cubic_fraction" in col]
     if not methods:
-        sys.exit(f"{path}: no <method>_<structure>_fraction columns")
+        raise InputError(f"{path}: no <method>_<structure>_fraction columns")
     fig, axes = plt.subplots(len(methods), 1, figsize=(7, 3.2 * len(methods)), sharex=True, squeeze=False)
     for ax, m in zip(axes[:, 0], methods):
         names, colours = (DIAMOND[1:] + DIAMOND[:1], DIAMOND_COLOURS) if m == "dia" else (STRUCTURES, COLOURS)
@@ -68,34 +69,26 @@ def structures(folder, out):
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     print(f"structures: {len(x)} frames, methods {' '.join(methods)}")
-    print(f"wrote {out}")
 
 
 def read_frame(path, k):
     """Frame k (negative: from the end) of a LAMMPS text dump: (timestep, lo, hi, columns dict)."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    starts = [i for i, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")]
-    if not starts:
-        sys.exit(f"{path}: not a LAMMPS text dump (no ITEM: TIMESTEP)")
+    frames = read_lammps_dump(path)
+    if not frames:
+        raise InputError(f"{path}: not a LAMMPS text dump (no ITEM: TIMESTEP)")
     try:
-        s = starts[k]
+        step, _, box, atoms = frames[k]
     except IndexError:
-        sys.exit(f"{path}: --frame {k}: the file has {len(starts)} frames")
-    step = int(lines[s + 1])
-    n = int(lines[s + 3])
-    bounds = np.array([[float(v) for v in lines[s + 5 + d].split()[:2]] for d in range(3)])
-    names = lines[s + 8].split()[2:]
-    rows = np.array([[float(v) for v in line.split()] for line in lines[s + 9:s + 9 + n]], dtype=float).reshape(n, -1)
-    return step, bounds[:, 0], bounds[:, 1], {name: rows[:, c] for c, name in enumerate(names)}
+        raise InputError(f"{path}: --frame {k}: the file has {len(frames)} frames") from None
+    return step, box[:, 0], box[:, 1], {name: atoms[name] for name in atoms.dtype.names}
 
 
 def slice_plot(dump, out, axis, at, thickness, column, frame):
     step, lo, hi, col = read_frame(dump, frame)
     name = column or next((c for c in ("acna", "cna", "bpa") if c in col), None)
     if name is None or name not in col:
-        sys.exit(f"{dump}: no structure column ({column or 'acna, cna or bpa'}); analyse it with "
-                 "`shockfield analyze atoms` first")
+        raise InputError(f"{dump}: no structure column ({column or 'acna, cna or bpa'}); analyse it with "
+                         "`shockfield analyze atoms` first")
     d = "xyz".index(axis)
     pos = np.column_stack([col[c] for c in ("x", "y", "z")]) if "x" in col else \
         np.column_stack([col[c] for c in ("xu", "yu", "zu")])
@@ -123,7 +116,6 @@ def slice_plot(dump, out, axis, at, thickness, column, frame):
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     print(f"slice: timestep {step}, {int(inside.sum())} atoms by {name}: {', '.join(counts)}")
-    print(f"wrote {out}")
 
 
 def main():
@@ -138,12 +130,14 @@ def main():
     ap.add_argument("--frame", type=int, default=-1, help="frame index in the dump (0 first; default -1, the last)")
     a = ap.parse_args()
     if a.kind == "structures":
-        structures(a.path, a.out or os.path.join(a.path, "structures.png"))
+        out = a.out or os.path.join(a.path, "structures.png")
+        structures(a.path, out)
     else:
         if not a.thickness > 0:
-            sys.exit(f"--thickness {a.thickness}: expected a number > 0 (Å)")
-        slice_plot(a.path, a.out or os.path.splitext(a.path)[0] + "_slice.png", a.axis, a.at, a.thickness, a.column,
-                   a.frame)
+            raise InputError(f"--thickness {a.thickness}: expected a number > 0 (Å)")
+        out = a.out or os.path.splitext(a.path)[0] + "_slice.png"
+        slice_plot(a.path, out, a.axis, a.at, a.thickness, a.column, a.frame)
+    print(f"wrote {out}")
 
 
 if __name__ == "__main__":

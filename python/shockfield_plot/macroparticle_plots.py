@@ -1,16 +1,20 @@
 #!/usr/bin/python3
 """Figures of macroparticle run folders (docs/macroparticle.md), used by `shockfield plot`.
 
-  macroparticle_plots.py stress-strain RUN_DIR [RUN_DIR ...] [--out FILE]
+  python3 -m shockfield_plot.macroparticle_plots stress-strain RUN_DIR [RUN_DIR ...] [--out FILE]
       |stress| against |strain| of the loaded rods (thermo.csv columns Strain, Stress), one
       curve per run labelled by its folder name -> RUN_DIR/stress-strain.png
+
+Reads thermo.csv through shockfield.run.Run.
 """
-import argparse, csv, os
+import argparse, os
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+
+from shockfield.run import Run
 
 
 def stress_strain(runs, out, title="macroparticle rods", ax=None, labels=None):
@@ -18,11 +22,10 @@ def stress_strain(runs, out, title="macroparticle rods", ax=None, labels=None):
     fig = None
     if ax is None:
         fig, ax = plt.subplots(figsize=(6, 4))
-    for k, run in enumerate(runs):
-        rows = list(csv.DictReader(open(os.path.join(run, "thermo.csv"))))
-        strain = np.array([float(r["Strain"]) for r in rows])
-        stress = np.array([float(r["Stress"]) for r in rows])
-        label = labels[k] if labels else os.path.basename(os.path.normpath(run))
+    for k, run in enumerate(map(Run.open, runs)):
+        thermo = run.thermo
+        strain, stress = thermo["Strain"], thermo["Stress"]
+        label = labels[k] if labels else run.folder.name
         ax.plot(np.abs(strain) * 100, np.abs(stress) / 1e6, label=label)
     ax.set_xlabel("|strain of the loaded layers| (%)")
     ax.set_ylabel("|virial stress σ_zz| (MPa)")

@@ -1,20 +1,17 @@
 #!/usr/bin/python3
-"""Plots of an MD run folder written by `shockfield run`.
+"""Plots of an MD run folder written by `shockfield run` (`shockfield plot profiles|hugoniot`).
 
-  md_plots.py profiles RUN_DIR [--out FILE]   binned shock profiles (velocity, pressure,
-                                              temperature, density) at several times
-  md_plots.py thermo RUN_DIR [--out FILE]     thermo.csv columns against time
-  md_plots.py hugoniot SWEEP_DIR [--out FILE] [--compare CSV]
-                                              Us-Up points of `shockfield hugoniot` with their
-                                              fit, the experimental copper line (Marsh 1980) and
-                                              optionally a peer sweep (e.g. LAMMPS) to compare
+  python3 -m shockfield_plot.md_plots profiles RUN_DIR [--out FILE] [--axis z]
+      binned shock profiles (velocity, pressure, temperature, density) at several times
+  python3 -m shockfield_plot.md_plots hugoniot SWEEP_DIR [--out FILE] [--compare CSV]
+      Us-Up points of `shockfield hugoniot` with their fit, the experimental line the sweep
+      wrote into hugoniot_fit.toml (copper, Marsh 1980) and optionally a peer sweep (e.g. LAMMPS)
 
-Uses only numpy and matplotlib from Debian (run with /usr/bin/python3).
+Reads the files through shockfield.run (Run, read_csv, read_toml). Uses only numpy and
+matplotlib from Debian (run with /usr/bin/python3).
 """
 import argparse
-import csv
 import os
-import sys
 
 import matplotlib
 
@@ -22,22 +19,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def read_csv(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if len(rows) < 2:
-        sys.exit(f"{path}: no data rows")
-    header = rows[0]
-    data = np.array([[float(x) for x in r] for r in rows[1:] if r], dtype=float)
-    return {name: data[:, k] for k, name in enumerate(header)}
+from shockfield.errors import InputError  # noqa: E402
+from shockfield.run import Run, read_csv, read_toml  # noqa: E402
 
 
-def plot_profiles(run, out, axis):
-    path = os.path.join(run, "profiles.csv")
-    if not os.path.exists(path):
-        sys.exit(f"{path}: not found (set [output] profile_every > 0 in the case file)")
-    p = read_csv(path)
+def plot_profiles(run, out, axis=None):
+    """profiles.csv of the MD run folder `run` at six times; `axis` default the run's
+    [output] profile_axis."""
+    run = Run.open(run)
+    axis = axis or run.config.get("output", {}).get("profile_axis", "z")
+    p = run.table("profiles")
     steps = np.unique(p["step"])
     chosen = steps[np.linspace(0, len(steps) - 1, min(6, len(steps))).round().astype(int)]
     vel = {"x": "vx_A_ps", "y": "vy_A_ps", "z": "vz_A_ps"}[axis]
@@ -55,32 +46,27 @@ def plot_profiles(run, out, axis):
             ax.set_ylabel(label)
     axes[0].legend(fontsize=8, loc="best")
     axes[-1].set_xlabel(f"position along {axis} (Å)")
-    fig.suptitle(f"Shock profiles: {os.path.basename(os.path.abspath(run))}")
+    fig.suptitle(run.title("shock profiles"))
     fig.tight_layout()
     fig.savefig(out, dpi=110)
-    print(f"wrote {out}")
 
 
-def plot_thermo(run, out):
-    t = read_csv(os.path.join(run, "thermo.csv"))
-    cols = [("temperature_K", "T (K)"), ("etotal_eV", "E total (eV)"), ("econserved_eV", "E conserved (eV)"),
-            ("press_bar", "P (bar)")]
-    fig, axes = plt.subplots(len(cols), 1, figsize=(7, 9), sharex=True)
-    for ax, (col, label) in zip(axes, cols):
-        ax.plot(t["time_ps"], t[col])
-        ax.set_ylabel(label)
-    axes[-1].set_xlabel("time (ps)")
-    fig.tight_layout()
-    fig.savefig(out, dpi=110)
-    print(f"wrote {out}")
-
-
-def plot_hugoniot(run, out, compare):
-    """hugoniot_sweep.csv (+ hugoniot_fit.toml): Us against Up with standard errors."""
-    p = read_csv(os.path.join(run, "hugoniot_sweep.csv"))
+def plot_hugoniot(folder, out, compare=None):
+    """hugoniot_sweep.csv (+ hugoniot_fit.toml's experimental line): Us against Up with
+    standard errors."""
+    sweep = os.path.join(folder, "hugoniot_sweep.csv")
+    if not os.path.isfile(sweep):
+        raise InputError(f"{folder}: no hugoniot_sweep.csv (the folder of `shockfield hugoniot`)")
+    p = read_csv(sweep)
+    fit_file = os.path.join(folder, "hugoniot_fit.toml")
+    fit = read_toml(fit_file) if os.path.isfile(fit_file) else {}
     fig, ax = plt.subplots(figsize=(6, 4.5))
     up = np.linspace(0.0, 1.1 * max(p["up_km_s"]), 50)
-    ax.plot(up, 3.940 + 1.489 * up, "k--", label="experiment: 3.94 + 1.489 Up (Marsh 1980)")
+    for table, line in fit.items():  # [experiment_<material>]: the sweep's reference line
+        if table.startswith("experiment_") and isinstance(line, dict):
+            c0, s = line["c0_km_s"], line["s"]
+            ax.plot(up, c0 + s * up, "k--",
+                    label=f"experiment, {table.removeprefix('experiment_')}: {c0:g} + {s:g} Up")
     ax.errorbar(p["up_km_s"], p["us_km_s"], yerr=p["us_stderr_km_s"], fmt="o", color="C0", label="shockfield")
     if len(p["up_km_s"]) > 1:
         s, c0 = np.polyfit(p["up_km_s"], p["us_km_s"], 1)
@@ -91,27 +77,26 @@ def plot_hugoniot(run, out, compare):
                     label=os.path.basename(compare))
     ax.set_xlabel("particle velocity Up (km/s)")
     ax.set_ylabel("shock velocity Us (km/s)")
+    ax.set_title(f"Hugoniot sweep {os.path.basename(os.path.abspath(folder))}", fontsize="medium")
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
-    print(f"wrote {out}")
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["profiles", "thermo", "hugoniot"])
+    ap.add_argument("kind", choices=["profiles", "hugoniot"])
     ap.add_argument("run")
     ap.add_argument("--out")
-    ap.add_argument("--axis", default="z", choices=["x", "y", "z"])
+    ap.add_argument("--axis", choices=["x", "y", "z"])
     ap.add_argument("--compare", help="hugoniot: a peer sweep CSV (up_km_s, us_km_s, us_stderr_km_s)")
     a = ap.parse_args()
     out = a.out or os.path.join(a.run, f"{a.kind}.png")
     if a.kind == "profiles":
         plot_profiles(a.run, out, a.axis)
-    elif a.kind == "hugoniot":
-        plot_hugoniot(a.run, out, a.compare)
     else:
-        plot_thermo(a.run, out)
+        plot_hugoniot(a.run, out, a.compare)
+    print(f"wrote {out}")
 
 
 if __name__ == "__main__":

@@ -1,24 +1,19 @@
 #!/usr/bin/python3
 """Plots of an MPM run folder written by `shockfield run` (method = "mpm").
 
-  mpm_plots.py porous RUN_DIR [--out FILE]         bottom-window means of density, pressure,
-                                                   temperature and u_y against time (seed Fig 19)
-                                                   with the paper's values at 250 ns, and the
-                                                   particles' temperature at the last frame
-  mpm_plots.py cavity RUN_DIR [RUN_DIR ...] [--out FILE]
-                                                   per run: particles around the cavity coloured
-                                                   by temperature at the last frame, and the
-                                                   cavity area and collapsibility against time
-                                                   (seed Figs 46, 50, 53)
+  python3 -m shockfield_plot.mpm_plots porous RUN_DIR [--out FILE]
+      bottom-window means of density, pressure, temperature and u_y against time (seed Fig 19)
+      with Xu et al.'s (2015) values at 250 ns when the run is their case, and the particles'
+      temperature at the last frame
+  python3 -m shockfield_plot.mpm_plots cavity RUN_DIR [RUN_DIR ...] [--out FILE]
+      per run: particles around the cavity coloured by temperature at the last frame, and the
+      cavity area and collapsibility against time (seed Figs 46, 50, 53)
 
-Reads series.csv and particles.pvd (VTK PolyData in any encoding shockfield writes, through
-vtk_arrays). Uses only numpy and matplotlib from Debian (run with /usr/bin/python3).
+Reads series.csv, config.resolved.toml and particles.pvd through shockfield.run.Run. Uses only
+numpy and matplotlib from Debian (run with /usr/bin/python3).
 """
 import argparse
-import csv
 import os
-import re
-import sys
 
 import matplotlib
 
@@ -26,40 +21,38 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-try:
-    from .vtk_arrays import read_vtk_arrays
-except ImportError:  # run as a script: python/shockfield_plot/mpm_plots.py
-    from vtk_arrays import read_vtk_arrays
+from shockfield.run import Run  # noqa: E402
 
-SEED_250NS = {"density": 3140.0, "pressure": 16.7e9, "temperature": 432.0}  # Xu et al. (2015) §4.1.1, Fig 19
-
-
-def read_series(run):
-    with open(os.path.join(run, "series.csv"), newline="") as f:
-        rows = list(csv.reader(f))
-    data = np.array([[float(x) for x in r] for r in rows[1:] if r], dtype=float)
-    return {name: data[:, k] for k, name in enumerate(rows[0])}
+# Xu et al. (2015) §4.1.1, Fig 19: the bottom window (h = 800 µm) at 250 ns of porous aluminium
+# (their §4.1 parameters, Δ = 0.029) driven at 1000 m/s against a rigid wall.
+SEED_250NS = {"density": 3140.0, "pressure": 16.7e9, "temperature": 432.0}
+SEED_CASE = {"library": "aluminium_seed000", "porosity": 0.029, "speed": 1000.0}
 
 
 def last_frame(run):
-    text = open(os.path.join(run, "particles.pvd")).read()
-    frames = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', text)
-    if not frames:
-        sys.exit(f"{run}: particles.pvd lists no frames (set [output] field_interval)")
-    t, name = frames[-1]
-    return float(t), read_vtp(os.path.join(run, name))
+    """(time, particles) of the last particle frame of the Run `run`."""
+    frame = run.last_frame(kind="particles")
+    return frame.time, frame.data
 
 
-def read_vtp(path):
-    """Arrays of a VTK PolyData file as written by shockfield (any encoding; vtk_arrays)."""
-    return read_vtk_arrays(path)
+def porous_case(run):
+    """(material, porosity, void radius, speed, loading type) of the run's first body."""
+    c = run.config
+    body = c["body"][0]
+    material = next((m for m in c["material"] if m["name"] == body["material"]), {})
+    return (material.get("library", body["material"]), body.get("porosity", 0.0), body.get("void_radius", 0.0),
+            c["loading"].get("speed", 0.0), c["loading"].get("type", ""))
 
 
 def porous(run, out):
-    s = read_series(run)
+    run = Run.open(run)
+    s = run.series
     t_ns = s["time_s"] * 1e9
-    heights = sorted({k.split("_")[1] for k in s if k.startswith("bottom_h") and k.endswith("_count")},
+    heights = sorted({k.split("_")[1] for k in s.dtype.names if k.startswith("bottom_h") and k.endswith("_count")},
                      key=lambda h: -float(h[1:-2]))
+    material, porosity, radius, speed, loading = porous_case(run)
+    seed_case = (material == SEED_CASE["library"] and abs(porosity - SEED_CASE["porosity"]) < 1e-9
+                 and speed == SEED_CASE["speed"] and loading == "wall" and "h800um" in heights)
     panels = [("density", 1e-3, "density (g/cm³)"), ("pressure", 1e-9, "pressure (GPa)"),
               ("temperature", 1.0, "temperature (K)"), ("uy", 1.0, "u_y (m/s)")]
     fig, axes = plt.subplots(2, 3, figsize=(13, 7))
@@ -67,7 +60,7 @@ def porous(run, out):
         for h in heights:
             ax.plot(t_ns, s[f"bottom_{h}_{q}_mean"] * scale, label=f"bottom, h = {h[1:-2]} µm")
             ax.plot(t_ns, s[f"top_{h}_{q}_mean"] * scale, ls=":", lw=1, label=f"top, h = {h[1:-2]} µm")
-        if q in SEED_250NS:
+        if seed_case and q in SEED_250NS:
             ax.plot([250], [SEED_250NS[q] * scale], "k*", ms=12, label="seed Fig 19, h = 800 µm")
         ax.set_xlabel("t (ns)")
         ax.set_ylabel(label)
@@ -83,15 +76,17 @@ def porous(run, out):
     ax.set_ylabel("x (mm)")
     ax.set_title(f"temperature at t = {t * 1e9:.0f} ns")
     fig.colorbar(sc, ax=ax, label="T (K)", shrink=0.7)
-    fig.suptitle(os.path.basename(os.path.normpath(run)) + ": porous Al, Δ = 0.029, r = 50 µm, 1000 m/s on a rigid wall")
+    against = "on a rigid wall" if loading == "wall" else f"({loading})"
+    fig.suptitle(f"{run.folder.name} ({run.case_name}): porous {material}, Δ = {porosity:g}, r = {radius * 1e6:g} µm, "
+                 f"{speed:g} m/s {against}")
     fig.tight_layout()
     fig.savefig(out, dpi=130)
 
 
 def cavity(runs, out):
     fig, axes = plt.subplots(1, len(runs) + 1, figsize=(4.2 * (len(runs) + 1), 4.6))
-    for ax, run in zip(axes, runs):
-        s = read_series(run)
+    for ax, run in zip(axes, map(Run.open, runs)):
+        s = run.series
         t, f = last_frame(run)
         p = f["points"] * 1e6
         sel = p[:, 1] < p[:, 1].max() / 2  # the lower body, where the tracked cavity is
@@ -100,10 +95,10 @@ def cavity(runs, out):
         ax.set_aspect("equal")
         ax.set_xlabel("x (µm)")
         ax.set_ylabel("y (µm)")
-        ax.set_title(f"{os.path.basename(os.path.normpath(run))}: t = {t * 1e9:.1f} ns\n"
+        ax.set_title(f"{run.folder.name}: t = {t * 1e9:.1f} ns\n"
                      f"Φ = {s['collapsibility'][-1]:.2f}", fontsize="small")
         fig.colorbar(sc, ax=ax, label="T (K)", shrink=0.7)
-        axes[-1].plot(s["time_s"] * 1e9, s["collapsibility"], label=os.path.basename(os.path.normpath(run)))
+        axes[-1].plot(s["time_s"] * 1e9, s["collapsibility"], label=run.folder.name)
     axes[-1].set_xlabel("t (ns)")
     axes[-1].set_ylabel("collapsibility Φ = (A0 − A)/A0")
     axes[-1].legend(fontsize="small")

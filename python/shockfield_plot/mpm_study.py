@@ -9,13 +9,12 @@
       over t ≥ T (default: the last quarter of the run), and with --at also at an earlier time
       (e.g. the first stall); a third panel shows Φ against time.
 
-Uses only numpy and matplotlib from Debian (run with /usr/bin/python3).
+Reads the runs through shockfield.run.Run. Uses only numpy and matplotlib from Debian (run with
+/usr/bin/python3).
 """
 import argparse
 import collections
 import csv
-import os
-import re
 import sys
 
 import matplotlib
@@ -24,28 +23,22 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def read_series(run):
-    with open(os.path.join(run, "series.csv"), newline="") as f:
-        rows = list(csv.reader(f))
-    data = np.array([[float(x) for x in r] for r in rows[1:] if r], dtype=float)
-    return {name: data[:, k] for k, name in enumerate(rows[0])}
+from shockfield.run import Run  # noqa: E402
 
 
 def resolved_value(run, key):
-    text = open(os.path.join(run, "config.resolved.toml")).read()
-    m = re.search(rf"^{key}\s*=\s*([-+0-9.eE]+)\s*$", text, re.M)
-    if not m:
-        sys.exit(f"{run}: no {key} in config.resolved.toml")
-    return float(m.group(1))
+    value = run.value(key)
+    if value is None:
+        sys.exit(f"{run.folder}: no {key} in config.resolved.toml")
+    return value
 
 
 def collapsibility(runs, late, at, out, csv_out):
     recs = []
-    for run in runs:
-        s = read_series(run)
-        if "collapsibility" not in s:
-            sys.exit(f"{run}: series.csv has no collapsibility column (no cavity?)")
+    for run in map(Run.open, runs):
+        s = run.series
+        if "collapsibility" not in s.dtype.names:
+            sys.exit(f"{run.folder}: series.csv has no collapsibility column (no cavity?)")
         t, phi = s["time_s"], s["collapsibility"]
         t_late = late if late is not None else 0.75 * t[-1]
         sel = t >= t_late - 1e-15

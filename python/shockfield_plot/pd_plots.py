@@ -1,18 +1,22 @@
 #!/usr/bin/python3
 """Plots of PD run folders written by `shockfield run` (method = "pd").
 
-  pd_plots.py bar RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
+  python3 -m shockfield_plot.pd_plots bar RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
       axial compression -sigma_xx and plastic measure against x at every profile time, one
       column per run (Liu et al. 2025, Fig. 3), with the run's derived HEL and impact stress as dashed
       lines.
 
-  pd_plots.py crystal RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
+  python3 -m shockfield_plot.pd_plots profiles RUN_DIR [--out FILE]
+      every displacement and velocity component and the damage against the reference x at up to
+      six of the run's profile times (profiles/points.pvd; points of a 2D or 3D body as dots).
+
+  python3 -m shockfield_plot.pd_plots crystal RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
       at the last profile time: axial compression (Fig. 8/10) and accumulated slip (Fig. 11)
       against x of every run on shared axes, grains of a polycrystal as alternating stripes
       (Fig. 12); prints each run's HEL (the compression where the slip first exceeds 1e-5, 1e-4
       and 2% of its plateau, scanning from the resting end) and mean slip behind the plastic wave.
 
-  pd_plots.py compression RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
+  python3 -m shockfield_plot.pd_plots compression RUN_DIR [RUN_DIR ...] [--labels L ...] [--out FILE]
       a [homogeneous] run (Liu et al. 2025, Fig. 5): every grain's axial compression against the
       compressive strain, the band mean ± SD, and the Taylor average (eq. 43); below, the
       soft-hard spread (max − min over the grains) and the SD against strain; prints the
@@ -21,26 +25,23 @@
       (Johnson & Cook 1983, fitted to their tests) at the run's strain rate and room temperature.
       Further runs add their Taylor average only (e.g. another hardening law).
 
-  pd_plots.py orientations RUN_DIR [--out FILE]
+  python3 -m shockfield_plot.pd_plots orientations RUN_DIR [--out FILE]
       a [homogeneous] run's grains (grain_summary.csv): the crystal direction along the loading
       axis before and after, in the standard stereographic triangle [001]-[101]-[111] (inverse
       pole figure; seed Fig. 5(a) shows the initial orientations); prints the mean angle from <110>.
 
-  pd_plots.py damage RUN_DIR [RUN_DIR ...] [--tips X,Y ...] [--labels L ...] [--out FILE]
+  python3 -m shockfield_plot.pd_plots damage RUN_DIR [RUN_DIR ...] [--tips X,Y ...] [--labels L ...] [--out FILE]
       a 2D run's damage at the last profile time on the reference positions (mm); for each notch
       tip (m; by default the `to` end of each [[crack]] of the run), the angle of the crack it grew, from the notch direction +x: the principal
       direction through the tip of the points with damage >= 0.35 ahead of it (x > tip x), more
       than 1 mm off its line and within 25 mm (the Kalthoff-Winkler angle; prints and draws it,
       beside the experiment's ~70 deg, Kalthoff & Winkler 1988, dotted).
 
-Reads profiles/index.csv, profiles/profile_<k>.csv and config.resolved.toml. Uses only numpy
-and matplotlib from Debian (run with /usr/bin/python3).
+Reads profiles/index.csv, profiles/profile_<k>.csv and config.resolved.toml through
+shockfield.run.Run. Uses only numpy and matplotlib from Debian (run with /usr/bin/python3).
 """
 import argparse
-import csv
 import os
-import re
-import tomllib
 
 import matplotlib
 
@@ -48,33 +49,22 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def read_csv(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    data = np.array([[float(x) for x in r] for r in rows[1:] if r], dtype=float)
-    return {name: data[:, k] for k, name in enumerate(rows[0])}
-
-
-def derived(run, key):
-    with open(os.path.join(run, "config.resolved.toml")) as f:
-        m = re.search(rf"^{key} = (\S+)", f.read(), re.M)
-    return float(m.group(1)) if m else None
+from shockfield.run import Frame, Run  # noqa: E402
+from shockfield_plot.profile_plots import Panel, chosen_frames, draw_profiles  # noqa: E402
 
 
 def bar(runs, labels, out):
     fig, axes = plt.subplots(2, len(runs), figsize=(5.5 * len(runs), 6), sharex="col", squeeze=False)
-    for col, (run, label) in enumerate(zip(runs, labels)):
-        index = read_csv(os.path.join(run, "profiles", "index.csv"))
+    for col, (run, label) in enumerate(zip(map(Run.open, runs), labels)):
         top, bottom = axes[0][col], axes[1][col]
-        for k, t in zip(index["profile"].astype(int), index["time_s"]):
+        for frame in run.frames(kind="profiles"):
+            t, p = frame.time, frame.data
             if t <= 0.0:
                 continue
-            p = read_csv(os.path.join(run, "profiles", f"profile_{k}.csv"))
             top.plot(p["x_m"] * 1e3, -p["sxx_Pa"] / 1e6, label=f"{t * 1e9:.0f} ns")
             bottom.plot(p["x_m"] * 1e3, p["plastic"], label=f"{t * 1e9:.0f} ns")
         for key, name in (("hel_Pa", "HEL"), ("impact_axial_stress_Pa", "impact state")):
-            v = derived(run, key)
+            v = run.value(key)
             if v is not None:
                 top.axhline(v / 1e6, color="grey", ls="--", lw=0.8)
                 top.annotate(f"{name} {v / 1e6:.1f} MPa", (0.01, v / 1e6), xycoords=("axes fraction", "data"),
@@ -88,10 +78,39 @@ def bar(runs, labels, out):
     fig.savefig(out, dpi=110)
 
 
+def point_columns(frame):
+    """A frame of profiles/points.pvd as profile columns: the reference x (m; the file holds
+    x + u), the displacement and velocity components and the damage of every point."""
+    p = frame.data
+    u, v = p["displacement"].astype(float), p["velocity"].astype(float)
+    columns = {"x_m": p["points"][:, 0] - u[:, 0]}
+    columns.update({f"u{a}_m": u[:, k] for k, a in enumerate("xyz")})
+    columns.update({f"v{a}_m_s": v[:, k] for k, a in enumerate("xyz")})
+    columns["damage"] = p["damage"]
+    table = np.empty(len(p), dtype=[(name, float) for name in columns])
+    for name, values in columns.items():
+        table[name] = values
+    return Frame(time=frame.time, data=table, file=frame.file)
+
+
+def profiles(runs, labels, out):
+    """The first run's points (profiles/points.pvd, written with every profile): displacements
+    (µm), velocities (m/s) and damage against the reference x; an impact's v/2 (the velocity
+    behind the waves of two equal halves) dashed on vx."""
+    run = Run.open(runs[0])
+    loading = run.config.get("loading", {})
+    half = [("impact speed / 2", loading["speed"] / 2)] if loading.get("type") == "impact" else []
+    panels = ([Panel(f"u{a}_m", f"displacement u{a} (µm)", 1e6) for a in "xyz"]
+              + [Panel(f"v{a}_m_s", f"velocity v{a} (m/s)", levels=half if a == "x" else []) for a in "xyz"]
+              + [Panel("damage", "damage")])
+    frames = [point_columns(frame) for frame in chosen_frames(run, kind="particles")]
+    draw_profiles(run, panels, "x_m", "x (mm)", out, x_scale=1e3, time_unit="s", columns=3, frames=frames)
+
+
 def last_profile(run):
-    index = read_csv(os.path.join(run, "profiles", "index.csv"))
-    k = int(index["profile"][-1])
-    return index["time_s"][-1], read_csv(os.path.join(run, "profiles", f"profile_{k}.csv"))
+    """(time, profile) of the last profile of the run folder `run`."""
+    frame = Run.open(run).last_frame(kind="profiles")
+    return frame.time, frame.data
 
 
 def hel(p, threshold=1e-5):
@@ -171,11 +190,11 @@ def johnson_cook_ofhc(plastic_strain, rate):
 
 
 def compression(runs, labels, out):
-    run = runs[0]
-    curve = read_csv(os.path.join(run, "stress_strain.csv"))
-    grains = read_csv(os.path.join(run, "grains.csv"))
+    run = Run.open(runs[0])
+    curve = run.table("stress_strain")
+    grains = run.table("grains")
     eps = -curve["strain"]
-    sigma = np.array([-v for k, v in grains.items() if k.startswith("grain_")]) / 1e6
+    sigma = np.array([-grains[k] for k in grains.dtype.names if k.startswith("grain_")]) / 1e6
     taylor, sd = -curve["taylor_axial_Pa"] / 1e6, curve["grain_sd_Pa"] / 1e6
     spread = sigma.max(axis=0) - sigma.min(axis=0)
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 7.5), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
@@ -187,11 +206,11 @@ def compression(runs, labels, out):
     top.fill_between(eps, taylor - sd, taylor + sd, color="tab:blue", alpha=0.2, label="Taylor average ± SD")
     top.plot(eps, taylor, color="tab:blue", lw=2.2,
              label=f"Taylor average (eq. 43), {sigma.shape[0]} grains" + (f", {labels[0]}" if len(runs) > 1 else ""))
-    others = [(label, -read_csv(os.path.join(r, "stress_strain.csv"))["taylor_axial_Pa"] / 1e6)
+    others = [(label, -Run.open(r).table("stress_strain")["taylor_axial_Pa"] / 1e6)
               for r, label in zip(runs[1:], labels[1:])]
     for (label, other), color in zip(others, ("tab:orange", "tab:purple", "tab:brown")):
         top.plot(eps, other, color=color, lw=2.2, label=f"Taylor average, {label}")
-    rate = abs(derived(run, "strain_rate"))
+    rate = abs(run.value("strain_rate"))
     reference = johnson_cook_ofhc(eps, rate)
     top.plot(eps, reference, color="k", ls="--", lw=1.5,
              label=f"OFHC Cu, Johnson & Cook 1983 fit to experiment, {rate:g}/s")
@@ -207,7 +226,7 @@ def compression(runs, labels, out):
     fig.tight_layout()
     fig.savefig(out, dpi=100)
     first = eps[np.argmax(spread >= 100.0)] if (spread >= 100.0).any() else float("nan")
-    print(f"{run}: Taylor average {taylor[-1]:.1f} MPa at strain {eps[-1]:.3g}; spread reaches 100 MPa at strain "
+    print(f"{runs[0]}: Taylor average {taylor[-1]:.1f} MPa at strain {eps[-1]:.3g}; spread reaches 100 MPa at strain "
           f"{first:.3g}, peaks at {spread.max():.1f} MPa (strain {eps[np.argmax(spread)]:.3g}); SD peaks at "
           f"{sd.max():.1f} MPa (strain {eps[np.argmax(sd)]:.3g}); at strain 0.01/0.05/0.1: spread "
           + ", ".join(f"{np.interp(e, eps, spread):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa, Taylor "
@@ -229,7 +248,7 @@ def standard_triangle(h, k, l):
 
 
 def orientations(runs, labels, out):
-    g = read_csv(os.path.join(runs[0], "grain_summary.csv"))
+    g = Run.open(runs[0]).table("grain_summary")
     fig, axes = plt.subplots(1, 2, figsize=(9, 4.8))
     t = np.linspace(0.0, 1.0, 50)
     arc = standard_triangle(t, np.ones_like(t), np.ones_like(t))  # the [101]-[111] edge
@@ -265,8 +284,7 @@ def crack_angle(x, y, damage, tip, reach=25.0):
 
 def crack_tips(run):
     """The `to` ends (m) of the run's [[crack]] tables."""
-    with open(os.path.join(run, "config.resolved.toml"), "rb") as f:
-        return [tuple(c["to"]) for c in tomllib.load(f).get("crack", [])]
+    return [tuple(c["to"]) for c in Run.open(run).config.get("crack", [])]
 
 
 def damage(runs, labels, out, given_tips):
@@ -291,7 +309,7 @@ def damage(runs, labels, out, given_tips):
             ax.plot([tip[0], tip[0] + r * np.cos(e)], [tip[1], tip[1] + side * r * np.sin(e)], ":", color="0.4", lw=1.2,
                     label="experiment, ~70°" if side > 0 else None)
         ax.set_aspect("equal")
-        if tips:
+        if ax.get_legend_handles_labels()[0]:  # the experiment line is drawn for a crack going up
             ax.legend(loc="lower right", fontsize=8)
         ax.set_xlabel("x (mm, impact direction)")
         ax.set_ylabel("y (mm)")
@@ -303,7 +321,7 @@ def damage(runs, labels, out, given_tips):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["bar", "crystal", "compression", "orientations", "damage"])
+    ap.add_argument("kind", choices=["bar", "profiles", "crystal", "compression", "orientations", "damage"])
     ap.add_argument("runs", nargs="+")
     ap.add_argument("--labels", nargs="*")
     ap.add_argument("--out", default="bar.png")
@@ -313,7 +331,7 @@ def main():
     if a.kind == "damage":
         damage(a.runs, labels, a.out, [tuple(float(v) for v in tip.split(",")) for tip in a.tips])
         return
-    {"bar": bar, "crystal": crystal, "compression": compression, "orientations": orientations}[a.kind](
+    {"bar": bar, "profiles": profiles, "crystal": crystal, "compression": compression, "orientations": orientations}[a.kind](
         a.runs, labels, a.out)
 
 

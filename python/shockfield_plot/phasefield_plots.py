@@ -1,49 +1,46 @@
 #!/usr/bin/python3
 """Figures of phase-field run folders (docs/phasefield.md), used by `shockfield plot`.
 
-  phasefield_plots.py phasefield RUN_DIR [--out FILE]
+  python3 -m shockfield_plot.phasefield_plots phasefield RUN_DIR [--out FILE]
       left: the equivalent radius and the principal semi-axes of the hcp set against time
       (series.csv; a sharp-front run: its largest and mean radius), with the growth speed dR/dt (central differences between rows) on a second
       axis; right: ξ on the middle slice (z in 3D) of the last frame, the ξ = 1/2 contour drawn
       -> RUN_DIR/phasefield.png
+
+Reads series.csv and the fields (fields.pvd) through shockfield.run.Run.
 """
-import argparse, csv, glob, os, re
+import argparse, os
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from shockfield_plot.vtk_arrays import read_vtk_arrays
-
-
-def _series(run):
-    rows = list(csv.DictReader(open(os.path.join(run, "series.csv"))))
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+from shockfield.errors import InputError
+from shockfield.run import Run
 
 
 def _last_frame(run):
-    frames = glob.glob(os.path.join(run, "fields", "xi_*.vti"))
-    if not frames:
+    """ξ on the middle slice (z) of the run's last field frame and the grid spacing; (None, None)
+    for a run without fields."""
+    try:
+        frame = run.last_frame(array="xi", kind="fields")
+    except InputError:
         return None, None
-    last = max(frames, key=lambda f: int(re.search(r"xi_(\d+)\.vti$", f).group(1)))
-    text = open(last, "rb").read(4000).decode("latin-1")
-    extent = [int(v) for v in re.search(r'WholeExtent="([^"]+)"', text).group(1).split()]
-    n = [extent[1] + 1, extent[3] + 1, extent[5] + 1]
-    spacing = float(re.search(r'Spacing="([^ "]+)', text).group(1))
-    xi = read_vtk_arrays(last)["xi"].reshape(n[2], n[1], n[0])
-    return xi[n[2] // 2], spacing
+    xi = frame.data[frame.data.shape[0] // 2] if frame.data.ndim == 3 else np.atleast_2d(frame.data)
+    return xi, float(np.ravel(frame.extra["spacing"])[0])
 
 
 def phasefield(run, out):
-    s = _series(run)
+    run = Run.open(run)
+    s = run.series
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
     t = s["time"]
     left.plot(t, s["equivalent_radius"], "k-", label="equivalent radius")
     # The field model's semi-axes; the sharp-front option's (kind = "sharp_front") largest and mean radius.
     for key, style in (("axis_a", "C0--"), ("axis_b", "C1--"), ("axis_c", "C2--"), ("max_radius", "C3--"),
                        ("mean_radius", "C4:")):
-        if key in s and np.any(s[key] > 0):
+        if key in s.dtype.names and np.any(s[key] > 0):
             left.plot(t, s[key], style, label=key.replace("_", " "))
     left.set_xlabel("time (model units)")
     left.set_ylabel("length (model units)")
@@ -53,7 +50,7 @@ def phasefield(run, out):
         twin = left.twinx()
         twin.plot(t, speed, "r:", label="dR/dt")
         twin.set_ylabel("growth speed dR/dt", color="r")
-    left.set_title(os.path.basename(os.path.normpath(run)))
+    left.set_title(f"{run.folder.name} ({run.case_name})")
     xi, h = _last_frame(run)
     if xi is None:
         right.set_axis_off()

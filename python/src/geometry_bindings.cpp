@@ -1,8 +1,9 @@
-// shockfield._core's Delaunay division and point clusters on numpy arrays
-// (python/shockfield/analysis.py's `delaunay` wraps it): the functions `shockfield analyze
-// geometry` calls (geometry/delaunay.hpp, delaunay_clusters.hpp; Xu et al. (2015) §3.2.3).
-// Points are a C-contiguous (n, 2) or (n, 3) float64 array, copied once into the library's point
-// list; the division runs with the GIL released (it is serial: `threads` does not apply).
+// shockfield._core's Delaunay division, point clusters and surfaces on numpy arrays
+// (python/shockfield/analysis.py's `delaunay` and `surface` wrap them): the functions `shockfield
+// analyze geometry` calls (geometry/delaunay.hpp, delaunay_clusters.hpp, point_set_surface.hpp;
+// Xu et al. (2015) §3.2.3). Points are a C-contiguous (n, 2) or (n, 3) float64 array, copied once
+// into the library's point list; the work runs with the GIL released (it is serial: `threads`
+// does not apply).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -15,6 +16,8 @@
 #include "bindings.hpp"
 #include "shockfield/geometry/delaunay.hpp"
 #include "shockfield/geometry/delaunay_clusters.hpp"
+#include "shockfield/geometry/delaunay_output.hpp"
+#include "shockfield/geometry/point_set_surface.hpp"
 
 namespace py = pybind11;
 namespace sg = shockfield::geometry;
@@ -68,24 +71,61 @@ py::dict divide(const py::array& points, double cluster_distance, const std::str
   return out;
 }
 
-py::dict delaunay(const py::array& points, double cluster_distance, const std::string& rule) {
+// TypeError / ValueError unless `points` is a C-contiguous float64 array of `columns` columns
+// (0: 2 or 3).
+void check_points(const py::array& points, int columns) {
   if (points.dtype().num() != py::dtype::of<double>().num())
     throw py::type_error("points: expected dtype float64, got " + std::string(py::str(points.dtype())));
-  if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
-    throw py::value_error("points: expected an (n, 2) or (n, 3) array, got " + std::to_string(points.ndim()) +
+  const std::string expected = columns == 3 ? "an (n, 3) array" : "an (n, 2) or (n, 3) array";
+  if (points.ndim() != 2 || (columns == 3 && points.shape(1) != 3) || (points.shape(1) != 2 && points.shape(1) != 3))
+    throw py::value_error("points: expected " + expected + ", got " + std::to_string(points.ndim()) +
                           " dimension(s)" + (points.ndim() == 2 ? " of " + std::to_string(points.shape(1)) + " columns" : ""));
   if (!(points.flags() & py::array::c_style))
     throw py::value_error("points: the array is not C-contiguous; pass numpy.ascontiguousarray(points)");
+}
+
+py::dict delaunay(const py::array& points, double cluster_distance, const std::string& rule) {
+  check_points(points, 0);
   if (rule != "xu2015" && rule != "single-linkage" && rule != "both")
     throw py::value_error("rule: expected 'xu2015', 'single-linkage' or 'both', got '" + rule + "'");
   if (cluster_distance < 0.0) throw py::value_error("cluster_distance: expected a distance > 0 (or 0: no clusters)");
   return points.shape(1) == 2 ? divide<2>(points, cluster_distance, rule) : divide<3>(points, cluster_distance, rule);
 }
 
+// The surface of `analyze geometry --surface-method method` with the ball's radius or the
+// sculpting depth `length`: the points the triangles use (as surface.vtp lists them) with their
+// indices in `points`, the triangles on them, and the summary.txt numbers.
+py::dict surface(const py::array& points, const std::string& method, double length) {
+  check_points(points, 3);
+  if (method != "delaunay" && method != "pivot" && method != "packing")
+    throw py::value_error("method: expected 'delaunay', 'pivot' or 'packing', got '" + method + "'");
+  std::vector<std::array<double, 3>> list(static_cast<std::size_t>(points.shape(0)));
+  sg::TriangleSurface s;
+  sg::SurfaceMesh mesh;
+  {
+    py::gil_scoped_release release;
+    if (!list.empty()) std::memcpy(list.data(), points.data(), list.size() * sizeof(list[0]));
+    s = sg::point_set_surface(sg::delaunay_division<3>(std::move(list), "points"), method, length);
+    mesh = sg::surface_mesh(s.points.size(), s.triangles);
+  }
+  std::vector<std::array<double, 3>> used(mesh.used.size());
+  for (std::size_t k = 0; k < used.size(); ++k) used[k] = s.points[static_cast<std::size_t>(mesh.used[k])];
+  py::dict out;
+  out["points"] = rows_to_numpy(used);
+  out["point_index"] = to_numpy(mesh.used);
+  out["triangles"] = rows_to_numpy(mesh.triangles);
+  out["area"] = s.area;
+  out["volume"] = s.volume;
+  out["euler_characteristic"] = s.euler_characteristic;
+  out["manifold"] = s.manifold;
+  return out;
+}
+
 }  // namespace
 
 void bind_geometry(py::module_& m) {
   m.def("delaunay", &delaunay, py::arg("points"), py::arg("cluster_distance"), py::arg("rule"));
+  m.def("surface", &surface, py::arg("points"), py::arg("method"), py::arg("length"));
 }
 
 }  // namespace shockfield::python

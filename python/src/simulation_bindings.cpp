@@ -23,6 +23,7 @@
 
 #include "bindings.hpp"
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/derived_arrays.hpp"
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/registry/method_registry.hpp"
 
@@ -45,17 +46,19 @@ std::size_t item_size(StateArray::Type type) { return type == StateArray::Type::
 class InProcessRun {
  public:
   InProcessRun(const std::string& case_file, const std::vector<std::string>& overrides, const std::string& output,
-               int threads, bool overwrite, bool quiet)
+               int threads, bool overwrite, bool quiet, bool resume)
       : threads_(threads) {
     RunOptions options;
     options.case_file = case_file;
     if (!output.empty()) options.output = output;
     options.overwrite = overwrite;
+    options.resume = resume;
     options.threads = threads;
     options.quiet = quiet;
     options.overrides = overrides;
     options.command_line = {"python: shockfield.Simulation", case_file};
     for (const std::string& o : overrides) options.command_line.insert(options.command_line.end(), {"--set", o});
+    if (resume) options.command_line.push_back("--resume");
     const ThreadCount thread_count(threads);
     py::gil_scoped_release release;
     const Config root = Config::load(options.case_file, options.overrides);
@@ -118,6 +121,20 @@ class InProcessRun {
     check_views();
   }
 
+  /// Stops the run as Ctrl-C does (a checkpoint; summary.json "stopped"): a Simulation with
+  /// resume=True continues it. Returns the message saying how.
+  std::string stop() {
+    require_running("stop()");
+    const ThreadCount thread_count(threads_);
+    std::string message;
+    {
+      py::gil_scoped_release release;
+      message = driver_->stop();
+    }
+    finished_ = true;
+    return message;
+  }
+
   /// The method's state arrays (per particle, or a grid's field) as numpy views whose base is `self`.
   static py::dict arrays(py::object self) {
     InProcessRun& run = self.cast<InProcessRun&>();
@@ -137,6 +154,28 @@ class InProcessRun {
     return views;
   }
 
+  /// The fields the method computes from its state (DerivedArrays), as numpy copies.
+  py::dict fields() const {
+    const auto* derived = dynamic_cast<const DerivedArrays*>(&driver_->method());
+    if (!derived)
+      throw py::value_error(fmt::format("fields(): the {} method computes no fields from its state; its state "
+                                        "arrays are arrays()", method_name()));
+    std::vector<DerivedArray> arrays;
+    {
+      py::gil_scoped_release release;
+      arrays = derived->derived_arrays();
+    }
+    if (arrays.empty()) throw py::value_error("fields(): a decomposed (MPI) run offers no fields: its state lives in the ranks' blocks");
+    py::dict out;
+    for (const DerivedArray& a : arrays) {
+      const std::vector<py::ssize_t> shape(a.shape.begin(), a.shape.end());
+      py::array_t<double> copy(shape);
+      std::copy(a.values.begin(), a.values.end(), copy.mutable_data());
+      out[py::str(a.name)] = copy;
+    }
+    return out;
+  }
+
   static py::dict units(const InProcessRun& run) {
     py::dict u;
     for (const StateArray& a : run.driver_->method().state_arrays()) u[py::str(a.name)] = a.unit;
@@ -145,7 +184,7 @@ class InProcessRun {
 
  private:
   void require_running(const std::string& what) const {
-    if (finished_) throw py::value_error(what + ": the run was closed by finish()");
+    if (finished_) throw py::value_error(what + ": the run was closed by finish() or stop()");
     if (!open_) throw py::value_error(what + ": the resumed run had nothing left to do");
   }
 
@@ -178,9 +217,9 @@ class InProcessRun {
 
 void bind_simulation(py::module_& m) {
   py::class_<InProcessRun>(m, "Simulation", "A case run in-process; use shockfield.Simulation")
-      .def(py::init<const std::string&, const std::vector<std::string>&, const std::string&, int, bool, bool>(),
+      .def(py::init<const std::string&, const std::vector<std::string>&, const std::string&, int, bool, bool, bool>(),
            py::arg("case_file"), py::arg("overrides"), py::arg("output"), py::arg("threads"), py::arg("overwrite"),
-           py::arg("quiet"))
+           py::arg("quiet"), py::arg("resume"))
       .def_property_readonly("method", &InProcessRun::method_name)
       .def_property_readonly("step_number", &InProcessRun::step_number)
       .def_property_readonly("time", &InProcessRun::time)
@@ -192,7 +231,9 @@ void bind_simulation(py::module_& m) {
       .def("thermo", &InProcessRun::thermo)
       .def("step", &InProcessRun::step, py::arg("n") = 1)
       .def("finish", &InProcessRun::finish)
+      .def("stop", &InProcessRun::stop)
       .def("arrays", &InProcessRun::arrays)
+      .def("fields", &InProcessRun::fields)
       .def("units", &InProcessRun::units);
 }
 

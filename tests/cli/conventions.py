@@ -11,7 +11,8 @@ files in UNITS_IN_FILES): every column carries its unit as a suffix (time_s, kin
 signal_depth_m) or is a pure number listed in DIMENSIONLESS. The totals of the MPM and PD series:
 a unit suffix and, in 1D or 2D, the per-area or per-length label. Every checkpoint.h5 (docs/checkpoints.md; read with h5py): the root attributes
 format, method (the run's), format_version, shockfield_version, git_commit, case (the text of the
-run's config.resolved.toml) and case_sha256 (its SHA-256); integer counters (step, format_version)
+run's config.resolved.toml), case_sha256 (its SHA-256) and case_input (the case as read: TOML,
+naming the run's method); integer counters (step, format_version)
 stored as integers; a units attribute on every dataset. Prints each violation with its file and
 exits 1 if there is any.
 """
@@ -19,6 +20,7 @@ import hashlib
 import pathlib
 import re
 import sys
+import tomllib
 
 TIME_COLUMNS = {"time", "time_s", "time_ps", "Time"}
 # The time column of series-like CSVs per method: SI methods "time_s", MD (metal units)
@@ -99,7 +101,7 @@ def check_csv(path, method, dim=3):
 
 
 CHECKPOINT_ATTRIBUTES = ("format", "method", "format_version", "shockfield_version", "git_commit", "case",
-                         "case_sha256")
+                         "case_sha256", "case_input")
 
 
 def text(value):
@@ -126,12 +128,21 @@ def check_checkpoint(path, method):
                 yield f"{path}: attribute 'case' is not the run's config.resolved.toml"
             if "case_sha256" in attrs and hashlib.sha256(case.encode()).hexdigest() != text(attrs["case_sha256"]):
                 yield f"{path}: attribute 'case_sha256' is not the SHA-256 of 'case'"
+        if "case_input" in attrs:
+            try:
+                given = tomllib.loads(text(attrs["case_input"]))
+                if method and given.get("method", method) != method:
+                    yield f"{path}: attribute 'case_input' is not a {method} case"
+            except tomllib.TOMLDecodeError as e:
+                yield f"{path}: attribute 'case_input' is not TOML ({e})"
         # A variant of a method names itself after it: phasefield.sharp_front in a phasefield run.
         if method and "method" in attrs and text(attrs["method"]).split(".")[0] != method:
             yield f"{path}: method '{text(attrs['method'])}' in a {method} run"
         for name, dataset in f.items():
             if "units" not in dataset.attrs:
                 yield f"{path}: dataset '{name}' has no units attribute"
+            elif text(dataset.attrs["units"]) == "mixed":
+                yield f"{path}: dataset '{name}' is an opaque mix ('mixed' units): store one dataset per quantity"
 
 
 def main():

@@ -28,6 +28,7 @@ cp "$WORK/mpm_tiny/checkpoint.h5" "$WORK/broken/"
 /usr/bin/python3 -c 'import h5py, sys
 with h5py.File(sys.argv[1], "r+") as f:
     del f["pressure"].attrs["units"]
+    f["mass"].attrs["units"] = "mixed"
     f.attrs["step"] = 66.0' "$WORK/broken/checkpoint.h5"
 mkdir -p "$WORK/broken_granular"
 cp "$WORK/granular_tiny/config.resolved.toml" "$WORK/broken_granular/"
@@ -53,6 +54,7 @@ set -e
 for p in "series.csv: 2 time columns" "profile.csv: time column 'time_ps'; a mpm run names it 'time_s'" \
          "DataArray 'temperature' has no units attribute" "checkpoint.h5: dataset 'pressure' has no units attribute" \
          "checkpoint.h5: attribute 'step' is not stored as an integer" \
+         "checkpoint.h5: dataset 'mass' is an opaque mix" \
          "checkpoint.h5: attribute 'case' is not the run's config.resolved.toml"; do
   grep -qF "$p" "$WORK/broken.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken.txt"))"
 done

@@ -7,7 +7,13 @@
 # tables are refused before the run with the file, key and what was expected (a crack outside the
 # body, a zero-length crack, a corner of the wrong dimension, a crack in a 1D bar, a non-planar
 # polygon in 3D; a region selecting no point, with both or neither velocity, a velocity of the
-# wrong size, no loading at all, overlapping bodies, a separate body without contact).
+# wrong size, no loading at all, overlapping bodies, a separate body without contact). A bar with a
+# ramped prescribed displacement and a velocity formula runs as prescribed (its resume:
+# stop_resume.sh pd_loading) and runs bitwise the same with the formula's values from a velocity
+# file; bad formulas, files, displacements and ramps are refused before the run. The bar and the
+# plate as point clouds from files (points_file) run bitwise as their lattices; bad clouds
+# (coinciding or isolated points, counts beside points_file, a bad line) and regions selecting no
+# point of a cloud are refused.
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -120,4 +126,111 @@ xlo = 4.25e-3
 separate = true" "region[1].separate" "overlaps the separate body of region[0]"
 expect_error "${j2/"$edge"/xhi = 2.5e-3
 separate = true}" "region[0].separate" "contact force"
+
+# The bar of pd_bar_loading.toml: its first 3 points displaced by 1 µm over 0.2 µs, its right
+# quarter (x >= 15 mm, 100 points) starting at 1e3·(x − 15 mm) m/s.
+bar_case="$ROOT/tests/cli/cases/pd_bar_loading.toml"
+"$SF" run "$bar_case" --output "$WORK/bar" -q > /dev/null
+grep -q "region 0: 3 points displaced by (1e-06, 0, 0) m ramped over 2e-07 s" "$WORK/bar/log.txt" ||
+  fail "the displaced end is not reported: $(grep region "$WORK/bar/log.txt")"
+grep -q "region 1: 100 points starting at the velocity (1e3 \* (x - 15e-3)) m/s" "$WORK/bar/log.txt" ||
+  fail "the formula is not reported: $(grep region "$WORK/bar/log.txt")"
+# At t = 0 the formula's velocities (x = 17.5 mm: 2.5 m/s; 10 mm: 0); at the end (t = 0.4 µs,
+# after the ramp) the displaced end at exactly 1 µm and at rest.
+awk -F, 'NR > 1 && ($1 == 0.0175 && $5 != 2.5 || $1 == 0.01 && $5 != 0) { bad = bad " " $1 ": " $5 }
+         END { if (bad != "") { print "velocities at t = 0:" bad; exit 1 } }' "$WORK/bar/profiles/profile_0.csv" ||
+  fail "the velocity formula was not applied"
+awk -F, 'NR > 1 && $1 <= 0.000125 { if ($4 != 1e-06 || $5 != 0) bad = bad " " $1 ": " $4 " " $5; n++ }
+         END { if (bad != "" || n != 3) { print n " points:" bad; exit 1 } }' "$WORK/bar/profiles/profile_4.csv" ||
+  fail "the displaced end is not at 1 µm at rest after the ramp"
+grep -q "region 2: 3 points with the body force (-1000000000000, 0, 0) N/m³" "$WORK/bar/log.txt" ||
+  fail "the body force is not reported: $(grep region "$WORK/bar/log.txt")"
+# The body force turns the last point back: vx at t = 0.4 µs is −0.28 m/s, +2.71 without it (its
+# impulse is checked in tests/unit/pd/test_regions.cpp).
+awk -F, 'NR > 1 && $1 == 0.01995 { exit !($5 < 0) }' "$WORK/bar/profiles/profile_4.csv" ||
+  fail "the pushed end was not slowed by the body force"
+echo "ok: ramped displacement, velocity formula and body force applied"
+# (Stopped mid-ramp and resumed bitwise: cli.stop_resume.pd_loading.)
+bar_files="series.csv profiles/index.csv $(cd "$WORK/bar" && ls profiles/profile_*.csv profiles/points_*.vtp)"
+# The formula's values at the lattice points (x = 50 µm · i, as lattice_cloud places them; the
+# same IEEE operations in Python) to 17 digits: the velocity_file route gives the same files.
+/usr/bin/python3 -c "
+print('x,y,z,vx,vy,vz')
+for i in range(300, 400):
+    x = 50e-6 * i
+    print(f'{x!r},0,0,{1e3 * (x - 15e-3)!r},0,0')" > "$WORK/bar_velocity.csv"
+formula='velocity_formula = ["1e3 * (x - 15e-3)"]'
+bar_text=$(cat "$bar_case")
+echo "${bar_text/"$formula"/velocity_file = \"$WORK/bar_velocity.csv\"}" > "$WORK/bar_file.toml"
+"$SF" run "$WORK/bar_file.toml" --output "$WORK/bar_file" -q > /dev/null
+same_files "$WORK/bar" "$WORK/bar_file" $bar_files
+echo "ok: velocity_file gives the velocity_formula run bitwise"
+expect_error "${bar_text/"$formula"/velocity_formula = [\"1e3 * (x - \"]}" "region[1].velocity_formula" "character 12" \
+  "the text ends where a number"
+expect_error "${bar_text/"$formula"/velocity_formula = [\"1e3 * t\"]}" "region[1].velocity_formula" "character 7" \
+  "unknown name 't'"
+expect_error "${bar_text/"$formula"/velocity_formula = [\"x\", \"0\"]}" "region[1].velocity_formula" "2 formulas (expected 1"
+expect_error "${bar_text/"$formula"/velocity_formula = [\"sqrt(x - 0.0175)\"]}" "region[1].velocity_formula" \
+  "is not finite" "at the point (0.015000000000000001, 0, 0) m"
+expect_error "${bar_text/"$formula"/velocity_formula = [1.0]}" "region[1].velocity_formula"
+expect_error "${bar_text/"$formula"/$formula
+ramp_time = 1e-7}" "region[1].ramp_time" "only a prescribed_displacement"
+expect_error "${bar_text/"$formula"/$formula
+velocity = [1.0]}" "region[1]" "exactly one of velocity, velocity_formula"
+expect_error "${bar_text/ramp_time = 2e-7/ramp_time = -1e-7}" "region[0].ramp_time"
+expect_error "${bar_text/"body_force = [-1e12]"/body_force = [-1e12, 0.0]}" "region[2].body_force" "1 number"
+expect_error "${bar_text/"prescribed_displacement = [1e-6]"/prescribed_displacement = [1e-6, 0.0]}" \
+  "region[0].prescribed_displacement" "1 number"
+expect_error "${bar_text/"$formula"/velocity_file = \"missing.csv\"}" "region[1].velocity_file" "missing.csv"
+sed 's/^x,y,z,vx,vy,vz$/x,y,vx/' "$WORK/bar_velocity.csv" > "$WORK/bad_header.csv"
+expect_error "${bar_text/"$formula"/velocity_file = \"$WORK/bad_header.csv\"}" "region[1].velocity_file" \
+  "bad_header.csv:1" "expected the header 'x,y,z,vx,vy,vz'"
+sed '3d' "$WORK/bar_velocity.csv" > "$WORK/skipped_row.csv"
+expect_error "${bar_text/"$formula"/velocity_file = \"$WORK/skipped_row.csv\"}" "region[1].velocity_file" \
+  "skipped_row.csv:3" "not that of the region's point 1"
+head -n 50 "$WORK/bar_velocity.csv" > "$WORK/short.csv"
+expect_error "${bar_text/"$formula"/velocity_file = \"$WORK/short.csv\"}" "region[1].velocity_file" \
+  "49 velocity rows for the 100 points"
+echo "ok: bad formulas, velocity files, displacements and ramps refused"
+
+# Point clouds from files: the bar's and the plate's lattice points (x = ΔX·i, volume ΔX^dim as
+# lattice_cloud makes them; Python's float arithmetic and pow are the same IEEE operations) give
+# the lattice runs bitwise, pre-crack, held edge and separate disc included.
+/usr/bin/python3 -c "
+for i in range(400):
+    print(f'{50e-6 * i!r} 0 0 {pow(50e-6, 1)!r}')" > "$WORK/bar_cloud.txt"
+/usr/bin/python3 -c "
+print('# the 40 x 20 lattice of pd_plate_loading.toml, x fastest')
+for j in range(20):
+    for i in range(40):
+        print(f'{1e-3 * i!r} {1e-3 * j!r} 0 {pow(1e-3, 2)!r}')" > "$WORK/plate_cloud.txt"
+echo "${bar_text/"counts = [400]"/points_file = \"$WORK/bar_cloud.txt\"}" > "$WORK/bar_cloud.toml"
+"$SF" run "$WORK/bar_cloud.toml" --output "$WORK/bar_cloud" -q > /dev/null
+same_files "$WORK/bar" "$WORK/bar_cloud" $bar_files
+echo "${plate/"counts = [40, 20]"/points_file = \"$WORK/plate_cloud.txt\"}" > "$WORK/plate_cloud.toml"
+"$SF" run "$WORK/plate_cloud.toml" --output "$WORK/plate_cloud" -q > /dev/null
+same_files "$WORK/plate" "$WORK/plate_cloud" series.csv profiles/profile_0.csv
+grep -q "pre-cracks: 1 crack(s) cut 169 bonds (broken from step 0)" "$WORK/plate_cloud/log.txt" ||
+  fail "the cloud plate's pre-crack differs: $(grep pre-cracks "$WORK/plate_cloud/log.txt")"
+echo "ok: bar and plate from points_file run bitwise as their lattices"
+cloud_bar=$(cat "$WORK/bar_cloud.toml")
+expect_error "${cloud_bar/dim = 1/dim = 1
+counts = [400]}" "body.counts" "not both"
+{ cat "$WORK/bar_cloud.txt"; echo "5e-05 0 0 5e-05"; } > "$WORK/twice.txt"
+expect_error "${cloud_bar/bar_cloud.txt/twice.txt}" "body.points_file" "points 1 and 400" "overlap"
+{ cat "$WORK/bar_cloud.txt"; echo "0.05 0 0 5e-05"; } > "$WORK/isolated.txt"
+expect_error "${cloud_bar/bar_cloud.txt/isolated.txt}" "body.horizon_factor" "point 400" "no neighbour within the horizon"
+expect_error "${cloud_bar/horizon_factor = 3.015/horizon_factor = 0.5}" "body.horizon_factor" "smaller than the spacing"
+sed '3s/.*/0.0001 0 0/' "$WORK/bar_cloud.txt" > "$WORK/short_line.txt"
+expect_error "${cloud_bar/bar_cloud.txt/short_line.txt}" "body.points_file" "short_line.txt:3" "expected 'x y z volume'"
+expect_error "${cloud_bar/bar_cloud.txt/no_such_cloud.txt}" "body.points_file" "no_such_cloud.txt"
+expect_error "${cloud_bar/xlo = 15e-3/xlo = 25e-3}" "region[1].shape" "selects no point of the body (400 points within"
+plate_cloud=$(cat "$WORK/plate_cloud.toml")
+expect_error "$plate_cloud
+[[region]]
+shape = \"block\"
+xlo = 30e-3
+ylo = 12e-3
+separate = true" "region[2].separate" "overlaps the separate body of region[1]"
+echo "ok: bad point clouds refused"
 echo "pd_loading: all cases passed"

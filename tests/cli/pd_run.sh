@@ -60,4 +60,30 @@ block="${block/model = \"pmb\"/model = \"lps\"}"
 echo "${block/micromodulus = 2.989065910664636e22/bulk = 14.9e9
 shear = 8.94e9}" > "$WORK/block_lps.toml"
 stop_and_resume block_lps 250 1
-echo "pd_run: run folder, derived values and bitwise resume (J2; PMB and LPS after bonds broke; the block with contact)"
+# The crystal law on a Taylor aggregate of 2 random grains per point, stopped while it flows: its
+# state goes through the checkpoint as one dataset per quantity, per point and grain
+# (docs/checkpoints.md). 48 steps (the crystal law costs ~0.05 s a step here).
+crystal="${base/"$j2"/model = \"crystal\"
+density = 8960.0
+orientation = \"random\"
+taylor_grains = 2}"
+echo "${crystal/end_time = 2e-7/end_time = 1e-7}" > "$WORK/crystal.toml"
+"$SF" run "$WORK/crystal.toml" --output "$WORK/crystal_straight" -q > /dev/null
+stop_then_resume "$WORK/crystal.toml" "$WORK/crystal_split" 30
+same_files "$WORK/crystal_straight" "$WORK/crystal_split" series.csv profiles/index.csv \
+  $(cd "$WORK/crystal_straight" && ls profiles/profile_*.csv)
+/usr/bin/python3 - "$WORK/crystal_split/checkpoint.h5" <<'PY' || fail "crystal checkpoint layout"
+import sys, h5py, numpy
+with h5py.File(sys.argv[1]) as f:
+    expected = {"deformation_gradient": ((400, 9), "1"), "orientation": ((400, 2, 9), "1"),
+                "slip_resistance": ((400, 2, 12), "Pa"), "slip": ((400, 2, 12), "1"),
+                "accumulated_slip": ((400, 2), "1"), "substeps": ((400, 2), "1")}
+    for name, (shape, units) in expected.items():
+        d = f[name]
+        assert d.shape == shape and d.attrs["units"].decode() == units, (name, d.shape, d.attrs["units"])
+    assert numpy.issubdtype(f["substeps"].dtype, numpy.integer), f["substeps"].dtype
+    assert f["accumulated_slip"][...].max() > 0, "no slip: the test would not exercise the plastic state"
+    assert "model_state" not in f
+PY
+echo "ok: crystal (2 Taylor grains) resumed while flowing, bitwise; its state as named datasets"
+echo "pd_run: run folder, derived values and bitwise resume (J2; PMB and LPS after bonds broke; the block with contact; a crystal aggregate)"

@@ -56,7 +56,7 @@ echo "$explicit_walls" > "$WORK/walls.toml"
 /usr/bin/python3 - "$WORK/walls/fields/xi_3.vti" "$ROOT/python" <<'PYEOF' || fail "the dirichlet walls do not hold 1 and 0"
 import sys
 sys.path.insert(0, sys.argv[2])
-from shockfield_plot.vtk_arrays import read_vtk_arrays
+from shockfield.vtk_arrays import read_vtk_arrays
 xi = read_vtk_arrays(sys.argv[1])["xi"].reshape(40, 48)
 assert (xi[:, 0] == 1.0).all() and (xi[:, -1] == 0.0).all(), (xi[:, 0], xi[:, -1])
 PYEOF
@@ -74,7 +74,7 @@ echo "$from_file" > "$WORK/from_file.toml"
 import sys
 import numpy as np
 sys.path.insert(0, sys.argv[3])
-from shockfield_plot.vtk_arrays import read_vtk_arrays
+from shockfield.vtk_arrays import read_vtk_arrays
 a, b = (read_vtk_arrays(f)["xi"] for f in sys.argv[1:3])
 assert np.array_equal(a, b), np.abs(a - b).max()
 PYEOF

@@ -17,6 +17,10 @@ case "$method" in
   pd) case_file="$cases/pd_tiny.toml"; stop=77
       files="series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4.csv thermo.csv
              profiles/points.pvd profiles/points_4.vtp dumps/dump.103.lammpstrj dumps/dump.138.lammpstrj" ;;
+  # A ramped prescribed displacement stopped mid-ramp (t = 0.18 of 0.2 µs) and a velocity formula.
+  pd_loading) case_file="$cases/pd_bar_loading.toml"; stop=23
+              files="series.csv profiles/index.csv profiles/profile_2.csv profiles/profile_4.csv thermo.csv
+                     profiles/points_4.vtp" ;;
   dbm) case_file="$cases/dbm_sod.toml"; stop=17
        files="series.csv profiles/index.csv profiles/profile_1.csv profiles/profile_2.csv grid.pvd
               fields/grid_000000040.vti thermo.csv" ;;

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""VTK files of shockfield runs read by VTK itself (python3-vtk9) and by shockfield_plot.vtk_arrays.
+"""VTK files of shockfield runs read by VTK itself (python3-vtk9) and by shockfield.vtk_arrays.
 
     vtk_round_trip.py REFERENCE_FILE [FILE ...]
 
@@ -18,7 +18,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, sys.argv[0].rsplit("/tests/", 1)[0] + "/python")
-from shockfield_plot.vtk_arrays import read_vtk_arrays  # noqa: E402
+from shockfield.vtk_arrays import read_vtk_arrays  # noqa: E402
 
 try:
     import vtk

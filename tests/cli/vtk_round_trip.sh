@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # VTK output in every encoding and precision ([output] vtk_encoding, vtk_precision), read back by
-# VTK itself (python3-vtk9), by shockfield_plot.vtk_arrays and by `shockfield analyze`: the same
+# VTK itself (python3-vtk9), by shockfield.vtk_arrays and by `shockfield analyze`: the same
 # values in each (Float32: the nearest float), units on every array; for MPM (grid .vti and
 # particle .vtp), DBM, phase field, PD points and granular grains. Skips the VTK part with a
 # message when python3-vtk9 is absent (scripts/install-deps.sh installs it).
@@ -73,7 +73,7 @@ grep -q 'file="points_4.vtp"' "$WORK/pd_zlib/profiles/points.pvd" || fail "point
 import sys
 import numpy as np
 sys.path.insert(0, sys.argv[2])
-from shockfield_plot.vtk_arrays import read_vtk_arrays
+from shockfield.vtk_arrays import read_vtk_arrays
 folder = sys.argv[1]
 csv = np.genfromtxt(f"{folder}/profile_4.csv", delimiter=",", names=True)
 vtp = read_vtk_arrays(f"{folder}/points_4.vtp")
@@ -94,7 +94,7 @@ check $(variants granular profiles/grains_2.vtp)
 import re, sys
 import numpy as np
 sys.path.insert(0, sys.argv[2])
-from shockfield_plot.vtk_arrays import read_vtk_arrays
+from shockfield.vtk_arrays import read_vtk_arrays
 run = sys.argv[1]
 pvd = open(f"{run}/profiles/grains.pvd").read()
 times = {f: float(t) for t, f in re.findall(r'timestep="([^"]+)" part="0" file="([^"]+)"', pvd)}

@@ -27,13 +27,13 @@ Outcome check_material_output(Outcome o, const fs::path& file) {
   return o;
 }
 
-// --resume of a copy of an MPM run stopped after 5 steps whose checkpoint.case.toml (the case the
-// checkpoint was written with) or config.resolved.toml (the input files' hashes) is the mutant;
-// at most 5 more steps.
+// --resume of a copy of an MPM run stopped after 5 steps whose config.resolved.toml (the input
+// files' hashes) is the mutant; at most 5 more steps. (The case --resume compares with is the
+// checkpoint's `case_input`, mutated by the checkpoint targets.)
 Target resume_case(const Context& c) {
   const fs::path base = stopped_run(c, "resume_case", c.source / "tests/cli/cases/mpm_tiny.toml", 5);
   return {"resume_case",
-          {base / "out/checkpoint.case.toml", base / "out/config.resolved.toml"},
+          {base / "out/config.resolved.toml"},
           false,
           false,
           "",

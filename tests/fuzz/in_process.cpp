@@ -1,9 +1,14 @@
 #include "in_process.hpp"
 
+#include <fmt/format.h>
+
+#include <fstream>
 #include <string>
 
 #include "shockfield/analysis/field_reader.hpp"
 #include "shockfield/core/config.hpp"
+#include "shockfield/core/error.hpp"
+#include "shockfield/core/expression.hpp"
 #include "shockfield/geometry/point_file.hpp"
 #include "shockfield/granular/case_file.hpp"
 #include "shockfield/io/extxyz.hpp"
@@ -15,6 +20,7 @@
 #include "shockfield/md/potentials/eam_file.hpp"
 #include "shockfield/md/potentials/pair_table_file.hpp"
 #include "shockfield/pd/point_cloud.hpp"
+#include "shockfield/pd/velocity_file.hpp"
 #include "shockfield/phasefield/case_file.hpp"
 
 namespace shockfield::fuzz {
@@ -71,6 +77,24 @@ void parse_pd_cloud(const fs::path& file) {
   const std::string name = file.filename().string();
   const int dim = name.find("_1d") != std::string::npos ? 1 : name.find("_2d") != std::string::npos ? 2 : 3;
   pd::read_cloud(file, dim, 1e-3).bounds();
+}
+
+void parse_formulas(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    try {
+      const Expression e = Expression::parse(line);
+      for (const Vec3& p : {Vec3(0.0, 0.0, 0.0), Vec3(1e-3, -2.5, 7.0), Vec3(1e300, -1e-300, 0.5)}) (void)e(p);
+    } catch (const ExpressionError& e) {
+      throw InputError(fmt::format("{}:{}: {}", file.string(), number, e.what()));
+    }
+  }
+}
+
+void parse_pd_velocities(const fs::path& file) {
+  const pd::PointCloud body = pd::lattice_cloud(2, {3, 2, 1}, 1e-3);
+  pd::read_point_velocities(file, 2, body.x, 1e-3);
 }
 
 void parse_material(const fs::path& file) {

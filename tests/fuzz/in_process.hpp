@@ -26,6 +26,11 @@ void parse_points(const std::filesystem::path& file);
 void parse_case(const std::filesystem::path& file);
 /// A PD point cloud (pd::read_cloud): cloud_<d>d.txt as a d-dimensional body, then its bounds.
 void parse_pd_cloud(const std::filesystem::path& file);
+/// Formulas of case files (core/expression.hpp), one a line: each compiled, then evaluated at three
+/// points (a syntax error becomes the InputError the case reader makes of it).
+void parse_formulas(const std::filesystem::path& file);
+/// A PD velocity file (pd::read_point_velocities) for the 3 × 2 lattice of 1 mm.
+void parse_pd_velocities(const std::filesystem::path& file);
 /// A material file (materials::MaterialFile::load) and every value it gives.
 void parse_material(const std::filesystem::path& file);
 /// A checkpoint: checksum verified (every item read), then its step counter.

@@ -179,6 +179,14 @@ std::vector<fs::path> pd_cloud_inputs(const Context& c) {
   return {dir / "cloud_1d.txt", dir / "cloud_2d.txt", dir / "cloud_3d.txt"};
 }
 
+std::vector<fs::path> formula_inputs(const Context& c) {
+  return {c.source / "tests/fixtures/fuzz/inputs/formula/formulas.txt"};
+}
+
+std::vector<fs::path> pd_velocity_inputs(const Context& c) {
+  return {c.source / "tests/fixtures/fuzz/inputs/pd_velocity/velocities_2d.csv"};
+}
+
 std::vector<fs::path> material_inputs(const Context& c) {
   const fs::path dir = c.source / "tests/fixtures/fuzz/inputs/material";
   return {dir / "mpm_cu.toml", dir / "pd_cu.toml"};
@@ -210,6 +218,8 @@ std::vector<Target> parser_targets(const Context& c) {
           in_process(c, "checkpoint", {c.source / "tests/fixtures/fuzz/inputs/checkpoint/checkpoint.h5"},
                      parse_checkpoint, true),
           in_process(c, "pd_cloud", pd_cloud_inputs(c), parse_pd_cloud),
+          in_process(c, "formula", formula_inputs(c), parse_formulas),
+          in_process(c, "pd_velocity", pd_velocity_inputs(c), parse_pd_velocities),
           in_process(c, "material_parse", material_inputs(c), parse_material)};
 }
 
@@ -265,6 +275,8 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
     if (wanted("checkpoint_" + std::string(method)))
       t.push_back(checkpoint_target(c, "checkpoint_" + std::string(method), cli_cases / file, steps));
   t.push_back(in_process(c, "pd_cloud", pd_cloud_inputs(c), parse_pd_cloud));
+  t.push_back(in_process(c, "formula", formula_inputs(c), parse_formulas));
+  t.push_back(in_process(c, "pd_velocity", pd_velocity_inputs(c), parse_pd_velocities));
   for (Target& x : file_targets(c, wanted)) t.push_back(std::move(x));
   return t;
 }

@@ -123,7 +123,11 @@ class Cases(unittest.TestCase):
                 self.assertAlmostEqual(got[-1].time, 1e-4, delta=2e-7)  # due at 1e-4 s, the step at or past
                 with self.assertRaises(shockfield.InputError) as caught:
                     next(run.frames(kind="fields"))
-                self.assertIn("has no fields (it has: dumps); its tables: ", str(caught.exception))
+                self.assertIn("has no fields (it has: dumps, particles); its tables: ", str(caught.exception))
+                # The same frames as .vtp (profiles/grains.pvd): z = -depth and velocity up, as the dumps'.
+                grains = list(run.frames(kind="particles"))
+                self.assertTrue(np.allclose([f.time for f in grains], [f.time for f in got], rtol=1e-6))
+                self.assertTrue(np.allclose(grains[-1].data["velocity"][:, 2], got[-1].data["vz"], rtol=1e-6, atol=0))
             elif name == "dbm_sod":
                 self.assertEqual(next(run.frames()).data.dtype, np.float64)  # dbm: fields first
             else:

@@ -35,11 +35,14 @@ def fcc_cu(repeat=4, a0=3.615, jitter=0.12, seed=3):
     return np.ascontiguousarray(x), (np.zeros(3), np.full(3, repeat * a0))
 
 
-def write_dump(path, x, box):
-    lines = ["ITEM: TIMESTEP", "0", "ITEM: NUMBER OF ATOMS", str(len(x)), "ITEM: BOX BOUNDS pp pp pp"]
+def write_dump(path, x, box, columns=None, bounds="pp pp pp", timestep=0):
+    """One frame at full precision; `columns`: extra per-atom columns by name (e.g. pe)."""
+    columns = columns or {}
+    lines = ["ITEM: TIMESTEP", str(timestep), "ITEM: NUMBER OF ATOMS", str(len(x)), f"ITEM: BOX BOUNDS {bounds}"]
     lines += [f"{lo!r} {hi!r}" for lo, hi in zip(*box)]
-    lines.append("ITEM: ATOMS id type x y z")
-    lines += [f"{i + 1} 1 {p[0]!r} {p[1]!r} {p[2]!r}" for i, p in enumerate(x)]
+    lines.append(" ".join(["ITEM: ATOMS id type x y z", *columns]))
+    lines += [" ".join([f"{i + 1} 1 {p[0]!r} {p[1]!r} {p[2]!r}", *(repr(float(c[i])) for c in columns.values())])
+              for i, p in enumerate(x)]
     path.write_text("\n".join(lines) + "\n")
 
 

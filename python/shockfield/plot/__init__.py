@@ -1,30 +1,75 @@
-"""Figures of run folders: ``python -m shockfield.plot KIND RUN [--out PNG]``.
+"""Figures of run folders: ``python -m shockfield.plot KIND RUN [--out PNG]`` (``shockfield plot``
+runs exactly this).
 
-Each kind names the methods whose runs it draws; a run of another method is refused with the
-kinds its method has. The generic kinds (thermo, series) read the run through ``shockfield.Run``
-and take their titles from the run (method, case file); the method kinds are drawn by the
-helpers in ``shockfield_plot`` (installed beside this package).
+Each kind names the runs it draws; a run of another method is refused with the kinds that run
+has. The generic kinds (thermo, series) are drawn here from ``shockfield.Run``; the method kinds
+by the helpers in ``shockfield_plot`` (installed beside this package), which read every file
+through ``shockfield.run`` too. Titles and reference levels come from the run (its method, case
+file, config.resolved.toml).
 """
 
 import pathlib
+from dataclasses import dataclass
 
 from ..errors import InputError
 from ..run import Run
 
-# kind -> (methods it draws, what it shows)
+
+@dataclass(frozen=True)
+class Kind:
+    """A kind of figure: ``methods`` the run methods it draws (None: any run); ``what`` one line
+    of help; ``target`` "run" (a run folder), "folder" (another output folder) or "file";
+    ``only`` an extra condition on the run (a predicate) and its words for the refusal."""
+    methods: frozenset
+    what: str
+    target: str = "run"
+    only: tuple = None
+
+    def draws(self, run):
+        return (self.methods is None or run.method in self.methods) and (self.only is None or self.only[0](run))
+
+    def runs_text(self):
+        runs = f"{'/'.join(sorted(self.methods))} runs"
+        return f"{runs} {self.only[1]}" if self.only else runs
+
+
+def _gls(run):
+    return run.config.get("model", {}).get("kind") == "gls"
+
+
+def _cavity(run):
+    return run.value("cavity_radius") is not None
+
+
 KINDS = {
-    "thermo": (None, "every thermo.csv column against the step"),
-    "series": (None, "every series.csv column against time"),
-    "profiles": ({"md"}, "binned shock profiles at six times (profiles.csv)"),
-    "porous": ({"mpm"}, "bottom-window means against time beside Xu et al. (2015)'s values"),
-    "cavity": ({"mpm"}, "particles around the cavity, its area and collapsibility"),
-    "bar": ({"pd"}, "axial stress and velocity profiles of a bar"),
+    "thermo": Kind(None, "any run: every thermo.csv column against the step"),
+    "series": Kind(None, "any run: every series.csv column against time"),
+    "profiles": Kind(frozenset({"md", "pd", "dbm"}),
+                     "md, pd, dbm: profiles along x at up to six times (dbm: with its [derived] levels)"),
+    "porous": Kind(frozenset({"mpm"}), "mpm: bottom-window means against time, beside Xu et al. (2015) for their case"),
+    "cavity": Kind(frozenset({"mpm"}), "mpm: particles around the cavity, its collapsibility against time",
+                   only=(_cavity, "with a cavity ([[body]] cavity_radius)")),
+    "bar": Kind(frozenset({"pd"}), "pd: axial stress and plastic strain along a bar, the derived HEL and impact stress"),
+    "crystal": Kind(frozenset({"pd"}), "pd: axial compression and accumulated slip at the last profile"),
+    "damage": Kind(frozenset({"pd"}), "pd: damage of a 2D body and the angle of the cracks grown from its notches"),
+    "tne": Kind(frozenset({"dbm"}), "dbm: mean TNE strength against time, Δ*_2xx and Δ*_(3,1)x along x"),
+    "phase-separation": Kind(frozenset({"dbm"}), "dbm (GLS): density frames, boundary length, TNE, domain size",
+                             only=(_gls, 'of [model] kind = "gls"')),
+    "chain": Kind(frozenset({"granular"}), "granular: space-time contact force, signal depth, energies"),
+    "stress-strain": Kind(frozenset({"macroparticle"}), "macroparticle: |stress| against |strain| of the rod"),
+    "phasefield": Kind(frozenset({"phasefield"}), "phasefield: domain radius and growth speed, the last ξ frame"),
+    "hugoniot": Kind(None, "the folder of `shockfield hugoniot`: Us against Up, the fit and the experiment",
+                     target="folder"),
+    "structures": Kind(None, "the folder of `analyze atoms` or an md run with [analysis]: structure fractions",
+                       target="folder"),
+    "slice": Kind(None, "an annotated dump of `analyze atoms`: a slice of atoms by structure type",
+                  target="file"),
 }
 
 
-def kinds_for(method):
-    """The kinds that draw runs of ``method``."""
-    return [k for k, (methods, _) in KINDS.items() if methods is None or method in methods]
+def kinds_for(run):
+    """The kinds that draw ``run`` (a Run)."""
+    return [name for name, kind in KINDS.items() if kind.target == "run" and kind.draws(run)]
 
 
 MAX_PANELS = 12
@@ -53,41 +98,89 @@ def _columns_figure(run, table, x_name, title_what, out, columns=None):
         ax.plot(table[x_name], table[name])
         ax.set(xlabel=x_name, title=name)
     for ax in list(axes.flat)[len(names):]:
-        ax.axis("off")
-    case = pathlib.Path(run.summary["case"]).name if run.summary else run.folder.name
-    fig.suptitle(f"{run.method} run {run.folder.name} ({case}): {title_what}")
+        ax.remove()
+    fig.suptitle(run.title(title_what))
     fig.tight_layout()
     fig.savefig(out, dpi=90)
     plt.close(fig)
 
 
-def plot(kind, folder, out=None, columns=None):
-    """Draws ``kind`` of the run in ``folder`` to ``out`` (default FOLDER/KIND.png); returns the
-    PNG's path. ``columns``: for thermo and series, the columns to draw (default the first
-    MAX_PANELS numeric ones). InputError for an unknown kind, an unknown column or a run of a
-    method the kind does not draw."""
-    if kind not in KINDS:
-        raise InputError(f"plot: unknown kind '{kind}'; expected one of {', '.join(KINDS)}")
-    run = Run.open(folder)
-    methods, _ = KINDS[kind]
-    if methods is not None and run.method not in methods:
-        raise InputError(f"{run.folder}: a {run.method} run; '{kind}' draws {'/'.join(sorted(methods))} runs. "
-                         f"Kinds for this run: {', '.join(kinds_for(run.method))}")
-    out = str(out or run.folder / f"{kind}.png")
+def _draw_run(kind, run, out, options):
+    """Draws a kind of a run folder (the run checked to be of the kind's methods)."""
+    folder = str(run.folder)
     if kind == "thermo":
         table = run.thermo
-        _columns_figure(run, table, table.dtype.names[0], "thermo.csv", out, columns)
+        _columns_figure(run, table, table.dtype.names[0], "thermo.csv", out, options.get("columns"))
     elif kind == "series":
         table = run.series
-        x = "time_s" if "time_s" in table.dtype.names else table.dtype.names[0]
-        _columns_figure(run, table, x, "series.csv", out, columns)
-    elif kind == "profiles":
+        x = next((n for n in ("time_s", "time") if n in table.dtype.names), table.dtype.names[0])
+        _columns_figure(run, table, x, "series.csv", out, options.get("columns"))
+    elif kind == "profiles" and run.method == "md":
         from shockfield_plot import md_plots
-        md_plots.plot_profiles(str(run.folder), out, run.config.get("output", {}).get("profile_axis", "z"))
-    elif kind in ("porous", "cavity"):
+        md_plots.plot_profiles(folder, out, options.get("axis"))
+    elif run.method == "mpm":
         from shockfield_plot import mpm_plots
-        mpm_plots.porous(str(run.folder), out) if kind == "porous" else mpm_plots.cavity([str(run.folder)], out)
-    else:
+        mpm_plots.porous(folder, out) if kind == "porous" else mpm_plots.cavity([folder], out)
+    elif run.method == "pd":
         from shockfield_plot import pd_plots
-        pd_plots.bar([str(run.folder)], [run.folder.name], out)
+        if kind == "damage":
+            pd_plots.damage([folder], [run.folder.name], out, [])
+        else:
+            getattr(pd_plots, kind)([folder], [run.folder.name], out)
+    elif run.method == "dbm":
+        from shockfield_plot import dbm_plots
+        dbm_plots.KINDS[kind](folder, out)
+    elif run.method == "granular":
+        from shockfield_plot import granular_plots
+        granular_plots.chain(folder, out)
+    elif run.method == "macroparticle":
+        from shockfield_plot import macroparticle_plots
+        macroparticle_plots.stress_strain([folder], out, title=run.title("stress against strain"))
+    else:
+        from shockfield_plot import phasefield_plots
+        phasefield_plots.phasefield(folder, out)
+
+
+def _draw_other(kind, target, out, options):
+    """Draws a kind whose target is not a run folder (hugoniot, structures: folders; slice: a dump)."""
+    path = pathlib.Path(target)
+    if kind == "slice":
+        if not path.is_file():
+            raise InputError(f"'{target}' is not a file: plot slice draws an annotated dump of analyze atoms")
+        thickness = options.get("thickness") or 3.0
+        if not thickness > 0:
+            raise InputError(f"--thickness {thickness}: expected a number > 0 (Å)")
+        from shockfield_plot import atoms_plots
+        atoms_plots.slice_plot(str(path), out or str(path.with_suffix("")) + "_slice.png", options.get("axis") or "z",
+                               options.get("at"), thickness, options.get("column"), options.get("frame", -1))
+        return out or str(path.with_suffix("")) + "_slice.png"
+    if not path.is_dir():
+        raise InputError(f"'{target}' is not a folder: plot {kind} draws {KINDS[kind].what.split(':')[0]}")
+    out = str(out or path / f"{kind}.png")
+    if kind == "hugoniot":
+        from shockfield_plot import md_plots
+        md_plots.plot_hugoniot(str(path), out, options.get("compare"))
+    else:
+        from shockfield_plot import atoms_plots
+        atoms_plots.structures(str(path), out)
+    return out
+
+
+def plot(kind, target, out=None, columns=None, **options):
+    """Draws ``kind`` of ``target`` (a run folder; for hugoniot and structures an output folder,
+    for slice a dump file) to ``out`` (default TARGET/KIND.png); returns the PNG's path.
+    ``columns``: for thermo and series, the columns to draw (default the first MAX_PANELS numeric
+    ones); ``options``: axis (md profiles, slice), at, thickness, column, frame (slice), compare
+    (hugoniot). InputError for an unknown kind, an unknown column or a run the kind does not draw."""
+    if kind not in KINDS:
+        raise InputError(f"plot: unknown kind '{kind}'; expected one of {', '.join(KINDS)}")
+    options["columns"] = columns
+    if KINDS[kind].target != "run":
+        return _draw_other(kind, target, out, options)
+    run = Run.open(target)
+    if not KINDS[kind].draws(run):
+        raise InputError(f"{run.folder}: a {run.method} run; '{kind}' draws {KINDS[kind].runs_text()}. "
+                         f"Kinds for this run: {', '.join(kinds_for(run))}")
+    out = str(out or run.folder / f"{kind}.png")
+    _draw_run(kind, run, out, options)
     return out

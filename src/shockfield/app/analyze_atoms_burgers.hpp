@@ -1,5 +1,5 @@
 #pragma once
-// The Burgers-circuit part of `shockfield analyze atoms` (analysis/atoms/burgers_circuit): its
+// The Burgers-circuit part of `shockfield analyze atoms` (analysis/atoms/burgers_frame): its
 // options, and per frame the circuits (given by a line, by atom ids, or placed around the line of
 // each defect cluster) with their Frank-scheme Burgers vectors, written to OUTPUT/burgers.csv.
 #include <CLI/CLI.hpp>
@@ -9,8 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "shockfield/analysis/atoms/burgers_circuit.hpp"
-#include "shockfield/analysis/atoms/defect_clusters.hpp"
+#include "shockfield/analysis/atoms/burgers_frame.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 
@@ -48,19 +47,7 @@ class BurgersAnalysis {
   const std::string& first_skip() const { return first_skip_; }
 
  private:
-  struct Line {
-    analysis::atoms::AxisCircuit spec;
-    std::string source;
-    bool automatic = false;  ///< placed around a cluster: skipped, not fatal, when it cannot close
-  };
-  std::vector<Line> lines_of(const analysis::atoms::AtomFrame& frame, const analysis::atoms::ClusterResult* clusters,
-                             const analysis::atoms::CrystalFrame& crystal) const;
-
-  BurgersArgs args_;
-  std::array<analysis::atoms::Vec3i, 3> orient_;
-  std::vector<std::pair<Vec3, Vec3>> line_points_;  ///< centre, axis of each --burgers-line
-  std::vector<double> line_radii_;
-  std::vector<std::vector<std::int64_t>> id_circuits_;
+  analysis::atoms::BurgersRequest request_;
   io::CheckedOutput out_;
   std::size_t circuits_ = 0, skipped_ = 0;
   std::string first_skip_;

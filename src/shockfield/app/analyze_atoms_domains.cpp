@@ -2,14 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <cstdio>
-#include <numbers>
-#include <optional>
 
+#include "shockfield/analysis/atoms/atom_surfaces.hpp"
 #include "shockfield/core/error.hpp"
-#include "shockfield/geometry/delaunay.hpp"
-#include "shockfield/geometry/rolling_ball.hpp"
 
 namespace shockfield::app {
 
@@ -47,54 +43,18 @@ DomainOutput::DomainOutput(const DomainArgs& args, bool clusters_on,
 
 void DomainOutput::add(std::size_t frame_index, const analysis::atoms::AtomFrame& frame,
                        const analysis::atoms::ClusterResult& clusters) {
-  const geometry::Box& box = frame.box;
-  const double omega = box.volume() / static_cast<double>(frame.size());
-  std::vector<std::vector<std::array<double, 3>>> members(clusters.clusters.size());
-  for (std::size_t i = 0; i < frame.size(); ++i) {
-    const int k = clusters.cluster_of[i];
-    if (k < 0) continue;
-    // Whole across periodic faces: each atom at its image nearest the cluster's centre.
-    const Vec3& c = clusters.clusters[static_cast<std::size_t>(k)].centre;
-    const Vec3 x = c + box.minimum_image(frame.positions[i] - c);
-    members[static_cast<std::size_t>(k)].push_back({x.x(), x.y(), x.z()});
-  }
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::int32_t, 3>> triangles;
-  for (std::size_t k = 0; k < members.size(); ++k) {
-    if (members[k].size() < args_.min_atoms) continue;
-    const std::string name = fmt::format("the atoms of domain {} at timestep {}", k + 1, frame.timestep);
-    std::optional<geometry::DelaunayDivision<3>> division;
-    try {
-      division.emplace(geometry::delaunay_division<3>(members[k], name));
-    } catch (const InputError& e) {  // a flat domain (one atomic plane: a twin boundary) has no volume
-      std::fprintf(stderr, "warning: no surface for %s\n", e.what());
-      ++flat_;
-      continue;
-    }
-    const geometry::EnclosedSolid solid = [&] {
-      try {
-        return args_.surface == "packing" ? geometry::packing_sculpting_solid(*division, *args_.probe)
-                                          : geometry::rolling_ball_solid(*division, *args_.probe);
-      } catch (const InputError& e) {
-        throw InputError(fmt::format("{}: {}", name, e.what()));
-      }
-    }();
-    const geometry::TriangleSurface& s = solid.surface;
-    // The atoms' own (Voronoi) volume: the polyhedron through the outer atoms' centres holds the
-    // share ω_i/4π of atom i's cell, so Σ_i Ω (1 − ω_i/4π) of the atoms' cells lies outside it.
-    const double n = static_cast<double>(members[k].size());
-    const double atoms_volume = s.volume + omega * (n - solid.vertex_solid_angle / (4.0 * std::numbers::pi));
-    const Vec3& c = clusters.clusters[k].centre;
+  namespace aa = analysis::atoms;
+  const aa::DomainResult r =
+      aa::domain_surfaces(frame, clusters, aa::DomainSurfaces{*args_.probe, args_.surface == "packing", args_.min_atoms});
+  for (const std::string& why : r.flat) std::fprintf(stderr, "warning: no surface for %s\n", why.c_str());
+  for (const aa::Domain& d : r.domains)
     files_.csv() << fmt::format("{},{},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{}\n",
-                        frame_index, frame.timestep, k + 1, members[k].size(), s.volume, s.area,
-                        equivalent_radius(s.volume), atoms_volume, equivalent_radius(atoms_volume), c.x(), c.y(),
-                        c.z(), s.euler_characteristic, s.manifold ? 1 : 0);
-    const auto offset = static_cast<std::int32_t>(points.size());
-    points.insert(points.end(), s.points.begin(), s.points.end());
-    for (const auto& t : s.triangles) triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-    ++domains_;
-  }
-  files_.end_frame(frame.timestep, points, triangles);
+                                frame_index, frame.timestep, d.cluster + 1, d.atoms, d.volume, d.area,
+                                aa::equivalent_radius(d.volume), d.atoms_volume, aa::equivalent_radius(d.atoms_volume),
+                                d.centre.x(), d.centre.y(), d.centre.z(), d.euler_characteristic, d.manifold ? 1 : 0);
+  domains_ += r.domains.size();
+  flat_ += r.flat.size();
+  files_.end_frame(frame.timestep, r.surfaces.points, r.surfaces.triangles);
 }
 
 }  // namespace shockfield::app

@@ -78,10 +78,7 @@ aa::ExcessEnergy ProfileOutput::excess_energy(const aa::AtomFrame& frame, const 
     throw InputError(fmt::format("{}: --excess-energy needs a per-atom potential energy column ({}); dump pe (LAMMPS: "
                                  "compute pe/atom) or name the column with --pe-column",
                                  dump.where(), column.empty() ? "none of pe, c_pe, c_peatom, c_pe_atom, v_pe" : column));
-  const std::vector<double>& pe = dump.column(column);
-  const std::vector<aa::Structure> none(frame.size(), crystal_);
-  const std::vector<aa::Structure>* structures = aa::reference_structures(r);
-  aa::ExcessEnergy e = aa::excess_energy(pe, structures ? *structures : none, crystal_, reference_ ? &*reference_ : nullptr);
+  aa::ExcessEnergy e = aa::excess_energy(dump.column(column), r, crystal_, reference_ ? &*reference_ : nullptr);
   if (!reference_)
     std::printf("timestep %lld: excess energy reference e0 = %.10g eV (median pe of %s atoms)\n", frame.timestep,
                 e.reference, args_.crystal.c_str());
@@ -91,18 +88,14 @@ aa::ExcessEnergy ProfileOutput::excess_energy(const aa::AtomFrame& frame, const 
 void ProfileOutput::add(std::size_t frame_index, const aa::AtomFrame& frame, const aa::StructureAnalysisResult& r) {
   const std::vector<double>& excess = r.excess_energy;
   if (!profile_) return;
-  std::vector<std::vector<aa::ProfileBin>> per_method;
-  for (const std::string& m : methods_) {
-    const auto& s = m == "cna" ? r.cna->structure : m == "acna" ? r.adaptive_cna->structure : r.bond_pairs->structure;
-    per_method.push_back(profile_->compute(frame, s, excess));
-  }
-  if (per_method.empty()) per_method.push_back(profile_->compute(frame, std::vector<aa::Structure>(frame.size(), aa::Structure::other), excess));
-  const auto& bins = per_method.front();
+  const auto per_method = profile_->per_method(frame, r, excess);  // methods_' order
+  const auto& bins = per_method.front().second;
   for (std::size_t b = 0; b < bins.size(); ++b) {
     std::string row = fmt::format("{},{},{},{:.10g},{:.10g},{:.10g},{}", frame_index, frame.timestep, b, bins[b].lo,
                                   bins[b].hi, 0.5 * (bins[b].lo + bins[b].hi), bins[b].counts.total);
-    for (std::size_t m = 0; m < methods_.size(); ++m)
-      for (aa::Structure t : aa::kStructures) row += fmt::format(",{:.6g}", per_method[m][b].counts.fraction(t));
+    for (const auto& [method, method_bins] : per_method)
+      if (!method.empty())
+        for (aa::Structure t : aa::kStructures) row += fmt::format(",{:.6g}", method_bins[b].counts.fraction(t));
     if (excess_) row += fmt::format(",{:.10g}", bins[b].mean_value());
     out_.write(row + "\n");
   }

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <cstdio>
 
 #include "shockfield/core/error.hpp"
@@ -39,16 +38,17 @@ void TrackOutput::add(std::size_t frame, const aa::AtomFrame& atoms, const aa::C
 
 void TrackOutput::write(const std::filesystem::path& tracks_file, const std::filesystem::path& growth_file) const {
   io::CheckedOutput tracks(tracks_file);
-  tracks.write("track,frame,timestep,time,cluster,size,x,y,z,a,b,c,L,area,volume,atomic_volume\n");
-  for (const aa::ClusterTrack& t : tracker_.tracks())
-    for (const aa::TrackPoint& p : t.points) {
-      const aa::Cluster& c = p.shape;
-      tracks << fmt::format("{},{},{},{:.10g},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n",
-                            t.number, p.frame, p.timestep, double(p.timestep - args_.origin) * args_.dt, p.cluster + 1,
-                            c.size, c.centre.x(), c.centre.y(), c.centre.z(), c.semi_axes[0], c.semi_axes[1],
-                            c.semi_axes[2], std::cbrt(c.semi_axes.prod()), c.ellipsoid_surface, c.ellipsoid_volume,
-                            c.atomic_volume);
+  std::string header;
+  for (const std::string& c : aa::track_columns()) header += (header.empty() ? "" : ",") + c;
+  tracks.write(header + "\n");
+  for (const std::vector<double>& row : aa::track_rows(tracker_.tracks(), args_.origin, args_.dt)) {
+    std::string line;
+    for (std::size_t k = 0; k < row.size(); ++k) {
+      const bool integer = k <= 2 || k == 4 || k == 5;  // track, frame, timestep, cluster, size
+      line += (k == 0 ? "" : ",") + (integer ? fmt::format("{}", static_cast<long long>(row[k])) : fmt::format("{:.10g}", row[k]));
     }
+    tracks.write(line + "\n");
+  }
   tracks.close();
   io::CheckedOutput growth(growth_file);
   growth.write("track,quantity,exponent,exponent_stderr,prefactor,points\n");

@@ -2,16 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <numbers>
 
+#include "shockfield/analysis/atoms/atom_surfaces.hpp"
 #include "shockfield/app/python_helpers.hpp"
-#include "shockfield/core/error.hpp"
-#include "shockfield/geometry/delaunay.hpp"
 #include "shockfield/geometry/delaunay_output.hpp"
-#include "shockfield/geometry/rolling_ball.hpp"
 
 namespace shockfield::app {
 
@@ -36,8 +31,6 @@ void add_void_options(CLI::App& cmd, VoidArgs& a) {
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
 }
-
-double equivalent_radius(double volume) { return std::cbrt(3.0 * std::max(volume, 0.0) / (4.0 * std::numbers::pi)); }
 
 SurfaceSeries::SurfaceSeries(std::string name, const std::string& csv_header,
                              const std::function<std::filesystem::path(const std::filesystem::path&)>& add_file)
@@ -69,73 +62,17 @@ VoidOutput::VoidOutput(const VoidArgs& args, std::function<std::filesystem::path
                          add_file);
 }
 
-// The atoms and, along periodic dimensions, their images within `margin` of the faces, so that
-// a void across a periodic face is closed in the (non-periodic) division.
-std::vector<std::array<double, 3>> with_images(const analysis::atoms::AtomFrame& frame, double margin) {
-  std::vector<std::array<double, 3>> points;
-  const geometry::Box& box = frame.box;
-  for (const Vec3& x0 : frame.positions) {
-    Vec3 x = x0;
-    for (int d = 0; d < 3; ++d)
-      if (box.periodic(d)) x[d] -= box.length()[d] * std::floor((x[d] - box.lo[d]) / box.length()[d]);
-    for (int sx = -1; sx <= 1; ++sx)
-      for (int sy = -1; sy <= 1; ++sy)
-        for (int sz = -1; sz <= 1; ++sz) {
-          const int shift[3] = {sx, sy, sz};
-          Vec3 image = x;
-          bool keep = true;
-          for (int d = 0; d < 3 && keep; ++d) {
-            if (shift[d] == 0) continue;
-            image[d] += shift[d] * box.length()[d];
-            keep = box.periodic(d) && image[d] >= box.lo[d] - margin && image[d] < box.hi[d] + margin;
-          }
-          if (keep) points.push_back({image.x(), image.y(), image.z()});
-        }
-  }
-  return points;
-}
-
 void VoidOutput::add(std::size_t frame_index, const analysis::atoms::AtomFrame& frame) {
-  const geometry::Box& box = frame.box;
-  double margin = args_.margin.value_or(15.0);
-  for (int d = 0; d < 3; ++d)
-    if (box.periodic(d)) margin = std::min(margin, 0.5 * box.length()[d]);
-  const auto division = geometry::delaunay_division<3>(with_images(frame, margin), fmt::format("the atoms of timestep {}", frame.timestep));
-  // A void near a periodic face is found whole in several copies (it and its images): the copies
-  // have the same centre once wrapped into the box; one is kept, with its centre wrapped.
-  std::vector<geometry::Cavity> cavities;
-  for (geometry::Cavity& c : geometry::rolling_ball_cavities(division, *args_.probe)) {
-    Vec3 centre(c.centroid[0], c.centroid[1], c.centroid[2]);
-    std::array<int, 3> image{0, 0, 0};
-    box.wrap(centre, image);
-    const bool copy = std::any_of(cavities.begin(), cavities.end(), [&](const geometry::Cavity& k) {
-      return box.minimum_image(Vec3(k.centroid[0], k.centroid[1], k.centroid[2]) - centre).norm() < 1e-3;
-    });
-    if (copy) continue;
-    c.centroid = {centre.x(), centre.y(), centre.z()};
-    cavities.push_back(std::move(c));
-  }
-  double cavity_volume = 0;
-  for (const geometry::Cavity& c : cavities) cavity_volume += c.surface.volume;
-  const double omega = args_.atomic_volume.value_or((frame.box.volume() - cavity_volume) / static_cast<double>(frame.size()));
-  std::vector<std::array<std::int32_t, 3>> triangles;
+  namespace aa = analysis::atoms;
+  const aa::VoidResult r = aa::find_voids(frame, aa::VoidSearch{*args_.probe, args_.atomic_volume, args_.margin, args_.min_volume});
   std::size_t number = 0;
-  for (const geometry::Cavity& c : cavities) {
-    if (c.surface.volume < args_.min_volume) continue;
-    std::vector<char> on_surface(division.points.size(), 0);
-    for (const auto& t : c.surface.triangles)
-      for (std::int32_t v : t) on_surface[static_cast<std::size_t>(v)] = 1;
-    // The missing atoms' volume: the polyhedron less the surface atoms' own cells' share in it.
-    const double missing = c.surface.volume - omega * c.vertex_solid_angle / (4.0 * std::numbers::pi);
+  for (const aa::Void& v : r.voids)
     files_.csv() << fmt::format("{},{},{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{},{}\n", frame_index,
-                        frame.timestep, ++number, c.cells, c.surface.volume, c.surface.area, equivalent_radius(c.surface.volume),
-                        missing, equivalent_radius(missing), c.centroid[0], c.centroid[1], c.centroid[2],
-                        std::count(on_surface.begin(), on_surface.end(), 1), c.surface.euler_characteristic,
-                        c.surface.manifold ? 1 : 0);
-    triangles.insert(triangles.end(), c.surface.triangles.begin(), c.surface.triangles.end());
-  }
+                                frame.timestep, ++number, v.cells, v.volume, v.area, aa::equivalent_radius(v.volume),
+                                v.missing_volume, aa::equivalent_radius(v.missing_volume), v.centre.x(), v.centre.y(),
+                                v.centre.z(), v.surface_atoms, v.euler_characteristic, v.manifold ? 1 : 0);
   voids_ += number;
-  files_.end_frame(frame.timestep, division.points, triangles);
+  files_.end_frame(frame.timestep, r.surfaces.points, r.surfaces.triangles);
 }
 
 }  // namespace shockfield::app

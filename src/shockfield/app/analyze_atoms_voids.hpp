@@ -1,10 +1,10 @@
 #pragma once
 // The voids of `shockfield analyze atoms --voids R` (Xu et al. (2015) §3.2.3, rolling-ball
-// surfaces; geometry/rolling_ball): per frame, the Delaunay division of the atoms and its
-// cavities for a ball of radius R — the regions a ball that cannot pass between neighbouring atoms
-// can move in without reaching the outside — with their volumes, areas and centres
-// (OUTPUT/voids.csv), their surfaces (OUTPUT/voids_<timestep>.vtp for ParaView) and a plot of
-// volume and area against time (OUTPUT/voids.png).
+// surfaces; found by analysis/atoms/atom_surfaces): per frame, the Delaunay division of the atoms
+// and its cavities for a ball of radius R — the regions a ball that cannot pass between
+// neighbouring atoms can move in without reaching the outside — with their volumes, areas and
+// centres (OUTPUT/voids.csv), their surfaces (OUTPUT/voids_<timestep>.vtp for ParaView) and a plot
+// of volume and area against time (OUTPUT/voids.png).
 #include <CLI/CLI.hpp>
 
 #include <array>
@@ -30,9 +30,6 @@ struct VoidArgs {
 };
 
 void add_void_options(CLI::App& cmd, VoidArgs& args);
-
-/// The radius of the sphere of this volume (0 for a negative volume).
-double equivalent_radius(double volume);
 
 /// The files of a series of surfaces (voids, domains) named NAME: NAME.csv (a row per object and
 /// frame), NAME_<timestep>.vtp (the frame's surfaces) and NAME.png (volume and area against time).

@@ -14,8 +14,7 @@
 #include "shockfield/geometry/delaunay_clusters.hpp"
 #include "shockfield/geometry/delaunay_output.hpp"
 #include "shockfield/geometry/point_file.hpp"
-#include "shockfield/geometry/pivoting_ball.hpp"
-#include "shockfield/geometry/rolling_ball.hpp"
+#include "shockfield/geometry/point_set_surface.hpp"
 #include "shockfield/io/checked_file.hpp"
 
 namespace shockfield::app {
@@ -57,11 +56,8 @@ void run_geometry(const GeometryArgs& a) {
   std::optional<sg::TriangleSurface> surface;
   if (a.ball_radius > 0.0 || a.sculpt_depth > 0.0) {
     if constexpr (N == 3) {
-      if (a.surface_method == "packing")
-        surface = sg::packing_sculpting_surface(division, a.sculpt_depth);
-      else
-        surface = a.surface_method == "pivot" ? sg::pivoting_ball_surface(division.points, a.ball_radius)
-                                              : sg::rolling_ball_surface(division, a.ball_radius);
+      surface = sg::point_set_surface(division, a.surface_method,
+                                      a.surface_method == "packing" ? a.sculpt_depth : a.ball_radius);
     } else {
       throw InputError("--ball-radius/--sculpt-depth: surfaces need --dimension 3");
     }

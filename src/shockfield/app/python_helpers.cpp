@@ -29,13 +29,13 @@ fs::path python_package_dir() {
     const fs::path installed = (exe.parent_path() / SHOCKFIELD_BIN_TO_PYTHON).lexically_normal();
     if (fs::is_directory(installed / "shockfield_plot")) return installed;
   }
-#ifdef SHOCKFIELD_SOURCE_DIR
-  const fs::path source = fs::path(SHOCKFIELD_SOURCE_DIR) / "python";
-  if (fs::is_directory(source / "shockfield_plot")) return source;
+#ifdef SHOCKFIELD_PYTHON_BUILD_DIR
+  const fs::path build = SHOCKFIELD_PYTHON_BUILD_DIR;
+  if (fs::is_directory(build / "shockfield_plot")) return build;
 #endif
   throw InputError(fmt::format(
       "the Python helpers (shockfield_plot) are neither installed beside this command ({}) nor in "
-      "its source tree; reinstall shockfield (cmake --install)",
+      "its build tree; reinstall shockfield (cmake --install)",
       (exe.parent_path() / SHOCKFIELD_BIN_TO_PYTHON).lexically_normal().string()));
 }
 

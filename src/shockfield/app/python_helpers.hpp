@@ -7,8 +7,8 @@
 namespace shockfield::app {
 
 /// The folder holding shockfield_plot/: BIN/../<python install dir> for an installed command
-/// (relative to the executable itself), else, for the build tree's command, the source tree's
-/// python/. Throws InputError when neither exists.
+/// (relative to the executable itself), else, for the build tree's command, the build tree's
+/// python/ (the package with its compiled module). Throws InputError when neither exists.
 std::filesystem::path python_package_dir();
 
 /// The interpreter for the helpers: $SHOCKFIELD_PYTHON when set; else the first of `python3` on

@@ -6,8 +6,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "shockfield/core/case_diff.hpp"
 #include "shockfield/core/error.hpp"
@@ -29,18 +27,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// The case stored beside the checkpoint, which --resume compares with the case it is given.
-fs::path stored_case_path(const fs::path& folder) { return folder / "checkpoint.case.toml"; }
-
-// --resume: the changes between the case stored at the checkpoint and the one given; refused
-// (InputError listing every changed key) unless all are in the method's safe list.
+// --resume: the changes between the case stored in the checkpoint (`case_input`, the case as read
+// by the run that wrote it) and the one given; refused (InputError listing every changed key)
+// unless all are in the method's safe list. Without a checkpoint the run refuses later, by name.
 std::vector<CaseChange> check_resume_case(const Config& root, const RunOptions& options, const Method& m) {
-  const fs::path stored = stored_case_path(run_folder_path(options));
-  if (!fs::exists(stored)) return {};
-  std::ifstream in(stored);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::vector<CaseChange> changes = diff_cases(text.str(), root.case_toml(), stored.string());
+  const fs::path checkpoint = run_session_checkpoint(run_folder_path(options));
+  if (!fs::exists(checkpoint)) return {};
+  const std::string stored = checkpoint.string() + " (its case_input)";
+  std::vector<CaseChange> changes = diff_cases(io::CheckpointReader(checkpoint).input_case(), root.case_toml(), stored);
   const std::vector<std::string> safe = m.resume_safe_keys();
   const auto is_safe = [&](const CaseChange& c) {
     return std::any_of(safe.begin(), safe.end(), [&](const std::string& p) { return key_matches(c.key, p); });
@@ -53,7 +47,7 @@ std::vector<CaseChange> check_resume_case(const Config& root, const RunOptions& 
   throw InputError(fmt::format("--resume: the case differs from the one the checkpoint was written with ({}) in "
                                "keys a resumed run cannot change:{}\nsafe to change on resume: {}; undo the edit, "
                                "or start a new run with --overwrite or --output",
-                               stored.string(), list, allowed));
+                               stored, list, allowed));
 }
 
 // --resume: an input file (potential, material file, data) whose SHA-256 differs from the one
@@ -155,10 +149,9 @@ bool RunDriver::open(bool stop_handlers) {
 void RunDriver::save() {
   const Clock::time_point t0 = Clock::now();
   {
-    const io::CheckpointCaseScope stored_case(root_.resolved_toml());  // the checkpoint's `case`
+    const io::CheckpointCaseScope stored_case({root_.resolved_toml(), root_.case_toml()});
     method_->write_checkpoint(run_->checkpoint);
   }
-  write_file_atomically(stored_case_path(run_->folder), root_.case_toml());
   tally_.checkpoint_seconds += seconds_since(t0);
 }
 
@@ -183,17 +176,8 @@ void RunDriver::step() {
     tally_.steps = step - first_step_;
     if (m.checkpoint_every() > 0 && step % m.checkpoint_every() == 0) save();
     progress_->update(step, m.fraction_done());
-    if (stop_requested() || (options_.stop_after > 0 && step - first_step_ == options_.stop_after)) {
-      progress_->finish(step);
-      const std::string wrote = m.write_stop_state();
-      save();
-      run_->log.info("stopped at step {}{}: checkpoint written to {}{}", step, m.position(),
-                     run_->checkpoint.string(), wrote.empty() ? "" : ", " + wrote);
-      const std::string message = fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
-                                              step, options_.case_file.string(), run_->folder.string());
-      write_summary("stopped", message);
-      throw StopRequested(message);
-    }
+    if (stop_requested() || (options_.stop_after > 0 && step - first_step_ == options_.stop_after))
+      throw StopRequested(stop());
   } catch (const RunError& e) {
     // Reporting the failure writes too (log.txt, the failure state, summary.json); on a full disk
     // that fails as well, and must not hide the error that stopped the run.
@@ -208,6 +192,20 @@ void RunDriver::step() {
     }
     throw;
   }
+}
+
+std::string RunDriver::stop() {
+  Method& m = *method_;
+  const std::int64_t step = m.step();
+  progress_->finish(step);
+  const std::string wrote = m.write_stop_state();
+  save();
+  run_->log.info("stopped at step {}{}: checkpoint written to {}{}", step, m.position(), run_->checkpoint.string(),
+                 wrote.empty() ? "" : ", " + wrote);
+  const std::string message = fmt::format("stopped at step {}; continue with: shockfield run {} --output {} --resume",
+                                          step, options_.case_file.string(), run_->folder.string());
+  write_summary("stopped", message);
+  return message;
 }
 
 void RunDriver::finish() {

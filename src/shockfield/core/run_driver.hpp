@@ -42,6 +42,10 @@ class RunDriver {
   void step();
   /// The end of the run: final outputs, the last thermo row and checkpoint, results, summary.
   void finish();
+  /// Stops the run here as Ctrl-C does (the stop state, a checkpoint, summary.json "stopped"),
+  /// so that a run with the same options and `resume` continues it; returns the message saying
+  /// how. Nothing more may be called.
+  std::string stop();
 
   Method& method() { return *method_; }
   const Config& root() const { return root_; }

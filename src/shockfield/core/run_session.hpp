@@ -19,6 +19,9 @@ struct RunSession {
   Logger log;
 };
 
+/// The checkpoint file of a run folder.
+std::filesystem::path run_session_checkpoint(const std::filesystem::path& folder);
+
 /// `method` names the method in the header line, `summary` its size ("12800 atoms");
 /// `provenance` lines follow the header; `rewrite_resolved`: a resumed run writes
 /// config.resolved.toml anew.

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "shockfield/core/derived_arrays.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
@@ -61,7 +62,7 @@ void derive(const Config& root, const DbmCase& c, const Simulation& sim) {
 // Under mpirun (or with --rank-grid) the lattice is decomposed (decomposition.hpp): the ranks
 // step their blocks; sim_ is rank 0's whole lattice, refreshed from the blocks (current()) before
 // anything reads its state, and the other ranks only serve().
-class DbmMethod final : public Method {
+class DbmMethod final : public Method, public DerivedArrays {
  public:
   DbmMethod(const Config& root, const DbmCase& c, const CaseStability& stability, const RunOptions& options)
       : c_(c), sim_(c_.model, c_.lattice, c_.boundaries, c_.bgk, false), tol_(1e-9 * c_.bgk.dt) {
@@ -187,6 +188,24 @@ class DbmMethod final : public Method {
     const Lattice& l = c_.lattice;
     const int ghosts = 2 * Lattice::ghosts;
     return {grid_state_array("f", sim_.f(), 3, {l.nx + ghosts, l.ny + ghosts, sim_.model().size()})};
+  }
+
+  // ρ, u (ux, uy) and T of every interior cell, the moments of f (docs/theory/dbm.md) as the field
+  // frames hold them (Simulation::macro, macro_cell_image): (ny, nx), x fastest.
+  std::vector<DerivedArray> derived_arrays() const override {
+    if (decomposition_) return {};
+    const Lattice& l = c_.lattice;
+    const auto nx = static_cast<std::size_t>(l.nx), ny = static_cast<std::size_t>(l.ny);
+    DerivedArray rho{"rho", std::vector<double>(nx * ny), {ny, nx}, "1"};
+    DerivedArray u{"velocity", std::vector<double>(2 * nx * ny), {ny, nx, 2}, "1"};
+    DerivedArray T{"T", std::vector<double>(nx * ny), {ny, nx}, "1"};
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i) {
+        const Macro m = sim_.macro(static_cast<int>(i), static_cast<int>(j));
+        const std::size_t c = i + nx * j;
+        rho.values[c] = m.rho, u.values[2 * c] = m.ux, u.values[2 * c + 1] = m.uy, T.values[c] = m.T;
+      }
+    return {std::move(rho), std::move(u), std::move(T)};
   }
 
   double time() const override { return sim_.time(); }

@@ -44,30 +44,41 @@ void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivisio
   out.close();
 }
 
+SurfaceMesh surface_mesh(std::size_t point_count, const std::vector<std::array<std::int32_t, 3>>& triangles) {
+  SurfaceMesh mesh;
+  std::vector<std::int32_t> index(point_count, -1);
+  mesh.triangles.reserve(triangles.size());
+  for (const auto& t : triangles) {
+    std::array<std::int32_t, 3> renumbered{};
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t v = t[static_cast<std::size_t>(k)];
+      if (index[static_cast<std::size_t>(v)] < 0) {
+        index[static_cast<std::size_t>(v)] = static_cast<std::int32_t>(mesh.used.size());
+        mesh.used.push_back(v);
+      }
+      renumbered[static_cast<std::size_t>(k)] = index[static_cast<std::size_t>(v)];
+    }
+    mesh.triangles.push_back(renumbered);
+  }
+  return mesh;
+}
+
 void write_surface_vtp(const std::filesystem::path& file,
                        const std::vector<std::array<double, 3>>& points,
                        const std::vector<std::array<std::int32_t, 3>>& triangles) {
-  // Only the points the triangles use, renumbered.
-  std::vector<std::int32_t> index(points.size(), -1);
-  std::vector<std::int32_t> used;
-  for (const auto& t : triangles)
-    for (std::int32_t v : t)
-      if (index[v] < 0) {
-        index[v] = static_cast<std::int32_t>(used.size());
-        used.push_back(v);
-      }
+  const SurfaceMesh mesh = surface_mesh(points.size(), triangles);
   io::CheckedOutput out(file);  // a failed write stops with RunError naming the file
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
          "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PolyData>\n";
-  out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfPolys=\"{}\">\n", used.size(),
+  out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfPolys=\"{}\">\n", mesh.used.size(),
                      triangles.size());
   out << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
          "format=\"ascii\">\n";
-  for (std::int32_t v : used)
+  for (std::int32_t v : mesh.used)
     out << fmt::format("{} {} {}\n", points[v][0], points[v][1], points[v][2]);
   out << "        </DataArray>\n      </Points>\n      <Polys>\n";
   out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& t : triangles) out << index[t[0]] << ' ' << index[t[1]] << ' ' << index[t[2]] << '\n';
+  for (const auto& t : mesh.triangles) out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
   out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
          "format=\"ascii\">\n";
   for (std::size_t c = 0; c < triangles.size(); ++c) out << 3 * (c + 1) << '\n';

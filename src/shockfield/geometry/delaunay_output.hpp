@@ -19,7 +19,16 @@ template <int N>
 void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivision<N>& d,
                         const PointArrays& point_data = {});
 
-/// A triangle surface as VTK XML PolyData (.vtp, ASCII polygons) for ParaView.
+/// A triangle surface on its own points: `used` lists the indices (into the full point list) of
+/// the points the triangles use, in order of first use; `triangles` index into `used`.
+struct SurfaceMesh {
+  std::vector<std::int32_t> used;
+  std::vector<std::array<std::int32_t, 3>> triangles;
+};
+SurfaceMesh surface_mesh(std::size_t point_count, const std::vector<std::array<std::int32_t, 3>>& triangles);
+
+/// A triangle surface as VTK XML PolyData (.vtp, ASCII polygons) for ParaView: the surface_mesh
+/// of the triangles (only the points they use).
 void write_surface_vtp(const std::filesystem::path& file,
                        const std::vector<std::array<double, 3>>& points,
                        const std::vector<std::array<std::int32_t, 3>>& triangles);

@@ -20,11 +20,11 @@ constexpr const char* kChecksum = "checksum";
 constexpr const char* kItems = "checksum_items";
 constexpr const char* kFormat = "shockfield checkpoint";
 
-// The resolved case of the running case (CheckpointCaseScope): runs in one process follow each
+// The case texts of the running case (CheckpointCaseScope): runs in one process follow each
 // other (hugoniot sweeps, Python) and nest their scopes; parallel sweeps are separate processes.
-std::string& current_case() {
-  static std::string text;
-  return text;
+CheckpointCaseScope::Texts& current_case() {
+  static CheckpointCaseScope::Texts texts;
+  return texts;
 }
 
 // The whole-file checksum: a trailer after the HDF5 image, "<tag><16 hex digits>\n", the FNV-1a
@@ -147,8 +147,8 @@ void PayloadChecksum::add(char kind, const std::string& name, const void* data, 
 
 std::string PayloadChecksum::hex() const { return fmt::format("{:016x}", hash_); }
 
-CheckpointCaseScope::CheckpointCaseScope(std::string resolved_case) : previous_(std::move(current_case())) {
-  current_case() = std::move(resolved_case);
+CheckpointCaseScope::CheckpointCaseScope(Texts texts) : previous_(std::move(current_case())) {
+  current_case() = std::move(texts);
 }
 CheckpointCaseScope::~CheckpointCaseScope() { current_case() = std::move(previous_); }
 
@@ -159,8 +159,9 @@ CheckpointWriter::CheckpointWriter(std::filesystem::path file, const std::string
   set_count("format_version", format_version);
   set_attribute("shockfield_version", shockfield_version());
   set_attribute("git_commit", shockfield_git_commit());
-  set_attribute("case", current_case());
-  set_attribute("case_sha256", sha256_hex(current_case()));
+  set_attribute("case", current_case().resolved);
+  set_attribute("case_sha256", sha256_hex(current_case().resolved));
+  set_attribute("case_input", current_case().input);
 }
 
 void CheckpointWriter::set_attribute(const std::string& name, double value) {
@@ -228,6 +229,16 @@ std::int64_t CheckpointReader::count(const std::string& name) const {
 
 std::string CheckpointReader::method() const {
   return h5_.has_attribute("method") ? h5_.string_attribute("method") : std::string();
+}
+
+std::string CheckpointReader::input_case() const {
+  const std::string text = h5_.has_attribute("case_input") ? h5_.string_attribute("case_input") : std::string();
+  if (text.empty())
+    throw InputError(fmt::format("{}: the checkpoint does not hold the case it was written with (`case_input`: "
+                                 "written before 2026-12-03 or outside a run), so --resume cannot check the case; "
+                                 "resume it with the shockfield that wrote it, or start a new run",
+                                 h5_.path()));
+  return text;
 }
 
 void CheckpointReader::require(const std::string& method, std::int64_t version) const {

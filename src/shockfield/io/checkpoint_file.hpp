@@ -17,8 +17,9 @@
 // Self-description (docs/checkpoints.md): the writer stores on the root group `format`
 // ("shockfield checkpoint"), `method`, `format_version` (an integer, one sequence per method),
 // `shockfield_version`, `git_commit`, the resolved case of the run that wrote it (`case`, the
-// text of its config.resolved.toml) and `case_sha256`; every dataset is one named quantity with
-// a `units` attribute; counters (steps, rows written, ids) are integers.
+// text of its config.resolved.toml), `case_sha256`, and `case_input` (the case as read, after
+// --set, which `--resume` compares with the case it is given); every dataset is one named quantity
+// with a `units` attribute; counters (steps, rows written, ids) are integers.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -42,17 +43,22 @@ class PayloadChecksum {
   std::string items_;                             // "<kind> <name>\n" per item, in order
 };
 
-/// The resolved case text stored in every checkpoint written while a CheckpointCaseScope is alive
-/// (the run driver holds one for the run). Outside one (unit tests) the `case` attribute is empty.
+/// The case texts stored in every checkpoint written while a CheckpointCaseScope is alive (the run
+/// driver holds one around each save): `case` (the resolved case) and `case_input` (the case as
+/// read). Outside one (unit tests) both attributes are empty.
 class CheckpointCaseScope {
  public:
-  explicit CheckpointCaseScope(std::string resolved_case);
+  struct Texts {
+    std::string resolved;
+    std::string input;
+  };
+  explicit CheckpointCaseScope(Texts texts);
   ~CheckpointCaseScope();
   CheckpointCaseScope(const CheckpointCaseScope&) = delete;
   CheckpointCaseScope& operator=(const CheckpointCaseScope&) = delete;
 
  private:
-  std::string previous_;
+  Texts previous_;
 };
 
 class CheckpointWriter {
@@ -89,6 +95,9 @@ class CheckpointReader {
   std::int64_t count(const std::string& name) const;
   /// The `method` attribute ("" for a checkpoint older than self-describing ones).
   std::string method() const;
+  /// The case as read by the run that wrote it (`case_input`); InputError naming the file when the
+  /// checkpoint has none (written before 2026-12-03, or outside a run).
+  std::string input_case() const;
   /// InputError naming the file unless it is a checkpoint of `method` in layout `version`; an
   /// older layout is named with its version and what to do.
   void require(const std::string& method, std::int64_t version) const;

@@ -21,8 +21,8 @@ class FixPairDissipation final : public md::Fix {
   void post_force(md::Simulation& sim) override;
   void end_of_step(md::Simulation& sim) override;
   double energy_added() const override { return energy_added_; }
-  std::vector<double> state() const override { return {energy_added_}; }
-  void restore(const std::vector<double>& s) override { energy_added_ = s.at(0); }
+  md::FixState state() const override { return {{"energy_added", "eV", {energy_added_}}}; }
+  void restore(const md::FixState& s) override { energy_added_ = md::fix_state_value(s, name(), "energy_added"); }
 
  private:
   double viscosity_, temperature_;

@@ -1,6 +1,7 @@
 #include "shockfield/macroparticle/plastic_bonds.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace shockfield::macroparticle {
@@ -117,27 +118,37 @@ std::size_t BondTable::broken() const {
   return static_cast<std::size_t>(std::count_if(states_.begin(), states_.end(), [](const auto& e) { return e.second.broken; }));
 }
 
-std::vector<double> BondTable::flatten() const {
+namespace {
+constexpr std::array<const char*, 8> kBondFields{"bond_id_lo", "bond_id_hi", "shift", "offset",
+                                                 "r_max",      "r_min",      "broken", "r_route"};
+}  // namespace
+
+md::FixState BondTable::state(const std::string&) const {
   std::vector<std::uint64_t> keys;
   keys.reserve(states_.size());
   for (const auto& e : states_) keys.push_back(e.first);
   std::sort(keys.begin(), keys.end());
-  std::vector<double> out;
-  out.reserve(8 * keys.size());
+  md::FixState out;
+  for (const char* field : kBondFields) out.push_back({field, "1", {}});
   for (const auto k : keys) {
     const BondState& s = states_.at(k);
     // The key as two 32-bit halves: exact in doubles.
-    out.insert(out.end(), {static_cast<double>(k >> 32), static_cast<double>(k & 0xffffffffu), s.shift, s.offset,
-                           s.r_max, s.r_min, s.broken ? 1.0 : 0.0, s.r_route});
+    const std::array<double, 8> row{static_cast<double>(k >> 32), static_cast<double>(k & 0xffffffffu), s.shift,
+                                    s.offset, s.r_max, s.r_min, s.broken ? 1.0 : 0.0, s.r_route};
+    for (std::size_t f = 0; f < row.size(); ++f) out[f].values.push_back(row[f]);
   }
   return out;
 }
 
-void BondTable::restore(const std::vector<double>& flat) {
+void BondTable::restore(const md::FixState& state, const std::string& fix) {
   states_.clear();
-  for (std::size_t b = 0; b + 8 <= flat.size(); b += 8) {
-    const auto k = (static_cast<std::uint64_t>(flat[b]) << 32) | static_cast<std::uint64_t>(flat[b + 1]);
-    states_[k] = {flat[b + 2], flat[b + 3], flat[b + 4], flat[b + 5], flat[b + 6] != 0.0, flat[b + 7]};
+  const auto held = std::find_if(state.begin(), state.end(), [](const md::FixStateItem& s) { return s.name == "shift"; });
+  const std::size_t n = held == state.end() ? 0 : held->values.size();
+  std::array<const std::vector<double>*, 8> f{};
+  for (std::size_t k = 0; k < f.size(); ++k) f[k] = &md::fix_state_values(state, fix, kBondFields[k], n);
+  for (std::size_t b = 0; b < n; ++b) {
+    const auto k = (static_cast<std::uint64_t>((*f[0])[b]) << 32) | static_cast<std::uint64_t>((*f[1])[b]);
+    states_[k] = {(*f[2])[b], (*f[3])[b], (*f[4])[b], (*f[5])[b], (*f[6])[b] != 0.0, (*f[7])[b]};
   }
 }
 

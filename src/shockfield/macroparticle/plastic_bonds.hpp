@@ -89,8 +89,11 @@ class BondTable {
   void apply_pending();
   std::size_t size() const { return states_.size(); }
   std::size_t broken() const;
-  std::vector<double> flatten() const;
-  void restore(const std::vector<double>& flat);
+  /// The table for checkpoints, one variable per bond field in the order of the sorted keys:
+  /// bond_id_lo, bond_id_hi (the pair's particle ids), shift, offset, r_max, r_min, broken (1/0),
+  /// r_route (the engine's reduced units); restore() reads it back (InputError on a mismatch).
+  md::FixState state(const std::string& fix) const;
+  void restore(const md::FixState& state, const std::string& fix);
 
  private:
   std::unordered_map<std::uint64_t, BondState> states_;
@@ -102,8 +105,8 @@ class FixBondHistory final : public md::Fix {
  public:
   explicit FixBondHistory(std::shared_ptr<BondTable> table) : table_(std::move(table)) {}
   std::string name() const override { return "bond_history"; }
-  std::vector<double> state() const override { return table_->flatten(); }
-  void restore(const std::vector<double>& s) override { table_->restore(s); }
+  md::FixState state() const override { return table_->state(name()); }
+  void restore(const md::FixState& s) override { table_->restore(s, name()); }
 
  private:
   std::shared_ptr<BondTable> table_;

@@ -19,7 +19,7 @@ namespace {
 
 // The rod runs in the MD engine's reduced units (reduced_units.hpp): its checkpoint says so.
 const md::CheckpointUnits kCheckpointUnits{"macroparticle", "reduced (macroparticle/reduced_units.hpp)", "1", "1", "1",
-                                           "1"};
+                                           "1", false};
 
 class MacroparticleMethod final : public Method {
   // md's health check (non-finite values, a particle faster than the neighbour skin allows) runs

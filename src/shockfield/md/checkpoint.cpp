@@ -9,7 +9,6 @@
 namespace shockfield::md {
 namespace {
 
-
 std::vector<double> flatten(const std::vector<Vec3>& v, std::size_t n) {
   std::vector<double> out(3 * n);
   for (std::size_t i = 0; i < n; ++i)
@@ -31,6 +30,9 @@ void set_box(geometry::Box& b, const std::vector<double>& d) {
   b.lo = Vec3(d.at(0), d.at(1), d.at(2));
   b.hi = Vec3(d.at(3), d.at(4), d.at(5));
 }
+
+// The datasets of fix k's state are named fix<k>_<fix>.<variable>.
+std::string fix_dataset_prefix(std::size_t k, const Fix& fix) { return fmt::format("fix{}_{}.", k, fix.name()); }
 
 }  // namespace
 
@@ -68,10 +70,11 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
   h5.set_attribute("type_names", names);
   h5.write("box", units.length, box_data(sim.box));
   h5.write("box_at_rebuild", units.length, box_data(sim.box_at_rebuild()));
-  for (std::size_t k = 0; k < sim.fixes.size(); ++k) {
-    auto state = sim.fixes[k]->state();
-    if (!state.empty()) h5.write(fmt::format("fix{}_{}", k, sim.fixes[k]->name()), "mixed", state);
-  }
+  for (std::size_t k = 0; k < sim.fixes.size(); ++k)
+    for (const FixStateItem& item : sim.fixes[k]->state())
+      if (!item.values.empty())
+        h5.write(fix_dataset_prefix(k, *sim.fixes[k]) + item.name, units.metal_fix_units ? item.units : "1",
+                 item.values);
   h5.commit();
 }
 
@@ -115,9 +118,14 @@ void read_checkpoint(const std::filesystem::path& file, Simulation& sim, const s
   set_box(sim.box, h5.read_doubles("box"));
   geometry::Box rebuild_box = sim.box;
   set_box(rebuild_box, h5.read_doubles("box_at_rebuild"));
+  const std::vector<std::string> datasets = h5.dataset_names();
   for (std::size_t k = 0; k < sim.fixes.size(); ++k) {
-    const std::string name = fmt::format("fix{}_{}", k, sim.fixes[k]->name());
-    if (h5.has(name)) sim.fixes[k]->restore(h5.read_doubles(name));
+    const std::string prefix = fix_dataset_prefix(k, *sim.fixes[k]);
+    FixState state;
+    for (const std::string& name : datasets)
+      if (name.starts_with(prefix))
+        state.push_back({name.substr(prefix.size()), h5.units(name), h5.read_doubles(name)});
+    sim.fixes[k]->restore(state);
   }
   sim.restore_rebuild_state(unflatten(h5.read_doubles("position_at_rebuild")), rebuild_box);
   sim.rebuilds = checkpoint.count("neighbor_rebuilds");

@@ -15,8 +15,9 @@
 namespace shockfield::md {
 
 /// The layout (docs/checkpoints.md), md and macroparticle. 2: self-describing (named datasets with
-/// units, integer counters, type masses and names).
-inline constexpr std::int64_t kCheckpointFormat = 2;
+/// units, integer counters, type masses and names); 3: each fix variable a dataset of its own
+/// (fix<k>_<fix>.<variable>, was one `mixed` array per fix).
+inline constexpr std::int64_t kCheckpointFormat = 3;
 
 struct CheckpointPosition {
   std::int64_t stage = 0;        ///< index in the case's [[stage]] list
@@ -28,6 +29,7 @@ struct CheckpointPosition {
 struct CheckpointUnits {
   std::string method = "md", system = "metal", length = "Angstrom", velocity = "Angstrom/ps", force = "eV/Angstrom",
               mass = "g/mol";
+  bool metal_fix_units = true;  ///< the fixes' variables labelled in metal units (else "1")
 };
 
 void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const CheckpointPosition& where,

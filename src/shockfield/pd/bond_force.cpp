@@ -171,20 +171,18 @@ std::size_t BondForce<Model>::intact_bonds() const {
 }
 
 template <class Model>
-std::vector<double> BondForce<Model>::saved_state() const {
-  std::vector<double> data(intact_.begin(), intact_.end());
-  data.insert(data.end(), s0_.begin(), s0_.end());
-  return data;
+ModelState BondForce<Model>::saved_state() const {
+  ModelStateArray intact{"bond_intact", "1", intact_.size(), {}, true, {}, {}};
+  intact.counts.assign(intact_.begin(), intact_.end());
+  return {std::move(intact), {"critical_stretch", "1", s0_.size(), {}, false, s0_, {}}};
 }
 
 template <class Model>
-void BondForce<Model>::restore_state(const std::vector<double>& data) {
-  if (data.size() != intact_.size() + s0_.size())
-    throw InputError(fmt::format("pd {}: saved state of {} values, expected {} ({} bonds and {} points)", name(),
-                                 data.size(), intact_.size() + s0_.size(), intact_.size(), s0_.size()));
-  const auto split = data.begin() + static_cast<std::ptrdiff_t>(intact_.size());
-  std::transform(data.begin(), split, intact_.begin(), [](double flag) { return flag != 0.0 ? 1 : 0; });
-  std::copy(split, data.end(), s0_.begin());
+void BondForce<Model>::restore_state(const ModelState& state) {
+  const std::vector<std::int64_t>& intact = saved_array(state, name(), "bond_intact", intact_.size(), 1, true).counts;
+  const std::vector<double>& s0 = saved_array(state, name(), "critical_stretch", s0_.size(), 1, false).reals;
+  std::transform(intact.begin(), intact.end(), intact_.begin(), [](std::int64_t flag) { return flag != 0 ? 1 : 0; });
+  std::copy(s0.begin(), s0.end(), s0_.begin());
 }
 
 template <class Model>

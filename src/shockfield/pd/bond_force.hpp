@@ -14,6 +14,7 @@
 #include "shockfield/pd/family.hpp"
 #include "shockfield/pd/force_model.hpp"
 #include "shockfield/pd/influence.hpp"
+#include "shockfield/pd/model_state.hpp"
 
 namespace shockfield::pd {
 
@@ -46,12 +47,13 @@ class BondForce final : public ForceModel {
   /// The contact force, if on.
   ShortRangeContact* contact() { return contact_ ? &*contact_ : nullptr; }
 
-  /// The damage state for checkpoints: the intact flag of every bond (1/0) then every point's
-  /// critical stretch s0 of the next step. The dilatations are recomputed from the positions at
-  /// each force evaluation, so this is all a resume needs to continue bitwise.
-  std::vector<double> saved_state() const;
-  /// Takes back saved_state() (InputError on a size mismatch).
-  void restore_state(const std::vector<double>& data);
+  /// The damage state for checkpoints: `bond_intact` (1/0 for every bond entry of the family, each
+  /// bond stored from both ends) and `critical_stretch` (every point's s0 of the next step). The
+  /// dilatations are recomputed from the positions at each force evaluation, so this is all a
+  /// resume needs to continue bitwise.
+  ModelState saved_state() const;
+  /// Takes back saved_state() (InputError naming the array on a missing one or a size mismatch).
+  void restore_state(const ModelState& state);
 
  private:
   BondTerms terms(std::size_t i, int b, double e) const;

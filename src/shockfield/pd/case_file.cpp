@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <numbers>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/size_limits.hpp"
@@ -14,19 +16,10 @@
 namespace shockfield::pd {
 namespace {
 
-BodySpec read_body(const Config& t) {
-  BodySpec b;
-  b.dim = static_cast<int>(t.get_int("dim", Range::closed(1, 3)));
-  const auto counts = t.get_ints("counts", static_cast<std::size_t>(b.dim), Range::closed(1, 1e7));
-  for (int d = 0; d < b.dim; ++d) b.counts[static_cast<std::size_t>(d)] = static_cast<int>(counts[static_cast<std::size_t>(d)]);
-  b.spacing = t.get_double("spacing", Range::positive());
-  b.horizon_factor = t.get_double_or("horizon_factor", 3.0, Range::positive());
-  if (b.horizon_factor < 1.0)
-    t.fail("horizon_factor", fmt::format("{}: the horizon δ = {}·ΔX is smaller than the spacing, so a point has no "
-                                         "neighbour on the lattice (expected >= 1)",
-                                         b.horizon_factor, b.horizon_factor));
-  // Sane sizes, checked before the body is built: at most kMaxParticles points, a finite extent and
-  // horizon (a spacing of 1e308 overflowed them to inf).
+// The lattice's sizes, checked before it is built: at most kMaxParticles points, a finite extent
+// and horizon (a spacing of 1e308 overflowed them to inf), and the bond list counted before it is
+// built (its size grows as horizon_factor³).
+void check_lattice(const Config& t, const BodySpec& b) {
   double points = 1;
   for (int d = 0; d < b.dim; ++d) points *= static_cast<double>(b.counts[static_cast<std::size_t>(d)]);
   if (points > kMaxParticles)
@@ -35,7 +28,6 @@ BodySpec read_body(const Config& t) {
   if (!std::isfinite(b.spacing * longest * b.horizon_factor))
     t.fail("spacing", fmt::format("the body ({} points of {} m) or its horizon ({}·ΔX) is not finite",
                                   longest, b.spacing, b.horizon_factor));
-  // The bond list, counted before it is built: its size grows as horizon_factor³.
   const double bonds = lattice_bonds(b.dim, b.counts, b.horizon_factor);
   if (!(bonds <= kMaxBonds))
     t.fail("horizon_factor", fmt::format("{}: the {:.3g} points would have {:.3g} bonds ({:.3g} per point; ~{} for the "
@@ -43,9 +35,80 @@ BodySpec read_body(const Config& t) {
                                          "horizon_factor or the point counts)",
                                          b.horizon_factor, points, bonds, bonds / points,
                                          memory_text(pd_bytes(0.0, bonds)), kMaxBonds));
+}
+
+// A body read from `points_file` (pd::read_cloud: "x y z volume" lines), with the lattice's size
+// limits: at most kMaxParticles points, and bonds estimated before the families are built as
+// N · (the horizon's length, area or volume) / (the mean point volume), the count of a point
+// whose family is whole.
+void read_points_file(const Config& t, BodySpec& b) {
+  if (t.has("counts"))
+    t.fail("counts", "expected either counts (a lattice) or points_file (a point cloud), not both");
+  if (!std::isfinite(b.spacing * b.horizon_factor))
+    t.fail("spacing", fmt::format("the horizon {}·{} m is not finite", b.horizon_factor, b.spacing));
+  const std::filesystem::path file = t.get_input_file("points_file");
+  try {
+    b.cloud = read_cloud(file, b.dim, b.spacing);
+  } catch (const InputError& e) {
+    t.fail("points_file", e.what());
+  }
+  const double points = static_cast<double>(b.cloud->size());
+  if (points > kMaxParticles)
+    t.fail("points_file", fmt::format("{:.3g} points; expected at most {:.0e}", points, kMaxParticles));
+  double volume = 0.0;
+  for (double v : b.cloud->volume) volume += v;
+  const double reach = b.horizon(), ball = b.dim == 1 ? 2.0 * reach
+                                          : b.dim == 2 ? std::numbers::pi * reach * reach
+                                                       : 4.0 / 3.0 * std::numbers::pi * reach * reach * reach;
+  const double bonds = points * ball / (volume / points);
+  if (!(bonds <= kMaxBonds))
+    t.fail("horizon_factor", fmt::format("{}: the {:.3g} points of {} would have ~{:.3g} bonds; expected a horizon "
+                                         "giving at most {:.0e} bonds",
+                                         b.horizon_factor, points, file.string(), bonds, kMaxBonds));
+}
+
+BodySpec read_body(const Config& t) {
+  BodySpec b;
+  b.dim = static_cast<int>(t.get_int("dim", Range::closed(1, 3)));
+  const bool from_file = t.has("points_file");
+  if (!from_file) {
+    const auto counts = t.get_ints("counts", static_cast<std::size_t>(b.dim), Range::closed(1, 1e7));
+    for (int d = 0; d < b.dim; ++d) b.counts[static_cast<std::size_t>(d)] = static_cast<int>(counts[static_cast<std::size_t>(d)]);
+  }
+  b.spacing = t.get_double("spacing", Range::positive());
+  b.horizon_factor = t.get_double_or("horizon_factor", 3.0, Range::positive());
+  if (b.horizon_factor < 1.0)
+    t.fail("horizon_factor", fmt::format("{}: the horizon δ = {}·ΔX is smaller than the spacing, so a point has no "
+                                         "neighbour on the lattice (expected >= 1)",
+                                         b.horizon_factor, b.horizon_factor));
+  if (from_file)
+    read_points_file(t, b);
+  else
+    check_lattice(t, b);
   b.influence = Influence::from_name(t.get_choice_or("influence", Influence::names(), "constant"));
   b.correction = volume_correction_from_name(t.get_choice_or("volume_correction", {"linear", "none"}, "linear"));
   return b;
+}
+
+// The families of a body from a file, built to check it before the run: every point has a
+// neighbour within the horizon, and no two points coincide (closer than 1e-6 ΔX).
+Family checked_cloud_family(const Config& t, const BodySpec& b) {
+  const PointCloud& cloud = *b.cloud;
+  const Family family = build_family(cloud, b.horizon(), b.correction);
+  const auto at = [&](std::size_t i) { return fmt::format("({}, {}, {}) m", cloud.x[i][0], cloud.x[i][1], cloud.x[i][2]); };
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (family.begin(i) == family.end(i))
+      t.fail("horizon_factor", fmt::format("point {} of points_file at {} has no neighbour within the horizon δ = {}·ΔX "
+                                           "= {} m: the horizon is smaller than the spacing of the points there "
+                                           "(expected a larger horizon_factor or spacing, or no isolated point)",
+                                           i, at(i), b.horizon_factor, b.horizon()));
+    for (int k = family.begin(i); k < family.end(i); ++k)
+      if (family.length[static_cast<std::size_t>(k)] < 1e-6 * b.spacing)
+        t.fail("points_file", fmt::format("points {} and {} at {} overlap (expected distinct points, at least 1e-6 "
+                                          "of the spacing apart)",
+                                          i, family.neighbor[static_cast<std::size_t>(k)], at(i)));
+  }
+  return family;
 }
 
 // Keys that belong to some models only: given to another model they are refused by name.
@@ -137,18 +200,21 @@ OutputSpec read_output(const std::optional<Config>& o, double end_time) {
 PdCase read_pd_case(const Config& root) {
   PdCase c;
   c.body = read_body(root.table("body"));
+  const std::optional<Family> cloud_family =
+      c.body.cloud ? std::optional<Family>(checked_cloud_family(root.table("body"), c.body)) : std::nullopt;
   c.material = read_material(root.table("material"), c.material_notes);
   if (auto* lps = std::get_if<LpsSpec>(&c.material)) lps->law.dim = c.body.dim;  // the 1D/2D/3D LPS
   c.solver = read_solver(root.table("solver"));
   const std::vector<Config> regions = root.tables("region");
   const bool bond_model = std::holds_alternative<PmbSpec>(c.material) || std::holds_alternative<LpsSpec>(c.material);
+  const BodyPoints points = c.body.points();
   for (const Config& t : regions) {
-    c.regions.push_back(read_load_region(t, c.body.dim, c.body.counts, c.body.spacing));
+    c.regions.push_back(read_load_region(t, c.body.dim, points));
     if (c.regions.back().separate && !bond_model)
       t.fail("separate", "a separate body touches the rest only through the short-range contact force, which "
                          "model = \"pmb\" and \"lps\" have (expected one of them, or no separate body)");
   }
-  check_bodies_apart(regions, c.regions, c.body.counts, c.body.spacing);
+  check_bodies_apart(regions, c.regions, points);
   if (const auto loading = root.optional_table("loading")) {
     loading->get_choice_or("type", {"impact"}, "impact");
     c.impact_speed = loading->get_double("speed", Range::positive());
@@ -157,12 +223,14 @@ PdCase read_pd_case(const Config& root) {
   }
   for (const Config& t : root.tables("crack")) {
     c.cracks.push_back(read_crack(t, c.body.dim));
-    const auto& n = c.body.counts;
-    if (!cuts_a_lattice_bond(c.cracks.back(), c.body.dim, n, c.body.spacing, c.body.horizon()))
+    const bool cuts = cloud_family ? std::ranges::any_of(cut_bonds(*c.body.cloud, *cloud_family, {c.cracks.back()}),
+                                                         [](unsigned char cut) { return cut != 0; })
+                                   : cuts_a_lattice_bond(c.cracks.back(), c.body.dim, c.body.counts, c.body.spacing,
+                                                         c.body.horizon());
+    if (!cuts)
       t.fail(c.body.dim == 2 ? "from" : "vertices",
-             fmt::format("the crack cuts no bond of the body (points from (0, 0, 0) to ({}, {}, {}) m): it lies "
-                         "outside the body or on its surface",
-                         (n[0] - 1) * c.body.spacing, (n[1] - 1) * c.body.spacing, (n[2] - 1) * c.body.spacing));
+             fmt::format("the crack cuts no bond of the body ({}): it lies outside the body or on its surface",
+                         points.extent()));
   }
   const auto output = root.optional_table("output");
   c.output = read_output(output, c.solver.end_time);

@@ -1,9 +1,10 @@
 #pragma once
 // The peridynamics case file (method = "pd"), read and validated completely before anything runs.
 // Keys are documented in docs/pd.md; every value goes through Config so that an error names the
-// file, the key and its line. SI units. The body is a regular lattice (Liu et al. 2025, §1) loaded by the
-// impact of its left half on its right half (Liu et al. 2025, Fig. 2) and/or by regions with initial or
-// prescribed velocities, and cut by pre-cracks.
+// file, the key and its line. SI units. The body is a regular lattice (Liu et al. 2025, §1) or a
+// point cloud from a file (`points_file`), loaded by the impact of its left half on its right half
+// (Liu et al. 2025, Fig. 2) and/or by regions with initial or prescribed velocities or
+// displacements, and cut by pre-cracks.
 #include <array>
 #include <optional>
 #include <string>
@@ -24,12 +25,16 @@ namespace shockfield::pd {
 
 struct BodySpec {
   int dim = 1;
-  std::array<int, 3> counts{1, 1, 1};  ///< points along x, y, z (1 beyond dim)
+  std::array<int, 3> counts{1, 1, 1};  ///< points along x, y, z (1 beyond dim; all 1 for a cloud)
+  /// The points of `points_file` (positions and volumes), else none: the lattice of `counts`.
+  std::optional<PointCloud> cloud;
   double spacing = 0.0;                ///< ΔX [m]
   double horizon_factor = 3.0;         ///< m of δ = m·ΔX
   Influence influence;
   VolumeCorrection correction = VolumeCorrection::linear;
   double horizon() const { return horizon_factor * spacing; }
+  /// The body's points as the case reader walks them (regions.hpp).
+  BodyPoints points() const { return {counts, spacing, cloud ? &*cloud : nullptr}; }
 };
 
 struct SolverSpec {

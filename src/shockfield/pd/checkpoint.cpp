@@ -27,7 +27,7 @@ std::vector<Vec3> unflatten(const std::vector<double>& d, std::size_t n, const s
 
 }  // namespace
 
-void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const std::vector<double>& model_state,
+void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, const ModelState& model_state,
                       const OutputCounters& counters) {
   io::CheckpointWriter h5(file, "pd", kCheckpointFormat);
   const hsize_t n = sim.cloud().size();
@@ -39,13 +39,19 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
   h5.write("position", "m", flatten(sim.positions()), {n, 3});
   h5.write("velocity", "m/s", flatten(sim.velocities()), {n, 3});
   h5.write("force_density", "N/m3", flatten(sim.force_density()), {n, 3});
-  // The force model's own state, in its layout (docs/checkpoints.md): bond flags then s0 (pmb,
-  // lps), or F then the material state per point (correspondence); mixed units.
-  h5.write("model_state", "mixed", model_state);
+  // The force model's own state, one dataset per quantity (docs/checkpoints.md).
+  for (const ModelStateArray& a : model_state) {
+    std::vector<hsize_t> shape{a.rows};
+    shape.insert(shape.end(), a.shape.begin(), a.shape.end());
+    if (a.integer)
+      h5.write(a.name, a.units, a.counts, shape);
+    else
+      h5.write(a.name, a.units, a.reals, shape);
+  }
   h5.commit();
 }
 
-OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, std::vector<double>& model_state) {
+OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& sim, ModelState& model_state) {
   const io::CheckpointReader checkpoint(file);
   const io::Hdf5File& h5 = checkpoint.h5();
   const std::string f = file.string();
@@ -55,7 +61,19 @@ OutputCounters read_checkpoint(const std::filesystem::path& file, Simulation& si
               unflatten(h5.read_doubles("velocity"), n, "velocity", f),
               unflatten(h5.read_doubles("force_density"), n, "force_density", f),
               checkpoint.count("step"), h5.attribute("time"));
-  model_state = h5.read_doubles("model_state");
+  model_state.clear();
+  for (const std::string& name : h5.dataset_names()) {
+    if (name == "position" || name == "velocity" || name == "force_density") continue;
+    const std::vector<hsize_t> dims = h5.shape(name);
+    ModelStateArray a{name, h5.units(name), dims.empty() ? 0 : static_cast<std::size_t>(dims[0]), {},
+                      h5.is_integer(name), {}, {}};
+    for (std::size_t d = 1; d < dims.size(); ++d) a.shape.push_back(static_cast<std::size_t>(dims[d]));
+    if (a.integer)
+      a.counts = h5.read_ints(name);
+    else
+      a.reals = h5.read_doubles(name);
+    model_state.push_back(std::move(a));
+  }
   return {checkpoint.count("series"), checkpoint.count("profiles")};
 }
 

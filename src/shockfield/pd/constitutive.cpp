@@ -28,6 +28,16 @@ Mat3 SmallStrainJ2::update(State& s, const Mat3& /*f_old*/, const Mat3& f_new, d
   return s.dev.s + bulk * strain.trace() * Mat3::Identity();
 }
 
+std::size_t StateLayout::grain_size() const {
+  std::size_t n = 0;
+  for (const StateField& f : fields) n += f.count;
+  return n;
+}
+
+StateLayout SmallStrainJ2::state_layout() const {
+  return {{{"strain", "1", 9}, {"deviatoric_stress", "Pa", 9}, {"back_stress", "Pa", 9}, {"plastic_strain", "1", 1}}};
+}
+
 void SmallStrainJ2::save(const State& s, double* out) const {
   std::copy_n(s.strain.data(), 9, out);
   std::copy_n(s.dev.s.data(), 9, out + 9);

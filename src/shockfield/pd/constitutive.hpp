@@ -5,18 +5,39 @@
 // into the first Piola-Kirchhoff stress (eq. 10, P = det(F)·σ·F⁻ᵀ, or P = σ for small strain)
 // and its wave speeds for the Riemann correction and the stable step.
 #include <concepts>
+#include <cstddef>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "shockfield/core/types.hpp"
 #include "shockfield/materials/strength/j2_plasticity.hpp"
 
 namespace shockfield::pd {
 
+/// One named part of a material's saved point state, `count` values per point (and grain).
+struct StateField {
+  std::string name;
+  std::string units;  ///< "1" for a pure number
+  std::size_t count = 1;
+  bool integer = false;  ///< a counter, stored as an integer
+};
+
+/// What a material's save()/load() write per point: the fields in order, the whole list repeated
+/// for each of `grains` grains when `per_grain` (a Taylor aggregate), else once.
+struct StateLayout {
+  std::vector<StateField> fields;
+  bool per_grain = false;
+  std::size_t grains = 1;
+  std::size_t grain_size() const;  ///< Σ count
+  std::size_t size() const { return grains * grain_size(); }  ///< doubles per point
+};
+
 template <class M>
 concept CorrespondenceMaterial = requires(const M& m, typename M::State& s, const Mat3& f, double* out) {
   { m.initial_state() } -> std::same_as<typename M::State>;  // the unloaded state of a point
   { m.update(s, f, f, 0.0) } -> std::same_as<Mat3>;  // σ at the new F, advancing s over dt
-  { m.state_size() } -> std::convertible_to<std::size_t>;  // doubles of save()/load() (checkpoints)
+  { m.state_layout() } -> std::same_as<StateLayout>;  // what save()/load() write (checkpoints)
   m.save(std::as_const(s), out);
   m.load(s, std::as_const(out));
   { m.finite_strain() } -> std::convertible_to<bool>;
@@ -44,7 +65,8 @@ struct SmallStrainJ2 {
                                   double slope);
   State initial_state() const { return {}; }
   Mat3 update(State& s, const Mat3& f_old, const Mat3& f_new, double dt) const;
-  std::size_t state_size() const { return 28; }
+  /// strain, deviatoric_stress, back_stress (9 each, row-major), plastic_strain.
+  StateLayout state_layout() const;
   void save(const State& s, double* out) const;
   void load(State& s, const double* in) const;
   bool finite_strain() const { return false; }

@@ -22,6 +22,13 @@ CorrespondenceForce<Material>::CorrespondenceForce(const PointCloud& cloud, cons
   const std::size_t n = cloud.size();
   if (materials_.size() != 1 && materials_.size() != n)
     throw InputError(fmt::format("pd correspondence: {} materials for {} points", materials_.size(), n));
+  // A checkpoint stores each state field as one array over the points (saved_state), so every
+  // point's material must save the same layout (one crystal type, as many grains everywhere).
+  const StateLayout layout = materials_.front().state_layout();
+  for (const Material& m : materials_)
+    if (m.state_layout().size() != layout.size() || m.state_layout().grains != layout.grains)
+      throw InputError("pd correspondence: the points' materials hold states of different layouts (grains or slip "
+                       "systems per point differ), which a checkpoint cannot store as one array per quantity");
   unused_ = Mat3::Zero();
   for (int d = cloud.dim; d < 3; ++d) unused_(d, d) = 1.0;
   omega_.resize(family.bonds());
@@ -142,28 +149,75 @@ double CorrespondenceForce<Material>::stable_step(const std::vector<double>& den
   return dt;
 }
 
+namespace {
+
+// Where field k of grain g starts in a point's save() block, and the array's values per point.
+std::size_t field_offset(const StateLayout& layout, std::size_t k, std::size_t g) {
+  std::size_t at = g * layout.grain_size();
+  for (std::size_t f = 0; f < k; ++f) at += layout.fields[f].count;
+  return at;
+}
+std::vector<std::size_t> field_shape(const StateLayout& layout, const StateField& f) {
+  std::vector<std::size_t> shape;
+  if (layout.per_grain) shape.push_back(layout.grains);
+  if (f.count > 1) shape.push_back(f.count);
+  return shape;
+}
+
+}  // namespace
+
 template <CorrespondenceMaterial Material>
-std::vector<double> CorrespondenceForce<Material>::saved_state() const {
-  std::vector<double> out;
-  for (std::size_t i = 0; i < cloud_.size(); ++i) {
-    const std::size_t at = out.size();
-    out.resize(at + 9 + material(i).state_size());
-    std::copy_n(f_[i].data(), 9, &out[at]);
-    material(i).save(state_[i], &out[at + 9]);
+ModelState CorrespondenceForce<Material>::saved_state() const {
+  const std::size_t n = cloud_.size();
+  const StateLayout layout = material(0).state_layout();
+  ModelState out{{"deformation_gradient", "1", n, {9}, false, std::vector<double>(9 * n), {}}};
+  for (const StateField& f : layout.fields) {
+    ModelStateArray a{f.name, f.units, n, field_shape(layout, f), f.integer, {}, {}};
+    (f.integer ? a.counts.resize(n * a.row_size()) : a.reals.resize(n * a.row_size()));
+    out.push_back(std::move(a));
+  }
+  std::vector<double> block(layout.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    std::copy_n(f_[i].data(), 9, &out[0].reals[9 * i]);
+    material(i).save(state_[i], block.data());
+    for (std::size_t k = 0; k < layout.fields.size(); ++k) {
+      ModelStateArray& a = out[k + 1];
+      const std::size_t count = layout.fields[k].count, row = a.row_size();
+      for (std::size_t g = 0; g < layout.grains; ++g)
+        for (std::size_t c = 0; c < count; ++c) {
+          const double v = block[field_offset(layout, k, g) + c];
+          const std::size_t at = i * row + g * count + c;
+          if (a.integer)
+            a.counts[at] = static_cast<std::int64_t>(v);
+          else
+            a.reals[at] = v;
+        }
+    }
   }
   return out;
 }
 
 template <CorrespondenceMaterial Material>
-void CorrespondenceForce<Material>::restore_state(const std::vector<double>& data) {
-  std::size_t expected = 0;
-  for (std::size_t i = 0; i < cloud_.size(); ++i) expected += 9 + material(i).state_size();
-  if (data.size() != expected)
-    throw InputError(fmt::format("pd correspondence: saved state of {} values, expected {} for {} points", data.size(),
-                                 expected, cloud_.size()));
-  for (std::size_t i = 0, at = 0; i < cloud_.size(); at += 9 + material(i).state_size(), ++i) {
-    f_[i] = Mat3(&data[at]);
-    material(i).load(state_[i], &data[at + 9]);
+void CorrespondenceForce<Material>::restore_state(const ModelState& state) {
+  const std::size_t n = cloud_.size();
+  const StateLayout layout = material(0).state_layout();
+  const std::vector<double>& f = saved_array(state, name(), "deformation_gradient", n, 9, false).reals;
+  std::vector<const ModelStateArray*> arrays;
+  for (const StateField& field : layout.fields)
+    arrays.push_back(&saved_array(state, name(), field.name, n, layout.grains * field.count, field.integer));
+  std::vector<double> block(layout.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    f_[i] = Mat3(&f[9 * i]);
+    for (std::size_t k = 0; k < layout.fields.size(); ++k) {
+      const std::size_t count = layout.fields[k].count, row = layout.grains * count;
+      for (std::size_t g = 0; g < layout.grains; ++g)
+        for (std::size_t c = 0; c < count; ++c) {
+          const std::size_t at = i * row + g * count + c;
+          block[field_offset(layout, k, g) + c] =
+              arrays[k]->integer ? static_cast<double>(arrays[k]->counts[at]) : arrays[k]->reals[at];
+        }
+    }
+    material(i).load(state_[i], block.data());
   }
 }
 

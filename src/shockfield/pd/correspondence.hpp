@@ -22,6 +22,7 @@
 #include "shockfield/pd/constitutive.hpp"
 #include "shockfield/pd/family.hpp"
 #include "shockfield/pd/force_model.hpp"
+#include "shockfield/pd/model_state.hpp"
 #include "shockfield/pd/influence.hpp"
 
 namespace shockfield::pd {
@@ -50,8 +51,10 @@ class CorrespondenceForce final : public ForceModel {
   const Material& material(std::size_t i) const { return materials_[materials_.size() == 1 ? 0 : i]; }
   /// Everything a later step reads of the past (F and the material state of every point), for
   /// checkpoints; restore_state() takes it back bitwise (InputError on a size mismatch).
-  std::vector<double> saved_state() const;
-  void restore_state(const std::vector<double>& data);
+  /// `deformation_gradient` (9 per point, row-major) and one array per field of the material's
+  /// state_layout() (per point, or per point and grain).
+  ModelState saved_state() const;
+  void restore_state(const ModelState& state);
 
  private:
   const PointCloud& cloud_;

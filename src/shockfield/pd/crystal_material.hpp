@@ -12,6 +12,7 @@
 // the grains' M_x: under the Taylor assumption the stiffness is the Voigt average.
 #include "shockfield/core/types.hpp"
 #include "shockfield/materials/strength/crystal_taylor.hpp"
+#include "shockfield/pd/constitutive.hpp"
 
 namespace shockfield::pd {
 
@@ -26,16 +27,15 @@ struct CrystalMaterial {
   Mat3 update(State& s, const Mat3& f_old, const Mat3& f_new, double dt) const {
     return aggregate.update(s, f_old, f_new, dt);
   }
-  std::size_t state_size() const { return aggregate.orientations.size() * grain_state_size(); }
+  /// Per grain: orientation g, lattice (g·Re), plastic_deformation_gradient Fp (9 each),
+  /// slip_resistance g^α [Pa] and slip γ^α (one per slip system), accumulated_slip, substeps.
+  StateLayout state_layout() const;
   void save(const State& s, double* out) const;
   void load(State& s, const double* in) const;
   bool finite_strain() const { return true; }
   double reference_density() const { return density; }
   double longitudinal_modulus() const;
   double hugoniot_slope() const { return slope; }
-
- private:
-  std::size_t grain_state_size() const { return 29 + 2 * aggregate.crystal.systems.size(); }
 };
 
 /// The plastic measure the run output reports: the accumulated slip γ_tot (eq. 39), mean over

@@ -90,9 +90,9 @@ struct ModelRun {
   std::unique_ptr<ForceModel> force;
   double density = 0.0;
   PointFields fields;
-  std::function<std::vector<double>()> save;
+  std::function<ModelState()> save;
   /// Takes back the saved state.
-  std::function<void(const std::vector<double>&)> restore;
+  std::function<void(const ModelState&)> restore;
   std::function<void(const Config&)> derive;
 };
 
@@ -114,7 +114,7 @@ ModelRun make_model(const Config& root, const PdCase& c, const Spec& spec, const
                {[&force](std::size_t i) { return force.stress(i); },
                 [&force](std::size_t i) { return plastic_measure(force.state(i)); }, grain, {}},
                [&force] { return force.saved_state(); },
-               [&force](const std::vector<double>& state) { force.restore_state(state); },
+               [&force](const ModelState& state) { force.restore_state(state); },
                [&c, materials = std::move(materials), grain = grain](const Config& r) {
                  derive_material(r, c, materials, grain);
                }};
@@ -135,7 +135,7 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
                spec.density,
                {{}, {}, std::vector<int>(cloud.size(), 0), {}},
                [&force] { return force.saved_state(); },
-               [&force](const std::vector<double>& state) { force.restore_state(state); },
+               [&force](const ModelState& state) { force.restore_state(state); },
                {}};
   run.force = std::move(model);
   return run;
@@ -179,7 +179,9 @@ CrackedFamily cracked_family(const PdCase& c, const PointCloud& cloud, const Bod
 // computes its own on the whole body before its folder exists).
 constexpr double kCheckBonds = 5e6;
 
+// A body from a points_file is checked whole (its file has been read anyway).
 BodySpec checked_body(const BodySpec& body) {
+  if (body.cloud) return body;
   const int m = static_cast<int>(std::ceil(body.horizon_factor));
   BodySpec sub = body;
   for (int most = 4 * m + 1; most >= 2; --most) {
@@ -211,7 +213,7 @@ class PdMethod final : public Method {
   /// sizes of the whole body are counted, not built.
   PdMethod(const Config& root, const PdCase& c, bool check)
       : c_(c), built_(check ? checked_body(c_.body) : c_.body),
-        cloud_(lattice_cloud(built_.dim, built_.counts, built_.spacing)),
+        cloud_(built_.cloud ? *built_.cloud : lattice_cloud(built_.dim, built_.counts, built_.spacing)),
         cracked_(cracked_family(c_, cloud_, built_)),
         model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, cracked_.family, cracked_.cut); },
                           c_.material)),
@@ -248,7 +250,7 @@ class PdMethod final : public Method {
     write_due();
   }
   void resume(RunContext& run) override {
-    std::vector<double> state;
+    ModelState state;
     counters_ = read_checkpoint(run.checkpoint, sim_, state);
     model_.restore(state);
     apply_regions(sim_, c_.regions, false);
@@ -326,14 +328,8 @@ class PdMethod final : public Method {
     if (!c_.cracks.empty())
       log_->info("pre-cracks: {} crack(s) cut {} bonds ({})", c_.cracks.size(), cracked_.cut_count / 2,
                  cracked_.cut.empty() ? "left out of the correspondence family" : "broken from step 0");
-    for (std::size_t k = 0; k < c_.regions.size(); ++k) {
-      const LoadRegion& r = c_.regions[k];
-      const std::string velocity = !r.sets_velocity ? "keeping its velocity"
-          : fmt::format("{} ({}, {}, {}) m/s", r.prescribed ? "held at" : "starting at", r.velocity[0], r.velocity[1],
-                        r.velocity[2]);
-      log_->info("region {}: {} points {}{}", k, points_in(r.shape, cloud_).size(), velocity,
-                 r.separate ? ", a separate body" : "");
-    }
+    for (std::size_t k = 0; k < c_.regions.size(); ++k)
+      log_->info("region {}: {}", k, describe(c_.regions[k], points_in(c_.regions[k].shape, cloud_).size()));
     output_.emplace(run.folder, c_.body.dim, model_.fields, c_.output, total_steps(), resume);
     if (!finished())
       log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",

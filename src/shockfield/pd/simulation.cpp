@@ -28,6 +28,7 @@ void Simulation::clamp_dimensions(std::vector<Vec3>& a) const {
 }
 
 void Simulation::setup() {
+  run_hooks(Stage::before_force);
   model_->compute(Kinematics{y_, v_, 0.0}, f_);
   clamp_dimensions(f_);
   ready_ = true;
@@ -42,6 +43,8 @@ void Simulation::step(double dt) {
     v_[i] += (0.5 * dt / density_[i]) * f_[i];
     y_[i] += dt * v_[i];
   }
+  time_ += dt;
+  run_hooks(Stage::before_force);
   model_->compute(Kinematics{y_, v_, dt}, f_);
   clamp_dimensions(f_);
   run_hooks(Stage::after_force);
@@ -52,7 +55,6 @@ void Simulation::step(double dt) {
     finite = finite && v_[i].allFinite() && y_[i].allFinite();
   }
   ++steps_;
-  time_ += dt;
   if (!finite)
     throw RunError(fmt::format("pd: non-finite positions or velocities at step {} (t = {:.6g} s): the time step "
                                "{:.6g} s is unstable (estimate {:.6g} s)",

@@ -18,7 +18,10 @@ namespace shockfield::pd {
 
 class Simulation {
  public:
-  enum class Stage { after_force, end_of_step };
+  /// before_force: after the drift, before the forces of the new positions (a prescribed
+  /// displacement sets its points); after_force: before the second half kick (a held point drops
+  /// its force). In both, time() is already the time the step ends at.
+  enum class Stage { before_force, after_force, end_of_step };
   using Hook = std::function<void(Simulation&)>;
 
   /// `density` is ρ per point (one value for all when its size is 1). The cloud and family must
@@ -26,7 +29,8 @@ class Simulation {
   Simulation(const PointCloud& cloud, const Family& family, std::unique_ptr<ForceModel> model,
              std::vector<double> density);
 
-  /// Computes the forces of the initial state (LAMMPS "setup"); called by the first step if not yet.
+  /// Computes the forces of the initial state (LAMMPS "setup", with the before_force and after_force
+  /// hooks at t = 0); called by the first step if not yet.
   void setup();
   /// One velocity-Verlet step. RunError when a position or velocity stops being finite.
   void step(double dt);

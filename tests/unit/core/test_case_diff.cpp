@@ -95,13 +95,13 @@ TEST(CaseDiff, BadTomlSaysWhichCase) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("the case given to --resume:1:"), std::string::npos) << e.what();
   }
-  // The stored case is named by its file (a damaged run/checkpoint.case.toml, found by the
-  // resume_case fuzz target: the message named no file).
+  // The stored case is named by where it came from (a damaged stored case, found by the resume_case
+  // fuzz target when it was a file beside the checkpoint: the message named no file).
   try {
-    diff_cases("[a\n", "a = 1\n", "run/checkpoint.case.toml");
+    diff_cases("[a\n", "a = 1\n", "run/checkpoint.h5 (its case_input)");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("run/checkpoint.case.toml:1:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("run/checkpoint.h5 (its case_input):1:"), std::string::npos) << e.what();
   }
 }
 

@@ -177,8 +177,9 @@ TEST_F(CheckpointFileTest, CountsAreNonNegativeIntegers) {
 
 TEST_F(CheckpointFileTest, DescribesItselfAndRefusesAnotherMethodOrFormatByName) {
   const std::string resolved = "method = 'sample'\n[sample]\nsteps = 3\n";
+  const std::string input = "method = 'sample'\n";
   {
-    const io::CheckpointCaseScope scope(resolved);
+    const io::CheckpointCaseScope scope({resolved, input});
     write_sample(file, 3);
   }
   const io::CheckpointReader r(file);
@@ -190,6 +191,7 @@ TEST_F(CheckpointFileTest, DescribesItselfAndRefusesAnotherMethodOrFormatByName)
   EXPECT_EQ(h5.string_attribute("git_commit"), shockfield_git_commit());
   EXPECT_EQ(h5.string_attribute("case"), resolved);
   EXPECT_EQ(h5.string_attribute("case_sha256"), sha256_hex(resolved));
+  EXPECT_EQ(r.input_case(), input);
   EXPECT_EQ(h5.dataset_names(), (std::vector<std::string>{"id", "x"}));
   EXPECT_EQ(h5.units("x"), "m");
   EXPECT_EQ(h5.units("id"), "1");
@@ -202,9 +204,13 @@ TEST_F(CheckpointFileTest, DescribesItselfAndRefusesAnotherMethodOrFormatByName)
   EXPECT_NE(msg.find("format 2 is newer than the supported 1"), std::string::npos) << msg;
   msg = input_error_of([&] { r.require("mpm", 2); });
   EXPECT_NE(msg.find("a sample checkpoint, not a mpm one"), std::string::npos) << msg;
-  // Outside a run (no scope) the case is empty, its hash that of the empty text.
+  // Outside a run (no scope) the cases are empty, and --resume's reading of the input case refuses
+  // by name.
   write_sample(file, 3);
   EXPECT_EQ(io::CheckpointReader(file).h5().string_attribute("case"), "");
+  msg = input_error_of([&] { io::CheckpointReader(file).input_case(); });
+  EXPECT_NE(msg.find("does not hold the case it was written with"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
 }
 
 TEST_F(CheckpointFileTest, EveryOneByteMutantIsReadWholeOrRefusedByName) {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "shockfield/core/error.hpp"
 #include "shockfield/macroparticle/plastic_bonds.hpp"
 
 namespace shockfield::macroparticle {
@@ -120,21 +121,34 @@ TEST(MacroparticlePlasticBond, BreaksBeyondTheLimit) {
   EXPECT_EQ(w.e, e);
 }
 
-TEST(MacroparticlePlasticBond, TableSurvivesACheckpointVector) {
+TEST(MacroparticlePlasticBond, TableSurvivesACheckpointState) {
   BondTable a;
   a.pending(2)[1].emplace_back(BondTable::key(7, 3), BondState{0.01, -0.2, 1.03, 0.99, false, 1.03});
   a.apply_pending();
   a.pending(1)[0].emplace_back(BondTable::key(1, 4000000000LL), BondState{0.02, 0.1, 1.2, 0.99, true, -1});
   a.apply_pending();
   BondTable b;
-  b.restore(a.flatten());
+  const md::FixState saved = a.state("bond_history");
+  ASSERT_EQ(saved.size(), 8u);
+  EXPECT_EQ(saved[0].name, "bond_id_lo");
+  EXPECT_EQ(saved[0].values, (std::vector<double>{1, 3}));  // sorted keys: (1, 4e9) before (3, 7)
+  EXPECT_EQ(saved[1].values, (std::vector<double>{4000000000.0, 7}));
+  b.restore(saved, "bond_history");
   ASSERT_EQ(b.size(), 2u);
   EXPECT_EQ(b.broken(), 1u);
   const BondState* s = b.find(BondTable::key(3, 7));
   ASSERT_NE(s, nullptr);
   EXPECT_EQ(s->shift, 0.01);
   EXPECT_EQ(s->offset, -0.2);
-  EXPECT_EQ(b.flatten(), a.flatten());
+  EXPECT_EQ(b.state("bond_history").back().values, saved.back().values);
+  // A state without one of the fields is refused naming it.
+  md::FixState partial(saved.begin(), saved.end() - 1);
+  try {
+    b.restore(partial, "bond_history");
+    FAIL() << "accepted a state without r_route";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds no 'r_route'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -83,7 +83,13 @@ TEST(MsstDynamics, ResumesBitwiseFromACheckpoint) {
   }
   EXPECT_EQ(straight.box.lo, resumed.box.lo);
   EXPECT_EQ(straight.box.hi, resumed.box.hi);
-  EXPECT_EQ(straight.fixes[0]->state(), resumed.fixes[0]->state());
+  const FixState a = straight.fixes[0]->state(), b = resumed.fixes[0]->state();
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].name, b[k].name);
+    EXPECT_EQ(a[k].units, b[k].units);
+    EXPECT_EQ(a[k].values, b[k].values) << a[k].name;
+  }
 }
 
 TEST(MsstDynamics, GivenReferenceStateIsUsed) {

@@ -85,8 +85,8 @@ TEST(BondDynamics, StableStepEstimateAndUnstableStepDiagnosis) {
 }
 
 // The damage state round-trips: a fresh force restored from saved_state() has the same broken
-// bonds and critical stretches (its next forces are identical), and a state of the wrong size is
-// refused.
+// bonds and critical stretches (its next forces are identical); a state without an array, with an
+// array of the wrong size or stored as the wrong type is refused naming the array.
 TEST(BondDynamics, DamageStateRoundTrips) {
   Body body;
   std::vector<Vec3> y = body.cloud.x, v(y.size(), Vec3::Zero()), f1, f2;
@@ -104,5 +104,25 @@ TEST(BondDynamics, DamageStateRoundTrips) {
   restored.compute({y, v, 1e-9}, f2);
   EXPECT_EQ(f1, f2);
   EXPECT_EQ(restored.saved_state(), broken.saved_state());
-  EXPECT_THROW(restored.restore_state(std::vector<double>(7, 1.0)), InputError);
+  const ModelState saved = broken.saved_state();
+  ASSERT_EQ(saved.size(), 2u);
+  EXPECT_EQ(saved[0].name, "bond_intact");
+  EXPECT_EQ(saved[0].counts.size(), body.family.bonds());
+  EXPECT_EQ(saved[1].name, "critical_stretch");
+  EXPECT_EQ(saved[1].reals.size(), y.size());
+  const auto refusal = [&](ModelState state) {
+    try {
+      restored.restore_state(state);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refusal({saved[1]}).find("has no 'bond_intact'"), std::string::npos) << refusal({saved[1]});
+  ModelState short_state = saved;
+  short_state[1].reals.pop_back();
+  EXPECT_NE(refusal(short_state).find("'critical_stretch' has"), std::string::npos) << refusal(short_state);
+  ModelState real_flags = saved;
+  real_flags[0].integer = false;
+  EXPECT_NE(refusal(real_flags).find("stored as reals, expected integers"), std::string::npos) << refusal(real_flags);
 }

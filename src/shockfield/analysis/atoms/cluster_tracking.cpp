@@ -89,4 +89,22 @@ std::vector<PowerLawFit> fit_growth(const ClusterTrack& track, long long origin,
   return fits;
 }
 
+std::vector<std::string> track_columns() {
+  return {"track", "frame", "timestep", "time", "cluster", "size", "x", "y", "z", "a", "b", "c", "L", "area", "volume",
+          "atomic_volume"};
+}
+
+std::vector<std::vector<double>> track_rows(const std::vector<ClusterTrack>& tracks, long long origin, double dt) {
+  std::vector<std::vector<double>> rows;
+  for (const ClusterTrack& t : tracks)
+    for (const TrackPoint& p : t.points) {
+      const Cluster& c = p.shape;
+      rows.push_back({double(t.number), double(p.frame), double(p.timestep), double(p.timestep - origin) * dt,
+                      double(p.cluster + 1), double(c.size), c.centre.x(), c.centre.y(), c.centre.z(), c.semi_axes[0],
+                      c.semi_axes[1], c.semi_axes[2], std::cbrt(c.semi_axes.prod()), c.ellipsoid_surface,
+                      c.ellipsoid_volume, c.atomic_volume});
+    }
+  return rows;
+}
+
 }  // namespace shockfield::analysis::atoms

@@ -54,6 +54,12 @@ struct PowerLawFit {
   int points = 0;
 };
 
+/// tracks.csv's columns: track, frame, timestep, time ((timestep − origin) · dt), cluster (1, 2,
+/// ...), size, x, y, z, a, b, c, L = (abc)^{1/3}, area, volume, atomic_volume.
+std::vector<std::string> track_columns();
+/// Their values: one row per track and frame it was seen in, tracks in order.
+std::vector<std::vector<double>> track_rows(const std::vector<ClusterTrack>& tracks, long long origin, double dt);
+
 /// y = C t^k for a, b, c, L, A, V and the atomic volume of one track (quantities with a
 /// non-positive value are left out). Fewer than 3 points with t > 0: no fits.
 std::vector<PowerLawFit> fit_growth(const ClusterTrack& track, long long origin, double dt);

@@ -9,6 +9,16 @@
 
 namespace shockfield::analysis::atoms {
 
+std::vector<std::pair<std::string, std::vector<ProfileBin>>> StructureProfile::per_method(
+    const AtomFrame& frame, const StructureAnalysisResult& r, const std::vector<double>& value) const {
+  std::vector<std::pair<std::string, std::vector<ProfileBin>>> out;
+  for (const auto& [name, result] : {std::pair{"cna", &r.cna}, std::pair{"acna", &r.adaptive_cna}})
+    if (*result) out.emplace_back(name, compute(frame, (*result)->structure, value));
+  if (r.bond_pairs) out.emplace_back("bpa", compute(frame, r.bond_pairs->structure, value));
+  if (out.empty()) out.emplace_back("", compute(frame, std::vector<Structure>(frame.size(), Structure::other), value));
+  return out;
+}
+
 std::vector<ProfileBin> StructureProfile::compute(const AtomFrame& frame, const std::vector<Structure>& structure,
                                                   const std::vector<double>& value) const {
   if (axis < 0 || axis > 2) throw InputError(fmt::format("structure profile: axis {} is not 0, 1 or 2", axis));
@@ -58,6 +68,12 @@ ExcessEnergy excess_energy(const std::vector<double>& pe, const std::vector<Stru
   r.excess.resize(pe.size());
   for (std::size_t i = 0; i < pe.size(); ++i) r.excess[i] = pe[i] - r.reference;
   return r;
+}
+
+ExcessEnergy excess_energy(const std::vector<double>& pe, const StructureAnalysisResult& r, Structure crystal,
+                           const double* reference) {
+  const std::vector<Structure>* structures = reference_structures(r);
+  return excess_energy(pe, structures ? *structures : std::vector<Structure>(pe.size(), crystal), crystal, reference);
 }
 
 }  // namespace shockfield::analysis::atoms

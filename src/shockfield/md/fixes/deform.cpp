@@ -23,14 +23,16 @@ void FixDeform::end_of_step(Simulation& sim) {
   }
 }
 
-std::vector<double> FixDeform::state() const {
-  return {lo0_.x(), lo0_.y(), lo0_.z(), hi0_.x(), hi0_.y(), hi0_.z(), start_time_};
+FixState FixDeform::state() const {
+  return {{"box_lo0", "Angstrom", {lo0_.x(), lo0_.y(), lo0_.z()}},
+          {"box_hi0", "Angstrom", {hi0_.x(), hi0_.y(), hi0_.z()}},
+          {"start_time", "ps", {start_time_}}};
 }
 
-void FixDeform::restore(const std::vector<double>& s) {
-  lo0_ = Vec3(s.at(0), s.at(1), s.at(2));
-  hi0_ = Vec3(s.at(3), s.at(4), s.at(5));
-  start_time_ = s.at(6);
+void FixDeform::restore(const FixState& s) {
+  lo0_ = Vec3(fix_state_values(s, name(), "box_lo0", 3).data());
+  hi0_ = Vec3(fix_state_values(s, name(), "box_hi0", 3).data());
+  start_time_ = fix_state_value(s, name(), "start_time");
 }
 
 }  // namespace shockfield::md

@@ -14,8 +14,8 @@ class FixDeform : public Fix {
   FixDeform(const Vec3& rate, const geometry::Box& box0, double start_time);
   std::string name() const override { return "deform"; }
   void end_of_step(Simulation& sim) override;
-  std::vector<double> state() const override;
-  void restore(const std::vector<double>& s) override;
+  FixState state() const override;
+  void restore(const FixState& s) override;
 
  private:
   Vec3 rate_;

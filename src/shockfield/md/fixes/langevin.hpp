@@ -18,8 +18,8 @@ class FixLangevin : public FixNve {
   void post_force(Simulation& sim) override;
   void final_integrate(Simulation& sim) override;
   double energy_added() const override { return energy_added_; }
-  std::vector<double> state() const override { return {energy_added_}; }
-  void restore(const std::vector<double>& s) override { energy_added_ = s.at(0); }
+  FixState state() const override { return {{"energy_added", "eV", {energy_added_}}}; }
+  void restore(const FixState& s) override { energy_added_ = fix_state_value(s, name(), "energy_added"); }
 
  private:
   double temperature_, damping_;

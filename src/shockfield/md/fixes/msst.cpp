@@ -202,26 +202,38 @@ MsstQuantities FixMsst::quantities(const Simulation& sim) const {
   return q;
 }
 
-std::vector<double> FixMsst::state() const {
-  return {omega_,    p0_,       v0_,
-          e0_,       total_mass_, volume_,
-          vsum_,     lagrangian_position_, h_start_,
-          static_cast<double>(steps_done_), averages_.samples, averages_.up,
-          averages_.pressure_axis, averages_.volume, averages_.temperature};
+FixState FixMsst::state() const {
+  return {{"volume_rate", "Angstrom^3/ps", {omega_}},
+          {"p0", "bar", {p0_}},
+          {"v0", "Angstrom^3", {v0_}},
+          {"e0", "eV", {e0_}},
+          {"total_mass", "g/mol", {total_mass_}},
+          {"volume", "Angstrom^3", {volume_}},
+          {"velocity_square_sum", "Angstrom^2/ps^2", {vsum_}},
+          {"lagrangian_position", "Angstrom", {lagrangian_position_}},
+          {"conserved_at_start", "eV", {h_start_}},
+          {"steps_done", "1", {static_cast<double>(steps_done_)}},
+          {"average_samples", "1", {averages_.samples}},
+          {"sum_up", "Angstrom/ps", {averages_.up}},
+          {"sum_pressure_axis", "bar", {averages_.pressure_axis}},
+          {"sum_volume", "Angstrom^3", {averages_.volume}},
+          {"sum_temperature", "K", {averages_.temperature}}};
 }
 
-void FixMsst::restore(const std::vector<double>& s) {
-  omega_ = s.at(0);
-  p0_ = s.at(1);
-  v0_ = s.at(2);
-  e0_ = s.at(3);
-  total_mass_ = s.at(4);
-  volume_ = s.at(5);
-  vsum_ = s.at(6);
-  lagrangian_position_ = s.at(7);
-  h_start_ = s.at(8);
-  steps_done_ = static_cast<std::int64_t>(s.at(9));
-  averages_ = {s.at(10), s.at(11), s.at(12), s.at(13), s.at(14)};
+void FixMsst::restore(const FixState& s) {
+  const auto value = [&](const char* key) { return fix_state_value(s, name(), key); };
+  omega_ = value("volume_rate");
+  p0_ = value("p0");
+  v0_ = value("v0");
+  e0_ = value("e0");
+  total_mass_ = value("total_mass");
+  volume_ = value("volume");
+  vsum_ = value("velocity_square_sum");
+  lagrangian_position_ = value("lagrangian_position");
+  h_start_ = value("conserved_at_start");
+  steps_done_ = static_cast<std::int64_t>(value("steps_done"));
+  averages_ = {value("average_samples"), value("sum_up"), value("sum_pressure_axis"), value("sum_volume"),
+               value("sum_temperature")};
 }
 
 }  // namespace shockfield::md

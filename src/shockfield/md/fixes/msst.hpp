@@ -63,8 +63,8 @@ class FixMsst : public Fix {
   void final_integrate(Simulation& sim) override;
   void end_of_step(Simulation& sim) override;
   double energy_added() const override { return -scalar(); }
-  std::vector<double> state() const override;
-  void restore(const std::vector<double>& s) override;
+  FixState state() const override;
+  void restore(const FixState& s) override;
 
   MsstQuantities quantities(const Simulation& sim) const;
   const MsstAverages& averages() const { return averages_; }

@@ -58,16 +58,20 @@ double NoseHooverChain::energy() const {
   return e;
 }
 
-void NoseHooverChain::save(std::vector<double>& s) const {
-  for (const auto* v : {&eta_, &eta_dot_, &eta_dotdot_, &mass_}) s.insert(s.end(), v->begin(), v->end());
-  s.push_back(dof_);
+void NoseHooverChain::save(FixState& s, const std::string& prefix) const {
+  s.push_back({prefix + "_eta", "1", eta_});
+  s.push_back({prefix + "_eta_dot", "1/ps", eta_dot_});
+  s.push_back({prefix + "_eta_dotdot", "1/ps^2", eta_dotdot_});
+  s.push_back({prefix + "_mass", "eV ps^2", mass_});
+  s.push_back({prefix + "_dof", "1", {dof_}});
 }
 
-std::size_t NoseHooverChain::restore(const std::vector<double>& s, std::size_t k) {
-  for (auto* v : {&eta_, &eta_dot_, &eta_dotdot_, &mass_})
-    for (auto& x : *v) x = s.at(k++);
-  dof_ = s.at(k++);
-  return k;
+void NoseHooverChain::restore(const FixState& s, const std::string& fix, const std::string& prefix) {
+  eta_ = fix_state_values(s, fix, prefix + "_eta", eta_.size());
+  eta_dot_ = fix_state_values(s, fix, prefix + "_eta_dot", eta_dot_.size());
+  eta_dotdot_ = fix_state_values(s, fix, prefix + "_eta_dotdot", eta_dotdot_.size());
+  mass_ = fix_state_values(s, fix, prefix + "_mass", mass_.size());
+  dof_ = fix_state_value(s, fix, prefix + "_dof");
 }
 
 void check_extended_energy(const Simulation& sim, const char* fix, double energy, double dof, double temperature) {
@@ -106,9 +110,9 @@ void FixNoseHoover::integrate_chain(Simulation& sim) {
   scale_group_velocities(sim.atoms, group_bit_, chain_.half_step(twice_ke, dof, dof, sim.dt));
 }
 
-std::vector<double> FixNoseHoover::state() const {
-  std::vector<double> s;
-  chain_.save(s);
+FixState FixNoseHoover::state() const {
+  FixState s;
+  chain_.save(s, "thermostat");
   return s;
 }
 

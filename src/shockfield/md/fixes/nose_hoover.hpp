@@ -25,10 +25,10 @@ class NoseHooverChain {
   double half_step(double twice_ke, double dof, double first_mass_dof, double dt);
   /// L k_B T η₁ + Σ_{k>1} k_B T η_k + Σ ½ Q_k η̇_k² (eV).
   double energy() const;
-  /// Appends the chain variables to `s`; restore() reads them back from `s` at `k` and
-  /// returns the index after them.
-  void save(std::vector<double>& s) const;
-  std::size_t restore(const std::vector<double>& s, std::size_t k);
+  /// Appends the chain variables to `s` as <prefix>eta, _eta_dot, _eta_dotdot, _mass (one value
+  /// per member) and _dof; restore() reads them back (InputError naming `fix` when absent).
+  void save(FixState& s, const std::string& prefix) const;
+  void restore(const FixState& s, const std::string& fix, const std::string& prefix);
   double degrees_of_freedom() const { return dof_; }
   double temperature() const { return kt_ / units::metal::boltz; }
   /// A new target temperature with the masses kept at the temperature they were built with
@@ -49,8 +49,8 @@ class FixNoseHoover : public FixNve {
   void initial_integrate(Simulation& sim) override;
   void final_integrate(Simulation& sim) override;
   double energy_added() const override { return -chain_.energy(); }
-  std::vector<double> state() const override;
-  void restore(const std::vector<double>& s) override { chain_.restore(s, 0); }
+  FixState state() const override;
+  void restore(const FixState& s) override { chain_.restore(s, name(), "thermostat"); }
 
  private:
   /// Advances the chain by half a step and scales the group's velocities.

@@ -152,20 +152,25 @@ double FixNoseHooverNpt::energy_added() const {
   return -e;  // eq. (3): the extended variables hold this energy
 }
 
-std::vector<double> FixNoseHooverNpt::state() const {
-  std::vector<double> s{omega_dot_.x(), omega_dot_.y(), omega_dot_.z(), mass_, mu_, volume0_, volume_};
-  atom_chain_.save(s);
-  barostat_chain_.save(s);
+FixState FixNoseHooverNpt::state() const {
+  FixState s{{"omega_dot", "1/ps", {omega_dot_.x(), omega_dot_.y(), omega_dot_.z()}},
+             {"barostat_mass", "eV ps^2", {mass_}},
+             {"mu", "1/ps", {mu_}},
+             {"volume0", "Angstrom^3", {volume0_}},
+             {"volume", "Angstrom^3", {volume_}}};
+  atom_chain_.save(s, "thermostat");
+  barostat_chain_.save(s, "barostat_chain");
   return s;
 }
 
-void FixNoseHooverNpt::restore(const std::vector<double>& s) {
-  omega_dot_ = Vec3(s.at(0), s.at(1), s.at(2));
-  mass_ = s.at(3);
-  mu_ = s.at(4);
-  volume0_ = s.at(5);
-  volume_ = s.at(6);
-  barostat_chain_.restore(s, atom_chain_.restore(s, 7));
+void FixNoseHooverNpt::restore(const FixState& s) {
+  omega_dot_ = Vec3(fix_state_values(s, name(), "omega_dot", 3).data());
+  mass_ = fix_state_value(s, name(), "barostat_mass");
+  mu_ = fix_state_value(s, name(), "mu");
+  volume0_ = fix_state_value(s, name(), "volume0");
+  volume_ = fix_state_value(s, name(), "volume");
+  atom_chain_.restore(s, name(), "thermostat");
+  barostat_chain_.restore(s, name(), "barostat_chain");
 }
 
 }  // namespace shockfield::md

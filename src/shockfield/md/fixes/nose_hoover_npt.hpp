@@ -57,8 +57,8 @@ class FixNoseHooverNpt : public Fix {
   void initial_integrate(Simulation& sim) override;
   void final_integrate(Simulation& sim) override;
   double energy_added() const override;
-  std::vector<double> state() const override;
-  void restore(const std::vector<double>& s) override;
+  FixState state() const override;
+  void restore(const FixState& s) override;
 
  protected:
   /// The thermostat's target temperature for this step (K); NPT's is fixed.
@@ -69,8 +69,6 @@ class FixNoseHooverNpt : public Fix {
   /// Both chains' target temperature (K), their masses kept.
   void retarget(double temperature);
   const NptSettings& npt_settings() const { return settings_; }
-  /// Number of values state() writes (a derived fix appends its own after them).
-  std::size_t state_size() const { return FixNoseHooverNpt::state().size(); }
 
  private:
   /// ω̇ kick by ½Δt, eq. (1), and the coupling μ of eq. (2).

@@ -88,29 +88,38 @@ void FixNphug::end_of_step(Simulation& sim) {
   averages_.dhugoniot += q.dhugoniot;
 }
 
-std::vector<double> FixNphug::state() const {
-  std::vector<double> s = FixNoseHooverNpt::state();
-  s.insert(s.end(), {npt_settings().temperature, target_, total_mass_, p0_, v0_, e0_,
-                     static_cast<double>(steps_done_), averages_.samples, averages_.pressure, averages_.volume,
-                     averages_.temperature, averages_.energy, averages_.dhugoniot});
+FixState FixNphug::state() const {
+  FixState s = FixNoseHooverNpt::state();
+  s.insert(s.end(), {{"mass_temperature", "K", {npt_settings().temperature}},
+                     {"target_temperature", "K", {target_}},
+                     {"total_mass", "g/mol", {total_mass_}},
+                     {"p0", "bar", {p0_}},
+                     {"v0", "Angstrom^3", {v0_}},
+                     {"e0", "eV", {e0_}},
+                     {"steps_done", "1", {static_cast<double>(steps_done_)}},
+                     {"average_samples", "1", {averages_.samples}},
+                     {"sum_pressure", "bar", {averages_.pressure}},
+                     {"sum_volume", "Angstrom^3", {averages_.volume}},
+                     {"sum_temperature", "K", {averages_.temperature}},
+                     {"sum_energy", "eV", {averages_.energy}},
+                     {"sum_dhugoniot", "K", {averages_.dhugoniot}}});
   return s;
 }
 
-void FixNphug::restore(const std::vector<double>& s) {
-  std::size_t k = state_size();
+void FixNphug::restore(const FixState& s) {
+  const auto value = [&](const char* key) { return fix_state_value(s, name(), key); };
   // The masses' temperature first (it rebuilds the chains), then the chains' variables and target.
-  set_reference_temperature(s.at(k++));
+  set_reference_temperature(value("mass_temperature"));
   FixNoseHooverNpt::restore(s);
-  target_ = s.at(k++);
+  target_ = value("target_temperature");
   retarget(target_);
-  total_mass_ = s.at(k++);
-  p0_ = s.at(k++);
-  v0_ = s.at(k++);
-  e0_ = s.at(k++);
-  steps_done_ = static_cast<std::int64_t>(s.at(k++));
-  for (double* v : {&averages_.samples, &averages_.pressure, &averages_.volume, &averages_.temperature,
-                    &averages_.energy, &averages_.dhugoniot})
-    *v = s.at(k++);
+  total_mass_ = value("total_mass");
+  p0_ = value("p0");
+  v0_ = value("v0");
+  e0_ = value("e0");
+  steps_done_ = static_cast<std::int64_t>(value("steps_done"));
+  averages_ = {value("average_samples"), value("sum_pressure"), value("sum_volume"), value("sum_temperature"),
+               value("sum_energy"), value("sum_dhugoniot")};
 }
 
 }  // namespace shockfield::md

@@ -53,8 +53,8 @@ class FixNphug : public FixNoseHooverNpt {
   /// The reference state and the masses' temperature (the current one; RunError if it is 0).
   void setup(Simulation& sim) override;
   void end_of_step(Simulation& sim) override;
-  std::vector<double> state() const override;
-  void restore(const std::vector<double>& s) override;
+  FixState state() const override;
+  void restore(const FixState& s) override;
 
   NphugQuantities quantities(const Simulation& sim) const;
   const NphugAverages& averages() const { return averages_; }

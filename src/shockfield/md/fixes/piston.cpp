@@ -8,10 +8,10 @@ namespace shockfield::md {
 FixPiston::FixPiston(int axis, int side, double speed, double position, double start_time)
     : axis_(axis), side_(side), speed_(speed), position_(position), start_time_(start_time) {}
 
-void FixPiston::restore(const std::vector<double>& s) {
-  work_ = s.at(0);
-  position_ = s.at(1);
-  start_time_ = s.at(2);
+void FixPiston::restore(const FixState& s) {
+  work_ = fix_state_value(s, name(), "work");
+  position_ = fix_state_value(s, name(), "position");
+  start_time_ = fix_state_value(s, name(), "start_time");
 }
 
 void FixPiston::post_integrate(Simulation& sim) {

@@ -16,8 +16,10 @@ class FixPiston : public Fix {
   std::string name() const override { return "piston"; }
   void post_integrate(Simulation& sim) override;
   double energy_added() const override { return work_; }
-  std::vector<double> state() const override { return {work_, position_, start_time_}; }
-  void restore(const std::vector<double>& s) override;
+  FixState state() const override {
+    return {{"work", "eV", {work_}}, {"position", "Angstrom", {position_}}, {"start_time", "ps", {start_time_}}};
+  }
+  void restore(const FixState& s) override;
   int axis() const { return axis_; }
   int side() const { return side_; }
   double speed() const { return speed_; }

@@ -48,7 +48,8 @@ def _base64_array(text, header, endian, compressed):
 def read_vtk_arrays(path):
     """{name: numpy array} of every DataArray (points, point and cell data); arrays with k > 1
     components have shape (n, k)."""
-    data = open(path, "rb").read()
+    with open(path, "rb") as f:
+        data = f.read()
     start = data.find(b"<AppendedData")
     markup = data if start < 0 else data[:start]
     vtkfile = _attributes(re.search(rb"<VTKFile[^>]*>", markup).group(0))
