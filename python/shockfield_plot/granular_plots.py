@@ -32,7 +32,7 @@ def chain(run, out):
     if has_spacetime:
         f = run.table("spacetime_force")
         columns = [n for n in f.dtype.names if n.startswith("force_")]
-        grains = [int(n.removeprefix("force_")) for n in columns]
+        grains = [int(n.removeprefix("force_").removesuffix("_N")) for n in columns]
         force = np.column_stack([f[n] for n in columns])
         image = axes[0].imshow(force.T, origin="lower", aspect="auto", cmap="inferno",
                                extent=[f["time_s"][0] * 1e3, f["time_s"][-1] * 1e3, grains[0], grains[-1]])

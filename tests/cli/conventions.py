@@ -34,7 +34,8 @@ UNITS_IN_COLUMNS = {"granular"}
 SI_UNITS = ("s", "J", "m", "N", "Pa", "K", "kg", "m_s", "kg_m3", "J_kg", "kg_m_s")
 DIMENSIONLESS = {"step", "steps", "profile", "grain", "count", "width_grains"}
 # The files of those methods that follow the rule besides series.csv.
-UNITS_IN_FILES = {"granular": {"series.csv", "probes.csv", "signal.csv", "energy_above.csv"}}
+UNITS_IN_FILES = {"granular": {"series.csv", "probes.csv", "signal.csv", "energy_above.csv", "spacetime_force.csv",
+                               "spacetime_velocity.csv"}}
 
 
 # The extensive totals of the MPM and PD series (docs/conventions.md, "Per length and per area"):

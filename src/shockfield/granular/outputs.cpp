@@ -81,8 +81,8 @@ RunOutputs::RunOutputs(const std::filesystem::path& folder, const GranularCase& 
   }
   if (spec_.schedule.field_interval > 0) {
     for (std::size_t g = 0; g < sim.size(); g += static_cast<std::size_t>(spec_.spacetime_stride)) field_grains_.push_back(g);
-    force_field_ = io::CsvWriter(folder / "spacetime_force.csv", grain_columns(field_grains_, "force"), resume_from);
-    velocity_field_ = io::CsvWriter(folder / "spacetime_velocity.csv", grain_columns(field_grains_, "velocity"), resume_from);
+    force_field_ = io::CsvWriter(folder / "spacetime_force.csv", grain_columns(field_grains_, "force", "_N"), resume_from);
+    velocity_field_ = io::CsvWriter(folder / "spacetime_velocity.csv", grain_columns(field_grains_, "velocity", "_m_s"), resume_from);
   }
   if (spec_.signal_interval > 0)
     signal_ = io::CsvWriter(folder / "signal.csv", {"time_s", "grain", "depth_m", "velocity_m_s", "force_N", "width_grains"}, resume_from);
