@@ -123,7 +123,7 @@ constexpr std::array<const char*, 8> kBondFields{"bond_id_lo", "bond_id_hi", "sh
                                                  "r_max",      "r_min",      "broken", "r_route"};
 }  // namespace
 
-md::FixState BondTable::state(const std::string&) const {
+md::FixState BondTable::state() const {
   std::vector<std::uint64_t> keys;
   keys.reserve(states_.size());
   for (const auto& e : states_) keys.push_back(e.first);

@@ -92,7 +92,7 @@ class BondTable {
   /// The table for checkpoints, one variable per bond field in the order of the sorted keys:
   /// bond_id_lo, bond_id_hi (the pair's particle ids), shift, offset, r_max, r_min, broken (1/0),
   /// r_route (the engine's reduced units); restore() reads it back (InputError on a mismatch).
-  md::FixState state(const std::string& fix) const;
+  md::FixState state() const;
   void restore(const md::FixState& state, const std::string& fix);
 
  private:
@@ -105,7 +105,7 @@ class FixBondHistory final : public md::Fix {
  public:
   explicit FixBondHistory(std::shared_ptr<BondTable> table) : table_(std::move(table)) {}
   std::string name() const override { return "bond_history"; }
-  md::FixState state() const override { return table_->state(name()); }
+  md::FixState state() const override { return table_->state(); }
   void restore(const md::FixState& s) override { table_->restore(s, name()); }
 
  private:

@@ -128,7 +128,7 @@ TEST(MacroparticlePlasticBond, TableSurvivesACheckpointState) {
   a.pending(1)[0].emplace_back(BondTable::key(1, 4000000000LL), BondState{0.02, 0.1, 1.2, 0.99, true, -1});
   a.apply_pending();
   BondTable b;
-  const md::FixState saved = a.state("bond_history");
+  const md::FixState saved = a.state();
   ASSERT_EQ(saved.size(), 8u);
   EXPECT_EQ(saved[0].name, "bond_id_lo");
   EXPECT_EQ(saved[0].values, (std::vector<double>{1, 3}));  // sorted keys: (1, 4e9) before (3, 7)
@@ -140,7 +140,7 @@ TEST(MacroparticlePlasticBond, TableSurvivesACheckpointState) {
   ASSERT_NE(s, nullptr);
   EXPECT_EQ(s->shift, 0.01);
   EXPECT_EQ(s->offset, -0.2);
-  EXPECT_EQ(b.state("bond_history").back().values, saved.back().values);
+  EXPECT_EQ(b.state().back().values, saved.back().values);
   // A state without one of the fields is refused naming it.
   md::FixState partial(saved.begin(), saved.end() - 1);
   try {
