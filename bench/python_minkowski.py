@@ -3,7 +3,7 @@
 
 The field and thresholds are minkowski_bench's 2D case: analysis::gaussian_random_field(4096,
 4096, 1, ℓ = 8, seed 1) and 256 thresholds evenly spaced over [-3, 3]. Prints the median of
---repeats calls (the boundary included: argument checks, the copy into the library's grid).
+--repeats calls (the boundary included: argument checks, the view of the array, the result arrays).
 
     OMP_NUM_THREADS=2 PYTHONPATH=build/release/python /usr/bin/python3 bench/python_minkowski.py
     OMP_NUM_THREADS=2 build/release/bench/minkowski_bench --repeats 5 --stride2d 256 --stride3d 64

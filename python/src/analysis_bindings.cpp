@@ -49,54 +49,34 @@ void require_array(const py::array& array, int dtype, const char* dtype_name, co
     if (array.shape(k) == 0) throw py::value_error(what + ": the array is empty");
 }
 
-// `f` set to the field of `values` (and its void mask, None or a bool/uint8 array of the same
-// shape). analysis::GridField owns its values, so they are copied in, with the GIL released.
-void fill_grid(sa::GridField& f, const py::array& values, const py::object& void_mask,
-               const std::array<double, 3>& spacing, int dimension, const std::string& what) {
+// The field of `values` (and its void mask, None or a bool/uint8 array of the same shape), read in
+// place: the view points into the numpy arrays, which the caller keeps alive for the call.
+sa::GridFieldView view_of(const py::array& values, const py::object& void_mask, const std::array<double, 3>& spacing,
+                          int dimension, const std::string& what) {
   require_array(values, kNumpyDouble, "float64", what);
   if (dimension != 0 && dimension != 2 && dimension != 3)
     throw py::value_error("dimension: expected 2, 3 or None, got " + std::to_string(dimension));
   if (dimension == 2 && values.ndim() == 3 && values.shape(0) > 1)
     throw py::value_error(what + ": dimension=2 needs a 2D array (or a single z layer)");
   const py::ssize_t nd = values.ndim();
+  sa::GridFieldView f;
   f.n = {std::size_t(values.shape(nd - 1)), std::size_t(values.shape(nd - 2)),
          nd == 3 ? std::size_t(values.shape(0)) : 1};
   f.spacing = spacing;
-  f.origin = {0.0, 0.0, 0.0};
-  f.is_void.clear();
   f.single_layer_3d = dimension == 3 && f.n[2] == 1;
-  f.values.resize(f.size());
-  const auto* source = static_cast<const double*>(values.data());
+  f.values = {static_cast<const double*>(values.data()), f.size()};
   if (!void_mask.is_none()) {
     const auto mask = void_mask.cast<py::array>();
     require_array(mask, mask.dtype().num() == kNumpyBool ? kNumpyBool : kNumpyUint8, "bool", what + " void mask");
     if (mask.ndim() != nd || !std::equal(mask.shape(), mask.shape() + nd, values.shape()))
       throw py::value_error(what + ": the void mask's shape differs from the field's");
-    f.is_void.resize(f.size());
-    std::memcpy(f.is_void.data(), mask.data(), f.size());
+    f.is_void = {static_cast<const std::uint8_t*>(mask.data()), f.size()};
   }
   {
     py::gil_scoped_release release;
-    std::memcpy(f.values.data(), source, f.size() * sizeof(double));
+    sa::validate(f, what);
   }
-  sa::validate(f, what);
-}
-
-sa::GridField grid_from(const py::array& values, const py::object& void_mask, const std::array<double, 3>& spacing,
-                        int dimension, const std::string& what) {
-  sa::GridField f;
-  fill_grid(f, values, void_mask, spacing, dimension, what);
   return f;
-}
-
-// The grid of a one-field call (minkowski, statistics): this thread's grid of the previous such
-// call, refilled. Its memory is kept between calls because a fresh allocation of a large field
-// costs more in page faults than the copy itself (4096²: 0.25 s against 0.05 s, bench/RESULTS.md).
-sa::GridField& reused_grid(const py::array& values, const py::object& void_mask, const std::array<double, 3>& spacing,
-                           int dimension, const std::string& what) {
-  thread_local sa::GridField grid;
-  fill_grid(grid, values, void_mask, spacing, dimension, what);
-  return grid;
 }
 
 sa::MinkowskiOptions options_of(const std::string& boundary, int connectivity, int adjacency) {
@@ -116,7 +96,7 @@ sa::MinkowskiOptions options_of(const std::string& boundary, int connectivity, i
 // `shockfield analyze`'s rule: the given thresholds, else `count` evenly spaced over the range of
 // all the fields.
 std::vector<double> thresholds_of(const std::optional<std::vector<double>>& thresholds, std::size_t count,
-                                  std::span<const sa::GridField> fields) {
+                                  std::span<const sa::GridFieldView> fields) {
   if (thresholds && count > 0) throw InputError("give either thresholds or count, not both");
   if (thresholds) return *thresholds;
   return sa::linear_thresholds(fields, count > 0 ? count : 32);
@@ -128,7 +108,7 @@ struct Functionals {
   std::vector<sa::MorphologyPoint> points;
 };
 
-Functionals functionals(const sa::GridField& f, const std::vector<double>& thresholds, const sa::MinkowskiOptions& o) {
+Functionals functionals(const sa::GridFieldView& f, const std::vector<double>& thresholds, const sa::MinkowskiOptions& o) {
   Functionals out;
   std::vector<double> t, a, l, b, mc, e_n;
   std::vector<std::int64_t> euler;
@@ -175,7 +155,7 @@ py::dict minkowski(const py::array& field, const std::optional<std::vector<doubl
                    const std::vector<double>& spacing, const py::object& void_mask, int threads) {
   const ThreadCount thread_count(threads);
   const auto o = options_of(boundary, connectivity, adjacency);
-  const sa::GridField& f = reused_grid(field, void_mask, spacing_of(spacing), dimension, "field");
+  const sa::GridFieldView f = view_of(field, void_mask, spacing_of(spacing), dimension, "field");
   return functionals(f, thresholds_of(thresholds, count, {&f, 1}), o).columns;
 }
 
@@ -188,7 +168,7 @@ std::vector<sa::Process> processes(const std::vector<py::array>& fields, const s
                      " times; expected one field per time");
   std::vector<sa::Process> out(thresholds.size());
   for (std::size_t i = 0; i < fields.size(); ++i) {
-    const auto f = grid_from(fields[i], py::none(), spacing, dimension, role + " field " + std::to_string(i));
+    const auto f = view_of(fields[i], py::none(), spacing, dimension, role + " field " + std::to_string(i));
     const auto points = functionals(f, thresholds, o).points;
     for (std::size_t k = 0; k < thresholds.size(); ++k) {
       out[k].times.push_back(times[i]);
@@ -207,9 +187,9 @@ py::dict similarity(const std::vector<py::array>& reference, double reference_th
   if (reference.empty() || candidate.empty()) throw InputError("similarity: no fields given");
   const auto o = options_of(boundary, connectivity, adjacency);
   const auto h = spacing_of(spacing);
-  std::vector<sa::GridField> fields;
+  std::vector<sa::GridFieldView> fields;  // views of `candidate`'s arrays, alive for the call
   for (std::size_t k = 0; k < candidate.size(); ++k)
-    fields.push_back(grid_from(candidate[k], py::none(), h, dimension, "candidate field " + std::to_string(k)));
+    fields.push_back(view_of(candidate[k], py::none(), h, dimension, "candidate field " + std::to_string(k)));
   const auto ts = thresholds_of(thresholds, count, fields);
   const auto ref = processes(reference, times, {reference_threshold}, o, h, dimension, "reference");
   const auto cand = processes(candidate, times, ts, o, h, dimension, "candidate");
@@ -232,7 +212,7 @@ py::dict statistics(const py::array& field, std::size_t bins, int dimension, con
                     const py::object& void_mask, int threads) {
   const ThreadCount thread_count(threads);
   if (bins == 0) throw py::value_error("bins: expected at least 1");
-  const sa::GridField& f = reused_grid(field, void_mask, spacing_of(spacing), dimension, "field");
+  const sa::GridFieldView f = view_of(field, void_mask, spacing_of(spacing), dimension, "field");
   sa::Moments m;
   sa::Histogram hist;
   double size = 0.0;

@@ -46,7 +46,7 @@ void row_levels(const double* v, std::size_t n, std::span<const double> t, std::
   }
 }
 
-LevelGrid make_levels(const GridField& field, std::span<const double> thresholds,
+LevelGrid make_levels(const GridFieldView& field, std::span<const double> thresholds,
                       Boundary boundary) {
   LevelGrid g;
   g.dimension = field.dimension();
@@ -262,7 +262,7 @@ std::vector<std::int64_t> sum_all(const LevelGrid& g, const BlockWeights& w,
   }
 }
 
-void require_matching(const GridField& field, const BlockWeights& w) {
+void require_matching(const GridFieldView& field, const BlockWeights& w) {
   if (w.dimension != field.dimension())
     throw std::invalid_argument("BlockWeights: table dimension differs from the field's");
 }
@@ -286,14 +286,14 @@ void require_increasing(std::span<const double> thresholds) {
   }
 }
 
-std::int64_t block_count(const GridField& field, Boundary boundary) {
+std::int64_t block_count(const GridFieldView& field, Boundary boundary) {
   std::int64_t blocks = 1;
   for (int a = 0; a < field.dimension(); ++a)
     blocks *= static_cast<std::int64_t>(field.n[a] + (boundary == Boundary::open ? 1 : 0));
   return blocks;
 }
 
-BlockSums sum_block_weights(const GridField& field, double threshold, Boundary boundary,
+BlockSums sum_block_weights(const GridFieldView& field, double threshold, Boundary boundary,
                             const BlockWeights& weights) {
   const std::array<double, 1> t{threshold};
   require_increasing(t);
@@ -305,7 +305,7 @@ BlockSums sum_block_weights(const GridField& field, double threshold, Boundary b
           g.dimension == 3 ? sum_one<3>(g, weights) : sum_one<2>(g, weights)};
 }
 
-BlockSums sum_block_weights(const GridField& field, std::span<const double> thresholds,
+BlockSums sum_block_weights(const GridFieldView& field, std::span<const double> thresholds,
                             Boundary boundary, const BlockWeights& weights) {
   require_increasing(thresholds);
   validate(field, "field");

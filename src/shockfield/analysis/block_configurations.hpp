@@ -53,7 +53,7 @@ void require_increasing(std::span<const double> thresholds);
 
 /// Reference route, one threshold: binarises the field at `threshold` and adds the weight of
 /// every block's configuration directly.
-BlockSums sum_block_weights(const GridField& field, double threshold, Boundary boundary,
+BlockSums sum_block_weights(const GridFieldView& field, double threshold, Boundary boundary,
                             const BlockWeights& weights);
 
 /// All thresholds in one pass over the field. Each cell gets its level K = number of thresholds
@@ -61,10 +61,10 @@ BlockSums sum_block_weights(const GridField& field, double threshold, Boundary b
 /// at its cells' levels, so each block adds w(new) − w(old) to a difference table at those few
 /// levels (a table of (thresholds + 1) × width integers per thread, small enough for L1), and a
 /// prefix sum over thresholds gives the sums.
-BlockSums sum_block_weights(const GridField& field, std::span<const double> thresholds,
+BlockSums sum_block_weights(const GridFieldView& field, std::span<const double> thresholds,
                             Boundary boundary, const BlockWeights& weights);
 
 /// Number of blocks the field has under `boundary`.
-std::int64_t block_count(const GridField& field, Boundary boundary);
+std::int64_t block_count(const GridFieldView& field, Boundary boundary);
 
 }  // namespace shockfield::analysis

@@ -10,7 +10,7 @@
 
 namespace shockfield::analysis {
 
-Moments moments(const GridField& field) {
+Moments moments(const GridFieldView& field) {
   validate(field, "field");
   Moments m;
   double sum = 0.0;
@@ -30,7 +30,7 @@ Moments moments(const GridField& field) {
   return m;
 }
 
-Histogram histogram(const GridField& field, std::size_t bins, double lo, double hi) {
+Histogram histogram(const GridFieldView& field, std::size_t bins, double lo, double hi) {
   validate(field, "field");
   if (bins == 0 || !(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi))
     throw InputError(fmt::format("histogram: {} bins over [{}, {}]; expected at least one bin and "
@@ -47,7 +47,7 @@ Histogram histogram(const GridField& field, std::size_t bins, double lo, double 
   return h;
 }
 
-Histogram histogram(const GridField& field, std::size_t bins) {
+Histogram histogram(const GridFieldView& field, std::size_t bins) {
   validate(field, "field");
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (std::size_t i = 0; i < field.size(); ++i)

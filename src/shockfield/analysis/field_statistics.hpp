@@ -17,7 +17,7 @@ struct Moments {
 };
 
 /// Moments of the non-void cells (two passes, in cell order: independent of threads).
-Moments moments(const GridField& field);
+Moments moments(const GridFieldView& field);
 
 struct Histogram {
   std::vector<double> edges;        ///< bins + 1 increasing edges
@@ -25,8 +25,8 @@ struct Histogram {
 };
 
 /// `bins` equal bins over [lo, hi] (lo < hi); values outside are not counted.
-Histogram histogram(const GridField& field, std::size_t bins, double lo, double hi);
+Histogram histogram(const GridFieldView& field, std::size_t bins, double lo, double hi);
 /// `bins` equal bins over the range of the non-void values.
-Histogram histogram(const GridField& field, std::size_t bins);
+Histogram histogram(const GridFieldView& field, std::size_t bins);
 
 }  // namespace shockfield::analysis

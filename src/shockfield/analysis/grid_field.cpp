@@ -16,12 +16,12 @@ GridField GridField::filled(std::size_t nx, std::size_t ny, std::size_t nz, doub
   return field;
 }
 
-std::size_t GridField::void_count() const {
+std::size_t GridFieldView::void_count() const {
   return static_cast<std::size_t>(std::count_if(is_void.begin(), is_void.end(),
                                                 [](std::uint8_t v) { return v != 0; }));
 }
 
-void validate(const GridField& field, const std::string& what) {
+void validate(const GridFieldView& field, const std::string& what) {
   if (field.size() == 0)
     throw InputError(fmt::format("{}: empty field ({} x {} x {} cells); expected at least one cell",
                                  what, field.n[0], field.n[1], field.n[2]));
@@ -48,7 +48,7 @@ void validate(const GridField& field, const std::string& what) {
   }
 }
 
-void require_same_grid(const GridField& a, const GridField& b, const std::string& what_a,
+void require_same_grid(const GridGeometry& a, const GridGeometry& b, const std::string& what_a,
                        const std::string& what_b) {
   if (a.n != b.n)
     throw InputError(fmt::format("mismatched grids: {} has {} x {} x {} cells, {} has {} x {} x {}",

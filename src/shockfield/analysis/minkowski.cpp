@@ -179,7 +179,7 @@ double mean_breadth(std::span<const std::int64_t> row, bool closed) {
          kWeight3D[3] / std::sqrt(3.0) * double(row[col::section(2, closed)]) / 6.0;
 }
 
-double isotropic_spacing(const GridField& field) {
+double isotropic_spacing(const GridFieldView& field) {
   for (int a = 1; a < field.dimension(); ++a)
     if (field.spacing[a] != field.spacing[0])
       throw InputError(fmt::format(
@@ -194,7 +194,7 @@ struct Common {
   double fraction = 0.0, per_black = 0.0;
 };
 
-Common common(std::span<const std::int64_t> row, const GridField& field, bool closed) {
+Common common(std::span<const std::int64_t> row, const GridFieldView& field, bool closed) {
   const std::int64_t cells_per_block = std::int64_t{1} << field.dimension();
   Common c;
   c.white = row[col::white] / cells_per_block;
@@ -207,7 +207,7 @@ Common common(std::span<const std::int64_t> row, const GridField& field, bool cl
   return c;
 }
 
-void require_dimension(const GridField& field, int dimension) {
+void require_dimension(const GridFieldView& field, int dimension) {
   if (field.dimension() != dimension)
     throw InputError(fmt::format("expected a {}D field, got {} x {} x {} cells", dimension,
                                  field.n[0], field.n[1], field.n[2]));
@@ -215,7 +215,7 @@ void require_dimension(const GridField& field, int dimension) {
 
 // Sums every threshold in one pass, then evaluates `row(sums, k)` per threshold.
 template <class Row>
-auto for_all_thresholds(const GridField& field, std::span<const double> thresholds,
+auto for_all_thresholds(const GridFieldView& field, std::span<const double> thresholds,
                         Boundary boundary, int dimension, Row row) {
   require_dimension(field, dimension);
   isotropic_spacing(field);
@@ -233,7 +233,7 @@ const BlockWeights& minkowski_weights(int dimension) {
   return tables.at(static_cast<std::size_t>(dimension - 2));
 }
 
-Functionals2D functionals_2d(const BlockSums& sums, std::size_t k, const GridField& field,
+Functionals2D functionals_2d(const BlockSums& sums, std::size_t k, const GridFieldView& field,
                              Connectivity2D connectivity) {
   require_dimension(field, 2);
   const double h = isotropic_spacing(field);
@@ -249,7 +249,7 @@ Functionals2D functionals_2d(const BlockSums& sums, std::size_t k, const GridFie
   return f;
 }
 
-Functionals3D functionals_3d(const BlockSums& sums, std::size_t k, const GridField& field,
+Functionals3D functionals_3d(const BlockSums& sums, std::size_t k, const GridFieldView& field,
                              Adjacency3D adjacency) {
   require_dimension(field, 3);
   const double h = isotropic_spacing(field);
@@ -268,39 +268,55 @@ Functionals3D functionals_3d(const BlockSums& sums, std::size_t k, const GridFie
   return f;
 }
 
-std::vector<Functionals2D> minkowski_2d(const GridField& field, std::span<const double> thresholds,
+std::vector<Functionals2D> minkowski_2d(const GridFieldView& field, std::span<const double> thresholds,
                                         const MinkowskiOptions& options) {
   return for_all_thresholds(field, thresholds, options.boundary, 2, [&](const auto& sums, auto k) {
     return functionals_2d(sums, k, field, options.connectivity2d);
   });
 }
 
-std::vector<Functionals3D> minkowski_3d(const GridField& field, std::span<const double> thresholds,
+std::vector<Functionals3D> minkowski_3d(const GridFieldView& field, std::span<const double> thresholds,
                                         const MinkowskiOptions& options) {
   return for_all_thresholds(field, thresholds, options.boundary, 3, [&](const auto& sums, auto k) {
     return functionals_3d(sums, k, field, options.adjacency3d);
   });
 }
 
-std::vector<double> linear_thresholds(std::span<const GridField> fields, std::size_t count) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const GridField& field : fields) {
+namespace {
+
+struct ValueRange {
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+
+  void extend(const GridFieldView& field) {
     validate(field, "field");
     for (std::size_t i = 0; i < field.size(); ++i)
       if (!field.void_at(i)) lo = std::min(lo, field.values[i]), hi = std::max(hi, field.values[i]);
   }
-  if (!(hi > lo) || count == 0)
-    throw InputError(fmt::format(
-        "cannot spread {} thresholds over the fields' values [{}, {}]; give thresholds explicitly",
-        count, lo, hi));
-  std::vector<double> t(count);
-  for (std::size_t k = 0; k < count; ++k)
-    t[k] = count == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * double(k) / double(count - 1);
-  return t;
+
+  std::vector<double> spread(std::size_t count) const {
+    if (!(hi > lo) || count == 0)
+      throw InputError(fmt::format(
+          "cannot spread {} thresholds over the fields' values [{}, {}]; give thresholds explicitly",
+          count, lo, hi));
+    std::vector<double> t(count);
+    for (std::size_t k = 0; k < count; ++k)
+      t[k] = count == 1 ? 0.5 * (lo + hi) : lo + (hi - lo) * double(k) / double(count - 1);
+    return t;
+  }
+};
+
+}  // namespace
+
+std::vector<double> linear_thresholds(std::span<const GridFieldView> fields, std::size_t count) {
+  ValueRange range;
+  for (const GridFieldView& field : fields) range.extend(field);
+  return range.spread(count);
 }
 
-std::vector<double> linear_thresholds(const GridField& field, std::size_t count) {
-  return linear_thresholds(std::span<const GridField>(&field, 1), count);
+std::vector<double> linear_thresholds(const GridFieldView& field, std::size_t count) {
+  ValueRange range;
+  range.extend(field);
+  return range.spread(count);
 }
 
 }  // namespace shockfield::analysis

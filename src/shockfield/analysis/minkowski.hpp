@@ -62,21 +62,21 @@ const BlockWeights& minkowski_weights(int dimension);
 
 /// Functionals of threshold row k of `sums` (of minkowski_weights), for `field`'s grid (cell
 /// count and spacing).
-Functionals2D functionals_2d(const BlockSums& sums, std::size_t k, const GridField& field,
+Functionals2D functionals_2d(const BlockSums& sums, std::size_t k, const GridFieldView& field,
                              Connectivity2D connectivity);
-Functionals3D functionals_3d(const BlockSums& sums, std::size_t k, const GridField& field,
+Functionals3D functionals_3d(const BlockSums& sums, std::size_t k, const GridFieldView& field,
                              Adjacency3D adjacency);
 
 /// All thresholds (strictly increasing) in one pass. Throws InputError on a bad field, bad
 /// thresholds, a grid of the wrong dimension or unequal spacings.
-std::vector<Functionals2D> minkowski_2d(const GridField& field, std::span<const double> thresholds,
+std::vector<Functionals2D> minkowski_2d(const GridFieldView& field, std::span<const double> thresholds,
                                         const MinkowskiOptions& options = {});
-std::vector<Functionals3D> minkowski_3d(const GridField& field, std::span<const double> thresholds,
+std::vector<Functionals3D> minkowski_3d(const GridFieldView& field, std::span<const double> thresholds,
                                         const MinkowskiOptions& options = {});
 
 /// `count` thresholds evenly spaced over the range of the fields' non-void values (all the
 /// frames of a run together: the first frame of a shock run is often uniform).
-std::vector<double> linear_thresholds(std::span<const GridField> fields, std::size_t count);
-std::vector<double> linear_thresholds(const GridField& field, std::size_t count);
+std::vector<double> linear_thresholds(std::span<const GridFieldView> fields, std::size_t count);
+std::vector<double> linear_thresholds(const GridFieldView& field, std::size_t count);
 
 }  // namespace shockfield::analysis

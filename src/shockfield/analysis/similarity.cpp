@@ -25,13 +25,13 @@ void check_process(const Process& p, const char* what) {
 
 }  // namespace
 
-MorphologyPoint morphology_point(const Functionals2D& f, const GridField& grid) {
+MorphologyPoint morphology_point(const Functionals2D& f, const GridFieldView& grid) {
   const double n = double(grid.size());
   return {f.area_fraction, f.boundary_length / (n * grid.spacing[0]),
           finite_or_zero(f.euler_per_black_node)};
 }
 
-MorphologyPoint morphology_point(const Functionals3D& f, const GridField& grid) {
+MorphologyPoint morphology_point(const Functionals3D& f, const GridFieldView& grid) {
   const double n = double(grid.size()), h = grid.spacing[0];
   return {f.volume_fraction, f.surface_area / (n * h * h), f.mean_breadth / (n * h),
           finite_or_zero(f.euler_per_black_node)};

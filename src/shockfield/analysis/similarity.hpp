@@ -20,9 +20,9 @@ using MorphologyPoint = std::vector<double>;
 
 /// 2D: (A, L / (N h), χ / N_black) — fractional area, boundary length per cell in grid units,
 /// eq. (33)'s Euler characteristic (0 when there is no black node).
-MorphologyPoint morphology_point(const Functionals2D& f, const GridField& grid);
+MorphologyPoint morphology_point(const Functionals2D& f, const GridFieldView& grid);
 /// 3D: (V, S / (N h²), b̄ / (N h), χ / N_black).
-MorphologyPoint morphology_point(const Functionals3D& f, const GridField& grid);
+MorphologyPoint morphology_point(const Functionals3D& f, const GridFieldView& grid);
 
 /// Euclidean distance d; InputError if the points have different lengths.
 double distance(const MorphologyPoint& a, const MorphologyPoint& b);

@@ -12,12 +12,12 @@
 namespace shockfield::analysis {
 namespace {
 
-fft::Layout layout_of(const GridField& f) {
+fft::Layout layout_of(const GridFieldView& f) {
   return {f.n, f.spacing, f.dimension()};
 }
 
 // |F(δΘ)|² on the half spectrum, with the mean removed and void cells at δΘ = 0.
-std::vector<double> power(const GridField& field) {
+std::vector<double> power(const GridFieldView& field) {
   validate(field, "field");
   double sum = 0.0;
   std::size_t count = 0;
@@ -57,7 +57,7 @@ struct ShellSum {
 
 }  // namespace
 
-RadialProfile structure_factor(const GridField& field) {
+RadialProfile structure_factor(const GridFieldView& field) {
   const fft::Layout l = layout_of(field);
   const std::vector<double> p = power(field);
   double longest = 0.0;
@@ -68,7 +68,7 @@ RadialProfile structure_factor(const GridField& field) {
   return shells.profile(1);
 }
 
-RadialProfile correlation_function(const GridField& field) {
+RadialProfile correlation_function(const GridFieldView& field) {
   const fft::Layout l = layout_of(field);
   std::vector<double> p = power(field);
   std::vector<std::complex<double>> spectrum(p.begin(), p.end());
@@ -91,7 +91,7 @@ RadialProfile correlation_function(const GridField& field) {
   return shells.profile(0);
 }
 
-double characteristic_size(const GridField& field) {
+double characteristic_size(const GridFieldView& field) {
   const fft::Layout l = layout_of(field);
   const std::vector<double> p = power(field);
   double num = 0.0, den = 0.0;

@@ -159,7 +159,8 @@ std::vector<double> thresholds_of(const Morphology& m, const std::vector<sa::Gri
   if (!m.thresholds.empty() && m.count > 0)
     throw InputError("give either --thresholds or --count, not both");
   if (!m.thresholds.empty()) return m.thresholds;
-  return sa::linear_thresholds(fields, m.count > 0 ? m.count : 32);
+  const std::vector<sa::GridFieldView> views(fields.begin(), fields.end());
+  return sa::linear_thresholds(views, m.count > 0 ? m.count : 32);
 }
 
 // Functionals of every field at every threshold, as morphology points and as CSV text rows.
