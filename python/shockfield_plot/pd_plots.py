@@ -21,9 +21,10 @@
       compressive strain, the band mean ± SD, and the Taylor average (eq. 43); below, the
       soft-hard spread (max − min over the grains) and the SD against strain; prints the
       strains where the spread and the SD peak and where the spread first reaches 100 MPa.
-      Drawn beside it, as the experimental reference, the Johnson-Cook flow curve of OFHC copper
-      (Johnson & Cook 1983, fitted to their tests) at the run's strain rate and room temperature.
-      Further runs add their Taylor average only (e.g. another hardening law).
+      With --johnson-cook A,B,n,C (MPa, MPa, -, -), a Johnson-Cook flow curve (Johnson & Cook 1983)
+      at the run's strain rate and room temperature is drawn beside it as a reference, labelled
+      --reference-label, and a table of the ratios printed. Further runs add their Taylor average
+      only (e.g. another hardening law).
 
   python3 -m shockfield_plot.pd_plots orientations RUN_DIR [--out FILE]
       a [homogeneous] run's grains (grain_summary.csv): the crystal direction along the loading
@@ -175,21 +176,15 @@ def crystal(runs, labels, out):
     fig.savefig(out, dpi=110)
 
 
-# Johnson & Cook's flow stress of OFHC copper, sigma = (A + B eps_p^n)(1 + C ln(rate / 1 s^-1)) at
-# room temperature: G. R. Johnson, W. H. Cook, "A constitutive model and data for metals subjected
-# to large strains, high strain rates and high temperatures", Proc. 7th Int. Symp. on Ballistics,
-# The Hague, 1983, pp. 541-547 (A = 90 MPa, B = 292 MPa, n = 0.31, C = 0.025; fitted to torsion
-# and Hopkinson-bar tests of OFHC copper). It stands in for the annealed-copper curve of Kalidindi,
-# Bronkhorst & Anand (1992) that the paper compares with, whose numbers we do not have.
-JOHNSON_COOK_OFHC = {"A": 90.0, "B": 292.0, "n": 0.31, "C": 0.025}
+def johnson_cook(parameters, plastic_strain, rate):
+    """Johnson & Cook's flow stress at room temperature, sigma = (A + B eps_p^n)(1 + C ln(rate / 1 s^-1))
+    (G. R. Johnson, W. H. Cook, Proc. 7th Int. Symp. on Ballistics, The Hague, 1983, pp. 541-547),
+    in the unit of A and B; ``parameters`` (A, B, n, C)."""
+    a, b, n, c = parameters
+    return (a + b * plastic_strain ** n) * (1.0 + c * np.log(rate))
 
 
-def johnson_cook_ofhc(plastic_strain, rate):
-    jc = JOHNSON_COOK_OFHC
-    return (jc["A"] + jc["B"] * plastic_strain ** jc["n"]) * (1.0 + jc["C"] * np.log(rate))
-
-
-def compression(runs, labels, out):
+def compression(runs, labels, out, johnson_cook_mpa=None, reference_label=None):
     run = Run.open(runs[0])
     curve = run.table("stress_strain")
     grains = run.table("grains")
@@ -211,12 +206,13 @@ def compression(runs, labels, out):
     for (label, other), color in zip(others, ("tab:orange", "tab:purple", "tab:brown")):
         top.plot(eps, other, color=color, lw=2.2, label=f"Taylor average, {label}")
     rate = abs(run.value("strain_rate"))
-    reference = johnson_cook_ofhc(eps, rate)
-    top.plot(eps, reference, color="k", ls="--", lw=1.5,
-             label=f"OFHC Cu, Johnson & Cook 1983 fit to experiment, {rate:g}/s")
+    if johnson_cook_mpa:
+        top.plot(eps, johnson_cook(johnson_cook_mpa, eps, rate), color="k", ls="--", lw=1.5,
+                 label=f"{reference_label or 'Johnson-Cook ' + ', '.join(f'{v:g}' for v in johnson_cook_mpa)}, {rate:g}/s")
     top.set_ylabel("axial compression (eq. 45) [MPa]")
     top.legend(fontsize="small", loc="lower right")
-    top.set_title("OFHC copper, Table 1, isochoric compression (eq. 44), thin: each grain", fontsize="small")
+    top.set_title(run.title("isochoric compression (Liu et al. 2025, eq. 44)") + "\nthin lines: each grain",
+                  fontsize="small")
     bottom.plot(eps, spread, color="k", label="spread: hardest − softest grain")
     bottom.plot(eps, sd, color="tab:blue", label="SD over the grains")
     bottom.axhline(100.0, color="grey", ls="--", lw=0.8)
@@ -231,12 +227,13 @@ def compression(runs, labels, out):
           f"{sd.max():.1f} MPa (strain {eps[np.argmax(sd)]:.3g}); at strain 0.01/0.05/0.1: spread "
           + ", ".join(f"{np.interp(e, eps, spread):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa, Taylor "
           + ", ".join(f"{np.interp(e, eps, taylor):.1f}" for e in (0.01, 0.05, 0.1)) + " MPa")
-    print("strain  Johnson-Cook OFHC [MPa]  Taylor average [MPa] (ratio to Johnson-Cook): "
-          + "; ".join(labels[: len(runs)]))
+    if not johnson_cook_mpa:
+        return
+    print("strain  Johnson-Cook [MPa]  Taylor average [MPa] (ratio to Johnson-Cook): " + "; ".join(labels[: len(runs)]))
     for e in (0.01, 0.05, 0.1, 0.2, 0.5, 1.0):
-        r = johnson_cook_ofhc(e, rate)
+        r = johnson_cook(johnson_cook_mpa, e, rate)
         cells = [np.interp(e, eps, t) for t in [taylor] + [o for _, o in others]]
-        print(f"{e:6.2f}  {r:23.1f}  " + "  ".join(f"{t:7.1f} ({t / r:4.2f})" for t in cells))
+        print(f"{e:6.2f}  {r:18.1f}  " + "  ".join(f"{t:7.1f} ({t / r:4.2f})" for t in cells))
 
 
 def standard_triangle(h, k, l):
@@ -326,10 +323,18 @@ def main():
     ap.add_argument("--labels", nargs="*")
     ap.add_argument("--out", default="bar.png")
     ap.add_argument("--tips", nargs="*", default=[], help="notch tips X,Y in m (damage)")
+    ap.add_argument("--johnson-cook", help="compression: a reference flow curve A,B,n,C (A, B in MPa)")
+    ap.add_argument("--reference-label", help="compression: the legend of --johnson-cook's curve")
     a = ap.parse_args()
     labels = a.labels or [os.path.basename(os.path.normpath(r)) for r in a.runs]
     if a.kind == "damage":
         damage(a.runs, labels, a.out, [tuple(float(v) for v in tip.split(",")) for tip in a.tips])
+        return
+    if a.kind == "compression":
+        reference = [float(v) for v in a.johnson_cook.split(",")] if a.johnson_cook else None
+        if reference is not None and len(reference) != 4:
+            ap.error(f"--johnson-cook: expected A,B,n,C (four numbers), got '{a.johnson_cook}'")
+        compression(a.runs, labels, a.out, reference, a.reference_label)
         return
     {"bar": bar, "profiles": profiles, "crystal": crystal, "compression": compression, "orientations": orientations}[a.kind](
         a.runs, labels, a.out)

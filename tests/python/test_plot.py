@@ -39,6 +39,11 @@ def cavity_case():
 
 
 # A 16 x 16 GLS quench, 20 steps (tests/cli/dbm_gls_run.sh's case): series, summary.csv, 3 frames.
+# A Taylor compression of 4 crystal grains ([homogeneous], the pd_ofhc_compression example in small).
+TAYLOR = {"method": "pd", "material": {"model": "crystal", "density": 8960.0, "orientation": "random",
+                                      "taylor_grains": 4, "seed": 3},
+          "homogeneous": {"strain_rate": -0.01, "end_strain": -0.02, "strain_increment": 1e-3,
+                          "output_increment": 0.01}}
 GLS = {"method": "dbm", "grid": {"nx": 16, "ny": 16, "dx": 0.0625},
        "model": {"kind": "gls", "K": 1e-3, "tau": 1e-3, "q": -0.019},
        "initial": {"type": "quench", "rho0": 1.0, "T": 0.85, "noise": 0.05},
@@ -86,6 +91,7 @@ class Plot(unittest.TestCase):
             "phasefield": run(shockfield.Case.load(CASES / "phasefield_tiny.toml"), "phasefield"),
             "md": run(md, "md"),
             "plate": run(shockfield.Case.load(CASES / "pd_plate_loading.toml"), "plate"),
+            "taylor": run(shockfield.Case.from_dict(TAYLOR), "taylor"),
         }
 
     @classmethod
@@ -101,7 +107,8 @@ class Plot(unittest.TestCase):
                     ("cavity", "mpm", 2), ("bar", "pd", 2), ("crystal", "pd", 2), ("profiles", "pd", 7),
                     ("profiles", "dbm", 4), ("tne", "dbm", 3), ("profiles", "gls", 5), ("tne", "gls", 3),
                     ("phase-separation", "gls", 7), ("chain", "granular", 3),
-                    ("stress-strain", "macroparticle", 1), ("phasefield", "phasefield", 3), ("damage", "plate", 1)]
+                    ("stress-strain", "macroparticle", 1), ("phasefield", "phasefield", 3), ("damage", "plate", 1),
+                    ("compression", "taylor", 2), ("orientations", "taylor", 2)]
         # structures and slice: tests/cli/plot_atoms.sh; hugoniot: test_hugoniot_folder.
         self.assertEqual({k for k, _, _ in expected} | {"hugoniot", "structures", "slice"},
                          set(shockfield.plot.KINDS), "a kind without a test here")
@@ -115,6 +122,11 @@ class Plot(unittest.TestCase):
         self.assertIn("dbm run dbm (dbm_sod.toml): profiles", axes[0].figure._suptitle.get_text())
         levels = [t.get_text() for t in axes[2].texts]  # rho, u_x, p, T
         self.assertTrue(any(t.startswith("exact p* ") for t in levels), levels)
+        # No reference curve of one material is drawn on another run's compression (only its own
+        # grains, their band and the Taylor average), and the title names the run.
+        _, axes = drawn_axes("compression", self.folder("taylor"))
+        self.assertIn("pd run taylor", axes[0].get_title())
+        self.assertEqual([t.get_text() for t in axes[0].get_legend().get_texts()][-1], "Taylor average (eq. 43), 4 grains")
 
     def test_hugoniot_folder(self):
         """The folder of `shockfield hugoniot`: its sweep (here LAMMPS's fixture sweep) and the
@@ -139,7 +151,8 @@ class Plot(unittest.TestCase):
                                         "chain"),
                  ("cavity", "porous", "a mpm run; 'cavity' draws mpm runs with a cavity ([[body]] cavity_radius). "
                                       "Kinds for this run: thermo, series, porous"),
-                 ("tne", "pd", "Kinds for this run: thermo, series, profiles, bar, crystal, damage")]
+                 ("tne", "pd", "Kinds for this run: thermo, series, profiles, bar, crystal, damage"),
+                 ("compression", "pd", "'compression' draws pd runs with a [homogeneous] block")]
         for kind, name, message in cases:
             with self.subTest(kind=kind, run=name), self.assertRaises(shockfield.InputError) as caught:
                 shockfield.plot.plot(kind, self.folder(name))

@@ -37,6 +37,10 @@ def _gls(run):
     return run.config.get("model", {}).get("kind") == "gls"
 
 
+def _homogeneous(run):
+    return "homogeneous" in run.config
+
+
 def _cavity(run):
     return run.value("cavity_radius") is not None
 
@@ -51,6 +55,10 @@ KINDS = {
                    only=(_cavity, "with a cavity ([[body]] cavity_radius)")),
     "bar": Kind(frozenset({"pd"}), "pd: axial stress and plastic strain along a bar, the derived HEL and impact stress"),
     "crystal": Kind(frozenset({"pd"}), "pd: axial compression and accumulated slip at the last profile"),
+    "compression": Kind(frozenset({"pd"}), "pd: every grain's axial compression against strain, the Taylor average",
+                        only=(_homogeneous, "with a [homogeneous] block")),
+    "orientations": Kind(frozenset({"pd"}), "pd: the grains' loading axis before and after, inverse pole figure",
+                         only=(_homogeneous, "with a [homogeneous] block")),
     "damage": Kind(frozenset({"pd"}), "pd: damage of a 2D body and the angle of the cracks grown from its notches"),
     "tne": Kind(frozenset({"dbm"}), "dbm: mean TNE strength against time, Δ*_2xx and Δ*_(3,1)x along x"),
     "phase-separation": Kind(frozenset({"dbm"}), "dbm (GLS): density frames, boundary length, TNE, domain size",
