@@ -10,22 +10,22 @@ profile around the peak (p, λ, Δ*_2xx, Δ*_(3,1)x).
 """
 import argparse
 import pathlib
-import re
 
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-import numpy as np
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from shockfield.run import Run  # noqa: E402  (the run-folder reader every plot uses; PYTHONPATH=python)
 
 
 def derived(run, key):
-    text = (run / "config.resolved.toml").read_text()
-    return float(re.search(rf"^{key} = (\S+)", text, re.M).group(1))
+    return Run.open(run).derived[key]
 
 
 def speed(run):
-    s = np.genfromtxt(run / "series.csv", delimiter=",", names=True)
+    s = Run.open(run).series
     late = s["time"] >= 0.5 * s["time"][-1]
     slope, icpt = np.polyfit(s["time"][late], s["front_x"][late], 1)
     drift = s["total_energy"][-1] / s["total_energy"][0] - 1
@@ -33,9 +33,8 @@ def speed(run):
 
 
 def last_profile(run):
-    index = np.genfromtxt(run / "profiles" / "index.csv", delimiter=",", names=True)
-    k = int(index["profile"][-1])
-    return np.genfromtxt(run / "profiles" / f"profile_{k}.csv", delimiter=",", names=True), index["time"][-1]
+    frame = Run.open(run).last_frame(kind="profiles")
+    return frame.data, frame.time
 
 
 def main():

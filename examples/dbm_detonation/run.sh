@@ -13,4 +13,4 @@ mkdir -p "$runs"
 for case in case structure; do
     "$bin" run "$here/$case.toml" --output "$runs/$case" --overwrite -q
 done
-/usr/bin/python3 "$here/detonation.py" "$runs/case" "$runs/structure" --out "$here/detonation.png"
+PYTHONPATH=python /usr/bin/python3 "$here/detonation.py" "$runs/case" "$runs/structure" --out "$here/detonation.png"

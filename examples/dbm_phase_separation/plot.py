@@ -15,10 +15,8 @@ Definitions (README): t_SD = time of the peak of D(t) (eq. 35 of Δ*); R_SD = R(
 the least-squares slope of R(t) over [t_SD, t_end] (the paper: "the slope of the R(t) curve presents
 a phase separation speed u_DG for the domain growth stage").
 """
-import csv
 import re
 import sys
-import tomllib
 from pathlib import Path
 
 import matplotlib
@@ -28,15 +26,10 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent.parent / "python"))
+from shockfield.run import Run, read_csv, read_pvd  # noqa: E402  (the shared run-folder readers)
 from shockfield.vtk_arrays import read_vtk_arrays  # noqa: E402
 
 PAPER = {"a": 0.066, "b": 1.51e3, "c": -0.073, "d": 3.30e-3, "e": 0.00764, "f": 1.51e2, "g": 8.06e2, "h": 1.02e3}
-
-
-def read_csv(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
 
 
 def read_rho(vti):
@@ -50,8 +43,8 @@ def read_rho(vti):
 
 def load(folder):
     """One run: its case values, series and derived measures."""
-    cfg = tomllib.loads((folder / "config.resolved.toml").read_text())
-    s = read_csv(folder / "series.csv")
+    folder_run = Run.open(folder)
+    cfg, s = folder_run.config, folder_run.series
     run = {"folder": folder, "K": cfg["model"]["K"], "n": cfg["grid"]["nx"], "dt": cfg["run"]["dt"],
            "noise": cfg["initial"]["noise"], "T0": cfg["initial"]["T"],
            "wavelength": cfg["initial"].get("noise_wavelength", 0.0), "series": s,
@@ -61,7 +54,7 @@ def load(folder):
     run.update(t_SD=t[i], D_max=s["D"][i], R_SD=s["R"][i], t_end=t[-1])
     run["t_DF"] = t[int(np.argmax(s["D_force"]))]
     run["L_peaks"] = {run["threshold"]: t[int(np.argmax(s["L"]))]}
-    for name in s:
+    for name in s.dtype.names:
         if name.startswith("L_rho"):
             run["L_peaks"][float(name[5:])] = t[int(np.argmax(s[name]))] if s[name].max() > 0 else float("nan")
     run["u_DG"] = u_dg(run, t[-1])
@@ -79,8 +72,7 @@ def group(runs_dir, name):
     d = runs_dir / name
     if not (d / "sweep.csv").is_file():
         return []
-    rows = list(csv.DictReader(open(d / "sweep.csv")))
-    return [load(d / r["folder"]) for r in rows if r["status"] == "finished"]
+    return [load(d / r["folder"]) for r in read_csv(d / "sweep.csv") if r["status"] == "finished"]
 
 
 def fits(runs):
@@ -118,9 +110,7 @@ def table(runs, title):
 
 
 def nearest_frame(run, t):
-    text = (run["folder"] / "grid.pvd").read_text()
-    frames = [(float(x), run["folder"] / f) for x, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', text)]
-    return min(frames, key=lambda x: abs(x[0] - t))
+    return min(read_pvd(run["folder"] / "grid.pvd"), key=lambda x: abs(x[0] - t))
 
 
 def fig63(study, out):
@@ -151,7 +141,7 @@ def fig64(study, f, out):
     first = min(study, key=lambda r: r["K"])  # (b) L and the TNE of the smallest K
     s = first["series"]
     b2 = ax[0][1].twinx()
-    for name in [n for n in s if n == "L" or n.startswith("L_rho")]:
+    for name in [n for n in s.dtype.names if n == "L" or n.startswith("L_rho")]:
         lv = first["threshold"] if name == "L" else float(name[5:])
         ax[0][1].plot(s["time"], s[name], label=f"L, ρ_th={lv:g}")
     for name, style in (("D", "k-"), ("D_force", "k--"), ("D_gradient", "k:")):

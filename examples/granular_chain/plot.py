@@ -4,31 +4,32 @@
 Usage: /usr/bin/python3 plot.py RUNS  -> writes the PNG files next to this script."""
 import os
 import sys
-import tomllib
 
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-import numpy as np
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from shockfield.run import Run  # noqa: E402  (the run-folder reader every plot uses; PYTHONPATH=python)
 
 here = os.path.dirname(os.path.abspath(__file__))
 runs = sys.argv[1] if len(sys.argv) > 1 else "runs/granular_chain"
 
 
 def read(run, name):
-    return np.genfromtxt(os.path.join(runs, run, name), delimiter=",", names=True)
+    return Run.open(os.path.join(runs, run)).table(name)
 
 
 def table(run, name):
     """The columns of a space-time file: time, and a (rows x grains) array."""
-    raw = np.loadtxt(os.path.join(runs, run, name), delimiter=",", skiprows=1, ndmin=2)
-    return raw[:, 0], raw[:, 1:]
+    columns = read(run, name)
+    time, *grains = columns.dtype.names
+    return columns[time], np.column_stack([columns[g] for g in grains])
 
 
 def resolved(run):
-    with open(os.path.join(runs, run, "config.resolved.toml"), "rb") as f:
-        return tomllib.load(f)
+    return Run.open(os.path.join(runs, run)).config
 
 
 def central_speed(t, z):

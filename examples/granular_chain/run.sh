@@ -28,4 +28,4 @@ run column_light_impurity column_light_impurity.toml
 run column_heavy_impurity column_light_impurity.toml --set 'impurity[0].mass_ratio=10.0'
 # The same column without the impurity: what the impurity runs are compared against.
 run column_no_impurity column_light_impurity.toml --set 'impurity[0].mass_ratio=1.0'
-/usr/bin/python3 "$here/plot.py" "$runs"
+PYTHONPATH="$root/python" /usr/bin/python3 "$here/plot.py" "$runs"
