@@ -18,12 +18,18 @@
 
 namespace shockfield::mpm {
 
+/// A per-particle quantity of the windows and histograms: its name and its unit spelt as a
+/// column suffix (docs/conventions.md, "Units in column names": `kg_m3`, `Pa`, `K`, `m_s`).
+struct WindowQuantity {
+  std::string name;
+  std::string unit;
+};
 /// density [kg/m³], pressure −tr σ/3 [Pa] (EOS plus artificial viscosity), temperature [K],
-/// the velocity components ux, uy (, uz) [m/s], then the stress along the shock axis (the last
+/// the velocity components vx, vy (, vz) [m/s], then the stress along the shock axis (the last
 /// axis, a): longitudinal_stress σ_aa and longitudinal_deviator s_aa [Pa] (Cauchy, tension
 /// positive: a compressed bar reads σ_aa < 0), and von_mises √(3/2)‖s‖ [Pa] (eq. 3).
-std::vector<std::string> quantity_names(int dim);
-/// Quantity q (index into quantity_names(dim)) of particle i.
+std::vector<WindowQuantity> window_quantities(int dim);
+/// Quantity q (index into window_quantities(dim)) of particle i.
 double quantity(const Particles& p, std::size_t i, std::size_t q, int dim);
 
 /// |∇×u|², (∇·u)², D:D of a velocity gradient L (D = sym L) [1/s²].
@@ -32,7 +38,7 @@ std::array<double, 3> gradient_squares(const Mat3& l);
 struct WindowStats {
   std::size_t count = 0;
   double bulk_density = 0.0;         ///< window mass / window volume, voids included [kg/m³]
-  std::vector<double> mean, std;     ///< per quantity_names() entry (population std)
+  std::vector<double> mean, std;     ///< per window_quantities() entry (population std)
   std::array<double, 3> gradients{}; ///< volume-weighted ⟨|∇×u|²⟩, ⟨(∇·u)²⟩, ⟨D:D⟩
 };
 
