@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The output conventions (docs/conventions.md) hold for the run folder of every method's test case
-# (tests/cli/cases, plus an MPM run with a cavity and contact): units on every VTK array, one time
+# (tests/cli/cases, plus MPM runs with a cavity and contact in 2D and 3D): units on every VTK array, one time
 # column per file named for the method's unit system, units in every CSV column name (SI and metal
 # units), velocities never named u, self-describing checkpoints (docs/checkpoints.md). The checker
 # itself fails on a folder that breaks them (a second time column, a time column of another unit
@@ -28,6 +28,43 @@ for c in cavity_size_m2 collapsibility v_up_above_m_s contact_node_count contact
   head -1 "$WORK/mpm_cavity_contact/series.csv" | grep -q "\b$c\b" || fail "the cavity and contact run lacks $c"
 done
 runs+=("$WORK/mpm_cavity_contact")
+# The same in 3D (cavity_size_m3, totals without a per-length label, vz), 50 µm cells, 2 rows.
+cat > "$WORK/mpm_3d.toml" <<'CASE'
+method = "mpm"
+[grid]
+dim = 3
+cell_size = 50e-6
+lo = [0.0, 0.0, 0.0]
+hi = [0.4e-3, 0.4e-3, 1.1e-3]
+[solver]
+end_time = 4e-9
+[[material]]
+name = "al"
+library = "aluminium_seed000"
+[[body]]
+material = "al"
+lo = [0.0, 0.0, 0.0]
+hi = [0.4e-3, 0.4e-3, 0.5e-3]
+cavity_radius = 100e-6
+cavity_depth = 250e-6
+[loading]
+type = "symmetric"
+speed = 1000.0
+[diagnostics]
+window_bottom = 25e-6
+window_heights = [200e-6]
+histogram_times = [2e-9]
+[output]
+series_interval = 2e-9
+[contact]
+enabled = true
+CASE
+"$SF" run "$WORK/mpm_3d.toml" --output "$WORK/mpm_3d" -q > /dev/null
+for c in cavity_size_m3 momentum_z_kg_m_s bottom_h200um_vz_mean_m_s contact_force_N ejecta_mass_kg; do
+  head -1 "$WORK/mpm_3d/series.csv" | grep -q "\b$c\b" || fail "the 3D cavity and contact run lacks $c"
+done
+grep -q "^vz_m_s," "$WORK/mpm_3d/histograms/hist_0.csv" || fail "the 3D histogram lacks vz_m_s"
+runs+=("$WORK/mpm_3d")
 check "${runs[@]}" || fail "a run folder breaks the output conventions (above)"
 
 # A deliberately broken folder: the checker must name each violation.

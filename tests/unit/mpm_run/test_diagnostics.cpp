@@ -18,7 +18,7 @@ namespace {
 
 using namespace shockfield;
 
-// v = (a·y, c·y): L = [[0, a], [0, c]], so |∇×u|² = a², (∇·u)² = c², D:D = c² + a²/2. The MPM
+// v = (a·y, c·y): L = [[0, a], [0, c]], so |∇×v|² = a², (∇·v)² = c², D:D = c² + a²/2. The MPM
 // nodal velocities of a linear field on a uniform lattice are exact, and so is L_p inside the body.
 TEST(MpmDiagnostics, GradientSquaresOfALinearField) {
   const auto al = materials::aluminium_seed000();
