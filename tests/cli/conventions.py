@@ -16,7 +16,8 @@ named: the thermo table under LAMMPS's names (a "Time" column), a long-format ta
 "quantity" column: each row's quantity names the unit its values are in, and is checked in
 place of the header), methods in dimensionless model units (no unit to name) and the files
 listed in NOT_YET_UNIFORM, which must still break the rule (an entry that passes is reported,
-so the list only shrinks). The totals of the MPM and PD series: a unit suffix and, in 1D or 2D,
+so the list only shrinks). The keys of summary.json's results that hold numbers follow the same
+rule (docs/summary-json.md: units in the key names). The totals of the MPM and PD series: a unit suffix and, in 1D or 2D,
 the per-area or per-length label. Every checkpoint.h5 (docs/checkpoints.md; read with h5py): the root attributes
 format, method (the run's), format_version, shockfield_version, git_commit, case (the text of the
 run's config.resolved.toml), case_sha256 (its SHA-256) and case_input (the case as read: TOML,
@@ -44,11 +45,13 @@ UNITS = {"si": ("s", "J", "m", "m2", "m3", "N", "Pa", "K", "kg", "m_s", "kg_m3",
 VELOCITY_UNITS = ("m_s", "A_ps", "km_s")
 # Pure numbers: no unit suffix. Any name ending in "count" is one too.
 DIMENSIONLESS = {"step", "steps", "profile", "grain", "width_grains", "collapsibility", "plastic", "max_plastic",
-                 "damage", "neighbor_rebuilds"}
+                 "damage", "neighbor_rebuilds", "particles", "strain", "lateral_strain", "poisson_secant",
+                 "plastic_bonds", "broken_bonds", "energy_error", "mean_damage", "damaged_points"}
 # Files known to break the unit rule, with the reason; each entry must still break it.
 NOT_YET_UNIFORM = {
     ("md", "clusters.csv"): "analyze clusters: positions and axes in Å without a suffix (issue 15)",
     ("md", "structures.csv"): "analyze structures: counts and fractions without a pure-number rule (issue 15)",
+    ("pd", "summary.json"): "results.momentum without its unit (issue 15)",
 }
 PER_MISSING_LABELS = ("_per_m", "_per_m2")
 
@@ -152,7 +155,35 @@ def check_csv(path, method, dim=3):
         yield from check_totals(path, header, dim)
     if system == "model":
         return  # dimensionless model units: no unit to name
-    problems = list(check_units(path, header, rows, system))
+    yield from exempted(path, method, list(check_units(path, header, rows, system)))
+
+
+def result_keys(value, key=None):
+    """The keys of summary.json's results that hold numbers (a list's elements count as its key's)."""
+    if isinstance(value, dict):
+        for k, v in value.items():
+            yield from result_keys(v, k)
+    elif isinstance(value, list):
+        for v in value:
+            yield from result_keys(v, key)
+    elif isinstance(value, (int, float)) and not isinstance(value, bool) and key is not None:
+        yield key
+
+
+def check_summary(path, method):
+    """The unit rule on the keys of summary.json's results (docs/summary-json.md: units in the key names)."""
+    import json
+    system = UNIT_SYSTEM.get(method)
+    if system in (None, "model"):
+        return
+    keys = sorted(set(result_keys(json.loads(path.read_text()).get("results", {}))))
+    problems = [f"{path}: results {p.replace('column', 'key', 1)}"
+                for p in filter(None, (unit_problem(k, system) for k in keys))]
+    yield from exempted(path, method, problems)
+
+
+def exempted(path, method, problems):
+    """The problems of a file, or for a file in NOT_YET_UNIFORM a note when it has none."""
     if (method, path.name) not in NOT_YET_UNIFORM:
         yield from problems
     elif not problems:
@@ -216,6 +247,8 @@ def main():
                 problems += check_vtk(path)
             elif path.suffix == ".csv":
                 problems += check_csv(path, method, dim_of(run))
+            elif path.name == "summary.json":
+                problems += check_summary(path, method)
             elif path.name == "checkpoint.h5":
                 problems += check_checkpoint(path, method)
     for p in problems:

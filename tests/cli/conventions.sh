@@ -2,7 +2,7 @@
 # The output conventions (docs/conventions.md) hold for the run folder of every method's test case
 # (tests/cli/cases, plus MPM runs with a cavity and contact in 2D and 3D): units on every VTK array, one time
 # column per file named for the method's unit system, units in every CSV column name (SI and metal
-# units), velocities never named u, self-describing checkpoints (docs/checkpoints.md). The checker
+# units) and summary.json result key, velocities never named u, self-describing checkpoints (docs/checkpoints.md). The checker
 # itself fails on a folder that breaks them (a second time column, a time column of another unit
 # system, an array without units, granular, PD and MPM columns without their units, an MPM velocity
 # named u, a method without a unit system, a checkpoint dataset without units or a case that is not
@@ -98,17 +98,20 @@ for p in "column 'kinetic_energy' has no unit suffix" \
   grep -qF "$p" "$WORK/broken_pd.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken_pd.txt"))"
 done
 # MPM columns and arrays under their old names: a window mean without its unit, a gradient
-# without 1/s², the highest particle without metres, a velocity named u (series and grid frame).
+# without 1/s², the highest particle without metres, a velocity named u (series and grid frame),
+# a summary.json mean without its unit.
 mkdir -p "$WORK/broken_mpm/fields"
 cp "$WORK/mpm_tiny/config.resolved.toml" "$WORK/broken_mpm/"
 sed '1s/,top_m,rot2_per_s2,/,top,rot2,/; 1s/_pressure_mean_Pa,/_pressure_mean,/; 1s/_vy_mean_m_s,/_uy_mean_m_s,/' \
     "$WORK/mpm_tiny/series.csv" > "$WORK/broken_mpm/series.csv"
 sed 's/Name="vy"/Name="uy"/' "$WORK/mpm_tiny/fields/grid_000000000.vti" > "$WORK/broken_mpm/fields/grid_000000000.vti"
+sed 's/"pressure_Pa"/"pressure"/' "$WORK/mpm_tiny/summary.json" > "$WORK/broken_mpm/summary.json"
 check "$WORK/broken_mpm" > "$WORK/broken_mpm.txt"
 [ $? -eq 1 ] || fail "the checker passed MPM columns without units"
 for p in "column 'top' has no unit suffix" "column 'rot2' has no unit suffix" \
          "column 'bottom_h200um_pressure_mean' has no unit suffix" \
-         "column 'bottom_h200um_uy_mean_m_s' names a velocity u" "DataArray 'uy' is a velocity"; do
+         "column 'bottom_h200um_uy_mean_m_s' names a velocity u" "DataArray 'uy' is a velocity" \
+         "summary.json: results key 'pressure' has no unit suffix"; do
   grep -qF "$p" "$WORK/broken_mpm.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken_mpm.txt"))"
 done
 # The next method: a run folder of a method the checker has no unit system for is itself a violation.
