@@ -12,7 +12,7 @@ itself a violation, so the next method is checked from its first run). Every col
 of a method in SI or metal units carries its unit as a suffix (time_s, kinetic_J, rot2_per_s2,
 then in 1D/2D totals the per-area or per-length label) or is a pure number (DIMENSIONLESS, or
 a name ending in "count"); a column ux/uy/uz does not carry a velocity unit. Exceptions, each
-named: the thermo table under LAMMPS's names (a "Time" column), a long-format table (a
+named: the thermo table under LAMMPS's names (Step, Time, ...), a long-format table (a
 "quantity" column: each row's quantity names the unit its values are in, and is checked in
 place of the header), methods in dimensionless model units (no unit to name) and the files
 listed in NOT_YET_UNIFORM, which must still break the rule (an entry that passes is reported,
@@ -41,12 +41,15 @@ TIME_NAME = {"si": "time_s", "metal": "time_ps", "model": "time"}
 # Unit suffixes per unit system, SI spelt with underscores for "/" and a trailing power
 # (m_s = m/s, kg_m3 = kg/m³, per_s2 = 1/s²).
 UNITS = {"si": ("s", "J", "m", "m2", "m3", "N", "Pa", "K", "kg", "m_s", "kg_m3", "J_kg", "kg_m_s", "per_s2"),
-         "metal": ("ps", "eV", "bar", "A", "A3", "K", "A_ps", "eV_A", "GPa", "km_s", "g_cm3")}
+         "metal": ("ps", "eV", "bar", "A", "A3", "K", "A_ps", "eV_A", "GPa", "km_s", "g_cc")}
 VELOCITY_UNITS = ("m_s", "A_ps", "km_s")
-# Pure numbers: no unit suffix. Any name ending in "count" is one too.
-DIMENSIONLESS = {"step", "steps", "profile", "grain", "width_grains", "collapsibility", "plastic", "max_plastic",
-                 "damage", "neighbor_rebuilds", "particles", "strain", "lateral_strain", "poisson_secant",
-                 "plastic_bonds", "broken_bonds", "energy_error", "mean_damage", "damaged_points"}
+# Pure numbers: no unit suffix. Any name ending in "count" is one too. Indices and counts, then
+# strains, ratios and crystal directions (PD's polycrystal grain_summary.csv: axis_h/k/l).
+DIMENSIONLESS = {"step", "steps", "profile", "grain", "bin", "particles", "plastic_bonds", "broken_bonds",
+                 "damaged_points", "neighbor_rebuilds", "width_grains",
+                 "collapsibility", "plastic", "max_plastic", "damage", "mean_damage", "strain", "lateral_strain",
+                 "poisson_secant", "energy_error", "schmid_factor", "accumulated_slip", "mean_accumulated_slip",
+                 "axis_h", "axis_k", "axis_l", "final_axis_h", "final_axis_k", "final_axis_l"}
 # Files known to break the unit rule, with the reason; each entry must still break it.
 NOT_YET_UNIFORM = {
     ("md", "clusters.csv"): "analyze clusters: positions and axes in Å without a suffix (issue 15)",
@@ -144,7 +147,7 @@ def check_csv(path, method, dim=3):
     times = [c for c in header if c in TIME_COLUMNS]
     if len(times) > 1:
         yield f"{path}: {len(times)} time columns {times}; expected one"
-    if path.name == "thermo.csv" and times == ["Time"]:
+    if path.name == "thermo.csv" and header[:1] == ["Step"]:
         return  # the thermo table, LAMMPS's column names (docs/architecture.md)
     system = UNIT_SYSTEM.get(method)
     if system is None:
