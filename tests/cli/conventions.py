@@ -17,9 +17,9 @@ named: the thermo table under LAMMPS's names (Step, Time, ...), a long-format ta
 place of the header), methods in dimensionless model units (no unit to name) and the files
 listed in NOT_YET_UNIFORM, which must still break the rule (an entry that passes is reported,
 so the list only shrinks). The keys of summary.json's results that hold numbers follow the same
-rule (docs/summary-json.md: units in the key names). The totals of the MPM and PD series: a unit suffix and, in 1D or 2D,
-the per-area or per-length label. Every checkpoint.h5 (docs/checkpoints.md; read with h5py): the root attributes
-format, method (the run's), format_version, shockfield_version, git_commit, case (the text of the
+rule (docs/summary-json.md: units in the key names). The totals of the MPM and PD series: a unit
+suffix and, in 1D or 2D, the per-area or per-length label. Every checkpoint.h5
+(docs/checkpoints.md; read with h5py): the root attributes format, method (the run's), format_version, shockfield_version, git_commit, case (the text of the
 run's config.resolved.toml), case_sha256 (its SHA-256) and case_input (the case as read: TOML,
 naming the run's method); integer counters (step, format_version)
 stored as integers; a units attribute on every dataset. Prints each violation with its file and
@@ -121,18 +121,19 @@ def check_vtk(path):
             yield f"{path}: DataArray '{name}' is a velocity; u is a displacement, name a velocity v (vx, vy, vz)"
 
 
-def csv_rows(path):
-    """The header and rows of a CSV, comment lines (#) skipped."""
+def csv_lines(path):
+    """The lines of a CSV split at commas, comment lines (#) skipped."""
     with open(path) as f:
-        lines = [line.rstrip("\n") for line in f if not line.startswith("#")]
-    return (lines[0].split(",") if lines else []), [line.split(",") for line in lines[1:]]
+        for line in f:
+            if not line.startswith("#"):
+                yield line.rstrip("\n").split(",")
 
 
-def check_units(path, header, rows, system):
+def check_units(path, header, system):
     """The unit rule on a CSV's columns, or on each row's quantity in a long-format table."""
     if "quantity" in header:
         k = header.index("quantity")
-        names = sorted({row[k] for row in rows if len(row) > k})
+        names = sorted({row[k] for row in list(csv_lines(path))[1:] if len(row) > k})
         where = "quantity"
     else:
         names, where = header, "column"
@@ -143,7 +144,7 @@ def check_units(path, header, rows, system):
 
 
 def check_csv(path, method, dim=3):
-    header, rows = csv_rows(path)
+    header = next(csv_lines(path), [])
     times = [c for c in header if c in TIME_COLUMNS]
     if len(times) > 1:
         yield f"{path}: {len(times)} time columns {times}; expected one"
@@ -158,7 +159,7 @@ def check_csv(path, method, dim=3):
         yield from check_totals(path, header, dim)
     if system == "model":
         return  # dimensionless model units: no unit to name
-    yield from exempted(path, method, list(check_units(path, header, rows, system)))
+    yield from exempted(path, method, list(check_units(path, header, system)))
 
 
 def result_keys(value, key=None):
