@@ -25,9 +25,10 @@ struct WindowQuantity {
   std::string unit;
 };
 /// density [kg/m³], pressure −tr σ/3 [Pa] (EOS plus artificial viscosity), temperature [K],
-/// the velocity components vx, vy (, vz) [m/s] (v: u is a displacement), then the stress along the shock axis (the last
-/// axis, a): longitudinal_stress σ_aa and longitudinal_deviator s_aa [Pa] (Cauchy, tension
-/// positive: a compressed bar reads σ_aa < 0), and von_mises √(3/2)‖s‖ [Pa] (eq. 3).
+/// the velocity components vx, vy (, vz) [m/s] (v: u is a displacement), then the stress along
+/// the shock axis (the last axis, a): longitudinal_stress σ_aa and longitudinal_deviator s_aa [Pa]
+/// (Cauchy, tension positive: a compressed bar reads σ_aa < 0), and von_mises √(3/2)‖s‖ [Pa]
+/// (eq. 3).
 std::vector<WindowQuantity> window_quantities(int dim);
 /// Quantity q (index into window_quantities(dim)) of particle i.
 double quantity(const Particles& p, std::size_t i, std::size_t q, int dim);
