@@ -56,8 +56,8 @@ def shocked_state(shockfield, material, folder, up_km_s, yield_stress):
     subprocess.run([shockfield, "run", case, "--output", run, "--overwrite", "-q"], check=True,
                    stdout=subprocess.DEVNULL)
     row = list(csv.DictReader(open(os.path.join(run, "series.csv"))))[-1]
-    rho = float(row["bottom_h300um_density_mean"])
-    pressure = float(row["bottom_h300um_pressure_mean"])
+    rho = float(row["bottom_h300um_density_mean_kg_m3"])
+    pressure = float(row["bottom_h300um_pressure_mean_Pa"])
     us = rho * up / (rho - rho0)
     return up_km_s, us / 1e3, pressure / 1e9, rho0 * us * up / 1e9, rho
 

@@ -70,7 +70,7 @@ for name in ("bridged", "none"):
     run = f"{out}/mpm_spall_{name}"
     ser = list(csv.DictReader(open(f"{run}/series.csv")))
     t_fs = np.array([float(r["time_s"]) for r in ser])
-    u_fs = np.array([float(r["top_h10um_uy_mean"]) for r in ser])
+    u_fs = np.array([float(r["top_h10um_vy_mean_m_s"]) for r in ser])
     plateau, low, t_low = mpm_spall.pullback(t_fs, u_fs)
     frame = mpm_spall.last_frame(run)[1]
     failed = frame["damage"] > 0

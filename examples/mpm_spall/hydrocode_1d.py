@@ -118,7 +118,7 @@ def figure(out, mpm_run, shear):
         with open(f"{mpm_run}/series.csv") as f:
             rows = list(csv.DictReader(f))
         t = np.array([float(r["time_s"]) for r in rows])
-        u = np.array([float(r["top_h25um_uy_mean"]) for r in rows])
+        u = np.array([float(r["top_h25um_vy_mean_m_s"]) for r in rows])
         _, dufs, _ = pullback(t, u)
         ax.plot(t * 1e9, u, "k", lw=2, label=f"MPM, 0.1 mm cells: {0.5 * RHO0 * C0 * dufs / 1e9:.2f} GPa")
     cases = [(1e-4, True, False, 1e9, "1D, 0.1 mm"), (1e-5, True, False, 1e9, "1D, 10 µm"),

@@ -3,7 +3,7 @@
 
   spall.py RUN_WITH_SPALL RUN_WITHOUT [--out spall.png] [--csv spall.csv]
 
-Free-surface velocity u_fs: series.csv `top_h10um_uy_mean` (the 10 µm below the highest particle).
+Free-surface velocity u_fs: series.csv `top_h10um_vy_mean_m_s` (the 10 µm below the highest particle).
 Plateau: the median of u_fs over the 60 ns after it first exceeds 90 % of its largest value;
 pull-back Δu_fs: from the plateau to the first minimum after u_fs falls 15 % below it (the plateau
 rings by ±7 %); spall strength from the acoustic approximation σ = ½·ρ0·c0·Δu_fs (Antoun et al.,
@@ -55,7 +55,7 @@ def main():
     rows = []
     for run, style in ((a.spall, "-"), (a.no_spall, "--")):
         s = Run.open(run).series
-        t, u = s["time_s"], s["top_h10um_uy_mean"]
+        t, u = s["time_s"], s["top_h10um_vy_mean_m_s"]
         plateau, low, t_low = pullback(t, u)
         sigma = 0.5 * RHO0 * C0 * (plateau - low)
         name = os.path.basename(os.path.normpath(run))

@@ -5,7 +5,7 @@ frames, where the tension is highest, and a picture of the pressure field.
   tension.py RUN [RUN ...] [--times T ...] [--out pressure.png] [--csv cavity_area.csv]
 
 For every particle frame (particles.pvd) of every run:
-  - cavity area: the run's own tracker (series.csv `cavity_size`, each particle covering its
+  - cavity area: the run's own tracker (series.csv `cavity_size_m2`, each particle covering its
     deformed domain F·box) and, as a cross-check, a measurement on the frame: a raster of
     0.0625 µm cells over the block, each particle covering the cells within its square of
     half-width (spacing/2)·(ρ0/ρ)^(1/2) (its current area, but not its shape, which the frames do
@@ -80,7 +80,7 @@ def analyse(run):
         pr = f["pressure"]
         low = pr <= np.percentile(pr, 0.5)
         q = f["points"][low, :2]
-        rows.append(dict(t=t, area=area, tracker=s["cavity_size"][k], pmin=pr.min(), low=q,
+        rows.append(dict(t=t, area=area, tracker=s["cavity_size_m2"][k], pmin=pr.min(), low=q,
                          dx=np.abs(q[:, 0] - centre[0]).mean(), dy=(q[:, 1] - centre[1]).mean(),
                          f=f, centre=centre.copy()))
     return rows

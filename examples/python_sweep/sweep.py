@@ -39,7 +39,7 @@ for v in mpm_speeds:
     run = shockfield.Run.open(out / "mpm" / f"loading.speed={shockfield.case.toml_value(v)}")
     s = run.series
     late = s["time_s"] >= 30e-9  # the 75 µm window above the wall is shocked from ~17 ns on
-    mpm.append((v, s["bottom_h75um_pressure_mean"][late].mean(), run.derived["hugoniot_pressure_Pa"]))
+    mpm.append((v, s["bottom_h75um_pressure_mean_Pa"][late].mean(), run.derived["hugoniot_pressure_Pa"]))
     print(f"mpm {v:6.0f} m/s: window pressure {mpm[-1][1] / 1e9:.3f} GPa, Hugoniot {mpm[-1][2] / 1e9:.3f} GPa")
 
 # PD: the aluminium bar of examples/pd_bar_elastic_plastic (Liu et al. (2025) §3.1), its halves

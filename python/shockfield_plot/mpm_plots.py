@@ -25,7 +25,7 @@ from shockfield.run import Run  # noqa: E402
 
 # Xu et al. (2015) §4.1.1, Fig 19: the bottom window (h = 800 µm) at 250 ns of porous aluminium
 # (their §4.1 parameters, Δ = 0.029) driven at 1000 m/s against a rigid wall.
-SEED_250NS = {"density": 3140.0, "pressure": 16.7e9, "temperature": 432.0}
+SEED_250NS = {"density_mean_kg_m3": 3140.0, "pressure_mean_Pa": 16.7e9, "temperature_mean_K": 432.0}
 SEED_CASE = {"library": "aluminium_seed000", "porosity": 0.029, "speed": 1000.0}
 
 
@@ -53,13 +53,14 @@ def porous(run, out):
     material, porosity, radius, speed, loading = porous_case(run)
     seed_case = (material == SEED_CASE["library"] and abs(porosity - SEED_CASE["porosity"]) < 1e-9
                  and speed == SEED_CASE["speed"] and loading == "wall" and "h800um" in heights)
-    panels = [("density", 1e-3, "density (g/cm³)"), ("pressure", 1e-9, "pressure (GPa)"),
-              ("temperature", 1.0, "temperature (K)"), ("uy", 1.0, "u_y (m/s)")]
+    # series.csv window means, each named with its unit (docs/conventions.md): <where>_<h>_<q>_mean_<unit>
+    panels = [("density_mean_kg_m3", 1e-3, "density (g/cm³)"), ("pressure_mean_Pa", 1e-9, "pressure (GPa)"),
+              ("temperature_mean_K", 1.0, "temperature (K)"), ("vy_mean_m_s", 1.0, "v_y (m/s)")]
     fig, axes = plt.subplots(2, 3, figsize=(13, 7))
     for ax, (q, scale, label) in zip(axes.flat, panels):
         for h in heights:
-            ax.plot(t_ns, s[f"bottom_{h}_{q}_mean"] * scale, label=f"bottom, h = {h[1:-2]} µm")
-            ax.plot(t_ns, s[f"top_{h}_{q}_mean"] * scale, ls=":", lw=1, label=f"top, h = {h[1:-2]} µm")
+            ax.plot(t_ns, s[f"bottom_{h}_{q}"] * scale, label=f"bottom, h = {h[1:-2]} µm")
+            ax.plot(t_ns, s[f"top_{h}_{q}"] * scale, ls=":", lw=1, label=f"top, h = {h[1:-2]} µm")
         if seed_case and q in SEED_250NS:
             ax.plot([250], [SEED_250NS[q] * scale], "k*", ms=12, label="seed Fig 19, h = 800 µm")
         ax.set_xlabel("t (ns)")

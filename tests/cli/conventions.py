@@ -4,13 +4,22 @@
     conventions.py RUN_DIR [RUN_DIR ...]
 
 Every .vti/.vtp file: each DataArray but a vertex cell's connectivity and offsets and VTK's
-blanking array vtkGhostType carries a units attribute. Every .csv file: at most one time column (time, time_s, time_ps, Time), and
-its name is the one of the method's unit system (the method is read from the run folder's
-config.resolved.toml). The series.csv of a method listed in UNITS_IN_COLUMNS (and its other
-files in UNITS_IN_FILES): every column carries its unit as a suffix (time_s, kinetic_J,
-signal_depth_m) or is a pure number listed in DIMENSIONLESS. The totals of the MPM and PD series:
-a unit suffix and, in 1D or 2D, the per-area or per-length label. Every checkpoint.h5 (docs/checkpoints.md; read with h5py): the root attributes
-format, method (the run's), format_version, shockfield_version, git_commit, case (the text of the
+blanking array vtkGhostType carries a units attribute, and an array named ux/uy/uz is not a
+velocity (u is a displacement, v a velocity). Every .csv file: at most one time column (time,
+time_s, time_ps, Time), and its name is the one of the method's unit system (the method is read
+from the run folder's config.resolved.toml; a method without a unit system in UNIT_SYSTEM is
+itself a violation, so the next method is checked from its first run). Every column of every CSV
+of a method in SI or metal units carries its unit as a suffix (time_s, kinetic_J, rot2_per_s2,
+then in 1D/2D totals the per-area or per-length label) or is a pure number (DIMENSIONLESS, or
+a name ending in "count"); a column ux/uy/uz does not carry a velocity unit. Exceptions, each
+named: the thermo table under LAMMPS's names (Step, Time, ...), a long-format table (a
+"quantity" column: each row's quantity names the unit its values are in, and is checked in
+place of the header), methods in dimensionless model units (no unit to name) and the files
+listed in NOT_YET_UNIFORM, which must still break the rule (an entry that passes is reported,
+so the list only shrinks). The keys of summary.json's results that hold numbers follow the same
+rule (docs/summary-json.md: units in the key names). The totals of the MPM and PD series: a unit
+suffix and, in 1D or 2D, the per-area or per-length label. Every checkpoint.h5
+(docs/checkpoints.md; read with h5py): the root attributes format, method (the run's), format_version, shockfield_version, git_commit, case (the text of the
 run's config.resolved.toml), case_sha256 (its SHA-256) and case_input (the case as read: TOML,
 naming the run's method); integer counters (step, format_version)
 stored as integers; a units attribute on every dataset. Prints each violation with its file and
@@ -23,19 +32,46 @@ import sys
 import tomllib
 
 TIME_COLUMNS = {"time", "time_s", "time_ps", "Time"}
-# The time column of series-like CSVs per method: SI methods "time_s", MD (metal units)
-# "time_ps", methods in model units "time". The thermo table keeps LAMMPS's "Time".
-TIME_NAME = {"md": "time_ps", "mpm": "time_s", "pd": "time_s", "granular": "time_s", "macroparticle": "time_s",
-             "dbm": "time", "phasefield": "time"}
+# The unit system of each method (docs/conventions.md): SI, LAMMPS metal units or dimensionless
+# model units. A run of a method missing here is a violation.
+UNIT_SYSTEM = {"md": "metal", "mpm": "si", "pd": "si", "granular": "si", "macroparticle": "si",
+               "dbm": "model", "phasefield": "model"}
+# The time column of series-like CSVs per unit system. The thermo table keeps LAMMPS's "Time".
+TIME_NAME = {"si": "time_s", "metal": "time_ps", "model": "time"}
+# Unit suffixes per unit system, SI spelt with underscores for "/" and a trailing power
+# (m_s = m/s, kg_m3 = kg/m³, per_s2 = 1/s²).
+UNITS = {"si": ("s", "J", "m", "m2", "m3", "N", "Pa", "K", "kg", "m_s", "kg_m3", "J_kg", "kg_m_s", "per_s2"),
+         "metal": ("ps", "eV", "bar", "A", "A3", "K", "A_ps", "eV_A", "GPa", "km_s", "g_cc")}
+VELOCITY_UNITS = ("m_s", "A_ps", "km_s")
+# Pure numbers: no unit suffix. Any name ending in "count" is one too. Indices and counts, then
+# strains, ratios and crystal directions (PD's polycrystal grain_summary.csv: axis_h/k/l).
+DIMENSIONLESS = {"step", "steps", "profile", "grain", "bin", "particles", "plastic_bonds", "broken_bonds",
+                 "damaged_points", "neighbor_rebuilds", "width_grains",
+                 "collapsibility", "plastic", "max_plastic", "damage", "mean_damage", "strain", "lateral_strain",
+                 "poisson_secant", "energy_error", "schmid_factor", "accumulated_slip", "mean_accumulated_slip",
+                 "axis_h", "axis_k", "axis_l", "final_axis_h", "final_axis_k", "final_axis_l"}
+# Files known to break the unit rule, with the reason; each entry must still break it.
+NOT_YET_UNIFORM = {
+    ("md", "clusters.csv"): "analyze clusters: positions and axes in Å without a suffix (issue 15)",
+    ("md", "structures.csv"): "analyze structures: counts and fractions without a pure-number rule (issue 15)",
+    ("pd", "summary.json"): "results.momentum without its unit (issue 15)",
+}
+PER_MISSING_LABELS = ("_per_m", "_per_m2")
 
-# Methods whose series.csv names every column with its unit (docs/conventions.md, "Units in
-# column names"); the others are listed there as not uniform yet.
-UNITS_IN_COLUMNS = {"granular"}
-SI_UNITS = ("s", "J", "m", "N", "Pa", "K", "kg", "m_s", "kg_m3", "J_kg", "kg_m_s")
-DIMENSIONLESS = {"step", "steps", "profile", "grain", "count", "width_grains"}
-# The files of those methods that follow the rule besides series.csv.
-UNITS_IN_FILES = {"granular": {"series.csv", "probes.csv", "signal.csv", "energy_above.csv", "spacetime_force.csv",
-                               "spacetime_velocity.csv"}}
+
+def unit_problem(column, system):
+    """Why a column name breaks the unit rule of a unit system, or None."""
+    if column in DIMENSIONLESS or column.endswith("count"):
+        return None
+    units = UNITS[system]
+    base = next((column[: -len(p)] for p in PER_MISSING_LABELS
+                 if column.endswith(p) and any(column[: -len(p)].endswith("_" + u) for u in units)), column)
+    unit = next((u for u in sorted(units, key=len, reverse=True) if base.endswith("_" + u)), None)
+    if unit is None:
+        return f"column '{column}' has no unit suffix (_{', _'.join(units)}) and is not a pure number"
+    if re.match(r"^(.*_)?u[xyz]_", base) and unit in VELOCITY_UNITS:
+        return f"column '{column}' names a velocity u; u is a displacement, name a velocity v (vx, vy, vz)"
+    return None
 
 
 # The extensive totals of the MPM and PD series (docs/conventions.md, "Per length and per area"):
@@ -81,24 +117,81 @@ def check_vtk(path):
         name = name.group(1) if name else "?"
         if name not in ("connectivity", "offsets", "vtkGhostType") and "units=" not in tag:
             yield f"{path}: DataArray '{name}' has no units attribute"
+        if re.fullmatch(r"u[xyz]", name) and re.search(r'units="[^"]*/s"', tag):
+            yield f"{path}: DataArray '{name}' is a velocity; u is a displacement, name a velocity v (vx, vy, vz)"
+
+
+def csv_lines(path):
+    """The lines of a CSV split at commas, comment lines (#) skipped."""
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("#"):
+                yield line.rstrip("\n").split(",")
+
+
+def check_units(path, header, system):
+    """The unit rule on a CSV's columns, or on each row's quantity in a long-format table."""
+    if "quantity" in header:
+        k = header.index("quantity")
+        names = sorted({row[k] for row in list(csv_lines(path))[1:] if len(row) > k})
+        where = "quantity"
+    else:
+        names, where = header, "column"
+    for c in names:
+        problem = unit_problem(c, system)
+        if problem:
+            yield f"{path}: {problem.replace('column', where, 1)}"
 
 
 def check_csv(path, method, dim=3):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
+    header = next(csv_lines(path), [])
     times = [c for c in header if c in TIME_COLUMNS]
     if len(times) > 1:
         yield f"{path}: {len(times)} time columns {times}; expected one"
-    if path.name == "thermo.csv" and times == ["Time"]:
+    if path.name == "thermo.csv" and header[:1] == ["Step"]:
         return  # the thermo table, LAMMPS's column names (docs/architecture.md)
-    if times and method in TIME_NAME and times[0] != TIME_NAME[method]:
-        yield f"{path}: time column '{times[0]}'; a {method} run names it '{TIME_NAME[method]}'"
+    system = UNIT_SYSTEM.get(method)
+    if system is None:
+        return  # reported once per run folder (main)
+    if times and times[0] != TIME_NAME[system]:
+        yield f"{path}: time column '{times[0]}'; a {method} run names it '{TIME_NAME[system]}'"
     if path.name == "series.csv" and method in ("mpm", "pd"):
         yield from check_totals(path, header, dim)
-    if path.name in UNITS_IN_FILES.get(method, {"series.csv"}) and method in UNITS_IN_COLUMNS:
-        for c in header:
-            if c not in DIMENSIONLESS and not any(c.endswith("_" + u) for u in SI_UNITS):
-                yield f"{path}: column '{c}' has no unit suffix (_{', _'.join(SI_UNITS)})"
+    if system == "model":
+        return  # dimensionless model units: no unit to name
+    yield from exempted(path, method, list(check_units(path, header, system)))
+
+
+def result_keys(value, key=None):
+    """The keys of summary.json's results that hold numbers (a list's elements count as its key's)."""
+    if isinstance(value, dict):
+        for k, v in value.items():
+            yield from result_keys(v, k)
+    elif isinstance(value, list):
+        for v in value:
+            yield from result_keys(v, key)
+    elif isinstance(value, (int, float)) and not isinstance(value, bool) and key is not None:
+        yield key
+
+
+def check_summary(path, method):
+    """The unit rule on the keys of summary.json's results (docs/summary-json.md: units in the key names)."""
+    import json
+    system = UNIT_SYSTEM.get(method)
+    if system in (None, "model"):
+        return
+    keys = sorted(set(result_keys(json.loads(path.read_text()).get("results", {}))))
+    problems = [f"{path}: results {p.replace('column', 'key', 1)}"
+                for p in filter(None, (unit_problem(k, system) for k in keys))]
+    yield from exempted(path, method, problems)
+
+
+def exempted(path, method, problems):
+    """The problems of a file, or for a file in NOT_YET_UNIFORM a note when it has none."""
+    if (method, path.name) not in NOT_YET_UNIFORM:
+        yield from problems
+    elif not problems:
+        yield f"{path}: follows the unit rule now; remove ({method!r}, {path.name!r}) from NOT_YET_UNIFORM"
 
 
 CHECKPOINT_ATTRIBUTES = ("format", "method", "format_version", "shockfield_version", "git_commit", "case",
@@ -150,11 +243,16 @@ def main():
     problems = []
     for run in map(pathlib.Path, sys.argv[1:]):
         method = method_of(run)
+        if method not in UNIT_SYSTEM:
+            problems.append(f"{run}: method {method!r} has no unit system in conventions.py (UNIT_SYSTEM); "
+                            "give it one, so its outputs are checked")
         for path in sorted(run.rglob("*")):
             if path.suffix in (".vti", ".vtp"):
                 problems += check_vtk(path)
             elif path.suffix == ".csv":
                 problems += check_csv(path, method, dim_of(run))
+            elif path.name == "summary.json":
+                problems += check_summary(path, method)
             elif path.name == "checkpoint.h5":
                 problems += check_checkpoint(path, method)
     for p in problems:

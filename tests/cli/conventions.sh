@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # The output conventions (docs/conventions.md) hold for the run folder of every method's test case
-# (tests/cli/cases): units on every VTK array, one time column per file named for the method's unit
-# system, units in the series.csv column names of the methods that have them, self-describing
-# checkpoints (docs/checkpoints.md). The checker itself fails on a folder that breaks them (a second
-# time column, a time column of another unit system, an array without units, a granular series
-# column without its unit, a checkpoint dataset without units or a case that is not the run's).
+# (tests/cli/cases, plus MPM runs with a cavity and contact in 2D and 3D): units on every VTK array, one time
+# column per file named for the method's unit system, units in every CSV column name (SI and metal
+# units) and summary.json result key, velocities never named u, self-describing checkpoints (docs/checkpoints.md). The checker
+# itself fails on a folder that breaks them (a second time column, a time column of another unit
+# system, an array without units, granular, PD and MPM columns without their units, an MPM velocity
+# named u, a method without a unit system, a checkpoint dataset without units or a case that is not
+# the run's).
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -15,6 +17,54 @@ for case_file in "$ROOT"/tests/cli/cases/*.toml; do
   "$SF" run "$case_file" --output "$WORK/$name" -q > /dev/null
   runs+=("$WORK/$name")
 done
+# The MPM columns a tiny case leaves out: a cavity (its tracker's columns) and two bodies in
+# contact (contact_node_count, contact_force_N_per_m), the strip and its mirror image.
+sed -e '/^porosity\|^void_radius\|^seed/d' -e 's/^hi = \[0.4e-3, 0.5e-3\]/&\ncavity_radius = 60e-6\ncavity_depth = 250e-6/' \
+    -e 's/type = "wall"/type = "symmetric"/' -e 's/^hi = \[0.4e-3, 0.6e-3\]/hi = [0.4e-3, 1.1e-3]/' \
+    -e 's/^end_time = .*/end_time = 10e-9/' -e 's/^histogram_times = .*/histogram_times = [5e-9]/' "$ROOT/tests/cli/cases/mpm_tiny.toml" > "$WORK/mpm_cavity_contact.toml"
+printf '[contact]\nenabled = true\n' >> "$WORK/mpm_cavity_contact.toml"
+"$SF" run "$WORK/mpm_cavity_contact.toml" --output "$WORK/mpm_cavity_contact" -q > /dev/null
+for c in cavity_size_m2 collapsibility v_up_above_m_s contact_node_count contact_force_N_per_m ejecta_mass_kg_per_m; do
+  head -1 "$WORK/mpm_cavity_contact/series.csv" | grep -q "\b$c\b" || fail "the cavity and contact run lacks $c"
+done
+runs+=("$WORK/mpm_cavity_contact")
+# The same in 3D (cavity_size_m3, totals without a per-length label, vz), 50 µm cells, 2 rows.
+cat > "$WORK/mpm_3d.toml" <<'CASE'
+method = "mpm"
+[grid]
+dim = 3
+cell_size = 50e-6
+lo = [0.0, 0.0, 0.0]
+hi = [0.4e-3, 0.4e-3, 1.1e-3]
+[solver]
+end_time = 4e-9
+[[material]]
+name = "al"
+library = "aluminium_seed000"
+[[body]]
+material = "al"
+lo = [0.0, 0.0, 0.0]
+hi = [0.4e-3, 0.4e-3, 0.5e-3]
+cavity_radius = 100e-6
+cavity_depth = 250e-6
+[loading]
+type = "symmetric"
+speed = 1000.0
+[diagnostics]
+window_bottom = 25e-6
+window_heights = [200e-6]
+histogram_times = [2e-9]
+[output]
+series_interval = 2e-9
+[contact]
+enabled = true
+CASE
+"$SF" run "$WORK/mpm_3d.toml" --output "$WORK/mpm_3d" -q > /dev/null
+for c in cavity_size_m3 momentum_z_kg_m_s bottom_h200um_vz_mean_m_s contact_force_N ejecta_mass_kg; do
+  head -1 "$WORK/mpm_3d/series.csv" | grep -q "\b$c\b" || fail "the 3D cavity and contact run lacks $c"
+done
+grep -q "^vz_m_s," "$WORK/mpm_3d/histograms/hist_0.csv" || fail "the 3D histogram lacks vz_m_s"
+runs+=("$WORK/mpm_3d")
 check "${runs[@]}" || fail "a run folder breaks the output conventions (above)"
 
 # A deliberately broken folder: the checker must name each violation.
@@ -47,6 +97,31 @@ for p in "column 'kinetic_energy' has no unit suffix" \
          "column 'momentum_x_kg_m_s' is a total of a 1D run; name it 'momentum_x_kg_m_s_per_m2'"; do
   grep -qF "$p" "$WORK/broken_pd.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken_pd.txt"))"
 done
+# MPM columns and arrays under their old names: a window mean without its unit, a gradient
+# without 1/s², the highest particle without metres, a velocity named u (series and grid frame),
+# a summary.json mean without its unit.
+mkdir -p "$WORK/broken_mpm/fields"
+cp "$WORK/mpm_tiny/config.resolved.toml" "$WORK/broken_mpm/"
+sed '1s/,top_m,rot2_per_s2,/,top,rot2,/; 1s/_pressure_mean_Pa,/_pressure_mean,/; 1s/_vy_mean_m_s,/_uy_mean_m_s,/' \
+    "$WORK/mpm_tiny/series.csv" > "$WORK/broken_mpm/series.csv"
+sed 's/Name="vy"/Name="uy"/' "$WORK/mpm_tiny/fields/grid_000000000.vti" > "$WORK/broken_mpm/fields/grid_000000000.vti"
+sed 's/"pressure_Pa"/"pressure"/' "$WORK/mpm_tiny/summary.json" > "$WORK/broken_mpm/summary.json"
+check "$WORK/broken_mpm" > "$WORK/broken_mpm.txt"
+[ $? -eq 1 ] || fail "the checker passed MPM columns without units"
+for p in "column 'top' has no unit suffix" "column 'rot2' has no unit suffix" \
+         "column 'bottom_h200um_pressure_mean' has no unit suffix" \
+         "column 'bottom_h200um_uy_mean_m_s' names a velocity u" "DataArray 'uy' is a velocity" \
+         "summary.json: results key 'pressure' has no unit suffix"; do
+  grep -qF "$p" "$WORK/broken_mpm.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken_mpm.txt"))"
+done
+# The next method: a run folder of a method the checker has no unit system for is itself a violation.
+mkdir -p "$WORK/broken_new_method"
+printf "method = 'newmethod'\n" > "$WORK/broken_new_method/config.resolved.toml"
+printf "step,time_s,energy\n0,0,0\n" > "$WORK/broken_new_method/series.csv"
+check "$WORK/broken_new_method" > "$WORK/broken_new_method.txt"
+[ $? -eq 1 ] || fail "the checker passed a method it has no unit system for"
+grep -qF "method 'newmethod' has no unit system" "$WORK/broken_new_method.txt" ||
+  fail "the checker did not name the unregistered method: $(cat "$WORK/broken_new_method.txt")"
 check "$WORK/broken" > "$WORK/broken.txt"
 code=$?
 set -e

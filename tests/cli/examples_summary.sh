@@ -4,10 +4,12 @@
 # status "stopped"); a pd [homogeneous] case keeps no checkpoint, so it runs whole (seconds).
 # An example whose inputs are generated (a prepare.sh beside its cases) is copied and prepared
 # first, so the source tree is left as it is. A case that reads another run's output (a line
-# "# needs: ..." saying which) is left to the test named there.
+# "# needs: ..." saying which) is left to the test named there. Every run folder is then checked
+# against the output conventions (tests/cli/conventions.py).
 source "$(dirname "$0")/lib.bash"
 set -e
 count=0
+runs=()
 for example in "$ROOT"/examples/*/; do
   [ -f "$example/prepare.sh" ] || continue
   copy="$WORK/prepared/$(basename "$example")"
@@ -30,8 +32,11 @@ for case_file in "$ROOT"/examples/*/*.toml; do
   [ $code -eq 0 ] && status=finished
   /usr/bin/python3 "$ROOT/tests/cli/check_summary.py" "$out/summary.json" --status "$status" \
     || fail "$case_file: summary.json does not pass the schema"
-  rm -rf "$out"
+  runs+=("$out")
   count=$((count + 1))
 done
 [ $count -ge 20 ] || fail "only $count example case files found"
-echo "examples_summary: $count example case files, each summary.json valid"
+# The output conventions (docs/conventions.md) on every example's first steps: units in every
+# CSV column and summary.json key, one time column, units on every VTK array (one python process).
+/usr/bin/python3 "$ROOT/tests/cli/conventions.py" "${runs[@]}" || fail "an example's run folder breaks the output conventions (above)"
+echo "examples_summary: $count example case files, each summary.json valid, each folder following the conventions"

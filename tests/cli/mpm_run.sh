@@ -31,7 +31,7 @@ for a in stress deviator longitudinal_stress longitudinal_deviator von_mises bod
 done
 grep -q 'Name="stress" NumberOfComponents="9"' "$vtp" || fail "particle stress is not a 9-component tensor"
 grep -q 'Name="von_mises"' "$WORK/straight/fields/grid_000000000.vti" || fail "grid frame lacks von_mises"
-head -1 "$WORK/straight/series.csv" | grep -q "_longitudinal_stress_mean" || fail "series windows lack the longitudinal stress"
+head -1 "$WORK/straight/series.csv" | grep -q "_longitudinal_stress_mean_Pa" || fail "series windows lack the longitudinal stress"
 # The .vti is readable by `shockfield analyze`.
 "$SF" analyze stats "$WORK/straight/fields/grid_000000000.vti" --array density -o "$WORK/stats" --no-plot > /dev/null \
   || fail "analyze cannot read the grid field"
@@ -40,20 +40,20 @@ grep -q "stay glued" "$WORK/straight/log.txt" && fail "one body: no note about g
 
 base=$(sed -n '/^method/,$p' "$case")
 # [contact] (docs/mpm.md): a symmetric impact of the strip and its mirror image, two contact bodies;
-# series.csv gains contact_nodes and contact_force, [derived] the body count; without [contact]
+# series.csv gains contact_node_count and contact_force_N_per_m, [derived] the body count; without [contact]
 # the log says the bodies stay glued.
 symmetric=${base/type = \"wall\"/type = \"symmetric\"}
 symmetric=${symmetric/hi = \[0.4e-3, 0.6e-3\]/hi = [0.4e-3, 1.1e-3]}
 printf '%s\n[contact]\nenabled = true\n' "$symmetric" > "$WORK/contact.toml"
 "$SF" run "$WORK/contact.toml" --output "$WORK/contact" -q > /dev/null
 grep -q "^contact_bodies = 2" "$WORK/contact/config.resolved.toml" || fail "no derived contact_bodies = 2"
-head -1 "$WORK/contact/series.csv" | grep -q ",contact_nodes,contact_force$" || fail "series.csv lacks the contact columns"
+head -1 "$WORK/contact/series.csv" | grep -q ",contact_node_count,contact_force_N_per_m$" || fail "series.csv lacks the contact columns"
 awk -F, 'NR > 2 && $(NF - 1) > 0 && $NF > 0 { found = 1 } END { exit !found }' "$WORK/contact/series.csv" \
   || fail "no row with contact nodes and a contact force"
 printf '%s\n' "$symmetric" > "$WORK/glued.toml"
 "$SF" run "$WORK/glued.toml" --output "$WORK/glued" -q > /dev/null
 grep -q "stay glued" "$WORK/glued/log.txt" || fail "no note that the two bodies stay glued"
-head -1 "$WORK/glued/series.csv" | grep -q "contact_nodes" && fail "contact columns without [contact]"
+head -1 "$WORK/glued/series.csv" | grep -q "contact_node_count" && fail "contact columns without [contact]"
 
 base=$(sed -n '/^method/,$p' "$case")
 expect_run_error() {

@@ -9,7 +9,7 @@ CASE="$ROOT/tests/cli/cases/mpm_tiny.toml"
   || fail "sweep failed: $(cat "$WORK/out.txt")"
 csv="$WORK/sweep/sweep.csv"
 [ "$(wc -l < "$csv")" -eq 3 ] || fail "sweep.csv should have a header and 2 rows: $(cat "$csv")"
-head -1 "$csv" | grep -q "^loading.speed,folder,status,steps,wall_seconds,.*bottom_windows.0.means.pressure" \
+head -1 "$csv" | grep -q "^loading.speed,folder,status,steps,wall_seconds,.*bottom_windows.0.means.pressure_Pa" \
   || fail "sweep.csv header: $(head -1 "$csv")"
 [ "$(grep -c ",finished," "$csv")" -eq 2 ] || fail "both runs should have finished: $(cat "$csv")"
 grep -q "wrote .*sweep.csv (2 runs)" "$WORK/out.txt" || fail "no table/summary line: $(cat "$WORK/out.txt")"

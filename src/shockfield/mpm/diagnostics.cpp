@@ -6,11 +6,12 @@
 
 namespace shockfield::mpm {
 
-std::vector<std::string> quantity_names(int dim) {
-  std::vector<std::string> n{"density", "pressure", "temperature", "ux", "uy"};
-  if (dim == 3) n.emplace_back("uz");
-  for (const char* s : {"longitudinal_stress", "longitudinal_deviator", "von_mises"}) n.emplace_back(s);
-  return n;
+std::vector<WindowQuantity> window_quantities(int dim) {
+  std::vector<WindowQuantity> q{{"density", "kg_m3"}, {"pressure", "Pa"}, {"temperature", "K"}, {"vx", "m_s"},
+                                {"vy", "m_s"}};
+  if (dim == 3) q.push_back({"vz", "m_s"});
+  for (const char* s : {"longitudinal_stress", "longitudinal_deviator", "von_mises"}) q.push_back({s, "Pa"});
+  return q;
 }
 
 double quantity(const Particles& p, std::size_t i, std::size_t q, int dim) {
@@ -36,7 +37,7 @@ std::array<double, 3> gradient_squares(const Mat3& l) {
 
 WindowStats window_stats(const Particles& p, int dim, double lo, double hi, double cross_section) {
   const int axis = dim - 1;
-  const std::size_t nq = quantity_names(dim).size();
+  const std::size_t nq = window_quantities(dim).size();
   WindowStats w;
   w.mean.assign(nq, 0.0);
   w.std.assign(nq, 0.0);

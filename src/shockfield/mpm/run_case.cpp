@@ -196,10 +196,11 @@ class MpmMethod final : public Method {
   Json results() const override {
     const Particles& p = sim_.particles();
     const Totals t = totals(p);
-    const std::vector<std::string> names = quantity_names(c_.grid.dim);
-    const auto means = [&](const WindowStats& w) {
+    const std::vector<WindowQuantity> quantities = window_quantities(c_.grid.dim);
+    const auto means = [&](const WindowStats& w) {  // keys with units, as the series columns: `pressure_Pa`
       Json m = Json::object();
-      for (std::size_t q = 0; q < names.size() && q < w.mean.size(); ++q) m.set(names[q], w.mean[q]);
+      for (std::size_t q = 0; q < quantities.size() && q < w.mean.size(); ++q)
+        m.set(quantities[q].name + "_" + quantities[q].unit, w.mean[q]);
       return m;
     };
     Json windows = Json::array();
@@ -210,11 +211,12 @@ class MpmMethod final : public Method {
       windows.push(Json::object().set("bottom_m", y1).set("height_m", h).set("particles", static_cast<long long>(w.count))
                        .set("bulk_density_kg_m3", w.bulk_density).set("means", means(w)));
     }
+    const std::string per = units::si::per_missing_dimensions_column(c_.grid.dim);  // totals: per m in 2D
     return Json::object()
-        .set("kinetic_energy_J", t.kinetic)
-        .set("internal_energy_J", t.internal)
-        .set("total_energy_J", t.total())
-        .set("momentum", Json::Array{t.momentum[0], t.momentum[1], t.momentum[2]})
+        .set("kinetic_energy_J" + per, t.kinetic)
+        .set("internal_energy_J" + per, t.internal)
+        .set("total_energy_J" + per, t.total())
+        .set("momentum_kg_m_s" + per, Json::Array{t.momentum[0], t.momentum[1], t.momentum[2]})
         .set("means_all_particles", means(window_stats(p, c_.grid.dim, -INFINITY, INFINITY, 1.0)))
         .set("bottom_windows", std::move(windows));
   }

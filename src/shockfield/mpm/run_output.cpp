@@ -50,23 +50,27 @@ std::vector<std::string> RunOutput::columns() const {
                                 "momentum_y_kg_m_s" + per};
   if (dim == 3) cols.emplace_back("momentum_z_kg_m_s");
   for (const char* c : {"kinetic_J", "internal_J", "total_J"}) cols.push_back(c + per);
-  for (const char* c : {"top", "rot2", "div2", "strain_rate2"}) cols.emplace_back(c);
-  const auto names = quantity_names(dim);
+  // Every column names its unit (docs/conventions.md): the squared velocity gradients in 1/s²
+  // spelt `_per_s2`, totals in 2D per metre of thickness (`per`).
+  const char* gradients[] = {"rot2_per_s2", "div2_per_s2", "strain_rate2_per_s2"};
+  cols.emplace_back("top_m");
+  cols.insert(cols.end(), std::begin(gradients), std::end(gradients));
+  const auto quantities = window_quantities(dim);
   for (const char* where : {"bottom", "top"})
     for (double h : case_.diagnostics.windows.heights) {
       const std::string p = fmt::format("{}_{}_", where, window_label(h));
       cols.push_back(p + "count");
-      cols.push_back(p + "bulk_density");
-      for (const auto& n : names) cols.push_back(p + n + "_mean"), cols.push_back(p + n + "_std");
-      for (const char* g : {"rot2", "div2", "strain_rate2"}) cols.push_back(p + g);
+      cols.push_back(p + "bulk_density_kg_m3");
+      for (const auto& q : quantities)
+        cols.push_back(p + q.name + "_mean_" + q.unit), cols.push_back(p + q.name + "_std_" + q.unit);
+      for (const char* g : gradients) cols.push_back(p + g);
     }
   if (cavity_)
-    for (const char* c : {"cavity_size", "cavity_horizontal", "cavity_vertical", "collapsibility", "v_up_above",
-                          "v_down_below"})
-      cols.emplace_back(c);
+    cols.insert(cols.end(), {dim == 3 ? "cavity_size_m3" : "cavity_size_m2", "cavity_horizontal_m", "cavity_vertical_m",
+                             "collapsibility", "v_up_above_m_s", "v_down_below_m_s"});
   if (case_.diagnostics.ejecta)
-    for (const char* c : {"free_surface", "ejecta_mass", "ejecta_count", "ejecta_max_height"}) cols.emplace_back(c);
-  if (case_.options.contact.enabled) cols.insert(cols.end(), {"contact_nodes", "contact_force"});
+    cols.insert(cols.end(), {"free_surface_m", "ejecta_mass_kg" + per, "ejecta_count", "ejecta_max_height_m"});
+  if (case_.options.contact.enabled) cols.insert(cols.end(), {"contact_node_count", "contact_force_N" + per});
   return cols;
 }
 
@@ -143,7 +147,7 @@ io::VtkImage grid_fields(const Simulation& sim) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   double cell_volume = 1.0;
   for (int a = 0; a < g.dim; ++a) cell_volume *= g.cell_size[a];
-  std::vector<double> mass_density(nn), ux(nn), uy(nn);
+  std::vector<double> mass_density(nn), vx(nn), vy(nn);
   img.hidden_points.assign(nn, false);
   for (std::size_t n = 0; n < nn; ++n) {
     const bool empty = !(mass[n] > 0.0);
@@ -152,15 +156,15 @@ io::VtkImage grid_fields(const Simulation& sim) {
     for (std::size_t d = 0; d < 3; ++d) vel[3 * n + d] = empty ? nan : vel[3 * n + d] / mass[n];
     for (std::size_t d = 0; d < 9; ++d) stress[9 * n + d] = empty ? nan : stress[9 * n + d] / mass[n];
     mass_density[n] = mass[n] / cell_volume;
-    ux[n] = vel[3 * n], uy[n] = vel[3 * n + 1];
+    vx[n] = vel[3 * n], vy[n] = vel[3 * n + 1];
   }
   for (std::size_t k = 0; k < ns; ++k)
     img.point_data.push_back({names[k], 1,
                               std::vector<double>(scalars.begin() + static_cast<long>(k * nn),
                                                   scalars.begin() + static_cast<long>((k + 1) * nn)),
                               units[k]});
-  img.point_data.push_back({"ux", 1, std::move(ux), "m/s"});
-  img.point_data.push_back({"uy", 1, std::move(uy), "m/s"});
+  img.point_data.push_back({"vx", 1, std::move(vx), "m/s"});
+  img.point_data.push_back({"vy", 1, std::move(vy), "m/s"});
   img.point_data.push_back({"mass_density", 1, std::move(mass_density), "kg/m3"});
   img.point_data.push_back({"velocity", 3, std::move(vel), "m/s"});
   img.point_data.push_back({"stress", 9, std::move(stress), "Pa"});
@@ -216,11 +220,11 @@ void RunOutput::write_histograms(const Simulation& sim, std::size_t index) {
   const int dim = case_.grid.dim, axis = dim - 1;
   const double lo = case_.diagnostics.histogram_all ? -INFINITY : case_.diagnostics.windows.bottom;
   const double hi = case_.diagnostics.histogram_all ? INFINITY : lo + case_.diagnostics.windows.heights.at(0);
-  const auto names = quantity_names(dim);
+  const auto quantities = window_quantities(dim);
   io::CheckedOutput out(folder_ / "histograms" / fmt::format("hist_{}.csv", index));
   out << fmt::format("# t = {} s, particles with {} <= x[{}] < {} m\n", sim.time(), lo, axis, hi);
   out << "quantity,bin_lo,bin_hi,count,mean,std,skewness,kurtosis\n";
-  for (std::size_t q = 0; q < names.size(); ++q) {
+  for (std::size_t q = 0; q < quantities.size(); ++q) {
     analysis::GridField f;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.x[i][axis] >= lo && p.x[i][axis] < hi) f.values.push_back(quantity(p, i, q, dim));
@@ -231,7 +235,7 @@ void RunOutput::write_histograms(const Simulation& sim, std::size_t index) {
     const analysis::Histogram h = flat ? analysis::histogram(f, 1, m.mean - 0.5, m.mean + 0.5)
                                        : analysis::histogram(f, static_cast<std::size_t>(case_.diagnostics.histogram_bins));
     for (std::size_t b = 0; b < h.counts.size(); ++b)
-      out << fmt::format("{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", names[q], h.edges[b], h.edges[b + 1],
+      out << fmt::format("{}_{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", quantities[q].name, quantities[q].unit, h.edges[b], h.edges[b + 1],
                          h.counts[b], m.mean, m.std, m.skewness, m.kurtosis);
   }
   out.close();

@@ -18,7 +18,7 @@ namespace {
 
 using namespace shockfield;
 
-// v = (a·y, c·y): L = [[0, a], [0, c]], so |∇×u|² = a², (∇·u)² = c², D:D = c² + a²/2. The MPM
+// v = (a·y, c·y): L = [[0, a], [0, c]], so |∇×v|² = a², (∇·v)² = c², D:D = c² + a²/2. The MPM
 // nodal velocities of a linear field on a uniform lattice are exact, and so is L_p inside the body.
 TEST(MpmDiagnostics, GradientSquaresOfALinearField) {
   const auto al = materials::aluminium_seed000();
@@ -33,8 +33,9 @@ TEST(MpmDiagnostics, GradientSquaresOfALinearField) {
   EXPECT_NEAR(w.gradients[0], a * a, 1e-9 * a * a);
   EXPECT_NEAR(w.gradients[1], c * c, 1e-9 * c * c);
   EXPECT_NEAR(w.gradients[2], c * c + 0.5 * a * a, 1e-9 * c * c);
-  const auto names = mpm::quantity_names(2);
-  ASSERT_EQ(names[4], "uy");
+  const auto quantities = mpm::window_quantities(2);
+  ASSERT_EQ(quantities[4].name, "vy");  // a velocity: v, never u (docs/conventions.md)
+  ASSERT_EQ(quantities[4].unit, "m_s");
   EXPECT_NEAR(w.mean[4], c * 200e-6, 1e-9 * std::abs(c) * 200e-6);  // mean of c·y over y in [100, 300] µm
   EXPECT_NEAR(w.std[4], std::abs(c) * 200e-6 / std::sqrt(12.0), 0.01 * std::abs(c) * 200e-6 / std::sqrt(12.0));
   EXPECT_NEAR(w.mean[0], 2700.0, 1e-6);  // density unchanged
@@ -112,14 +113,14 @@ TEST(MpmDiagnostics, StressQuantitiesAlongTheShockAxis) {
     p.state[0].deviatoric.s = s;
     p.state[0].pressure = 2e9;
     p.state[0].viscous_pressure = 0.1e9;
-    const auto names = mpm::quantity_names(dim);
+    const auto quantities = mpm::window_quantities(dim);
     const auto at = [&](const std::string& n) {
-      const auto it = std::find(names.begin(), names.end(), n);
-      EXPECT_NE(it, names.end()) << n;
-      return mpm::quantity(p, 0, static_cast<std::size_t>(it - names.begin()), dim);
+      const auto it = std::find_if(quantities.begin(), quantities.end(), [&](const auto& q) { return q.name == n; });
+      EXPECT_NE(it, quantities.end()) << n;
+      return mpm::quantity(p, 0, static_cast<std::size_t>(it - quantities.begin()), dim);
     };
-    EXPECT_EQ(names.size(), static_cast<std::size_t>(3 + dim + 3));
-    EXPECT_EQ(names[static_cast<std::size_t>(2 + dim)], dim == 2 ? "uy" : "uz");  // velocities keep their columns
+    EXPECT_EQ(quantities.size(), static_cast<std::size_t>(3 + dim + 3));
+    EXPECT_EQ(quantities[static_cast<std::size_t>(2 + dim)].name, dim == 2 ? "vy" : "vz");  // velocities keep their columns
     EXPECT_NEAR(at("longitudinal_stress"), -2.1e9 - 2.0 * y / 3.0, 1.0);
     EXPECT_NEAR(at("longitudinal_deviator"), -2.0 * y / 3.0, 1e-6);
     EXPECT_NEAR(at("von_mises"), y, 1e-6);
