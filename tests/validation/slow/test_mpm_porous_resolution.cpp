@@ -81,8 +81,8 @@ Window run_porous(double cell, const fs::path& dir) {
   mpm::run_case(root, o);
   auto r = row_at(out / "series.csv", 250e-9);
   EXPECT_NEAR(r["time_s"], 250e-9, 3e-9);
-  return {r["bottom_h800um_density_mean"], r["bottom_h800um_pressure_mean"],
-          r["bottom_h800um_temperature_mean"]};
+  return {r["bottom_h800um_density_mean_kg_m3"], r["bottom_h800um_pressure_mean_Pa"],
+          r["bottom_h800um_temperature_mean_K"]};
 }
 
 }  // namespace
