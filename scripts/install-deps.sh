@@ -6,7 +6,7 @@ packages=(
   build-essential cmake pkg-config git
   libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev libfftw3-dev libhdf5-dev libomp-dev
   libgtest-dev libgmock-dev libbenchmark-dev libnanoflann-dev libcgal-dev zlib1g-dev
-  lammps python3-numpy python3-scipy python3-skimage python3-matplotlib python3-ase python3-vtk9 python3-h5py
+  lammps python3-numpy python3-scipy python3-skimage python3-matplotlib python3-ase python3-vtk9 python3-h5py python3-mdanalysis
   pybind11-dev python3-pybind11 python3-dev
   libopenmpi-dev openmpi-bin
 )

@@ -3,32 +3,12 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/io/hdf5_handle.hpp"
 
 namespace shockfield::io {
 namespace {
 
-// Closes an HDF5 identifier when it goes out of scope; `ok()` says whether it was created.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  bool ok() const { return id_ >= 0; }
-  /// Closes now and reports whether HDF5 did.
-  bool close() {
-    const herr_t status = close_(id_);
-    id_ = -1;
-    return status >= 0;
-  }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+using Handle = Hdf5Handle;
 
 void write_attribute(hid_t object, const std::string& path, const std::string& name, hid_t type, const void* value);
 void write_string_attribute(hid_t object, const std::string& path, const std::string& name, const std::string& value);

@@ -228,6 +228,8 @@ MdCase read_md_case(const Config& root) {
     out.dump_full_precision = o->get_bool_or("dump_full_precision", false);
     out.thermo_full_precision = o->get_bool_or("thermo_full_precision", false);
     out.dump_time = o->get_bool_or("dump_time", false);
+    out.h5md_every = o->get_int_or("h5md_every", 0, Range::non_negative());
+    out.h5md_forces = o->get_bool_or("h5md_forces", false);
     out.profile_every = o->get_int_or("profile_every", 0, Range::non_negative());
     out.profile_axis = read_axis(*o, "profile_axis", "z");
     out.profile_bin_width = o->get_double_or("profile_bin_width", 5.0, Range::positive());

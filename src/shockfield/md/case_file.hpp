@@ -70,6 +70,8 @@ struct OutputSpec {
   bool thermo_full_precision = false;  ///< thermo.csv values that read back bit for bit
   bool dump_time = false;              ///< ITEM: TIME / Time= (LAMMPS dump_modify time yes)
   int dump_pad = 0;                    ///< digits of the step in frame names (dump_modify pad)
+  long long h5md_every = 0;            ///< trajectory.h5md frame interval (0: none)
+  bool h5md_forces = false;            ///< the H5MD frames also carry the forces (eV/Å)
   long long profile_every = 0;
   int profile_axis = 2;
   double profile_bin_width = 5.0;  ///< Å

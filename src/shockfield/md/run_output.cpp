@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 
 #include "shockfield/analysis/atoms/cluster_selection.hpp"
 #include "shockfield/analysis/atoms/structure_columns.hpp"
+#include "shockfield/core/provenance.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/extxyz.hpp"
@@ -74,7 +77,7 @@ bool is_computed(const std::string& f) {
 }  // namespace
 
 RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::optional<std::int64_t> resume_step)
-    : folder_(folder), profiles_file_(folder / "profiles.csv"), spec_(spec) {
+    : folder_(folder), profiles_file_(folder / "profiles.csv"), spec_(spec), resume_step_(resume_step) {
   const double* keep = nullptr;
   double keep_value = 0;
   if (resume_step) {
@@ -132,6 +135,35 @@ void RunOutput::write(const Simulation& sim, bool force_thermo) {
         clusters_.row(row);
   }
   if (dump_due) write_dump(sim, spec_.analysis.dump_columns ? &*analysed : nullptr);
+  if (spec_.h5md_every > 0 && sim.step % spec_.h5md_every == 0) write_h5md(sim);
+}
+
+void RunOutput::write_h5md(const Simulation& sim) {
+  const Atoms& a = sim.atoms;
+  std::vector<std::size_t> order(a.nlocal);  // the file's particle order: by id
+  for (std::size_t i = 0; i < a.nlocal; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return a.id[i] < a.id[j]; });
+  if (!h5md_) {
+    io::H5mdLayout layout;
+    layout.particles = a.nlocal;
+    for (int d = 0; d < 3; ++d) layout.boundary[d] = sim.box.periodic(d) ? "periodic" : "none";
+    layout.elements = {{"position", "Angstrom"}, {"velocity", "Angstrom ps-1"}};
+    // eV/Å is not among MDAnalysis's force units: it reads such a file with convert_units=False.
+    if (spec_.h5md_forces) layout.elements.push_back({"force", "eV Angstrom-1"});
+    for (std::size_t i : order) layout.species.push_back(a.type[i] + 1), layout.ids.push_back(a.id[i]);
+    layout.creator_version = shockfield_version() + " (" + shockfield_git_commit() + ")";
+    h5md_.emplace(folder_ / "trajectory.h5md", layout, resume_step_);
+  }
+  std::vector<std::vector<double>> values(spec_.h5md_forces ? 3 : 2);
+  for (auto& v : values) v.reserve(3 * order.size());
+  for (std::size_t i : order)
+    for (int d = 0; d < 3; ++d) {
+      values[0].push_back(a.x[i][d]);
+      values[1].push_back(a.v[i][d]);
+      if (spec_.h5md_forces) values[2].push_back(a.f[i][d]);
+    }
+  const Vec3 l = sim.box.length();
+  h5md_->append(sim.step, sim.time, {l.x(), l.y(), l.z()}, values);
 }
 
 void RunOutput::write_thermo(const Simulation& sim) {

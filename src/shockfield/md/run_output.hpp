@@ -3,11 +3,14 @@
 // profiles.csv (binned profiles every profile_every steps), structures.csv (the [analysis]
 // table's structure fractions every `every` steps), dumps/ (one file per frame, LAMMPS
 // text dump or extended XYZ, so a resumed run simply removes frames past its checkpoint; OVITO
-// opens the series as dumps/dump.*.lammpstrj). Rows and frames are flushed when written.
+// opens the series as dumps/dump.*.lammpstrj), trajectory.h5md (H5MD, every h5md_every steps, atoms in
+// id order: MDAnalysis and VMD read it; a resumed run cuts it back to its checkpoint). Rows and
+// frames are flushed when written.
 #include <filesystem>
 #include <optional>
 
 #include "shockfield/io/csv_writer.hpp"
+#include "shockfield/io/h5md_writer.hpp"
 #include "shockfield/md/diagnostics/structure.hpp"
 #include "shockfield/md/case_file.hpp"
 #include "shockfield/md/simulation.hpp"
@@ -32,11 +35,14 @@ class RunOutput {
   /// `analysed`: the [analysis] result of this step, appended as columns (dump_columns), or null.
   void write_dump(const Simulation& sim, const analysis::atoms::StructureAnalysisResult* analysed) const;
   bool dump_needs_per_atom() const;
+  void write_h5md(const Simulation& sim);
 
   std::filesystem::path folder_, profiles_file_;
   OutputSpec spec_;
   io::CsvWriter thermo_, profiles_, structures_, clusters_;
   std::optional<StructureDiagnostic> structure_;  ///< the [analysis] table, when the case has one
+  std::optional<io::H5mdWriter> h5md_;            ///< opened at its first frame (the atom count known)
+  std::optional<std::int64_t> resume_step_;
   std::int64_t last_thermo_step_ = -1, last_frame_step_ = -1;
 };
 
