@@ -57,13 +57,23 @@ def branch_runs(x, y, crack, column, gap):
     return 1 + int(np.count_nonzero(np.diff(ys) > gap))
 
 
-def asymmetry(d):
-    """Largest |D − D_mirror| and the largest mirror defects of v_x and v_y relative to max |v|."""
+def mirror_of(d):
+    """Index of each point's mirror image about the plate's mid-line (the profiles hold reference
+    positions, in the same order at every frame)."""
     x, y = d["x_m"], d["y_m"]
-    mid = 0.5 * (y.min() + y.max())
     grid = max(np.min(np.diff(np.unique(y))), 1e-300)
-    at = {(round(a / grid), round(b / grid)): i for i, (a, b) in enumerate(zip(x, y))}
-    mirror = np.array([at[(round(a / grid), round((2.0 * mid - b) / grid))] for a, b in zip(x, y)])
+    ix, iy = np.rint(x / grid).astype(np.int64), np.rint(y / grid).astype(np.int64)
+    code = ix * (1 << 32) + iy
+    order = np.argsort(code)
+    mirrored = ix * (1 << 32) + (iy.min() + iy.max() - iy)
+    at = np.searchsorted(code[order], mirrored)
+    if np.any(at >= code.size) or np.any(code[order][np.minimum(at, code.size - 1)] != mirrored):
+        sys.exit("the points are not mirror-symmetric about the plate's mid-line")
+    return order[at]
+
+
+def asymmetry(d, mirror):
+    """Largest |D − D_mirror| and the largest mirror defects of v_x and v_y relative to max |v|."""
     speed = max(np.abs(d["vx_m_s"]).max(), np.abs(d["vy_m_s"]).max(), 1e-300)
     return (np.abs(d["damage"] - d["damage"][mirror]).max(),
             np.abs(d["vx_m_s"] - d["vx_m_s"][mirror]).max() / speed,
@@ -74,10 +84,11 @@ class Crack:
     """The crack of a run: tip against time, speed while it runs, first branching column, last frame."""
 
     def __init__(self, run, notch, horizon, symmetry=False):
-        times, tips, self.asymmetry = [], [], np.zeros(3)
+        times, tips, self.asymmetry, mirror = [], [], np.zeros(3), None
         for t, d in frames(run):
             if symmetry:
-                self.asymmetry = np.maximum(self.asymmetry, asymmetry(d))
+                mirror = mirror_of(d) if mirror is None else mirror
+                self.asymmetry = np.maximum(self.asymmetry, asymmetry(d, mirror))
             crack = d["damage"] >= CRACK_DAMAGE
             times.append(t), tips.append(d["x_m"][crack].max() if crack.any() else 0.0)
             self.last = d
