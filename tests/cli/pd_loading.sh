@@ -13,7 +13,9 @@
 # file; bad formulas, files, displacements and ramps are refused before the run. The bar and the
 # plate as point clouds from files (points_file) run bitwise as their lattices; bad clouds
 # (coinciding or isolated points, counts beside points_file, a bad line) and regions selecting no
-# point of a cloud are refused.
+# point of a cloud are refused. A lattice moved by [body] origin runs as the cloud of its points;
+# two point files ([[body.points]]) run as two bodies; a region held in x only is reported and
+# bad component lists are refused.
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -192,6 +194,23 @@ head -n 50 "$WORK/bar_velocity.csv" > "$WORK/short.csv"
 expect_error "${bar_text/"$formula"/velocity_file = \"$WORK/short.csv\"}" "region[1].velocity_file" \
   "49 velocity rows for the 100 points"
 echo "ok: bad formulas, velocity files, displacements and ramps refused"
+# A region held in x only (components): reported, its points at v_x = 20 m/s (the physics of the
+# free components: tests/unit/pd/test_regions.cpp); bad component lists refused.
+held_x="${plate/"prescribed_velocity = [20.0, 0.0]"/prescribed_velocity = [20.0, 0.0]
+components = [\"x\"]}"
+echo "$held_x" > "$WORK/held_x.toml"
+"$SF" run "$WORK/held_x.toml" --output "$WORK/held_x" -q > /dev/null
+grep -q "region 0: 60 points held at (20, 0, 0) m/s in x only (the other components free)" "$WORK/held_x/log.txt" ||
+  fail "the held component is not reported: $(grep "region 0" "$WORK/held_x/log.txt")"
+awk -F, 'NR > 1 && $1 <= 0.0025 { if ($4 != 4e-05 || $5 != 20) bad = bad " " $1 "," $2; n++ }
+         END { if (bad != "" || n != 60) { print n " points, held wrongly:" bad; exit 1 } }' \
+  "$WORK/held_x/profiles/profile_0.csv" || fail "the edge held in x did not move at 20 m/s"
+expect_error "${held_x/"[\"x\"]"/[\"z\"]}" "region[0].components" "'z' (expected components of the 2D body: x, y)"
+expect_error "${held_x/"[\"x\"]"/[\"x\", \"x\"]}" "region[0].components" "'x' given twice"
+expect_error "${held_x/"[\"x\"]"/[]}" "region[0].components" "an empty list"
+expect_error "${plate/"velocity = [0.0, -5.0]"/velocity = [0.0, -5.0]
+components = [\"y\"]}" "region[1].components" "only a prescribed_velocity or prescribed_displacement"
+echo "ok: a region held in x only; bad component lists refused"
 
 # Point clouds from files: the bar's and the plate's lattice points (x = ΔX·i, volume ΔX^dim as
 # lattice_cloud makes them; Python's float arithmetic and pow are the same IEEE operations) give
@@ -213,6 +232,67 @@ same_files "$WORK/plate" "$WORK/plate_cloud" series.csv profiles/profile_0.csv
 grep -q "pre-cracks: 1 crack(s) cut 169 bonds (broken from step 0)" "$WORK/plate_cloud/log.txt" ||
   fail "the cloud plate's pre-crack differs: $(grep pre-cracks "$WORK/plate_cloud/log.txt")"
 echo "ok: bar and plate from points_file run bitwise as their lattices"
+# [body] origin: the plate's lattice moved by (0.25, -0.5) mm runs bitwise as a cloud of the moved
+# points (origin + ΔX·i, the same IEEE operations), and origin beside points_file is refused.
+/usr/bin/python3 -c "
+for j in range(20):
+    for i in range(40):
+        print(f'{0.25e-3 + 1e-3 * i!r} {-0.5e-3 + 1e-3 * j!r} 0 {pow(1e-3, 2)!r}')" > "$WORK/moved_cloud.txt"
+echo "${plate/"counts = [40, 20]"/counts = [40, 20]
+origin = [0.25e-3, -0.5e-3]}" > "$WORK/moved_lattice.toml"
+echo "${plate/"counts = [40, 20]"/points_file = \"$WORK/moved_cloud.txt\"}" > "$WORK/moved_cloud.toml"
+"$SF" run "$WORK/moved_lattice.toml" --output "$WORK/moved_lattice" -q > /dev/null
+"$SF" run "$WORK/moved_cloud.toml" --output "$WORK/moved_cloud" -q > /dev/null
+same_files "$WORK/moved_lattice" "$WORK/moved_cloud" series.csv profiles/profile_0.csv
+head -2 "$WORK/moved_lattice/profiles/profile_0.csv" | grep -q "^0.00025,-0.0005," || fail "the first point is not at the origin"
+moved_cloud=$(cat "$WORK/moved_cloud.toml")
+expect_error "${moved_cloud/dim = 2/dim = 2
+origin = [0.0, 0.0]}" "body.origin" "not both"
+echo "ok: a lattice moved by origin runs bitwise as the cloud of its points"
+# Several point files, one body each ([[body.points]]): the plate without the disc and the disc as
+# two files (no region makes the disc separate) give the lattice run with the disc a separate
+# region. The points come in another order, so bond forces are summed in another order: the same
+# to round-off (1e-9 of the largest value of each column; damage exactly).
+/usr/bin/python3 -c "
+plate, disc = open('$WORK/plate_part.txt', 'w'), open('$WORK/disc_part.txt', 'w')
+for j in range(20):
+    for i in range(40):
+        x, y = 1e-3 * i, 1e-3 * j
+        inside = (x - 33e-3) ** 2 + (y - 15e-3) ** 2 <= 2.5e-3 ** 2
+        print(f'{x!r} {y!r} 0 {pow(1e-3, 2)!r}', file=disc if inside else plate)"
+parts="${plate/"separate = true
+"/}"
+echo "${parts/"counts = [40, 20]"/}
+[[body.points]]
+file = \"$WORK/plate_part.txt\"
+
+[[body.points]]
+file = \"$WORK/disc_part.txt\"" > "$WORK/parts.toml"
+"$SF" run "$WORK/parts.toml" --output "$WORK/parts" -q > /dev/null
+grep -q "region 1: 21 points starting at (0, -5, 0) m/s$" "$WORK/parts/log.txt" || fail "the disc's region: $(grep "region 1" "$WORK/parts/log.txt")"
+/usr/bin/python3 - "$WORK/plate/profiles/profile_0.csv" "$WORK/parts/profiles/profile_0.csv" <<'PY' || fail "the two-file plate differs from the lattice plate with a separate disc"
+import sys
+import numpy as np
+a, b = (np.genfromtxt(f, delimiter=",", names=True) for f in sys.argv[1:])
+a, b = (d[np.lexsort((d["y_m"], d["x_m"]))] for d in (a, b))
+assert (a["x_m"] == b["x_m"]).all() and (a["y_m"] == b["y_m"]).all(), "different points"
+assert (a["damage"] == b["damage"]).all(), "different damage"
+for column in ("ux_m", "vx_m_s", "vy_m_s"):
+    gap = np.abs(a[column] - b[column]).max() / np.abs(a[column]).max()
+    assert gap <= 1e-9, f"{column} differs by {gap:.3g} of its largest value"
+PY
+two_bodies=$(cat "$WORK/parts.toml")
+expect_error "${two_bodies/"dim = 2"/dim = 2
+points_file = \"$WORK/plate_part.txt\"}" "body.points" "not both"
+j2_parts="${two_bodies/model = \"lps\"/model = \"j2\"}"
+j2_parts="${j2_parts/"bulk = 158e9
+shear = 73e9
+critical_stretch = 0.01"/young = 190e9
+poisson = 0.3
+yield_stress = 1e9}"
+expect_error "$j2_parts" "body.points" "short-range contact force"
+expect_error "${two_bodies/disc_part.txt/no_such_part.txt}" "body.points[1].file" "no_such_part.txt"
+echo "ok: two point files run as two bodies"
 cloud_bar=$(cat "$WORK/bar_cloud.toml")
 expect_error "${cloud_bar/dim = 1/dim = 1
 counts = [400]}" "body.counts" "not both"

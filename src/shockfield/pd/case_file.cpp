@@ -37,24 +37,47 @@ void check_lattice(const Config& t, const BodySpec& b) {
                                          memory_text(pd_bytes(0.0, bonds)), kMaxBonds));
 }
 
-// A body read from `points_file` (pd::read_cloud: "x y z volume" lines), with the lattice's size
-// limits: at most kMaxParticles points, and bonds estimated before the families are built as
-// N · (the horizon's length, area or volume) / (the mean point volume), the count of a point
-// whose family is whole.
-void read_points_file(const Config& t, BodySpec& b) {
-  if (t.has("counts"))
-    t.fail("counts", "expected either counts (a lattice) or points_file (a point cloud), not both");
+// The points of one file (pd::read_cloud: "x y z volume" lines) under the table's key.
+PointCloud read_cloud_file(const Config& t, const char* key, const BodySpec& b) {
+  const std::filesystem::path file = t.get_input_file(key);
+  try {
+    return read_cloud(file, b.dim, b.spacing);
+  } catch (const InputError& e) {
+    t.fail(key, e.what());
+  }
+}
+
+// A body read from `points_file`, or several bodies from the `file` of each [[body.points]] table
+// (their points in table order, each file a body of its own), with the lattice's size limits: at
+// most kMaxParticles points, and bonds estimated before the families are built as N · (the
+// horizon's length, area or volume) / (the mean point volume), the count of a point whose family
+// is whole.
+void read_points_files(const Config& t, BodySpec& b) {
+  for (const char* key : {"counts", "origin"})
+    if (t.has(key))
+      t.fail(key, "a key of a lattice body; expected either counts (and origin) or points_file (a point cloud), "
+                  "not both");
+  const std::vector<Config> parts = t.tables("points");
+  if (t.has("points_file") && !parts.empty())
+    t.fail("points", "expected either points_file (one body) or [[body.points]] tables (a body per file), not both");
   if (!std::isfinite(b.spacing * b.horizon_factor))
     t.fail("spacing", fmt::format("the horizon {}·{} m is not finite", b.horizon_factor, b.spacing));
-  const std::filesystem::path file = t.get_input_file("points_file");
-  try {
-    b.cloud = read_cloud(file, b.dim, b.spacing);
-  } catch (const InputError& e) {
-    t.fail("points_file", e.what());
+  if (parts.empty()) {
+    b.cloud = read_cloud_file(t, "points_file", b);
+  } else {
+    b.cloud = PointCloud{b.dim, b.spacing, {}, {}};
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      const PointCloud part = read_cloud_file(parts[k], "file", b);
+      b.cloud->x.insert(b.cloud->x.end(), part.x.begin(), part.x.end());
+      b.cloud->volume.insert(b.cloud->volume.end(), part.volume.begin(), part.volume.end());
+      b.part.insert(b.part.end(), part.size(), static_cast<int>(k));
+      if (b.cloud->size() > kMaxParticles) break;  // refused below
+    }
   }
+  const std::string files = parts.empty() ? "points_file" : "points";
   const double points = static_cast<double>(b.cloud->size());
   if (points > kMaxParticles)
-    t.fail("points_file", fmt::format("{:.3g} points; expected at most {:.0e}", points, kMaxParticles));
+    t.fail(files, fmt::format("{:.3g} points; expected at most {:.0e}", points, kMaxParticles));
   double volume = 0.0;
   for (double v : b.cloud->volume) volume += v;
   const double reach = b.horizon(), ball = b.dim == 1 ? 2.0 * reach
@@ -64,16 +87,20 @@ void read_points_file(const Config& t, BodySpec& b) {
   if (!(bonds <= kMaxBonds))
     t.fail("horizon_factor", fmt::format("{}: the {:.3g} points of {} would have ~{:.3g} bonds; expected a horizon "
                                          "giving at most {:.0e} bonds",
-                                         b.horizon_factor, points, file.string(), bonds, kMaxBonds));
+                                         b.horizon_factor, points, files, bonds, kMaxBonds));
 }
 
 BodySpec read_body(const Config& t) {
   BodySpec b;
   b.dim = static_cast<int>(t.get_int("dim", Range::closed(1, 3)));
-  const bool from_file = t.has("points_file");
+  const bool from_file = t.has("points_file") || t.has("points");
   if (!from_file) {
     const auto counts = t.get_ints("counts", static_cast<std::size_t>(b.dim), Range::closed(1, 1e7));
     for (int d = 0; d < b.dim; ++d) b.counts[static_cast<std::size_t>(d)] = static_cast<int>(counts[static_cast<std::size_t>(d)]);
+    if (t.has("origin")) {
+      const auto origin = t.get_doubles("origin", static_cast<std::size_t>(b.dim));
+      for (int d = 0; d < b.dim; ++d) b.origin[d] = origin[static_cast<std::size_t>(d)];
+    }
   }
   b.spacing = t.get_double("spacing", Range::positive());
   b.horizon_factor = t.get_double_or("horizon_factor", 3.0, Range::positive());
@@ -82,7 +109,7 @@ BodySpec read_body(const Config& t) {
                                          "neighbour on the lattice (expected >= 1)",
                                          b.horizon_factor, b.horizon_factor));
   if (from_file)
-    read_points_file(t, b);
+    read_points_files(t, b);
   else
     check_lattice(t, b);
   b.influence = Influence::from_name(t.get_choice_or("influence", Influence::names(), "constant"));
@@ -96,15 +123,16 @@ Family checked_cloud_family(const Config& t, const BodySpec& b) {
   const PointCloud& cloud = *b.cloud;
   const Family family = build_family(cloud, b.horizon(), b.correction);
   const auto at = [&](std::size_t i) { return fmt::format("({}, {}, {}) m", cloud.x[i][0], cloud.x[i][1], cloud.x[i][2]); };
+  const char* files = b.part.empty() ? "points_file" : "points";  // points numbered through the files in order
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (family.begin(i) == family.end(i))
-      t.fail("horizon_factor", fmt::format("point {} of points_file at {} has no neighbour within the horizon δ = {}·ΔX "
+      t.fail("horizon_factor", fmt::format("point {} of {} at {} has no neighbour within the horizon δ = {}·ΔX "
                                            "= {} m: the horizon is smaller than the spacing of the points there "
                                            "(expected a larger horizon_factor or spacing, or no isolated point)",
-                                           i, at(i), b.horizon_factor, b.horizon()));
+                                           i, files, at(i), b.horizon_factor, b.horizon()));
     for (int k = family.begin(i); k < family.end(i); ++k)
       if (family.length[static_cast<std::size_t>(k)] < 1e-6 * b.spacing)
-        t.fail("points_file", fmt::format("points {} and {} at {} overlap (expected distinct points, at least 1e-6 "
+        t.fail(files, fmt::format("points {} and {} at {} overlap (expected distinct points, at least 1e-6 "
                                           "of the spacing apart)",
                                           i, family.neighbor[static_cast<std::size_t>(k)], at(i)));
   }
@@ -215,6 +243,9 @@ PdCase read_pd_case(const Config& root) {
                          "model = \"pmb\" and \"lps\" have (expected one of them, or no separate body)");
   }
   check_bodies_apart(regions, c.regions, points);
+  if (!c.body.part.empty() && c.body.part.back() > 0 && !bond_model)
+    root.table("body").fail("points", "bodies from several files touch only through the short-range contact force, "
+                                      "which model = \"pmb\" and \"lps\" have (expected one of them, or one file)");
   if (const auto loading = root.optional_table("loading")) {
     loading->get_choice_or("type", {"impact"}, "impact");
     c.impact_speed = loading->get_double("speed", Range::positive());
@@ -226,7 +257,7 @@ PdCase read_pd_case(const Config& root) {
     const bool cuts = cloud_family ? std::ranges::any_of(cut_bonds(*c.body.cloud, *cloud_family, {c.cracks.back()}),
                                                          [](unsigned char cut) { return cut != 0; })
                                    : cuts_a_lattice_bond(c.cracks.back(), c.body.dim, c.body.counts, c.body.spacing,
-                                                         c.body.horizon());
+                                                         c.body.horizon(), c.body.origin);
     if (!cuts)
       t.fail(c.body.dim == 2 ? "from" : "vertices",
              fmt::format("the crack cuts no bond of the body ({}): it lies outside the body or on its surface",

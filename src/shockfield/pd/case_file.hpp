@@ -26,15 +26,20 @@ namespace shockfield::pd {
 struct BodySpec {
   int dim = 1;
   std::array<int, 3> counts{1, 1, 1};  ///< points along x, y, z (1 beyond dim; all 1 for a cloud)
-  /// The points of `points_file` (positions and volumes), else none: the lattice of `counts`.
+  /// The points of `points_file` or of the [[body.points]] files in order (positions and volumes),
+  /// else none: the lattice of `counts`.
   std::optional<PointCloud> cloud;
+  /// Per point of a cloud from [[body.points]]: the index of its file, a body of its own (no bonds
+  /// to the other files' points); empty for one body.
+  std::vector<int> part;
   double spacing = 0.0;                ///< ΔX [m]
+  Vec3 origin = Vec3::Zero();          ///< the lattice's first point [m] (`origin`; a cloud has none)
   double horizon_factor = 3.0;         ///< m of δ = m·ΔX
   Influence influence;
   VolumeCorrection correction = VolumeCorrection::linear;
   double horizon() const { return horizon_factor * spacing; }
   /// The body's points as the case reader walks them (regions.hpp).
-  BodyPoints points() const { return {counts, spacing, cloud ? &*cloud : nullptr}; }
+  BodyPoints points() const { return {counts, spacing, cloud ? &*cloud : nullptr, origin}; }
 };
 
 struct SolverSpec {

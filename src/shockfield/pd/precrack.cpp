@@ -111,17 +111,19 @@ Crack read_crack(const Config& t, int dim) {
   return Crack(dim, std::move(v));
 }
 
-bool cuts_a_lattice_bond(const Crack& crack, int dim, const std::array<int, 3>& counts, double spacing, double horizon) {
+bool cuts_a_lattice_bond(const Crack& crack, int dim, const std::array<int, 3>& counts, double spacing, double horizon,
+                         const Vec3& origin) {
   const int reach = static_cast<int>(std::floor(horizon / spacing * (1.0 + 1e-9)));
   const double cut2 = horizon * horizon * (1.0 + 1e-12);  // build_family's cut-off
   std::array<int, 3> first{0, 0, 0}, last{0, 0, 0}, span{0, 0, 0};
   for (int d = 0; d < dim; ++d) {
-    const double lo = std::floor((crack.lo()[d] - horizon) / spacing), hi = std::ceil((crack.hi()[d] + horizon) / spacing);
+    const double lo = std::floor((crack.lo()[d] - origin[d] - horizon) / spacing),
+                 hi = std::ceil((crack.hi()[d] - origin[d] + horizon) / spacing);
     first[d] = static_cast<int>(std::clamp(lo, 0.0, counts[d] - 1.0));
     last[d] = static_cast<int>(std::clamp(hi, 0.0, counts[d] - 1.0));
     span[d] = reach;
   }
-  const auto at = [spacing](int i, int j, int k) { return Vec3(spacing * Vec3(i, j, k)); };
+  const auto at = [&](int i, int j, int k) { return Vec3(origin + spacing * Vec3(i, j, k)); };
   for (int k = first[2]; k <= last[2]; ++k)
     for (int j = first[1]; j <= last[1]; ++j)
       for (int i = first[0]; i <= last[0]; ++i) {

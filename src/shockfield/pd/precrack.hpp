@@ -50,11 +50,12 @@ class Crack {
 /// on a line). A 1D body has no crack.
 Crack read_crack(const Config& t, int dim);
 
-/// Whether the crack cuts some bond of the lattice of `counts` points `spacing` apart from the
-/// origin (as lattice_cloud places them) with horizon δ (build_family's rule), found without
+/// Whether the crack cuts some bond of the lattice of `counts` points `spacing` apart from
+/// `origin` (as lattice_cloud places them) with horizon δ (build_family's rule), found without
 /// building the body: only the points within δ of the crack's box and of its line or plane are
 /// visited.
-bool cuts_a_lattice_bond(const Crack& crack, int dim, const std::array<int, 3>& counts, double spacing, double horizon);
+bool cuts_a_lattice_bond(const Crack& crack, int dim, const std::array<int, 3>& counts, double spacing, double horizon,
+                         const Vec3& origin = Vec3::Zero());
 
 /// Per bond of the family: 1 when some crack cuts it (both stored copies of a bond).
 std::vector<unsigned char> cut_bonds(const PointCloud& cloud, const Family& family, const std::vector<Crack>& cracks);

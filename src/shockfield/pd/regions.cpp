@@ -1,7 +1,9 @@
 #include "shockfield/pd/regions.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <utility>
 
 #include "shockfield/core/error.hpp"
@@ -24,6 +26,26 @@ Vec3 read_vector(const Config& t, const char* key, int dim) {
   Vec3 r = Vec3::Zero();
   for (int d = 0; d < dim; ++d) r[d] = v[static_cast<std::size_t>(d)];
   return r;
+}
+
+// `components` of a held region: distinct names among the body's axes x, y (, z); all when absent.
+std::array<bool, 3> read_components(const Config& t, int dim) {
+  std::array<bool, 3> held{true, true, true};
+  if (!t.has("components")) return held;
+  const std::vector<std::string> axes{"x", "y", "z"};
+  const std::vector<std::string> names = t.get_strings("components");
+  if (names.empty()) t.fail("components", "an empty list (expected the held components, e.g. [\"x\"])");
+  held = {false, false, false};
+  for (const std::string& name : names) {
+    const auto at = std::find(axes.begin(), axes.begin() + dim, name);
+    if (at == axes.begin() + dim)
+      t.fail("components", fmt::format("'{}' (expected components of the {}D body: {})", name, dim,
+                                       fmt::join(axes.begin(), axes.begin() + dim, ", ")));
+    bool& h = held[static_cast<std::size_t>(at - axes.begin())];
+    if (h) t.fail("components", fmt::format("'{}' given twice", name));
+    h = true;
+  }
+  return held;
 }
 
 // `dim` formulas, each compiled and finite at every selected point.
@@ -58,8 +80,9 @@ std::string BodyPoints::extent() const {
     return fmt::format("{} points within ({}, {}, {}) to ({}, {}, {}) m", cloud->size(), lo[0], lo[1], lo[2], hi[0],
                        hi[1], hi[2]);
   }
-  return fmt::format("points from (0, 0, 0) to ({}, {}, {}) m", (counts[0] - 1) * spacing,
-                     (counts[1] - 1) * spacing, (counts[2] - 1) * spacing);
+  const Vec3 last = origin + spacing * Vec3(counts[0] - 1, counts[1] - 1, counts[2] - 1);
+  return fmt::format("points from ({}, {}, {}) to ({}, {}, {}) m", origin[0], origin[1], origin[2], last[0], last[1],
+                     last[2]);
 }
 
 LoadRegion read_load_region(const Config& t, int dim, const BodyPoints& body) {
@@ -92,6 +115,11 @@ LoadRegion read_load_region(const Config& t, int dim, const BodyPoints& body) {
   } else if (t.has("ramp_time")) {
     t.fail("ramp_time", "only a prescribed_displacement is ramped (expected no ramp_time here)");
   }
+  if (r.held())
+    r.held_components = read_components(t, dim);
+  else if (t.has("components"))
+    t.fail("components", "only a prescribed_velocity or prescribed_displacement holds components (expected no "
+                         "components here)");
   if (r.loading == Loading::velocity_formula) r.formula = read_formula(t, dim, selected);
   if (r.loading == Loading::velocity_file) {
     const std::filesystem::path file = t.get_input_file("velocity_file");
@@ -122,11 +150,12 @@ void check_bodies_apart(const std::vector<Config>& tables, const std::vector<Loa
 }
 
 std::vector<unsigned char> bonds_between_bodies(const PointCloud& cloud, const Family& family,
-                                                const std::vector<LoadRegion>& regions) {
-  std::vector<int> body(cloud.size(), -1);
+                                                const std::vector<LoadRegion>& regions, const std::vector<int>& part) {
+  // Files' bodies are 0, 1, ...; separate region k is −2 − k (the rest of a single body, −1).
+  std::vector<int> body = part.empty() ? std::vector<int>(cloud.size(), -1) : part;
   for (std::size_t k = 0; k < regions.size(); ++k)
     if (regions[k].separate)
-      for (std::size_t i : points_in(regions[k].shape, cloud)) body[i] = static_cast<int>(k);
+      for (std::size_t i : points_in(regions[k].shape, cloud)) body[i] = -2 - static_cast<int>(k);
   std::vector<unsigned char> between(family.bonds(), 0);
   for (std::size_t i = 0; i < cloud.size(); ++i)
     for (int b = family.begin(i); b < family.end(i); ++b)
@@ -141,6 +170,14 @@ std::vector<std::size_t> points_in(const geometry::Region& region, const PointCl
     if (region.match(cloud.x[i])) points.push_back(i);
   return points;
 }
+
+namespace {
+// Sets the held components of `value` to those of `to` (a free component keeps its value).
+void hold(Vec3& value, const Vec3& to, const LoadRegion& r) {
+  for (int d = 0; d < 3; ++d)
+    if (r.held_components[static_cast<std::size_t>(d)]) value[d] = to[d];
+}
+}  // namespace
 
 void apply_regions(Simulation& sim, const std::vector<LoadRegion>& regions, bool initial) {
   const PointCloud& cloud = sim.cloud();
@@ -178,7 +215,7 @@ void apply_regions(Simulation& sim, const std::vector<LoadRegion>& regions, bool
     held.emplace_back(i, holder[i]);
     if (holder[i]->loading == Loading::prescribed_displacement)
       displaced.emplace_back(i, holder[i]);
-    if (initial) sim.velocities()[i] = holder[i]->held_velocity(0.0);
+    if (initial) hold(sim.velocities()[i], holder[i]->held_velocity(0.0), *holder[i]);
   }
   if (held.empty()) return;
   // The regions outlive the simulation's run (the case holds them), so the hooks keep pointers.
@@ -186,12 +223,12 @@ void apply_regions(Simulation& sim, const std::vector<LoadRegion>& regions, bool
     sim.add_hook(Simulation::Stage::before_force,
                  [displaced = std::move(displaced)](Simulation& s) {
                    for (const auto& [i, r] : displaced)
-                     s.positions()[i] = s.cloud().x[i] + r->displacement_at(s.time());
+                     hold(s.positions()[i], Vec3(s.cloud().x[i] + r->displacement_at(s.time())), *r);
                  });
   sim.add_hook(Simulation::Stage::after_force, [held = std::move(held)](Simulation& s) {
     for (const auto& [i, r] : held) {
-      s.force_density()[i] = Vec3::Zero();
-      s.velocities()[i] = r->held_velocity(s.time());
+      hold(s.force_density()[i], Vec3::Zero(), *r);
+      hold(s.velocities()[i], r->held_velocity(s.time()), *r);
     }
   });
 }
@@ -223,6 +260,12 @@ std::string describe(const LoadRegion& r, std::size_t count) {
                                              vector(r.displacement), r.ramp_time)
                                : fmt::format("held displaced by {} m", vector(r.displacement));
       break;
+  }
+  if (r.held() && r.held_components != std::array<bool, 3>{true, true, true}) {
+    std::string axes;
+    for (int d = 0; d < 3; ++d)
+      if (r.held_components[static_cast<std::size_t>(d)]) axes += "xyz"[d];
+    what += fmt::format(" in {} only (the other components free)", axes);
   }
   if (r.body_force != Vec3::Zero())
     what += fmt::format("{}with the body force {} N/m³", what.empty() ? "" : ", ", vector(r.body_force));

@@ -13,7 +13,9 @@
 // T = 0) sets its position y = x + u(t_{n+1}) after each drift, before the forces are evaluated
 // (exact at every step), and its velocity to u̇ = U/T while t < T, then 0. The force the body exerts
 // on a held point is the reaction of the boundary, which the total momentum of the body then
-// follows (dP/dt = −Σ_held V_i L_i).
+// follows (dP/dt = −Σ_held V_i L_i). `components` holds only some components (a roller: x held,
+// y free): the rest of the point's force, velocity and position evolve with the body, as LAMMPS's
+// `fix setforce NULL 0.0 NULL` and `velocity set` with NULL components do.
 //
 // A `body_force` b [N/m³] is added to the force density of the region's points after every
 // force evaluation, ρü = L + b (Liu et al. 2025, eq. 1), before held points drop theirs: a
@@ -65,6 +67,8 @@ struct LoadRegion {
   std::vector<Expression> formula;   ///< velocity_formula: one per dimension of the body
   std::vector<Vec3> point_velocity;  ///< velocity_file: one per selected point, in point order
   Vec3 body_force = Vec3::Zero();    ///< [N/m³] b added to the points' force density (any loading)
+  /// Held components (`components`; all by default): the others of a held point are free.
+  std::array<bool, 3> held_components{true, true, true};
 
   bool held() const {
     return loading == Loading::prescribed_velocity || loading == Loading::prescribed_displacement;
@@ -81,12 +85,13 @@ struct LoadRegion {
 };
 
 /// The reference points of the body as a case reader sees them before it is built: the points
-/// of a cloud read from a file, or else the lattice of `counts` points `spacing` apart from the
-/// origin (numbered x fastest, as lattice_cloud does), walked in place.
+/// of a cloud read from a file, or else the lattice of `counts` points `spacing` apart from
+/// `origin` (numbered x fastest, as lattice_cloud does), walked in place.
 struct BodyPoints {
   std::array<int, 3> counts{1, 1, 1};
   double spacing = 0.0;
   const PointCloud* cloud = nullptr;
+  Vec3 origin = Vec3::Zero();  ///< the lattice's first point [m]
   /// The first point (in point order) that `selects` accepts, if any.
   template <class Selects>
   std::optional<Vec3> first(Selects selects) const {
@@ -98,7 +103,7 @@ struct BodyPoints {
     for (int k = 0; k < counts[2]; ++k)
       for (int j = 0; j < counts[1]; ++j)
         for (int i = 0; i < counts[0]; ++i)
-          if (const Vec3 x = spacing * Vec3(i, j, k); selects(x)) return x;
+          if (const Vec3 x = origin + spacing * Vec3(i, j, k); selects(x)) return x;
     return std::nullopt;
   }
   /// Text of the body's extent for messages.
@@ -107,8 +112,8 @@ struct BodyPoints {
 
 /// Reads one [[region]] table: the shape keys of geometry::region_from_config, `separate`, and
 /// exactly one of `velocity`, `velocity_formula`, `velocity_file`, `prescribed_velocity` or
-/// `prescribed_displacement` (with `ramp_time`); none for a separate body keeping its velocity or a
-/// region with a `body_force`.
+/// `prescribed_displacement` (with `ramp_time` and `components`); none for a separate body keeping
+/// its velocity or a region with a `body_force`.
 /// Refused with its `shape` key when it selects no point of the body; a formula that does not
 /// compile or is not finite at a selected point, and a file that does not give the selected
 /// points in order, with their keys.
@@ -119,9 +124,10 @@ void check_bodies_apart(const std::vector<Config>& tables, const std::vector<Loa
                         const BodyPoints& body);
 
 /// Per bond of the family: 1 when it joins two different bodies (a separate region and the rest,
-/// or two separate regions).
+/// two separate regions, or points of two different files: `part`, one index per point, or empty).
 std::vector<unsigned char> bonds_between_bodies(const PointCloud& cloud, const Family& family,
-                                                const std::vector<LoadRegion>& regions);
+                                                const std::vector<LoadRegion>& regions,
+                                                const std::vector<int>& part = {});
 
 /// The points of the cloud a region selects, in index order.
 std::vector<std::size_t> points_in(const geometry::Region& region, const PointCloud& cloud);

@@ -153,9 +153,10 @@ struct CrackedFamily {
 
 CrackedFamily cracked_family(const PdCase& c, const PointCloud& cloud, const BodySpec& body) {
   CrackedFamily f{build_family(cloud, body.horizon(), body.correction), {}, 0};
-  // Separate bodies (regions.hpp) first: their bonds to the rest never existed.
-  if (std::any_of(c.regions.begin(), c.regions.end(), [](const LoadRegion& r) { return r.separate; }))
-    f.family = without_bonds(f.family, bonds_between_bodies(cloud, f.family, c.regions));
+  // Separate bodies (regions.hpp) and the bodies of several point files first: their bonds to the
+  // rest never existed.
+  if (!body.part.empty() || std::any_of(c.regions.begin(), c.regions.end(), [](const LoadRegion& r) { return r.separate; }))
+    f.family = without_bonds(f.family, bonds_between_bodies(cloud, f.family, c.regions, body.part));
   if (c.cracks.empty()) return f;
   std::vector<unsigned char> cut = cut_bonds(cloud, f.family, c.cracks);
   f.cut_count = static_cast<std::size_t>(std::count(cut.begin(), cut.end(), 1));
@@ -213,7 +214,7 @@ class PdMethod final : public Method {
   /// sizes of the whole body are counted, not built.
   PdMethod(const Config& root, const PdCase& c, bool check)
       : c_(c), built_(check ? checked_body(c_.body) : c_.body),
-        cloud_(built_.cloud ? *built_.cloud : lattice_cloud(built_.dim, built_.counts, built_.spacing)),
+        cloud_(built_.cloud ? *built_.cloud : lattice_cloud(built_.dim, built_.counts, built_.spacing, built_.origin)),
         cracked_(cracked_family(c_, cloud_, built_)),
         model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, cracked_.family, cracked_.cut); },
                           c_.material)),

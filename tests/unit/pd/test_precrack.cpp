@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include <Eigen/LU>
@@ -140,6 +141,22 @@ TEST(Precrack, LatticeCheckAgreesWithBuiltBody) {
   }
   EXPECT_TRUE(cuts_a_lattice_bond(Crack(3, {Vec3(2.5, -1, -1), Vec3(2.5, 9, -1), Vec3(2.5, 9, 9)}), 3, {6, 5, 4}, 1.0, 2.0));
   EXPECT_FALSE(cuts_a_lattice_bond(Crack(3, {Vec3(7.5, -1, -1), Vec3(7.5, 9, -1), Vec3(7.5, 9, 9)}), 3, {6, 5, 4}, 1.0, 2.0));
+}
+
+// The same check on a lattice moved off the origin ([body] origin, rows at y = −0.25 + k mm): it
+// agrees with the built body for cracks between rows, on a row and outside, and a crack along
+// y = 0 (a row of the unmoved lattice, which it would not cut) cuts bonds of the moved one.
+TEST(Precrack, LatticeCheckFollowsTheOrigin) {
+  const Vec3 origin(0.5e-3, -0.25e-3, 0.0);
+  const PointCloud plate = lattice_cloud(2, {12, 9, 1}, 1e-3, origin);
+  const Family family = build_family(plate, 2.5e-3, VolumeCorrection::linear);
+  const auto along = [](double y) { return Crack(2, {Vec3(-1e-3, y, 0), Vec3(20e-3, y, 0)}); };
+  for (double y : {0.0, 0.25e-3, 3e-3, 2.75e-3, -0.25e-3, -0.6e-3, 8.5e-3})
+    EXPECT_EQ(cuts_a_lattice_bond(along(y), 2, {12, 9, 1}, 1e-3, 2.5e-3, origin),
+              count(cut_bonds(plate, family, {along(y)})) > 0) << y;
+  EXPECT_TRUE(cuts_a_lattice_bond(along(0.0), 2, {12, 9, 1}, 1e-3, 2.5e-3, origin));
+  EXPECT_FALSE(cuts_a_lattice_bond(along(-0.6e-3), 2, {12, 9, 1}, 1e-3, 2.5e-3, origin));
+  EXPECT_FALSE(cuts_a_lattice_bond(along(8.5e-3), 2, {12, 9, 1}, 1e-3, 2.5e-3, origin));
 }
 
 // The correspondence models' pre-crack: the family without the cut bonds, in the same order.

@@ -6,7 +6,8 @@
 // over a time launches the elastic pulse of the ramp rate into a 1D LPS bar, with the momentum and
 // energy of that pulse; a linear velocity field (a uniform stretch given as velocity_formula)
 // keeps its strain rate inside the body until the surface waves arrive; the same field from
-// velocity_file gives the same run bit for bit.
+// velocity_file gives the same run bit for bit. A region held in one component leaves the others
+// free (its y momentum kept).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -365,4 +366,39 @@ TEST(LoadRegions, BodyForceOnAnEdgeGivesItsImpulse) {
   const std::size_t corner = body.cloud.size() - 1;  // (19, 11): top right
   // Stretched: σ/M ~ 8e-6 where the wave has passed (measured 1e-5 over the height).
   EXPECT_GT(sim.positions()[corner][1] - sim.positions()[19][1], 11.0 * dx * (1.0 + 1e-6));
+}
+
+// A held component leaves the others free (`components`): a 2D plate moving at v_y = 3 m/s whose
+// left edge is held in x only (at v_x = 5 m/s, or displaced by U_x = 1 µm) keeps its y momentum
+// Σ ρV v_y to round-off (the hold exerts no y reaction; bond and contact forces are pairwise
+// equal and opposite: tolerance 1e-12, as FreeBodyKeepsItsMomentum), while its edge sits exactly at
+// x + v_x·t (or x + U_x) with v_x held and moves in y with the body. Holding every component
+// instead would stop the edge in y (v_y = 0) and change the momentum by the edge's 3 m/s.
+TEST(RegionLoadings, HeldComponentLeavesTheOthersFree) {
+  constexpr double dx = 1e-3;
+  const Body body(2, {20, 12, 1}, dx);
+  const std::vector<std::size_t> edge = points_in(block(2.5 * dx), body.cloud);
+  ASSERT_EQ(edge.size(), 36u);
+  for (const Loading loading : {Loading::prescribed_velocity, Loading::prescribed_displacement}) {
+    Simulation sim(body.cloud, body.family, lps(body, true), {kDensity});
+    LoadRegion held(block(2.5 * dx), loading, Vec3(5.0, 0.0, 0.0));
+    held.displacement = Vec3(1e-6, 0.0, 0.0);
+    held.held_components = {true, false, false};
+    apply_regions(sim, {LoadRegion(block(1.0), Loading::velocity, Vec3(0.0, 3.0, 0.0)), held}, true);
+    const auto momentum_y = [&] {
+      double p = 0.0;
+      for (std::size_t i = 0; i < body.cloud.size(); ++i) p += kDensity * body.cloud.volume[i] * sim.velocities()[i][1];
+      return p;
+    };
+    const double p0 = momentum_y();
+    const double dt = 0.5 * sim.stable_step();
+    for (int s = 0; s < 300; ++s) sim.step(dt);
+    EXPECT_NEAR(momentum_y(), p0, 1e-12 * std::abs(p0));
+    for (std::size_t i : edge) {
+      const double x = body.cloud.x[i][0] + (loading == Loading::prescribed_velocity ? 5.0 * sim.time() : 1e-6);
+      EXPECT_NEAR(sim.positions()[i][0], x, 1e-10 * dx);
+      EXPECT_EQ(sim.velocities()[i][0], loading == Loading::prescribed_velocity ? 5.0 : 0.0);
+      EXPECT_GT(sim.positions()[i][1] - body.cloud.x[i][1], 0.5 * 3.0 * sim.time());  // carried in y
+    }
+  }
 }
