@@ -22,10 +22,10 @@ step = int(open(dump).readlines()[1])
 rows = [r for r in csv.DictReader(open(clusters_csv)) if int(r["timestep"]) == step and int(r["size"]) >= min_size]
 results = []
 for r in rows:
-    c = np.array([float(r[q]) for q in "xyz"])
+    c = np.array([float(r[f"{q}_A"]) for q in "xyz"])
     e1 = np.array([float(r[f"axis1_{q}"]) for q in "xyz"])
     e2 = np.array([float(r[f"axis2_{q}"]) for q in "xyz"])
-    a, b = float(r["a"]), float(r["b"])
+    a, b = float(r["a_A"]), float(r["b_A"])
     for where, centre, xi in (("+e1", c + 0.9 * a * e1, e2), ("-e1", c - 0.9 * a * e1, -e2),
                               ("+e2", c + 0.9 * b * e2, -e1), ("-e2", c - 0.9 * b * e2, e1)):
         line = f"{centre[0]:.3f},{centre[1]:.3f},{centre[2]:.3f}:{xi[0]:.4f},{xi[1]:.4f},{xi[2]:.4f}:{radius}"

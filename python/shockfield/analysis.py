@@ -159,8 +159,10 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     2/3 its first/second neighbours, 4 hexagonal, 5/6 its neighbours), ``cluster`` (int32, 1, 2, ...
     largest first, 0 none), for bond pairs the CSR ``bond_offset``, ``bond_partner``,
     ``bond_index`` (Honeycutt–Andersen index); ``counts`` (dict: the count and fraction columns
-    of structures.csv); ``clusters`` (structured array: clusters.csv's columns after frame and
-    timestep); ``domains`` (structured array: domains.csv's columns after frame and timestep),
+    of structures.csv, ``<method>_<structure>_count`` and ``<method>_<structure>_fraction``);
+    ``clusters`` (structured array: clusters.csv's columns after frame and timestep, ``cluster,
+    size, x_A, y_A, z_A, a_A, b_A, c_A, axis1_x ... axis3_z, ellipsoid_volume_A3,
+    ellipsoid_surface_A2, atomic_volume_A3``); ``domains`` (structured array: domains.csv's columns after frame and timestep),
     ``domain_surfaces`` (dict ``points``, ``triangles``: domains_<timestep>.vtp's triangles) and
     ``flat_domains`` (why each flat cluster has no surface; the CLI's warnings); ``profile``
     (structured array: profiles.csv's columns after frame and timestep, ``bin, lo, hi, centre,

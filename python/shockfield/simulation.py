@@ -82,7 +82,7 @@ class Simulation:
     def fields(self):
         """The fields the method computes from its state, by name, as numpy arrays that are
         copies made at this call (writing into them changes nothing; call again after a step):
-        dbm ``rho`` (ny, nx), ``velocity`` (ny, nx, 2) (ux, uy) and ``T`` (ny, nx), the moments
+        dbm ``rho`` (ny, nx), ``velocity`` (ny, nx, 2) (vx, vy) and ``T`` (ny, nx), the moments
         of f in lattice units — the values the run's field frames hold for this step. Other
         methods (and decomposed DBM runs) raise ``ValueError``."""
         return self._core.fields()

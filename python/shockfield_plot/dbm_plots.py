@@ -48,9 +48,9 @@ def profiles(run, out):
     reaction = "reaction" in run.config
     panels = [Panel("rho", "density ρ", levels=_levels(run, {"exact_rho_star_left": "exact ρ*L",
                                                                "exact_rho_star_right": "exact ρ*R"})),
-              Panel("ux", "velocity u_x", levels=_levels(run, {"exact_u_star": "exact u*"}))]
+              Panel("vx", "velocity u_x", levels=_levels(run, {"exact_u_star": "exact u*"}))]
     if ny > 1:
-        panels.append(Panel("uy", "velocity u_y"))
+        panels.append(Panel("vy", "velocity u_y"))
     panels += [Panel("p", "pressure p", levels=_levels(run, {"exact_p_star": "exact p*", "von_neumann_p": "p_vN",
                                                              "cj_p": "p_CJ"})),
                Panel("T", "temperature T")]

@@ -14,7 +14,7 @@ out="$WORK/shock/cu_shocked.dump"
 [ -s "$out" ] || fail "no annotated dump"
 grep -q "ITEM: ATOMS id type x y z c_cna c_csp c_coord coord cna acna csp bpa" "$out" || fail "columns: $(sed -n 9p "$out")"
 awk 'NR > 9 && ($6 != $10 || $8 != $9) { bad++ } END { exit bad > 0 }' "$out" || fail "cna/coord columns differ from LAMMPS's"
-head -1 "$WORK/shock/structures.csv" | grep -q "^frame,timestep,atoms,cna_fcc,cna_hcp,cna_bcc,cna_ico,cna_other," \
+head -1 "$WORK/shock/structures.csv" | grep -q "^frame,timestep,atoms,cna_fcc_count,cna_hcp_count,cna_bcc_count,cna_ico_count,cna_other_count," \
   || fail "structures.csv header: $(head -1 "$WORK/shock/structures.csv")"
 lammps_fcc=$(awk 'NR > 9 && $6 == 1' "$F/cu_shocked.dump" | wc -l)
 awk -F, -v n="$lammps_fcc" 'NR == 2 && ($3 != 3000 || $4 != n) { exit 1 }' "$WORK/shock/structures.csv" \
@@ -89,11 +89,11 @@ awk 'BEGIN { a = 5.431; n = 0
   for (d = 0; d < 3; ++d) printf "0 %.10g\n", 3 * a
   print "ITEM: ATOMS id type x y z"; for (m = 1; m <= n; ++m) print row[m] }' > "$WORK/si.dump"
 "$SF" analyze atoms "$WORK/si.dump" "$F/cu_fcc_perfect.dump" --diamond --adaptive-cna -o "$WORK/dia" > /dev/null
-head -1 "$WORK/dia/structures.csv" | grep -q ",dia_cubic,dia_cubic_first,dia_cubic_second,dia_hexagonal,dia_hexagonal_first,dia_hexagonal_second,dia_other," \
+head -1 "$WORK/dia/structures.csv" | grep -q ",dia_cubic_count,dia_cubic_first_count,dia_cubic_second_count,dia_hexagonal_count,dia_hexagonal_first_count,dia_hexagonal_second_count,dia_other_count," \
   || fail "dia columns: $(head -1 "$WORK/dia/structures.csv")"
 awk -F, 'NR == 1 { for (k = 1; k <= NF; ++k) c[$k] = k; next }
-  NR == 2 && !($c["dia_cubic"] == 216 && $c["acna_other"] == 216) { exit 1 }
-  NR == 3 && !($c["dia_other"] == 256 && $c["acna_fcc"] == 256) { exit 1 }' "$WORK/dia/structures.csv" \
+  NR == 2 && !($c["dia_cubic_count"] == 216 && $c["acna_other_count"] == 216) { exit 1 }
+  NR == 3 && !($c["dia_other_count"] == 256 && $c["acna_fcc_count"] == 256) { exit 1 }' "$WORK/dia/structures.csv" \
   || fail "diamond counts: $(cat "$WORK/dia/structures.csv")"
 awk 'NR > 9 && $NF != 1 { bad++ } END { exit bad > 0 }' "$WORK/dia/si.dump" || fail "si.dump: dia column not all 1"
 # A vacancy in Si: --cluster-select 'dia:!cubic' (connected within 4 Å, past the second-neighbour

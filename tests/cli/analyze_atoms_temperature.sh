@@ -52,7 +52,7 @@ CASE
     cp "$WORK/run_$T/dumps/dump.$step.lammpstrj" "$WORK/frames_$T/dumps/"
   done
   "$SF" analyze atoms "$WORK/frames_$T" --adaptive-cna --cna 3.0858 -o "$WORK/analysis_$T" > /dev/null
-  # columns: frame,timestep,atoms,cna_fcc..cna_other (4-8),cna_*_fraction (9-13),acna_fcc (14),...,acna_fcc_fraction (19)
+  # columns: frame,timestep,atoms,cna_fcc_count..cna_other_count (4-8),cna_*_fraction (9-13),acna_fcc_count (14),...,acna_fcc_fraction (19)
   read -r acna cna < <(awk -F, 'NR > 1 { a += $19; c += $9; n++ } END { printf "%.4f %.4f\n", a / n, c / n }' \
     "$WORK/analysis_$T/structures.csv")
   printf '%-6s %-10s %-10s\n' "$T" "$acna" "$cna"

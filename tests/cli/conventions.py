@@ -11,14 +11,15 @@ from the run folder's config.resolved.toml; a method without a unit system in UN
 itself a violation, so the next method is checked from its first run). Every column of every CSV
 of a method in SI or metal units carries its unit as a suffix (time_s, kinetic_J, rot2_per_s2,
 then in 1D/2D totals the per-area or per-length label) or is a pure number (DIMENSIONLESS, or
-a name ending in "count"); a column ux/uy/uz does not carry a velocity unit. Exceptions, each
-named: the thermo table under LAMMPS's names (Step, Time, ...), a long-format table (a
-"quantity" column: each row's quantity names the unit its values are in, and is checked in
-place of the header), methods in dimensionless model units (no unit to name) and the files
+a name ending in "count" or "fraction"); a column ux/uy/uz does not carry a velocity unit.
+Exceptions, each named: the thermo table under LAMMPS's names (Step, Time, ...), a long-format
+table (a "quantity" column: each row's quantity names the unit its values are in, and is checked
+in place of the header), methods in dimensionless model units (no unit to name, but a column or
+array named ux/uy/uz there is a velocity named u, reported) and the files
 listed in NOT_YET_UNIFORM, which must still break the rule (an entry that passes is reported,
 so the list only shrinks). The keys of summary.json's results that hold numbers follow the same
-rule (docs/summary-json.md: units in the key names). The totals of the MPM and PD series: a unit
-suffix and, in 1D or 2D, the per-area or per-length label. Every checkpoint.h5
+rule (docs/summary-json.md: units in the key names). The totals of the MPM and PD series and
+summary.json results: a unit suffix and, in 1D or 2D, the per-area or per-length label. Every checkpoint.h5
 (docs/checkpoints.md; read with h5py): the root attributes format, method (the run's), format_version, shockfield_version, git_commit, case (the text of the
 run's config.resolved.toml), case_sha256 (its SHA-256) and case_input (the case as read: TOML,
 naming the run's method); integer counters (step, format_version)
@@ -41,27 +42,29 @@ TIME_NAME = {"si": "time_s", "metal": "time_ps", "model": "time"}
 # Unit suffixes per unit system, SI spelt with underscores for "/" and a trailing power
 # (m_s = m/s, kg_m3 = kg/m³, per_s2 = 1/s²).
 UNITS = {"si": ("s", "J", "m", "m2", "m3", "N", "Pa", "K", "kg", "m_s", "kg_m3", "J_kg", "kg_m_s", "per_s2"),
-         "metal": ("ps", "eV", "bar", "A", "A3", "K", "A_ps", "eV_A", "GPa", "km_s", "g_cc")}
+         "metal": ("ps", "eV", "bar", "A", "A2", "A3", "K", "A_ps", "eV_A", "GPa", "km_s", "g_cc")}
 VELOCITY_UNITS = ("m_s", "A_ps", "km_s")
-# Pure numbers: no unit suffix. Any name ending in "count" is one too. Indices and counts, then
-# strains, ratios and crystal directions (PD's polycrystal grain_summary.csv: axis_h/k/l).
+# Pure numbers: no unit suffix. Any name ending in "count" or "fraction" is one too. Indices and
+# counts (MD's analyze tables: frame, timestep, atoms, a cluster's index and its size in atoms),
+# then strains, ratios, crystal directions (PD's polycrystal grain_summary.csv: axis_h/k/l) and
+# unit vectors (the principal axes of a cluster in clusters.csv: axis1_x ... axis3_z).
+PURE_NUMBER_ENDINGS = ("count", "fraction")
 DIMENSIONLESS = {"step", "steps", "profile", "grain", "bin", "particles", "plastic_bonds", "broken_bonds",
-                 "damaged_points", "neighbor_rebuilds", "width_grains",
+                 "damaged_points", "neighbor_rebuilds", "width_grains", "frame", "timestep", "atoms", "cluster", "size",
                  "collapsibility", "plastic", "max_plastic", "damage", "mean_damage", "strain", "lateral_strain",
+                 "end_strain", "widest_spread_strain",
                  "poisson_secant", "energy_error", "schmid_factor", "accumulated_slip", "mean_accumulated_slip",
-                 "axis_h", "axis_k", "axis_l", "final_axis_h", "final_axis_k", "final_axis_l"}
-# Files known to break the unit rule, with the reason; each entry must still break it.
-NOT_YET_UNIFORM = {
-    ("md", "clusters.csv"): "analyze clusters: positions and axes in Å without a suffix (issue 15)",
-    ("md", "structures.csv"): "analyze structures: counts and fractions without a pure-number rule (issue 15)",
-    ("pd", "summary.json"): "results.momentum without its unit (issue 15)",
-}
+                 "axis_h", "axis_k", "axis_l", "final_axis_h", "final_axis_k", "final_axis_l"} | {
+                 f"axis{k}_{d}" for k in (1, 2, 3) for d in "xyz"}
+# Files known to break the unit rule, with the reason; each entry must still break it. Empty: the
+# last ones (MD's clusters.csv and structures.csv, PD's summary.json) follow it since issue 15.
+NOT_YET_UNIFORM = {}
 PER_MISSING_LABELS = ("_per_m", "_per_m2")
 
 
 def unit_problem(column, system):
     """Why a column name breaks the unit rule of a unit system, or None."""
-    if column in DIMENSIONLESS or column.endswith("count"):
+    if column in DIMENSIONLESS or column.endswith(PURE_NUMBER_ENDINGS):
         return None
     units = UNITS[system]
     base = next((column[: -len(p)] for p in PER_MISSING_LABELS
@@ -89,16 +92,16 @@ def dim_of(run):
     return 3
 
 
-def check_totals(path, header, dim):
+def check_totals(path, header, dim, where="column"):
     per = PER_MISSING.get(dim, "")
     for c in header:
         base = c[: len(c) - len(per)] if per and c.endswith(per) else c
         if not re.match(r"^(mass|momentum|kinetic|internal|total)", c):
             continue
         if not any(base.endswith("_" + u) for u in TOTAL_UNITS):
-            yield f"{path}: column '{c}' has no unit suffix (_{', _'.join(TOTAL_UNITS)})"
+            yield f"{path}: {where} '{c}' has no unit suffix (_{', _'.join(TOTAL_UNITS)})"
         elif per and not c.endswith(per):
-            yield f"{path}: column '{c}' is a total of a {dim}D run; name it '{c}{per}'"
+            yield f"{path}: {where} '{c}' is a total of a {dim}D run; name it '{c}{per}'"
 
 
 def method_of(run):
@@ -110,7 +113,19 @@ def method_of(run):
     return None
 
 
-def check_vtk(path):
+# In dimensionless model units (dbm, phasefield) no unit tells a velocity from a displacement, and
+# neither method has a displacement: a name u_x, u_y, u_z there is a velocity named u.
+MODEL_UNIT_U = re.compile(r"^(.*_)?u[xyz](_.*)?$")
+
+
+def model_unit_velocity(name, method, where):
+    if UNIT_SYSTEM.get(method) == "model" and MODEL_UNIT_U.match(name):
+        return (f"{where} '{name}' is a velocity in model units (a {method} run has no displacement); "
+                "u is a displacement, name a velocity v (vx, vy, vz)")
+    return None
+
+
+def check_vtk(path, method):
     text = path.read_bytes().split(b"<AppendedData")[0].decode("utf-8", "replace")
     for tag in re.findall(r"<DataArray[^>]*>", text):
         name = re.search(r'Name="([^"]+)"', tag)
@@ -119,6 +134,9 @@ def check_vtk(path):
             yield f"{path}: DataArray '{name}' has no units attribute"
         if re.fullmatch(r"u[xyz]", name) and re.search(r'units="[^"]*/s"', tag):
             yield f"{path}: DataArray '{name}' is a velocity; u is a displacement, name a velocity v (vx, vy, vz)"
+        problem = model_unit_velocity(name, method, "DataArray")
+        if problem:
+            yield f"{path}: {problem}"
 
 
 def csv_lines(path):
@@ -157,8 +175,9 @@ def check_csv(path, method, dim=3):
         yield f"{path}: time column '{times[0]}'; a {method} run names it '{TIME_NAME[system]}'"
     if path.name == "series.csv" and method in ("mpm", "pd"):
         yield from check_totals(path, header, dim)
-    if system == "model":
-        return  # dimensionless model units: no unit to name
+    if system == "model":  # dimensionless model units: no unit to name, but velocities are v
+        yield from (f"{path}: {p}" for p in filter(None, (model_unit_velocity(c, method, "column") for c in header)))
+        return
     yield from exempted(path, method, list(check_units(path, header, system)))
 
 
@@ -174,8 +193,9 @@ def result_keys(value, key=None):
         yield key
 
 
-def check_summary(path, method):
-    """The unit rule on the keys of summary.json's results (docs/summary-json.md: units in the key names)."""
+def check_summary(path, method, dim=3):
+    """The unit rule on the keys of summary.json's results (docs/summary-json.md: units in the key
+    names); for MPM and PD the totals' per-length or per-area labels in 1D and 2D, as their series."""
     import json
     system = UNIT_SYSTEM.get(method)
     if system in (None, "model"):
@@ -183,6 +203,8 @@ def check_summary(path, method):
     keys = sorted(set(result_keys(json.loads(path.read_text()).get("results", {}))))
     problems = [f"{path}: results {p.replace('column', 'key', 1)}"
                 for p in filter(None, (unit_problem(k, system) for k in keys))]
+    if method in ("mpm", "pd"):  # the per-area or per-length label of the totals that have a unit
+        problems += check_totals(path, [k for k in keys if not unit_problem(k, system)], dim, "results key")
     yield from exempted(path, method, problems)
 
 
@@ -248,11 +270,11 @@ def main():
                             "give it one, so its outputs are checked")
         for path in sorted(run.rglob("*")):
             if path.suffix in (".vti", ".vtp"):
-                problems += check_vtk(path)
+                problems += check_vtk(path, method)
             elif path.suffix == ".csv":
                 problems += check_csv(path, method, dim_of(run))
             elif path.name == "summary.json":
-                problems += check_summary(path, method)
+                problems += check_summary(path, method, dim_of(run))
             elif path.name == "checkpoint.h5":
                 problems += check_checkpoint(path, method)
     for p in problems:

@@ -4,9 +4,10 @@
 # column per file named for the method's unit system, units in every CSV column name (SI and metal
 # units) and summary.json result key, velocities never named u, self-describing checkpoints (docs/checkpoints.md). The checker
 # itself fails on a folder that breaks them (a second time column, a time column of another unit
-# system, an array without units, granular, PD and MPM columns without their units, an MPM velocity
-# named u, a method without a unit system, a checkpoint dataset without units or a case that is not
-# the run's).
+# system, an array without units, granular, PD and MPM columns without their units, PD summary keys
+# without their unit or per-area label, MD analysis tables without units, an MPM velocity and a DBM
+# (model-unit) velocity named u, a method without a unit system, a checkpoint dataset without units
+# or a case that is not the run's).
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -67,7 +68,19 @@ grep -q "^vz_m_s," "$WORK/mpm_3d/histograms/hist_0.csv" || fail "the 3D histogra
 runs+=("$WORK/mpm_3d")
 check "${runs[@]}" || fail "a run folder breaks the output conventions (above)"
 
-# A deliberately broken folder: the checker must name each violation.
+# The checker on a deliberately broken folder: it must exit 1 and report each message given.
+expect_reported() {
+  local folder=$1 what=$2 code=0 p
+  shift 2
+  check "$folder" > "$folder.txt" || code=$?
+  [ $code -eq 1 ] || fail "the checker passed $what (exit $code)"
+  for p in "$@"; do
+    grep -qF "$p" "$folder.txt" || fail "the checker did not report: $p ($(cat "$folder.txt"))"
+  done
+}
+
+# A second time column, a time column of another unit system, an array without units, a
+# checkpoint that does not describe itself.
 mkdir -p "$WORK/broken/fields"
 printf "method = 'mpm'\n" > "$WORK/broken/config.resolved.toml"
 printf "step,time_s,time\n0,0,0\n" > "$WORK/broken/series.csv"
@@ -80,23 +93,50 @@ with h5py.File(sys.argv[1], "r+") as f:
     del f["pressure"].attrs["units"]
     f["mass"].attrs["units"] = "mixed"
     f.attrs["step"] = 66.0' "$WORK/broken/checkpoint.h5"
+expect_reported "$WORK/broken" "a broken folder" \
+  "series.csv: 2 time columns" "profile.csv: time column 'time_ps'; a mpm run names it 'time_s'" \
+  "DataArray 'temperature' has no units attribute" "checkpoint.h5: dataset 'pressure' has no units attribute" \
+  "checkpoint.h5: attribute 'step' is not stored as an integer" "checkpoint.h5: dataset 'mass' is an opaque mix" \
+  "checkpoint.h5: attribute 'case' is not the run's config.resolved.toml"
+# A granular series column without its unit.
 mkdir -p "$WORK/broken_granular"
 cp "$WORK/granular_tiny/config.resolved.toml" "$WORK/broken_granular/"
 sed '1s/,kinetic_J,/,kinetic,/' "$WORK/granular_tiny/series.csv" > "$WORK/broken_granular/series.csv"
-set +e
-check "$WORK/broken_granular" > "$WORK/broken_granular.txt"
-[ $? -eq 1 ] || fail "the checker passed a granular series column without its unit"
-grep -qF "series.csv: column 'kinetic' has no unit suffix" "$WORK/broken_granular.txt" ||
-  fail "the checker did not name the column without a unit: $(cat "$WORK/broken_granular.txt")"
+expect_reported "$WORK/broken_granular" "a granular series column without its unit" \
+  "series.csv: column 'kinetic' has no unit suffix"
+# A 1D PD series and summary.json without units or per-area labels: the series' kinetic energy
+# and momentum, the summary under its old keys (momentum without its unit, the kinetic energy
+# without its per-area label).
 mkdir -p "$WORK/broken_pd"
 cp "$WORK/pd_tiny/config.resolved.toml" "$WORK/broken_pd/"
 printf "step,time_s,kinetic_energy,momentum_x_kg_m_s\n0,0,0,0\n" > "$WORK/broken_pd/series.csv"
-check "$WORK/broken_pd" > "$WORK/broken_pd.txt"
-[ $? -eq 1 ] || fail "the checker passed a 1D PD series without units or per-area labels"
-for p in "column 'kinetic_energy' has no unit suffix" \
-         "column 'momentum_x_kg_m_s' is a total of a 1D run; name it 'momentum_x_kg_m_s_per_m2'"; do
-  grep -qF "$p" "$WORK/broken_pd.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken_pd.txt"))"
-done
+sed 's/"kinetic_energy_J_per_m2"/"kinetic_energy_J"/; s/"momentum_kg_m_s_per_m2"/"momentum"/' \
+    "$WORK/pd_tiny/summary.json" > "$WORK/broken_pd/summary.json"
+grep -q '"momentum":' "$WORK/broken_pd/summary.json" || fail "the PD summary has no momentum key to break"
+expect_reported "$WORK/broken_pd" "a 1D PD series and summary without units or per-area labels" \
+  "column 'kinetic_energy' has no unit suffix" \
+  "column 'momentum_x_kg_m_s' is a total of a 1D run; name it 'momentum_x_kg_m_s_per_m2'" \
+  "summary.json: results key 'momentum' has no unit suffix" \
+  "summary.json: results key 'kinetic_energy_J' is a total of a 1D run; name it 'kinetic_energy_J_per_m2'"
+# MD's in-run analysis tables under their old names: lengths and volumes without Å, counts
+# without _count.
+mkdir -p "$WORK/broken_md"
+cp "$WORK/tiny_cu_analysis/config.resolved.toml" "$WORK/broken_md/"
+sed '1s/,x_A,y_A,z_A,a_A,/,x,y,z,a,/; 1s/,ellipsoid_volume_A3,ellipsoid_surface_A2,/,ellipsoid_volume,ellipsoid_surface,/' \
+    "$WORK/tiny_cu_analysis/clusters.csv" > "$WORK/broken_md/clusters.csv"
+sed '1s/,cna_fcc_count,/,cna_fcc,/' "$WORK/tiny_cu_analysis/structures.csv" > "$WORK/broken_md/structures.csv"
+expect_reported "$WORK/broken_md" "MD analysis tables without units" \
+  "clusters.csv: column 'x' has no unit suffix" "clusters.csv: column 'a' has no unit suffix" \
+  "clusters.csv: column 'ellipsoid_surface' has no unit suffix" "structures.csv: column 'cna_fcc' has no unit suffix"
+# DBM (model units) with a velocity named u: series and profile columns ux, uy and a field array ux.
+mkdir -p "$WORK/broken_dbm/profiles" "$WORK/broken_dbm/fields"
+cp "$WORK/dbm_sod/config.resolved.toml" "$WORK/broken_dbm/"
+sed '1s/,vx,vy,/,ux,uy,/' "$WORK/dbm_sod/series.csv" > "$WORK/broken_dbm/series.csv"
+sed '1s/,vx,vy,/,ux,uy,/' "$WORK/dbm_sod/profiles/profile_1.csv" > "$WORK/broken_dbm/profiles/profile_1.csv"
+sed 's/Name="velocity"/Name="ux"/' "$WORK/dbm_sod/fields/grid_000000000.vti" > "$WORK/broken_dbm/fields/grid_000000000.vti"
+expect_reported "$WORK/broken_dbm" "a DBM velocity named u" \
+  "series.csv: column 'ux' is a velocity in model units" "series.csv: column 'uy' is a velocity in model units" \
+  "profile_1.csv: column 'ux' is a velocity in model units" "grid_000000000.vti: DataArray 'ux' is a velocity in model units"
 # MPM columns and arrays under their old names: a window mean without its unit, a gradient
 # without 1/s², the highest particle without metres, a velocity named u (series and grid frame),
 # a summary.json mean without its unit.
@@ -106,31 +146,14 @@ sed '1s/,top_m,rot2_per_s2,/,top,rot2,/; 1s/_pressure_mean_Pa,/_pressure_mean,/;
     "$WORK/mpm_tiny/series.csv" > "$WORK/broken_mpm/series.csv"
 sed 's/Name="vy"/Name="uy"/' "$WORK/mpm_tiny/fields/grid_000000000.vti" > "$WORK/broken_mpm/fields/grid_000000000.vti"
 sed 's/"pressure_Pa"/"pressure"/' "$WORK/mpm_tiny/summary.json" > "$WORK/broken_mpm/summary.json"
-check "$WORK/broken_mpm" > "$WORK/broken_mpm.txt"
-[ $? -eq 1 ] || fail "the checker passed MPM columns without units"
-for p in "column 'top' has no unit suffix" "column 'rot2' has no unit suffix" \
-         "column 'bottom_h200um_pressure_mean' has no unit suffix" \
-         "column 'bottom_h200um_uy_mean_m_s' names a velocity u" "DataArray 'uy' is a velocity" \
-         "summary.json: results key 'pressure' has no unit suffix"; do
-  grep -qF "$p" "$WORK/broken_mpm.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken_mpm.txt"))"
-done
+expect_reported "$WORK/broken_mpm" "MPM columns without units" \
+  "column 'top' has no unit suffix" "column 'rot2' has no unit suffix" \
+  "column 'bottom_h200um_pressure_mean' has no unit suffix" \
+  "column 'bottom_h200um_uy_mean_m_s' names a velocity u" "DataArray 'uy' is a velocity" \
+  "summary.json: results key 'pressure' has no unit suffix"
 # The next method: a run folder of a method the checker has no unit system for is itself a violation.
 mkdir -p "$WORK/broken_new_method"
 printf "method = 'newmethod'\n" > "$WORK/broken_new_method/config.resolved.toml"
 printf "step,time_s,energy\n0,0,0\n" > "$WORK/broken_new_method/series.csv"
-check "$WORK/broken_new_method" > "$WORK/broken_new_method.txt"
-[ $? -eq 1 ] || fail "the checker passed a method it has no unit system for"
-grep -qF "method 'newmethod' has no unit system" "$WORK/broken_new_method.txt" ||
-  fail "the checker did not name the unregistered method: $(cat "$WORK/broken_new_method.txt")"
-check "$WORK/broken" > "$WORK/broken.txt"
-code=$?
-set -e
-[ $code -eq 1 ] || fail "the checker passed a broken folder (exit $code)"
-for p in "series.csv: 2 time columns" "profile.csv: time column 'time_ps'; a mpm run names it 'time_s'" \
-         "DataArray 'temperature' has no units attribute" "checkpoint.h5: dataset 'pressure' has no units attribute" \
-         "checkpoint.h5: attribute 'step' is not stored as an integer" \
-         "checkpoint.h5: dataset 'mass' is an opaque mix" \
-         "checkpoint.h5: attribute 'case' is not the run's config.resolved.toml"; do
-  grep -qF "$p" "$WORK/broken.txt" || fail "the checker did not report: $p ($(cat "$WORK/broken.txt"))"
-done
+expect_reported "$WORK/broken_new_method" "a method it has no unit system for" "method 'newmethod' has no unit system"
 echo "conventions: every method's run folder follows docs/conventions.md; a broken folder is caught"

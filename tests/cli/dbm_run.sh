@@ -18,7 +18,7 @@ grep -q "exact_p_star = 0.30313" "$WORK/sod/config.resolved.toml" || fail "deriv
 [ "$(wc -l < "$WORK/sod/series.csv")" -eq 7 ] || fail "series.csv should have a header and 6 rows"
 [ "$(grep -c "<DataSet" "$WORK/sod/grid.pvd")" -eq 3 ] || fail "grid.pvd should list 3 frames"
 grep -q 'Name="D"' "$WORK/sod/fields/grid_000000040.vti" || fail "field frame lacks D"
-head -1 "$WORK/sod/profiles/profile_2.csv" | grep -q "x,rho,ux,uy,p,T,D2xx,D31x" || fail "profile columns"
+head -1 "$WORK/sod/profiles/profile_2.csv" | grep -q "x,rho,vx,vy,p,T,D2xx,D31x" || fail "profile columns"
 [ "$(wc -l < "$WORK/sod/profiles/profile_2.csv")" -eq 101 ] || fail "profile should have 100 cells"
 
 expect_error "${sod/courant = 0.4/courant = 0.4

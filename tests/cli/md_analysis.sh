@@ -15,7 +15,7 @@ case_file="$ROOT/tests/cli/cases/tiny_cu_analysis.toml"
 "$SF" run "$case_file" --output "$WORK/run" -q > /dev/null
 s="$WORK/run/structures.csv"
 [ "$(wc -l < "$s")" -eq 14 ] || fail "structures.csv: $(wc -l < "$s") lines, expected a header and 13 rows (steps 0, 25, ..., 300)"
-head -1 "$s" | grep -q "^step,time_ps,atoms,cna_fcc,.*,acna_other_fraction,dia_cubic,.*,dia_other_fraction,excess_reference_eV,excess_mean_eV$" || fail "header: $(head -1 "$s")"
+head -1 "$s" | grep -q "^step,time_ps,atoms,cna_fcc_count,.*,acna_other_fraction,dia_cubic_count,.*,dia_other_fraction,excess_reference_eV,excess_mean_eV$" || fail "header: $(head -1 "$s")"
 # Step 0, the perfect lattice at 0 K: every atom has e0 = -3.54 eV (Cu_u3's cohesive energy; the
 # file's tabulation gives it to ~1e-9 eV) and no excess (round-off of the median's subtraction).
 awk -F, 'NR == 2 && ($(NF-1) + 3.54 > 1e-8 || $(NF-1) + 3.54 < -1e-8 || $NF > 1e-12 || $NF < -1e-12) { exit 1 }' "$s" \
@@ -35,7 +35,7 @@ awk -F, 'NR > 1' "$WORK/a/structures.csv" | cut -d, -f3- > "$WORK/post"
 cmp "$WORK/inrun" "$WORK/post" || fail "in-run fractions differ from analyze atoms on the dumps: $(diff "$WORK/inrun" "$WORK/post" | head -5)"
 echo "ok: in-run structures.csv = analyze atoms on the run's 7 dumps ($(awk -F, 'NR > 1 { printf "%s ", $4 }' "$WORK/a/structures.csv")fcc by CNA; excess references $(awk -F, 'NR > 1 { printf "%s ", $(NF-1) }' "$WORK/a/structures.csv")eV)"
 c="$WORK/run/clusters.csv"
-head -1 "$c" | grep -q "^step,time_ps,cluster,size,x,y,z,a,b,c,axis1_x,.*,atomic_volume$" || fail "clusters.csv header: $(head -1 "$c")"
+head -1 "$c" | grep -q "^step,time_ps,cluster,size,x_A,y_A,z_A,a_A,b_A,c_A,axis1_x,.*,atomic_volume_A3$" || fail "clusters.csv header: $(head -1 "$c")"
 awk -F, 'NR > 1 && $1 % 50 == 0' "$c" | cut -d, -f3- > "$WORK/inrun_clusters"
 awk -F, 'NR > 1' "$WORK/a/clusters.csv" | cut -d, -f3- > "$WORK/post_clusters"
 [ "$(wc -l < "$WORK/post_clusters")" -gt 7 ] || fail "fewer than one cluster per dump: the comparison would be empty"

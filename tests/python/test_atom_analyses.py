@@ -169,7 +169,7 @@ class AtomAnalyses(unittest.TestCase):
                     for t in (1, 2))
         np.testing.assert_array_equal(two["dia"], np.array(cli["dia"], dtype=int))
         np.testing.assert_array_equal(two["cluster"], np.array(cli["cluster"], dtype=int))
-        self.assertGreater(two["counts"]["dia_cubic"], 0)
+        self.assertGreater(two["counts"]["dia_cubic_count"], 0)
         self.assertGreater(len(two["clusters"]), 0)  # the displacements made some atoms leave cubic diamond
         summary = read_csv(out / "structures.csv")[0]
         for column, value in two["counts"].items():
@@ -189,7 +189,7 @@ class AtomAnalyses(unittest.TestCase):
         np.testing.assert_array_equal(r["cluster"], np.array(cli["cluster"], dtype=int))
         self.assertGreater(len(r["clusters"]), 0)
         summary = read_csv(out / "structures.csv")[0]
-        for column in ("excess_reference_eV", "excess_mean_eV", "acna_fcc"):
+        for column in ("excess_reference_eV", "excess_mean_eV", "acna_fcc_count"):
             self.assertEqual(f"{r['counts'][column]:.10g}", summary[column], column)
         self.assert_rows_printed_equal(r["profile"], read_csv(out / "profiles.csv"), 10, fraction_digits=6)
         fixed = analysis.structure(x, box, coordination=3.0, pe=pe, excess_energy=-3.54)

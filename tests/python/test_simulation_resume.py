@@ -6,7 +6,7 @@
   by Simulation(case, output, resume=True) and stepped to the end: thermo.csv (and dbm's
   series.csv) are byte-identical to an uninterrupted `shockfield run` with the same thread count.
   A stopped Simulation refuses more steps.
-- DBM fields: Simulation.fields() gives ρ, (ux, uy) and T as copies; at every step that writes a
+- DBM fields: Simulation.fields() gives ρ, (vx, vy) and T as copies; at every step that writes a
   profile (profiles/profile_<k>.csv: the whole row of the one-cell-high tube) they equal its
   columns as printed, and at every field frame (fields/*.vti, Float32) ρ and T rounded to
   float32 equal the frame's arrays exactly (as doubles they differ by 5.6e-8 relative: float32). Writing into the copies changes nothing. Other methods raise ValueError.
@@ -87,8 +87,8 @@ class Resume(unittest.TestCase):
                 seen_profiles = len(written)
                 with open(written[-1]) as f:
                     rows = list(csv.DictReader(f))
-                for column, values in (("rho", fields["rho"][0]), ("ux", fields["velocity"][0, :, 0]),
-                                       ("uy", fields["velocity"][0, :, 1]), ("T", fields["T"][0])):
+                for column, values in (("rho", fields["rho"][0]), ("vx", fields["velocity"][0, :, 0]),
+                                       ("vy", fields["velocity"][0, :, 1]), ("T", fields["T"][0])):
                     # the CSV as printed: the same formatting of the same double
                     self.assertEqual([f"{float(r[column]):.10g}" for r in rows], [f"{v:.10g}" for v in values], column)
                 checked_profiles += 1

@@ -81,7 +81,7 @@ class Structure(unittest.TestCase):
         counts = np.genfromtxt(self.dir / "out" / "structures.csv", delimiter=",", names=True)
         for name in ("cna", "acna", "bpa"):
             for kind, n in r[f"{name}_counts"].items():
-                self.assertEqual(int(counts[f"{name}_{kind}"]), n, f"{name}_{kind}")
+                self.assertEqual(int(counts[f"{name}_{kind}_count"]), n, f"{name}_{kind}_count")
         offset = r["bond_offset"]
         self.assertEqual((len(offset), offset[-1]), (len(x) + 1, len(r["bond_partner"])))
         one = analysis.structure(x, box, adaptive_cna=True, threads=1)

@@ -26,7 +26,7 @@ void GlsRunPart::initialize(Simulation& sim) const {
 
 std::vector<std::string> GlsRunPart::series_columns() const {
   std::vector<std::string> columns{"step", "time", "D", "D_force", "D_gradient", "L", "R", "density_variance",
-                                   "rho_min", "rho_max", "T_mean", "u_max", "mass", "energy"};
+                                   "rho_min", "rho_max", "T_mean", "v_max", "mass", "energy"};
   for (const double level : spec_.extra_thresholds) columns.push_back(fmt::format("L_rho{}", level));
   return columns;
 }

@@ -190,7 +190,7 @@ class DbmMethod final : public Method, public DerivedArrays {
     return {grid_state_array("f", sim_.f(), 3, {l.nx + ghosts, l.ny + ghosts, sim_.model().size()})};
   }
 
-  // ρ, u (ux, uy) and T of every interior cell, the moments of f (docs/theory/dbm.md) as the field
+  // ρ, u (vx, vy) and T of every interior cell, the moments of f (docs/theory/dbm.md) as the field
   // frames hold them (Simulation::macro, macro_cell_image): (ny, nx), x fastest.
   std::vector<DerivedArray> derived_arrays() const override {
     if (decomposition_) return {};

@@ -21,7 +21,7 @@ RunOutput::RunOutput(const fs::path& folder, const DbmOutputSpec& spec, const Si
   const double keep_step = resumed ? static_cast<double>(resumed->steps()) : 0.0;
   const double keep_profile = static_cast<double>(counters.profiles) - 1.0;
   std::vector<std::string> series_columns =
-      gls ? gls->series_columns() : std::vector<std::string>{"step", "time", "rho", "ux", "uy", "T", "D"};
+      gls ? gls->series_columns() : std::vector<std::string>{"step", "time", "rho", "vx", "vy", "T", "D"};
   if (reaction_) series_columns.insert(series_columns.end(), {"lambda", "chemical_energy", "total_energy", "front_x"});
   series_ = io::CsvWriter(folder / "series.csv", series_columns, resumed ? &keep_step : nullptr);
   fs::create_directories(folder / "profiles");
@@ -60,7 +60,7 @@ void RunOutput::write_series(const Simulation& sim) {
 void RunOutput::write_profile(const Simulation& sim, std::int64_t index) {
   const TneFields tne = tne_measures(sim);
   const Lattice& l = sim.lattice();
-  std::vector<std::string> columns{"x", "rho", "ux", "uy", "p", "T", "D2xx", "D31x"};
+  std::vector<std::string> columns{"x", "rho", "vx", "vy", "p", "T", "D2xx", "D31x"};
   if (reaction_) columns.insert(columns.end(), {"lambda", "omega"});
   io::CsvWriter csv(folder_ / "profiles" / fmt::format("profile_{}.csv", index), columns);
   for (int i = 0; i < l.nx; ++i) {

@@ -312,9 +312,10 @@ class PdMethod final : public Method {
   Json results() const override {
     const std::vector<double> values = thermo_values();
     const Vec3 p = sim_.momentum();
+    const std::string per = units::si::per_missing_dimensions_column(c_.body.dim);  // totals: per m in 2D
     return Json::object()
-        .set("kinetic_energy_J", values[2])
-        .set("momentum", Json::Array{p[0], p[1], p[2]})
+        .set("kinetic_energy_J" + per, values[2])
+        .set("momentum_kg_m_s" + per, Json::Array{p[0], p[1], p[2]})
         .set("mean_damage", values[4])
         .set("damaged_points", static_cast<long long>(values[5]));
   }

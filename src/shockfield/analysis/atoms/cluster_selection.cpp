@@ -79,9 +79,9 @@ ClusterSelection parse_cluster_selection(const std::string& spec, StructureAnaly
 }
 
 std::vector<std::string> cluster_columns(const std::string& frame_column, const std::string& time_column) {
-  return {frame_column, time_column, "cluster", "size", "x", "y", "z", "a", "b", "c", "axis1_x", "axis1_y",
-          "axis1_z", "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y", "axis3_z", "ellipsoid_volume",
-          "ellipsoid_surface", "atomic_volume"};
+  return {frame_column, time_column, "cluster", "size", "x_A", "y_A", "z_A", "a_A", "b_A", "c_A", "axis1_x",
+          "axis1_y", "axis1_z", "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y", "axis3_z",
+          "ellipsoid_volume_A3", "ellipsoid_surface_A2", "atomic_volume_A3"};
 }
 
 std::vector<std::vector<double>> cluster_rows(const ClusterResult& r, double frame_value, double time_value) {

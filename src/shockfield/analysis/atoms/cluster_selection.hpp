@@ -20,8 +20,9 @@ ClusterSelection parse_cluster_selection(const std::string& spec, StructureAnaly
                                          const std::function<std::string(const std::string&)>& enabled_by);
 
 /// clusters.csv's columns: the frame's two (frame, timestep for analyze atoms; step, time_ps in a
-/// run), then cluster (1, 2, ... largest first), size, centre x y z, semi-axes a b c, the three
-/// axes, ellipsoid volume and surface, atomic volume.
+/// run), then cluster (1, 2, ... largest first), size (atoms), centre x_A y_A z_A, semi-axes a_A b_A
+/// c_A (Å), the three unit axes axis<k>_x/y/z, ellipsoid_volume_A3, ellipsoid_surface_A2 and
+/// atomic_volume_A3 (metal units named as docs/conventions.md says).
 std::vector<std::string> cluster_columns(const std::string& frame_column, const std::string& time_column);
 /// Their values, one row per cluster, starting with the frame's two values.
 std::vector<std::vector<double>> cluster_rows(const ClusterResult& r, double frame_value, double time_value);

@@ -42,11 +42,12 @@ std::vector<std::string> structure_count_columns(const StructureAnalyses& s) {
   for (const auto& [method, on] : {std::pair{"cna", s.cna.has_value()}, std::pair{"acna", s.adaptive_cna.has_value()},
                                    std::pair{"bpa", s.bond_pairs.has_value()}}) {
     if (!on) continue;
-    for (Structure t : kStructures) columns.push_back(fmt::format("{}_{}", method, structure_name(t)));
+    for (Structure t : kStructures) columns.push_back(fmt::format("{}_{}_count", method, structure_name(t)));
     for (Structure t : kStructures) columns.push_back(fmt::format("{}_{}_fraction", method, structure_name(t)));
   }
   if (s.diamond) {
-    for (DiamondStructure t : kDiamondStructures) columns.push_back(fmt::format("dia_{}", diamond_structure_name(t)));
+    for (DiamondStructure t : kDiamondStructures)
+      columns.push_back(fmt::format("dia_{}_count", diamond_structure_name(t)));
     for (DiamondStructure t : kDiamondStructures)
       columns.push_back(fmt::format("dia_{}_fraction", diamond_structure_name(t)));
   }

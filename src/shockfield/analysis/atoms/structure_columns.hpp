@@ -16,8 +16,9 @@ namespace shockfield::analysis::atoms {
 void append_structure_columns(io::DumpFrame& dump, const StructureAnalysisResult& r, std::size_t natoms);
 
 /// The count columns of structures.csv for the structure methods asked for, in the order cna,
-/// acna, bpa, dia: <method>_<structure> for each structure, then <method>_<structure>_fraction
-/// (dia: cubic, cubic_first, cubic_second, hexagonal, hexagonal_first, hexagonal_second, other);
+/// acna, bpa, dia: <method>_<structure>_count for each structure, then <method>_<structure>_fraction
+/// (pure numbers, docs/conventions.md; dia: cubic, cubic_first, cubic_second, hexagonal,
+/// hexagonal_first, hexagonal_second, other);
 /// with an excess energy, then excess_reference_eV (e0) and excess_mean_eV (over all atoms).
 std::vector<std::string> structure_count_columns(const StructureAnalyses& analyses);
 /// Their values for one frame's result (the same order).
