@@ -47,6 +47,18 @@ struct Prepared {
   std::vector<std::string> notes;  ///< logged when the run starts
 };
 
+// What does not handle a tilted cell yet (issue 18's step 4: fix deform tilt rates, npt tri):
+// anything that changes the box or moves a face along an axis.
+void refuse_with_tilt(const StageSpec& s, const Config& stage, const geometry::Box& box) {
+  const std::string tilt = fmt::format("a triclinic box (tilt {} {} {})", box.tilt[0], box.tilt[1], box.tilt[2]);
+  if (s.ensemble == "npt" || s.ensemble == "msst" || s.ensemble == "nphug")
+    stage.fail("ensemble", fmt::format("{} is not supported in {} yet: use nve, langevin, nvt or minimize", s.ensemble, tilt));
+  if (s.ensemble == "minimize" && s.minimize.relax_box != std::array<bool, 3>{false, false, false})
+    stage.fail("relax_box", fmt::format("relaxing the box is not supported in {} yet", tilt));
+  if (s.piston) stage.fail("piston", fmt::format("a piston is not supported in {} yet", tilt));
+  if (s.deform_rate) stage.fail("deform_rate", fmt::format("deformation is not supported in {} yet", tilt));
+}
+
 // Masses and element names of the atom types. A mass: the case's masses = [...] (LAMMPS `mass`
 // after pair_coeff), else the potential file's (pair_coeff sets it, after read_data), else the
 // data file's; a data-file mass that differs from the potential's is reported. An element name:
@@ -100,6 +112,7 @@ Prepared prepare(const Config& root, const RunOptions& options) {
       stages[k].fail("group", e.what());
     }
     StageSpec& s = p.md.stages[k];
+    if (p.system.box.triclinic()) refuse_with_tilt(s, stages[k], p.system.box);
     if (s.ensemble == "msst")  // LAMMPS: "Fix msst requires a periodic box"
       for (int d = 0; d < 3; ++d)
         if (!p.system.box.periodic(d))
@@ -119,6 +132,10 @@ Prepared prepare(const Config& root, const RunOptions& options) {
       stages[k].fail(key, "npt needs at least one periodic dimension to barostat");
   }
   for (const auto& add : p.md.velocity_adds) p.add_groups.push_back(p.system.groups.find(add.group));
+  if (p.system.box.triclinic() && p.md.output.profile_every > 0)
+    root.table("output").fail("profile_every", fmt::format("binned profiles along an axis are not supported in a triclinic "
+                                                           "box (tilt {} {} {}) yet", p.system.box.tilt[0],
+                                                           p.system.box.tilt[1], p.system.box.tilt[2]));
   root.check_unknown_keys();
 
   const Vec3 l = p.system.box.length();
