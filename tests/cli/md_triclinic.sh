@@ -57,4 +57,25 @@ expect_error "$case_text
 deform_rate = [0.01, 0, 0]" "deform_rate" "triclinic box"
 expect_error "${case_text/thermo_every = 10/thermo_every = 10
 profile_every = 10}" "output" "profile_every" "triclinic box"
+# A crystal built into a tilted cell: fcc [1-10] [11-2] [111], 4 x 3 x 2 repeats, tilts 2.1 -3.3 1.7 Å
+# (the lattice test's LAMMPS peer: 144 atoms); a tilt beyond LAMMPS's limit is refused by key.
+lattice_case="method = \"md\"
+[system.lattice]
+style = \"fcc\"
+a0 = 3.615
+orient_x = [1, -1, 0]
+orient_y = [1, 1, -2]
+orient_z = [1, 1, 1]
+repeat = [4, 3, 2]
+tilt = [2.1, -3.3, 1.7]
+elements = [\"Cu\"]
+[potential]
+style = \"eam\"
+file = \"Cu_u3.eam\"
+[[stage]]
+steps = 10"
+run_expecting 0 "$lattice_case"
+grep -q "^144 atoms$" "$WORK/out/final.data" || fail "the tilted fcc has not 144 atoms: $(sed -n 3p "$WORK/out/final.data")"
+grep -q "^2.1 -3.3 1.7 xy xz yz$" "$WORK/out/final.data" || fail "final.data lost the tilt"
+expect_error "${lattice_case/tilt = \[2.1/tilt = [6.1}" "system.lattice.tilt" "tilt xy = 6.1 is beyond LAMMPS's limit"
 echo "md_triclinic: ok"
