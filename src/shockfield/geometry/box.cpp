@@ -142,7 +142,14 @@ bool Box::try_wrap_triclinic(Vec3& x, std::array<int, 3>& image) const {
     const double t = to_fractional(y)[d];  // round-off can leave y one step outside
     if (t < 0) y += edge(d), --n[d];
     if (t >= 1) y -= edge(d), ++n[d];
-    const double u = to_fractional(y)[d];
+    double u = to_fractional(y)[d];
+    if (u < 0 && u > -1e-12) {
+      // Still below the lo face by round-off: a point a few ulps from the face at x = lo + (tilt
+      // terms) can have no representable position inside; as LAMMPS's Domain::remap clamps lamda
+      // to lo, move it onto the face (by ~1e-12 of an edge at most).
+      y -= u * edge(d);
+      u = std::max(to_fractional(y)[d], 0.0);
+    }
     if (!(u >= 0 && u < 1)) return false;
   }
   x = y;

@@ -55,6 +55,19 @@ TEST(TriclinicBox, WrapSubtractsWholeEdgesAndKeepsTheUnwrappedPosition) {
   }
 }
 
+TEST(TriclinicBox, APointARoundOffBelowATiltedFaceIsPutOnIt) {
+  // Found by examples/md_triclinic_shear: x = -2.4e-19 Å at y = 5.3e-20 Å with xy > 0 has s_x
+  // ~ -1e-20; adding the edge rounds to s_x = 1, subtracting it gives s_x = -2.4e-23 again.
+  Box b;
+  b.hi = Vec3(21.69, 21.69, 21.69);
+  b.tilt = Vec3(0.2169, 0, 0);
+  Vec3 x(-2.3756505735724845e-19, 5.320193080506008e-20, 3.615);
+  std::array<int, 3> image{0, 0, 0};
+  ASSERT_TRUE(b.try_wrap(x, image));
+  EXPECT_GE(b.to_fractional(x).x(), 0.0);
+  EXPECT_LT(std::abs(x.x()), 1e-15);
+}
+
 TEST(TriclinicBox, MinimumImageIsLammpsReduction) {
   // LAMMPS's Domain::minimum_image brings each fractional component of a separation within one
   // half, c then b then a: check against that definition and that it is a lattice image.
