@@ -56,7 +56,8 @@ pressure = 0" "stage[0]" "ensemble" "npt is not supported in a triclinic box (ti
 expect_error "$case_text
 deform_rate = [0.01, 0, 0]" "deform_rate" "triclinic box"
 expect_error "${case_text/thermo_every = 10/thermo_every = 10
-profile_every = 10}" "output" "profile_every" "triclinic box"
+profile_every = 10
+profile_axis = \"x\"}" "output" "profile_axis" "profiles along x are not supported in a triclinic box"
 # A crystal built into a tilted cell: fcc [1-10] [11-2] [111], 4 x 3 x 2 repeats, tilts 2.1 -3.3 1.7 Å
 # (the lattice test's LAMMPS peer: 144 atoms); a tilt beyond LAMMPS's limit is refused by key.
 lattice_case="method = \"md\"
