@@ -5,7 +5,8 @@
 # the three shear pressures to 1e-8 relative (thermo.csv has 10 significant digits: 5e-10, plus the
 # growth of round-off over 100 steps of a hot, chaotic crystal); final.data keeps the tilt and is
 # read by LAMMPS read_data (when lmp is installed) and by shockfield; the dumps carry LAMMPS's
-# triclinic header; stages that change the box refuse a tilted one by key (exit 2).
+# triclinic header; npt and profiles along x refuse a tilted box by key (exit 2); fix deform tilt
+# rates follow LAMMPS; a crystal built into a tilted cell; simple shear gives LAMMPS's C44.
 source "$(dirname "$0")/lib.bash"
 set -e
 case_text="method = \"md\"
@@ -53,8 +54,6 @@ expect_error "$case_text
 ensemble = \"npt\"
 temperature = 300
 pressure = 0" "stage[0]" "ensemble" "npt is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
-expect_error "$case_text
-deform_rate = [0.01, 0, 0]" "deform_rate" "triclinic box"
 expect_error "${case_text/thermo_every = 10/thermo_every = 10
 profile_every = 10
 profile_axis = \"x\"}" "output" "profile_axis" "profiles along x are not supported in a triclinic box"
@@ -79,6 +78,43 @@ run_expecting 0 "$lattice_case"
 grep -q "^144 atoms$" "$WORK/out/final.data" || fail "the tilted fcc has not 144 atoms: $(sed -n 3p "$WORK/out/final.data")"
 grep -q "^2.1 -3.3 1.7 xy xz yz$" "$WORK/out/final.data" || fail "final.data lost the tilt"
 expect_error "${lattice_case/tilt = \[2.1/tilt = [6.1}" "system.lattice.tilt" "tilt xy = 6.1 is beyond LAMMPS's limit"
+# Tilt rates: 200 NVE steps of Cu under deform_rate x 0.01 and deform_tilt_rate 0.05 -0.03 0.02
+# (1/ps) follow LAMMPS's fix deform ... remap x (fixtures/lammps_triclinic/deform.thermo) in T, pe,
+# ke, etotal, press, pxy pxz pyz to 1e-8 (thermo.csv's 10 digits plus 200 steps of round-off
+# growth), and the final tilts equal LAMMPS's to 1e-12 Å.
+fixture="$ROOT/tests/fixtures/lammps_triclinic"
+run_expecting 0 "method = \"md\"
+[system]
+data_file = \"$fixture/deform_start.data\"
+[potential]
+style = \"eam\"
+file = \"Cu_u3.eam\"
+[md]
+timestep = 0.001
+skin = 1.0
+[output]
+thermo_every = 20
+[[stage]]
+steps = 200
+deform_rate = [0.01, 0, 0]
+deform_tilt_rate = [0.05, -0.03, 0.02]"
+/usr/bin/python3 - "$WORK/out/thermo.csv" "$fixture/deform.thermo" "$WORK/out/final.data" <<'PY'
+import csv, sys
+ours = {int(r["step"]): r for r in csv.DictReader(open(sys.argv[1]))}
+names = ["temperature_K", "pe_eV", "ke_eV", "etotal_eV", "press_bar", "pxy_bar", "pxz_bar", "pyz_bar", "lx_A"]
+worst, last = 0.0, None
+for line in open(sys.argv[2]):
+    step, *values = line.split()
+    row, last = ours[int(step)], [float(v) for v in values]
+    for name, ref in zip(names, last):
+        scale = 1e4 if name.startswith("p") else max(abs(ref), 1.0)  # pressures: of the 1e4 bar scale
+        worst = max(worst, abs(float(row[name]) - ref) / scale)
+tilt = next([float(w) for w in l.split()[:3]] for l in open(sys.argv[3]) if l.rstrip().endswith("xy xz yz"))
+tilt_error = max(abs(a - b) for a, b in zip(tilt, last[-3:]))
+print(f"fix deform with tilt rates: largest deviation from LAMMPS {worst:.2e}; final tilts {tilt} (LAMMPS {last[-3:]}, {tilt_error:.1e} A)")
+sys.exit(0 if worst < 1e-8 and tilt_error < 1e-12 else "FAIL: deform_tilt_rate deviates from LAMMPS fix deform")
+PY
+
 # Simple shear carried by the tilt (examples/md_triclinic_shear): at gamma = 0.005 the shear stress
 # over gamma is LAMMPS's C44 of Cu_u3 (76.448 GPa, fixtures/lammps_elastic, strain 1e-3) within
 # 2e-4 relative (the next term of sigma(gamma) is cubic, ~6e-5 at this strain by the example's
