@@ -114,6 +114,11 @@ tilt_error = max(abs(a - b) for a, b in zip(tilt, last[-3:]))
 print(f"fix deform with tilt rates: largest deviation from LAMMPS {worst:.2e}; final tilts {tilt} (LAMMPS {last[-3:]}, {tilt_error:.1e} A)")
 sys.exit(0 if worst < 1e-8 and tilt_error < 1e-12 else "FAIL: deform_tilt_rate deviates from LAMMPS fix deform")
 PY
+# Stopped at step 110 and resumed (box tilt and the fix's start tilt from the checkpoint): the same
+# thermo.csv and final.data, byte for byte, as the uninterrupted run.
+stop_then_resume "$WORK/case.toml" "$WORK/resumed" 110
+same_files "$WORK/out" "$WORK/resumed" thermo.csv final.data
+echo "ok: the tilted, deforming run resumed from its checkpoint equals the uninterrupted one"
 
 # Simple shear carried by the tilt (examples/md_triclinic_shear): at gamma = 0.005 the shear stress
 # over gamma is LAMMPS's C44 of Cu_u3 (76.448 GPa, fixtures/lammps_elastic, strain 1e-3) within
