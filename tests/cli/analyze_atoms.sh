@@ -123,10 +123,10 @@ rejected "has no atoms" -- "$WORK/empty.dump"
 # a truncated file: the second frame stops half-way; no output at all, not even the first frame's
 { cat "$F/cu_fcc_perfect.dump"; head -100 "$F/cu_fcc_perfect.dump"; } > "$WORK/truncated.dump"
 rejected "truncated.dump" -- "$WORK/truncated.dump"
-# a triclinic box, refused by name
+# a triclinic box tilted beyond LAMMPS's limit (xy = 10 in bounds 14.46 wide: lx = 4.46), refused by name
 sed 's/^ITEM: BOX BOUNDS pp pp pp/ITEM: BOX BOUNDS xy xz yz pp pp pp/' "$F/cu_fcc_perfect.dump" |
-  awk 'NR >= 6 && NR <= 8 { print $0, 0; next } { print }' > "$WORK/triclinic.dump"
-rejected "triclinic box" -- "$WORK/triclinic.dump"
+  awk 'NR == 6 { print $0, 10; next } NR >= 7 && NR <= 8 { print $0, 0; next } { print }' > "$WORK/triclinic.dump"
+rejected "tilt xy = 10 is beyond LAMMPS's limit" -- "$WORK/triclinic.dump"
 head -c 800 "$WORK/cu.dump.gz" > "$WORK/cut.dump.gz"  # the whole file is ~1.7 kB
 rejected "cut.dump.gz: gzip -dc failed: not a gzip file, or a truncated or corrupt one" -- "$WORK/cut.dump.gz"
 rejected "--csp: expected fcc, bcc or an even neighbour count" -- "$F/cu_fcc_perfect.dump" --csp 7

@@ -100,9 +100,9 @@ rejected "nan.xyz:12: expected property column 'y' (a finite number), got 'nan'"
 # a count that is not a number
 sed '1s/256/many/' "$WORK/one.xyz" > "$WORK/count.xyz"
 rejected "count.xyz:1: expected the number of atoms of a frame (an integer), got 'many'" -- "$WORK/count.xyz"
-# a non-orthogonal lattice, refused by name
+# a general (not restricted) triclinic lattice, refused by name
 sed '2s/Lattice="\([^ ]*\) 0 0/Lattice="\1 0.5 0/' "$WORK/one.xyz" > "$WORK/tri.xyz"
-rejected "tri.xyz:2: a non-orthogonal (triclinic) Lattice" -- "$WORK/tri.xyz"
+rejected "is a general triclinic cell" -- "$WORK/tri.xyz"
 # duplicate ids from an id property: the frame's count line is named
 awk 'NR == 2 { sub(/c_csp:R:1/, "c_csp:R:1:id:I:1") } NR > 2 { $0 = $0 " " (NR == 9 ? 1 : NR - 2) } { print }' "$WORK/one.xyz" > "$WORK/dup.xyz"
 rejected "dup.xyz:1 (timestep 7): atom id 1 appears twice" -- "$WORK/dup.xyz"

@@ -51,9 +51,9 @@ Target eam_target(const Context& c, const std::string& name, const fs::path& inp
 }
 
 // Every mutant of `input` runs the case tests/fixtures/fuzz/cases/<case_template> with @FILE@ its path.
-Target template_target(const Context& c, const std::string& name, const fs::path& input,
+Target template_target(const Context& c, const std::string& name, const std::vector<fs::path>& inputs,
                        const std::string& case_template) {
-  return {name, {input}, false, false, "case.toml", [c, case_template](const fs::path& file, const fs::path& work) {
+  return {name, inputs, false, false, "case.toml", [c, case_template](const fs::path& file, const fs::path& work) {
             const std::string text = read_text(c.source / "tests/fixtures/fuzz/cases" / case_template);
             write_text(work / "case.toml", replace_all(text, "@FILE@", file.string()));
             return run_case(c, work / "case.toml", work, {});
@@ -192,13 +192,21 @@ std::vector<fs::path> material_inputs(const Context& c) {
   return {dir / "mpm_cu.toml", dir / "pd_cu.toml"};
 }
 
-// Extended XYZ: the LAMMPS fixture fe_bcc_perfect written by ASE (ids from the file order).
+// Extended XYZ: the LAMMPS fixture fe_bcc_perfect written by ASE (ids from the file order), and
+// a sheared fcc in a triclinic cell (Lattice with tilts).
 std::vector<fs::path> extxyz_inputs(const Context& c) {
-  return {c.source / "tests/fixtures/fuzz/inputs/atoms/fe_bcc_perfect.xyz"};
+  return {c.source / "tests/fixtures/fuzz/inputs/atoms/fe_bcc_perfect.xyz",
+          c.source / "tests/fixtures/fuzz/inputs/atoms/cu_fcc_tilted.xyz"};
 }
 
+// LAMMPS dumps and data files, orthogonal and triclinic (xy xz yz).
 std::vector<fs::path> dump_inputs(const Context& c) {
-  return {c.source / "tests/fixtures/io/dump_fcc.lammpstrj", c.source / "tests/fixtures/lammps/cu_u3_thermal.dump"};
+  return {c.source / "tests/fixtures/io/dump_fcc.lammpstrj", c.source / "tests/fixtures/lammps/cu_u3_thermal.dump",
+          c.source / "tests/fixtures/io/dump_triclinic.lammpstrj"};
+}
+
+std::vector<fs::path> data_inputs(const Context& c) {
+  return {c.source / "tests/fixtures/io/data_fcc.data", c.source / "tests/fixtures/io/data_triclinic.data"};
 }
 
 // The parser-only driver (no --shockfield): every parser it links, in-process. The case target
@@ -210,7 +218,7 @@ std::vector<Target> parser_targets(const Context& c) {
           in_process(c, "eam_setfl", {kPotentials / "CuNi.eam.alloy"}, parse_eam),
           in_process(c, "eam_fs", {kPotentials / "NiAlH_jea.eam.fs"}, parse_eam),
           in_process(c, "pair_table", {pair_table_input(c)}, parse_pair_table),
-          in_process(c, "data", {c.source / "tests/fixtures/io/data_fcc.data"}, parse_data),
+          in_process(c, "data", data_inputs(c), parse_data),
           in_process(c, "dump", dump_inputs(c), parse_dump),
           in_process(c, "extxyz", extxyz_inputs(c), parse_extxyz),
           in_process(c, "field", field_inputs(c), parse_field),
@@ -246,8 +254,8 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
   t.push_back(eam_target(c, "eam_funcfl", kPotentials / "Cu_u3.eam", {"eam", "Cu", "3.615", false}));
   t.push_back(eam_target(c, "eam_setfl", kPotentials / "CuNi.eam.alloy", {"eam/alloy", "Cu", "3.615", true}));
   t.push_back(eam_target(c, "eam_fs", kPotentials / "NiAlH_jea.eam.fs", {"eam/fs", "Ni", "3.52", true}));
-  t.push_back(template_target(c, "pair_table", pair_table_input(c), "pair_table.toml"));
-  t.push_back(template_target(c, "data", c.source / "tests/fixtures/io/data_fcc.data", "data.toml"));
+  t.push_back(template_target(c, "pair_table", {pair_table_input(c)}, "pair_table.toml"));
+  t.push_back(template_target(c, "data", data_inputs(c), "data.toml"));
   t.push_back(in_process(c, "dump", dump_inputs(c), parse_dump));
   t.push_back(in_process(c, "extxyz", extxyz_inputs(c), parse_extxyz));
   t.push_back(in_process(c, "field", field_inputs(c), parse_field));

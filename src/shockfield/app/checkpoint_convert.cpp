@@ -121,7 +121,7 @@ void write_md_data(const io::CheckpointReader& checkpoint, const fs::path& out) 
   const std::vector<double> x = h5.read_doubles("position"), v = h5.read_doubles("velocity");
   const std::vector<double> box = h5.read_doubles("box");
   const std::size_t n = id.size();
-  if (type.size() != n || image.size() != 3 * n || x.size() != 3 * n || v.size() != 3 * n || box.size() != 6)
+  if (type.size() != n || image.size() != 3 * n || x.size() != 3 * n || v.size() != 3 * n || (box.size() != 6 && box.size() != 9))
     throw InputError(fmt::format("{}: datasets id, type, image, position, velocity, box do not describe {} atoms", file, n));
   md::Atoms atoms;
   atoms.mass = h5.read_doubles("type_mass");
@@ -139,6 +139,7 @@ void write_md_data(const io::CheckpointReader& checkpoint, const fs::path& out) 
   geometry::Box b;
   b.lo = Vec3(box[0], box[1], box[2]);
   b.hi = Vec3(box[3], box[4], box[5]);
+  if (box.size() == 9) b.tilt = Vec3(box[6], box[7], box[8]);  // a triclinic run: lo, hi, xy xz yz
   const std::string codes = h5.string_attribute("boundary");
   if (codes.size() != 3) throw InputError(fmt::format("{}: attribute 'boundary' = '{}', expected 3 codes", file, codes));
   for (int d = 0; d < 3; ++d)

@@ -1,5 +1,9 @@
 #pragma once
-// Orthogonal simulation box with per-dimension boundaries, LAMMPS style:
+// Simulation box with per-dimension boundaries, LAMMPS style, orthogonal or LAMMPS's restricted
+// triclinic cell: edge vectors a = (lx, 0, 0), b = (xy, ly, 0), c = (xz, yz, lz) from the
+// corner lo, with lx = hi.x - lo.x etc. (lo and hi are LAMMPS's boxlo/boxhi, not the bounding
+// box) and tilt = (xy, xz, yz). A point is x = lo + h s with h = [a b c] and fractional (LAMMPS
+// "lamda") coordinates s in [0, 1)^3 inside the box. Boundaries:
 //   p  periodic: atoms wrap, ghost images carry interactions across the faces;
 //   f  fixed: the face does not move, an atom that leaves is lost (an error);
 //   s  shrink-wrapped: the face follows the outermost atom at every neighbour rebuild.
@@ -21,8 +25,30 @@ struct Box {
   Vec3 hi = Vec3::Ones();
   std::array<Boundary, 3> boundary{Boundary::periodic, Boundary::periodic, Boundary::periodic};
 
+  /// Tilt factors (xy, xz, yz); zero for an orthogonal box.
+  Vec3 tilt = Vec3::Zero();
+
   Vec3 length() const { return hi - lo; }
+  /// lx ly lz, which is det h for a triclinic cell too.
   double volume() const { const Vec3 l = length(); return l.x() * l.y() * l.z(); }
+  bool triclinic() const { return tilt.x() != 0 || tilt.y() != 0 || tilt.z() != 0; }
+  /// Edge vector d of the cell (a, b or c).
+  Vec3 edge(int d) const;
+  /// n0 a + n1 b + n2 c: the displacement of periodic image n (image counts as in LAMMPS).
+  Vec3 lattice_shift(const std::array<int, 3>& n) const;
+  /// Fractional coordinates s = h^-1 (x - lo) of a position.
+  Vec3 to_fractional(const Vec3& x) const;
+  /// h^-1 r: the fractional components of a displacement.
+  Vec3 fractional_vector(const Vec3& r) const;
+  /// The position lo + h s of fractional coordinates s.
+  Vec3 from_fractional(const Vec3& s) const;
+  /// Distance between the two faces spanned by the other two edges, for each edge d: the
+  /// thickness of the cell along the face normal (LAMMPS measures ghost cutoffs along it).
+  /// Equals length() for an orthogonal box.
+  Vec3 face_distances() const;
+  /// Corners of the axis-aligned bounding box (the "xlo_bound xhi_bound" of LAMMPS dumps).
+  Vec3 bound_lo() const;
+  Vec3 bound_hi() const;
   bool periodic(int d) const { return boundary[d] == Boundary::periodic; }
   bool contains(const Vec3& x) const;
   /// Maps x into the box along periodic dimensions and updates its image counts, in constant
@@ -31,10 +57,28 @@ struct Box {
   [[nodiscard]] bool try_wrap(Vec3& x, std::array<int, 3>& image) const;
   /// try_wrap(), throwing RunError (the run blew up) when it fails.
   void wrap(Vec3& x, std::array<int, 3>& image) const;
-  /// Shortest periodic image of a separation vector.
+  /// Shortest periodic image of a separation vector (for a triclinic cell as LAMMPS's
+  /// Domain::minimum_image: the c, b, a image in turn that brings each fractional component
+  /// within one half).
   Vec3 minimum_image(Vec3 d) const;
   /// "ppf"-style code, for messages and files.
   std::string boundary_codes() const;
+  /// Checks a triclinic cell against LAMMPS's limits (each tilt at most half the edge it skews
+  /// along, |xy|, |xz| <= lx / 2 and |yz| <= ly / 2; a skewed dimension periodic: xy needs y
+  /// periodic, xz and yz need z periodic); throws InputError starting with `where`.
+  void check_tilt(const std::string& where) const;
+
+ private:
+  bool try_wrap_triclinic(Vec3& x, std::array<int, 3>& image) const;
 };
+
+/// Throws InputError "<what> needs an orthogonal box; ..." for a triclinic box (the methods that
+/// grid or bin along the axes and have not learnt tilted cells yet).
+void require_orthogonal(const Box& box, const std::string& what);
+
+/// The box whose bounding box and tilt a LAMMPS dump gives ("ITEM: BOX BOUNDS xy xz yz": lines
+/// "xlo_bound xhi_bound xy", "ylo_bound yhi_bound xz", "zlo_bound zhi_bound yz").
+Box box_from_bounds(const Vec3& bound_lo, const Vec3& bound_hi, const Vec3& tilt,
+                    const std::array<Boundary, 3>& boundary);
 
 }  // namespace shockfield::geometry

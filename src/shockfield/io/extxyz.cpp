@@ -39,9 +39,9 @@ void write_extxyz_frame(std::ostream& out, const DumpFrame& frame, const std::ve
 
   fmt::memory_buffer buf;
   auto it = std::back_inserter(buf);
-  const Vec3 l = frame.box.length();
-  fmt::format_to(it, "{}\nLattice=\"{} 0 0 0 {} 0 0 0 {}\" Origin=\"{} {} {}\" Properties=species:S:1:pos:R:3", n,
-                 l.x(), l.y(), l.z(), frame.box.lo.x(), frame.box.lo.y(), frame.box.lo.z());
+  const Vec3 l = frame.box.length(), t = frame.box.tilt;  // cell vectors a, b, c (restricted triclinic)
+  fmt::format_to(it, "{}\nLattice=\"{} 0 0 {} {} 0 {} {} {}\" Origin=\"{} {} {}\" Properties=species:S:1:pos:R:3", n,
+                 l.x(), t.x(), l.y(), t.y(), t.z(), l.z(), frame.box.lo.x(), frame.box.lo.y(), frame.box.lo.z());
   for (const Property& p : props) fmt::format_to(it, ":{}:{}:{}", p.name, p.kind, p.columns.size());
   fmt::format_to(it, " pbc=\"{} {} {}\" Timestep={}", frame.box.periodic(0) ? 'T' : 'F',
                  frame.box.periodic(1) ? 'T' : 'F', frame.box.periodic(2) ? 'T' : 'F', frame.timestep);

@@ -2,7 +2,7 @@
 // Extended XYZ writer and reader (the format of ASE and OVITO, https://github.com/libAtoms/extxyz):
 //
 //   <N>
-//   Lattice="Lx 0 0 0 Ly 0 0 0 Lz" Origin="xlo ylo zlo" Properties=species:S:1:pos:R:3:... pbc="T T F" Timestep=<n>
+//   Lattice="Lx 0 0 xy Ly 0 xz yz Lz" Origin="xlo ylo zlo" Properties=species:S:1:pos:R:3:... pbc="T T F" Timestep=<n>
 //   <species> <x> <y> <z> ...
 //
 // A frame of per-atom columns (the same DumpFrame as the LAMMPS dump writer) is mapped to
@@ -25,8 +25,9 @@ void write_extxyz_frame(std::ostream& out, const DumpFrame& frame, const std::ve
                         const DumpWriteOptions& options = {});
 
 /// Reads every frame of an extended XYZ file (one frame or many, back to back) as dump frames:
-///  - the comment line's `Lattice="ax ay az bx by bz cx cy cz"` must be orthogonal (a, b, c along
-///    x, y, z); a non-orthogonal lattice is refused by name. `Origin="x y z"` (OVITO) is the box's
+///  - the comment line's `Lattice="ax ay az bx by bz cx cy cz"` must be orthogonal or LAMMPS's
+///    restricted triclinic cell (a along x, b in the xy plane: tilts xy = bx, xz = cx, yz = cy,
+///    within LAMMPS's limits); a general cell is refused by name. `Origin="x y z"` (OVITO) is the box's
 ///    lo corner (default 0 0 0). Without a Lattice every axis is shrink-wrapped around the atoms.
 ///  - `pbc="T T F"` (default T T T with a Lattice, F F F without): T → periodic "pp", F →
 ///    shrink-wrapped "ss" (extended XYZ does not tell a fixed wall from a free surface);

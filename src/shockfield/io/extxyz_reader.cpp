@@ -154,16 +154,17 @@ std::vector<RowColumn> read_comment(const LineReader& r, PendingFrame& p, long l
   if (!p.has_lattice && (periodic[0] || periodic[1] || periodic[2]))
     r.fail("pbc has a periodic axis but the comment line has no Lattice (the periodic box)");
   if (p.has_lattice) {
+    // LAMMPS's restricted triclinic cell: a = (lx, 0, 0), b = (xy, ly, 0), c = (xz, yz, lz).
     double scale = 0;
     for (double v : lattice) scale = std::max(scale, std::abs(v));
-    for (int a = 0; a < 3; ++a)
-      for (int d = 0; d < 3; ++d)
-        if (a != d && std::abs(lattice[static_cast<std::size_t>(3 * a + d)]) > 1e-12 * scale)
-          r.fail(fmt::format("a non-orthogonal (triclinic) Lattice=\"{}\" is not supported: shockfield boxes are "
-                             "orthogonal, with the cell vectors along x, y and z",
-                             fmt::join(lattice, " ")));
+    const auto component = [&](int vector, int d) { return lattice[static_cast<std::size_t>(3 * vector + d)]; };
+    if (std::abs(component(0, 1)) > 1e-12 * scale || std::abs(component(0, 2)) > 1e-12 * scale ||
+        std::abs(component(1, 2)) > 1e-12 * scale)
+      r.fail(fmt::format("Lattice=\"{}\" is a general triclinic cell: shockfield (as LAMMPS) needs the restricted "
+                         "form, the first cell vector along x and the second in the xy plane (ay = az = bz = 0); "
+                         "rotate the cell and the atoms first", fmt::join(lattice, " ")));
     for (int d = 0; d < 3; ++d) {
-      const double length = lattice[static_cast<std::size_t>(4 * d)];
+      const double length = component(d, d);
       if (!(length > 0))
         r.fail(fmt::format("Lattice: cell vector {} has length {} along {}; expected > 0", d + 1, length, "xyz"[d]));
       f.box.lo[d] = origin[static_cast<std::size_t>(d)];
@@ -172,10 +173,21 @@ std::vector<RowColumn> read_comment(const LineReader& r, PendingFrame& p, long l
         r.fail(fmt::format("Lattice and Origin: the box along {} is too small for its position ({} + {})", "xyz"[d],
                            f.box.lo[d], length));
     }
+    // Off-diagonal entries below the round-off floor are zero: the box stays orthogonal.
+    const auto tilt = [&](int vector, int d) {
+      const double v = component(vector, d);
+      return std::abs(v) > 1e-12 * scale ? v : 0.0;
+    };
+    f.box.tilt = Vec3(tilt(1, 0), tilt(2, 0), tilt(2, 1));
   }
   for (int d = 0; d < 3; ++d) {
     f.box.boundary[d] = periodic[static_cast<std::size_t>(d)] ? geometry::Boundary::periodic : geometry::Boundary::shrink;
     f.bounds[static_cast<std::size_t>(d)] = periodic[static_cast<std::size_t>(d)] ? "pp" : "ss";
+  }
+  try {
+    f.box.check_tilt("Lattice");
+  } catch (const InputError& e) {
+    r.fail(e.what());
   }
   return property_columns(r, properties);
 }

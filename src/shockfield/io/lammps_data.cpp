@@ -99,8 +99,12 @@ class DataReader {
         r_.fail(fmt::format("expected {0}lo < {0}hi with a finite length, got {1} {2}", w[2][0],
                             out_.box.lo[d], out_.box.hi[d]));
       have_box[d] = true;
-    } else if (w.size() == 6 && w[3] == "xy") {
-      r_.fail("triclinic box (xy xz yz) is not supported: shockfield boxes are orthogonal");
+    } else if (w.size() == 6 && w[3] == "xy" && w[4] == "xz" && w[5] == "yz") {  // LAMMPS read_data
+      static const char* names[3] = {"xy", "xz", "yz"};
+      for (int k = 0; k < 3; ++k) {
+        out_.box.tilt[k] = r_.to_double(w[k], names[k]);
+        if (!std::isfinite(out_.box.tilt[k])) r_.fail(fmt::format("expected a finite tilt factor {}", names[k]));
+      }
     } else if ((w.size() == 2 && (w[1] == "bonds" || w[1] == "angles" || w[1] == "dihedrals" || w[1] == "impropers")) ||
                (w.size() == 3 && w[2] == "types")) {
       if (r_.to_int(w[0], "a count") != 0)
@@ -120,6 +124,7 @@ class DataReader {
     if (ntypes_ < 0) missing("N atom types");
     for (int d = 0; d < 3; ++d)
       if (!have_box[d]) missing(fmt::format("{0}lo {0}hi", axis_name[d]));
+    out_.box.check_tilt(fmt::format("{}: the 'xy xz yz' header line", r_.name()));
     out_.atoms.mass.assign(static_cast<std::size_t>(ntypes_), 0.0);
     out_.atoms.type_names.assign(static_cast<std::size_t>(ntypes_), "");
   }
@@ -192,9 +197,12 @@ class DataReader {
     }
     const geometry::Box& box = out_.box;
     const Vec3 margin = geometry::shrink_margin(box);  // LAMMPS grows shrink-wrapped dimensions by it first
+    // A triclinic cell is bounded by its faces: compare fractional coordinates with [0, 1].
+    const Vec3 s = box.triclinic() ? box.to_fractional(x) : x;
+    const Vec3 lo = box.triclinic() ? Vec3::Zero() : box.lo, hi = box.triclinic() ? Vec3::Ones() : box.hi;
     for (int d = 0; d < 3; ++d) {
       const double pad = box.boundary[d] == geometry::Boundary::shrink ? margin[d] : 0.0;
-      if (!box.periodic(d) && (x[d] < box.lo[d] - pad || x[d] > box.hi[d] + pad))
+      if (!box.periodic(d) && (s[d] < lo[d] - pad || s[d] > hi[d] + pad))
         r_.fail(fmt::format("atom {} at {} = {} is outside the non-periodic box {}lo {}hi = [{}, {}]{}",
                             id, axis_name[d], x[d], axis_name[d], axis_name[d], box.lo[d], box.hi[d],
                             pad > 0 ? fmt::format(" (shrink-wrapped: {} Å of margin on each side)", pad) : ""));
@@ -254,6 +262,7 @@ void write_data(const std::filesystem::path& file, const geometry::Box& box_in, 
   fmt::format_to(it, "{}\n\n{} atoms\n{} atom types\n\n", options.title, atoms.nlocal, atoms.ntypes());
   for (int d = 0; d < 3; ++d)
     fmt::format_to(it, "{} {} {}lo {}hi\n", box.lo[d], box.hi[d], axis_name[d], axis_name[d]);
+  if (box.triclinic()) fmt::format_to(it, "{} {} {} xy xz yz\n", box.tilt[0], box.tilt[1], box.tilt[2]);
   fmt::format_to(it, "\nMasses\n\n");
   for (int t = 0; t < atoms.ntypes(); ++t) {
     const auto ut = static_cast<std::size_t>(t);

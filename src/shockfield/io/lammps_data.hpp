@@ -1,17 +1,19 @@
 #pragma once
-// LAMMPS data files, atom style atomic (`read_data` / `write_data`), orthogonal boxes.
+// LAMMPS data files, atom style atomic (`read_data` / `write_data`), orthogonal or triclinic
+// boxes.
 //
 //   <title line>
 //   N atoms
 //   M atom types
 //   xlo xhi / ylo yhi / zlo zhi
+//   xy xz yz                    tilt factors (optional; a restricted triclinic box, LAMMPS's limits)
 //   Masses                      type mass [# element]
 //   Atoms # atomic              id type x y z [ix iy iz]
 //   Velocities                  id vx vy vz      (optional)
 //
 // `#` starts a comment anywhere; blank lines are ignored. "Pair Coeffs" / "PairIJ Coeffs"
-// sections are skipped (the force field comes from the case file); other sections, bonds and
-// triclinic boxes are rejected. As in LAMMPS read_data, atoms outside a periodic box are remapped
+// sections are skipped (the force field comes from the case file); other sections and bonds
+// are rejected. As in LAMMPS read_data, atoms outside a periodic box are remapped
 // into it (image flags updated) and atoms outside a non-periodic box are an error, where a
 // shrink-wrapped dimension first grows by LAMMPS's margin, 1e-4 × its length on each side
 // (Domain::set_initial_box). Every error names the file, the line and what was expected.

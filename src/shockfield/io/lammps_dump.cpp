@@ -76,10 +76,10 @@ std::vector<Vec3> DumpFrame::positions() const {
     std::vector<Vec3> out(natoms());
     for (int d = 0; d < 3; ++d) {
       const auto& c = column(names[d]);
-      const bool scaled = s == 2;
-      for (std::size_t i = 0; i < c.size(); ++i)
-        out[i][d] = scaled ? box.lo[d] + c[i] * (box.hi[d] - box.lo[d]) : c[i];
+      for (std::size_t i = 0; i < c.size(); ++i) out[i][d] = c[i];
     }
+    if (s == 2)  // scaled: x = lo + h s
+      for (auto& x : out) x = box.from_fractional(x);
     return out;
   }
   throw InputError(fmt::format("{} has no positions (x y z, xu yu zu or "
@@ -109,9 +109,7 @@ std::function<double(std::size_t)> atom_field(const std::string& field, const ge
   if (field.size() == 1 && axis(field[0]) >= 0)  // x y z
     return [&, d = axis(field[0])](std::size_t i) { return atoms.x[i][d]; };
   if (field.size() == 2 && field[1] == 'u' && axis(field[0]) >= 0)  // xu yu zu: unwrapped
-    return [&, d = axis(field[0])](std::size_t i) {
-      return atoms.x[i][d] + atoms.image[i][d] * (box.hi[d] - box.lo[d]);
-    };
+    return [&, d = axis(field[0])](std::size_t i) { return atoms.x[i][d] + box.lattice_shift(atoms.image[i])[d]; };
   if (field.size() == 2 && axis(field[1]) >= 0) {
     const int d = axis(field[1]);
     if (field[0] == 'i') return [&, d](std::size_t i) { return double(atoms.image[i][d]); };
@@ -160,24 +158,46 @@ geometry::Boundary boundary_from_code(const LineReader& r, std::string_view code
 
 void read_box(LineReader& r, DumpFrame& frame) {
   const auto words = r.words();  // ITEM: BOX BOUNDS [xy xz yz] [codes...]
-  const std::vector<std::string> codes(words.begin() + 3, words.end());
-  if (std::find(codes.begin(), codes.end(), "xy") != codes.end())
-    r.fail("triclinic box (xy xz yz) is not supported: shockfield boxes are orthogonal");
+  std::vector<std::string> codes(words.begin() + 3, words.end());
+  const bool triclinic = !codes.empty() && codes.front() == "xy";
+  if (triclinic) {
+    if (codes.size() < 3 || codes[1] != "xz" || codes[2] != "yz")
+      r.fail(fmt::format("expected 'xy xz yz' after BOX BOUNDS of a triclinic box, got '{}'", r.line()));
+    codes.erase(codes.begin(), codes.begin() + 3);
+  }
   if (!codes.empty() && codes.size() != 3)
     r.fail(fmt::format("expected three boundary codes after BOX BOUNDS (e.g. 'pp pp ff'), got {}", codes.size()));
   for (std::size_t d = 0; d < codes.size(); ++d) {
     frame.bounds[d] = codes[d];
     frame.box.boundary[d] = boundary_from_code(r, codes[d]);
   }
+  // A triclinic box gives its bounding box, each line with one tilt factor (LAMMPS's convention,
+  // https://docs.lammps.org/Howto_triclinic.html: "xlo_bound xhi_bound xy" and so on).
   static const char* axis = "xyz";
+  static const char* tilt_name[3] = {"xy", "xz", "yz"};
+  Vec3 lo, hi, tilt = Vec3::Zero();
   for (int d = 0; d < 3; ++d) {
-    r.require_next(fmt::format("the {0}lo {0}hi line of BOX BOUNDS", axis[d]));
+    const std::string line = triclinic ? fmt::format("{0}lo_bound {0}hi_bound {1}", axis[d], tilt_name[d])
+                                       : fmt::format("{0}lo {0}hi", axis[d]);
+    r.require_next(fmt::format("the {} line of BOX BOUNDS", line));
     const auto w = r.words();
-    if (w.size() != 2) r.fail(fmt::format("expected two numbers '{0}lo {0}hi', got {1} words", axis[d], w.size()));
-    frame.box.lo[d] = r.to_double(w[0], fmt::format("{}lo", axis[d]));
-    frame.box.hi[d] = r.to_double(w[1], fmt::format("{}hi", axis[d]));
+    const std::size_t expected = triclinic ? 3 : 2;
+    if (w.size() != expected)
+      r.fail(fmt::format("expected {} numbers '{}', got {} words", expected, line, w.size()));
+    lo[d] = r.to_double(w[0], fmt::format("{}lo", axis[d]));
+    hi[d] = r.to_double(w[1], fmt::format("{}hi", axis[d]));
+    if (triclinic) tilt[d] = r.to_double(w[2], tilt_name[d]);
+    if (!(lo[d] < hi[d])) r.fail(fmt::format("expected {0}lo < {0}hi, got {1} {2}", axis[d], lo[d], hi[d]));
+  }
+  frame.box = geometry::box_from_bounds(lo, hi, tilt, frame.box.boundary);
+  for (int d = 0; d < 3; ++d)
     if (!(frame.box.lo[d] < frame.box.hi[d]))
-      r.fail(fmt::format("expected {0}lo < {0}hi, got {1} {2}", axis[d], frame.box.lo[d], frame.box.hi[d]));
+      r.fail(fmt::format("the tilt factors ({}) leave no room in the {} bounds {} {} of the box", fmt::join(tilt, " "),
+                         axis[d], lo[d], hi[d]));
+  try {
+    frame.box.check_tilt("BOX BOUNDS");
+  } catch (const InputError& e) {
+    r.fail(e.what());
   }
 }
 
@@ -298,8 +318,15 @@ void write_dump_frame(std::ostream& out, const DumpFrame& frame, const DumpWrite
   if (!frame.units.empty()) fmt::format_to(it, "ITEM: UNITS\n{}\n", frame.units);
   if (frame.time) fmt::format_to(it, "ITEM: TIME\n{}\n", *frame.time);
   fmt::format_to(it, "ITEM: TIMESTEP\n{}\nITEM: NUMBER OF ATOMS\n{}\n", frame.timestep, n);
-  fmt::format_to(it, "ITEM: BOX BOUNDS {} {} {}\n", frame.bounds[0], frame.bounds[1], frame.bounds[2]);
-  for (int d = 0; d < 3; ++d) fmt::format_to(it, "{:.16e} {:.16e}\n", frame.box.lo[d], frame.box.hi[d]);
+  const geometry::Box& box = frame.box;
+  if (box.triclinic()) {  // LAMMPS DumpCustom::header_item_triclinic
+    fmt::format_to(it, "ITEM: BOX BOUNDS xy xz yz {} {} {}\n", frame.bounds[0], frame.bounds[1], frame.bounds[2]);
+    const Vec3 lo = box.bound_lo(), hi = box.bound_hi();
+    for (int d = 0; d < 3; ++d) fmt::format_to(it, "{:.16e} {:.16e} {:.16e}\n", lo[d], hi[d], box.tilt[d]);
+  } else {
+    fmt::format_to(it, "ITEM: BOX BOUNDS {} {} {}\n", frame.bounds[0], frame.bounds[1], frame.bounds[2]);
+    for (int d = 0; d < 3; ++d) fmt::format_to(it, "{:.16e} {:.16e}\n", box.lo[d], box.hi[d]);
+  }
   fmt::format_to(it, "ITEM: ATOMS {}\n", fmt::join(frame.columns, " "));
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t c = 0; c < frame.values.size(); ++c) {

@@ -1,9 +1,11 @@
 #pragma once
-// LAMMPS text dump files (`dump custom` / `dump atom` format), orthogonal boxes only.
+// LAMMPS text dump files (`dump custom` / `dump atom` format), orthogonal or triclinic boxes.
 //
 //   ITEM: TIMESTEP            one integer
 //   ITEM: NUMBER OF ATOMS     one integer
-//   ITEM: BOX BOUNDS pp pp ff three lines "lo hi" (triclinic "xy xz yz" boxes are rejected)
+//   ITEM: BOX BOUNDS pp pp ff three lines "lo hi"; a triclinic box "ITEM: BOX BOUNDS xy xz yz pp pp
+//                             pp" and three lines "lo_bound hi_bound tilt" (the bounding box, as
+//                             LAMMPS writes it; tilts beyond LAMMPS's limits are rejected)
 //   ITEM: ATOMS id type x y z ...   one row per atom, any columns
 //
 // Optional `ITEM: UNITS` and `ITEM: TIME` sections (dump_modify units/time yes) are read too, and

@@ -37,11 +37,7 @@ void Atoms::keep(const std::vector<bool>& flag) {
 }
 
 void Atoms::update_ghost_positions(const geometry::Box& box) {
-  const Vec3 length = box.length();
-  for (std::size_t g = 0; g < nghost(); ++g) {
-    const auto& im = ghost_image[g];
-    x[nlocal + g] = x[ghost_owner[g]] + Vec3(im[0] * length[0], im[1] * length[1], im[2] * length[2]);
-  }
+  for (std::size_t g = 0; g < nghost(); ++g) x[nlocal + g] = x[ghost_owner[g]] + box.lattice_shift(ghost_image[g]);
 }
 
 std::int64_t Atoms::max_id() const {

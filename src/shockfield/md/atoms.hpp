@@ -21,11 +21,11 @@ struct Atoms {
   std::vector<Vec3> v;                    ///< velocities
   std::vector<Vec3> f;                    ///< forces (owned + ghost while forces are summed)
   std::vector<std::int64_t> id;           ///< 1-based tags, unique
-  std::vector<std::array<int, 3>> image;  ///< periodic image counts (unwrapped = x + image·L)
+  std::vector<std::array<int, 3>> image;  ///< periodic image counts (unwrapped = x + image·h, h the cell edges)
   std::vector<std::uint32_t> mask;        ///< group membership bits; bit 0 = "all"
 
   // Ghost bookkeeping (size nghost): owner index and which periodic image of the owner the ghost
-  // is (ghost position = owner position + image·box length, so it follows box deformation).
+  // is (ghost position = owner position + image·h, h the cell edges, so it follows box deformation).
   std::vector<int> ghost_owner;
   std::vector<std::array<int, 3>> ghost_image;
 
@@ -45,7 +45,7 @@ struct Atoms {
   void clear_ghosts();
   /// Keeps the owned atoms whose flag is true, in order (ghosts must be cleared first).
   void keep(const std::vector<bool>& flag);
-  /// Moves the ghosts to their owners' current positions plus image·(box length).
+  /// Moves the ghosts to their owners' current positions plus image·h (Box::lattice_shift).
   void update_ghost_positions(const geometry::Box& box);
   /// Adds each ghost's value into its owner's value (size() entries in `values`).
   template <class T>

@@ -34,6 +34,7 @@ struct StageSpec {
   std::optional<std::array<bool, 3>> pressure_dims;  ///< npt barostatted dimensions; default: the periodic ones
   std::optional<PistonSpec> piston;
   std::optional<Vec3> deform_rate; ///< 1/ps per dimension
+  std::optional<Vec3> deform_tilt_rate;  ///< 1/ps per tilt factor xy, xz, yz (LAMMPS fix deform xy erate ...)
   MinimizeSettings minimize;
   MsstSettings msst;               ///< ensemble = "msst": the [stage.msst] table
   NphugSettings nphug;             ///< ensemble = "nphug": the [stage.nphug] table

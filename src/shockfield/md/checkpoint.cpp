@@ -22,13 +22,17 @@ std::vector<Vec3> unflatten(const std::vector<double>& flat) {
   return out;
 }
 
+// lo, hi, then the tilt factors xy xz yz for a triclinic box only (orthogonal files unchanged).
 std::vector<double> box_data(const geometry::Box& b) {
-  return {b.lo.x(), b.lo.y(), b.lo.z(), b.hi.x(), b.hi.y(), b.hi.z()};
+  std::vector<double> d{b.lo.x(), b.lo.y(), b.lo.z(), b.hi.x(), b.hi.y(), b.hi.z()};
+  if (b.triclinic()) d.insert(d.end(), {b.tilt.x(), b.tilt.y(), b.tilt.z()});
+  return d;
 }
 
 void set_box(geometry::Box& b, const std::vector<double>& d) {
   b.lo = Vec3(d.at(0), d.at(1), d.at(2));
   b.hi = Vec3(d.at(3), d.at(4), d.at(5));
+  b.tilt = d.size() >= 9 ? Vec3(d[6], d[7], d[8]) : Vec3::Zero();
 }
 
 // The datasets of fix k's state are named fix<k>_<fix>.<variable>.

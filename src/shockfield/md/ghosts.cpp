@@ -11,10 +11,11 @@ namespace shockfield::md {
 namespace {
 constexpr double kMaxGhostLayers = 8;
 
-// Number of image layers needed along periodic dimension d (0 when d is not periodic).
+// Number of image layers needed along periodic dimension d (0 when d is not periodic): the
+// cutoff over the cell's thickness between the faces d (its length for an orthogonal box).
 int image_layers(const geometry::Box& box, int d, double cutoff) {
   if (!box.periodic(d)) return 0;
-  const double length = box.hi[d] - box.lo[d];
+  const double length = box.triclinic() ? box.face_distances()[d] : box.hi[d] - box.lo[d];
   const double needed = std::ceil(cutoff / length);
   // Each layer copies every atom again: beyond a few layers the box is degenerate, not small.
   if (!(needed <= kMaxGhostLayers))
@@ -45,7 +46,15 @@ void append_images_along(Atoms& atoms, const geometry::Box& box, double cutoff, 
   const std::size_t nlocal = atoms.nlocal;
   const int passes = 2 * layers;       // pass p: layer p/2 + 1, side -1 (p even) or +1 (p odd)
   auto shift_of = [&](int p) { return (p % 2 == 0 ? -1 : 1) * (p / 2 + 1); };
+  // A triclinic cell selects in fractional coordinates, the cutoff measured along the face
+  // normal as LAMMPS's Comm::setup does (cutghost = cutoff / face distance in lamda units).
+  const bool triclinic = box.triclinic();
+  const double fractional_cutoff = cutoff / box.face_distances()[d];
   auto selected = [&](std::size_t i, int p) {
+    if (triclinic) {
+      const double s = box.to_fractional(atoms.x[i])[d] + shift_of(p);
+      return !(s < -fractional_cutoff || s >= 1 + fractional_cutoff);
+    }
     const double y = atoms.x[i][d] + shift_of(p) * length;
     return !(y < box.lo[d] - cutoff || y >= box.hi[d] + cutoff);
   };
@@ -73,7 +82,8 @@ void append_images_along(Atoms& atoms, const geometry::Box& box, double cutoff, 
     for (int p = 0; p < passes; ++p) {
       std::size_t k = n + slot[static_cast<std::size_t>(p * nthreads + t)];
       Vec3 shift = Vec3::Zero();
-      shift[d] = shift_of(p) * length;
+      if (triclinic) shift = shift_of(p) * box.edge(d);
+      else shift[d] = shift_of(p) * length;
       for (std::size_t i = begin; i < end; ++i) {
         if (!selected(i, p)) continue;
         const bool is_ghost = i >= nlocal;
@@ -95,7 +105,7 @@ void append_images_along(Atoms& atoms, const geometry::Box& box, double cutoff, 
 std::size_t ghost_capacity(std::size_t nlocal, const geometry::Box& box, double cutoff) {
   double factor = 1.05;
   for (int d = 0; d < 3; ++d)
-    if (box.periodic(d)) factor *= 1.0 + 2.0 * cutoff / (box.hi[d] - box.lo[d]);
+    if (box.periodic(d)) factor *= 1.0 + 2.0 * cutoff / box.face_distances()[d];
   return static_cast<std::size_t>(static_cast<double>(nlocal) * std::min(factor, 64.0)) + 64;
 }
 

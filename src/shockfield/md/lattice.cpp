@@ -143,19 +143,25 @@ void Lattice::for_each_site(const geometry::Box& box, const std::function<void(c
   const Mat3 to_fraction = cell_.inverse() * rotate_.transpose();
   Vec3 fmin = Vec3::Constant(INFINITY), fmax = Vec3::Constant(-INFINITY);
   for (int c = 0; c < 8; ++c) {
-    const Vec3 corner(c & 1 ? box.hi.x() : box.lo.x(), c & 2 ? box.hi.y() : box.lo.y(), c & 4 ? box.hi.z() : box.lo.z());
+    const Vec3 corner = box.triclinic() ? box.from_fractional(Vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1))
+                                        : Vec3(c & 1 ? box.hi.x() : box.lo.x(), c & 2 ? box.hi.y() : box.lo.y(),
+                                               c & 4 ? box.hi.z() : box.lo.z());
     const Vec3 f = to_fraction * corner;
     fmin = fmin.cwiseMin(f);
     fmax = fmax.cwiseMax(f);
   }
   // The half-open range a site must lie in, per axis (CreateAtoms::add_lattice; see lattice.hpp).
-  const Vec3 eps = 1e-6 * box.length();
+  // A triclinic cell compares fractional coordinates, ε = 10⁻⁶ in them (LAMMPS: EPSILON in lamda
+  // units); it has no shrink-wrapped dimension (Box::check_tilt).
+  const bool triclinic = box.triclinic();
+  const Vec3 eps = triclinic ? Vec3::Constant(1e-6) : Vec3(1e-6 * box.length());
   const Vec3 small = geometry::shrink_margin(box);
+  const Vec3 box_lo = triclinic ? Vec3::Zero() : box.lo, box_hi = triclinic ? Vec3::Ones() : box.hi;
   Vec3 lo_bound, hi_bound;
   for (int d = 0; d < 3; ++d) {
     switch (box.boundary[static_cast<std::size_t>(d)]) {
-      case geometry::Boundary::periodic: lo_bound[d] = box.lo[d] - eps[d], hi_bound[d] = box.hi[d] - 2 * eps[d]; break;
-      case geometry::Boundary::fixed: lo_bound[d] = box.lo[d] - eps[d], hi_bound[d] = box.hi[d] - eps[d]; break;
+      case geometry::Boundary::periodic: lo_bound[d] = box_lo[d] - eps[d], hi_bound[d] = box_hi[d] - 2 * eps[d]; break;
+      case geometry::Boundary::fixed: lo_bound[d] = box_lo[d] - eps[d], hi_bound[d] = box_hi[d] - eps[d]; break;
       case geometry::Boundary::shrink: lo_bound[d] = box.lo[d] - small[d], hi_bound[d] = box.hi[d] + small[d]; break;
     }
   }
@@ -170,13 +176,14 @@ void Lattice::for_each_site(const geometry::Box& box, const std::function<void(c
       for (cell[0] = lo[0]; cell[0] <= hi[0]; ++cell[0])
         for (std::size_t b = 0; b < basis_.size(); ++b) {
           Vec3 x = site(cell, b);
+          const Vec3 s = triclinic ? box.to_fractional(x) : x;
           bool inside = true;
           for (int d = 0; d < 3 && inside; ++d)
-            inside = x[d] >= lo_bound[d] && x[d] < hi_bound[d];
+            inside = s[d] >= lo_bound[d] && s[d] < hi_bound[d];
           if (!inside) continue;
           std::array<int, 3> image{0, 0, 0};
           box.wrap(x, image);
-          for (int d = 0; d < 3; ++d)  // a site a round-off below a fixed lo face is on it
+          for (int d = 0; d < 3 && !triclinic; ++d)  // a site a round-off below a fixed lo face is on it
             if (box.boundary[static_cast<std::size_t>(d)] == geometry::Boundary::fixed) x[d] = std::max(x[d], box.lo[d]);
           visit(x, spec_.basis_types.empty() ? 0 : spec_.basis_types[b]);
         }

@@ -47,6 +47,17 @@ struct Prepared {
   std::vector<std::string> notes;  ///< logged when the run starts
 };
 
+// What does not handle a tilted cell yet (issue 18's step 4: fix deform tilt rates, npt tri):
+// anything that changes the box or moves a face along an axis.
+void refuse_with_tilt(const StageSpec& s, const Config& stage, const geometry::Box& box) {
+  const std::string tilt = fmt::format("a triclinic box (tilt {} {} {})", box.tilt[0], box.tilt[1], box.tilt[2]);
+  if (s.ensemble == "npt" || s.ensemble == "msst" || s.ensemble == "nphug")
+    stage.fail("ensemble", fmt::format("{} is not supported in {} yet: use nve, langevin, nvt or minimize", s.ensemble, tilt));
+  if (s.ensemble == "minimize" && s.minimize.relax_box != std::array<bool, 3>{false, false, false})
+    stage.fail("relax_box", fmt::format("relaxing the box is not supported in {} yet", tilt));
+  if (s.piston) stage.fail("piston", fmt::format("a piston is not supported in {} yet", tilt));
+}
+
 // Masses and element names of the atom types. A mass: the case's masses = [...] (LAMMPS `mass`
 // after pair_coeff), else the potential file's (pair_coeff sets it, after read_data), else the
 // data file's; a data-file mass that differs from the potential's is reported. An element name:
@@ -93,6 +104,9 @@ Prepared prepare(const Config& root, const RunOptions& options) {
     root.derive("piston_speed_override_A_ps", *options.piston_speed);
   }
   const auto stages = root.tables("stage");
+  // A box that is tilted, or that a stage will tilt (deform_tilt_rate).
+  const bool tilted = p.system.box.triclinic() ||
+                      std::any_of(p.md.stages.begin(), p.md.stages.end(), [](const StageSpec& s) { return s.deform_tilt_rate.has_value(); });
   for (std::size_t k = 0; k < p.md.stages.size(); ++k) {
     try {
       p.stage_groups.push_back(p.system.groups.find(p.md.stages[k].group));
@@ -100,6 +114,7 @@ Prepared prepare(const Config& root, const RunOptions& options) {
       stages[k].fail("group", e.what());
     }
     StageSpec& s = p.md.stages[k];
+    if (tilted) refuse_with_tilt(s, stages[k], p.system.box);
     if (s.ensemble == "msst")  // LAMMPS: "Fix msst requires a periodic box"
       for (int d = 0; d < 3; ++d)
         if (!p.system.box.periodic(d))
@@ -119,6 +134,12 @@ Prepared prepare(const Config& root, const RunOptions& options) {
       stages[k].fail(key, "npt needs at least one periodic dimension to barostat");
   }
   for (const auto& add : p.md.velocity_adds) p.add_groups.push_back(p.system.groups.find(add.group));
+  // Along z a tilted cell's slabs are whole (only c has a z component; the cross-section is lx·ly);
+  // along x or y the tilts mix the axes.
+  if (tilted && p.md.output.profile_every > 0 && p.md.output.profile_axis != 2)
+    root.table("output").fail("profile_axis", fmt::format("binned profiles along {} are not supported in a triclinic box (tilt "
+                                                          "{} {} {}) yet: use profile_axis = \"z\"", "xyz"[p.md.output.profile_axis],
+                                                          p.system.box.tilt[0], p.system.box.tilt[1], p.system.box.tilt[2]));
   root.check_unknown_keys();
 
   const Vec3 l = p.system.box.length();
@@ -150,7 +171,9 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
     const double start = p.position.value_or(p.side > 0 ? sim.box.lo[p.axis] : sim.box.hi[p.axis]);
     sim.fixes.push_back(std::make_unique<FixPiston>(p.axis, p.side, p.speed, start, sim.time));
   }
-  if (s.deform_rate) sim.fixes.push_back(std::make_unique<FixDeform>(*s.deform_rate, sim.box, sim.time));
+  if (s.deform_rate || s.deform_tilt_rate)
+    sim.fixes.push_back(std::make_unique<FixDeform>(s.deform_rate.value_or(Vec3::Zero()),
+                                                    s.deform_tilt_rate.value_or(Vec3::Zero()), sim.box, sim.time));
 }
 
 // The Hugoniot state of a piston stage from its profiles (hugoniot.hpp), written and logged.
@@ -369,7 +392,7 @@ class MdMethod final : public Method {
     run_->log.info("[{}] {} steps, ensemble {}, dt = {} ps{}{}", stage.name, stage.steps, stage.ensemble, sim.dt,
                    stage.piston ? fmt::format(", piston {} km/s", stage.piston->speed * units::metal::A_per_ps_to_km_per_s)
                                 : "",
-                   stage.deform_rate ? ", deforming" : "");
+                   stage.deform_rate || stage.deform_tilt_rate ? ", deforming" : "");
     started_ = true;
     stage_first_ = done_;
     stage_clock_ = std::chrono::steady_clock::now();

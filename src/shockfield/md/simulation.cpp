@@ -62,10 +62,12 @@ bool Simulation::needs_rebuild() const {
   for (std::size_t i = 0; i < atoms.nlocal; ++i)
     if ((atoms.x[i] - x_rebuild_[i]).squaredNorm() > limit2) moved = true;
   if (moved) return true;
-  // A box that changed (deform, barostat) moves ghosts; rebuild when a face moved by half the skin.
+  // A box that changed (deform, barostat) moves ghosts; rebuild when a face moved by half the skin
+  // (or a tilt factor, which moves a face by as much).
   for (int d = 0; d < 3; ++d)
     if (std::abs(box.lo[d] - box_rebuild_.lo[d]) > 0.5 * skin ||
-        std::abs(box.hi[d] - box_rebuild_.hi[d]) > 0.5 * skin)
+        std::abs(box.hi[d] - box_rebuild_.hi[d]) > 0.5 * skin ||
+        std::abs(box.tilt[d] - box_rebuild_.tilt[d]) > 0.5 * skin)
       return true;
   return false;
 }
@@ -143,8 +145,15 @@ ThermoState Simulation::thermo() const {
 void Simulation::check_health() const {
   // One parallel pass finds the first bad atom (if any) and the fastest speed; the diagnosis of
   // the bad atom is then made on it alone, so the message is that of a serial scan.
+  // A triclinic cell is bounded by its faces: its fixed dimensions compare fractional coordinates.
+  const bool triclinic = box.triclinic();
   auto outside_fixed = [&](std::size_t i, int d) {
-    return box.boundary[d] == geometry::Boundary::fixed && (atoms.x[i][d] < box.lo[d] || atoms.x[i][d] >= box.hi[d]);
+    if (box.boundary[d] != geometry::Boundary::fixed) return false;
+    if (triclinic) {
+      const double s = box.to_fractional(atoms.x[i])[d];
+      return s < 0 || s >= 1;
+    }
+    return atoms.x[i][d] < box.lo[d] || atoms.x[i][d] >= box.hi[d];
   };
   auto bad_atom = [&](std::size_t i) {
     return !atoms.x[i].allFinite() || !atoms.v[i].allFinite() || !atoms.f[i].allFinite() ||
@@ -170,8 +179,10 @@ void Simulation::check_health() const {
     for (int d = 0; d < 3; ++d)
       if (outside_fixed(i, d))
         throw RunError(fmt::format("step {}: lost atom {}: it left the fixed {} boundary of the box "
-                                   "([{}, {}]) at {} = {}",
-                                   step, atoms.id[i], "xyz"[d], box.lo[d], box.hi[d], "xyz"[d], atoms.x[i][d]));
+                                   "([{}, {}]{}) at {} = {}",
+                                   step, atoms.id[i], "xyz"[d], box.lo[d], box.hi[d],
+                                   triclinic ? fmt::format(", tilt {} {} {}", box.tilt[0], box.tilt[1], box.tilt[2]) : "",
+                                   "xyz"[d], atoms.x[i][d]));
   }
   // A displacement of more than the skin in one step means the list missed pairs.
   if (std::sqrt(vmax2) * dt > 0.5 * skin)

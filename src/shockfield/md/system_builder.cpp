@@ -185,7 +185,17 @@ BuiltSystem from_lattice(const Config& lat, bool check, std::optional<CrystalSit
   BuiltSystem sys;
   read_types(lat, ntypes, sys.atoms);
   sys.box = lattice.box(repeat, boundary);
-  if (check && *std::max_element(repeat.begin(), repeat.end()) > kFewCells) {
+  if (lat.has("tilt")) {  // LAMMPS create_box on a prism region (units box): a restricted triclinic cell
+    const auto t = lat.get_doubles("tilt", 3, Range::closed(-1e9, 1e9));
+    sys.box.tilt = Vec3(t[0], t[1], t[2]);
+    try {
+      sys.box.check_tilt("the tilted box");
+    } catch (const InputError& e) {
+      lat.fail("tilt", e.what());
+    }
+  }
+  // The count by repeat cells of --check holds for whole repeats only, not for a tilted cell.
+  if (check && !sys.box.triclinic() && *std::max_element(repeat.begin(), repeat.end()) > kFewCells) {
     std::array<int, 3> few{};
     for (int d = 0; d < 3; ++d) few[d] = std::min(repeat[d], kFewCells);
     lattice.create_atoms(lattice.box(few, boundary), sys.atoms);

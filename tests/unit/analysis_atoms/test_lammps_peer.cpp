@@ -64,7 +64,9 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, LammpsPeer,
                                            PeerCase{"cu_stacking_fault", 3.0858, 12},
                                            PeerCase{"cu_thermal_600K", 3.0858, 12},
                                            PeerCase{"fe_thermal_500K", 3.4466, 8},
-                                           PeerCase{"cu_void_300K", 3.0858, 12}, PeerCase{"cu_shocked", 3.0858, 12}),
+                                           PeerCase{"cu_void_300K", 3.0858, 12}, PeerCase{"cu_shocked", 3.0858, 12},
+                                           // triclinic cells: sheared thermal fcc, tilted bcc
+                                           PeerCase{"cu_fcc_tilted", 3.0858, 12}, PeerCase{"fe_bcc_tilted", 3.4466, 8}),
                          [](const auto& info) { return info.param.name; });
 
 }  // namespace

@@ -97,6 +97,22 @@ TEST(ExtXyzReader, RoundTripOfTheWriterTwoFrames) {
   EXPECT_EQ(a.bounds[2], "ss");
 }
 
+// A restricted triclinic cell is written as Lattice="lx 0 0 xy ly 0 xz yz lz" and read back.
+TEST(ExtXyzReader, RoundTripOfATriclinicCell) {
+  DumpFrame frame = two_type_frame();
+  frame.box.boundary[2] = geometry::Boundary::periodic;
+  frame.box.tilt = Vec3(2.5, -1.0 / 3.0, 4.0);
+  std::ostringstream out;
+  write_extxyz_frame(out, frame, {"Cu", "Ni"}, DumpWriteOptions{true});
+  EXPECT_NE(out.str().find("Lattice=\"10 0 0 2.5 10 0 -0.3333333333333333 4 19.5\""), std::string::npos) << out.str();
+  std::istringstream in(out.str());
+  const auto back = read_extxyz(in, "f.xyz");
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].box.tilt, frame.box.tilt);
+  EXPECT_EQ(back[0].box.lo, frame.box.lo);
+  EXPECT_EQ(back[0].box.hi, frame.box.hi);
+}
+
 TEST(ExtXyzReader, AseLayoutIdsInFileOrderAndNumericSpecies) {
   // ASE writes no Origin and no id; a logical column and an extra string column (left out).
   const std::string text =
@@ -136,7 +152,9 @@ TEST(ExtXyzReader, BadInputNamesTheLine) {
   expect_refused("1\n" + head + "Cu 0 0\n", "f.xyz:3: expected 4 values per atom row");
   expect_refused("1\n" + head + "Cu 0 nan 0\n", "f.xyz:3: expected property column 'y' (a finite number), got 'nan'");
   expect_refused("two\n" + head, "f.xyz:1: expected the number of atoms");
-  expect_refused("1\nLattice=\"4 0 0 1 4 0 0 0 4\"\nCu 0 0 0\n", "f.xyz:2: a non-orthogonal (triclinic) Lattice");
+  expect_refused("1\nLattice=\"4 1 0 0 4 0 0 0 4\"\nCu 0 0 0\n", "f.xyz:2: Lattice=\"4 1 0 0 4 0 0 0 4\" is a general triclinic cell");
+  expect_refused("1\nLattice=\"4 0 0 3 4 0 0 0 4\"\nCu 0 0 0\n", "f.xyz:2: Lattice: tilt xy = 3 is beyond LAMMPS's limit");
+  expect_refused("1\nLattice=\"4 0 0 1 4 0 0 0 4\" pbc=\"T F T\"\nCu 0 0 0\n", "needs a periodic y boundary");
   expect_refused("1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=species:S:1:velo:R:3\nCu 0 0 0\n",
                  "f.xyz:2: Properties=\"species:S:1:velo:R:3\" has no pos:R:3");
   expect_refused("1\nLattice=\"4 0 0 0 4\"\nCu 0 0 0\n", "f.xyz:2: Lattice=\"4 0 0 0 4\": expected 9 numbers");

@@ -63,6 +63,27 @@ TEST(LammpsData, WritesTheSameTextAsLammps) {
   EXPECT_EQ(slurp(out), slurp(path));
 }
 
+TEST(LammpsData, TriclinicWrittenByLammpsReadsAndWritesBack) {
+  const std::string path = "fixtures/io/data_triclinic.data";
+  const DataFile d = read_data(path);
+  EXPECT_EQ(d.box.tilt, Vec3(3.615, -3.615, 1.8075));
+  EXPECT_EQ(d.atoms.image[0], (std::array<int, 3>{1, -1, 1}));
+  for (std::size_t i = 0; i < d.atoms.nlocal; ++i) EXPECT_TRUE(d.box.contains(d.atoms.x[i])) << i;
+  const std::string out = testing::TempDir() + "rewritten_triclinic.data";
+  write_data(out, d.box, d.atoms, {.title = d.title});
+  EXPECT_EQ(slurp(out), slurp(path));
+}
+
+TEST(LammpsData, AtomsOutsideATiltedCellAreWrappedByItsEdges) {
+  // x = lo - b/2 lies outside across the b face: wrapped by +b, image -1 along y
+  const std::string text = "t\n2 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n4 0 0 xy xz yz\n\nMasses\n\n1 1\n\nAtoms\n\n1 1 -1 -5 5\n2 1 1 1 1\n";
+  const std::string path = testing::TempDir() + "tilted.data";
+  std::ofstream(path) << text;
+  const DataFile d = read_data(path);
+  EXPECT_EQ(d.atoms.image[0], (std::array<int, 3>{0, -1, 0}));
+  EXPECT_LT((d.atoms.x[0] - Vec3(3, 5, 5)).norm(), 1e-14);
+}
+
 TEST(LammpsData, RoundTripIsExact) {
   md::Atoms atoms;
   atoms.mass = {26.9815385, 1.0 / 3.0};
@@ -167,7 +188,10 @@ TEST(LammpsData, MalformedInput) {
   expect_data_error("t\n2 atoms\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\nAtoms\n", "no 'N atom types' line");
   expect_data_error("t\n2 atoms\n1 atom types\n0 10 xlo xhi\n0 10 zlo zhi\nAtoms\n", "no 'ylo yhi' line");
   expect_data_error("t\n2 atoms\n1 atom types\n5 1 xlo xhi\n", "bad.data:4: expected xlo < xhi");
-  expect_data_error("t\n2 atoms\n0 0 0 xy xz yz\n", "triclinic");
+  expect_data_error(head + "6 0 0 xy xz yz\n", "bad.data: the 'xy xz yz' header line: tilt xy = 6 is beyond LAMMPS's limit");
+  expect_data_error(head + "0 0 6 xy xz yz\n", "tilt yz = 6", {Boundary::periodic, Boundary::periodic, Boundary::periodic});
+  expect_data_error(head + "0 nan 0 xy xz yz\n", "bad.data:7: expected xz (a finite number)");
+  expect_data_error(head + "0 1 0 xy xz yz\n", "needs a periodic z boundary", ppf);
   expect_data_error("t\n2 atoms\n3 bonds\n", "only atom style atomic");
   expect_data_error("t\n2 atoms\n3 things\n", "bad.data:3: unknown header line '3 things'");
   EXPECT_THROW(read_data("fixtures/io/no_such.data"), InputError);

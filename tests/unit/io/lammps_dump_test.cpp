@@ -61,6 +61,31 @@ TEST(LammpsDump, WritesTheSameTextAsLammps) {
   EXPECT_EQ(out.str(), slurp(path));
 }
 
+// LAMMPS writes a triclinic box as its bounding box and the tilts (Howto_triclinic); the box is
+// the prism whose edges those give, and the writer prints the same header back.
+TEST(LammpsDump, ReadsAndWritesTriclinicBoxesAsLammps) {
+  const std::string path = "fixtures/io/dump_triclinic.lammpstrj";
+  const auto frames = read_dump(path);
+  ASSERT_EQ(frames.size(), 2u);
+  const geometry::Box& box = frames[0].box;
+  // region prism 0 3 0 2 0 2 1 -1 0.5 in lattice units of 3.615 Å
+  EXPECT_DOUBLE_EQ(box.lo.x(), 0.0);
+  EXPECT_DOUBLE_EQ(box.hi.x(), 3 * 3.615);
+  EXPECT_DOUBLE_EQ(box.hi.y(), 2 * 3.615);
+  EXPECT_EQ(box.tilt, Vec3(3.615, -3.615, 1.8075));
+  // scaled positions xs ys zs give the same atoms as x y z (LAMMPS writes both; 2e-5 Å: xs ys zs
+  // have the 6 significant digits of "%g", 5e-7 of cell edges up to 18 Å, summed over three)
+  const auto& f = frames[1];
+  for (std::size_t i = 0; i < f.natoms(); ++i) {
+    const Vec3 x(f.column("x")[i], f.column("y")[i], f.column("z")[i]);
+    const Vec3 s = f.box.from_fractional(Vec3(f.column("xs")[i], f.column("ys")[i], f.column("zs")[i]));
+    EXPECT_LT((x - s).norm(), 2e-5) << i;
+  }
+  std::ostringstream out;
+  for (const auto& frame : frames) write_dump_frame(out, frame);
+  EXPECT_EQ(out.str(), slurp(path));
+}
+
 TEST(LammpsDump, FullPrecisionRoundTripThroughAFile) {
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> u(-1e3, 1e3);
@@ -182,7 +207,11 @@ TEST(LammpsDump, MalformedInput) {
   expect_dump_error("ITEM: TIMESTEP\nx\n", "bad.dump:2: expected the timestep");
   expect_dump_error("ITEM: TIMESTEP\n", "unexpected end of file, expected the timestep");
   expect_dump_error("ITEM: NUMBER OF ATOMS\n-3\n", "number of atoms >= 0");
-  expect_dump_error("ITEM: BOX BOUNDS xy xz yz pp pp pp\n", "triclinic");
+  expect_dump_error("ITEM: BOX BOUNDS xy xz pp pp pp\n", "expected 'xy xz yz'");
+  expect_dump_error("ITEM: BOX BOUNDS xy xz yz pp pp pp\n0 1\n", "bad.dump:2: expected 3 numbers 'xlo_bound xhi_bound xy'");
+  // xy = 0.6 of lx = 1 (bounds 0..1.6): beyond LAMMPS's half
+  expect_dump_error("ITEM: BOX BOUNDS xy xz yz pp pp pp\n0 1.6 0.6\n0 1 0\n0 1 0\n", "bad.dump:4: BOX BOUNDS: tilt xy = 0.6");
+  expect_dump_error("ITEM: BOX BOUNDS xy xz yz pp pp pp\n0 1 3\n0 1 0\n0 1 0\n", "leave no room in the x bounds");
   expect_dump_error("ITEM: BOX BOUNDS pp pq pp\n", "boundary code");
   expect_dump_error("ITEM: BOX BOUNDS pp pp pp\n0 1\n2 1\n", "bad.dump:3: expected ylo < yhi");
   expect_dump_error("ITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n", "expected the zlo zhi line");

@@ -45,7 +45,7 @@ TEST(Deform, BoxAndAtomsFollowTheStrainRate) {
   const Vec3 x0 = atoms.x[5];
   Simulation s(box, std::move(atoms), fixture::cu_eam(), 0.001, 1.0);
   const Vec3 rate(0.5, 0.0, -0.2);  // 1/ps
-  s.fixes.push_back(std::make_unique<FixDeform>(rate, s.box, 0.0));
+  s.fixes.push_back(std::make_unique<FixDeform>(rate, Vec3::Zero(), s.box, 0.0));
   s.setup(false);
   // With no integrator the atoms only move with the box.
   for (int k = 0; k < 100; ++k) s.advance([](std::int64_t) { return false; });

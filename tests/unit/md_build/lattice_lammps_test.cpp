@@ -63,6 +63,42 @@ void expect_same_as_lammps(const LatticeSpec& spec, const std::array<int, 3>& n,
     }
 }
 
+// A lattice in a tilted cell (LAMMPS region prism + create_atoms box): fcc [1-10] [11-2] [111]
+// cut by tilted faces that are not lattice translations. Same sites as LAMMPS, compared in
+// fractional coordinates (quantised to 1e-9 of the cell, modulo 1: periodic images are equal).
+TEST(LatticeLammps, OrientedFccInATiltedCell) {
+  LatticeSpec oriented;
+  oriented.style = LatticeStyle::fcc;
+  oriented.a0 = 3.615;
+  oriented.orient = {{{1, -1, 0}, {1, 1, -2}, {1, 1, 1}}};
+  const Lattice lattice(oriented);
+  geometry::Box box = lattice.box({4, 3, 2}, ppp);
+  box.tilt = Vec3(2.1, -3.3, 1.7);
+  Atoms atoms;
+  atoms.mass = {1.0};
+  lattice.create_atoms(box, atoms);
+  const io::DataFile ref = io::read_data("fixtures/io/lattice_fcc_tilted.data");
+  for (int d = 0; d < 3; ++d) {
+    EXPECT_NEAR(box.lo[d], ref.box.lo[d], 1e-12);
+    EXPECT_NEAR(box.hi[d], ref.box.hi[d], 1e-12);
+  }
+  EXPECT_EQ(box.tilt, ref.box.tilt);
+  ASSERT_EQ(atoms.nlocal, ref.atoms.nlocal);
+  const auto fractional_keys = [&](const std::vector<Vec3>& x) {
+    std::vector<Key> keys;
+    for (const Vec3& p : x) {
+      const Vec3 s = box.to_fractional(p);
+      Key k;
+      for (int d = 0; d < 3; ++d) k[d] = ((std::llround(s[d] * 1e9) % 1000000000) + 1000000000) % 1000000000;
+      keys.push_back(k);
+    }
+    std::sort(keys.begin(), keys.end());
+    return keys;
+  };
+  EXPECT_EQ(fractional_keys(atoms.x), fractional_keys(ref.atoms.x));
+  for (const Vec3& x : atoms.x) EXPECT_TRUE(box.contains(x));
+}
+
 LatticeSpec spec(LatticeStyle style, double a0,
                  const std::array<std::array<int, 3>, 3>& orient = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}) {
   LatticeSpec s;

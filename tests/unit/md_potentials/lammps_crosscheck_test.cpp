@@ -3,6 +3,11 @@
 // Criterion: the ∞-norm-relative deviation max_k |ours_k - lammps_k| / max_k |lammps_k| over all
 // atoms and components must be below 1e-9 (LAMMPS prints 12 significant digits, so the floor
 // is about 5e-13; the sums differ from LAMMPS's only in order).
+// Triclinic cells (fixtures/lammps_triclinic, regenerate.sh there): lattices in prisms with one,
+// two or three tilt factors, affinely sheared further, one with a void and one thinner than the
+// cutoff along z (several ghost layers across tilted faces). Criterion 1e-12: those fixtures are
+// written in %.17g, so the floor is the round-off of the sums (~1e-15 relative to the largest
+// term) plus the box edges rebuilt from the dump's bounding box (1 ulp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,10 +20,13 @@ namespace shockfield::md::potentials::testing {
 namespace {
 
 constexpr double kTolerance = 1e-9;
+constexpr double kTriclinicTolerance = 1e-12;
 
 struct Case {
   std::string name;     // fixture base name
   std::string toml;     // the [potential] table
+  std::string folder = "lammps";
+  double tolerance = kTolerance;
 };
 
 std::ostream& operator<<(std::ostream& os, const Case& c) { return os << c.name; }
@@ -41,9 +49,10 @@ class LammpsCrossCheck : public ::testing::TestWithParam<Case> {};
 
 TEST_P(LammpsCrossCheck, EnergyForcesAndVirialMatchLammps) {
   const Case& c = GetParam();
-  const LammpsDeviation d = compare_with_lammps("fixtures/lammps/" + c.name, c.toml);
+  const LammpsDeviation d = compare_with_lammps("fixtures/" + c.folder + "/" + c.name, c.toml);
+  EXPECT_EQ(load_dump_system("fixtures/" + c.folder + "/" + c.name + ".dump").box.triclinic(), c.folder == "lammps_triclinic");
   d.print(c.name);
-  d.expect_below(kTolerance);
+  d.expect_below(c.tolerance);
 }
 
 // The compressed fixture must reach beyond the F(rho) table, so that LAMMPS's linear extension
@@ -66,6 +75,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"cuni_thermal", kCuNi}, Case{"cuni_void", kCuNi},
                       Case{"alfe_mm_thermal", kAlFe}, Case{"lj_thermal", kLj},
                       Case{"lj_void", kLj}),
+    [](const auto& info) { return info.param.name; });
+
+INSTANTIATE_TEST_SUITE_P(
+    Triclinic, LammpsCrossCheck,
+    ::testing::Values(Case{"cu_u3_tilt_xy", kCuU3, "lammps_triclinic", kTriclinicTolerance},
+                      Case{"cu_u3_sheared_void", kCuU3, "lammps_triclinic", kTriclinicTolerance},
+                      Case{"fe_mm_tilt_xz_yz", kFeMm, "lammps_triclinic", kTriclinicTolerance},
+                      Case{"lj_thin_tilted", kLj, "lammps_triclinic", kTriclinicTolerance}),
     [](const auto& info) { return info.param.name; });
 
 }  // namespace

@@ -26,11 +26,15 @@ void validate_frame(const AtomFrame& frame, const std::string& source) {
     const Vec3& x = frame.positions[i];
     if (!x.allFinite())
       throw InputError(fmt::format("{}: atom id {} has a non-finite position", source, id_of(i)));
+    // a triclinic cell is bounded by its faces: fractional coordinates against [0, 1]
+    const Vec3 s = frame.box.triclinic() ? frame.box.to_fractional(x) : x;
+    const Vec3 lo = frame.box.triclinic() ? Vec3::Zero() : frame.box.lo;
+    const Vec3 hi = frame.box.triclinic() ? Vec3::Ones() : frame.box.hi;
     for (int d = 0; d < 3; ++d)
-      if (frame.box.boundary[d] == geometry::Boundary::fixed &&
-          (x[d] < frame.box.lo[d] || x[d] > frame.box.hi[d]))
-        throw InputError(fmt::format("{}: atom id {} at {} = {} is outside the fixed box bounds [{}, {}]",
-                                     source, id_of(i), "xyz"[d], x[d], frame.box.lo[d], frame.box.hi[d]));
+      if (frame.box.boundary[d] == geometry::Boundary::fixed && (s[d] < lo[d] || s[d] > hi[d]))
+        throw InputError(fmt::format("{}: atom id {} at {} = {} is outside the fixed box bounds [{}, {}]{}", source,
+                                     id_of(i), "xyz"[d], x[d], frame.box.lo[d], frame.box.hi[d],
+                                     frame.box.triclinic() ? " of the tilted cell" : ""));
   }
   if (frame.ids.empty()) return;
   std::vector<std::size_t> order(n);

@@ -19,6 +19,7 @@ namespace {
 std::vector<std::array<double, 3>> with_images(const AtomFrame& frame, double margin) {
   std::vector<std::array<double, 3>> points;
   const geometry::Box& box = frame.box;
+  geometry::require_orthogonal(box, "the void and domain surfaces (periodic images along x, y, z)");
   for (const Vec3& x0 : frame.positions) {
     Vec3 x = x0;
     for (int d = 0; d < 3; ++d)
@@ -96,6 +97,7 @@ VoidResult find_voids(const AtomFrame& frame, const VoidSearch& search) {
 
 DomainResult domain_surfaces(const AtomFrame& frame, const ClusterResult& clusters, const DomainSurfaces& options) {
   const geometry::Box& box = frame.box;
+  geometry::require_orthogonal(box, "the domain surfaces");
   const double omega = box.volume() / static_cast<double>(frame.size());
   std::vector<std::vector<std::array<double, 3>>> members(clusters.clusters.size());
   for (std::size_t i = 0; i < frame.size(); ++i) {

@@ -22,6 +22,8 @@ std::vector<std::pair<std::string, std::vector<ProfileBin>>> StructureProfile::p
 std::vector<ProfileBin> StructureProfile::compute(const AtomFrame& frame, const std::vector<Structure>& structure,
                                                   const std::vector<double>& value) const {
   if (axis < 0 || axis > 2) throw InputError(fmt::format("structure profile: axis {} is not 0, 1 or 2", axis));
+  // Along z a tilted cell repeats by lz alone (only c has a z component); x and y mix tilts.
+  if (axis != 2) geometry::require_orthogonal(frame.box, fmt::format("a structure profile along {}", "xyz"[axis]));
   const double length = frame.box.length()[axis];
   if (!(width > 0) || !std::isfinite(width) || length / width > 1e6)
     throw InputError(fmt::format("structure profile: the bin width must be > 0 and give at most 10^6 bins over the {:.6g} Å box "

@@ -54,6 +54,7 @@ VoxelField voxel_fraction(const AtomFrame& frame, const std::vector<bool>& selec
   if (!(o.smoothing >= 0.0) || !std::isfinite(o.smoothing))
     throw InputError(fmt::format("voxel smoothing {} Å: expected a number >= 0", o.smoothing));
   if (selected.size() != frame.size()) throw InputError("voxel field: one selection flag per atom expected");
+  geometry::require_orthogonal(frame.box, "a voxel field (a grid along x, y, z)");
   VoxelField g;
   g.spacing = o.spacing;
   double nodes = 1.0;

@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# A triclinic box in an MD run (issue 18): 100 NVE steps on the LAMMPS-written triclinic data file
+# (tests/fixtures/io/data_triclinic.data, 48 Cu/Ni atoms, tilts 3.615 -3.615 1.8075 Å) follow
+# LAMMPS (tests/fixtures/lammps_triclinic/nve.thermo, regenerate.sh there) in pe, ke, pressure and
+# the three shear pressures to 1e-8 relative (thermo.csv has 10 significant digits: 5e-10, plus the
+# growth of round-off over 100 steps of a hot, chaotic crystal); final.data keeps the tilt and is
+# read by LAMMPS read_data (when lmp is installed) and by shockfield; the dumps carry LAMMPS's
+# triclinic header; npt and profiles along x refuse a tilted box by key (exit 2); fix deform tilt
+# rates follow LAMMPS; a crystal built into a tilted cell; simple shear gives LAMMPS's C44.
+source "$(dirname "$0")/lib.bash"
+set -e
+case_text="method = \"md\"
+[system]
+data_file = \"$ROOT/tests/fixtures/io/data_triclinic.data\"
+[potential]
+style = \"eam/alloy\"
+file = \"CuNi.eam.alloy\"
+elements = [\"Cu\", \"Ni\"]
+[md]
+timestep = 0.002
+skin = 1.0
+[output]
+thermo_every = 10
+dump_every = 100
+[[stage]]
+steps = 100"
+run_expecting 0 "$case_text"
+/usr/bin/python3 - "$WORK/out/thermo.csv" "$ROOT/tests/fixtures/lammps_triclinic/nve.thermo" <<'PY'
+import csv, sys
+ours = {int(r["step"]): r for r in csv.DictReader(open(sys.argv[1]))}
+names = ["temperature_K", "pe_eV", "ke_eV", "etotal_eV", "press_bar", "pxy_bar", "pxz_bar", "pyz_bar"]
+worst = 0.0
+for line in open(sys.argv[2]):
+    step, *values = line.split()
+    row = ours[int(step)]
+    for name, ref in zip(names, map(float, values)):
+        scale = max(abs(ref), 1.0) if not name.startswith("p") else 2e5  # pressures: of the 2e5 bar scale
+        worst = max(worst, abs(float(row[name]) - ref) / scale)
+print(f"largest deviation from LAMMPS over 11 rows: {worst:.2e}")
+sys.exit(0 if worst < 1e-8 else f"FAIL: NVE in the triclinic cell deviates from LAMMPS by {worst:.2e} > 1e-8")
+PY
+grep -q "^3.615 -3.615 1.8075 xy xz yz$" "$WORK/out/final.data" || fail "final.data lost the tilt: $(sed -n 5,10p "$WORK/out/final.data")"
+grep -q "^ITEM: BOX BOUNDS xy xz yz pp pp pp$" "$WORK/out/dumps/dump.100.lammpstrj" || fail "the dump has no triclinic header"
+if command -v lmp > /dev/null; then
+  printf 'units metal\natom_style atomic\nboundary p p p\nread_data %s\n' "$WORK/out/final.data" > "$WORK/in.read"
+  (cd "$WORK" && lmp -in in.read -log none > lmp.out 2>&1) || fail "LAMMPS read_data failed: $(grep -m1 ERROR "$WORK/lmp.out")"
+  grep -qE "^ +48 atoms$" "$WORK/lmp.out" || fail "LAMMPS did not read 48 atoms: $(cat "$WORK/lmp.out")"
+  echo "ok: LAMMPS reads final.data (48 atoms)"
+fi
+mv "$WORK/out" "$WORK/first"
+run_expecting 0 "${case_text/$ROOT\/tests\/fixtures\/io\/data_triclinic.data/$WORK/first/final.data}"
+# What does not take a tilted box yet stops the case by key.
+expect_error "$case_text
+ensemble = \"npt\"
+temperature = 300
+pressure = 0" "stage[0]" "ensemble" "npt is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
+expect_error "${case_text/thermo_every = 10/thermo_every = 10
+profile_every = 10
+profile_axis = \"x\"}" "output" "profile_axis" "profiles along x are not supported in a triclinic box"
+# A crystal built into a tilted cell: fcc [1-10] [11-2] [111], 4 x 3 x 2 repeats, tilts 2.1 -3.3 1.7 Å
+# (the lattice test's LAMMPS peer: 144 atoms); a tilt beyond LAMMPS's limit is refused by key.
+lattice_case="method = \"md\"
+[system.lattice]
+style = \"fcc\"
+a0 = 3.615
+orient_x = [1, -1, 0]
+orient_y = [1, 1, -2]
+orient_z = [1, 1, 1]
+repeat = [4, 3, 2]
+tilt = [2.1, -3.3, 1.7]
+elements = [\"Cu\"]
+[potential]
+style = \"eam\"
+file = \"Cu_u3.eam\"
+[[stage]]
+steps = 10"
+run_expecting 0 "$lattice_case"
+grep -q "^144 atoms$" "$WORK/out/final.data" || fail "the tilted fcc has not 144 atoms: $(sed -n 3p "$WORK/out/final.data")"
+grep -q "^2.1 -3.3 1.7 xy xz yz$" "$WORK/out/final.data" || fail "final.data lost the tilt"
+expect_error "${lattice_case/tilt = \[2.1/tilt = [6.1}" "system.lattice.tilt" "tilt xy = 6.1 is beyond LAMMPS's limit"
+# Tilt rates: 200 NVE steps of Cu under deform_rate x 0.01 and deform_tilt_rate 0.05 -0.03 0.02
+# (1/ps) follow LAMMPS's fix deform ... remap x (fixtures/lammps_triclinic/deform.thermo) in T, pe,
+# ke, etotal, press, pxy pxz pyz to 1e-8 (thermo.csv's 10 digits plus 200 steps of round-off
+# growth), and the final tilts equal LAMMPS's to 1e-12 Å.
+fixture="$ROOT/tests/fixtures/lammps_triclinic"
+run_expecting 0 "method = \"md\"
+[system]
+data_file = \"$fixture/deform_start.data\"
+[potential]
+style = \"eam\"
+file = \"Cu_u3.eam\"
+[md]
+timestep = 0.001
+skin = 1.0
+[output]
+thermo_every = 20
+[[stage]]
+steps = 200
+deform_rate = [0.01, 0, 0]
+deform_tilt_rate = [0.05, -0.03, 0.02]"
+/usr/bin/python3 - "$WORK/out/thermo.csv" "$fixture/deform.thermo" "$WORK/out/final.data" <<'PY'
+import csv, sys
+ours = {int(r["step"]): r for r in csv.DictReader(open(sys.argv[1]))}
+names = ["temperature_K", "pe_eV", "ke_eV", "etotal_eV", "press_bar", "pxy_bar", "pxz_bar", "pyz_bar", "lx_A"]
+worst, last = 0.0, None
+for line in open(sys.argv[2]):
+    step, *values = line.split()
+    row, last = ours[int(step)], [float(v) for v in values]
+    for name, ref in zip(names, last):
+        scale = 1e4 if name.startswith("p") else max(abs(ref), 1.0)  # pressures: of the 1e4 bar scale
+        worst = max(worst, abs(float(row[name]) - ref) / scale)
+tilt = next([float(w) for w in l.split()[:3]] for l in open(sys.argv[3]) if l.rstrip().endswith("xy xz yz"))
+tilt_error = max(abs(a - b) for a, b in zip(tilt, last[-3:]))
+print(f"fix deform with tilt rates: largest deviation from LAMMPS {worst:.2e}; final tilts {tilt} (LAMMPS {last[-3:]}, {tilt_error:.1e} A)")
+sys.exit(0 if worst < 1e-8 and tilt_error < 1e-12 else "FAIL: deform_tilt_rate deviates from LAMMPS fix deform")
+PY
+# Stopped at step 110 and resumed (box tilt and the fix's start tilt from the checkpoint): the same
+# thermo.csv and final.data, byte for byte, as the uninterrupted run.
+stop_then_resume "$WORK/case.toml" "$WORK/resumed" 110
+same_files "$WORK/out" "$WORK/resumed" thermo.csv final.data
+echo "ok: the tilted, deforming run resumed from its checkpoint equals the uninterrupted one"
+
+# Simple shear carried by the tilt (examples/md_triclinic_shear): at gamma = 0.005 the shear stress
+# over gamma is LAMMPS's C44 of Cu_u3 (76.448 GPa, fixtures/lammps_elastic, strain 1e-3) within
+# 2e-4 relative (the next term of sigma(gamma) is cubic, ~6e-5 at this strain by the example's
+# strains 0.005-0.02).
+/usr/bin/python3 "$ROOT/examples/md_triclinic_shear/make_sheared.py" "$WORK" 0.005
+"$SF" run "$ROOT/examples/md_triclinic_shear/case.toml" -o "$WORK/shear" -q \
+  --set "system.data_file=\"$WORK/sheared_0.005.data\"" > /dev/null
+c44=$(awk -F' = ' '/^c44_GPa/ {print $2}' "$ROOT/tests/fixtures/lammps_elastic/results.toml")
+awk -F, -v c44="$c44" 'NR == 2 { g = -$12 * 1e-4 / 0.005; d = (g - c44) / c44; printf "C44 from the tilted cell %.4f GPa, LAMMPS %.4f GPa (%.1e)\n", g, c44, d;
+  exit (d < 2e-4 && d > -2e-4) ? 0 : 1 }' "$WORK/shear/thermo.csv" || fail "the shear stress of the tilted cell is not C44 gamma"
+echo "md_triclinic: ok"
