@@ -69,6 +69,8 @@ materials::SolidMaterial read_material(const Config& t, std::vector<std::string>
   over("viscosity_quadratic", m.viscosity.quadratic, Range::non_negative(), {}, false);
   over("viscosity_linear", m.viscosity.linear, Range::non_negative(), {}, false);
   over("spall_strength", m.spall.strength, Range::non_negative(), {"spall.strength"}, false);
+  over("spall_tuler_butcher_exponent", m.spall.tuler_butcher_exponent, Range::non_negative(), {}, false);
+  over("spall_tuler_butcher_integral", m.spall.tuler_butcher_integral, Range::non_negative(), {}, false);
   if (f)
     for (const std::string& line : f->summary_lines()) notes.push_back(fmt::format("'{}' from {}", m.name, line));
   try {

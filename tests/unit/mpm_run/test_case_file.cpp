@@ -181,4 +181,25 @@ TEST(MpmCaseFile, TransferFilterKeys) {
   }
 }
 
+// Tuler–Butcher spall keys of a [[material]] (docs/mpm.md): read when given, and a law without its
+// integral or its threshold is an InputError naming the key.
+TEST(MpmCaseFile, TulerButcherKeys) {
+  const std::string lib = "library = \"aluminium_seed000\"";
+  const std::string on = replace(kBase, lib, lib + "\nspall_strength = 1e9\nspall_tuler_butcher_exponent = 2.0\n"
+                                                   "spall_tuler_butcher_integral = 5e9");
+  const auto c = mpm::read_mpm_case(Config::parse(on, "case.toml"));
+  EXPECT_DOUBLE_EQ(c.materials[0].spall.tuler_butcher_exponent, 2.0);
+  EXPECT_DOUBLE_EQ(c.materials[0].spall.tuler_butcher_integral, 5e9);
+  const std::pair<std::string, std::string> bad[] = {
+      {"spall_strength = 1e9\nspall_tuler_butcher_exponent = 2.0", "spall_tuler_butcher_integral"},
+      {"spall_tuler_butcher_exponent = 2.0\nspall_tuler_butcher_integral = 5e9", "spall_strength"},
+      {"spall_strength = 1e9\nspall_tuler_butcher_exponent = -2.0", "spall_tuler_butcher_exponent"},
+  };
+  for (const auto& [extra, expected] : bad) {
+    const std::string msg = error_of(replace(kBase, lib, lib + "\n" + extra));
+    EXPECT_NE(msg.find(expected), std::string::npos) << extra << ": " << msg;
+    EXPECT_NE(msg.find("case.toml"), std::string::npos) << msg;
+  }
+}
+
 }  // namespace
