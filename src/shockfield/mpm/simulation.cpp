@@ -211,7 +211,7 @@ void Simulation::xpic_velocities() {
   const std::size_t n = grid_.field_size();
   xpic_velocity_.resize(n);
   xpic_increment_.resize(n);
-  xpic_next_.resize(n);
+  node_scratch_.resize(n);
   const auto count = static_cast<std::ptrdiff_t>(n);
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t q = 0; q < count; ++q) {
@@ -224,16 +224,17 @@ void Simulation::xpic_velocities() {
     point_values_.resize(particles_.size());
     transfer_.interpolate(xpic_increment_, xpic_increment_,
                           [&](std::size_t p, const Vec3& at_point, const Vec3&) { point_values_[p] = at_point; });
-    transfer_.mass_weighted_to_grid(particles_, point_values_, xpic_next_);
+    transfer_.mass_weighted_to_grid(particles_, point_values_, node_scratch_);
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t q = 0; q < count; ++q) {  // increment ← (I − S⁺S) increment
       const auto i = static_cast<std::size_t>(q);
-      if (grid_.mass[i] > mass_floor_) xpic_increment_[i] -= xpic_next_[i] / grid_.mass[i];
+      if (grid_.mass[i] > mass_floor_) xpic_increment_[i] -= node_scratch_[i] / grid_.mass[i];
       else xpic_increment_[i].setZero();
     }
     grid_.apply_walls(xpic_increment_);
 #pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t q = 0; q < count; ++q) xpic_velocity_[static_cast<std::size_t>(q)] += xpic_increment_[static_cast<std::size_t>(q)];
+    for (std::ptrdiff_t q = 0; q < count; ++q)
+      xpic_velocity_[static_cast<std::size_t>(q)] += xpic_increment_[static_cast<std::size_t>(q)];
   }
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t q = 0; q < count; ++q) {  // v* + (v^L − v^n)
@@ -254,21 +255,21 @@ void Simulation::smooth_dilatation() {
   // change (plane strain keeps L_zz = 0).
   const int dim = grid_.dim();
   point_values_.resize(particles_.size());
-  xpic_next_.resize(grid_.field_size());
+  node_scratch_.resize(grid_.field_size());
   const auto n = static_cast<std::ptrdiff_t>(particles_.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     const auto p = static_cast<std::size_t>(q);
     point_values_[p] = Vec3(particles_.velocity_gradient[p].trace(), 0.0, 0.0);
   }
-  transfer_.mass_weighted_to_grid(particles_, point_values_, xpic_next_);
+  transfer_.mass_weighted_to_grid(particles_, point_values_, node_scratch_);
   const auto nn = static_cast<std::ptrdiff_t>(grid_.field_size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t q = 0; q < nn; ++q) {
     const auto i = static_cast<std::size_t>(q);
-    xpic_next_[i] = grid_.mass[i] > mass_floor_ ? Vec3(xpic_next_[i] / grid_.mass[i]) : Vec3::Zero();
+    node_scratch_[i] = grid_.mass[i] > mass_floor_ ? Vec3(node_scratch_[i] / grid_.mass[i]) : Vec3::Zero();
   }
-  transfer_.interpolate(xpic_next_, xpic_next_, [&](std::size_t p, const Vec3& smoothed, const Vec3&) {
+  transfer_.interpolate(node_scratch_, node_scratch_, [&](std::size_t p, const Vec3& smoothed, const Vec3&) {
     Mat3& l = particles_.velocity_gradient[p];
     const double shift = (smoothed[0] - l.trace()) / dim;
     for (int a = 0; a < dim; ++a) l(a, a) += shift;
@@ -290,7 +291,8 @@ void Simulation::update_materials() {
     smooth_dilatation();
     const auto n = static_cast<std::ptrdiff_t>(particles_.size());
 #pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t q = 0; q < n; ++q) update_material(static_cast<std::size_t>(q), length, plane_strain, failed, why);
+    for (std::ptrdiff_t q = 0; q < n; ++q)
+      update_material(static_cast<std::size_t>(q), length, plane_strain, failed, why);
   }
   if (failed < particles_.size())
     throw RunError(fmt::format("mpm: particle {} at t = {} s (step {}): {}", failed, time_, steps_, why));

@@ -126,7 +126,8 @@ class Simulation {
   std::vector<Vec3> old_momentum_;
   std::vector<Vec3> node_velocity_;
   std::vector<Vec3> node_acceleration_;
-  std::vector<Vec3> xpic_velocity_, xpic_increment_, xpic_next_;  // XPIC(m): v*, its last term, S⁺S of it
+  std::vector<Vec3> xpic_velocity_, xpic_increment_;  // XPIC(m): v*, its last term
+  std::vector<Vec3> node_scratch_;  // a nodal sum on its way (XPIC's S⁺S of the term, the smoothed tr L)
   std::vector<Vec3> point_values_;  // a value per particle on its way to the grid
   struct alignas(64) PerThread {  // one cache line per OpenMP thread
     double fastest;    ///< max_p c_p + |v_p| [m/s]
