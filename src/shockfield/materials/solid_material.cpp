@@ -133,7 +133,7 @@ void SolidMaterial::update_coupled(PointState& p, double rho_ref, const Mat3& ve
   p.plastic_work += dwp;
   p.temperature = thermal.advance(eos, v_old, v_new, p.temperature, dwp, p.shock_volume);
   p.sound_speed = longitudinal_speed(hugoniot, e_new);
-  if (spall.enabled()) spall.apply(p, dv, 0.5 * (v_old + v_new), de);
+  if (spall.enabled()) spall.apply(p, dv, 0.5 * (v_old + v_new), de, dt);
   if (!std::isfinite(p.pressure) || !std::isfinite(p.temperature))
     throw RunError(fmt::format("material '{}': non-finite pressure or temperature (ρ = {} kg/m³)", name, rho_new));
 }

@@ -10,8 +10,15 @@
 //             so a spall plane can close again)
 //
 // A failed point keeps its energy balance: when its tension is cut, the energy update uses the
-// clipped pressure in place of the EOS one (see apply()). σ_spall is a material constant here
-// (no strain-rate or damage-growth law such as Tuler-Butcher or Cochran-Banner). The free-surface
+// clipped pressure in place of the EOS one (see apply()).
+//
+// Rate-dependent alternative (tuler_butcher_exponent λ > 0): the Tuler–Butcher cumulative damage
+// criterion (Tuler & Butcher, Int. J. Fract. Mech. 4 (1968) 431),
+//   ∫ (σ_t − σ_0)^λ dt = K_f   over the time the tensile mean stress σ_t = −(P + q) exceeds σ_0,
+// with σ_0 = `strength` the threshold below which no damage accumulates. The point carries
+// D = (1/K_f) ∫ (σ_t − σ_0)^λ dt in [0, 1) (no softening before failure) and fails (D = 1) when
+// the integral reaches K_f: a short tensile pulse must exceed σ_0 by more, so the spall stress
+// rises with the loading rate; K_f → 0 is the instantaneous criterion. The free-surface
 // pull-back it produces is the classical spall measurement, σ_spall ≈ ½·ρ0·c0·Δu_fs (acoustic
 // approximation; Antoun et al. §2.2, eq. 2.2).
 #include <string>
@@ -23,7 +30,9 @@ namespace shockfield::materials {
 struct PointState;
 
 struct SpallFailure {
-  double strength = 0.0;  ///< σ_spall [Pa]; 0 switches the model off (no tensile failure)
+  double strength = 0.0;  ///< σ_spall [Pa] (σ_0 with Tuler–Butcher); 0 switches the model off
+  double tuler_butcher_exponent = 0.0;  ///< λ; 0: the instantaneous criterion
+  double tuler_butcher_integral = 0.0;  ///< K_f [Pa^λ·s], > 0 when λ > 0
 
   bool enabled() const { return strength > 0.0; }
   void validate(const std::string& where) const;
@@ -32,7 +41,8 @@ struct SpallFailure {
   /// the change of specific volume, v̄ its mean and Δe the deviatoric strain increment. Cutting
   /// P to 0 and s to 0 at the end of the step means the trapezoid should have used 0 there: e
   /// gains ½·P·dv (exact, as P = a + b·e is linear in e) and loses v̄·½·s:Δe.
-  void apply(PointState& p, double dv, double v_mean, const Mat3& de) const;
+  /// `dt` is the step (the Tuler–Butcher integral advances by (σ_t − σ_0)^λ·dt at the step's end).
+  void apply(PointState& p, double dv, double v_mean, const Mat3& de, double dt) const;
 };
 
 }  // namespace shockfield::materials

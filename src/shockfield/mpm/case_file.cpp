@@ -69,6 +69,8 @@ materials::SolidMaterial read_material(const Config& t, std::vector<std::string>
   over("viscosity_quadratic", m.viscosity.quadratic, Range::non_negative(), {}, false);
   over("viscosity_linear", m.viscosity.linear, Range::non_negative(), {}, false);
   over("spall_strength", m.spall.strength, Range::non_negative(), {"spall.strength"}, false);
+  over("spall_tuler_butcher_exponent", m.spall.tuler_butcher_exponent, Range::non_negative(), {}, false);
+  over("spall_tuler_butcher_integral", m.spall.tuler_butcher_integral, Range::non_negative(), {}, false);
   if (f)
     for (const std::string& line : f->summary_lines()) notes.push_back(fmt::format("'{}' from {}", m.name, line));
   try {
@@ -184,6 +186,10 @@ MpmCase read_mpm_case(const Config& root) {
   c.options.shape = shape == "gimp" ? ShapeKind::Gimp : shape == "ugimp" ? ShapeKind::UniformGimp : ShapeKind::Linear;
   c.options.scheme = solver.get_choice_or("scheme", {"musl", "usl"}, "musl") == "musl" ? UpdateScheme::MUSL : UpdateScheme::USL;
   c.options.flip = solver.get_double_or("flip", 1.0, Range::closed(0.0, 1.0));
+  c.options.xpic_order = static_cast<int>(solver.get_int_or("xpic_order", 0, Range::closed(0, 16)));
+  if (c.options.xpic_order > 0 && solver.has("flip"))
+    solver.fail("xpic_order", "0 with `flip` (XPIC replaces the FLIP/PIC blend: give one of them)");
+  c.options.smooth_dilatation = solver.get_bool_or("smooth_dilatation", false);
   c.end_time = solver.get_double("end_time", Range::positive());
   c.options.heat_conduction = solver.get_bool_or("heat_conduction", false);  // off: results as before
   if (solver.has("time_step")) {

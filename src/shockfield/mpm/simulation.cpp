@@ -14,6 +14,11 @@ void SimulationOptions::validate() const {
   if (!(courant > 0.0 && courant <= 1.0))
     throw InputError(fmt::format("mpm: courant = {} (expected 0 < C <= 1)", courant));
   if (!(flip >= 0.0 && flip <= 1.0)) throw InputError(fmt::format("mpm: flip = {} (expected 0 <= flip <= 1)", flip));
+  if (xpic_order < 0 || xpic_order > 16)
+    throw InputError(fmt::format("mpm: xpic_order = {} (expected 0 = off, or an order 1..16)", xpic_order));
+  if (xpic_order > 0 && flip != 1.0)
+    throw InputError(fmt::format("mpm: xpic_order = {} with flip = {}: XPIC replaces the FLIP/PIC blend (set one of "
+                                 "them)", xpic_order, flip));
   if (!(min_time_step >= 0.0)) throw InputError(fmt::format("mpm: min_time_step = {} (expected >= 0 s)", min_time_step));
   contact.validate();
 }
@@ -171,16 +176,104 @@ void Simulation::grid_to_particles(bool remap) {
   // deviatoric stress behind the shock (docs/theory/mpm.md, "Deviatoric stress behind shocks").
   // PIC conserves momentum, and a uniform velocity is unchanged by it (partition of unity).
   const double flip = steps_ == 0 && options_.project_initial_velocity ? 0.0 : options_.flip;
-  auto update = [&](std::size_t p, const Vec3& accel, const Vec3& vel) {
+  const bool xpic = options_.xpic_order > 0 && flip > 0.0;
+  if (xpic) xpic_velocities();
+  // `first` is the nodal acceleration for FLIP/PIC, XPIC's nodal velocity with it
+  auto update = [&](std::size_t p, const Vec3& first, const Vec3& vel) {
     particles_.x[p] += dt_ * vel;
-    particles_.v[p] = flip * (particles_.v[p] + dt_ * accel) + (1.0 - flip) * vel;
+    particles_.v[p] = xpic ? first : Vec3(flip * (particles_.v[p] + dt_ * first) + (1.0 - flip) * vel);
     if (!grid_.wrap_position(particles_.x[p])) {
       std::size_t& lost = per_thread_[static_cast<std::size_t>(omp_get_thread_num())].lost;
       lost = std::min(lost, p);
     }
   };
-  if (remap) transfer_.interpolate_and_remap(grid_, particles_, node_acceleration_, node_velocity_, update);
-  else transfer_.interpolate(node_acceleration_, node_velocity_, update);
+  const auto& first = xpic ? xpic_velocity_ : node_acceleration_;
+  if (remap) transfer_.interpolate_and_remap(grid_, particles_, first, node_velocity_, update);
+  else transfer_.interpolate(first, node_velocity_, update);
+}
+
+void Simulation::xpic_velocities() {
+  // XPIC(m), Hammerquist & Nairn (2017). With S the grid → particle interpolation and S⁺ the
+  // particles' mass-weighted projection onto the grid, the particle velocities V carry the field the
+  // grid can represent plus a null-space part the grid does not see (S⁺ of it is zero). FLIP keeps
+  // the null-space part for ever — the sub-cell noise that cycles shocked metal through reverse
+  // yield (docs/theory/mpm.md, "Deviatoric stress behind shocks") — and PIC (V ← S S⁺ V) also damps
+  // what the grid does represent. XPIC(m) takes the nodal field v* whose interpolation S v* best
+  // reproduces V, by m terms of the Neumann series of (S⁺S)⁻¹:
+  //   v*_m = Σ_{k=0}^{m−1} (I − S⁺S)^k v^n,   v^n = S⁺V (the nodal velocity before the update),
+  // i.e. S v*_m = [I − (I − S S⁺)^m] V: modes the grid resolves (eigenvalue of S S⁺ near 1) are
+  // kept as in FLIP, the null space (eigenvalue 0) is removed as in PIC; m = 1 is PIC. Then
+  //   v_p ← Σ_i N_ip (v*_m,i + v^L_i − v^n_i),
+  // with v^L the nodal velocity after the update, contact, walls and hooks (v^L − v^n = Δt·a).
+  // S⁺S conserves Σ_i m_i v_i in each body's layer, so v* has the momentum of v^n, and the contact
+  // law's exchange between bodies is all in v^L − v^n. Increments are zeroed where walls constrain
+  // the nodes (there v* = v^n, so the particles take v^L).
+  const std::size_t n = grid_.field_size();
+  xpic_velocity_.resize(n);
+  xpic_increment_.resize(n);
+  node_scratch_.resize(n);
+  const auto count = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < count; ++q) {
+    const auto i = static_cast<std::size_t>(q);
+    const bool massive = grid_.mass[i] > mass_floor_;
+    xpic_velocity_[i] = massive ? Vec3(old_momentum_[i] / grid_.mass[i]) : Vec3::Zero();  // v^n
+    xpic_increment_[i] = xpic_velocity_[i];
+  }
+  for (int k = 1; k < options_.xpic_order; ++k) {
+    point_values_.resize(particles_.size());
+    transfer_.interpolate(xpic_increment_, xpic_increment_,
+                          [&](std::size_t p, const Vec3& at_point, const Vec3&) { point_values_[p] = at_point; });
+    transfer_.mass_weighted_to_grid(particles_, point_values_, node_scratch_);
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t q = 0; q < count; ++q) {  // increment ← (I − S⁺S) increment
+      const auto i = static_cast<std::size_t>(q);
+      if (grid_.mass[i] > mass_floor_) xpic_increment_[i] -= node_scratch_[i] / grid_.mass[i];
+      else xpic_increment_[i].setZero();
+    }
+    grid_.apply_walls(xpic_increment_);
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t q = 0; q < count; ++q)
+      xpic_velocity_[static_cast<std::size_t>(q)] += xpic_increment_[static_cast<std::size_t>(q)];
+  }
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < count; ++q) {  // v* + (v^L − v^n)
+    const auto i = static_cast<std::size_t>(q);
+    if (grid_.mass[i] > mass_floor_) xpic_velocity_[i] += node_velocity_[i] - old_momentum_[i] / grid_.mass[i];
+  }
+}
+
+void Simulation::smooth_dilatation() {
+  // The volumetric part of L_p replaced by its mass-weighted average over the nodes of the point's
+  // stencil, tr L̄_p = Σ_i N_ip (Σ_q m_q N_iq tr L_q)/m_i (the "F-bar" idea of locking-free finite
+  // elements, here as the volume-change rate of the grid rather than of the point): two rows of
+  // points in one cell then compress alike. Without it a shock front only a few cells wide
+  // compresses the rows of a cell differently, leaves an odd-even density and pressure pattern
+  // the grid does not see at rest (a null space of f_i = −Σ_p V_p σ_p·∇N_ip) but that forces the
+  // nodes as it crosses cells, and the ringing it drives relaxes the deviator behind the shock
+  // (docs/theory/mpm.md, "Deviatoric stress behind shocks"). The in-plane diagonal absorbs the
+  // change (plane strain keeps L_zz = 0).
+  const int dim = grid_.dim();
+  point_values_.resize(particles_.size());
+  node_scratch_.resize(grid_.field_size());
+  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < n; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    point_values_[p] = Vec3(particles_.velocity_gradient[p].trace(), 0.0, 0.0);
+  }
+  transfer_.mass_weighted_to_grid(particles_, point_values_, node_scratch_);
+  const auto nn = static_cast<std::ptrdiff_t>(grid_.field_size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < nn; ++q) {
+    const auto i = static_cast<std::size_t>(q);
+    node_scratch_[i] = grid_.mass[i] > mass_floor_ ? Vec3(node_scratch_[i] / grid_.mass[i]) : Vec3::Zero();
+  }
+  transfer_.interpolate(node_scratch_, node_scratch_, [&](std::size_t p, const Vec3& smoothed, const Vec3&) {
+    Mat3& l = particles_.velocity_gradient[p];
+    const double shift = (smoothed[0] - l.trace()) / dim;
+    for (int a = 0; a < dim; ++a) l(a, a) += shift;
+  });
 }
 
 void Simulation::update_materials() {
@@ -189,22 +282,36 @@ void Simulation::update_materials() {
   const bool plane_strain = grid_.dim() == 2;
   std::size_t failed = particles_.size();
   std::string why;
+  const bool smooth = options_.smooth_dilatation;
   transfer_.gradient(node_velocity_, particles_.velocity_gradient, [&](std::size_t p) {
-    const Mat3& l = particles_.velocity_gradient[p];
-    const auto& mat = materials_[static_cast<std::size_t>(particles_.material[p])];
-    try {
-      mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], l, dt_, length, plane_strain);
-    } catch (const RunError& e) {
-#pragma omp critical(mpm_material_failure)
-      if (p < failed) {
-        failed = p;
-        why = e.what();
-      }
-    }
-    track_fastest(p);
+    if (smooth) return;  // the update follows once every L_p is known
+    update_material(p, length, plane_strain, failed, why);
   });
+  if (smooth) {
+    smooth_dilatation();
+    const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t q = 0; q < n; ++q)
+      update_material(static_cast<std::size_t>(q), length, plane_strain, failed, why);
+  }
   if (failed < particles_.size())
     throw RunError(fmt::format("mpm: particle {} at t = {} s (step {}): {}", failed, time_, steps_, why));
+}
+
+void Simulation::update_material(std::size_t p, double length, bool plane_strain, std::size_t& failed,
+                                 std::string& why) {
+  const Mat3& l = particles_.velocity_gradient[p];
+  const auto& mat = materials_[static_cast<std::size_t>(particles_.material[p])];
+  try {
+    mat.update(particles_.state[p], particles_.mass[p] / particles_.volume0[p], l, dt_, length, plane_strain);
+  } catch (const RunError& e) {
+#pragma omp critical(mpm_material_failure)
+    if (p < failed) {
+      failed = p;
+      why = e.what();
+    }
+  }
+  track_fastest(p);
 }
 
 void Simulation::wrap_particles() {

@@ -5,8 +5,8 @@
 //   1. Δt = C·Δx_min / max_p(c_p + |v_p|)                        (stable step, seed §2.2.2)
 //   2. particles → grid: m_i, m_i v_i, f_i^int                   (eq. 12)
 //   3. grid: m_i v_i += f_i Δt; rigid walls                       (eq. 12, explicit)
-//   4. grid → particles: v_p += Δt Σ N_i f_i/m_i (FLIP; PIC v_p = Σ N_i v_i in the first step),
-//      x_p += Δt Σ N_i v_i
+//   4. grid → particles: v_p += Δt Σ N_i f_i/m_i (FLIP; PIC v_p = Σ N_i v_i in the first step;
+//      or XPIC(m), Hammerquist & Nairn 2017), x_p += Δt Σ N_i v_i
 //   5. MUSL: map the new particle momenta back to the grid and impose walls again
 //   6. L_p = Σ_i v_i ⊗ ∇N_i(x_p); material update of every point (materials::SolidMaterial)
 // With `contact` (contact.hpp), each body has its own nodal fields: step 2 scatters every point into
@@ -19,6 +19,7 @@
 // EndOfStep.
 #include <array>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "shockfield/materials/solid_material.hpp"
@@ -38,6 +39,11 @@ struct SimulationOptions {
   ShapeKind shape = ShapeKind::Linear;
   double courant = 0.3;        ///< C of the stable step, in (0, 1]
   double flip = 1.0;           ///< FLIP fraction of the velocity update (1 FLIP, 0 PIC)
+  /// XPIC(m) velocity update (Hammerquist & Nairn 2017) instead of the FLIP/PIC blend: 0 off, m >= 1
+  /// (1 is PIC; larger m keeps more of what the grid resolves and drops the null-space noise).
+  int xpic_order = 0;
+  /// Replace tr L_p by its mass-weighted nodal average over the point's stencil (simulation.cpp).
+  bool smooth_dilatation = false;
   /// The first step is PIC (flip 0): the initial velocities are projected onto the grid's field
   /// (simulation.cpp, grid_to_particles). Off only to study what it removes.
   bool project_initial_velocity = true;
@@ -96,9 +102,15 @@ class Simulation {
   void nodal_velocities(bool with_acceleration);
   /// v_p, x_p from the grid (with `remap`, fused with the MUSL remap of the momenta).
   void grid_to_particles(bool remap);
+  /// XPIC(m): the nodal velocity the particles take, v*_m + (v^L − v^n) (simulation.cpp).
+  void xpic_velocities();
   /// L_p from the nodal velocities, then the material update of every point (the last
   /// particle loop of a step).
   void update_materials();
+  /// The material update of point p with its L_p (records the first failure in failed/why).
+  void update_material(std::size_t p, double length, bool plane_strain, std::size_t& failed, std::string& why);
+  /// tr L_p ← its mass-weighted nodal average (options.smooth_dilatation).
+  void smooth_dilatation();
   /// Record c_p + |v_p| for the next stable step.
   void track_fastest(std::size_t p);
   void wrap_particles();
@@ -114,6 +126,9 @@ class Simulation {
   std::vector<Vec3> old_momentum_;
   std::vector<Vec3> node_velocity_;
   std::vector<Vec3> node_acceleration_;
+  std::vector<Vec3> xpic_velocity_, xpic_increment_;  // XPIC(m): v*, its last term
+  std::vector<Vec3> node_scratch_;  // a nodal sum on its way (XPIC's S⁺S of the term, the smoothed tr L)
+  std::vector<Vec3> point_values_;  // a value per particle on its way to the grid
   struct alignas(64) PerThread {  // one cache line per OpenMP thread
     double fastest;    ///< max_p c_p + |v_p| [m/s]
     std::size_t lost;  ///< smallest index of a point that left the grid (size() if none)

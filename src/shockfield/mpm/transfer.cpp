@@ -115,4 +115,14 @@ void Transfer::to_grid(Grid& grid, const Particles& p) const {
   });
 }
 
+void Transfer::mass_weighted_to_grid(const Particles& p, const std::vector<Vec3>& u, std::vector<Vec3>& out) const {
+  const auto nn = static_cast<std::ptrdiff_t>(out.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < nn; ++i) out[static_cast<std::size_t>(i)].setZero();
+  scatter_each<true>([&](std::size_t q, auto&& each) {
+    const Vec3 weighted = p.mass[q] * u[q];
+    each([&](std::size_t i, double w, const auto&) { out[i] += w * weighted; });
+  });
+}
+
 }  // namespace shockfield::mpm

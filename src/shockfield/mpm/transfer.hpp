@@ -76,14 +76,18 @@ class Transfer {
   /// element and loaded as 16-byte packets stalls store-to-load forwarding).
   template <class F>
   void gradient(const std::vector<Vec3>& a, std::vector<Mat3>& out, F&& f) const;
+  /// out_i = Σ_p m_p N_ip u_p for a value u_p per particle, into each point's body layer (with
+  /// `mass` from to_grid, out_i / m_i is the mass-weighted nodal average of u). Zeroes `out` first;
+  /// each nodal sum is formed in the slab-pass order, so it does not depend on the thread count.
+  void mass_weighted_to_grid(const Particles& p, const std::vector<Vec3>& u, std::vector<Vec3>& out) const;
   /// Generic transfers for other nodal fields (heat conduction): f(q, each) for every particle q,
   /// where each(g) calls g(i, N_i(x_q), ∇N_i(x_q)) for the nodes i of q's stencil (∇N as
   /// std::array<double, 3>, z component 0 in 2D). `scatter_each` visits the particles in the
   /// slab-pass order of the particle-to-grid sums, so f may add to nodal fields and each nodal
   /// sum is formed in one fixed order whatever the thread count; `gather_each` runs in parallel
   /// over the particles and must only read nodal fields. Both visit the grid's nodes, not the
-  /// bodies' layers (conduction is across bodies in contact).
-  template <class F>
+  /// bodies' layers (conduction is across bodies in contact) unless `Layered`.
+  template <bool Layered = false, class F>
   void scatter_each(F&& f) const;
   template <class F>
   void gather_each(F&& f) const;
@@ -293,7 +297,7 @@ inline void Transfer::each_node(const Stencil<Dim>& s, const std::array<std::siz
   }
 }
 
-template <class F>
+template <bool Layered, class F>
 void Transfer::scatter_each(F&& f) const {
   dispatch([&](auto kernel) {
     constexpr int D = decltype(kernel.first)::value, S = decltype(kernel.second)::value;
@@ -301,7 +305,7 @@ void Transfer::scatter_each(F&& f) const {
     slab_passes([&](std::size_t first, std::size_t last) {
       for (std::size_t e = first; e < last; ++e) {
         const std::size_t q = binned_[e];
-        f(q, [&](auto&& g) { each_node<D, S>(all[q], nodes<D, S, false>(all[q]), g); });
+        f(q, [&](auto&& g) { each_node<D, S>(all[q], nodes<D, S, Layered>(all[q]), g); });
       }
     });
   });

@@ -71,3 +71,53 @@ TEST(SpallFailure, OffByDefaultAndValidated) {
   m.spall.strength = -1.0;
   EXPECT_THROW(m.validate(), InputError);
 }
+
+// Tuler–Butcher damage (spall.hpp): expand at a constant rate until the tensile mean stress is
+// Δ above σ_0, then hold the volume (L = 0: P and e stay, q = 0). Below σ_0 no damage accumulates;
+// during the hold D grows by Δ^λ·dt/K_f a step, so the point fails after (1 − D_0)·K_f/Δ^λ
+// (analytic, to one step). A larger overstress fails sooner (the law's rate effect).
+TEST(SpallFailure, TulerButcherFailsAfterTheDamageIntegral) {
+  auto time_to_fail = [](double overstress) {
+    SolidMaterial m = aluminium_seed000();
+    m.spall.strength = 1e9;
+    m.spall.tuler_butcher_exponent = 2.0;
+    m.spall.tuler_butcher_integral = 1e9 * 1e9 * 5e-9;  // 5 ns at Δ = 1 GPa [Pa²·s]
+    m.validate();
+    PointState p = m.initial_state();
+    const double rho0 = m.eos.rho0;
+    int ramp = 0;
+    while (-(p.pressure + p.viscous_pressure) < m.spall.strength + overstress && ramp++ < 100000) {
+      if (-(p.pressure + p.viscous_pressure) < m.spall.strength) {
+        EXPECT_EQ(p.damage, 0.0);
+      }
+      m.update(p, rho0, uniaxial(kRate), kDt, 1e-6);
+    }
+    const double d0 = p.damage, over = -p.pressure - m.spall.strength;
+    EXPECT_LT(d0, 1.0);
+    int steps = 0;
+    while (p.damage < 1.0 && steps < 1000000) {
+      m.update(p, rho0, Mat3::Zero(), kDt, 1e-6);
+      ++steps;
+    }
+    const double expected = (1.0 - d0) * m.spall.tuler_butcher_integral / std::pow(over, 2.0);
+    EXPECT_NEAR(steps * kDt, expected, kDt) << overstress;
+    EXPECT_EQ(p.pressure, 0.0);  // failed as in the instantaneous criterion
+    return expected;
+  };
+  const double slow = time_to_fail(0.5e9), fast = time_to_fail(1.0e9);
+  EXPECT_GT(slow, 3.0 * fast);  // (1/0.5)² = 4 less what the ramps accumulated
+}
+
+TEST(SpallFailure, TulerButcherInputErrors) {
+  SolidMaterial m = aluminium_seed000();
+  m.spall.strength = 1e9;
+  m.spall.tuler_butcher_exponent = 2.0;
+  EXPECT_THROW(m.validate(), InputError);  // no K_f
+  m.spall.tuler_butcher_integral = 1e9;
+  EXPECT_NO_THROW(m.validate());
+  m.spall.strength = 0.0;
+  EXPECT_THROW(m.validate(), InputError);  // no threshold
+  m.spall.strength = 1e9;
+  m.spall.tuler_butcher_exponent = -1.0;
+  EXPECT_THROW(m.validate(), InputError);
+}

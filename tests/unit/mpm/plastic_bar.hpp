@@ -56,6 +56,14 @@ inline mpm::SimulationOptions gimp() {
   o.shape = mpm::ShapeKind::Gimp;
   return o;
 }
+/// cpGIMP with the XPIC(2) velocity update and the smoothed dilatation (docs/theory/mpm.md,
+/// "Deviatoric stress behind shocks": the two together keep s_yy at yield behind the plastic front).
+inline mpm::SimulationOptions strength_preserving() {
+  auto o = gimp();
+  o.xpic_order = 2;
+  o.smooth_dilatation = true;
+  return o;
+}
 inline Result run(const Material& mat, double speed, double h, int cells, double viscosity_linear,
                   const mpm::SimulationOptions& options = gimp()) {
   strip::Setup s;

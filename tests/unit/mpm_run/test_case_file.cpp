@@ -157,4 +157,49 @@ TEST(MpmCaseFile, ContactKeys) {
   }
 }
 
+// The strength-preserving transfer keys (docs/mpm.md, [solver]): off by default, read when given, and
+// XPIC refused beside an explicit FLIP/PIC blend it would replace.
+TEST(MpmCaseFile, TransferFilterKeys) {
+  const auto plain = mpm::read_mpm_case(Config::parse(kBase, "case.toml")).options;
+  EXPECT_EQ(plain.xpic_order, 0);
+  EXPECT_FALSE(plain.smooth_dilatation);
+  const std::string on = replace(kBase, "end_time = 10e-9", "end_time = 10e-9\nxpic_order = 2\nsmooth_dilatation = true");
+  const auto o = mpm::read_mpm_case(Config::parse(on, "case.toml")).options;
+  EXPECT_EQ(o.xpic_order, 2);
+  EXPECT_TRUE(o.smooth_dilatation);
+  const std::pair<std::string, std::string> bad[] = {
+      {"xpic_order = 2\nflip = 0.99", "solver.xpic_order"},
+      {"xpic_order = -1", "solver.xpic_order"},
+      {"xpic_order = 17", "solver.xpic_order"},
+      {"xpic_order = 1.5", "solver.xpic_order"},
+      {"smooth_dilatation = 1", "solver.smooth_dilatation"},
+  };
+  for (const auto& [extra, expected] : bad) {
+    const std::string msg = error_of(replace(kBase, "end_time = 10e-9", "end_time = 10e-9\n" + extra));
+    EXPECT_NE(msg.find(expected), std::string::npos) << extra << ": " << msg;
+    EXPECT_NE(msg.find("case.toml"), std::string::npos) << msg;
+  }
+}
+
+// Tuler–Butcher spall keys of a [[material]] (docs/mpm.md): read when given, and a law without its
+// integral or its threshold is an InputError naming the key.
+TEST(MpmCaseFile, TulerButcherKeys) {
+  const std::string lib = "library = \"aluminium_seed000\"";
+  const std::string on = replace(kBase, lib, lib + "\nspall_strength = 1e9\nspall_tuler_butcher_exponent = 2.0\n"
+                                                   "spall_tuler_butcher_integral = 5e9");
+  const auto c = mpm::read_mpm_case(Config::parse(on, "case.toml"));
+  EXPECT_DOUBLE_EQ(c.materials[0].spall.tuler_butcher_exponent, 2.0);
+  EXPECT_DOUBLE_EQ(c.materials[0].spall.tuler_butcher_integral, 5e9);
+  const std::pair<std::string, std::string> bad[] = {
+      {"spall_strength = 1e9\nspall_tuler_butcher_exponent = 2.0", "spall_tuler_butcher_integral"},
+      {"spall_tuler_butcher_exponent = 2.0\nspall_tuler_butcher_integral = 5e9", "spall_strength"},
+      {"spall_strength = 1e9\nspall_tuler_butcher_exponent = -2.0", "spall_tuler_butcher_exponent"},
+  };
+  for (const auto& [extra, expected] : bad) {
+    const std::string msg = error_of(replace(kBase, lib, lib + "\n" + extra));
+    EXPECT_NE(msg.find(expected), std::string::npos) << extra << ": " << msg;
+    EXPECT_NE(msg.find("case.toml"), std::string::npos) << msg;
+  }
+}
+
 }  // namespace
