@@ -211,7 +211,7 @@ BuiltSystem from_data_file(const Config& system) {
   const std::filesystem::path file = system.get_input_file("data_file");  // relative to the case file
   const auto boundary = read_boundary(system);
   io::DataFile data = io::read_data(file, boundary);
-  BuiltSystem sys{data.box, std::move(data.atoms), {}, {}};
+  BuiltSystem sys{data.box, std::move(data.atoms), {}, {}, {}};
   sys.file_masses = sys.atoms.mass;
   std::fill(sys.atoms.mass.begin(), sys.atoms.mass.end(), 0.0);  // masses = [...] or the potential's first
   read_types(system, sys.atoms.mass.size(), sys.atoms);
