@@ -2,9 +2,9 @@
 # Parallel VTK pieces ([output] vtk_pieces, io/vtk_pieces): each method's tiny case run once with
 # single files and once in pieces; VTK's parallel readers (python3-vtk9) read the .pvti/.pvtp of
 # the pieces run as its serial readers read the single files (tests/cli/vtk_pieces.py): MPM's 2D
-# grid (point data, vtkGhostType) and particles in 3 pieces, DBM's cell data in 2, a 3D
-# phase-field grid in 3, PD points and macroparticles in 2, granular grains in 201 for 200 grains
-# (an empty piece). vtk_pieces = 1 writes the same bytes as no key. Skips the VTK part with a
+# grid (point data, vtkGhostType) and particles in 3 pieces, DBM's cell data in 2, the 3D
+# phase-field grid (sharp front, 40³) in 3, PD points and macroparticles in 2, granular grains in
+# 201 for 200 grains (an empty piece). vtk_pieces = 1 writes the same bytes as no key. Skips the VTK part with a
 # message when python3-vtk9 is absent (scripts/install-deps.sh installs it).
 source "$(dirname "$0")/lib.bash"
 set -e
@@ -28,27 +28,7 @@ pieces() {
 CASES="$ROOT/tests/cli/cases"
 pieces mpm "$CASES/mpm_tiny.toml" 3 grid.pvd particles.pvd
 pieces dbm "$CASES/dbm_sod.toml" 2 grid.pvd
-cat > "$WORK/phasefield_3d.toml" <<'EOF'
-method = "phasefield"
-[grid]
-dimensions = 3
-nodes = [12, 10, 8]
-spacing = 0.5
-[model]
-a = 0.4
-D = 1.0
-[time]
-scheme = "spectral"
-dt = 0.1
-end_time = 1.0
-[[initial.sphere]]
-center = [3.0, 2.5, 2.0]
-radius = 1.5
-[output]
-series_interval = 0.5
-field_interval = 0.5
-EOF
-pieces phasefield "$WORK/phasefield_3d.toml" 3 fields.pvd
+pieces phasefield "$CASES/phasefield_sharp_front_tiny.toml" 3 fields.pvd  # 40³ points: cut along z
 pieces pd "$CASES/pd_tiny.toml" 2 profiles/points.pvd
 pieces granular "$CASES/granular_tiny.toml" 201 profiles/grains.pvd
 grep -q "(3 empty)" "$WORK/check.txt" || grep -q "^skip" "$WORK/check.txt" || fail "201 pieces of 200 grains left no empty piece"
