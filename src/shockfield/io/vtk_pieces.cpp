@@ -55,6 +55,7 @@ std::string declare_arrays(const std::vector<VtkArray>& arrays, VtkPrecision pre
 struct PieceNames {
   PieceNames(const fs::path& folder, const std::string& name, const char* extension, std::size_t count) {
     const std::string stem = fs::path(name).filename().string();
+    fs::remove_all(folder / name);  // no piece left of an earlier frame of this name (a rerun, a resume)
     fs::create_directories(folder / name);
     for (std::size_t p = 0; p < count; ++p) {
       sources.push_back(fmt::format("{}/{}_{}{}", stem, stem, p, extension));
