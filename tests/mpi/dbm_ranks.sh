@@ -4,7 +4,8 @@
 # reflecting y walls: 2 x 2 blocks with corners, and 4 x 1) must be byte-identical to the serial
 # run's: each cell's update reads the same numbers whatever the rank grid, and every output is
 # computed from the gathered lattice by the serial code. A run stopped on 4 ranks and resumed on 2
-# must end identical too, and so must a run writing its frames in 3 VTK pieces ([output] vtk_pieces). Bad input — more ranks than the lattice allows for the 2 ghost layers, a
+# must end identical too, and so must a run writing its frames in 3 VTK pieces ([output]
+# vtk_pieces). Bad input — more ranks than the lattice allows for the 2 ghost layers, a
 # --rank-grid that is not the rank count, a method that is not decomposed — exits 2 on every rank
 # with the message printed once; a blow-up exits 3 with the serial run's message.
 # Usage: dbm_ranks.sh SHOCKFIELD SOURCE_DIR MPIEXEC PART, PART one of sod (the tube on 1, 2, 4
