@@ -33,6 +33,13 @@ pieces pd "$CASES/pd_tiny.toml" 2 profiles/points.pvd
 pieces granular "$CASES/granular_tiny.toml" 201 profiles/grains.pvd
 grep -q "(3 empty)" "$WORK/check.txt" || grep -q "^skip" "$WORK/check.txt" || fail "201 pieces of 200 grains left no empty piece"
 pieces macroparticle "$CASES/macroparticle_tiny.toml" 2 particles.pvd
+# shockfield analyze reads the .pvti frames as the single files: the same statistics per frame.
+for run in mpm_1 mpm_3; do
+  "$SF" analyze stats "$WORK/$run/grid.pvd" --array pressure -o "$WORK/stats_$run" --no-plot > /dev/null
+done
+[ "$(cut -d, -f2- "$WORK/stats_mpm_1/stats.csv")" = "$(cut -d, -f2- "$WORK/stats_mpm_3/stats.csv")" ] ||
+  fail "analyze stats of the .pvti frames differ from the single files'"
+echo "ok: analyze stats of the 3-piece MPM grids equal the single files'"
 
 # One piece is today's single file: the same bytes with vtk_pieces = 1 as without the key.
 sed "s/^\[output\]/[output]\nvtk_pieces = 1/" "$CASES/mpm_tiny.toml" > "$WORK/mpm_one.toml"
