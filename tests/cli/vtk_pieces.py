@@ -14,7 +14,9 @@ and the shared boundary points of image pieces hold the same values). Units: eac
 <PDataArray> carries the units="..." of the single file's <DataArray> of that name, and so does
 each piece file's. Pieces: a .pvti has min(PIECES, cells along its longest axis) pieces, a .pvtp
 PIECES, and every piece file VTK's serial reader opens without error (an empty one included).
-Exit 77 when python3-vtk9 is absent (the test then says it skipped).
+shockfield's Python reader (shockfield.vtk_arrays, numpy only) reads each .pvtp as the .vtp, and
+shockfield.Run's particle frames of the two runs are equal. Exit 77 when python3-vtk9 is absent
+(the test then says it skipped).
 """
 import os
 import re
@@ -22,6 +24,10 @@ import sys
 import xml.etree.ElementTree as ET
 
 import numpy as np
+
+sys.path.insert(0, sys.argv[0].rsplit("/tests/", 1)[0] + "/python")
+from shockfield.run import Run  # noqa: E402
+from shockfield.vtk_arrays import read_vtk_arrays  # noqa: E402
 
 try:
     import vtk
@@ -87,6 +93,10 @@ def compare(single_file, pieces_file, pieces):
             fail(f"{pieces_file}: {key} is {other_type}×{other_components}, the single file's {vtk_type}×{components}")
         if not np.array_equal(values, other, equal_nan=True):
             fail(f"{pieces_file}: {key} values differ from {single_file}")
+    if pieces_file.endswith(".pvtp"):
+        ours, reference = read_vtk_arrays(pieces_file), read_vtk_arrays(single_file)
+        if ours.keys() != reference.keys() or not all(np.array_equal(ours[k], reference[k]) for k in ours):
+            fail(f"{pieces_file}: shockfield.vtk_arrays reads other arrays than from {single_file}")
     # Units: the summary's declarations and every piece's arrays carry the single file's.
     reference = units(single_file, "DataArray")
     declared = units(pieces_file, "PDataArray")
@@ -129,6 +139,12 @@ def main():
             counts.add(n)
             empty += e
         print(f"ok: {pvd}: {len(one)} frames in {sorted(counts)} pieces ({empty} empty) read by VTK as the single files")
+        if one[0][1].endswith(".vtp"):  # shockfield.Run's particle frames (its first .pvd of particles)
+            a, b = list(Run(single_run).frames(kind="particles")), list(Run(pieces_run).frames(kind="particles"))
+            if [f.time for f in a] != [f.time for f in b] or any(
+                    not np.array_equal(x.data[name], y.data[name]) for x, y in zip(a, b) for name in x.data.dtype.names):
+                fail(f"{pieces_run}: shockfield.Run's particle frames differ from the single files'")
+            print(f"ok: {pvd}: shockfield.Run reads the .pvtp frames as the .vtp")
 
 
 main()
