@@ -78,7 +78,7 @@ std::vector<VtkExtent> image_piece_extents(const Index3& points, int pieces) {
   for (int d = 1; d >= 0; --d)
     if (points[static_cast<std::size_t>(d)] > points[static_cast<std::size_t>(axis)]) axis = d;
   const auto a = static_cast<std::size_t>(axis);
-  const std::size_t cells = points[a] - 1;
+  const std::size_t cells = points[a] > 0 ? points[a] - 1 : 0;
   const std::size_t count = std::max<std::size_t>(1, std::min(cells, static_cast<std::size_t>(pieces)));
   const VtkExtent whole = VtkExtent::of(points);
   std::vector<VtkExtent> out(count, whole);
