@@ -264,7 +264,8 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
   const auto where = [&](std::size_t pos) {
     return fmt::format("{}:{}", path, line_at(text, pos));
   };
-  Tokens extent(xml_attribute(tag, "WholeExtent"), path, line_at(text, image));
+  const std::string whole_extent = xml_attribute(tag, "WholeExtent");  // Tokens views it
+  Tokens extent(whole_extent, path, line_at(text, image));
   std::array<double, 6> w{};
   for (auto& v : w) v = extent.number("WholeExtent value");
   const auto check_extent = [&](const std::array<double, 6>& x, const char* what) {
