@@ -231,9 +231,9 @@ class Run:
         """Iterates over the run's frames in time order, of ``kind`` (default: the first the run
         has): "dumps" (LAMMPS dumps: md's, macroparticle's, and pd's and granular's with [output]
         dump = true; structured arrays of their columns), "fields" (the grid
-        fields of its .pvd of .vti files: mpm, dbm, phasefield; ``array`` names the data array,
-        default the first), "profiles" (pd, dbm: profiles/profile_<k>.csv as structured arrays
-        at the times of profiles/index.csv) or "particles" (the .pvd of .vtp files: mpm's
+        fields of its .pvd of .vti or .pvti files: mpm, dbm, phasefield; ``array`` names the data
+        array, default the first), "profiles" (pd, dbm: profiles/profile_<k>.csv as structured arrays
+        at the times of profiles/index.csv) or "particles" (the .pvd of .vtp or .pvtp files: mpm's
         particles, pd's points, granular's grains; structured arrays, ``read_points``).
         InputError naming its tables when it has none."""
         for frames_of_file in self._frame_files(array, kind):
@@ -249,8 +249,8 @@ class Run:
         dumps = sorted(self.folder.glob("dumps/*.lammpstrj"), key=_step_of) or sorted(
             self.folder.glob("*.lammpstrj"), key=_step_of)
         collections = sorted(self.folder.glob("*.pvd")) + sorted(self.folder.glob("profiles/*.pvd"))
-        series = [p for p in collections if ".vti" in p.read_text()]
-        particles = [p for p in collections if ".vtp" in p.read_text()]
+        series = [p for p in collections if re.search(r'\.p?vti"', p.read_text())]  # .pvti: in pieces
+        particles = [p for p in collections if re.search(r'\.p?vtp"', p.read_text())]
         index = self.folder / "profiles" / "index.csv"
         available = [k for k, present in (("dumps", dumps), ("fields", series), ("profiles", index.is_file()),
                                           ("particles", particles)) if present]

@@ -1,12 +1,14 @@
 """The data arrays of a VTK XML file (.vti/.vtp) as shockfield writes it — and as ParaView saves
 it: ascii, inline base64 ("binary"), appended raw or base64, uncompressed or compressed with
 vtkZLibDataCompressor (zlib blocks: a header [blocks, block size, last block size, compressed
-sizes...] then the blocks). Uses only numpy and the standard library.
+sizes...] then the blocks); and of a .pvtp (particles in pieces, [output] vtk_pieces): its
+pieces' arrays joined. Uses only numpy and the standard library.
 
     arrays = read_vtk_arrays("fields/particles_000000100.vtp")
     arrays["velocity"]   # numpy array, shape (n, 3)
 """
 import base64
+import os
 import re
 import zlib
 
@@ -45,6 +47,21 @@ def _base64_array(text, header, endian, compressed):
     return _decode(head + base64.b64decode(text[chars(head_bytes):]), header, endian, compressed)
 
 
+def _piece_arrays(path, markup):
+    """The arrays of a .pvtp's pieces joined in piece order; the vertex cells (one per point, as
+    shockfield writes them) numbered over the whole."""
+    folder = os.path.dirname(path)
+    pieces = [read_vtk_arrays(os.path.join(folder, _attributes(m.group(1))[b"Source"].decode()))
+              for m in re.finditer(rb"<Piece\b([^>]*)>", markup)]
+    if not pieces:
+        raise ValueError(f"{path}: a PPolyData without pieces")
+    out = {name: np.concatenate([p[name] for p in pieces]) for name in pieces[0]
+           if name not in ("connectivity", "offsets")}
+    n = len(out["points"])
+    out["connectivity"], out["offsets"] = np.arange(n, dtype=np.int64), np.arange(1, n + 1, dtype=np.int64)
+    return out
+
+
 def read_vtk_arrays(path):
     """{name: numpy array} of every DataArray (points, point and cell data); arrays with k > 1
     components have shape (n, k)."""
@@ -52,6 +69,8 @@ def read_vtk_arrays(path):
         data = f.read()
     start = data.find(b"<AppendedData")
     markup = data if start < 0 else data[:start]
+    if re.search(rb'<VTKFile[^>]*type="PPolyData"', markup):
+        return _piece_arrays(path, markup)
     vtkfile = _attributes(re.search(rb"<VTKFile[^>]*>", markup).group(0))
     endian = "<" if vtkfile.get(b"byte_order", b"LittleEndian") == b"LittleEndian" else ">"
     header = "u8" if vtkfile.get(b"header_type") == b"UInt64" else "u4"

@@ -134,8 +134,8 @@ constexpr CheckpointCase kCheckpointCases[] = {{"mpm", "mpm_tiny.toml", 5},
 
 // A target whose inputs go through a parser in a fork of the fuzzer.
 Target in_process(const Context& c, const std::string& name, std::vector<fs::path> inputs,
-                  void (*parse)(const fs::path&), bool binary = false) {
-  return {name, std::move(inputs), binary, false, "", [c, parse](const fs::path& file, const fs::path& work) {
+                  void (*parse)(const fs::path&), bool binary = false, bool with_siblings = false) {
+  return {name, std::move(inputs), binary, with_siblings, "", [c, parse](const fs::path& file, const fs::path& work) {
             return run_function([&] { parse(file); }, work, c.limits);
           }};
 }
@@ -166,6 +166,9 @@ std::vector<fs::path> field_inputs(const Context& c) {
     fields.push_back(c.source / "tests/fixtures/analysis/fields" / f);
   return fields;
 }
+
+// A parallel image (.pvti): the summary is mutated, its piece folder linked next to the mutant.
+std::vector<fs::path> pvti_inputs(const Context& c) { return {c.source / "tests/fixtures/fuzz/inputs/pvti/grid.pvti"}; }
 
 std::vector<fs::path> point_inputs(const Context& c) {
   std::vector<fs::path> points;
@@ -222,6 +225,7 @@ std::vector<Target> parser_targets(const Context& c) {
           in_process(c, "dump", dump_inputs(c), parse_dump),
           in_process(c, "extxyz", extxyz_inputs(c), parse_extxyz),
           in_process(c, "field", field_inputs(c), parse_field),
+          in_process(c, "pvti", pvti_inputs(c), parse_field, false, true),
           in_process(c, "points", point_inputs(c), parse_points),
           in_process(c, "checkpoint", {c.source / "tests/fixtures/fuzz/inputs/checkpoint/checkpoint.h5"},
                      parse_checkpoint, true),
@@ -259,6 +263,7 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
   t.push_back(in_process(c, "dump", dump_inputs(c), parse_dump));
   t.push_back(in_process(c, "extxyz", extxyz_inputs(c), parse_extxyz));
   t.push_back(in_process(c, "field", field_inputs(c), parse_field));
+  t.push_back(in_process(c, "pvti", pvti_inputs(c), parse_field, false, true));
   t.push_back({"points", point_inputs(c), false, false, "",
                [c](const fs::path& file, const fs::path& work) { return analyze_geometry(c, file, work); }});
   const auto atoms = [c](const fs::path& file, const fs::path& work) { return analyze_atoms(c, file, work); };

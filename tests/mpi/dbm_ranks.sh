@@ -4,7 +4,8 @@
 # reflecting y walls: 2 x 2 blocks with corners, and 4 x 1) must be byte-identical to the serial
 # run's: each cell's update reads the same numbers whatever the rank grid, and every output is
 # computed from the gathered lattice by the serial code. A run stopped on 4 ranks and resumed on 2
-# must end identical too. Bad input — more ranks than the lattice allows for the 2 ghost layers, a
+# must end identical too, and so must a run writing its frames in 3 VTK pieces ([output]
+# vtk_pieces). Bad input — more ranks than the lattice allows for the 2 ghost layers, a
 # --rank-grid that is not the rank count, a method that is not decomposed — exits 2 on every rank
 # with the message printed once; a blow-up exits 3 with the serial run's message.
 # Usage: dbm_ranks.sh SHOCKFIELD SOURCE_DIR MPIEXEC PART, PART one of sod (the tube on 1, 2, 4
@@ -53,6 +54,14 @@ grep -q "on 4 ranks (rank grid 4 x 1 x 1)" "$WORK/np4/log.txt" || fail "the log 
 OMP_NUM_THREADS=2 "$MPIEXEC" --oversubscribe --allow-run-as-root --bind-to none -np 2 "$SF" run "$WORK/sod.toml" \
   --output "$WORK/hybrid" -q > /dev/null
 same_outputs "$WORK/serial" "$WORK/hybrid" "sod on 2 ranks x 2 threads"
+# [output] vtk_pieces: rank 0 writes the .pvti and every piece from the gathered lattice, the
+# serial run's bytes (io/vtk_pieces; not yet one piece per rank).
+printf '%s\n' "${sod/\[output\]/[output]
+vtk_pieces = 3}" > "$WORK/sod_pieces.toml"
+"$SF" run "$WORK/sod_pieces.toml" --output "$WORK/serial_pieces" -q > /dev/null
+mpi 2 run "$WORK/sod_pieces.toml" --output "$WORK/np2_pieces" -q > /dev/null
+[ -f "$WORK/np2_pieces/fields/grid_000000040/grid_000000040_2.vti" ] || fail "no third piece on 2 ranks"
+same_outputs "$WORK/serial_pieces" "$WORK/np2_pieces" "sod in 3 VTK pieces on 2 ranks"
 fi
 if [ "$PART" = grids_2d ]; then
 for y in periodic walls; do

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "shockfield/analysis/pvti_reader.hpp"
 #include "shockfield/analysis/vti_binary.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/vtk_zlib.hpp"
@@ -263,10 +264,31 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
   const auto where = [&](std::size_t pos) {
     return fmt::format("{}:{}", path, line_at(text, pos));
   };
-  const std::string extent_text = xml_attribute(tag, "WholeExtent");
-  Tokens extent(extent_text, path, line_at(text, image));
-  std::array<double, 6> e{};
-  for (auto& v : e) v = extent.number("WholeExtent value");
+  const std::string whole_extent = xml_attribute(tag, "WholeExtent");  // Tokens views it
+  Tokens extent(whole_extent, path, line_at(text, image));
+  std::array<double, 6> w{};
+  for (auto& v : w) v = extent.number("WholeExtent value");
+  const auto check_extent = [&](const std::array<double, 6>& x, const char* what) {
+    for (int a = 0; a < 3; ++a)
+      if (const double points = std::max(0.0, x[2 * a + 1] - x[2 * a] + 1);
+          points > static_cast<double>(text.size()) || points != std::floor(points))
+        throw InputError(fmt::format("{}: {} {} {} along {} is not a whole number of points that fits in the file",
+                                     where(image), what, x[2 * a], x[2 * a + 1], "xyz"[a]));
+  };
+  check_extent(w, "WholeExtent");
+  // A piece of a .pvti holds its own Extent within the WholeExtent (a single file: the same).
+  std::array<double, 6> e = w;
+  if (const auto piece = markup.find("<Piece", image); piece != std::string::npos) {
+    const std::string given = xml_attribute(markup.substr(piece, markup.find('>', piece) - piece), "Extent");
+    Tokens t(given, path, line_at(text, piece));
+    if (!given.empty())
+      for (auto& v : e) v = t.number("Piece Extent value");
+    for (int a = 0; a < 3; ++a)
+      if (e[2 * a] < w[2 * a] || e[2 * a + 1] > w[2 * a + 1])
+        throw InputError(fmt::format("{}: Piece Extent {} {} along {} lies outside the WholeExtent {} {}", where(piece),
+                                     e[2 * a], e[2 * a + 1], "xyz"[a], w[2 * a], w[2 * a + 1]));
+    check_extent(e, "Piece Extent");
+  }
   GridField f;
   for (const auto& [key, values] : {std::pair{"Origin", &f.origin}, {"Spacing", &f.spacing}}) {
     const std::string given = xml_attribute(tag, key);
@@ -291,9 +313,6 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
         cell_pos != std::string::npos && (point_pos == std::string::npos || cell_pos > point_pos);
     for (int a = 0; a < 3; ++a) {
       const double points = std::max(0.0, e[2 * a + 1] - e[2 * a] + 1);
-      if (points > static_cast<double>(text.size()) || points != std::floor(points))
-        throw InputError(fmt::format("{}: WholeExtent {} {} along {} is not a whole number of points "
-                                     "that fits in the file", where(image), e[2 * a], e[2 * a + 1], "xyz"[a]));
       f.n[a] = cell ? std::max<std::size_t>(static_cast<std::size_t>(points), 2) - 1
                     : static_cast<std::size_t>(points);
     }
@@ -363,13 +382,13 @@ std::vector<SeriesEntry> read_series(const std::string& path) {
   for (const auto& entry : fs::directory_iterator(path)) {
     if (entry.path().extension() != ".pvd") continue;
     auto series = read_pvd(entry.path());
-    if (fs::path(series.front().file).extension() != ".vti") continue;
+    if (const auto ext = fs::path(series.front().file).extension(); ext != ".vti" && ext != ".pvti") continue;
     grids.push_back(std::move(series));
     names.append(" ").append(entry.path().filename().string());
   }
   if (grids.size() != 1)
     throw InputError(
-        fmt::format("{}: {} .pvd series of image data (.vti){}{}; expected one (name "
+        fmt::format("{}: {} .pvd series of image data (.vti, .pvti){}{}; expected one (name "
                     "the .pvd file instead of the folder)",
                     path, grids.size(), names.empty() ? "" : ":", names));
   return grids.front();
@@ -387,10 +406,12 @@ GridField read_grid_field(const std::string& path, const std::string& array) {
     f = read_legacy_vtk(path, text, array);
   else if (ext == ".vti")
     f = read_vti(path, text, array);
+  else if (ext == ".pvti")
+    f = read_pvti(path, text, array);
   else
     throw InputError(
         fmt::format("{}: unknown field format '{}'; expected .csv, .txt, .vtk "
-                    "(legacy ASCII STRUCTURED_POINTS) or .vti (XML ImageData)",
+                    "(legacy ASCII STRUCTURED_POINTS), .vti (XML ImageData) or .pvti (its pieces)",
                     path, ext));
   if (f.void_count() == 0) f.is_void.clear();
   validate(f, path);

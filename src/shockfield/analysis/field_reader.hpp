@@ -6,6 +6,7 @@
 //  - .vtk: legacy VTK, ASCII, DATASET STRUCTURED_POINTS with POINT_DATA or CELL_DATA SCALARS.
 //  - .vti: VTK XML ImageData (PointData or CellData), a DataArray in format="ascii", "binary" or
 //    "appended" (raw or base64; uncompressed: analysis/vti_binary.hpp).
+//  - .pvti: VTK XML PImageData over .vti pieces (analysis/pvti_reader.hpp), the grid they tile.
 // For VTK files, `array` picks the data array by name (default: the first scalar array); NaN
 // entries mark void cells (ParaView's convention for blanked points).
 //
@@ -27,8 +28,8 @@ struct SeriesEntry {
   std::string file;  ///< path of the data set (the .pvd's folder joined with its `file`)
 };
 
-/// The data sets of a .pvd file, or of the one .pvd in folder `path` whose data sets are .vti
-/// files, in time order. Throws InputError when there is none, or several in a folder.
+/// The data sets of a .pvd file, or of the one .pvd in folder `path` whose data sets are .vti or
+/// .pvti files, in time order. Throws InputError when there is none, or several in a folder.
 std::vector<SeriesEntry> read_series(const std::string& path);
 
 }  // namespace shockfield::analysis

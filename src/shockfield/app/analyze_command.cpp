@@ -47,8 +47,9 @@ struct Morphology {
 const char* kFormats =
     "Fields: .csv/.txt (one line per row, comma-separated, slices separated by a blank line, "
     "`void` marks a void cell, `# spacing = h`), .vtk (legacy ASCII STRUCTURED_POINTS), .vti "
-    "(XML ImageData: ascii, binary or appended raw/base64, uncompressed or zlib); a .pvd series or a run "
-    "folder with one .pvd of .vti fields stands for its fields at its times. See "
+    "(XML ImageData: ascii, binary or appended raw/base64, uncompressed or zlib), .pvti (its parallel "
+    "pieces); a .pvd series or a run folder with one .pvd of .vti or .pvti fields stands for its fields "
+    "at its times. See "
     "docs/analysis-minkowski.md.";
 
 void add_common(CLI::App* cmd, Common& c, const char* files_help) {

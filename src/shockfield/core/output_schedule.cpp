@@ -43,6 +43,7 @@ OutputIntervals read_output_intervals(const std::optional<Config>& output, doubl
     s.vtk.precision =
         t.get_choice_or("vtk_precision", {"float32", "float64"}, "float32") == "float32" ? io::VtkPrecision::Float32
                                                                                         : io::VtkPrecision::Float64;
+    s.vtk.pieces = static_cast<int>(t.get_int_or("vtk_pieces", 1, Range::closed(1, 4096)));
   }
   if (kinds.dumps) s.dumps = t.get_bool_or("dump", false);
   s.checkpoint_every = t.get_int_or("checkpoint_every", 0, Range::non_negative());

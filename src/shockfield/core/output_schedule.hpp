@@ -30,7 +30,8 @@ struct OutputIntervals {
   long long checkpoint_every = 0;  ///< checkpoint every ... steps; 0: only at the end or on a stop
   long long thermo_every = 0;      ///< thermo table row every ... steps; 0: about ten rows per run
   /// How field frames store their arrays (vtk_encoding, vtk_precision; methods with fields):
-  /// appended binary compressed with zlib, in single precision, unless the case says otherwise.
+  /// appended binary compressed with zlib, in single precision, unless the case says otherwise;
+  /// and in how many pieces (vtk_pieces, default 1: single files; io/vtk_pieces).
   io::VtkFormat vtk{io::VtkEncoding::Zlib, io::VtkPrecision::Float32};
   /// With every particle frame also a LAMMPS text dump (`dump`; methods with particle frames).
   bool dumps = false;
@@ -41,7 +42,7 @@ struct OutputIntervals {
 struct OutputKinds {
   bool profiles = false;
   bool fields = false;
-  bool vtk = false;  ///< field frames are VTK files (vtk_encoding, vtk_precision)
+  bool vtk = false;  ///< field frames are VTK files (vtk_encoding, vtk_precision, vtk_pieces)
   bool dumps = false;  ///< particle frames can also be LAMMPS dumps (dump)
 };
 

@@ -4,6 +4,7 @@
 
 #include "shockfield/dbm/detonation.hpp"
 #include "shockfield/dbm/tne.hpp"
+#include "shockfield/io/vtk_pieces.hpp"
 
 namespace shockfield::dbm {
 
@@ -80,9 +81,7 @@ void RunOutput::write_fields(const Simulation& sim) {
   } else {
     img.cell_data.push_back({"D", 1, tne_measures(sim).strength, "1"});
   }
-  const std::string file = fmt::format("fields/grid_{:09d}.vti", sim.steps());
-  io::write_vti(folder_ / file, img, vtk_);
-  grid_pvd_.add(sim.time(), file);
+  grid_pvd_.add(sim.time(), io::write_image_frame(folder_, fmt::format("fields/grid_{:09d}", sim.steps()), img, vtk_));
 }
 
 }  // namespace shockfield::dbm

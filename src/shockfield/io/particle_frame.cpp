@@ -7,6 +7,7 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/io/checked_file.hpp"
+#include "shockfield/io/vtk_pieces.hpp"
 
 namespace shockfield::io {
 
@@ -70,15 +71,14 @@ ParticleOutput::ParticleOutput(const std::filesystem::path& run, const std::file
 }
 
 void ParticleOutput::write(const ParticleFrame& frame, std::int64_t index) {
-  const std::string file = fmt::format("{}_{}.vtp", stem_, index);
+  const std::string name = fmt::format("{}_{}", stem_, index);
   if (frame.type.empty()) {
-    write_vtp(folder_ / file, frame.xyz, frame.arrays, vtk_);
+    pvd_.add(frame.time, write_points_frame(folder_, name, frame.xyz, frame.arrays, vtk_));
   } else {
     std::vector<VtkArray> arrays = frame.arrays;
     arrays.push_back({"type", 1, std::vector<double>(frame.type.begin(), frame.type.end()), "1", true});
-    write_vtp(folder_ / file, frame.xyz, arrays, vtk_);
+    pvd_.add(frame.time, write_points_frame(folder_, name, frame.xyz, arrays, vtk_));
   }
-  pvd_.add(frame.time, file);
   if (!dumps_) return;
   CheckedOutput out(run_ / "dumps" / fmt::format("dump.{:0{}}.lammpstrj", frame.step, pad_));
   write_dump_frame(out.stream(), particle_dump_frame(frame), DumpWriteOptions{true});

@@ -32,12 +32,12 @@ class ArrayWriter {
     if (!a.integer) return reals(a.name, a.components, a.values, a.units);
     std::vector<std::int32_t> labels(a.values.size());
     for (std::size_t i = 0; i < labels.size(); ++i) labels[i] = static_cast<std::int32_t>(a.values[i]);
-    array("Int32", a.name, a.components, labels, a.units);
+    array(data_array_type(a, format_.precision), a.name, a.components, labels, a.units);
   }
   void reals(const std::string& name, int components, const std::vector<double>& v, const std::string& units) {
-    if (format_.precision == VtkPrecision::Float64) return array("Float64", name, components, v, units);
+    if (format_.precision == VtkPrecision::Float64) return array(real_type(format_.precision), name, components, v, units);
     const std::vector<float> single(v.begin(), v.end());
-    array("Float32", name, components, single, units);
+    array(real_type(format_.precision), name, components, single, units);
   }
   template <class T>
   void array(const char* type, const std::string& name, int components, const std::vector<T>& v,
@@ -117,7 +117,30 @@ std::string base64(const unsigned char* data, std::size_t size) {
   return out;
 }
 
+const char* real_type(VtkPrecision precision) { return precision == VtkPrecision::Float64 ? "Float64" : "Float32"; }
+
+const char* data_array_type(const VtkArray& a, VtkPrecision precision) {
+  return a.integer ? "Int32" : real_type(precision);
+}
+
+VtkExtent VtkExtent::of(const std::array<std::size_t, 3>& points) {
+  return {{0, 0, 0}, {points[0] - 1, points[1] - 1, points[2] - 1}};
+}
+
+std::string VtkExtent::text() const {
+  return fmt::format("{} {} {} {} {} {}", lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]);
+}
+
 void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkFormat format) {
+  const VtkExtent whole = VtkExtent::of(image.points);
+  write_vti_piece(file, image, format, whole, whole);
+}
+
+void write_vti_piece(const std::filesystem::path& file, const VtkImage& image, VtkFormat format, const VtkExtent& piece,
+                     const VtkExtent& whole) {
+  if (piece.points() != image.points)
+    throw RunError(fmt::format("{}: piece extent {} for an image of {}×{}×{} points", file.string(), piece.text(),
+                               image.points[0], image.points[1], image.points[2]));
   std::ostringstream out;
   ArrayWriter arrays(out, format);
   const auto& n = image.points;
@@ -130,13 +153,12 @@ void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkForm
       if (a.values.size() != count * static_cast<std::size_t>(a.components))
         throw RunError(fmt::format("{}: array '{}' has {} values for {} {}", file.string(), a.name, a.values.size(),
                                    count, what));
-  const std::string extent = fmt::format("0 {} 0 {} 0 {}", n[0] - 1, n[1] - 1, n[2] - 1);
   out << "<?xml version=\"1.0\"?>\n"
       << arrays.file_tag("ImageData")
       << fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{} {} {}\" Spacing=\"{} {} {}\">\n",
-                     extent, image.origin[0], image.origin[1], image.origin[2], image.spacing[0], image.spacing[1],
+                     whole.text(), image.origin[0], image.origin[1], image.origin[2], image.spacing[0], image.spacing[1],
                      image.spacing[2])
-      << fmt::format("    <Piece Extent=\"{}\">\n", extent) << "      <PointData>\n";
+      << fmt::format("    <Piece Extent=\"{}\">\n", piece.text()) << "      <PointData>\n";
   for (const VtkArray& a : image.point_data) arrays.data(a);
   if (!image.hidden_points.empty()) {
     if (image.hidden_points.size() != n[0] * n[1] * n[2])

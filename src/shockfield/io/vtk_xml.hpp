@@ -23,6 +23,9 @@ struct VtkFormat {
   VtkFormat(VtkEncoding e = VtkEncoding::Ascii, VtkPrecision p = VtkPrecision::Float64) : encoding(e), precision(p) {}
   VtkEncoding encoding;
   VtkPrecision precision;
+  /// Pieces per frame ([output] vtk_pieces): 1 writes one .vti/.vtp; more write a .pvti/.pvtp
+  /// over that many piece files (io/vtk_pieces).
+  int pieces = 1;
 };
 
 /// The case-file spelling of an encoding: "ascii", "base64", "raw", "zlib".
@@ -62,7 +65,26 @@ struct VtkImage {
   std::vector<bool> hidden_points{};
 };
 
+/// The VTK type name of an array's values in a file of `precision`: Int32 (categorical), Float32 or Float64.
+const char* data_array_type(const VtkArray& a, VtkPrecision precision);
+/// The VTK type name of real values (positions) in `precision`.
+const char* real_type(VtkPrecision precision);
+
+/// Point index range [lo, hi] per axis, VTK's Extent "x0 x1 y0 y1 z0 z1".
+struct VtkExtent {
+  std::array<std::size_t, 3> lo{0, 0, 0}, hi{0, 0, 0};
+  /// The extent of a whole grid of `points`.
+  static VtkExtent of(const std::array<std::size_t, 3>& points);
+  std::array<std::size_t, 3> points() const { return {hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1}; }
+  std::string text() const;
+  bool operator==(const VtkExtent&) const = default;
+};
+
 void write_vti(const std::filesystem::path& file, const VtkImage& image, VtkFormat format);
+/// write_vti of the piece `piece` of a grid of extent `whole` (a .pvti's piece file): `image` holds
+/// the piece's points and cells only, and the whole grid's origin and spacing.
+void write_vti_piece(const std::filesystem::path& file, const VtkImage& image, VtkFormat format, const VtkExtent& piece,
+                     const VtkExtent& whole);
 /// Points (x, y, z interleaved, in `position_units`) with one vertex cell each, so every ParaView
 /// representation shows them.
 void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz, const std::vector<VtkArray>& point_data,

@@ -45,6 +45,7 @@ struct OutputSpec {
   long long thermo_every = 0;     ///< 0: about ten rows
   long long dump_every = 0;       ///< LAMMPS text dumps, 0: none
   long long vtk_every = 0;        ///< VTK particles, 0: none
+  int vtk_pieces = 1;             ///< pieces per VTK frame (io/vtk_pieces), 1: one .vtp
   long long checkpoint_every = 0;
 };
 

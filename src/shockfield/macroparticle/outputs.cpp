@@ -4,6 +4,7 @@
 
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/lammps_dump.hpp"
+#include "shockfield/io/vtk_pieces.hpp"
 
 namespace shockfield::macroparticle {
 
@@ -13,13 +14,14 @@ namespace {
 
 bool due(long long every, std::int64_t step) { return every > 0 && step % every == 0; }
 
-// Drops the frames of a folder written after `step` (their names end in _<step>.* or .<step>.*).
+// Drops the frames of a folder written after `step` (their names end in _<step>.* or .<step>.*,
+// a frame's folder of VTK pieces in _<step>).
 void drop_frames_after(const fs::path& dir, std::int64_t step) {
   if (!fs::exists(dir)) return;
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string stem = entry.path().stem().string();
     const auto cut = stem.find_last_of("._");
-    if (cut != std::string::npos && std::stoll(stem.substr(cut + 1)) > step) fs::remove(entry.path());
+    if (cut != std::string::npos && std::stoll(stem.substr(cut + 1)) > step) fs::remove_all(entry.path());
   }
 }
 
@@ -88,10 +90,12 @@ void RodOutputs::write_vtk(const Rod& rod) {
       xyz.push_back(a.x[i][d] * rod.units().length);
       velocity.push_back(a.v[i][d] * rod.units().velocity());
     }
-  const std::string name = fmt::format("particles_{}.vtp", rod.sim().step);
-  io::write_vtp(folder_ / "particles" / name, xyz,
-                {{"velocity", 3, std::move(velocity), "m/s"}, {"stress_zz", 1, rod.particle_stress(), "Pa"}}, io::VtkFormat{io::VtkEncoding::Zlib, io::VtkPrecision::Float32});
-  pvd_.add(rod.sim().time * rod.units().time(), "particles/" + name);
+  io::VtkFormat format{io::VtkEncoding::Zlib, io::VtkPrecision::Float32};
+  format.pieces = spec_.vtk_pieces;
+  const std::string file = io::write_points_frame(
+      folder_, fmt::format("particles/particles_{}", rod.sim().step), xyz,
+      {{"velocity", 3, std::move(velocity), "m/s"}, {"stress_zz", 1, rod.particle_stress(), "Pa"}}, format);
+  pvd_.add(rod.sim().time * rod.units().time(), file);
 }
 
 }  // namespace shockfield::macroparticle

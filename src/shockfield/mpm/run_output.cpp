@@ -8,6 +8,7 @@
 #include "shockfield/analysis/field_statistics.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/checked_file.hpp"
+#include "shockfield/io/vtk_pieces.hpp"
 #include "shockfield/mpm/diagnostics.hpp"
 
 namespace shockfield::mpm {
@@ -172,9 +173,8 @@ io::VtkImage grid_fields(const Simulation& sim) {
 }
 
 void RunOutput::write_fields(const Simulation& sim) {
-  const std::string grid_file = fmt::format("fields/grid_{:09d}.vti", sim.step_count());
-  io::write_vti(folder_ / grid_file, grid_fields(sim), case_.output.vtk);
-  grid_pvd_.add(sim.time(), grid_file);
+  const std::string grid_name = fmt::format("fields/grid_{:09d}", sim.step_count());
+  grid_pvd_.add(sim.time(), io::write_image_frame(folder_, grid_name, grid_fields(sim), case_.output.vtk));
   if (!case_.output.particles) return;
   const Particles& p = sim.particles();
   const std::size_t n = p.size();
@@ -210,9 +210,8 @@ void RunOutput::write_fields(const Simulation& sim) {
   arrays.push_back({"velocity", 3, std::move(vel), "m/s"});
   arrays.push_back({"stress", 9, std::move(stress), "Pa"});
   arrays.push_back({"deviator", 9, std::move(deviator), "Pa"});
-  const std::string file = fmt::format("fields/particles_{:09d}.vtp", sim.step_count());
-  io::write_vtp(folder_ / file, xyz, arrays, case_.output.vtk);
-  particles_pvd_.add(sim.time(), file);
+  const std::string name = fmt::format("fields/particles_{:09d}", sim.step_count());
+  particles_pvd_.add(sim.time(), io::write_points_frame(folder_, name, xyz, arrays, case_.output.vtk));
 }
 
 void RunOutput::write_histograms(const Simulation& sim, std::size_t index) {

@@ -9,7 +9,7 @@
 #include "shockfield/core/size_limits.hpp"
 #include "shockfield/core/state_array.hpp"
 #include "shockfield/io/csv_writer.hpp"
-#include "shockfield/io/vtk_xml.hpp"
+#include "shockfield/io/vtk_pieces.hpp"
 #include "shockfield/phasefield/case_file.hpp"
 #include "shockfield/phasefield/checkpoint.hpp"
 #include "shockfield/phasefield/domain_measures.hpp"
@@ -180,9 +180,7 @@ void write_xi_frame(const fs::path& folder, const Grid& grid, const std::vector<
     image.spacing[d] = grid.dx;
   }
   image.point_data.push_back({"xi", 1, xi, "1"});  // the order parameter, dimensionless
-  const std::string file = fmt::format("fields/xi_{}.vti", k);
-  io::write_vti(folder / file, image, format);
-  pvd.add(time, file);
+  pvd.add(time, io::write_image_frame(folder, fmt::format("fields/xi_{}", k), image, format));
 }
 
 std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options) {
