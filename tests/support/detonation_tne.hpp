@@ -17,7 +17,7 @@ struct DetonationTne {
   double zero_widths = 0.0;  ///< the same in shock widths
   double local_max = 0.0;    ///< local TNE: the largest Δ*_2xx (in the shock)
   double at_peak = 0.0;      ///< Δ*_2xx at the pressure peak
-  double global = 0.0;       ///< global TNE: ∫|Δ*_2xx| dx from 1.0 behind the peak to the fresh gas
+  double global = 0.0;       ///< global TNE: ∫|Δ*_2xx| dx from 0.6 behind the peak to the fresh gas
 };
 
 inline DetonationTne detonation_tne(const dbm::DetonationTubeResult& r) {
@@ -39,7 +39,7 @@ inline DetonationTne detonation_tne(const dbm::DetonationTubeResult& r) {
   m.local_max = d[top];
   m.at_peak = d[peak];
   for (std::size_t i = 0; i < d.size(); ++i)
-    if (r.x[i] > r.x[peak] - 1.0) m.global += std::abs(d[i]) * dx;
+    if (r.x[i] > r.x[peak] - 0.6) m.global += std::abs(d[i]) * dx;  // why 0.6: tne_study.py WAVE_BEHIND
   return m;
 }
 
