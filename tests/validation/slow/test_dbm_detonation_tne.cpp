@@ -4,7 +4,7 @@
 // cells). Δ*_2xx changes sign ahead of the pressure peak at a distance that converges in shock
 // widths (measured +0.605, +0.621, +0.622 widths: 6.9, 14.1, 28.3 cells), not at the peak;
 // the local TNE (largest Δ*_2xx) and the global TNE (∫|Δ*_2xx| dx over the wave) converge too.
-// Label "slow" (130 s of CPU on one core, measured): ctest --preset release -L slow.
+// Label "slow" (100–130 s of CPU on one core, measured): ctest --preset release -L slow.
 #include <gtest/gtest.h>
 
 #include <cmath>
