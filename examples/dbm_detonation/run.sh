@@ -3,7 +3,7 @@
 # structure.toml (slow reaction, resolved zone, for the TNE around the von Neumann peak), then
 # detonation.png and the measured numbers of README.md.
 #   examples/dbm_detonation/run.sh [RUNS_DIR] [tne]     (from the repository root)
-# With `tne`, also the TNE study against τ (tne_study.sh: `shockfield sweep`s, ≈ 15–20 min wall).
+# With `tne`, also the TNE study against τ (tne_study.sh: `shockfield sweep`s, 4 min wall, longer under load).
 # About 5-15 s per case (the DBM threads over 64-cell chunks of rows, so 1D runs use all cores).
 set -eu
 here=$(dirname "$0")
