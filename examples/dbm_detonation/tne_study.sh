@@ -3,9 +3,8 @@
 # conductivity ∝ pτ together: the BGK model has one relaxation time, Pr = 1), and the sign change of
 # Δ*_2xx across the von Neumann peak at three grids; then tne_table.md and tne_viscosity.png.
 #   examples/dbm_detonation/tne_study.sh [RUNS_DIR]     (from the repository root)
-# 7 runs, 1 thread each, 2 at a time: 238 s wall measured (the τ runs 52–61 s each), up to 15–20 min
-# when the 2 cores are shared (the Δx = 0.00125
-# run then 4–10 min, the Δx = 0.0025 runs 3.5 min each).
+# 7 runs, 1 thread each, 2 at a time: 238 s wall measured (the τ runs 52–61 s each); up to 15–20
+# min when the 2 cores are shared with other work.
 set -eu
 here=$(dirname "$0")
 runs=${1:-runs/dbm_detonation_tne}
