@@ -65,7 +65,7 @@ void derive(const Config& root, const DbmCase& c, const Simulation& sim) {
 class DbmMethod final : public Method, public DerivedArrays {
  public:
   DbmMethod(const Config& root, const DbmCase& c, const CaseStability& stability, const RunOptions& options)
-      : c_(c), sim_(c_.model, c_.lattice, c_.boundaries, c_.bgk, false), tol_(1e-9 * c_.bgk.dt) {
+      : c_(c), sim_(c_.model, c_.lattice, c_.boundaries, c_.bgk, false), tol_(kOutputTimeTolerance * c_.bgk.dt) {
     // The lattice's arrays (distributions, reactant, GLS force) are allocated when the run starts
     // (allocate()), so that --check validates a lattice of any allowed size without them.
     if (c_.gls) GlsForce::validate(sim_, c_.boundaries, c_.gls->settings);

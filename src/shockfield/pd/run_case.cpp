@@ -219,7 +219,7 @@ class PdMethod final : public Method {
         model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, cracked_.family, cracked_.cut); },
                           c_.material)),
         sim_(cloud_, cracked_.family, std::move(model_.force), {model_.density}), stable_(sim_.stable_step()),
-        dt_(c_.solver.time_step.value_or(c_.solver.safety * stable_)), tol_(1e-9 * dt_) {
+        dt_(c_.solver.time_step.value_or(c_.solver.safety * stable_)), tol_(kOutputTimeTolerance * dt_) {
     if (dt_ > stable_)
       root.table("solver").fail("time_step", fmt::format("{} s is beyond the stable step {} s of this body and horizon "
                                                          "(velocity-Verlet would blow up); lower it or drop it",

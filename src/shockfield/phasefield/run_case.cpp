@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/size_limits.hpp"
 #include "shockfield/core/state_array.hpp"
 #include "shockfield/io/csv_writer.hpp"
@@ -39,7 +40,7 @@ void derive(const Config& root, const PhasefieldCase& c) {
 class PhasefieldMethod final : public Method {
  public:
   explicit PhasefieldMethod(const PhasefieldCase& c)
-      : c_(c), solver_(c_.grid, c_.model, c_.scheme, c_.dt, false), tol_(1e-9 * c_.dt) {}
+      : c_(c), solver_(c_.grid, c_.model, c_.scheme, c_.dt, false), tol_(kOutputTimeTolerance * c_.dt) {}
 
   std::string name() const override { return "phasefield"; }
   std::string size_text() const override {

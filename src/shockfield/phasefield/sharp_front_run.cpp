@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/output_schedule.hpp"
 #include "shockfield/io/checkpoint_file.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/vtk_xml.hpp"
@@ -31,7 +32,7 @@ void derive(const Config& root, const SharpFrontCase& c) {
 
 class SharpFrontMethod final : public Method {
  public:
-  explicit SharpFrontMethod(SharpFrontCase c) : c_(std::move(c)), tol_(1e-9 * c_.dt) {}
+  explicit SharpFrontMethod(SharpFrontCase c) : c_(std::move(c)), tol_(kOutputTimeTolerance * c_.dt) {}
 
   std::string name() const override { return "phasefield"; }
   std::string size_text() const override {
