@@ -50,7 +50,9 @@ void require_array(const py::array& array, int dtype, const char* dtype_name, co
 }
 
 // The field of `values` (and its void mask, None or a bool/uint8 array of the same shape), read in
-// place: the view points into the numpy arrays, which the caller keeps alive for the call.
+// place: the view points into the numpy arrays, which the caller keeps alive for the call. Its
+// values are checked by the analysis itself (analysis::validate, as in the C++ calls: one pass
+// over the field, not two); `checked_view_of` checks them here to name one field among several.
 sa::GridFieldView view_of(const py::array& values, const py::object& void_mask, const std::array<double, 3>& spacing,
                           int dimension, const std::string& what) {
   require_array(values, kNumpyDouble, "float64", what);
@@ -72,10 +74,14 @@ sa::GridFieldView view_of(const py::array& values, const py::object& void_mask, 
       throw py::value_error(what + ": the void mask's shape differs from the field's");
     f.is_void = {static_cast<const std::uint8_t*>(mask.data()), f.size()};
   }
-  {
-    py::gil_scoped_release release;
-    sa::validate(f, what);
-  }
+  return f;
+}
+
+sa::GridFieldView checked_view_of(const py::array& values, const std::array<double, 3>& spacing, int dimension,
+                                  const std::string& what) {
+  const sa::GridFieldView f = view_of(values, py::none(), spacing, dimension, what);
+  py::gil_scoped_release release;
+  sa::validate(f, what);
   return f;
 }
 
@@ -168,7 +174,7 @@ std::vector<sa::Process> processes(const std::vector<py::array>& fields, const s
                      " times; expected one field per time");
   std::vector<sa::Process> out(thresholds.size());
   for (std::size_t i = 0; i < fields.size(); ++i) {
-    const auto f = view_of(fields[i], py::none(), spacing, dimension, role + " field " + std::to_string(i));
+    const auto f = checked_view_of(fields[i], spacing, dimension, role + " field " + std::to_string(i));
     const auto points = functionals(f, thresholds, o).points;
     for (std::size_t k = 0; k < thresholds.size(); ++k) {
       out[k].times.push_back(times[i]);
@@ -189,7 +195,7 @@ py::dict similarity(const std::vector<py::array>& reference, double reference_th
   const auto h = spacing_of(spacing);
   std::vector<sa::GridFieldView> fields;  // views of `candidate`'s arrays, alive for the call
   for (std::size_t k = 0; k < candidate.size(); ++k)
-    fields.push_back(view_of(candidate[k], py::none(), h, dimension, "candidate field " + std::to_string(k)));
+    fields.push_back(checked_view_of(candidate[k], h, dimension, "candidate field " + std::to_string(k)));
   const auto ts = thresholds_of(thresholds, count, fields);
   const auto ref = processes(reference, times, {reference_threshold}, o, h, dimension, "reference");
   const auto cand = processes(candidate, times, ts, o, h, dimension, "candidate");
