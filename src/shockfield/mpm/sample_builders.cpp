@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/size_limits.hpp"
 
 namespace shockfield::mpm {
 
@@ -152,6 +153,14 @@ std::vector<Void> place_voids(int dim, const Body& body, const VoidSpec& spec, c
       throw InputError(fmt::format("mpm porous sample: voids of radius up to {} m do not fit the body, {} m along axis {}",
                                    r_max, extent, a));
   }
+  // The number of voids before any is drawn: a radius far below the body's size asks for more
+  // voids than any machine holds (a fuzzed 2.5e-308 m ran out of memory drawing radii).
+  const double smallest = ball_volume(dim, spec.mean_radius * (1.0 - spec.radius_spread));
+  const double most_voids = spec.porosity * body_volume / smallest;
+  if (!(most_voids <= kMaxParticles))
+    throw InputError(fmt::format("mpm porous sample: void radius {} m gives up to {:.3g} voids in the body (porosity "
+                                 "{}; expected at most {:.0e}): the radius is far below the body's size",
+                                 spec.mean_radius, most_voids, spec.porosity, kMaxParticles));
   std::mt19937_64 rng(spec.seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   // Radii first, until the target void volume is reached.
