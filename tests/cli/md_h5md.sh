@@ -14,6 +14,43 @@ grep -q '^h5md_every = 50$' "$WORK/case.toml" || fail "the test case did not get
 stop_then_resume "$WORK/case.toml" "$WORK/split" 130
 /usr/bin/python3 "$ROOT/tests/cli/h5md_check.py" "$WORK/straight" "$WORK/split" || fail "H5MD check"
 
+# A tilted cell (the fcc of cli.md_triclinic, tilts 2.1 -3.3 1.7 Å): the box rows are its edge
+# vectors (lx, 0, 0), (xy, ly, 0), (xz, yz, lz), as final.data's header gives them.
+cat > "$WORK/tilted.toml" <<'CASE'
+method = "md"
+[system.lattice]
+style = "fcc"
+a0 = 3.615
+orient_x = [1, -1, 0]
+orient_y = [1, 1, -2]
+orient_z = [1, 1, 1]
+repeat = [4, 3, 2]
+tilt = [2.1, -3.3, 1.7]
+elements = ["Cu"]
+[potential]
+style = "eam"
+file = "Cu_u3.eam"
+[output]
+h5md_every = 5
+[[stage]]
+steps = 10
+CASE
+"$SF" run "$WORK/tilted.toml" --output "$WORK/tilted" -q > /dev/null
+/usr/bin/python3 - "$WORK/tilted" <<'PY' || fail "tilted H5MD box"
+import sys, h5py, numpy as np
+folder = sys.argv[1]
+lines = open(f"{folder}/final.data").read().splitlines()
+lo_hi = [[float(w) for w in l.split()[:2]] for l in lines if l.split()[2:3] and l.split()[2] in ("xlo", "ylo", "zlo")]
+xy, xz, yz = next([float(w) for w in l.split()[:3]] for l in lines if l.endswith("xy xz yz"))
+(lx, ly, lz) = [hi - lo for lo, hi in lo_hi]
+expected = np.array([[lx, 0, 0], [xy, ly, 0], [xz, yz, lz]])
+got = h5py.File(f"{folder}/trajectory.h5md", "r")["particles/all/box/edges/value"][-1]
+if not np.allclose(got, expected, rtol=0, atol=1e-12):
+    print("FAIL: box rows", got.tolist(), "expected", expected.tolist())
+    sys.exit(1)
+print("ok: tilted box rows", got.tolist())
+PY
+
 # A trajectory cut short (as by a kill in the middle of writing a frame) is refused on --resume.
 set +e
 "$SF" run "$WORK/case.toml" --output "$WORK/damaged" -q --stop-after 70 > /dev/null 2>&1

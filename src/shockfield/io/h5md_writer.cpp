@@ -191,7 +191,7 @@ void H5mdWriter::open_for_resume(std::int64_t resume_step) {
     }
 }
 
-void H5mdWriter::append(std::int64_t step, double time, const std::array<double, 3>& edges,
+void H5mdWriter::append(std::int64_t step, double time, const std::array<double, 9>& box_vectors,
                         const std::vector<std::vector<double>>& values) {
   if (values.size() != elements_.size())
     throw RunError(fmt::format("{}: a frame of {} elements for {}", path_, values.size(), elements_.size()));
@@ -202,8 +202,7 @@ void H5mdWriter::append(std::int64_t step, double time, const std::array<double,
     append_row(group.get(), "step", H5T_NATIVE_INT64, &step, frames_, path_);
     append_row(group.get(), "time", H5T_NATIVE_DOUBLE, &time, frames_, path_);
     if (k == 0) {
-      const double vectors[9] = {edges[0], 0, 0, 0, edges[1], 0, 0, 0, edges[2]};
-      append_row(group.get(), "value", H5T_NATIVE_DOUBLE, vectors, frames_, path_);
+      append_row(group.get(), "value", H5T_NATIVE_DOUBLE, box_vectors.data(), frames_, path_);
     } else {
       const std::vector<double>& v = values[k - 1];
       if (v.size() != particles_ * 3)

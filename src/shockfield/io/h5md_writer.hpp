@@ -49,9 +49,9 @@ class H5mdWriter {
   H5mdWriter(const std::filesystem::path& file, const H5mdLayout& layout, std::optional<std::int64_t> resume_step);
 
   /// Appends a frame: `values[k]` holds particles × 3 values of layout.elements[k] in the file's
-  /// particle order; `edges` the box lengths (an orthogonal box). RunError naming the file when
-  /// HDF5 cannot write.
-  void append(std::int64_t step, double time, const std::array<double, 3>& edges,
+  /// particle order; `box_vectors` the cell's edge vectors a, b, c as rows (a triclinic cell's
+  /// (lx, 0, 0), (xy, ly, 0), (xz, yz, lz)). RunError naming the file when HDF5 cannot write.
+  void append(std::int64_t step, double time, const std::array<double, 9>& box_vectors,
               const std::vector<std::vector<double>>& values);
 
   /// Frames in the file.

@@ -162,8 +162,10 @@ void RunOutput::write_h5md(const Simulation& sim) {
       values[1].push_back(a.v[i][d]);
       if (spec_.h5md_forces) values[2].push_back(a.f[i][d]);
     }
-  const Vec3 l = sim.box.length();
-  h5md_->append(sim.step, sim.time, {l.x(), l.y(), l.z()}, values);
+  std::array<double, 9> vectors{};  // the edge vectors a, b, c as rows (a tilted cell's too)
+  for (int d = 0; d < 3; ++d)
+    for (int c = 0; c < 3; ++c) vectors[static_cast<std::size_t>(3 * d + c)] = sim.box.edge(d)[c];
+  h5md_->append(sim.step, sim.time, vectors, values);
 }
 
 void RunOutput::write_thermo(const Simulation& sim) {
