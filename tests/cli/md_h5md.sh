@@ -14,28 +14,9 @@ grep -q '^h5md_every = 50$' "$WORK/case.toml" || fail "the test case did not get
 stop_then_resume "$WORK/case.toml" "$WORK/split" 130
 /usr/bin/python3 "$ROOT/tests/cli/h5md_check.py" "$WORK/straight" "$WORK/split" || fail "H5MD check"
 
-# A tilted cell (the fcc of cli.md_triclinic, tilts 2.1 -3.3 1.7 Å): the box rows are its edge
+# A tilted cell (cases/tilted_fcc.toml, tilts 2.1 -3.3 1.7 Å): the box rows are its edge
 # vectors (lx, 0, 0), (xy, ly, 0), (xz, yz, lz), as final.data's header gives them.
-cat > "$WORK/tilted.toml" <<'CASE'
-method = "md"
-[system.lattice]
-style = "fcc"
-a0 = 3.615
-orient_x = [1, -1, 0]
-orient_y = [1, 1, -2]
-orient_z = [1, 1, 1]
-repeat = [4, 3, 2]
-tilt = [2.1, -3.3, 1.7]
-elements = ["Cu"]
-[potential]
-style = "eam"
-file = "Cu_u3.eam"
-[output]
-h5md_every = 5
-[[stage]]
-steps = 10
-CASE
-"$SF" run "$WORK/tilted.toml" --output "$WORK/tilted" -q > /dev/null
+"$SF" run "$ROOT/tests/cli/cases/tilted_fcc.toml" --set output.h5md_every=5 --output "$WORK/tilted" -q > /dev/null
 /usr/bin/python3 - "$WORK/tilted" <<'PY' || fail "tilted H5MD box"
 import sys, h5py, numpy as np
 folder = sys.argv[1]

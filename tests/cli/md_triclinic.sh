@@ -59,21 +59,7 @@ profile_every = 10
 profile_axis = \"x\"}" "output" "profile_axis" "profiles along x are not supported in a triclinic box"
 # A crystal built into a tilted cell: fcc [1-10] [11-2] [111], 4 x 3 x 2 repeats, tilts 2.1 -3.3 1.7 Å
 # (the lattice test's LAMMPS peer: 144 atoms); a tilt beyond LAMMPS's limit is refused by key.
-lattice_case="method = \"md\"
-[system.lattice]
-style = \"fcc\"
-a0 = 3.615
-orient_x = [1, -1, 0]
-orient_y = [1, 1, -2]
-orient_z = [1, 1, 1]
-repeat = [4, 3, 2]
-tilt = [2.1, -3.3, 1.7]
-elements = [\"Cu\"]
-[potential]
-style = \"eam\"
-file = \"Cu_u3.eam\"
-[[stage]]
-steps = 10"
+lattice_case=$(cat "$ROOT/tests/cli/cases/tilted_fcc.toml")
 run_expecting 0 "$lattice_case"
 grep -q "^144 atoms$" "$WORK/out/final.data" || fail "the tilted fcc has not 144 atoms: $(sed -n 3p "$WORK/out/final.data")"
 grep -q "^2.1 -3.3 1.7 xy xz yz$" "$WORK/out/final.data" || fail "final.data lost the tilt"
