@@ -37,9 +37,7 @@ set -e
 data="$WORK/tiny_cu/checkpoint.data"
 grep -qE "^256 atoms$" "$data" || fail "the data file does not hold 256 atoms"
 if command -v lmp > /dev/null; then
-  printf 'units metal\natom_style atomic\nboundary p p p\nread_data %s\n' "$data" > "$WORK/in.read"
-  (cd "$WORK" && lmp -in in.read -log none > lmp.out 2>&1) || fail "LAMMPS read_data failed: $(grep -m1 ERROR "$WORK/lmp.out")"
-  grep -qE "^ +256 atoms$" "$WORK/lmp.out" || fail "LAMMPS did not read 256 atoms: $(cat "$WORK/lmp.out")"
+  lammps_reads_data "$data" 256
   echo "ok: LAMMPS read_data assigns the 256 atoms"
 else
   echo "SKIP (LAMMPS part): lmp is not installed (Debian package lammps)"

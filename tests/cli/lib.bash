@@ -62,3 +62,12 @@ analyze_rejected() {
   [ ! -e "$WORK/bad" ] || fail "an output folder was left behind for: $*"
   echo "ok: $(head -c 160 "$WORK/stderr")"
 }
+# lammps_reads_data FILE NATOMS [BOUNDARY]: LAMMPS `read_data` (metal, atomic, boundary BOUNDARY,
+# default ppp) reads FILE and assigns NATOMS atoms; the caller checks `command -v lmp` first.
+lammps_reads_data() {
+  local data="$1" natoms="$2" boundary="${3:-ppp}"
+  printf 'units metal\natom_style atomic\nboundary %s %s %s\nread_data %s\n' \
+    "${boundary:0:1}" "${boundary:1:1}" "${boundary:2:1}" "$data" > "$WORK/in.read"
+  (cd "$WORK" && lmp -in in.read -log none > lmp.out 2>&1) || fail "$data: LAMMPS read_data failed: $(grep -m1 ERROR "$WORK/lmp.out")"
+  grep -qE "^ +$natoms atoms$" "$WORK/lmp.out" || fail "$data: LAMMPS did not read $natoms atoms: $(cat "$WORK/lmp.out")"
+}

@@ -36,10 +36,7 @@ check_data() {
   natoms=$(awk '$2 == "atoms" { print $1; exit }' "$data")
   [ -n "$natoms" ] && [ "$natoms" -gt 0 ] || fail "$data: no atom count in the header"
   if [ $have_lmp -eq 1 ]; then
-    printf 'units metal\natom_style atomic\nboundary %s %s %s\nread_data %s\n' \
-      "${boundary:0:1}" "${boundary:1:1}" "${boundary:2:1}" "$data" > "$WORK/in.read"
-    (cd "$WORK" && lmp -in in.read -log none > lmp.out 2>&1) || fail "$data: LAMMPS read_data failed: $(grep -m1 ERROR "$WORK/lmp.out")"
-    grep -qE "^ +$natoms atoms$" "$WORK/lmp.out" || fail "$data: LAMMPS did not read $natoms atoms: $(cat "$WORK/lmp.out")"
+    lammps_reads_data "$data" "$natoms" "$boundary"
   fi
   cat > "$WORK/read.toml" <<EOF
 method = "md"

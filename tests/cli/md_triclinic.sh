@@ -42,9 +42,7 @@ PY
 grep -q "^3.615 -3.615 1.8075 xy xz yz$" "$WORK/out/final.data" || fail "final.data lost the tilt: $(sed -n 5,10p "$WORK/out/final.data")"
 grep -q "^ITEM: BOX BOUNDS xy xz yz pp pp pp$" "$WORK/out/dumps/dump.100.lammpstrj" || fail "the dump has no triclinic header"
 if command -v lmp > /dev/null; then
-  printf 'units metal\natom_style atomic\nboundary p p p\nread_data %s\n' "$WORK/out/final.data" > "$WORK/in.read"
-  (cd "$WORK" && lmp -in in.read -log none > lmp.out 2>&1) || fail "LAMMPS read_data failed: $(grep -m1 ERROR "$WORK/lmp.out")"
-  grep -qE "^ +48 atoms$" "$WORK/lmp.out" || fail "LAMMPS did not read 48 atoms: $(cat "$WORK/lmp.out")"
+  lammps_reads_data "$WORK/out/final.data" 48
   echo "ok: LAMMPS reads final.data (48 atoms)"
 fi
 mv "$WORK/out" "$WORK/first"
