@@ -27,20 +27,20 @@ Outcome check_material_output(Outcome o, const fs::path& file) {
   return o;
 }
 
-// --resume of a copy of an MPM run stopped after 5 steps whose config.resolved.toml (the input
-// files' hashes) is the mutant; at most 5 more steps. (The case --resume compares with is the
-// checkpoint's `case_input`, mutated by the checkpoint targets.)
-Target resume_case(const Context& c) {
-  const fs::path base = stopped_run(c, "resume_case", c.source / "tests/cli/cases/mpm_tiny.toml", 5);
-  return {"resume_case",
-          {base / "out/config.resolved.toml"},
+// --resume of a copy of a run of `case_file` stopped after `steps` steps, one of whose files
+// (`mutated`, relative to the run folder) is the mutant; at most `more` steps more.
+Target resume_target(const Context& c, const std::string& name, const fs::path& case_file, int steps,
+                     const std::string& mutated, int more) {
+  const fs::path base = stopped_run(c, name, case_file, steps);
+  return {name,
+          {base / "out" / mutated},
           false,
           false,
           "",
-          [c, base](const fs::path& file, const fs::path& work) {
+          [c, base, more](const fs::path& file, const fs::path& work) {
             fs::copy(base / "out", work / "out", fs::copy_options::recursive);
             fs::copy_file(file, work / "out" / file.filename(), fs::copy_options::overwrite_existing);
-            return run_case(c, base / "case.toml", work, {"--resume", "--stop-after", "5"});
+            return run_case(c, base / "case.toml", work, {"--resume", "--stop-after", std::to_string(more)});
           }};
 }
 
@@ -123,7 +123,14 @@ Target bridge_domain_growth(const Context& c) {
 
 std::vector<Target> file_targets(const Context& c, const std::function<bool(const std::string&)>& wanted) {
   std::vector<Target> t;
-  if (wanted("resume_case")) t.push_back(resume_case(c));
+  // config.resolved.toml (the input files' hashes) of an MPM run (the case --resume compares with
+  // is the checkpoint's `case_input`, mutated by the checkpoint targets); an MD run's H5MD
+  // trajectory (frames every 10 steps).
+  if (wanted("resume_case"))
+    t.push_back(resume_target(c, "resume_case", c.source / "tests/cli/cases/mpm_tiny.toml", 5, "config.resolved.toml", 5));
+  if (wanted("resume_h5md"))
+    t.push_back(resume_target(c, "resume_h5md", c.source / "tests/fixtures/fuzz/cases/md_h5md.toml", 25,
+                              "trajectory.h5md", 10));
   t.push_back(material_file(c));
   t.push_back(bridge_eos(c));
   t.push_back(bridge_elastic(c));

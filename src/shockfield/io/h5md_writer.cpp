@@ -173,6 +173,10 @@ void H5mdWriter::open_for_resume(std::int64_t resume_step) {
     Hdf5Handle set(H5Dopen2(file_.get(), "/particles/all/box/edges/step", H5P_DEFAULT), H5Dclose);
     Hdf5Handle space(set.ok() ? H5Dget_space(set.get()) : -1, H5Sclose);
     const hssize_t n = space.ok() ? H5Sget_simple_extent_npoints(space.get()) : -1;
+    // A damaged file may claim any count: no more steps than its bytes can hold.
+    if (n > 0 && static_cast<std::uintmax_t>(n) > fs::file_size(path_) / sizeof(std::int64_t))
+      throw InputError(fmt::format("{}: the H5MD trajectory claims {} frames, more than its size holds (damaged)",
+                                   path_, n));
     steps.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
     if (n < 0 || (n > 0 && H5Dread(set.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, steps.data()) < 0))
       throw InputError(fmt::format("{}: cannot read the frames' steps of the H5MD trajectory", path_));
