@@ -2,6 +2,8 @@
 // run), the checkpoint round trip (a resumed run continues bitwise) and the scheduled outputs.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -131,7 +133,7 @@ TEST(GranularCase, RefusesBadInputNamingFileAndKey) {
 }
 
 TEST(GranularCase, CheckpointResumeContinuesBitwiseAndOutputsHaveTheirColumns) {
-  const auto dir = std::filesystem::temp_directory_path() / "shockfield_granular_ckpt";
+  const auto dir = shockfield::testing::scratch_path("shockfield_granular_ckpt");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const Config root = with(kColumn);

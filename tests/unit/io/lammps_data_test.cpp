@@ -2,6 +2,8 @@
 // written back byte for byte; round trips; comments; every kind of malformed input.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -23,7 +25,7 @@ std::string slurp(const std::string& path) {
 }
 
 std::string temp_file(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + name;
+  const std::string path = shockfield::testing::scratch_path(name).string();
   std::ofstream(path) << text;
   return path;
 }
@@ -58,7 +60,7 @@ TEST(LammpsData, ReadsLammpsWriteData) {
 TEST(LammpsData, WritesTheSameTextAsLammps) {
   const std::string path = "fixtures/io/data_fcc.data";
   const DataFile d = read_data(path, ppf);
-  const std::string out = testing::TempDir() + "rewritten.data";
+  const std::string out = shockfield::testing::scratch_path("rewritten.data").string();
   write_data(out, d.box, d.atoms, {.title = d.title});
   EXPECT_EQ(slurp(out), slurp(path));
 }
@@ -69,7 +71,7 @@ TEST(LammpsData, TriclinicWrittenByLammpsReadsAndWritesBack) {
   EXPECT_EQ(d.box.tilt, Vec3(3.615, -3.615, 1.8075));
   EXPECT_EQ(d.atoms.image[0], (std::array<int, 3>{1, -1, 1}));
   for (std::size_t i = 0; i < d.atoms.nlocal; ++i) EXPECT_TRUE(d.box.contains(d.atoms.x[i])) << i;
-  const std::string out = testing::TempDir() + "rewritten_triclinic.data";
+  const std::string out = shockfield::testing::scratch_path("rewritten_triclinic.data").string();
   write_data(out, d.box, d.atoms, {.title = d.title});
   EXPECT_EQ(slurp(out), slurp(path));
 }
@@ -77,7 +79,7 @@ TEST(LammpsData, TriclinicWrittenByLammpsReadsAndWritesBack) {
 TEST(LammpsData, AtomsOutsideATiltedCellAreWrappedByItsEdges) {
   // x = lo - b/2 lies outside across the b face: wrapped by +b, image -1 along y
   const std::string text = "t\n2 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n4 0 0 xy xz yz\n\nMasses\n\n1 1\n\nAtoms\n\n1 1 -1 -5 5\n2 1 1 1 1\n";
-  const std::string path = testing::TempDir() + "tilted.data";
+  const std::string path = shockfield::testing::scratch_path("tilted.data").string();
   std::ofstream(path) << text;
   const DataFile d = read_data(path);
   EXPECT_EQ(d.atoms.image[0], (std::array<int, 3>{0, -1, 0}));
@@ -94,7 +96,7 @@ TEST(LammpsData, RoundTripIsExact) {
   geometry::Box box;
   box.lo = Vec3(0, -1.0 / 9.0, 0);
   box.hi = Vec3(10, 10, 10);
-  const std::string path = testing::TempDir() + "roundtrip.data";
+  const std::string path = shockfield::testing::scratch_path("roundtrip.data").string();
   write_data(path, box, atoms);
   const DataFile d = read_data(path);
   EXPECT_EQ(d.box.lo, box.lo);
@@ -136,7 +138,7 @@ TEST(LammpsData, WriteResetsAShrinkWrappedBoxToTheAtoms) {
   box.hi = Vec3(10, 10, 10);
   box.boundary = {Boundary::periodic, Boundary::periodic, Boundary::shrink};
   const md::Atoms before = atoms;
-  const std::string path = testing::TempDir() + "shrink.data";
+  const std::string path = shockfield::testing::scratch_path("shrink.data").string();
   write_data(path, box, atoms, {.shrink_margin = Vec3(0, 0, 0.25)});
   EXPECT_EQ(atoms.x, before.x);  // the caller's atoms and box are not changed
   EXPECT_EQ(box.hi.z(), 10.0);

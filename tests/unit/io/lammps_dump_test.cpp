@@ -2,6 +2,8 @@
 // is read and written back byte for byte; full-precision round trips; malformed input.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -100,7 +102,7 @@ TEST(LammpsDump, FullPrecisionRoundTripThroughAFile) {
   frame.set_column("id", id);
   frame.set_column("x", x);
   frame.set_column("c_pe", c);
-  const std::string file = testing::TempDir() + "roundtrip.dump";
+  const std::string file = shockfield::testing::scratch_path("roundtrip.dump").string();
   {
     DumpWriter w(file, {.full_precision = true});
     w.write(frame);

@@ -2,6 +2,8 @@
 // errors that name the file, key and line.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <fstream>
 
 #include "shockfield/core/error.hpp"
@@ -119,7 +121,7 @@ TEST(SystemBuilder, TypesWithoutMassKeepZero) {
 }
 
 TEST(SystemBuilder, Overlap) {
-  const std::string path = testing::TempDir() + "overlap.data";
+  const std::string path = shockfield::testing::scratch_path("overlap.data").string();
   std::ofstream(path) << "t\n2 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n"
                          "Atoms\n\n1 1 0.01 5 5\n2 1 9.96 5 5\n";
   // The two atoms are 0.05 Å apart across the periodic x face.
@@ -135,7 +137,7 @@ TEST(SystemBuilder, Errors) {
   expect_build_error("[system]\ndata_file = \"missing.data\"\n", "fixtures/io/missing.data: cannot open");
   expect_build_error("[system]\ndata_file = \"data_fcc.data\"\nboundary = \"pp\"\n", "key 'system.boundary': expected three letters");
   expect_build_error("[system]\ndata_file = \"data_fcc.data\"\nboundary = \"ppx\"\n", "key 'system.boundary'");
-  const std::string outside = testing::TempDir() + "outside.data";
+  const std::string outside = shockfield::testing::scratch_path("outside.data").string();
   std::ofstream(outside) << "t\n1 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\nAtoms\n\n1 1 5 5 10.5\n";
   expect_build_error("[system]\ndata_file = \"" + outside + "\"\nmasses = [1.0]\nboundary = \"ppf\"\n",
                      "outside.data:9: atom 1 at z = 10.5 is outside the non-periodic box");

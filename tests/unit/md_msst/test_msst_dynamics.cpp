@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "msst_fixture.hpp"
+#include "support/scratch_path.hpp"
 #include "shockfield/md/checkpoint.hpp"
 
 using namespace shockfield;
@@ -70,7 +71,7 @@ TEST(MsstDynamics, ResumesBitwiseFromACheckpoint) {
   run(straight, 200);
   Simulation first = msst_sim(s);
   run(first, 120);
-  const auto file = std::filesystem::temp_directory_path() / "shockfield_msst_checkpoint.h5";
+  const auto file = shockfield::testing::scratch_path("shockfield_msst_checkpoint.h5");
   write_checkpoint(file, first, {0, 120});
   Simulation resumed = from_data("cu_512");
   resumed.fixes.push_back(std::make_unique<FixMsst>(s));

@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -318,7 +320,7 @@ TEST(RegionLoadings, VelocityFileGivesTheFormulaRunBitwise) {
       Config::parse(shape + "velocity_formula = [\"300*sin(pi*x/0.02)\", \"-50*y/0.012 + 2^-1\"]");
   const LoadRegion formula = read_load_region(by_formula, 2, BodyPoints{counts, dx});
   const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / "pd_region_velocity_file.csv";
+      shockfield::testing::scratch_path("pd_region_velocity_file.csv");
   {
     std::ofstream out(file);
     out << "x,y,z,vx,vy,vz\n";

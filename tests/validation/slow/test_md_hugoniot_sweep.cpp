@@ -10,6 +10,8 @@
 // SHOCKFIELD_SWEEP_DIR=<folder> reuses a finished sweep there instead of running a fresh one.
 #include <gtest/gtest.h>
 
+#include "support/scratch_path.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -48,7 +50,7 @@ TEST(MdHugoniotSweep, CopperUsMatchesLammpsWithinScatter) {
   s.case_file = "../examples/md_shock_piston/case.toml";
   s.speeds = {0.5, 1.0, 1.5, 2.0};
   const char* reuse = std::getenv("SHOCKFIELD_SWEEP_DIR");
-  s.folder = reuse ? std::filesystem::path(reuse) : std::filesystem::temp_directory_path() / "shockfield_slow_sweep";
+  s.folder = reuse ? std::filesystem::path(reuse) : shockfield::testing::scratch_path("shockfield_slow_sweep");
   s.overwrite = reuse == nullptr;
   s.quiet = true;
   const HugoniotSweep sweep = run_hugoniot_sweep(s);

@@ -9,7 +9,8 @@
 // is recorded to show the trend (README table). Label "slow": the 10 µm run is ~4·10⁵ particles
 // × ~1100 steps (minutes on 2 cores). ctest --preset release -L slow -R PorousResolution.
 #include <gtest/gtest.h>
-#include <unistd.h>
+
+#include "support/scratch_path.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -89,7 +90,7 @@ Window run_porous(double cell, const fs::path& dir) {
 
 TEST(MpmSlow, PorousResolution) {
   const fs::path base =
-      fs::temp_directory_path() / ("shockfield_mpm_porous_" + std::to_string(getpid()));
+      shockfield::testing::scratch_path("shockfield_mpm_porous");
   for (double cell : {20e-6, 10e-6}) {
     const fs::path dir = base / std::to_string(static_cast<int>(std::lround(cell * 1e6)));
     fs::create_directories(dir);
