@@ -50,7 +50,7 @@ for name in ("burgers.csv", "partials.csv"):
         for r in csv.DictReader(open(p)):
             if "line" in r:   # partials.csv: the line's centre
                 r["circuit"] = f"SF{r['stacking_fault']}{r['place']}"
-                r["centre_x"], r["centre_y"], r["centre_z"] = r["line"].split(":")[0].split(",")
+                r["centre_x_A"], r["centre_y_A"], r["centre_z_A"] = r["line"].split(":")[0].split(",")
             burgers.append(r)
 eps = np.array([strain(f["step"]) for f in frames])
 
@@ -104,7 +104,7 @@ for k, s in enumerate(snaps):
     for b in burgers:
         if int(b["timestep"]) != s or b["reliable"] != "1" or b["b"] == "0":
             continue
-        cx, cy, cz = (float(b[f"centre_{q}"]) for q in "xyz")
+        cx, cy, cz = (float(b[f"centre_{q}_A"]) for q in "xyz")
         a3.text(cx, cy, cz, b["circuit"], fontsize=7)
         lines.append(f"{b['circuit']}: b = {b['b']} ({b['kind'].split()[0]})")
     a3.set_title(f"strain {strain(s):.3f}: {f['hcp']:.3f} hcp, {f['other']:.3f} other", fontsize=9)

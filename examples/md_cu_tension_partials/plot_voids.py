@@ -14,8 +14,8 @@ rate, dt, start = 0.01, 0.002, 1000
 rows = list(csv.DictReader(open(os.path.join(vdir, "voids.csv"))))
 steps = sorted({int(r["timestep"]) for r in rows})
 frames = sorted(int(r["timestep"]) for r in csv.DictReader(open(os.path.join(vdir, "structures.csv"))))
-total = {s: sum(float(r["missing_volume"]) for r in rows if int(r["timestep"]) == s) for s in frames}
-largest = {s: max([float(r["missing_volume"]) for r in rows if int(r["timestep"]) == s] or [0.0]) for s in frames}
+total = {s: sum(float(r["missing_volume_A3"]) for r in rows if int(r["timestep"]) == s) for s in frames}
+largest = {s: max([float(r["missing_volume_A3"]) for r in rows if int(r["timestep"]) == s] or [0.0]) for s in frames}
 count = {s: sum(1 for r in rows if int(r["timestep"]) == s) for s in frames}
 thermo = list(csv.DictReader(open(os.path.join(run, "thermo.csv"))))
 fig, ax = plt.subplots(figsize=(6.4, 4.2))

@@ -40,11 +40,11 @@ def main():
     for row in circuits:
         k = int(row["circuit"])
         m = atoms["burgers_circuit"] == k
-        cx, cy = float(row["centre_x"]), float(row["centre_y"])
+        cx, cy = float(row["centre_x_A"]), float(row["centre_y_A"])
         order = np.argsort(np.arctan2(y[m] - cy, x[m] - cx))
         px, py = np.append(x[m][order], x[m][order][0]), np.append(y[m][order], y[m][order][0])
         ax.plot(px, py, "-", lw=1.2, c="k")
-        ax.annotate(f"b = {row['b']}\n({row['kind'].split()[0]})", (cx, cy + float(row["radius"]) + 1.5),
+        ax.annotate(f"b = {row['b']}\n({row['kind'].split()[0]})", (cx, cy + float(row["radius_A"]) + 1.5),
                     ha="center", va="bottom", fontsize=9, bbox=dict(fc="white", ec="none", alpha=0.8))
     ax.set_aspect("equal")
     ax.set_xlim(-40, 40)

@@ -13,7 +13,7 @@ prof, run, out = sys.argv[1:4]
 rows = list(csv.DictReader(open(prof)))
 last = int(sys.argv[4]) if len(sys.argv) > 4 else 4000
 rr = [r for r in rows if int(r["timestep"]) == last and int(r["atoms"]) > 0]
-z = [float(r["centre"]) for r in rr]
+z = [float(r["centre_A"]) for r in rr]
 fig, ax = plt.subplots(figsize=(7, 4))
 for s, c in (("bcc", "tab:blue"), ("hcp", "tab:green"), ("fcc", "tab:orange"), ("other", "tab:red")):
     ax.plot(z, [float(r[f"acna_{s}_fraction"]) for r in rr], color=c, label=f"a-CNA {s}")

@@ -17,8 +17,8 @@ missing = {s: 0.0 for s in steps}
 poly = {s: 0.0 for s in steps}
 for r in rows:
     s = int(r["timestep"])
-    missing[s] += float(r["missing_volume"])
-    poly[s] += float(r["volume"])
+    missing[s] += float(r["missing_volume_A3"])
+    poly[s] += float(r["volume_A3"])
 t = [(s - shock_start) * dt for s in steps]
 fig, ax = plt.subplots(figsize=(6.4, 4))
 ax.plot(t, [poly[s] for s in steps], "s-", ms=3, label="polyhedron through the surface atoms' centres")

@@ -7,10 +7,11 @@ import numpy as np
 
 
 def md_radius(tracks_csv, track="1"):
-    """Times (ps) and the equivalent radius of the atomic volume (Å) of one track of tracks.csv."""
+    """Times (ps) and the equivalent radius of the atomic volume (Å) of one track of the tracks.csv
+    of analyze atoms --track --timestep-size (columns time_ps, atomic_volume_A3)."""
     rows = [r for r in csv.DictReader(open(tracks_csv)) if r["track"] == track]
-    t = np.array([float(r["time"]) for r in rows])
-    return t, np.cbrt(3 * np.array([float(r["atomic_volume"]) for r in rows]) / (4 * math.pi))
+    t = np.array([float(r["time_ps"]) for r in rows])
+    return t, np.cbrt(3 * np.array([float(r["atomic_volume_A3"]) for r in rows]) / (4 * math.pi))
 
 
 def fitted(material):

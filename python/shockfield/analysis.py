@@ -165,9 +165,9 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     ellipsoid_surface_A2, atomic_volume_A3``); ``domains`` (structured array: domains.csv's columns after frame and timestep),
     ``domain_surfaces`` (dict ``points``, ``triangles``: domains_<timestep>.vtp's triangles) and
     ``flat_domains`` (why each flat cluster has no surface; the CLI's warnings); ``profile``
-    (structured array: profiles.csv's columns after frame and timestep, ``bin, lo, hi, centre,
+    (structured array: profiles.csv's columns after frame and timestep, ``bin, lo_A, hi_A, centre_A,
     atoms`` and ``<method>_<structure>_fraction`` of each structure method that ran, then
-    ``mean_excess`` with an excess energy); ``excess`` (float64, eV; ``counts`` then has
+    ``mean_excess_eV`` with an excess energy); ``excess`` (float64, eV; ``counts`` then has
     ``excess_reference_eV`` and ``excess_mean_eV``); ``burgers`` (structured array: burgers.csv's
     columns after frame and timestep, ``source``, ``b`` and ``kind`` as text), ``burgers_circuit``
     (int32 per atom: the circuit through it, 0 none) and ``burgers_skipped`` (automatic circuits
@@ -232,15 +232,19 @@ class ClusterTracker:
         """Frames added so far."""
         return self._core.frames
 
-    def tracks(self, origin=0, dt=1.0):
-        """tracks.csv as a structured array: ``track, frame, timestep, time, cluster, size, x, y, z,
-        a, b, c, L, area, volume, atomic_volume``, time = (timestep − ``origin``) · ``dt``."""
-        return _table(self._core.tracks(int(origin), float(dt)), ("track", "frame", "timestep", "cluster", "size"))
+    def tracks(self, origin=0, dt=None):
+        """tracks.csv as a structured array: ``track, frame, timestep, time_ps, cluster, size, x_A,
+        y_A, z_A, a_A, b_A, c_A, L_A, ellipsoid_surface_A2, ellipsoid_volume_A3, atomic_volume_A3``,
+        time_ps = (timestep − ``origin``) · ``dt`` with ``dt`` the MD time step in ps; without ``dt``
+        the column is ``elapsed_timesteps`` = timestep − ``origin``."""
+        core = self._core.tracks(int(origin), 1.0 if dt is None else float(dt), dt is not None)
+        return _table(core, ("track", "frame", "timestep", "cluster", "size"))
 
     def growth(self, origin=0, dt=1.0):
         """growth.csv as a structured array: the power law y = C t^k of each quantity of each track
         with 3 or more points at t > 0: ``track, exponent, exponent_stderr, prefactor, points,
-        quantity``."""
+        quantity`` (named as its column of tracks.csv, ``L_A``, ``ellipsoid_volume_A3``, ...; C in its
+        unit per (time unit)^k)."""
         g = self._core.growth(int(origin), float(dt))
         return _table({k: np.asarray(v) for k, v in g.items()}, ("track", "points"))
 
@@ -256,8 +260,8 @@ def voids(positions, box, probe, boundary="ppp", types=None, ids=None, atomic_vo
     ``types``, ``ids`` as for ``structure``.
 
     Returns a dict: ``voids`` (structured array, one row per void, largest first, the columns of
-    voids.csv after frame and timestep: ``void, cells, volume, area, equivalent_radius,
-    missing_volume, missing_radius, x, y, z, surface_atoms, euler_characteristic, manifold``) and
+    voids.csv after frame and timestep: ``void, cells, volume_A3, area_A2, equivalent_radius_A,
+    missing_volume_A3, missing_radius_A, x_A, y_A, z_A, surface_atoms, euler_characteristic, manifold``) and
     ``surfaces`` (dict ``points`` (atoms and images), ``triangles``: voids_<timestep>.vtp's
     triangles, normals out of the voids). Runs with the GIL released, on one thread.
     """

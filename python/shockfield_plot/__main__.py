@@ -60,16 +60,17 @@ def similarity(csv_path, png_path):
 
 
 def surfaces(csv_path, png_path):
-    table = read_csv(csv_path)  # columns: timestep, void or domain, volume, area
+    table = read_csv(csv_path)  # columns: timestep, void or domain, volume_A3, area_A2
     what = "domain" if "domain" in table.dtype.names else "void"
     steps = np.unique(table["timestep"]).astype(int)
     fig, axes = plt.subplots(1, 2, figsize=(9, 3.4))
-    for ax, column, unit in ((axes[0], "volume", "Å³"), (axes[1], "area", "Å²")):
+    for ax, (quantity, unit) in zip(axes, (("volume", "Å³"), ("area", "Å²"))):
+        column = f"{quantity}_{unit.replace('Å', 'A').replace('³', '3').replace('²', '2')}"  # volume_A3, area_A2
         values = [table[column][table["timestep"] == t] for t in steps]
         ax.plot(steps, [v.sum() for v in values], marker="o", label=f"all {what}s")
         ax.plot(steps, [v.max(initial=0.0) for v in values], marker=".", ls="--", label=f"largest {what}")
         ax.set_xlabel("timestep")
-        ax.set_ylabel(f"{column} ({unit})")
+        ax.set_ylabel(f"{quantity} ({unit})")
     axes[0].legend(fontsize="small")
     fig.tight_layout()
     fig.savefig(png_path, dpi=120)

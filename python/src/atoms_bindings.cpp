@@ -107,9 +107,7 @@ py::dict domains_dict(const aa::DomainResult& r) {
     rows.push_back({double(d.cluster + 1), double(d.atoms), d.volume, d.area, aa::equivalent_radius(d.volume),
                     d.atoms_volume, aa::equivalent_radius(d.atoms_volume), d.centre.x(), d.centre.y(), d.centre.z(),
                     double(d.euler_characteristic), d.manifold ? 1.0 : 0.0});
-  py::dict out = columns_dict({"domain", "atoms", "volume", "area", "equivalent_radius", "atoms_volume", "atoms_radius",
-                               "x", "y", "z", "euler_characteristic", "manifold"},
-                              rows);
+  py::dict out = columns_dict(aa::domain_columns(), rows);
   out["surfaces"] = surface_set(r.surfaces);
   out["flat"] = r.flat;
   return out;
@@ -118,11 +116,10 @@ py::dict domains_dict(const aa::DomainResult& r) {
 // profiles.csv's columns after frame and timestep: per bin its range, atoms and the fraction of
 // each structure of each structure method.
 py::dict profile_dict(const std::vector<std::pair<std::string, std::vector<aa::ProfileBin>>>& per_method, bool excess) {
-  std::vector<std::string> names{"bin", "lo", "hi", "centre", "atoms"};
+  std::vector<std::string> methods;
   for (const auto& [method, bins] : per_method)
-    if (!method.empty())
-      for (aa::Structure t : aa::kStructures) names.push_back(method + "_" + std::string(aa::structure_name(t)) + "_fraction");
-  if (excess) names.push_back("mean_excess");
+    if (!method.empty()) methods.push_back(method);
+  const std::vector<std::string> names = aa::profile_columns(methods, excess);
   std::vector<std::vector<double>> rows;
   const auto& bins = per_method.front().second;
   for (std::size_t b = 0; b < bins.size(); ++b) {
@@ -193,9 +190,9 @@ py::dict burgers_dict(const aa::FrameBurgers& f) {
     text.append(r.text());
     kind.append(r.kind());
   }
-  py::dict out = columns_dict({"circuit", "atoms", "centre_x", "centre_y", "centre_z", "axis_x", "axis_y", "axis_z", "radius",
-                               "b_h6", "b_k6", "b_l6", "bx", "by", "bz", "max_step_error", "reliable"},
-                              rows);
+  std::vector<std::string> numbers = aa::burgers_columns();
+  std::erase_if(numbers, aa::is_text_column);
+  py::dict out = columns_dict(numbers, rows);
   out["source"] = source;
   out["b"] = text;
   out["kind"] = kind;
@@ -218,8 +215,8 @@ struct Tracker {
   aa::ClusterTracker tracker;
   std::size_t frames = 0;
 
-  py::dict tracks(long long origin, double dt) const {
-    return columns_dict(aa::track_columns(), aa::track_rows(tracker.tracks(), origin, dt));
+  py::dict tracks(long long origin, double dt, bool time_in_ps) const {
+    return columns_dict(aa::track_columns(time_in_ps), aa::track_rows(tracker.tracks(), origin, dt));
   }
   // growth.csv: the power laws of each track with 3 or more points at t > 0.
   py::dict growth(long long origin, double dt) const {
@@ -402,9 +399,7 @@ py::dict voids(const py::array& positions, const std::vector<double>& lo, const 
                     aa::equivalent_radius(v.missing_volume), v.centre.x(), v.centre.y(), v.centre.z(),
                     double(v.surface_atoms), double(v.euler_characteristic), v.manifold ? 1.0 : 0.0});
   }
-  py::dict out = columns_dict({"void", "cells", "volume", "area", "equivalent_radius", "missing_volume", "missing_radius",
-                               "x", "y", "z", "surface_atoms", "euler_characteristic", "manifold"},
-                              rows);
+  py::dict out = columns_dict(aa::void_columns(), rows);
   out["surfaces"] = surface_set(r.surfaces);
   return out;
 }
@@ -440,7 +435,7 @@ void bind_atoms(py::module_& m) {
   py::class_<Tracker>(m, "ClusterTracker", "Clusters followed through frames; use shockfield.analysis.ClusterTracker")
       .def(py::init<>())
       .def_readonly("frames", &Tracker::frames)
-      .def("tracks", &Tracker::tracks, py::arg("origin"), py::arg("dt"))
+      .def("tracks", &Tracker::tracks, py::arg("origin"), py::arg("dt"), py::arg("time_in_ps"))
       .def("growth", &Tracker::growth, py::arg("origin"), py::arg("dt"));
   m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"),
         py::arg("types"), py::arg("ids"), py::arg("probe"), py::arg("atomic_volume"), py::arg("margin"),

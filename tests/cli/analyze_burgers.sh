@@ -18,7 +18,7 @@ grep -q "force and pressure tolerances met" "$WORK/relax/log.txt" || fail "minim
   --burgers-line 0.37,1.04,8.85:0,0,1:25 --burgers-clusters -o "$WORK/an" > "$WORK/stdout"
 grep -q "3 Burgers circuits" "$WORK/stdout" || fail "circuit count: $(cat "$WORK/stdout")"
 B="$WORK/an/burgers.csv"
-head -1 "$B" | grep -q "^frame,timestep,circuit,source,atoms,centre_x" || fail "burgers.csv header: $(head -1 "$B")"
+head -1 "$B" | grep -q "^frame,timestep,circuit,source,atoms,centre_x_A" || fail "burgers.csv header: $(head -1 "$B")"
 row() { awk -F, -v k="$1" 'NR > 1 && $3 == k { print $13 ";" $14 ";" $22 ";" $4 ";" $6 }' "$B"; }
 [[ "$(row 1)" == "[1 -1 0]/2;perfect a/2<110>;1;line 1;"* ]] || fail "circuit around both partials: $(row 1)"
 partials="$(row 2 | cut -d';' -f1-3) $(row 3 | cut -d';' -f1-3)"

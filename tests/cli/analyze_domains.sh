@@ -41,7 +41,7 @@ PY
   --clusters 3.0 --cluster-select acna:bcc --domains 3.0 -o "$WORK/d" > "$WORK/stdout"
 grep -q "^3 domains in" "$WORK/stdout" || fail "domain count: $(cat "$WORK/stdout")"
 D="$WORK/d/domains.csv"
-head -1 "$D" | grep -qx "frame,timestep,domain,atoms,volume,area,equivalent_radius,atoms_volume,atoms_radius,x,y,z,euler_characteristic,manifold" \
+head -1 "$D" | grep -qx "frame,timestep,domain,atoms,volume_A3,area_A2,equivalent_radius_A,atoms_volume_A3,atoms_radius_A,x_A,y_A,z_A,euler_characteristic,manifold" \
   || fail "domains.csv header: $(head -1 "$D")"
 for t in 0 1000 2000; do grep -q "<Polys>" "$WORK/d/domains_$t.vtp" || fail "domains_$t.vtp has no polygons"; done
 [ -s "$WORK/d/domains.png" ] || fail "no domains.png"
@@ -57,17 +57,17 @@ for t, name in ((0, "inclusion0.dump"), (1000, "inclusion1000.dump")):
     data = np.array([l.split() for l in lines[9:]], dtype=float)
     bcc = data[data[:, cols.index("acna")] == 3][:, [cols.index(c) for c in "xyz"]]
     hull, r = ConvexHull(bcc), rows[t]
-    v, atoms_v = float(r["volume"]), float(r["atoms_volume"])
+    v, atoms_v = float(r["volume_A3"]), float(r["atoms_volume_A3"])
     checks = [int(r["atoms"]) == len(bcc), abs(atoms_v / (len(bcc) * omega) - 1) < 0.05,
               v <= hull.volume * (1 + 1e-9), v > 0.95 * hull.volume,
               r["euler_characteristic"] == "2", r["manifold"] == "1"]
     if t == 0:
-        checks.append(abs(v / hull.volume - 1) < 1e-6 and abs(float(r["area"]) / hull.area - 1) < 1e-6)
+        checks.append(abs(v / hull.volume - 1) < 1e-6 and abs(float(r["area_A2"]) / hull.area - 1) < 1e-6)
     print(f"timestep {t}: {len(bcc)} bcc atoms, atoms_volume {atoms_v:.1f} vs N*omega {len(bcc) * omega:.1f}, "
           f"volume {v:.1f} vs hull {hull.volume:.1f}, checks {checks}")
     bad += not all(checks)
 corner, centre = rows[2000], rows[1000]
-for c in ("atoms", "volume", "area", "atoms_volume"):
+for c in ("atoms", "volume_A3", "area_A2", "atoms_volume_A3"):
     bad += abs(float(corner[c]) - float(centre[c])) > 1e-6 * abs(float(centre[c]))
 sys.exit(bad)
 PY

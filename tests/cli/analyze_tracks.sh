@@ -29,10 +29,17 @@ grep -q "^track 1 (6 frames" "$WORK/stdout" || fail "track summary: $(cat "$WORK
 [ "$(wc -l < "$WORK/an/tracks.csv")" -eq 7 ] || fail "tracks.csv rows: $(cat "$WORK/an/tracks.csv")"
 awk -F, 'NR == 2 && ($4 < 0.19 || $4 > 0.21) { exit 1 }' "$WORK/an/tracks.csv" || fail "time column (100 × 0.002): $(sed -n 2p "$WORK/an/tracks.csv")"
 k() { awk -F, -v q="$1" '$2 == q { print $3 }' "$WORK/an/growth.csv"; }
-awk -v l="$(k L)" -v v="$(k V)" -v s="$(k A)" 'BEGIN { exit !(l > 0.46 && l < 0.54 && s > 0.92 && s < 1.08 && v > 1.38 && v < 1.62) }' \
-  || fail "growth exponents L $(k L) A $(k A) V $(k V)"
+head -1 "$WORK/an/tracks.csv" | grep -qx "track,frame,timestep,time_ps,cluster,size,x_A,y_A,z_A,a_A,b_A,c_A,L_A,ellipsoid_surface_A2,ellipsoid_volume_A3,atomic_volume_A3" \
+  || fail "tracks.csv columns (units in the names, docs/conventions.md): $(head -1 "$WORK/an/tracks.csv")"
+awk -v l="$(k L_A)" -v v="$(k ellipsoid_volume_A3)" -v s="$(k ellipsoid_surface_A2)" 'BEGIN { exit !(l > 0.46 && l < 0.54 && s > 0.92 && s < 1.08 && v > 1.38 && v < 1.62) }' \
+  || fail "growth exponents L $(k L_A) A $(k ellipsoid_surface_A2) V $(k ellipsoid_volume_A3)"
 grep -q " track" "$WORK/an/grow.1000.dump" || fail "no track column"
-echo "ok: one track, L ~ t^$(k L), A ~ t^$(k A), V ~ t^$(k V)"
+echo "ok: one track, L ~ t^$(k L_A), A ~ t^$(k ellipsoid_surface_A2), V ~ t^$(k ellipsoid_volume_A3)"
+# Without --timestep-size the growth time is in timesteps and named so.
+"$SF" analyze atoms "${files[@]}" --clusters 3.0 --cluster-select acna:other --cluster-min-size 20 --track \
+  --no-plot -o "$WORK/steps" > /dev/null
+[ "$(head -1 "$WORK/steps/tracks.csv" | cut -d, -f4)" = elapsed_timesteps ] || fail "time column without --timestep-size: $(head -1 "$WORK/steps/tracks.csv")"
+awk -F, 'NR == 2 && $4 != 100 { exit 1 }' "$WORK/steps/tracks.csv" || fail "elapsed timesteps: $(sed -n 2p "$WORK/steps/tracks.csv")"
 
 set +e
 "$SF" analyze atoms "$WORK/grow.100.dump" --track -o "$WORK/bad" > /dev/null 2> "$WORK/stderr"

@@ -23,7 +23,7 @@ PY
 "$SF" analyze atoms "$WORK/void6.dump" "$WORK/void8.dump" "$WORK/void10.dump" --voids 2.17 -o "$WORK/v" > "$WORK/stdout"
 grep -q "^3 voids in" "$WORK/stdout" || fail "void count: $(cat "$WORK/stdout")"
 V="$WORK/v/voids.csv"
-head -1 "$V" | grep -q "^frame,timestep,void,cells,volume,area,equivalent_radius,missing_volume,missing_radius,x,y,z" \
+head -1 "$V" | grep -q "^frame,timestep,void,cells,volume_A3,area_A2,equivalent_radius_A,missing_volume_A3,missing_radius_A,x_A,y_A,z_A" \
   || fail "voids.csv header: $(head -1 "$V")"
 awk -F, 'NR > 1 { n = ($2 == 6 ? 79 : $2 == 8 ? 177 : 369); expected = n * 3.615^3 / 4; e = $8 / expected - 1;
                   c = ($10 - 14.46)^2 + ($11 - 14.46)^2 + ($12 - 14.46)^2;

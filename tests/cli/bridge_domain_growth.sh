@@ -15,7 +15,8 @@ w = sys.argv[1]
 def rows(times, radii, track=1):
     return "".join(f"{track},{i},{int(t*1000)},{t},1,{int(4/3*math.pi*r**3/11.8)},0,0,0,{r},{r},{r},{r},0,0,{4/3*math.pi*r**3}\n"
                    for i, (t, r) in enumerate(zip(times, radii)))
-head = "track,frame,timestep,time,cluster,size,x,y,z,a,b,c,L,area,volume,atomic_volume\n"
+head = ("track,frame,timestep,time_ps,cluster,size,x_A,y_A,z_A,a_A,b_A,c_A,L_A,ellipsoid_surface_A2,ellipsoid_volume_A3,"
+        "atomic_volume_A3\n")
 times = [1.5 * k for k in range(12)]
 R, out, t = 9.0, [], 0.0
 for target in times:
@@ -25,6 +26,9 @@ for target in times:
         k1 = f(R); k2 = f(R + h/2*k1); k3 = f(R + h/2*k2); k4 = f(R + h*k3); R += h/6*(k1+2*k2+2*k3+k4)
     t = target; out.append(R)
 open(f"{w}/law.csv", "w").write(head + rows(times, out) + rows(times[:3], [5, 5.5, 6], track=2))
+# The same track under the model-unit names of a phasefield run's tracks.csv (time, L, atomic_volume).
+model_head = "track,frame,timestep,time,cluster,size,x,y,z,a,b,c,L,area,volume,atomic_volume\n"
+open(f"{w}/law_model.csv", "w").write(model_head + rows(times, out))
 pt = [2 * k for k in range(1, 9)]
 open(f"{w}/power.csv", "w").write(head + rows(pt, [8 * (x / 2) ** 0.465 for x in pt]))
 open(f"{w}/one.csv", "w").write(head + rows([3.0], [10.0]))
@@ -43,6 +47,9 @@ within "$a" 0.1 1e-5 1 || fail "a = $a, expected (1 - 1.2*2/3)/2 = 0.1"
 within "$tau" 6.6667e-13 1e-16 1 || fail "tau = $tau, expected 4/6 ps"
 [ "$(value "$WORK/pf.toml" provenance.domain_growth.inputs | grep -c sha256)" -ge 1 ] || fail "no input hash"
 echo "ok: c0 $c0 m/s, D $D m^2/s, a $a, tau $tau s"
+"$SF" bridge domain-growth "$WORK/law_model.csv" --interface-width 2 -o "$WORK/pf_model.toml" > /dev/null
+[ "$(value "$WORK/pf_model.toml" provenance.domain_growth.fit.c0_m_s)" = "$c0" ] \
+  || fail "a phasefield run's tracks.csv (model-unit names) gives another c0: $(value "$WORK/pf_model.toml" provenance.domain_growth.fit.c0_m_s)"
 # --update keeps another bridge's section.
 printf 'name = "x"\n[spall]\nstrength = 1e9\nstrain_rate = 1e9\n' > "$WORK/both.toml"
 "$SF" bridge domain-growth "$WORK/law.csv" --interface-width 2 -o "$WORK/both.toml" --update > /dev/null
@@ -55,7 +62,7 @@ bad "no tracked domain" "hcp atoms" -- domain-growth "$WORK/empty.csv" --interfa
 bad "no such file" -- domain-growth "$WORK/none.csv" --interface-width 2 -o "$WORK/p.toml"
 bad "wider than D/|c0|" -- domain-growth "$WORK/law.csv" --interface-width 4 -o "$WORK/p.toml"
 bad "no track 7" -- domain-growth "$WORK/law.csv" --track 7 --interface-width 2 -o "$WORK/p.toml"
-bad "text.csv: line 5" "'atomic_volume'" -- domain-growth "$WORK/text.csv" --interface-width 2 -o "$WORK/p.toml"
+bad "text.csv: line 5" "'atomic_volume_A3'" -- domain-growth "$WORK/text.csv" --interface-width 2 -o "$WORK/p.toml"
 bad "at least 4" -- domain-growth "$WORK/law.csv" --until 4 --interface-width 2 -o "$WORK/p.toml"
 # analyze atoms --voxel: a spacing longer than the box, a bad selection, a missing dump.
 /usr/bin/python3 - "$WORK" "$ROOT/tests/cli" <<'PY'

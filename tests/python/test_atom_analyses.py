@@ -122,7 +122,7 @@ class AtomAnalyses(unittest.TestCase):
         v = r["voids"]
         self.assertEqual(len(v), 1)
         self.assertEqual((v["euler_characteristic"][0], v["manifold"][0]), (2, 1))
-        np.testing.assert_allclose([v["x"][0], v["y"][0], v["z"][0]], box[1] / 2, atol=1e-6)
+        np.testing.assert_allclose([v["x_A"][0], v["y_A"][0], v["z_A"][0]], box[1] / 2, atol=1e-6)
         self.assert_rows_printed_equal(v, read_csv(out / "voids.csv"), 10)
         points, triangles = read_vtp(out / "voids_0.vtp")
         np.testing.assert_array_equal(renumbered(r["surfaces"]["triangles"]), triangles)
@@ -251,7 +251,7 @@ class AtomAnalyses(unittest.TestCase):
         for mine, theirs in zip(growth, rows):
             for column, digits in (("exponent", 6), ("exponent_stderr", 3), ("prefactor", 6)):
                 self.assertEqual(f"{mine[column]:.{digits}g}", theirs[column], column)
-        self.assertGreater(growth["exponent"][list(growth["quantity"]).index("V")], 1.0)  # grows: V ~ t^1.58 here
+        self.assertGreater(growth["exponent"][list(growth["quantity"]).index("ellipsoid_volume_A3")], 1.0)  # grows: V ~ t^1.58 here
         with self.assertRaisesRegex(shockfield.InputError, "tracker needs clusters"):
             analysis.structure(x, box, adaptive_cna=True, tracker=tracker)
 

@@ -19,6 +19,7 @@
 
 import os
 import pathlib
+import re
 import subprocess
 import sys
 import tempfile
@@ -45,7 +46,7 @@ def fibonacci_sphere(n=1500, jitter=1e-3, seed=7):
 
 def read_vtp(path):
     text = path.read_text()
-    points = text.split('NumberOfComponents="3" format="ascii">')[1].split("</DataArray>")[0]
+    points = re.split(r'NumberOfComponents="3" format="ascii"[^>]*>', text)[1].split("</DataArray>")[0]
     cells = text.split('Name="connectivity" format="ascii">')[1].split("</DataArray>")[0]
     return (np.array(points.split(), dtype=float).reshape(-1, 3),
             np.array(cells.split(), dtype=np.int32).reshape(-1, 3))

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "shockfield/app/option_values.hpp"
+#include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::app {
@@ -19,9 +20,6 @@ Vec3 vector3(const std::string& text, const std::string& what) {
   return {finite_number(parts[0], what), finite_number(parts[1], what), finite_number(parts[2], what)};
 }
 
-const char* kColumns =
-    "frame,timestep,circuit,source,atoms,centre_x,centre_y,centre_z,axis_x,axis_y,axis_z,radius,b,kind,b_h6,b_k6,b_l6,"
-    "bx,by,bz,max_step_error,reliable\n";
 
 }  // namespace
 
@@ -103,7 +101,7 @@ BurgersAnalysis::BurgersAnalysis(const BurgersArgs& args, bool clusters_on) {
 
 void BurgersAnalysis::open(const std::filesystem::path& file) {
   out_ = io::CheckedOutput(file);
-  out_.write(kColumns);
+  out_.write(analysis::atoms::csv_header(analysis::atoms::burgers_columns()));
 }
 
 void BurgersAnalysis::analyze(std::size_t frame_index, const aa::AtomFrame& frame, const aa::ClusterResult* clusters,

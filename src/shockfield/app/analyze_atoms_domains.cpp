@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "shockfield/analysis/atoms/atom_surfaces.hpp"
+#include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::app {
@@ -35,10 +36,7 @@ DomainOutput::DomainOutput(const DomainArgs& args, bool clusters_on,
   if (!clusters_on)
     throw InputError("--domains needs the clusters that form the domains: add --clusters CUTOFF and "
                      "--cluster-select (e.g. --clusters 3 --cluster-select acna:bcc)");
-  files_ = SurfaceSeries("domains",
-                         "frame,timestep,domain,atoms,volume,area,equivalent_radius,atoms_volume,atoms_radius,x,y,z,"
-                         "euler_characteristic,manifold\n",
-                         add_file);
+  files_ = SurfaceSeries("domains", analysis::atoms::csv_header(analysis::atoms::domain_columns()), add_file);
 }
 
 void DomainOutput::add(std::size_t frame_index, const analysis::atoms::AtomFrame& frame,

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "shockfield/app/option_values.hpp"
+#include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::app {
@@ -58,11 +59,7 @@ ProfileOutput::ProfileOutput(const ProfileArgs& args, const aa::StructureAnalyse
 
 void ProfileOutput::open(const std::filesystem::path& file) {
   out_ = io::CheckedOutput(file);
-  std::string header = "frame,timestep,bin,lo,hi,centre,atoms";
-  for (const std::string& m : methods_)
-    for (aa::Structure t : aa::kStructures) header += fmt::format(",{}_{}_fraction", m, aa::structure_name(t));
-  if (excess_) header += ",mean_excess";
-  out_.write(header + "\n");
+  out_.write(aa::csv_header(aa::profile_columns(methods_, excess_)));
 }
 
 aa::ExcessEnergy ProfileOutput::excess_energy(const aa::AtomFrame& frame, const aa::StructureAnalysisResult& r,

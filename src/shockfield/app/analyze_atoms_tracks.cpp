@@ -18,8 +18,10 @@ void add_track_options(CLI::App& cmd, TrackArgs& a) {
                "writes OUTPUT/tracks.csv, OUTPUT/growth.csv and the dump column track");
   cmd.add_option("--growth-origin", a.origin, "Timestep from which the growth time t is counted (nucleation); points with t <= 0 are left out")
       ->capture_default_str();
-  cmd.add_option("--timestep-size", a.dt, "Time per timestep for t (e.g. the MD time step in ps); 1: t in timesteps")
-      ->capture_default_str()
+  cmd.add_option_function<double>(
+         "--timestep-size", [&a](double dt) { a.dt = dt, a.dt_given = true; },
+         "The MD time step in ps: t in ps (tracks.csv's column time_ps); without it t is in timesteps "
+         "(elapsed_timesteps)")
       ->check(CLI::PositiveNumber);
 }
 
@@ -39,7 +41,7 @@ void TrackOutput::add(std::size_t frame, const aa::AtomFrame& atoms, const aa::C
 void TrackOutput::write(const std::filesystem::path& tracks_file, const std::filesystem::path& growth_file) const {
   io::CheckedOutput tracks(tracks_file);
   std::string header;
-  for (const std::string& c : aa::track_columns()) header += (header.empty() ? "" : ",") + c;
+  for (const std::string& c : aa::track_columns(args_.dt_given)) header += (header.empty() ? "" : ",") + c;
   tracks.write(header + "\n");
   for (const std::vector<double>& row : aa::track_rows(tracker_.tracks(), args_.origin, args_.dt)) {
     std::string line;

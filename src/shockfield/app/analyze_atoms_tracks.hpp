@@ -16,6 +16,7 @@ struct TrackArgs {
   bool track = false;
   long long origin = 0;  ///< timestep from which growth time is counted (nucleation)
   double dt = 1.0;       ///< time per timestep (ps for an MD run); 1: time in timesteps
+  bool dt_given = false;  ///< --timestep-size given: the growth time is in ps (tracks.csv's time_ps)
 };
 
 void add_track_options(CLI::App& cmd, TrackArgs& args);

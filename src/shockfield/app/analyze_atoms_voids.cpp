@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "shockfield/analysis/atoms/atom_surfaces.hpp"
+#include "shockfield/analysis/atoms/structure_columns.hpp"
 #include "shockfield/app/python_helpers.hpp"
 #include "shockfield/geometry/delaunay_output.hpp"
 
@@ -41,7 +42,7 @@ SurfaceSeries::SurfaceSeries(std::string name, const std::string& csv_header,
 void SurfaceSeries::end_frame(long long timestep, const std::vector<std::array<double, 3>>& points,
                               const std::vector<std::array<std::int32_t, 3>>& triangles) {
   csv_.flush();
-  geometry::write_surface_vtp(add_file_(fmt::format("{}_{}.vtp", name_, timestep)), points, triangles);
+  geometry::write_surface_vtp(add_file_(fmt::format("{}_{}.vtp", name_, timestep)), points, triangles, "A");
 }
 
 void SurfaceSeries::close() {
@@ -56,10 +57,7 @@ void SurfaceSeries::plot(const std::filesystem::path& folder) const {
 VoidOutput::VoidOutput(const VoidArgs& args, std::function<std::filesystem::path(const std::filesystem::path&)> add_file)
     : args_(args) {
   if (!on()) return;
-  files_ = SurfaceSeries("voids",
-                         "frame,timestep,void,cells,volume,area,equivalent_radius,missing_volume,missing_radius,x,y,z,"
-                         "surface_atoms,euler_characteristic,manifold\n",
-                         add_file);
+  files_ = SurfaceSeries("voids", analysis::atoms::csv_header(analysis::atoms::void_columns()), add_file);
 }
 
 void VoidOutput::add(std::size_t frame_index, const analysis::atoms::AtomFrame& frame) {

@@ -78,7 +78,7 @@ void run_geometry(const GeometryArgs& a) {
       sg::total_volume<N>(division));
   if (a.check) summary += "check passed\n";
   if (surface) {
-    sg::write_surface_vtp(out / "surface.vtp", surface->points, surface->triangles);
+    sg::write_surface_vtp(out / "surface.vtp", surface->points, surface->triangles, "1");  // the input's unit
     summary += fmt::format(
         "surface_triangles {}\nsurface_area {:.12g}\nsurface_volume {:.12g}\n"
         "surface_euler_characteristic {}\nsurface_manifold {}\n",

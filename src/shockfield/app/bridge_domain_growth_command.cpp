@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <numbers>
 
@@ -46,10 +47,23 @@ struct Series {
   std::vector<double> t, R;  ///< ps, Å
 };
 
+// The columns read of a tracks.csv: that of analyze atoms --track names its units (time_ps, or
+// elapsed_timesteps without --timestep-size; L_A, atomic_volume_A3: docs/conventions.md), that of
+// a phasefield run is in model units (time, L, atomic_volume).
+std::vector<std::string> track_columns_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::string header;
+  std::getline(in, header);
+  const auto has = [&](const std::string& name) { return ("," + header + ",").find("," + name + ",") != std::string::npos; };
+  if (!has("L_A")) return {"track", "time", "size", "L", "atomic_volume"};
+  return {"track", has("elapsed_timesteps") ? "elapsed_timesteps" : "time_ps", "size", "L_A", "atomic_volume_A3"};
+}
+
 // The radius of each point of the chosen track in the time window.
 Series read_track(const fs::path& file, const DomainGrowthOptions& o) {
-  const auto cols = read_columns(file, {"track", "time", "size", "L", "atomic_volume"},
-                                 "the tracks.csv of shockfield analyze atoms --clusters ... --track");
+  const auto cols = read_columns(file, track_columns_of(file),
+                                 "the tracks.csv of shockfield analyze atoms --clusters ... --track (time_ps, L_A, "
+                                 "atomic_volume_A3) or of a phasefield run (time, L, atomic_volume)");
   std::map<int, std::pair<std::size_t, double>> tracks;  // points and last size of each track
   for (std::size_t i = 0; i < cols[0].size(); ++i) {
     auto& [points, size] = tracks[static_cast<int>(cols[0][i])];
@@ -227,7 +241,8 @@ void add_bridge_domain_growth_command(CLI::App& bridge, const std::vector<std::s
                   "Which radius: atomic (the sphere of the atomic volume, N V/N_atoms) or moments (L = (abc)^(1/3))")
       ->capture_default_str()
       ->check(CLI::IsMember({"atomic", "moments"}));
-  cmd->add_option("--time-scale", o->time_scale, "Picoseconds per unit of the time column of tracks.csv")
+  cmd->add_option("--time-scale", o->time_scale, "Picoseconds per unit of the time column of tracks.csv (1 for time_ps; the MD time step for "
+                  "elapsed_timesteps; the model's time unit for a phasefield run's time)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   add_bridge_output_options(*cmd, o->out, "[phasefield]");

@@ -65,15 +65,15 @@ SurfaceMesh surface_mesh(std::size_t point_count, const std::vector<std::array<s
 
 void write_surface_vtp(const std::filesystem::path& file,
                        const std::vector<std::array<double, 3>>& points,
-                       const std::vector<std::array<std::int32_t, 3>>& triangles) {
+                       const std::vector<std::array<std::int32_t, 3>>& triangles, const std::string& length_unit) {
   const SurfaceMesh mesh = surface_mesh(points.size(), triangles);
   io::CheckedOutput out(file);  // a failed write stops with RunError naming the file
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
          "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PolyData>\n";
   out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfPolys=\"{}\">\n", mesh.used.size(),
                      triangles.size());
-  out << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-         "format=\"ascii\">\n";
+  out << fmt::format("      <Points>\n        <DataArray type=\"Float64\" Name=\"points\" NumberOfComponents=\"3\" "
+                     "format=\"ascii\" units=\"{}\">\n", length_unit);
   for (std::int32_t v : mesh.used)
     out << fmt::format("{} {} {}\n", points[v][0], points[v][1], points[v][2]);
   out << "        </DataArray>\n      </Points>\n      <Polys>\n";

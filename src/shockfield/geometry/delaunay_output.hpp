@@ -28,10 +28,11 @@ struct SurfaceMesh {
 SurfaceMesh surface_mesh(std::size_t point_count, const std::vector<std::array<std::int32_t, 3>>& triangles);
 
 /// A triangle surface as VTK XML PolyData (.vtp, ASCII polygons) for ParaView: the surface_mesh
-/// of the triangles (only the points they use).
+/// of the triangles (only the points they use), the points named "points" with the unit of their
+/// coordinates (`length_unit`: "A" for atoms, "1" for points of no known unit; docs/conventions.md).
 void write_surface_vtp(const std::filesystem::path& file,
                        const std::vector<std::array<double, 3>>& points,
-                       const std::vector<std::array<std::int32_t, 3>>& triangles);
+                       const std::vector<std::array<std::int32_t, 3>>& triangles, const std::string& length_unit);
 
 /// CSV: index,x,y[,z],<one column per named clustering>; the header names the columns.
 template <int N>

@@ -78,7 +78,8 @@ std::vector<PowerLawFit> fit_growth(const ClusterTrack& track, long long origin,
     const double row[7] = {s[0], s[1], s[2], size, p.shape.ellipsoid_surface, p.shape.ellipsoid_volume, p.shape.atomic_volume};
     for (int q = 0; q < 7; ++q) values[static_cast<std::size_t>(q)].push_back(row[q]);
   }
-  static const char* kNames[7] = {"a", "b", "c", "L", "A", "V", "atomic_volume"};
+  static const char* kNames[7] = {"a_A", "b_A", "c_A", "L_A", "ellipsoid_surface_A2", "ellipsoid_volume_A3",
+                                  "atomic_volume_A3"};
   std::vector<PowerLawFit> fits;
   for (int q = 0; q < 7; ++q) {
     const auto& y = values[static_cast<std::size_t>(q)];
@@ -89,9 +90,9 @@ std::vector<PowerLawFit> fit_growth(const ClusterTrack& track, long long origin,
   return fits;
 }
 
-std::vector<std::string> track_columns() {
-  return {"track", "frame", "timestep", "time", "cluster", "size", "x", "y", "z", "a", "b", "c", "L", "area", "volume",
-          "atomic_volume"};
+std::vector<std::string> track_columns(bool time_in_ps) {
+  return {"track", "frame", "timestep", time_in_ps ? "time_ps" : "elapsed_timesteps", "cluster", "size", "x_A", "y_A",
+          "z_A", "a_A", "b_A", "c_A", "L_A", "ellipsoid_surface_A2", "ellipsoid_volume_A3", "atomic_volume_A3"};
 }
 
 std::vector<std::vector<double>> track_rows(const std::vector<ClusterTrack>& tracks, long long origin, double dt) {

@@ -54,13 +54,17 @@ struct PowerLawFit {
   int points = 0;
 };
 
-/// tracks.csv's columns: track, frame, timestep, time ((timestep − origin) · dt), cluster (1, 2,
-/// ...), size, x, y, z, a, b, c, L = (abc)^{1/3}, area, volume, atomic_volume.
-std::vector<std::string> track_columns();
+/// tracks.csv's columns (docs/conventions.md: units in the names, those of clusters.csv): track,
+/// frame, timestep, the growth time (timestep − origin) · dt as `time_ps` when dt is an MD time step
+/// in ps, else as `elapsed_timesteps` (dt = 1), cluster (1, 2, ...), size, centre x_A, y_A, z_A,
+/// semi-axes a_A, b_A, c_A, L_A = (abc)^{1/3}, ellipsoid_surface_A2, ellipsoid_volume_A3,
+/// atomic_volume_A3.
+std::vector<std::string> track_columns(bool time_in_ps);
 /// Their values: one row per track and frame it was seen in, tracks in order.
 std::vector<std::vector<double>> track_rows(const std::vector<ClusterTrack>& tracks, long long origin, double dt);
 
-/// y = C t^k for a, b, c, L, A, V and the atomic volume of one track (quantities with a
+/// y = C t^k for a, b, c, L, A, V and the atomic volume of one track, each named as its column
+/// of tracks.csv (a_A, ..., ellipsoid_surface_A2, ellipsoid_volume_A3, atomic_volume_A3) (quantities with a
 /// non-positive value are left out). Fewer than 3 points with t > 0: no fits.
 std::vector<PowerLawFit> fit_growth(const ClusterTrack& track, long long origin, double dt);
 

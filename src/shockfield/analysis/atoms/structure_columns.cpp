@@ -76,4 +76,35 @@ std::vector<double> structure_count_values(const StructureAnalysisResult& r) {
   return row;
 }
 
+std::vector<std::string> profile_columns(const std::vector<std::string>& methods, bool excess) {
+  std::vector<std::string> columns{"bin", "lo_A", "hi_A", "centre_A", "atoms"};
+  for (const std::string& m : methods)
+    for (Structure t : kStructures) columns.push_back(fmt::format("{}_{}_fraction", m, structure_name(t)));
+  if (excess) columns.push_back("mean_excess_eV");
+  return columns;
+}
+
+std::vector<std::string> domain_columns() {
+  return {"domain",         "atoms", "volume_A3", "area_A2", "equivalent_radius_A",  "atoms_volume_A3",
+          "atoms_radius_A", "x_A",   "y_A",       "z_A",     "euler_characteristic", "manifold"};
+}
+
+std::vector<std::string> void_columns() {
+  return {"void",     "cells",           "volume_A3",        "area_A2", "equivalent_radius_A",
+          "missing_volume_A3", "missing_radius_A", "x_A", "y_A", "z_A", "surface_atoms", "euler_characteristic", "manifold"};
+}
+
+std::vector<std::string> burgers_columns() {
+  return {"circuit", "source", "atoms", "centre_x_A", "centre_y_A", "centre_z_A", "axis_x", "axis_y", "axis_z",
+          "radius_A", "b", "kind", "b_h6", "b_k6", "b_l6", "bx_A", "by_A", "bz_A", "max_step_error", "reliable"};
+}
+
+bool is_text_column(const std::string& name) { return name == "source" || name == "b" || name == "kind"; }
+
+std::string csv_header(const std::vector<std::string>& columns) {
+  std::string header = "frame,timestep";
+  for (const std::string& c : columns) header += "," + c;
+  return header + "\n";
+}
+
 }  // namespace shockfield::analysis::atoms
