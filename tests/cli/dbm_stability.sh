@@ -67,11 +67,11 @@ type = "uniform"
 state = { rho = 1.0, p = 0.6 }
 [boundary]
 x_low = "inflow"
-x_low_state = { rho = 2.269952, u = 0.894427, p = 2.029951 }
+x_low_state = { rho = 2.269952, vx = 0.894427, p = 2.029951 }
 [run]
 end_time = 3.0
 courant = 0.4'
-expect_error "$inert" "model.stability_check" "boundary.x_low_state (rho = 2.27, u = (0.8944, 0), T = 0.8943)" \
+expect_error "$inert" "model.stability_check" "boundary.x_low_state (rho = 2.27, v = (0.8944, 0), T = 0.8943)" \
   "smooth waves" "grows as exp(10.4 t)" "coarser grid or a smaller model.tau"
 peak="${inert/x_low = \"inflow\"/x_low = \"reflecting\"}"
 peak="${peak/x_low_state*p = 2.029951 \}/[reaction]

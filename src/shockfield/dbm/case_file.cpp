@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <fmt/format.h>
@@ -18,12 +19,23 @@ constexpr long long max_dbm_steps = 1'000'000'000;
 
 const std::array<std::string, 4> kSides{"x_low", "x_high", "y_low", "y_high"};
 
-// ρ, u, v and T or p (p = ρT) of an inline table such as { rho = 1.0, u = 0.0, p = 1.0 }.
+// A velocity component, `name` (vx, vy), default 0. Its name before issue 15, `old_name` (u, v),
+// is still read, with a warning: a velocity is v, a displacement u in every method
+// (docs/conventions.md).
+double read_velocity(const Config& t, const char* name, const char* old_name) {
+  if (!t.has(old_name)) return t.get_double_or(name, 0.0);
+  if (t.has(name)) t.fail(old_name, fmt::format("give {} only ({} is its deprecated name)", name, old_name));
+  std::fprintf(stderr, "warning: %s: key '%s' is deprecated: name the velocity '%s' (docs/conventions.md)\n",
+               t.file().c_str(), t.key_path(old_name).c_str(), name);
+  return t.get_double(old_name);
+}
+
+// ρ, vx, vy and T or p (p = ρT) of an inline table such as { rho = 1.0, vx = 0.0, p = 1.0 }.
 Macro read_state(const Config& t) {
   Macro m;
   m.rho = t.get_double("rho", Range::positive());
-  m.ux = t.get_double_or("u", 0.0);
-  m.uy = t.get_double_or("v", 0.0);
+  m.ux = read_velocity(t, "vx", "u");
+  m.uy = read_velocity(t, "vy", "v");
   if (t.has("T") == t.has("p")) t.fail("T", "give exactly one of T and p (p = rho*T)");
   m.T = t.has("T") ? t.get_double("T", Range::positive()) : t.get_double("p", Range::positive()) / m.rho;
   return m;
@@ -102,7 +114,7 @@ Boundaries read_boundaries(const std::optional<Config>& t, bool gls, double gamm
     }
     if (bs.kind == BoundaryKind::wall) {
       const Config w = t->table(side + "_wall");
-      bs.state = {1.0, w.get_double_or("u", 0.0), w.get_double_or("v", 0.0), w.get_double("T", Range::positive())};
+      bs.state = {1.0, read_velocity(w, "vx", "u"), read_velocity(w, "vy", "v"), w.get_double("T", Range::positive())};
     }
   }
   try {

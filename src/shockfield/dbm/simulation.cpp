@@ -210,7 +210,7 @@ void Simulation::check_state() const {
       const Macro m = macro(i, j);
       if (!(m.rho > 0.0) || !(m.T > 0.0) || !std::isfinite(m.rho + m.ux + m.uy + m.T))
         throw RunError(fmt::format(
-            "DBM state broke down at step {} (t = {:.6g}) in cell ({}, {}): rho = {}, u = ({}, "
+            "DBM state broke down at step {} (t = {:.6g}) in cell ({}, {}): rho = {}, v = ({}, "
             "{}), T = {}; reduce dt or soften the initial jump; if a smooth mode grew, the state is "
             "unstable for this dx/tau (a larger tau helps at jumps, a smaller tau or a coarser dx "
             "for moving hot states: see the stability check, docs/theory/dbm.md)",

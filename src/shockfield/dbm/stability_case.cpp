@@ -63,7 +63,7 @@ double severity(const NamedState& s, const StabilityReport& r) {
 }
 
 std::string describe(const NamedState& s) {
-  return fmt::format("the {} (rho = {:.4g}, u = ({:.4g}, {:.4g}), T = {:.4g})", s.name, s.macro.rho, s.macro.ux, s.macro.uy,
+  return fmt::format("the {} (rho = {:.4g}, v = ({:.4g}, {:.4g}), T = {:.4g})", s.name, s.macro.rho, s.macro.ux, s.macro.uy,
                      s.macro.T);
 }
 
