@@ -28,7 +28,7 @@ def speed(run):
     s = Run.open(run).series
     late = s["time"] >= 0.5 * s["time"][-1]
     slope, icpt = np.polyfit(s["time"][late], s["front_x"][late], 1)
-    drift = s["total_energy"][-1] / s["total_energy"][0] - 1
+    drift = s["total_energy_per_length"][-1] / s["total_energy_per_length"][0] - 1
     return s, slope, icpt, drift
 
 

@@ -36,7 +36,7 @@ printf '%s\n' "$det" > "$WORK/det.toml"
 "$SF" run "$WORK/det.toml" --output "$WORK/det" -q > /dev/null
 grep -q "cj_speed = 1.59872" "$WORK/det/config.resolved.toml" || fail "derived cj_speed missing or wrong"
 grep -q "von_neumann_p = 2.0299" "$WORK/det/config.resolved.toml" || fail "derived von_neumann_p missing or wrong"
-head -1 "$WORK/det/series.csv" | grep -q "lambda,chemical_energy,total_energy,front_x" || fail "series columns"
+head -1 "$WORK/det/series.csv" | grep -q "lambda,chemical_energy_per_length,total_energy_per_length,front_x" || fail "series columns"
 head -1 "$WORK/det/profiles/profile_2.csv" | grep -q "D31x,lambda,omega" || fail "profile columns"
 # E + Q·Σρλ is conserved while the chemical energy falls and the front advances.
 awk -F, 'NR == 2 {e0 = $10; c0 = $9; x0 = $11} END {

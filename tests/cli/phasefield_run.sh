@@ -13,8 +13,11 @@ grep -q "valid phasefield case (1920 nodes, 2 domains, 60 steps" "$WORK/check.tx
 for f in series.csv fields.pvd fields/xi_0.vti fields/xi_3.vti thermo.csv checkpoint.h5 config.resolved.toml; do
   [ -s "$WORK/straight/$f" ] || fail "no $f"
 done
-head -1 "$WORK/straight/series.csv" | grep -q "^step,time,volume_fraction,free_energy,hcp_volume,equivalent_radius" ||
+# A 2D grid is a slab of unit thickness: its totals are per unit length (docs/conventions.md).
+head -1 "$WORK/straight/series.csv" | grep -q "^step,time,volume_fraction,free_energy_per_length,hcp_volume_per_length,equivalent_radius" ||
   fail "series.csv header: $(head -1 "$WORK/straight/series.csv")"
+grep -q "hcp volume .* per unit length of thickness (fraction.*free energy .* per unit length of thickness" "$WORK/straight/log.txt" \
+  || fail "the log's totals lack their per-length label: $(grep finished "$WORK/straight/log.txt")"
 [ "$(wc -l < "$WORK/straight/series.csv")" -eq 14 ] || fail "series.csv: expected 13 rows (t = 0, 0.5, ..., 6)"
 grep -q "FreeEng" "$WORK/straight/log.txt" || fail "no thermo table in log.txt"
 grep -q "critical_radius = 7.07" "$WORK/straight/config.resolved.toml" || fail "no derived critical radius"

@@ -37,3 +37,18 @@ inline constexpr const char* per_missing_dimensions_text(int dim) {
 }
 
 }  // namespace shockfield::units::si
+
+namespace shockfield::units::model {
+
+/// The same label for the methods in dimensionless model units (dbm, phasefield), which have no
+/// unit to name: a total of a 2D model is per unit length of thickness (`mass_per_length`), of a
+/// 1D model per unit area of cross-section (`free_energy_per_area`). DBM's D2V16 lattice is 2D for
+/// every case (a 1D problem is one row of cells).
+inline constexpr const char* per_missing_dimensions_column(int dim) {
+  return dim >= 3 ? "" : dim == 2 ? "_per_length" : "_per_area";
+}
+inline constexpr const char* per_missing_dimensions_text(int dim) {
+  return dim >= 3 ? "" : dim == 2 ? " per unit length of thickness" : " per unit area of cross-section";
+}
+
+}  // namespace shockfield::units::model

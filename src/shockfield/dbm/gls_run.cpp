@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/units.hpp"
 #include "shockfield/analysis/minkowski.hpp"
 #include "shockfield/dbm/phase_separation.hpp"
 #include "shockfield/io/csv_writer.hpp"
@@ -26,7 +27,9 @@ void GlsRunPart::initialize(Simulation& sim) const {
 
 std::vector<std::string> GlsRunPart::series_columns() const {
   std::vector<std::string> columns{"step", "time", "D", "D_force", "D_gradient", "L", "R", "density_variance",
-                                   "rho_min", "rho_max", "T_mean", "v_max", "mass", "energy"};
+                                   "rho_min", "rho_max", "T_mean", "v_max"};
+  for (const char* total : {"mass", "energy"})
+    columns.push_back(total + std::string(units::model::per_missing_dimensions_column(Lattice::dim)));
   for (const double level : spec_.extra_thresholds) columns.push_back(fmt::format("L_rho{}", level));
   return columns;
 }

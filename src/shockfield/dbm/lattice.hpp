@@ -6,6 +6,9 @@
 namespace shockfield::dbm {
 
 struct Lattice {
+  /// Every case's lattice is 2D (a 1D problem is one row of cells): its totals, Σ over cells × dx
+  /// dy, are per unit length of thickness (docs/conventions.md, "Per length and per area").
+  static constexpr int dim = 2;
   static constexpr int ghosts = 2;
   int nx = 1, ny = 1;
   double dx = 1.0, dy = 1.0;

@@ -12,6 +12,7 @@
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/size_limits.hpp"
 #include "shockfield/core/state_array.hpp"
+#include "shockfield/core/units.hpp"
 #include "shockfield/dbm/case_file.hpp"
 #include "shockfield/dbm/checkpoint.hpp"
 #include "shockfield/dbm/decomposition.hpp"
@@ -155,12 +156,14 @@ class DbmMethod final : public Method, public DerivedArrays {
   void log_results(double steps_per_second) override {
     if (gls_) gls_->write_summary(run_->folder, run_->log);
     const auto total = current().totals();
-    run_->log.info("finished: t = {} after {} steps ({:.3g} cell-steps/s); mass {}, momentum ({}, {}), energy {}",
+    const char* per = units::model::per_missing_dimensions_text(Lattice::dim);
+    run_->log.info("finished: t = {} after {} steps ({:.3g} cell-steps/s); mass {}, momentum ({}, {}), energy {} "
+                   "(model units,{})",
                    sim_.time(), sim_.steps(), steps_per_second * work_items(), total[0], total[1], total[2],
-                   total[3]);
+                   total[3], per);
     if (reaction_)
-      run_->log.info("chemical energy Q*sum(rho*lambda) {}; energy + chemical energy {}", reaction_->chemical_energy(),
-                     total[3] + reaction_->chemical_energy());
+      run_->log.info("chemical energy Q*sum(rho*lambda) {}; energy + chemical energy {} (model units,{})",
+                     reaction_->chemical_energy(), total[3] + reaction_->chemical_energy(), per);
   }
 
   std::vector<std::string> thermo_columns() const override {
@@ -218,10 +221,11 @@ class DbmMethod final : public Method, public DerivedArrays {
     Json means = Json::object();
     for (std::size_t k = 0; k < tne.mean_central.size(); ++k) means.set(kTneNames[k], tne.mean_central[k]);
     Json r = Json::object();
-    r.set("mass", total[0]).set("momentum", Json::Array{total[1], total[2]}).set("energy", total[3]);
+    const std::string per = units::model::per_missing_dimensions_column(Lattice::dim);
+    r.set("mass" + per, total[0]).set("momentum" + per, Json::Array{total[1], total[2]}).set("energy" + per, total[3]);
     r.set("mean_tne_strength_D", tne.mean_strength).set("mean_tne_central", std::move(means));
     if (reaction_) {
-      r.set("chemical_energy", reaction_->chemical_energy());
+      r.set("chemical_energy" + per, reaction_->chemical_energy());
       r.set("front_x", pressure_front(sim_, c_.output.profile_row, c_.reaction->front_pressure()));
     }
     return r;

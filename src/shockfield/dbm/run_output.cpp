@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "shockfield/core/units.hpp"
 #include "shockfield/dbm/detonation.hpp"
 #include "shockfield/dbm/tne.hpp"
 #include "shockfield/io/vtk_pieces.hpp"
@@ -23,7 +24,9 @@ RunOutput::RunOutput(const fs::path& folder, const DbmOutputSpec& spec, const Si
   const double keep_profile = static_cast<double>(counters.profiles) - 1.0;
   std::vector<std::string> series_columns =
       gls ? gls->series_columns() : std::vector<std::string>{"step", "time", "rho", "vx", "vy", "T", "D"};
-  if (reaction_) series_columns.insert(series_columns.end(), {"lambda", "chemical_energy", "total_energy", "front_x"});
+  const std::string per = units::model::per_missing_dimensions_column(Lattice::dim);
+  if (reaction_)
+    series_columns.insert(series_columns.end(), {"lambda", "chemical_energy" + per, "total_energy" + per, "front_x"});
   series_ = io::CsvWriter(folder / "series.csv", series_columns, resumed ? &keep_step : nullptr);
   fs::create_directories(folder / "profiles");
   index_ = io::CsvWriter(folder / "profiles" / "index.csv", {"profile", "step", "time"},

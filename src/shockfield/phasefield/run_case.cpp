@@ -9,6 +9,7 @@
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/size_limits.hpp"
 #include "shockfield/core/state_array.hpp"
+#include "shockfield/core/units.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/vtk_pieces.hpp"
 #include "shockfield/phasefield/case_file.hpp"
@@ -86,10 +87,11 @@ class PhasefieldMethod final : public Method {
   }
   void log_results(double steps_per_second) override {
     const FieldMeasures m = solver_.measures();
-    run_->log.info("finished: t = {} after {} steps ({:.3g} node-steps/s); hcp volume {} (fraction xi > 1/2: {}), "
-                   "equivalent radius {}, free energy {}",
-                   solver_.time(), solver_.steps(), steps_per_second * work_items(), m.integral,
-                   m.fraction_above_half, equivalent_radius(m.integral, c_.grid.dim), m.free_energy);
+    const char* per = units::model::per_missing_dimensions_text(c_.grid.dim);
+    run_->log.info("finished: t = {} after {} steps ({:.3g} node-steps/s); hcp volume {}{} (fraction xi > 1/2: {}), "
+                   "equivalent radius {}, free energy {}{}",
+                   solver_.time(), solver_.steps(), steps_per_second * work_items(), m.integral, per,
+                   m.fraction_above_half, equivalent_radius(m.integral, c_.grid.dim), m.free_energy, per);
   }
 
   std::vector<std::string> thermo_columns() const override {
@@ -114,8 +116,9 @@ class PhasefieldMethod final : public Method {
   Json results() const override {
     const FieldMeasures m = solver_.measures();
     Json r = Json::object();
-    r.set("hcp_volume", m.integral).set("volume_fraction", m.fraction_above_half);
-    r.set("equivalent_radius", equivalent_radius(m.integral, c_.grid.dim)).set("free_energy", m.free_energy);
+    const std::string per = units::model::per_missing_dimensions_column(c_.grid.dim);
+    r.set("hcp_volume" + per, m.integral).set("volume_fraction", m.fraction_above_half);
+    r.set("equivalent_radius", equivalent_radius(m.integral, c_.grid.dim)).set("free_energy" + per, m.free_energy);
     r.set("front_speed_c0", c_.model.front_speed());
     return r;
   }
@@ -132,8 +135,9 @@ class PhasefieldMethod final : public Method {
   void open(RunContext& run, bool resumed) {
     run_ = &run;
     const double keep_step = static_cast<double>(solver_.steps()), keep_time = solver_.time();
+    const std::string per = units::model::per_missing_dimensions_column(c_.grid.dim);
     series_ = io::CsvWriter(run.folder / "series.csv",
-                            {"step", "time", "volume_fraction", "free_energy", "hcp_volume", "equivalent_radius",
+                            {"step", "time", "volume_fraction", "free_energy" + per, "hcp_volume" + per, "equivalent_radius",
                              "surface", "mean_curvature", "euler", "axis_a", "axis_b", "axis_c", "long_axis_x",
                              "long_axis_y", "long_axis_z", "center_x", "center_y", "center_z"},
                             resumed ? &keep_step : nullptr);

@@ -9,6 +9,7 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/output_schedule.hpp"
+#include "shockfield/core/units.hpp"
 #include "shockfield/io/checkpoint_file.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/io/vtk_xml.hpp"
@@ -115,8 +116,9 @@ class SharpFrontMethod final : public Method {
     if (c_.output.field_interval == 0.0) write_frame(counters_.frames++);
   }
   void log_results(double steps_per_second) override {
-    run_->log.info("finished: t = {} after {} steps ({:.3g} domain-steps/s); {} domains, largest radius {}, total volume {}",
-                   time(), steps_, steps_per_second * work_items(), domains_.size(), largest_radius(), total_volume());
+    run_->log.info("finished: t = {} after {} steps ({:.3g} domain-steps/s); {} domains, largest radius {}, total volume {}{}",
+                   time(), steps_, steps_per_second * work_items(), domains_.size(), largest_radius(), total_volume(),
+                   units::model::per_missing_dimensions_text(c_.grid.dim));
   }
 
   std::vector<std::string> thermo_columns() const override { return {"Step", "Time", "Domains", "MaxRadius", "Volume"}; }
@@ -133,7 +135,8 @@ class SharpFrontMethod final : public Method {
   Json results() const override {
     Json r = Json::object();
     r.set("domains", static_cast<double>(domains_.size())).set("largest_radius", largest_radius());
-    r.set("total_volume", total_volume()).set("law", front_law_name(c_.law.law));
+    r.set("total_volume" + std::string(units::model::per_missing_dimensions_column(c_.grid.dim)), total_volume());
+    r.set("law", front_law_name(c_.law.law));
     return r;
   }
   std::vector<std::string> resume_safe_keys() const override {
@@ -155,7 +158,8 @@ class SharpFrontMethod final : public Method {
     run_ = &run;
     const double keep_step = static_cast<double>(steps_), keep_time = time();
     series_ = io::CsvWriter(run.folder / "series.csv",
-                            {"step", "time", "volume_fraction", "overlap_fraction", "domains", "total_volume",
+                            {"step", "time", "volume_fraction", "overlap_fraction", "domains",
+                             "total_volume" + std::string(units::model::per_missing_dimensions_column(c_.grid.dim)),
                              "equivalent_radius", "mean_radius", "max_radius"},
                             resumed ? &keep_step : nullptr);
     // tracks.csv with the columns of analyze atoms --track, the step first (so that a resumed run
