@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """Checks the output conventions of docs/conventions.md on run folders.
 
-    conventions.py RUN_DIR [RUN_DIR ...]
+    conventions.py RUN_DIR [RUN_DIR ...] [--analysis ANALYSIS_DIR ...]
+
+The folders after --analysis are output folders of `shockfield analyze atoms` (no case file, LAMMPS
+metal units): their CSV tables (structures, clusters, profiles, tracks, growth, burgers, domains,
+voids) and .vtp surfaces are checked as an MD run's, as the method "analyze_atoms".
 
 Every .vti/.vtp file: each DataArray but a vertex cell's connectivity and offsets and VTK's
 blanking array vtkGhostType carries a units attribute, and an array named ux/uy/uz is not a
@@ -36,7 +40,7 @@ TIME_COLUMNS = {"time", "time_s", "time_ps", "Time"}
 # The unit system of each method (docs/conventions.md): SI, LAMMPS metal units or dimensionless
 # model units. A run of a method missing here is a violation.
 UNIT_SYSTEM = {"md": "metal", "mpm": "si", "pd": "si", "granular": "si", "macroparticle": "si",
-               "dbm": "model", "phasefield": "model"}
+               "dbm": "model", "phasefield": "model", "analyze_atoms": "metal"}
 # The time column of series-like CSVs per unit system. The thermo table keeps LAMMPS's "Time".
 TIME_NAME = {"si": "time_s", "metal": "time_ps", "model": "time"}
 # Unit suffixes per unit system, SI spelt with underscores for "/" and a trailing power
@@ -54,7 +58,14 @@ DIMENSIONLESS = {"step", "steps", "profile", "grain", "bin", "particles", "plast
                  "collapsibility", "plastic", "max_plastic", "damage", "mean_damage", "strain", "lateral_strain",
                  "end_strain", "widest_spread_strain",
                  "poisson_secant", "energy_error", "schmid_factor", "accumulated_slip", "mean_accumulated_slip",
-                 "axis_h", "axis_k", "axis_l", "final_axis_h", "final_axis_k", "final_axis_l"} | {
+                 "axis_h", "axis_k", "axis_l", "final_axis_h", "final_axis_k", "final_axis_l",
+                 # analyze atoms: growth time in timesteps (tracks.csv without --timestep-size), a
+                 # growth law's exponent and its points, indices and counts of domains, voids and
+                 # Burgers circuits, topology, b in a/6 on crystal axes, a circuit's unit axis, its
+                 # largest step error in nearest-neighbour distances and its 0/1 flag.
+                 "elapsed_timesteps", "exponent", "exponent_stderr", "points", "track", "domain", "void", "cells",
+                 "surface_atoms", "euler_characteristic", "manifold", "circuit", "b_h6", "b_k6", "b_l6",
+                 "axis_x", "axis_y", "axis_z", "max_step_error", "reliable"} | {
                  f"axis{k}_{d}" for k in (1, 2, 3) for d in "xyz"}
 # Files known to break the unit rule, with the reason; each entry must still break it. Empty: the
 # last ones (MD's clusters.csv and structures.csv, PD's summary.json) follow it since issue 15.
@@ -84,11 +95,16 @@ PER_MISSING = {1: "_per_m2", 2: "_per_m", 3: ""}
 
 
 def dim_of(run):
+    """The run's dimensions: [grid] dim (mpm, pd), dimensions (phasefield); 2 for dbm (its D2V16
+    lattice is 2D for every case); else 3."""
     resolved = run / "config.resolved.toml"
     if resolved.exists():
-        m = re.search(r"^dim = (\d)", resolved.read_text(), re.M)
+        text = resolved.read_text()
+        m = re.search(r"^(dim|dimensions) = (\d)", text, re.M)
         if m:
-            return int(m.group(1))
+            return int(m.group(2))
+        if re.search(r'^method = ["\x27]dbm["\x27]', text, re.M):
+            return 2
     return 3
 
 
@@ -102,6 +118,19 @@ def check_totals(path, header, dim, where="column"):
             yield f"{path}: {where} '{c}' has no unit suffix (_{', _'.join(TOTAL_UNITS)})"
         elif per and not c.endswith(per):
             yield f"{path}: {where} '{c}' is a total of a {dim}D run; name it '{c}{per}'"
+
+
+# The totals of the methods in model units (dbm, phasefield), and their label in 1D and 2D: no unit
+# to name, "_per_length" (2D) or "_per_area" (1D) alone (core/units.hpp, units::model).
+MODEL_TOTAL = re.compile(r"^(mass|momentum|energy|chemical_energy|total_energy|free_energy|hcp_volume|total_volume)")
+MODEL_PER_MISSING = {1: "_per_area", 2: "_per_length", 3: ""}
+
+
+def check_model_totals(path, names, dim, where="column"):
+    per = MODEL_PER_MISSING.get(dim, "")
+    for c in names:
+        if per and MODEL_TOTAL.match(c) and not c.endswith(per):
+            yield f"{path}: {where} '{c}' is a total of a {dim}D run (model units); name it '{c}{per}'"
 
 
 def method_of(run):
@@ -147,6 +176,22 @@ def csv_lines(path):
                 yield line.rstrip("\n").split(",")
 
 
+def is_number(cell):
+    try:
+        float(cell)
+        return True
+    except ValueError:
+        return False
+
+
+def text_columns(path, header):
+    """Columns holding text (a label, not a quantity: burgers.csv's source, b, kind): a cell that is
+    not empty and not a number. A long-format table's quantity column is read separately."""
+    rows = list(csv_lines(path))[1:]
+    return {c for k, c in enumerate(header)
+            if any(len(row) > k and row[k] and not is_number(row[k]) for row in rows)}
+
+
 def check_units(path, header, system):
     """The unit rule on a CSV's columns, or on each row's quantity in a long-format table."""
     if "quantity" in header:
@@ -154,7 +199,8 @@ def check_units(path, header, system):
         names = sorted({row[k] for row in list(csv_lines(path))[1:] if len(row) > k})
         where = "quantity"
     else:
-        names, where = header, "column"
+        text = text_columns(path, header)
+        names, where = [c for c in header if c not in text], "column"
     for c in names:
         problem = unit_problem(c, system)
         if problem:
@@ -175,8 +221,9 @@ def check_csv(path, method, dim=3):
         yield f"{path}: time column '{times[0]}'; a {method} run names it '{TIME_NAME[system]}'"
     if path.name == "series.csv" and method in ("mpm", "pd"):
         yield from check_totals(path, header, dim)
-    if system == "model":  # dimensionless model units: no unit to name, but velocities are v
+    if system == "model":  # dimensionless model units: no unit to name, but velocities are v and totals labelled
         yield from (f"{path}: {p}" for p in filter(None, (model_unit_velocity(c, method, "column") for c in header)))
+        yield from check_model_totals(path, header, dim)
         return
     yield from exempted(path, method, list(check_units(path, header, system)))
 
@@ -198,9 +245,12 @@ def check_summary(path, method, dim=3):
     names); for MPM and PD the totals' per-length or per-area labels in 1D and 2D, as their series."""
     import json
     system = UNIT_SYSTEM.get(method)
-    if system in (None, "model"):
+    if system is None:
         return
     keys = sorted(set(result_keys(json.loads(path.read_text()).get("results", {}))))
+    if system == "model":
+        yield from check_model_totals(path, keys, dim, "results key")
+        return
     problems = [f"{path}: results {p.replace('column', 'key', 1)}"
                 for p in filter(None, (unit_problem(k, system) for k in keys))]
     if method in ("mpm", "pd"):  # the per-area or per-length label of the totals that have a unit
@@ -263,8 +313,11 @@ def check_checkpoint(path, method):
 
 def main():
     problems = []
-    for run in map(pathlib.Path, sys.argv[1:]):
-        method = method_of(run)
+    args = sys.argv[1:]
+    analysis = set(args[args.index("--analysis") + 1:]) if "--analysis" in args else set()
+    folders = [a for a in args if a != "--analysis"]
+    for run in map(pathlib.Path, folders):
+        method = "analyze_atoms" if str(run) in analysis else method_of(run)
         if method not in UNIT_SYSTEM:
             problems.append(f"{run}: method {method!r} has no unit system in conventions.py (UNIT_SYSTEM); "
                             "give it one, so its outputs are checked")
@@ -281,7 +334,7 @@ def main():
         print(p)
     if problems:
         sys.exit(1)
-    print(f"ok: {len(sys.argv) - 1} run folders follow the output conventions")
+    print(f"ok: {len(folders)} run and analysis folders follow the output conventions")
 
 
 if __name__ == "__main__":

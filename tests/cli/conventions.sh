@@ -2,12 +2,16 @@
 # The output conventions (docs/conventions.md) hold for the run folder of every method's test case
 # (tests/cli/cases, plus MPM runs with a cavity and contact in 2D and 3D): units on every VTK array, one time
 # column per file named for the method's unit system, units in every CSV column name (SI and metal
-# units) and summary.json result key, velocities never named u, self-describing checkpoints (docs/checkpoints.md). The checker
+# units) and summary.json result key, velocities never named u, totals of 1D/2D runs labelled per length or area
+# (model units too), self-describing checkpoints (docs/checkpoints.md), and the same for the tables and surfaces
+# of `analyze atoms` (metal units). The checker
 # itself fails on a folder that breaks them (a second time column, a time column of another unit
 # system, an array without units, granular, PD and MPM columns without their units, PD summary keys
 # without their unit or per-area label, MD analysis tables without units, an MPM velocity and a DBM
-# (model-unit) velocity named u, a method without a unit system, a checkpoint dataset without units
-# or a case that is not the run's).
+# (model-unit) velocity named u, DBM and phase-field totals without their per-length label, analyze
+# atoms' tables under their old names (tracks.csv, growth.csv, profiles.csv) and a surface without
+# units, a method without a unit system, a checkpoint dataset without units or a case that is not
+# the run's).
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -66,13 +70,23 @@ for c in cavity_size_m3 momentum_z_kg_m_s bottom_h200um_vz_mean_m_s contact_forc
 done
 grep -q "^vz_m_s," "$WORK/mpm_3d/histograms/hist_0.csv" || fail "the 3D histogram lacks vz_m_s"
 runs+=("$WORK/mpm_3d")
-check "${runs[@]}" || fail "a run folder breaks the output conventions (above)"
+# The tables of `analyze atoms` (LAMMPS metal units, checked with --analysis) on the dumps of the MD
+# analysis case: structures, clusters, tracks and growth, profiles, Burgers circuits, domains and
+# voids with their surfaces (.vtp).
+"$SF" analyze atoms "$WORK/tiny_cu_analysis" --adaptive-cna --clusters 3.0 --cluster-select acna:other --track \
+  --timestep-size 0.002 --profile z:3.6 --excess-energy auto --voids 2.0 --domains 3.0 --burgers-clusters \
+  --burgers-lattice 3.615 --no-plot -o "$WORK/atoms" > /dev/null 2>&1
+for f in structures clusters tracks growth profiles burgers domains voids; do
+  [ "$(wc -l < "$WORK/atoms/$f.csv")" -ge 1 ] || fail "analyze atoms wrote no $f.csv"
+done
+[ "$(wc -l < "$WORK/atoms/growth.csv")" -gt 1 ] && ls "$WORK"/atoms/domains_*.vtp > /dev/null || fail "no growth laws or domain surfaces to check"
+check "${runs[@]}" --analysis "$WORK/atoms" || fail "a run or analysis folder breaks the output conventions (above)"
 
 # The checker on a deliberately broken folder: it must exit 1 and report each message given.
 expect_reported() {
   local folder=$1 what=$2 code=0 p
   shift 2
-  check "$folder" > "$folder.txt" || code=$?
+  check ${AS_ANALYSIS:+--analysis} "$folder" > "$folder.txt" || code=$?
   [ $code -eq 1 ] || fail "the checker passed $what (exit $code)"
   for p in "$@"; do
     grep -qF "$p" "$folder.txt" || fail "the checker did not report: $p ($(cat "$folder.txt"))"
@@ -151,6 +165,31 @@ expect_reported "$WORK/broken_mpm" "MPM columns without units" \
   "column 'bottom_h200um_pressure_mean' has no unit suffix" \
   "column 'bottom_h200um_uy_mean_m_s' names a velocity u" "DataArray 'uy' is a velocity" \
   "summary.json: results key 'pressure' has no unit suffix"
+# analyze atoms' tables under their names before issue 15 (tracks.csv: time, x, a, L, area; growth.csv's
+# quantity L; profiles.csv: lo, hi, centre) and a surface whose points have no unit.
+mkdir -p "$WORK/broken_atoms"
+sed '1s/.*/track,frame,timestep,time,cluster,size,x,y,z,a,b,c,L,area,volume,atomic_volume/' "$WORK/atoms/tracks.csv" \
+  > "$WORK/broken_atoms/tracks.csv"
+sed 's/,L_A,/,L,/' "$WORK/atoms/growth.csv" > "$WORK/broken_atoms/growth.csv"
+sed '1s/,lo_A,hi_A,centre_A,/,lo,hi,centre,/' "$WORK/atoms/profiles.csv" > "$WORK/broken_atoms/profiles.csv"
+sed 's/ units="A"//' "$(ls "$WORK"/atoms/domains_*.vtp | head -1)" > "$WORK/broken_atoms/domains_0.vtp"
+grep -q ",L," "$WORK/broken_atoms/growth.csv" || fail "growth.csv has no L_A row to break"
+AS_ANALYSIS=1 expect_reported "$WORK/broken_atoms" "analyze atoms tables without units" \
+  "tracks.csv: time column 'time'; a analyze_atoms run names it 'time_ps'" "tracks.csv: column 'x' has no unit suffix" \
+  "tracks.csv: column 'L' has no unit suffix" "tracks.csv: column 'area' has no unit suffix" \
+  "growth.csv: quantity 'L' has no unit suffix" "profiles.csv: column 'centre' has no unit suffix" \
+  "domains_0.vtp: DataArray 'points' has no units attribute"
+# Totals of the model-unit methods without their per-length label: DBM's lattice is 2D, the phase
+# field case is 2D.
+mkdir -p "$WORK/broken_dbm_totals" "$WORK/broken_phasefield"
+cp "$WORK/dbm_sod/config.resolved.toml" "$WORK/broken_dbm_totals/"
+sed 's/"mass_per_length"/"mass"/' "$WORK/dbm_sod/summary.json" > "$WORK/broken_dbm_totals/summary.json"
+cp "$WORK/phasefield_tiny/config.resolved.toml" "$WORK/broken_phasefield/"
+sed '1s/,free_energy_per_length,/,free_energy,/' "$WORK/phasefield_tiny/series.csv" > "$WORK/broken_phasefield/series.csv"
+expect_reported "$WORK/broken_dbm_totals" "a DBM total without its per-length label" \
+  "summary.json: results key 'mass' is a total of a 2D run (model units); name it 'mass_per_length'"
+expect_reported "$WORK/broken_phasefield" "a phase-field total without its per-length label" \
+  "series.csv: column 'free_energy' is a total of a 2D run (model units); name it 'free_energy_per_length'"
 # The next method: a run folder of a method the checker has no unit system for is itself a violation.
 mkdir -p "$WORK/broken_new_method"
 printf "method = 'newmethod'\n" > "$WORK/broken_new_method/config.resolved.toml"
