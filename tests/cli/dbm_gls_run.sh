@@ -36,7 +36,7 @@ printf '%s\n' "$gls" > "$WORK/gls.toml"
 for f in series.csv summary.csv grid.pvd fields/grid_000000010.vti checkpoint.h5; do
   [ -s "$WORK/gls/$f" ] || fail "run folder lacks $f"
 done
-head -1 "$WORK/gls/series.csv" | grep -q "step,time,D,D_force,D_gradient,L,R,density_variance,rho_min,rho_max,T_mean,v_max,mass,energy" \
+head -1 "$WORK/gls/series.csv" | grep -q "step,time,D,D_force,D_gradient,L,R,density_variance,rho_min,rho_max,T_mean,v_max,mass_per_length,energy_per_length" \
   || fail "series columns: $(head -1 "$WORK/gls/series.csv")"
 [ "$(wc -l < "$WORK/gls/series.csv")" -eq 6 ] || fail "series.csv should have a header and 5 rows"
 head -1 "$WORK/gls/summary.csv" | grep -q "t_SD,D_max" || fail "summary columns"

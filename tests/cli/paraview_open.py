@@ -97,8 +97,8 @@ def check(label, pvd, colour, out):
     default = str(display.Representation).strip("'")
     pictures = {}
     # ParaView 5.11 shows a 2D image with the Slice representation, which ignores vtkGhostType (the
-    # blanked MPM void nodes are painted in the NaN colour, yellow) and draws nothing of a one
-    # cell high strip of cell data (DBM's 1D lattice); Surface honours both (docs/conventions.md).
+    # blanked MPM void nodes are painted in the NaN colour, yellow) and draws nothing of cell data
+    # on a 2D image (every DBM frame, 1 or more rows); Surface honours both (docs/conventions.md).
     # Particles are drawn as points of 5 pixels (1 pixel by default, too small to check).
     chosen = "Points" if data.IsA("vtkPolyData") else "Surface"
     for representation in ([default] if default != chosen else []) + [chosen]:
