@@ -20,7 +20,7 @@ void add_void_options(CLI::App& cmd, VoidArgs& a) {
                  "OUTPUT/voids.png (volume and area against time)")
       ->check(CLI::PositiveNumber);
   cmd.add_option("--voids-atomic-volume", a.atomic_volume,
-                 "Volume per atom of the crystal (Å³) for the voids' missing_volume; default: (box volume − the voids' "
+                 "Volume per atom of the crystal (Å³) for the voids' missing_volume_A3; default: (box volume − the voids' "
                  "volumes) / atoms, right for a periodic box (give it for a sample with free surfaces)")
       ->check(CLI::PositiveNumber);
   cmd.add_option("--voids-margin", a.margin,
