@@ -15,6 +15,22 @@ grep -q "^total_volume 1$" "$WORK/cube/summary.txt" || fail "cube volume: $(cat 
 grep -q "^check passed$" "$WORK/cube/summary.txt" || fail "no check line"
 grep -q "^simplices 12$" "$WORK/cube/summary.txt" || fail "cube + centre is 12 tetrahedra: $(cat "$WORK/cube/summary.txt")"
 grep -q 'NumberOfCells="12"' "$WORK/cube/delaunay.vtu" || fail "vtu cell count"
+# The .vtu (zlib binary through io/vtk_xml) as VTK reads it: 9 points, 12 tetrahedra whose
+# "volume" cell data sums to the cube's 1 (to Float64 round-off).
+/usr/bin/python3 - "$WORK/cube/delaunay.vtu" <<'PY' || fail "delaunay.vtu as VTK reads it"
+import sys
+try:
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+except ImportError:
+    print("python3-vtk9 missing: VTK read of delaunay.vtu skipped"); sys.exit(0)
+r = vtk.vtkXMLUnstructuredGridReader(); r.SetFileName(sys.argv[1]); r.Update()
+g = r.GetOutput()
+assert g.GetNumberOfPoints() == 9 and g.GetNumberOfCells() == 12, (g.GetNumberOfPoints(), g.GetNumberOfCells())
+assert all(g.GetCellType(c) == vtk.VTK_TETRA for c in range(12))
+v = vtk_to_numpy(g.GetCellData().GetArray("volume"))
+assert abs(v.sum() - 1.0) < 1e-14 and (v > 0).all(), v
+PY
 echo "ok: cube"
 "$SF" analyze geometry "$WORK/cube.csv" -r 5 --no-mesh -o "$WORK/ball" > /dev/null
 for want in "surface_triangles 12" "surface_area 6" "surface_volume 1" "surface_euler_characteristic 2" "surface_manifold yes"; do

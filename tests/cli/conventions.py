@@ -159,7 +159,7 @@ def check_vtk(path, method):
     for tag in re.findall(r"<DataArray[^>]*>", text):
         name = re.search(r'Name="([^"]+)"', tag)
         name = name.group(1) if name else "?"
-        if name not in ("connectivity", "offsets", "vtkGhostType") and "units=" not in tag:
+        if name not in ("connectivity", "offsets", "types", "vtkGhostType") and "units=" not in tag:
             yield f"{path}: DataArray '{name}' has no units attribute"
         if re.fullmatch(r"u[xyz]", name) and re.search(r'units="[^"]*/s"', tag):
             yield f"{path}: DataArray '{name}' is a velocity; u is a displacement, name a velocity v (vx, vy, vz)"
@@ -322,7 +322,7 @@ def main():
             problems.append(f"{run}: method {method!r} has no unit system in conventions.py (UNIT_SYSTEM); "
                             "give it one, so its outputs are checked")
         for path in sorted(run.rglob("*")):
-            if path.suffix in (".vti", ".vtp"):
+            if path.suffix in (".vti", ".vtp", ".vtu"):
                 problems += check_vtk(path, method)
             elif path.suffix == ".csv":
                 problems += check_csv(path, method, dim_of(run))

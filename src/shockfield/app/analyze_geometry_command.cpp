@@ -68,7 +68,7 @@ void run_geometry(const GeometryArgs& a) {
   sg::PointArrays arrays;
   for (const auto& [name, c] : clusterings)
     arrays.emplace_back(name, std::vector<double>(c.label.begin(), c.label.end()));
-  if (!a.no_mesh) sg::write_delaunay_vtu<N>(out / "delaunay.vtu", division, arrays);
+  if (!a.no_mesh) sg::write_delaunay_vtu<N>(out / "delaunay.vtu", division, arrays, "1");  // the input's unit
   std::vector<std::pair<std::string, const sg::PointClusters*>> refs;
   for (const auto& [name, c] : clusterings) refs.emplace_back(name, &c);
   if (!clusterings.empty()) sg::write_clusters_csv<N>(out / "clusters.csv", division, refs);

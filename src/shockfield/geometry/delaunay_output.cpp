@@ -4,44 +4,38 @@
 #include <fmt/format.h>
 
 #include "shockfield/io/checked_file.hpp"
+#include "shockfield/io/vtk_xml.hpp"
 
 namespace shockfield::geometry {
 
+namespace {
+
+// Analysis meshes are written as the runs' fields are: zlib-compressed binary, Float64 positions.
+const io::VtkFormat kMeshFormat(io::VtkEncoding::Zlib, io::VtkPrecision::Float64);
+
+// The unit of a measure of `dimension` lengths of `length_unit` ("A" -> "A3"; "1" stays "1").
+std::string power_unit(const std::string& length_unit, int dimension) {
+  return length_unit == "1" ? length_unit : length_unit + std::to_string(dimension);
+}
+
+}  // namespace
+
 template <int N>
-void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivision<N>& d,
-                        const PointArrays& point_data) {
-  io::CheckedOutput out(file);  // a failed write stops with RunError naming the file
-  const std::size_t np = d.points.size(), nc = d.simplices.size();
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
-         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n";
-  out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", np, nc);
-  out << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-         "format=\"ascii\">\n";
-  for (const auto& p : d.points)
-    out << fmt::format("{} {} {}\n", p[0], p[1], N == 3 ? p[N - 1] : 0.0);
-  out << "        </DataArray>\n      </Points>\n      <Cells>\n";
-  out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& s : d.simplices) {
-    for (int i = 0; i <= N; ++i) out << s[i] << (i < N ? ' ' : '\n');
-  }
-  out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
-         "format=\"ascii\">\n";
-  for (std::size_t c = 0; c < nc; ++c) out << (c + 1) * (N + 1) << '\n';
-  out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
-         "format=\"ascii\">\n";
-  const int vtk_type = N == 2 ? 5 : 10;  // VTK_TRIANGLE, VTK_TETRA
-  for (std::size_t c = 0; c < nc; ++c) out << vtk_type << '\n';
-  out << "        </DataArray>\n      </Cells>\n      <CellData Scalars=\"volume\">\n";
-  out << "        <DataArray type=\"Float64\" Name=\"volume\" format=\"ascii\">\n";
-  for (std::size_t c = 0; c < nc; ++c) out << fmt::format("{:.12g}\n", simplex_volume<N>(d, c));
-  out << "        </DataArray>\n      </CellData>\n      <PointData>\n";
-  for (const auto& [name, values] : point_data) {
-    out << fmt::format("        <DataArray type=\"Float64\" Name=\"{}\" format=\"ascii\">\n", name);
-    for (double v : values) out << fmt::format("{:.12g}\n", v);
-    out << "        </DataArray>\n";
-  }
-  out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-  out.close();
+void write_delaunay_vtu(const std::filesystem::path& file, const DelaunayDivision<N>& d, const PointArrays& point_data,
+                        const std::string& length_unit) {
+  io::VtkCells mesh;
+  mesh.position_units = length_unit;
+  mesh.vertices_per_cell = N + 1;
+  mesh.xyz.reserve(3 * d.points.size());
+  for (const auto& p : d.points) mesh.xyz.insert(mesh.xyz.end(), {p[0], p[1], N == 3 ? p[N - 1] : 0.0});
+  mesh.connectivity.reserve(d.simplices.size() * (N + 1));
+  for (const auto& s : d.simplices)
+    for (int i = 0; i <= N; ++i) mesh.connectivity.push_back(s[i]);
+  io::VtkArray volume{"volume", 1, {}, power_unit(length_unit, N)};
+  for (std::size_t c = 0; c < d.simplices.size(); ++c) volume.values.push_back(simplex_volume<N>(d, c));
+  mesh.cell_data.push_back(std::move(volume));
+  for (const auto& [name, values] : point_data) mesh.point_data.push_back({name, 1, values, "1", true});
+  io::write_vtu(file, mesh, kMeshFormat);
 }
 
 SurfaceMesh surface_mesh(std::size_t point_count, const std::vector<std::array<std::int32_t, 3>>& triangles) {
@@ -66,24 +60,12 @@ SurfaceMesh surface_mesh(std::size_t point_count, const std::vector<std::array<s
 void write_surface_vtp(const std::filesystem::path& file,
                        const std::vector<std::array<double, 3>>& points,
                        const std::vector<std::array<std::int32_t, 3>>& triangles, const std::string& length_unit) {
-  const SurfaceMesh mesh = surface_mesh(points.size(), triangles);
-  io::CheckedOutput out(file);  // a failed write stops with RunError naming the file
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
-         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <PolyData>\n";
-  out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfPolys=\"{}\">\n", mesh.used.size(),
-                     triangles.size());
-  out << fmt::format("      <Points>\n        <DataArray type=\"Float64\" Name=\"points\" NumberOfComponents=\"3\" "
-                     "format=\"ascii\" units=\"{}\">\n", length_unit);
-  for (std::int32_t v : mesh.used)
-    out << fmt::format("{} {} {}\n", points[v][0], points[v][1], points[v][2]);
-  out << "        </DataArray>\n      </Points>\n      <Polys>\n";
-  out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& t : mesh.triangles) out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
-         "format=\"ascii\">\n";
-  for (std::size_t c = 0; c < triangles.size(); ++c) out << 3 * (c + 1) << '\n';
-  out << "        </DataArray>\n      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  out.close();
+  const SurfaceMesh surface = surface_mesh(points.size(), triangles);
+  io::VtkCells mesh;
+  mesh.position_units = length_unit;
+  for (std::int32_t v : surface.used) mesh.xyz.insert(mesh.xyz.end(), points[v].begin(), points[v].end());
+  for (const auto& t : surface.triangles) mesh.connectivity.insert(mesh.connectivity.end(), t.begin(), t.end());
+  io::write_vtp_polygons(file, mesh, kMeshFormat);
 }
 
 template <int N>
@@ -102,10 +84,10 @@ void write_clusters_csv(const std::filesystem::path& file, const DelaunayDivisio
   out.close();
 }
 
-template void write_delaunay_vtu<2>(const std::filesystem::path&, const DelaunayDivision<2>&,
-                                    const PointArrays&);
-template void write_delaunay_vtu<3>(const std::filesystem::path&, const DelaunayDivision<3>&,
-                                    const PointArrays&);
+template void write_delaunay_vtu<2>(const std::filesystem::path&, const DelaunayDivision<2>&, const PointArrays&,
+                                    const std::string&);
+template void write_delaunay_vtu<3>(const std::filesystem::path&, const DelaunayDivision<3>&, const PointArrays&,
+                                    const std::string&);
 template void write_clusters_csv<2>(const std::filesystem::path&, const DelaunayDivision<2>&,
                                     const std::vector<std::pair<std::string, const PointClusters*>>&);
 template void write_clusters_csv<3>(const std::filesystem::path&, const DelaunayDivision<3>&,

@@ -199,6 +199,67 @@ void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz
   arrays.write(file);
 }
 
+namespace {
+
+// Checks the cell list and array lengths of a mesh, then writes its <Points>, its cells as
+// `section` (Polys or Cells: connectivity and offsets, plus the VTK cell types in a Cells section)
+// and its point and cell data.
+void mesh_piece(std::ostringstream& out, ArrayWriter& arrays, const std::filesystem::path& file, const VtkCells& mesh,
+                const char* section) {
+  const std::size_t points = mesh.xyz.size() / 3, per_cell = static_cast<std::size_t>(mesh.vertices_per_cell);
+  const std::size_t cells = mesh.connectivity.size() / per_cell;
+  if (mesh.xyz.size() % 3 != 0 || mesh.connectivity.size() % per_cell != 0 || (per_cell != 3 && per_cell != 4))
+    throw RunError(fmt::format("{}: {} coordinates and {} cell vertices for cells of {}", file.string(),
+                               mesh.xyz.size(), mesh.connectivity.size(), per_cell));
+  for (const auto& [data, count, what] : {std::tuple{&mesh.point_data, points, "points"},
+                                          std::tuple{&mesh.cell_data, cells, "cells"}})
+    for (const VtkArray& a : *data)
+      if (a.values.size() != count * static_cast<std::size_t>(a.components))
+        throw RunError(fmt::format("{}: array '{}' has {} values for {} {}", file.string(), a.name, a.values.size(),
+                                   count, what));
+  out << "      <PointData>\n";
+  for (const VtkArray& a : mesh.point_data) arrays.data(a);
+  out << "      </PointData>\n      <CellData>\n";
+  for (const VtkArray& a : mesh.cell_data) arrays.data(a);
+  out << "      </CellData>\n      <Points>\n";
+  arrays.reals("points", 3, mesh.xyz, mesh.position_units);
+  out << "      </Points>\n" << fmt::format("      <{}>\n", section);
+  arrays.array("Int64", "connectivity", 1, mesh.connectivity);
+  std::vector<std::int64_t> offsets(cells);
+  for (std::size_t c = 0; c < cells; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * per_cell);
+  arrays.array("Int64", "offsets", 1, offsets);
+  if (std::string(section) == "Cells") {
+    constexpr std::uint8_t kTriangle = 5, kTetrahedron = 10;  // VTK_TRIANGLE, VTK_TETRA
+    arrays.array("UInt8", "types", 1, std::vector<std::uint8_t>(cells, per_cell == 3 ? kTriangle : kTetrahedron));
+  }
+  out << fmt::format("      </{}>\n    </Piece>\n", section);
+}
+
+}  // namespace
+
+void write_vtp_polygons(const std::filesystem::path& file, const VtkCells& mesh, VtkFormat format) {
+  std::ostringstream out;
+  ArrayWriter arrays(out, format);
+  out << "<?xml version=\"1.0\"?>\n" << arrays.file_tag("PolyData") << "  <PolyData>\n"
+      << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
+                     "NumberOfPolys=\"{}\">\n", mesh.xyz.size() / 3,
+                     mesh.connectivity.size() / static_cast<std::size_t>(std::max(mesh.vertices_per_cell, 1)));
+  mesh_piece(out, arrays, file, mesh, "Polys");
+  out << "  </PolyData>\n";
+  arrays.write(file);
+}
+
+void write_vtu(const std::filesystem::path& file, const VtkCells& mesh, VtkFormat format) {
+  std::ostringstream out;
+  ArrayWriter arrays(out, format);
+  out << "<?xml version=\"1.0\"?>\n" << arrays.file_tag("UnstructuredGrid") << "  <UnstructuredGrid>\n"
+      << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", mesh.xyz.size() / 3,
+                     mesh.connectivity.size() / static_cast<std::size_t>(std::max(mesh.vertices_per_cell, 1)));
+  mesh_piece(out, arrays, file, mesh, "Cells");
+  out << "  </UnstructuredGrid>\n";
+  arrays.write(file);
+}
+
 PvdSeries::PvdSeries(std::filesystem::path file, const double* keep_until) : file_(std::move(file)) {
   if (keep_until && std::filesystem::exists(file_)) {
     std::ifstream in(file_);

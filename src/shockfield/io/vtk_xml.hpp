@@ -1,6 +1,7 @@
 #pragma once
 // VTK XML writers for ParaView (https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html):
-// ImageData (.vti) for fields on a regular grid, PolyData (.vtp) for particles, and the .pvd
+// ImageData (.vti) for fields on a regular grid, PolyData (.vtp) for particles and surfaces,
+// UnstructuredGrid (.vtu) for Delaunay divisions, and the .pvd
 // collection that indexes a time series of either. Encodings: ASCII text; base64 "binary" (a
 // UInt64 byte count, then the raw little-endian values, each base64-encoded on its own as VTK's
 // writer does); appended raw binary; and appended raw binary compressed with zlib in VTK's block
@@ -9,6 +10,7 @@
 // know, so ParaView opens the files as usual). Every encoding reads back through
 // analysis/field_reader. NaN marks a grid point without material (analyze reads it as a void cell).
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -89,6 +91,20 @@ void write_vti_piece(const std::filesystem::path& file, const VtkImage& image, V
 /// representation shows them.
 void write_vtp(const std::filesystem::path& file, const std::vector<double>& xyz, const std::vector<VtkArray>& point_data,
                VtkFormat format, const std::string& position_units = "m");
+
+/// Points joined into cells of one kind: triangles of a surface (PolyData polygons) or the
+/// triangles/tetrahedra of a Delaunay division (UnstructuredGrid cells).
+struct VtkCells {
+  std::vector<double> xyz;                    ///< x, y, z interleaved
+  std::string position_units;                 ///< the coordinates' unit ("A", "m", "1")
+  int vertices_per_cell = 3;                  ///< 3 (triangle) or 4 (tetrahedron)
+  std::vector<std::int64_t> connectivity;     ///< vertices_per_cell point indices per cell
+  std::vector<VtkArray> point_data{}, cell_data{};
+};
+/// A triangle surface as PolyData (.vtp) with polygons.
+void write_vtp_polygons(const std::filesystem::path& file, const VtkCells& mesh, VtkFormat format);
+/// Triangles or tetrahedra as an UnstructuredGrid (.vtu).
+void write_vtu(const std::filesystem::path& file, const VtkCells& mesh, VtkFormat format);
 
 /// RFC 4648 base64 of `size` bytes.
 std::string base64(const unsigned char* data, std::size_t size);
