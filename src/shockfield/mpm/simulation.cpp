@@ -91,7 +91,8 @@ void Simulation::step(double max_dt) {
 
   allocate_grid();
   transfer_.build(grid_, particles_, options_.shape);
-  transfer_.to_grid(grid_, particles_);
+  if (options_.smooth_dilatation) smoothed_mean_stress_correction();
+  transfer_.to_grid(grid_, particles_, mean_stress_correction_);
   if (options_.heat_conduction) heat_.step(transfer_, grid_.size(), particles_, materials_, dt_);
   update_grid();
   run_hooks(Stage::AfterGridUpdate);
@@ -245,35 +246,71 @@ void Simulation::xpic_velocities() {
 
 void Simulation::smooth_dilatation() {
   // The volumetric part of L_p replaced by its mass-weighted average over the nodes of the point's
-  // stencil, tr L̄_p = Σ_i N_ip (Σ_q m_q N_iq tr L_q)/m_i (the "F-bar" idea of locking-free finite
-  // elements, here as the volume-change rate of the grid rather than of the point): two rows of
-  // points in one cell then compress alike. Without it a shock front only a few cells wide
-  // compresses the rows of a cell differently, leaves an odd-even density and pressure pattern
-  // the grid does not see at rest (a null space of f_i = −Σ_p V_p σ_p·∇N_ip) but that forces the
-  // nodes as it crosses cells, and the ringing it drives relaxes the deviator behind the shock
-  // (docs/theory/mpm.md, "Deviatoric stress behind shocks"). The in-plane diagonal absorbs the
-  // change (plane strain keeps L_zz = 0).
+  // stencil (B-bar, Hughes 1980; in MPM Coombs et al. 2018): with M_n the nodal masses, N the
+  // shape functions and M_p the point masses,
+  //   tr L̄ = N M_n⁻¹ Nᵀ M_p tr L,   tr L̄_p = Σ_j v_j·B̄_jp,   B̄_jp = Σ_i N_ip Σ_q m_q N_iq ∇N_jq / m_i,
+  // so two rows of points in one cell compress alike. Without it a shock front only a few cells
+  // wide compresses the rows of a cell differently, leaves an odd-even density and pressure
+  // pattern the grid does not see at rest (a null space of f_i = −Σ_p V_p σ_p·∇N_ip) but that
+  // forces the nodes as it crosses cells, and the ringing it drives relaxes the deviator behind
+  // the shock (docs/theory/mpm.md, "Deviatoric stress behind shocks"). The in-plane diagonal
+  // absorbs the change (plane strain keeps L_zz = 0). The grid force uses the same B̄
+  // (smoothed_mean_stress_correction), so the two are work-conjugate.
   const int dim = grid_.dim();
   point_values_.resize(particles_.size());
-  node_scratch_.resize(grid_.field_size());
   const auto n = static_cast<std::ptrdiff_t>(particles_.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     const auto p = static_cast<std::size_t>(q);
-    point_values_[p] = Vec3(particles_.velocity_gradient[p].trace(), 0.0, 0.0);
+    point_values_[p] = Vec3(particles_.velocity_gradient[p].trace(), 1.0, 0.0);
   }
-  transfer_.mass_weighted_to_grid(particles_, point_values_, node_scratch_);
-  const auto nn = static_cast<std::ptrdiff_t>(grid_.field_size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t q = 0; q < nn; ++q) {
-    const auto i = static_cast<std::size_t>(q);
-    node_scratch_[i] = grid_.mass[i] > mass_floor_ ? Vec3(node_scratch_[i] / grid_.mass[i]) : Vec3::Zero();
-  }
+  smooth_point_values();
   transfer_.interpolate(node_scratch_, node_scratch_, [&](std::size_t p, const Vec3& smoothed, const Vec3&) {
     Mat3& l = particles_.velocity_gradient[p];
     const double shift = (smoothed[0] - l.trace()) / dim;
     for (int a = 0; a < dim; ++a) l(a, a) += shift;
   });
+}
+
+void Simulation::smoothed_mean_stress_correction() {
+  // The B-bar internal force: the stress power of the smoothed update is
+  //   Σ_p V_p σ_p : L̄_p = Σ_p V_p [σ'_p : L_p + π_p tr L̄_p],
+  // with π_p the in-plane mean stress (tr σ over the d in-plane axes, / d) and σ' = σ − π I_d. The
+  // grid force conjugate to it, P = −Σ_j f_j·v_j, is f_j = −Σ_p V_p (σ'_p ∇N_jp + π_p B̄_jp), and by
+  // the symmetry of N M_n⁻¹ Nᵀ (smooth_dilatation) Σ_p V_p π_p B̄_jp = Σ_p m_p π̃_p ∇N_jp with
+  //   π̃_p = Σ_i N_ip (Σ_q N_iq V_q π_q) / m_i,
+  // i.e. f_j = −Σ_p (V_p σ_p + c_p I_d)·∇N_jp,  c_p = m_p π̃_p − V_p π_p  (docs/theory/mpm.md, "B-bar").
+  const int dim = grid_.dim();
+  point_values_.resize(particles_.size());
+  mean_stress_correction_.resize(particles_.size());
+  const auto n = static_cast<std::ptrdiff_t>(particles_.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < n; ++q) {
+    const auto p = static_cast<std::size_t>(q);
+    const Mat3 sigma = particles_.state[p].stress();
+    double mean = 0.0;
+    for (int a = 0; a < dim; ++a) mean += sigma(a, a);
+    mean_stress_correction_[p] = -particles_.volume(p) * mean / dim;  // −V_p π_p, π̃ added below
+    point_values_[p] = Vec3(-mean_stress_correction_[p] / particles_.mass[p], 1.0, 0.0);  // V_p π_p / m_p
+  }
+  smooth_point_values();
+  transfer_.interpolate(node_scratch_, node_scratch_, [&](std::size_t p, const Vec3& smoothed, const Vec3&) {
+    mean_stress_correction_[p] += particles_.mass[p] * smoothed[0];
+  });
+}
+
+void Simulation::smooth_point_values() {
+  // node_scratch_[i].x = Σ_q m_q N_iq u_q / m_i for u_q = point_values_[q].x, with m_i = Σ_q m_q N_iq
+  // formed by the same sum (point_values_[q].y = 1) so that it does not need the grid's fields;
+  // zero on nodes without mass (the mass floor of the nodal velocities).
+  node_scratch_.resize(grid_.field_size());
+  transfer_.mass_weighted_to_grid(particles_, point_values_, node_scratch_);
+  const auto nn = static_cast<std::ptrdiff_t>(grid_.field_size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t q = 0; q < nn; ++q) {
+    Vec3& node = node_scratch_[static_cast<std::size_t>(q)];
+    node = node[1] > mass_floor_ ? Vec3(node[0] / node[1], 0.0, 0.0) : Vec3::Zero();
+  }
 }
 
 void Simulation::update_materials() {

@@ -42,7 +42,8 @@ struct SimulationOptions {
   /// XPIC(m) velocity update (Hammerquist & Nairn 2017) instead of the FLIP/PIC blend: 0 off, m >= 1
   /// (1 is PIC; larger m keeps more of what the grid resolves and drops the null-space noise).
   int xpic_order = 0;
-  /// Replace tr L_p by its mass-weighted nodal average over the point's stencil (simulation.cpp).
+  /// Replace tr L_p by its mass-weighted nodal average over the point's stencil, and the grid force
+  /// by the work-conjugate B-bar force (simulation.cpp).
   bool smooth_dilatation = false;
   /// The first step is PIC (flip 0): the initial velocities are projected onto the grid's field
   /// (simulation.cpp, grid_to_particles). Off only to study what it removes.
@@ -109,8 +110,13 @@ class Simulation {
   void update_materials();
   /// The material update of point p with its L_p (records the first failure in failed/why).
   void update_material(std::size_t p, double length, bool plane_strain, std::size_t& failed, std::string& why);
-  /// tr L_p ← its mass-weighted nodal average (options.smooth_dilatation).
+  /// tr L_p ← its mass-weighted nodal average (options.smooth_dilatation, B-bar).
   void smooth_dilatation();
+  /// The B-bar force's per-point term c_p = m_p π̃_p − V_p π_p added to V_p σ_p in step 2, so the
+  /// grid force is work-conjugate to the smoothed L_p (options.smooth_dilatation).
+  void smoothed_mean_stress_correction();
+  /// node_scratch_.x ← the mass-weighted nodal average of point_values_.x (point_values_.y = 1).
+  void smooth_point_values();
   /// Record c_p + |v_p| for the next stable step.
   void track_fastest(std::size_t p);
   void wrap_particles();
@@ -129,6 +135,7 @@ class Simulation {
   std::vector<Vec3> xpic_velocity_, xpic_increment_;  // XPIC(m): v*, its last term
   std::vector<Vec3> node_scratch_;  // a nodal sum on its way (XPIC's S⁺S of the term, the smoothed tr L)
   std::vector<Vec3> point_values_;  // a value per particle on its way to the grid
+  std::vector<double> mean_stress_correction_;  // B-bar force term c_p (empty: option off)
   struct alignas(64) PerThread {  // one cache line per OpenMP thread
     double fastest;    ///< max_p c_p + |v_p| [m/s]
     std::size_t lost;  ///< smallest index of a point that left the grid (size() if none)

@@ -98,7 +98,7 @@ void Transfer::build(const Grid& grid, const Particles& p, ShapeKind shape) {
   }
 }
 
-void Transfer::to_grid(Grid& grid, const Particles& p) const {
+void Transfer::to_grid(Grid& grid, const Particles& p, const std::vector<double>& mean_stress_correction) const {
   const auto nn = static_cast<std::ptrdiff_t>(grid.field_size());
   const bool gradient = !grid.mass_gradient.empty();
 #pragma omp parallel for schedule(static)
@@ -110,8 +110,8 @@ void Transfer::to_grid(Grid& grid, const Particles& p) const {
     if (gradient) grid.mass_gradient[u].setZero();
   }
   dispatch([&](auto kernel) {
-    scatter<decltype(kernel.first)::value, decltype(kernel.second)::value, true>(grid, p,
-                                                                                 [](std::size_t, const auto&, const auto&) {});
+    scatter<decltype(kernel.first)::value, decltype(kernel.second)::value, true>(
+        grid, p, [](std::size_t, const auto&, const auto&) {}, mean_stress_correction);
   });
 }
 

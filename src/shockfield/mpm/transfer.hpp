@@ -59,7 +59,9 @@ class Transfer {
   void build(const Grid& grid, const Particles& p, ShapeKind shape);
   /// Nodal mass, momentum and internal force from the particles (eq. 12), each point into its
   /// body's layer, and with several layers the mass gradient Σ_p m_p ∇N_ip; overwrites them.
-  void to_grid(Grid& grid, const Particles& p) const;
+  /// A non-empty `mean_stress_correction` adds c_p·I (in-plane in 2D) to V_p σ_p in the force: the
+  /// B-bar force of the smoothed dilatation (simulation.cpp, smoothed_mean_stress_correction).
+  void to_grid(Grid& grid, const Particles& p, const std::vector<double>& mean_stress_correction = {}) const;
 
   /// For each particle p (in parallel): f(p, Σ_i N_i a_i, Σ_i N_i b_i) for nodal vectors a, b.
   template <class F>
@@ -108,7 +110,7 @@ class Transfer {
   /// `before(q, stencil, nodes)` runs first; then w m_p v_p (and with Force, w m_p and −V_p σ_p·∇N)
   /// is added to each node of its stencil.
   template <int Dim, int S, bool Force, class Before>
-  void scatter(Grid& grid, const Particles& p, Before&& before) const;
+  void scatter(Grid& grid, const Particles& p, Before&& before, const std::vector<double>& correction = {}) const;
   /// The slab passes alone: body(first, last) for each slab, whose particles are
   /// binned_[first..last) in bin order.
   template <class Body>
@@ -247,9 +249,10 @@ void Transfer::slab_passes(Body&& body) const {
 }
 
 template <int Dim, int S, bool Force, class Before>
-void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
+void Transfer::scatter(Grid& grid, const Particles& p, Before&& before, const std::vector<double>& correction) const {
   const auto& all = stencils<Dim>();
   const bool gradient = Force && !grid.mass_gradient.empty();  // contact normals (contact.hpp)
+  const bool corrected = Force && !correction.empty();
   slab_passes([&](std::size_t first, std::size_t last) {
     for (std::size_t e = first; e < last; ++e) {
       const std::size_t q = binned_[e];
@@ -259,7 +262,11 @@ void Transfer::scatter(Grid& grid, const Particles& p, Before&& before) const {
       const double m = p.mass[q];
       const Vec3 mv = m * p.v[q];
       Mat3 vs;  // V_p σ_p
-      if constexpr (Force) vs = p.volume(q) * p.state[q].stress();
+      if constexpr (Force) {
+        vs = p.volume(q) * p.state[q].stress();
+        if (corrected)
+          for (int r = 0; r < Dim; ++r) vs(r, r) += correction[q];
+      }
       each_node<Dim, S>(s, node, [&](std::size_t i, double w, const std::array<double, 3>& g) {
         Vec3& gm = grid.momentum[i];
         for (int r = 0; r < Dim; ++r) gm[r] += w * mv[r];

@@ -134,7 +134,8 @@ TEST(AluminiumImpact, TemperatureExcessIsTheShockOvershoot) {
 // unity, round-off). Momentum: internal forces sum to zero (Σ_i ∇N_i = 0), so the total stays at
 // its initial zero to round-off (1e-9 of M·v). Energy: kinetic + internal within 1% of the initial
 // kinetic energy (FLIP-MUSL is not exactly conservative; the measured drift is reported: −0.33 %,
-// and −0.72 % with XPIC(2) and the smoothed dilatation, which take the energy of the modes they filter).
+// and −0.60 % with XPIC(2) and the smoothed dilatation (−0.72 % before the smoothing had its B-bar
+// force): XPIC takes the energy of the modes it filters).
 TEST(AluminiumImpact, ConservesMassMomentumEnergy) {
   const auto al = materials::aluminium_seed000();
   for (const bool filtered : {false, true}) {  // also with XPIC(2) and the smoothed dilatation
