@@ -67,27 +67,35 @@ int queries(std::size_t n, std::size_t q) {
                                                   3, std::uint32_t>;
   Kd kd(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   const double kd_build = seconds_since(t0);
+  // The four query loops run on 20 slices of the queries in turn (SHT, nanoflann, SHT, ...),
+  // so that a change of the machine's load mid-run hits both alike.
   std::vector<double> sht_nn(q), kd_nn(q);
-  t0 = Clock::now();
-  for (std::size_t i = 0; i < q; ++i) sht_nn[i] = sg::nearest<3>(tree, qs[i]).distance;
-  const double sht_nearest = seconds_since(t0);
-  t0 = Clock::now();
-  for (std::size_t i = 0; i < q; ++i) {
-    std::uint32_t idx;
-    double d2;
-    kd.knnSearch(qs[i].data(), 1, &idx, &d2);
-    kd_nn[i] = std::sqrt(d2);
-  }
-  const double kd_nearest = seconds_since(t0);
   std::size_t sht_found = 0, kd_found = 0;
-  t0 = Clock::now();
-  for (std::size_t i = 0; i < q; ++i) sht_found += sg::within_radius<3>(tree, qs[i], r).size();
-  const double sht_radius = seconds_since(t0);
-  t0 = Clock::now();
+  double sht_nearest = 0, kd_nearest = 0, sht_radius = 0, kd_radius = 0;
   std::vector<std::pair<std::uint32_t, double>> found;  // nanoflann 1.4 (Debian 12)
-  for (std::size_t i = 0; i < q; ++i)
-    kd_found += kd.radiusSearch(qs[i].data(), r * r, found, nanoflann::SearchParams(32, 0.0f, false));
-  const double kd_radius = seconds_since(t0);
+  constexpr std::size_t kSlices = 20;
+  for (std::size_t slice = 0; slice < kSlices; ++slice) {
+    const std::size_t from = q * slice / kSlices, to = q * (slice + 1) / kSlices;
+    t0 = Clock::now();
+    for (std::size_t i = from; i < to; ++i) sht_nn[i] = sg::nearest<3>(tree, qs[i]).distance;
+    sht_nearest += seconds_since(t0);
+    t0 = Clock::now();
+    for (std::size_t i = from; i < to; ++i) {
+      std::uint32_t idx;
+      double d2;
+      kd.knnSearch(qs[i].data(), 1, &idx, &d2);
+      kd_nn[i] = std::sqrt(d2);
+    }
+    kd_nearest += seconds_since(t0);
+    t0 = Clock::now();
+    for (std::size_t i = from; i < to; ++i) sht_found += sg::within_radius<3>(tree, qs[i], r).size();
+    sht_radius += seconds_since(t0);
+    t0 = Clock::now();
+    for (std::size_t i = from; i < to; ++i)
+      kd_found +=
+          kd.radiusSearch(qs[i].data(), r * r, found, nanoflann::SearchParams(32, 0.0f, false));
+    kd_radius += seconds_since(t0);
+  }
   std::size_t mismatches = 0;
   for (std::size_t i = 0; i < q; ++i) mismatches += sht_nn[i] != kd_nn[i];
   std::printf("points %zu queries %zu radius %.5g\n", n, q, r);
