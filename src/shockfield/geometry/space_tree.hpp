@@ -52,12 +52,24 @@ double distance2_to_box(const std::array<double, N>& q, const std::array<double,
   return d2;
 }
 
-/// An object as the tree holds it: its id (adaptor index) and its box when it was inserted.
-template <int N>
+/// An object as the tree holds it: its id (adaptor index) and its box when it was inserted;
+/// for an adaptor of points (kPoint) the box is one point, stored once (32 bytes a point in 3D
+/// instead of 56, so a cube's points take half the cache lines).
+template <int N, bool kPoint>
 struct TreeObject {
   std::uint32_t id;
-  std::array<double, N> lo, hi;
-  double distance2_to(const std::array<double, N>& q) const { return distance2_to_box<N>(q, lo, hi); }
+  std::array<double, N> low, high;
+  const std::array<double, N>& lo() const { return low; }
+  const std::array<double, N>& hi() const { return high; }
+  double distance2_to(const std::array<double, N>& q) const { return distance2_to_box<N>(q, low, high); }
+};
+template <int N>
+struct TreeObject<N, true> {
+  std::uint32_t id;
+  std::array<double, N> low;
+  const std::array<double, N>& lo() const { return low; }
+  const std::array<double, N>& hi() const { return low; }
+  double distance2_to(const std::array<double, N>& q) const { return distance2_to_box<N>(q, low, low); }
 };
 
 /// A cube of the tree as the searches see it: its centre and half-side, and the region its
@@ -92,6 +104,7 @@ struct TreeCube {
 /// Points given coordinate by coordinate: coordinate(i, k) of point i, count points.
 template <int N, class Coordinate>
 struct PointsAdaptor {
+  static constexpr bool kPoints = true;  ///< every box is a point (lo == hi)
   std::size_t count;
   Coordinate coordinate;
   std::size_t size() const { return count; }
@@ -120,7 +133,8 @@ class SpaceTree {
  public:
   using Id = std::uint32_t;
   using Point = std::array<double, N>;
-  using Object = TreeObject<N>;
+  static constexpr bool kPoints = requires { requires Adaptor::kPoints; };
+  using Object = TreeObject<N, kPoints>;
   static constexpr int kChildren = 1 << N;
 
   /// An empty tree over `objects` (nothing inserted).
@@ -206,8 +220,8 @@ class SpaceTree {
   static void centre_and_size(const Object& o, Point& centre, double& size) {
     size = 0.0;
     for (int k = 0; k < N; ++k) {
-      centre[k] = 0.5 * (o.lo[k] + o.hi[k]);
-      size = std::max(size, o.hi[k] - o.lo[k]);
+      centre[k] = 0.5 * (o.lo()[k] + o.hi()[k]);
+      size = std::max(size, o.hi()[k] - o.lo()[k]);
     }
   }
   /// condition/value of a search called with the held object, or with its id.
@@ -219,16 +233,18 @@ class SpaceTree {
       return f(o.id);
   }
 
-  struct Node {
-    TreeCube<N> cube;
-    int parent = -1;
-    int slot = 0;  ///< which child of the parent this cube is
-    bool split = false;
+  /// A cube's record; what a search reads of a leaf (objects, split, child) comes first, in
+  /// the first cache line (3D), what it reads of a split cube next.
+  struct alignas(64) Node {
+    std::vector<Object> objects;
     std::array<int, kChildren> child;
+    bool split = false;
+    TreeCube<N> cube;
     /// The children's margins, copied here so that a search ranks a child without reading it.
     std::array<double, kChildren> child_margin{};
+    int parent = -1;
+    int slot = 0;  ///< which child of the parent this cube is
     std::size_t count = 0;  ///< objects in this cube and its sub-cubes
-    std::vector<Object> objects;
   };
   struct Where {
     int node = -1;
@@ -255,13 +271,16 @@ class SpaceTree {
     cube.margin = node.child_margin[b];
     return cube;
   }
-  /// Asks the processor to bring cube n's record and first objects into cache: a search pushes
+  /// Asks the processor to bring the first line of cube n's record into cache: a search pushes
   /// the sub-cubes it will open, and their loads then overlap instead of following one another.
   void prefetch(int n) const {
-    const Node& node = nodes_[n];
-    __builtin_prefetch(&node);
-    __builtin_prefetch(reinterpret_cast<const char*>(&node) + 64);
-    __builtin_prefetch(reinterpret_cast<const char*>(&node) + 128);
+    __builtin_prefetch(&nodes_[n]);
+    prefetch_geometry(nodes_[n]);
+  }
+  /// The rest of a split cube's record (its geometry and sub-cube margins).
+  void prefetch_geometry(const Node& node) const {
+    __builtin_prefetch(&node.cube);
+    __builtin_prefetch(&node.child_margin.back());
   }
   void prefetch_objects(const Node& node) const {
     const char* first = reinterpret_cast<const char*>(node.objects.data());

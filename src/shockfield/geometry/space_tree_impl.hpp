@@ -111,8 +111,14 @@ void SpaceTree<N, A>::insert(Id id) {
     throw InputError(fmt::format("space tree: object {} is not in the adaptor ({} objects)", id,
                                  objects_->size()));
   if (contains(id)) throw InputError(fmt::format("space tree: object {} is already held", id));
-  Object o{id, {}, {}};
-  objects_->bounds(id, o.lo, o.hi);
+  Object o{};
+  o.id = id;
+  {
+    Point lo, hi;
+    objects_->bounds(id, lo, hi);
+    o.low = lo;
+    if constexpr (!kPoints) o.high = hi;
+  }
   Point c;
   double size;
   centre_and_size(o, c, size);
@@ -361,7 +367,7 @@ std::string SpaceTree<N, A>::check_node(int n, std::size_t& counted) const {
       return fmt::format("object {} in cube {} has a wrong locator", id, n);
     Point lo, hi;
     objects_->bounds(id, lo, hi);
-    if (lo != o.lo || hi != o.hi)
+    if (lo != o.lo() || hi != o.hi())
       return fmt::format("object {} in cube {} holds a box other than the adaptor's", id, n);
     Point c;
     double size;

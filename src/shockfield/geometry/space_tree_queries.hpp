@@ -36,7 +36,7 @@ template <int N, class Tree>
 std::vector<Neighbour> k_nearest(const Tree& tree, const std::array<double, N>& q, std::size_t k) {
   const auto found = tree.minimum_search(
       k, [&](const TreeCube<N>& cube) { return distance2_range<N>(cube, q); },
-      [&](const TreeObject<N>& o) { return o.distance2_to(q); });
+      [&](const typename Tree::Object& o) { return o.distance2_to(q); });
   std::vector<Neighbour> out;
   out.reserve(found.size());
   for (const auto& f : found) out.push_back({std::sqrt(f.value), f.id});
@@ -49,7 +49,7 @@ Neighbour nearest(const Tree& tree, const std::array<double, N>& q) {
   InlineVector<typename Tree::Found, 1> found;
   tree.minimum_search_into(
       1, [&](const TreeCube<N>& cube) { return distance2_range<N>(cube, q); },
-      [&](const TreeObject<N>& o) { return o.distance2_to(q); }, found);
+      [&](const typename Tree::Object& o) { return o.distance2_to(q); }, found);
   if (found.empty()) return {std::numeric_limits<double>::infinity(), 0};
   return {std::sqrt(found.front().value), found.front().id};
 }
@@ -61,7 +61,7 @@ std::vector<std::uint32_t> within_radius(const Tree& tree, const std::array<doub
   std::vector<std::uint32_t> out;
   const double r2 = r * r;
   tree.conditional_search([&](const TreeCube<N>& cube) { return cube.distance2_to(q) <= r2; },
-                          [&](const TreeObject<N>& o) { return o.distance2_to(q) <= r2; },
+                          [&](const typename Tree::Object& o) { return o.distance2_to(q) <= r2; },
                           [&](typename Tree::Id id) {
                             out.push_back(id);
                             return true;
