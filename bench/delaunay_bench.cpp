@@ -1,5 +1,8 @@
 // GISO benchmark (bench/RESULTS.md "## GISO"): Delaunay division and SHT queries.
 //   delaunay_bench generate DIM N FILE   uniform random points in the unit cube, CSV (seeded)
+//   delaunay_bench generate-fcc N FILE   an fcc crystal of about N atoms (lattice constant 1, a
+//                                        cube of unit cells) with Gaussian thermal displacements
+//                                        of 0.03 per coordinate (seeded), CSV
 //   delaunay_bench delaunay DIM FILE     time of our Delaunay division of the points of FILE
 //   delaunay_bench queries N Q           nearest and radius query rates of the SHT beside
 //                                        nanoflann's kd-tree on the same N points, Q queries;
@@ -8,6 +11,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nanoflann.hpp>
@@ -33,6 +37,31 @@ std::vector<std::array<double, 3>> uniform(std::size_t n, std::uint64_t seed) {
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<std::array<double, 3>> p(n);
   for (auto& x : p) x = {u(rng), u(rng), u(rng)};
+  return p;
+}
+
+void write_csv(const std::string& file, const std::vector<std::array<double, 3>>& points, int dim) {
+  std::ofstream out(file);
+  out << (dim == 2 ? "x,y\n" : "x,y,z\n");
+  for (const auto& p : points)
+    out << (dim == 2 ? fmt::format("{:.17g},{:.17g}\n", p[0], p[1])
+                     : fmt::format("{:.17g},{:.17g},{:.17g}\n", p[0], p[1], p[2]));
+}
+
+/// fcc: 4 atoms per unit cell at (0,0,0), (½,½,0), (½,0,½), (0,½,½); σ = 0.03 of the lattice
+/// constant is about copper's room-temperature vibration (√⟨u²⟩ ≈ 0.08–0.1 Å of a = 3.6 Å).
+std::vector<std::array<double, 3>> perturbed_fcc(std::size_t atoms, std::uint64_t seed) {
+  const auto cells = static_cast<int>(std::lround(std::cbrt(atoms / 4.0)));
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> thermal(0.0, 0.03);
+  const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  std::vector<std::array<double, 3>> p;
+  p.reserve(4 * static_cast<std::size_t>(cells) * cells * cells);
+  for (int i = 0; i < cells; ++i)
+    for (int j = 0; j < cells; ++j)
+      for (int k = 0; k < cells; ++k)
+        for (const auto& b : basis)
+          p.push_back({i + b[0] + thermal(rng), j + b[1] + thermal(rng), k + b[2] + thermal(rng)});
   return p;
 }
 
@@ -113,12 +142,11 @@ int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   try {
     if (mode == "generate" && argc == 5) {
-      const int dim = std::stoi(argv[2]);
-      std::ofstream out(argv[4]);
-      out << (dim == 2 ? "x,y\n" : "x,y,z\n");
-      for (const auto& p : uniform(std::stoull(argv[3]), 7))
-        out << (dim == 2 ? fmt::format("{:.17g},{:.17g}\n", p[0], p[1])
-                         : fmt::format("{:.17g},{:.17g},{:.17g}\n", p[0], p[1], p[2]));
+      write_csv(argv[4], uniform(std::stoull(argv[3]), 7), std::stoi(argv[2]));
+      return 0;
+    }
+    if (mode == "generate-fcc" && argc == 4) {
+      write_csv(argv[3], perturbed_fcc(std::stoull(argv[2]), 11), 3);
       return 0;
     }
     if (mode == "delaunay" && argc == 4) return argv[2][0] == '2' ? delaunay<2>(argv[3]) : delaunay<3>(argv[3]);
@@ -128,6 +156,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::fprintf(stderr,
-               "usage: delaunay_bench generate DIM N FILE | delaunay DIM FILE | queries N Q\n");
+               "usage: delaunay_bench generate DIM N FILE | generate-fcc N FILE | delaunay DIM FILE "
+               "| queries N Q\n");
   return 2;
 }

@@ -25,7 +25,11 @@ class Triangulation {
   using Point = std::array<double, N>;
   using Cell = std::array<std::int32_t, N + 1>;
 
-  explicit Triangulation(const std::vector<Point>& points) : points_(points) {}
+  /// Vertices are indices into `points` (given in insertion order, so that the points of
+  /// neighbouring cells sit close in memory, as in CGAL's vertex storage); original[v] is the
+  /// caller's index of vertex v: its rank in the perturbation and its name in the output.
+  Triangulation(const std::vector<Point>& points, const std::vector<std::int32_t>& original)
+      : points_(points), original_(original) {}
 
   /// The first simplex (positively oriented) and the N+1 cells through the vertex at infinity.
   void start(const Cell& first);
@@ -54,6 +58,7 @@ class Triangulation {
   void link_new_cells();
 
   const std::vector<Point>& points_;
+  const std::vector<std::int32_t>& original_;
   std::vector<Cell> cells_, nb_;
   std::vector<char> alive_;
   std::vector<std::int32_t> free_;
@@ -192,10 +197,10 @@ bool Triangulation<N>::in_conflict(std::int32_t c, std::int32_t p) const {
     std::array<std::int64_t, N + 2> rank;
     for (int j = 0; j <= N; ++j) {
       r[j] = at(cells_[c][j]);
-      rank[j] = cells_[c][j];
+      rank[j] = original_[cells_[c][j]];
     }
     r[N + 1] = at(p);
-    rank[N + 1] = p;
+    rank[N + 1] = original_[p];
     return in_sphere_perturbed<N>(r, rank) > 0;
   }
   // Through the vertex at infinity: P strictly beyond the hull face; on its plane, the answer of
@@ -278,7 +283,9 @@ DelaunayDivision<N> Triangulation<N>::finish(DelaunayDivision<N> out) const {
   for (std::size_t c = 0; c < cells_.size(); ++c)
     if (alive_[c] && infinite_slot(static_cast<std::int32_t>(c)) < 0) {
       index[c] = static_cast<std::int32_t>(out.simplices.size());
-      out.simplices.push_back(cells_[c]);
+      Cell named;
+      for (int i = 0; i <= N; ++i) named[i] = original_[cells_[c][i]];
+      out.simplices.push_back(named);
     }
   out.neighbours.resize(out.simplices.size());
   for (std::size_t c = 0; c < cells_.size(); ++c)
@@ -362,16 +369,23 @@ DelaunayDivision<N> delaunay_division(std::vector<std::array<double, N>> points,
     if (out.representative[i] == static_cast<std::int32_t>(i))
       unique.push_back(static_cast<std::int32_t>(i));
   const std::vector<std::int32_t> order = brio_hilbert_order<N>(pts, std::move(unique));
+  // The points copied in that order: vertex v of the triangulation is point order[v].
+  std::vector<std::array<double, N>> ordered(order.size());
+  std::vector<std::int32_t> vertices(order.size());
+  for (std::size_t v = 0; v < order.size(); ++v) {
+    ordered[v] = pts[order[v]];
+    vertices[v] = static_cast<std::int32_t>(v);
+  }
   std::array<std::int32_t, N + 1> first;
-  if (!first_simplex<N>(pts, order, first))
+  if (!first_simplex<N>(ordered, vertices, first))
     throw InputError(fmt::format("{}: all {} distinct points lie on one {}; a {}D Delaunay "
                                  "division needs points spanning the {}",
                                  source, distinct, N == 2 ? "line" : "plane", N,
                                  N == 2 ? "plane" : "space"));
-  Triangulation<N> t(pts);
+  Triangulation<N> t(ordered, order);
   t.start(first);
-  for (std::int32_t p : order)
-    if (std::find(first.begin(), first.end(), p) == first.end()) t.insert(p);
+  for (std::int32_t v : vertices)
+    if (std::find(first.begin(), first.end(), v) == first.end()) t.insert(v);
   return t.finish(std::move(out));
 }
 
