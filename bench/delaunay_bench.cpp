@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <nanoflann.hpp>
@@ -69,9 +70,11 @@ template <int N>
 int delaunay(const std::string& file) {
   const auto pts = sg::read_points<N>(file);
   const auto t0 = Clock::now();
+  const std::clock_t c0 = std::clock();
   const auto d = sg::delaunay_division<N>(pts, file);
-  std::printf("shockfield %dd points %zu simplices %zu seconds %.3f\n", N, pts.size(),
-              d.simplices.size(), seconds_since(t0));
+  std::printf("shockfield %dd points %zu simplices %zu seconds %.3f cpu_seconds %.3f\n", N,
+              pts.size(), d.simplices.size(), seconds_since(t0),
+              double(std::clock() - c0) / CLOCKS_PER_SEC);
   return 0;
 }
 

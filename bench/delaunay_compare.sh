@@ -8,8 +8,10 @@
 # N2D uniform points in the unit square. Each round runs, per data set, BEFORE_BENCH (an older
 # delaunay_bench, optional), ours and CGAL one after the other; SciPy/Qhull (minutes per 10^6
 # points) runs once per data set, after all rounds. Each line is followed by the process's CPU
-# time (`cpu USER SYS`, /usr/bin/time, file reading included); the printed `seconds` are wall
-# times of the division only. `uptime` is printed before and after: report medians and the load.
+# time (`cpu USER SYS`, /usr/bin/time, file reading included); the printed `seconds` and
+# `cpu_seconds` are the wall and CPU times of the division only (an older BEFORE_BENCH may print
+# only the wall time). `uptime` is printed before and after: report medians and the load.
+# QHULL=0 in the environment leaves SciPy/Qhull out (a rerun of ours against CGAL).
 set -eu
 B="$1"; N3="${2:-1000000}"; N2="${3:-1000000}"; ROUNDS="${4:-3}"; Q="${5:-200000}"
 BEFORE="${6:-}"
@@ -24,8 +26,10 @@ import sys, time, numpy as np
 from scipy.spatial import Delaunay
 d, f = int(sys.argv[1]), sys.argv[2]
 p = np.loadtxt(f, delimiter=",", skiprows=1)
-t = time.perf_counter(); tri = Delaunay(p); t = time.perf_counter() - t
-print(f"scipy {d}d points {len(p)} simplices {len(tri.simplices)} seconds {t:.3f}")
+t, c = time.perf_counter(), time.process_time()
+tri = Delaunay(p)
+t, c = time.perf_counter() - t, time.process_time() - c
+print(f"scipy {d}d points {len(p)} simplices {len(tri.simplices)} seconds {t:.3f} cpu_seconds {c:.3f}")
 PY
 }
 dim_of() { [ "$1" = uniform2 ] && echo 2 || echo 3; }
@@ -58,7 +62,9 @@ t = time.perf_counter(); hits = tree.query_ball_point(qs, r, workers=1); radius 
 print(f"ckdtree build {build:.3f} s, nearest {q / nearest:.3g} /s, radius {q / radius:.3g} /s, "
       f"found {sum(len(h) for h in hits)}")
 PY
-for set in uniform3 fcc3 uniform2; do
-  scipy_delaunay "$(dim_of "$set")" "$W/$set.csv"
-done
+if [ "${QHULL:-1}" != 0 ]; then
+  for set in uniform3 fcc3 uniform2; do
+    scipy_delaunay "$(dim_of "$set")" "$W/$set.csv"
+  done
+fi
 echo "load: $(uptime)"
