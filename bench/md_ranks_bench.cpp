@@ -54,13 +54,11 @@ int main(int argc, char** argv) {
   const double loop = domain->max(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   const double halo = domain->max(domain->halo_seconds);
   const ThermoState t = sim.thermo();
+  const long long total = domain->total_atoms(sim.atoms);
   if (world.is_root())
     std::printf("%d ranks: %lld atoms, %d steps: loop %.3f s, %.3g atom-steps/s, exchange %.3f ms/step (largest "
                 "rank), %lld rebuilds; final T %.2f K, pe %.6f eV\n",
-                world.size(), domain->total_atoms(sim.atoms), steps, loop,
-                static_cast<double>(domain->total_atoms(sim.atoms)) * steps / loop, 1e3 * halo / steps,
+                world.size(), total, steps, loop, static_cast<double>(total) * steps / loop, 1e3 * halo / steps,
                 static_cast<long long>(sim.rebuilds), t.temperature, t.potential);
-  else
-    domain->total_atoms(sim.atoms);  // the collective the root's print makes
   return 0;
 }
