@@ -40,9 +40,7 @@ int main(int argc, char** argv) {
   create_velocities(atoms, 1600.0, 376847);
   const double range = potential->cutoff() + 1.0;
   const auto domain = std::make_shared<Decomposition>(world, md_rank_grid(box, range, world.size(), {0, 0, 0}), box, range);
-  std::vector<bool> mine(atoms.nlocal);
-  for (std::size_t i = 0; i < atoms.nlocal; ++i) mine[i] = domain->owns(atoms.x[i]);
-  atoms.keep(mine);
+  keep_own_atoms(*domain, atoms);
   Simulation sim(box, std::move(atoms), std::move(potential), 0.005, 1.0);
   sim.domain = domain;
   sim.neighbor_delay = 5;

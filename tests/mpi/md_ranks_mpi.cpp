@@ -12,7 +12,7 @@
 //     to a relative 1e-10 (round-off grown by the trajectories' divergence over ≤ 200 steps);
 //   - at the end: every id 1..N is owned by exactly one rank, and the positions equal the serial
 //     ones within 1e-8 Å (minimum image).
-// Exit 0 when every rank passes. Usage: test_md_ranks_mpi [PxQxR]
+// Exit 0 when every rank passes. Usage: test_md_ranks_mpi [PxQxR] | --stop FILE | --resume FILE
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -23,6 +23,7 @@
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/rng.hpp"
+#include "shockfield/md/checkpoint.hpp"
 #include "shockfield/md/decomposition.hpp"
 #include "shockfield/md/fixes/langevin.hpp"
 #include "shockfield/md/fixes/nose_hoover.hpp"
@@ -99,6 +100,20 @@ std::map<long long, std::array<Vec3, 2>> by_id(const Simulation& sim) {
   return out;
 }
 
+// The largest distance (minimum image) between an atom's positions in the two runs, by id.
+double largest_position_difference(const Simulation& serial, const Simulation& split) {
+  const auto a = by_id(serial), b = by_id(split);
+  const Vec3 length = serial.box.length();
+  double worst = 0;
+  for (const auto& [id, xf] : a) {
+    if (!b.count(id)) continue;
+    Vec3 dx = b.at(id)[0] - xf[0];
+    for (int d = 0; d < 3; ++d) dx[d] -= length[d] * std::round(dx[d] / length[d]);
+    worst = std::max(worst, dx.norm());
+  }
+  return worst;
+}
+
 bool close(double a, double b, double relative) { return std::abs(a - b) <= relative * std::max(1.0, std::abs(b)); }
 
 void run_case(const Case& c, const parallel::Dims3& given) {
@@ -112,9 +127,7 @@ void run_case(const Case& c, const parallel::Dims3& given) {
   const parallel::Dims3 dims = md_rank_grid(box, range, world.size(), given);
   auto domain = std::make_shared<Decomposition>(world, dims, box, range);
   Atoms mine = all;
-  std::vector<bool> keep(mine.nlocal);
-  for (std::size_t i = 0; i < mine.nlocal; ++i) keep[i] = domain->owns(mine.x[i]);
-  mine.keep(keep);
+  keep_own_atoms(*domain, mine);
   Simulation split = simulation(c, box, std::move(mine));
   split.domain = domain;
   split.setup(false);
@@ -142,15 +155,8 @@ void run_case(const Case& c, const parallel::Dims3& given) {
           what + fmt::format(": step {}: thermo pe {} ke {} p {} vs serial {} {} {}", s + 1, t1.potential, t1.kinetic,
                              t1.pressure, t0.potential, t0.kinetic, t0.pressure));
   }
-  const auto a = by_id(serial), b = by_id(split);
-  check(static_cast<long long>(b.size()) == n, what + ": atoms lost or duplicated at the end");
-  double worst = 0;
-  for (const auto& [id, xf] : a) {
-    if (!b.count(id)) continue;
-    Vec3 dx = b.at(id)[0] - xf[0];
-    for (int d = 0; d < 3; ++d) dx[d] -= box.length()[d] * std::round(dx[d] / box.length()[d]);
-    worst = std::max(worst, dx.norm());
-  }
+  check(static_cast<long long>(by_id(split).size()) == n, what + ": atoms lost or duplicated at the end");
+  const double worst = largest_position_difference(serial, split);
   check(worst <= 1e-8, what + fmt::format(": positions differ from the serial ones by {:.3g} Å", worst));
   if (world.is_root())
     std::printf("%s: %lld atoms, %d steps, %lld rebuilds; largest difference from serial: first forces %.3g eV/Å, "
@@ -158,13 +164,65 @@ void run_case(const Case& c, const parallel::Dims3& given) {
                 force_difference, worst);
 }
 
+// A run stopped on one rank count and resumed on another (tests/mpi/md_restart.sh): `--stop FILE`
+// runs the Cu EAM NVE case 20 steps decomposed, gathers the atoms on rank 0 and writes the serial
+// checkpoint; `--resume FILE` reads it on every rank, deals the atoms out, runs 20 more steps and
+// compares with the uninterrupted serial 40 steps: positions within 1e-8 Å by id, thermo within
+// a relative 1e-10 (round-off, as above).
+void stop_or_resume(const Case& c, const std::string& mode, const std::string& file) {
+  constexpr int half = 20;
+  geometry::Box box;
+  const Atoms all = crystal(c, box);
+  const parallel::Communicator world = parallel::Communicator::world();
+  Simulation whole = simulation(c, box, all);
+  const double range = whole.potential->cutoff() + whole.skin;
+  auto domain = std::make_shared<Decomposition>(world, md_rank_grid(box, range, world.size(), {0, 0, 0}), box, range);
+  const auto no_output = [](std::int64_t) { return false; };
+  if (mode == "--resume") read_checkpoint(file, whole);  // every rank reads the whole system
+  Atoms mine = whole.atoms;
+  keep_own_atoms(*domain, mine);
+  Simulation split = simulation(c, box, std::move(mine));
+  split.step = whole.step;
+  split.time = whole.time;
+  split.domain = domain;
+  split.setup(false);
+  for (int s = 0; s < half; ++s) split.advance(no_output);
+  if (mode == "--stop") {
+    Atoms gathered = gather_atoms(*domain, split.atoms);
+    if (world.is_root()) {
+      Simulation at_stop = simulation(c, box, std::move(gathered));
+      at_stop.step = split.step;
+      at_stop.time = split.time;
+      at_stop.setup(false);
+      write_checkpoint(file, at_stop, {0, split.step});
+      std::printf("%s: stopped at step %lld on %d ranks, %zu atoms gathered\n", c.name.c_str(),
+                  static_cast<long long>(split.step), world.size(), at_stop.atoms.nlocal);
+    }
+    return;
+  }
+  Simulation serial = simulation(c, box, all);
+  serial.setup(false);
+  for (int s = 0; s < 2 * half; ++s) serial.advance(no_output);
+  check(split.step == serial.step, "the resumed run ends at another step");
+  check(by_id(split).size() == by_id(serial).size(), "atoms lost or duplicated in the resumed run");
+  const double worst = largest_position_difference(serial, split);
+  check(worst <= 1e-8, fmt::format("resumed: positions differ from the uninterrupted serial run by {:.3g} Å", worst));
+  const ThermoState t0 = serial.thermo(), t1 = split.thermo();
+  check(close(t1.potential, t0.potential, 1e-10) && close(t1.kinetic, t0.kinetic, 1e-10),
+        fmt::format("resumed: thermo pe {} ke {} vs uninterrupted {} {}", t1.potential, t1.kinetic, t0.potential, t0.kinetic));
+  if (world.is_root())
+    std::printf("%s: resumed on %d ranks to step %lld; largest position difference from the uninterrupted serial "
+                "run %.3g Å\n", c.name.c_str(), world.size(), static_cast<long long>(split.step), worst);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const parallel::Environment mpi(argc, argv);
   const parallel::Communicator world = parallel::Communicator::world();
+  const std::string mode = argc > 2 ? argv[1] : "";
   parallel::Dims3 given{0, 0, 0};
-  if (argc > 1) given = parallel::parse_rank_grid(argv[1]);
+  if (argc == 2) given = parallel::parse_rank_grid(argv[1]);
   const std::string eam = "style = \"eam\"\nfile = \"Cu_u3.eam\"\n";
   const std::string lj = "style = \"lj/cut\"\nepsilon = 0.0104\nsigma = 3.4\ncutoff = 8.5\n";
   const Case cases[] = {
@@ -176,7 +234,8 @@ int main(int argc, char** argv) {
       {"Cu EAM across corners", eam, 3.615, 63.55, 6, "nve", 0.9, 200},
   };
   try {
-    for (const Case& c : cases) run_case(c, given);
+    if (mode == "--stop" || mode == "--resume") stop_or_resume(cases[0], mode, argv[2]);
+    else for (const Case& c : cases) run_case(c, given);
   } catch (const std::exception& e) {
     check(false, std::string("exception: ") + e.what());
   }

@@ -90,6 +90,34 @@ Decomposition::Decomposition(const parallel::Communicator& world, const parallel
     : exchange_(world.cartesian(dims, {box.periodic(0), box.periodic(1), box.periodic(2)}), ghost_spans(box),
                 ghost_cutoffs(box, ghost_cutoff)) {}
 
+Atoms gather_atoms(const Decomposition& domain, const Atoms& atoms) {
+  constexpr int width = MigratingAtoms::owned_width;
+  std::vector<double> mine(atoms.nlocal * width);
+  const MigratingAtoms view{const_cast<Atoms&>(atoms)};  // packing only reads
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) view.pack_owned(i, mine.data() + i * width);
+  const std::vector<double> all = domain.comm().gather(mine);
+  Atoms whole;
+  whole.mass = atoms.mass;
+  whole.type_names = atoms.type_names;
+  // Records in id order (ids are 1..N in a system built or read by the serial code, but need not be).
+  std::vector<std::size_t> order(all.size() / width);
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all[a * width + 9] < all[b * width + 9]; });
+  std::vector<double> sorted(all.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    std::copy(all.begin() + static_cast<std::ptrdiff_t>(order[k] * width),
+              all.begin() + static_cast<std::ptrdiff_t>((order[k] + 1) * width), sorted.begin() + static_cast<std::ptrdiff_t>(k * width));
+  MigratingAtoms{whole}.append_owned(sorted.data(), order.size());
+  return whole;
+}
+
+void keep_own_atoms(const Decomposition& domain, Atoms& atoms) {
+  std::vector<bool> keep(atoms.nlocal);
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) keep[i] = domain.owns(atoms.x[i]);
+  atoms.clear_ghosts();
+  atoms.keep(keep);
+}
+
 bool Decomposition::owns(const Vec3& x) const {
   const std::array<int, 3> here = comm().coordinates();
   for (int d = 0; d < 3; ++d)

@@ -23,6 +23,15 @@ namespace shockfield::md {
 /// shrink-wrapped axis (not decomposed yet).
 parallel::Dims3 md_rank_grid(const geometry::Box& box, double ghost_cutoff, int ranks, const parallel::Dims3& given);
 
+class Decomposition;
+
+/// Every rank's owned atoms on rank 0, in id order, with the types' masses and names (empty on
+/// the other ranks): what the serial output and checkpoint code read. Collective.
+Atoms gather_atoms(const Decomposition& domain, const Atoms& atoms);
+/// Keeps the owned atoms of a whole system (read or built the same on every rank) that lie in
+/// this rank's piece: how a checkpoint of any rank count is dealt out. Not collective.
+void keep_own_atoms(const Decomposition& domain, Atoms& atoms);
+
 class Decomposition final : public AtomRanks, public std::enable_shared_from_this<Decomposition> {
  public:
   /// Collective over `world`: the Cartesian communicator of `dims` (md_rank_grid).
