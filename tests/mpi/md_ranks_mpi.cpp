@@ -2,14 +2,15 @@
 // against the serial run of the same system that every rank also makes (docs/parallel.md, "MD on
 // the rank grid"). Cases: Cu EAM (Cu_u3) and argon LJ fcc crystals, thermally perturbed, under NVE
 // and Nose-Hoover NVT; and a crystal translated diagonally at the largest speed the run allows
-// (0.45 of the half-skin per step: check_health refuses 0.5), so that atoms cross the pieces'
+// (0.45 Å per step, 0.9 of the half-skin: check_health refuses more; 120 steps move an atom
+// 31 Å along each axis, about three pieces), so that atoms cross the pieces'
 // faces, edges and corners many times. Checked:
 //   - the forces of the first step equal the serial ones by atom id within 1e-11 eV/Å (the sums
 //     over neighbours and the EAM densities are added in another order: round-off of a ~10 eV/Å
 //     sum of ~100 terms is ~1e-14 eV/Å; 1e-11 leaves room and still fails on any lost pair, whose
 //     force is >1e-4 eV/Å);
 //   - every step: the global atom count is N; the thermo (pe, ke, pressure) equals the serial one
-//     to a relative 1e-10 (round-off grown by the trajectories' divergence over ≤ 200 steps);
+//     to a relative 1e-10 (round-off grown by the trajectories' divergence over ≤ 120 steps);
 //   - at the end: every id 1..N is owned by exactly one rank, and the positions equal the serial
 //     ones within 1e-8 Å (minimum image).
 // Exit 0 when every rank passes. Usage: test_md_ranks_mpi [PxQxR] | --stop FILE | --resume FILE
@@ -226,12 +227,12 @@ int main(int argc, char** argv) {
   const std::string eam = "style = \"eam\"\nfile = \"Cu_u3.eam\"\n";
   const std::string lj = "style = \"lj/cut\"\nepsilon = 0.0104\nsigma = 3.4\ncutoff = 8.5\n";
   const Case cases[] = {
-      {"Cu EAM NVE", eam, 3.615, 63.55, 6, "nve", 0.0, 100},
+      {"Cu EAM NVE", eam, 3.615, 63.55, 6, "nve", 0.0, 50},
       {"Cu EAM NVT", eam, 3.615, 63.55, 6, "nvt", 0.0, 50},
       {"Cu EAM Langevin", eam, 3.615, 63.55, 6, "langevin", 0.0, 50},
       {"Ar LJ NVE", lj, 5.26, 39.948, 5, "nve", 0.0, 50},
       {"Ar LJ NVT", lj, 5.26, 39.948, 5, "nvt", 0.0, 50},
-      {"Cu EAM across corners", eam, 3.615, 63.55, 6, "nve", 0.9, 200},
+      {"Cu EAM across corners", eam, 3.615, 63.55, 6, "nve", 0.9, 120},
   };
   try {
     if (mode == "--stop" || mode == "--resume") stop_or_resume(cases[0], mode, argv[2]);
