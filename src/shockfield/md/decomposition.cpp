@@ -14,21 +14,24 @@
 namespace shockfield::md {
 namespace {
 
-// Atoms as the particle exchange sees them for migration: x y z, vx vy vz, image counts, id,
-// type, mask (ids and masks are exact in a double below 2^53).
+// An owned atom as 12 doubles: x y z, vx vy vz, image counts, id, type, mask (ids and masks are
+// exact in a double below 2^53).
+void pack_atom(const Atoms& atoms, std::size_t i, double* out) {
+  const Vec3& x = atoms.x[i];
+  const Vec3& v = atoms.v[i];
+  const auto& n = atoms.image[i];
+  const double record[12] = {x[0], x[1], x[2], v[0], v[1], v[2], double(n[0]), double(n[1]), double(n[2]),
+                             static_cast<double>(atoms.id[i]), double(atoms.type[i]), double(atoms.mask[i])};
+  std::copy(record, record + 12, out);
+}
+
+// Atoms as the particle exchange sees them for migration (records of pack_atom).
 struct MigratingAtoms {
   Atoms& atoms;
   static constexpr int owned_width = 12;
   std::size_t owned() const { return atoms.nlocal; }
   double coordinate(std::size_t i, int d) const { return atoms.x[i][d]; }
-  void pack_owned(std::size_t i, double* out) const {
-    const Vec3& x = atoms.x[i];
-    const Vec3& v = atoms.v[i];
-    const auto& n = atoms.image[i];
-    const double record[owned_width] = {x[0], x[1], x[2], v[0], v[1], v[2], double(n[0]), double(n[1]), double(n[2]),
-                                        static_cast<double>(atoms.id[i]), double(atoms.type[i]), double(atoms.mask[i])};
-    std::copy(record, record + owned_width, out);
-  }
+  void pack_owned(std::size_t i, double* out) const { pack_atom(atoms, i, out); }
   void remove_owned(const std::vector<char>& leaving) {
     std::vector<bool> keep(leaving.size());
     for (std::size_t i = 0; i < leaving.size(); ++i) keep[i] = !leaving[i];
@@ -93,8 +96,7 @@ Decomposition::Decomposition(const parallel::Communicator& world, const parallel
 Atoms gather_atoms(const Decomposition& domain, const Atoms& atoms) {
   constexpr int width = MigratingAtoms::owned_width;
   std::vector<double> mine(atoms.nlocal * width);
-  const MigratingAtoms view{const_cast<Atoms&>(atoms)};  // packing only reads
-  for (std::size_t i = 0; i < atoms.nlocal; ++i) view.pack_owned(i, mine.data() + i * width);
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) pack_atom(atoms, i, mine.data() + i * width);
   const std::vector<double> all = domain.comm().gather(mine);
   Atoms whole;
   whole.mass = atoms.mass;
