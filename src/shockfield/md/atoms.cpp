@@ -37,6 +37,7 @@ void Atoms::keep(const std::vector<bool>& flag) {
 }
 
 void Atoms::update_ghost_positions(const geometry::Box& box) {
+  if (ranks) return ranks->update_ghost_positions(*this, box);
   for (std::size_t g = 0; g < nghost(); ++g) x[nlocal + g] = x[ghost_owner[g]] + box.lattice_shift(ghost_image[g]);
 }
 

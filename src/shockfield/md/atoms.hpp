@@ -5,6 +5,7 @@
 // and message, as in LAMMPS. Positions in Å, velocities in Å/ps, forces in eV/Å, masses in amu.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,24 @@
 #include "shockfield/geometry/box.hpp"
 
 namespace shockfield::md {
+
+struct Atoms;
+
+/// The other ranks of a decomposed run (md/decomposition.hpp), for the atoms a rank owns: ghost
+/// values travel through the particle exchange's swaps (a ghost's owner may be on another rank),
+/// and sums over atoms add the ranks' partial sums in rank order.
+class AtomRanks {
+ public:
+  virtual ~AtomRanks() = default;
+  /// Adds each ghost's `width` doubles into the entry it was made from, swaps in reverse order.
+  virtual void reverse_sum(double* values, int width) const = 0;
+  /// Copies each owner's `width` doubles to its ghosts.
+  virtual void forward_copy(double* values, int width) const = 0;
+  /// Moves the ghosts to their owners' positions, imaged.
+  virtual void update_ghost_positions(Atoms& atoms, const geometry::Box& box) const = 0;
+  /// Σ over ranks of each partial, in rank order (the same bits on every rank).
+  virtual std::vector<double> sum(const std::vector<double>& partials) const = 0;
+};
 
 struct Atoms {
   // Owned and ghost entries.
@@ -33,6 +52,8 @@ struct Atoms {
   std::vector<std::string> type_names;    ///< per type, element symbol or "" (e.g. "Cu")
 
   std::size_t nlocal = 0;
+  /// Set while a decomposed run owns the atoms (null: one rank, every ghost's owner is here).
+  std::shared_ptr<const AtomRanks> ranks;
 
   std::size_t size() const { return x.size(); }
   std::size_t nghost() const { return x.size() - nlocal; }
@@ -50,11 +71,15 @@ struct Atoms {
   /// Adds each ghost's value into its owner's value (size() entries in `values`).
   template <class T>
   void reverse_sum(std::vector<T>& values) const {
+    static_assert(sizeof(T) % sizeof(double) == 0, "values of whole doubles (double, Vec3, Voigt6)");
+    if (ranks) return ranks->reverse_sum(reinterpret_cast<double*>(values.data()), sizeof(T) / sizeof(double));
     for (std::size_t g = 0; g < nghost(); ++g) values[ghost_owner[g]] += values[nlocal + g];
   }
   /// Copies each owner's value to its ghosts (size() entries in `values`).
   template <class T>
   void forward_copy(std::vector<T>& values) const {
+    static_assert(sizeof(T) % sizeof(double) == 0, "values of whole doubles (double, Vec3, Voigt6)");
+    if (ranks) return ranks->forward_copy(reinterpret_cast<double*>(values.data()), sizeof(T) / sizeof(double));
     for (std::size_t g = 0; g < nghost(); ++g) values[nlocal + g] = values[ghost_owner[g]];
   }
   /// Largest tag in use (0 when empty).

@@ -1,7 +1,5 @@
 #include "shockfield/md/ghosts.hpp"
 
-#include <omp.h>
-
 #include <cmath>
 #include <fmt/format.h>
 
@@ -36,71 +34,65 @@ void wrap_owned(Atoms& atoms, const geometry::Box& box) {
   if (failed < n) box.wrap(atoms.x[static_cast<std::size_t>(failed)], atoms.image[static_cast<std::size_t>(failed)]);
 }
 
-// The images of entries [0, n) along dimension d: for each layer and side in turn, the entries
-// whose shifted position lies within `cutoff` of the box. Each thread counts its contiguous range
-// of entries per (layer, side) pass; the prefix sums give every thread the slots a serial loop
-// would have used, so the threads then write their ghosts in parallel in serial order.
-void append_images_along(Atoms& atoms, const geometry::Box& box, double cutoff, int d, int layers) {
-  const double length = box.hi[d] - box.lo[d];
-  const std::size_t n = atoms.size();  // owned + ghosts of earlier dimensions
-  const std::size_t nlocal = atoms.nlocal;
-  const int passes = 2 * layers;       // pass p: layer p/2 + 1, side -1 (p even) or +1 (p odd)
-  auto shift_of = [&](int p) { return (p % 2 == 0 ? -1 : 1) * (p / 2 + 1); };
-  // A triclinic cell selects in fractional coordinates, the cutoff measured along the face
-  // normal as LAMMPS's Comm::setup does (cutghost = cutoff / face distance in lamda units).
-  const bool triclinic = box.triclinic();
-  const double fractional_cutoff = cutoff / box.face_distances()[d];
-  auto selected = [&](std::size_t i, int p) {
-    if (triclinic) {
-      const double s = box.to_fractional(atoms.x[i])[d] + shift_of(p);
-      return !(s < -fractional_cutoff || s >= 1 + fractional_cutoff);
-    }
-    const double y = atoms.x[i][d] + shift_of(p) * length;
-    return !(y < box.lo[d] - cutoff || y >= box.hi[d] + cutoff);
-  };
-  const int nthreads = omp_get_max_threads();
-  std::vector<std::size_t> slot(static_cast<std::size_t>(passes * nthreads) + 1, 0);  // [pass][thread]
-#pragma omp parallel num_threads(nthreads)
-  {
-    const int t = omp_get_thread_num(), team = omp_get_num_threads();
-    const std::size_t begin = n * t / team, end = n * (t + 1) / team;
-    for (int p = 0; p < passes; ++p) {
-      std::size_t count = 0;
-      for (std::size_t i = begin; i < end; ++i) count += selected(i, p) ? 1 : 0;
-      slot[static_cast<std::size_t>(p * nthreads + t) + 1] = count;
-    }
-#pragma omp barrier
-#pragma omp single
-    {
-      for (std::size_t k = 1; k < slot.size(); ++k) slot[k] += slot[k - 1];
-      const std::size_t total = n + slot.back();
-      atoms.x.resize(total);
-      atoms.type.resize(total);
-      atoms.ghost_owner.resize(total - nlocal);
-      atoms.ghost_image.resize(total - nlocal);
-    }
-    for (int p = 0; p < passes; ++p) {
-      std::size_t k = n + slot[static_cast<std::size_t>(p * nthreads + t)];
-      Vec3 shift = Vec3::Zero();
-      if (triclinic) shift = shift_of(p) * box.edge(d);
-      else shift[d] = shift_of(p) * length;
-      for (std::size_t i = begin; i < end; ++i) {
-        if (!selected(i, p)) continue;
-        const bool is_ghost = i >= nlocal;
-        std::array<int, 3> image{0, 0, 0};
-        if (is_ghost) image = atoms.ghost_image[i - nlocal];
-        image[static_cast<std::size_t>(d)] += shift_of(p);
-        atoms.x[k] = atoms.x[i] + shift;
-        atoms.type[k] = atoms.type[i];
-        atoms.ghost_owner[k - nlocal] = is_ghost ? atoms.ghost_owner[i - nlocal] : static_cast<int>(i);
-        atoms.ghost_image[k - nlocal] = image;
-        ++k;
-      }
-    }
+}  // namespace
+
+double GhostAtoms::coordinate(std::size_t i, int d) const {
+  return triclinic ? box.to_fractional(atoms.x[i])[d] : atoms.x[i][d];
+}
+
+void GhostAtoms::pack_ghost(std::size_t i, int d, int periods, double* out) const {
+  Vec3 shift = Vec3::Zero();
+  if (triclinic) shift = static_cast<double>(periods) * box.edge(d);
+  else shift[d] = periods * (box.hi[d] - box.lo[d]);
+  const Vec3 x = atoms.x[i] + shift;
+  const bool is_ghost = i >= atoms.nlocal;
+  std::array<int, 3> image{0, 0, 0};
+  if (is_ghost) image = atoms.ghost_image[i - atoms.nlocal];
+  image[static_cast<std::size_t>(d)] += periods;
+  const double owner = is_ghost ? atoms.ghost_owner[i - atoms.nlocal] : static_cast<double>(i);
+  const double record[ghost_width] = {x[0], x[1], x[2], static_cast<double>(atoms.type[i]), owner,
+                                      static_cast<double>(image[0]), static_cast<double>(image[1]),
+                                      static_cast<double>(image[2])};
+  std::copy(record, record + ghost_width, out);
+}
+
+void GhostAtoms::append_ghosts(const double* in, std::size_t count, bool from_self) {
+  const std::size_t first = atoms.size(), nlocal = atoms.nlocal;
+  atoms.x.resize(first + count);
+  atoms.type.resize(first + count);
+  atoms.ghost_owner.resize(first + count - nlocal);
+  atoms.ghost_image.resize(first + count - nlocal);
+  const auto n = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t j = 0; j < n; ++j) {
+    const double* r = in + j * ghost_width;
+    const std::size_t k = first + static_cast<std::size_t>(j);
+    atoms.x[k] = Vec3(r[0], r[1], r[2]);
+    atoms.type[k] = static_cast<int>(r[3]);
+    atoms.ghost_owner[k - nlocal] = from_self ? static_cast<int>(r[4]) : -1;
+    atoms.ghost_image[k - nlocal] = {static_cast<int>(r[5]), static_cast<int>(r[6]), static_cast<int>(r[7])};
   }
 }
 
-}  // namespace
+std::array<parallel::AxisSpan, 3> ghost_spans(const geometry::Box& box) {
+  std::array<parallel::AxisSpan, 3> spans;
+  for (int d = 0; d < 3; ++d)
+    spans[d] = box.triclinic() ? parallel::AxisSpan{0.0, 1.0, box.periodic(d)}
+                               : parallel::AxisSpan{box.lo[d], box.hi[d], box.periodic(d)};
+  return spans;
+}
+
+std::array<double, 3> ghost_cutoffs(const geometry::Box& box, double cutoff) {
+  // A triclinic cell selects in fractional coordinates, the cutoff measured along the face
+  // normal as LAMMPS's Comm::setup does (cutghost = cutoff / face distance in lamda units).
+  if (!box.triclinic()) return {cutoff, cutoff, cutoff};
+  const Vec3 faces = box.face_distances();
+  return {cutoff / faces[0], cutoff / faces[1], cutoff / faces[2]};
+}
+
+std::array<int, 3> ghost_layers(const geometry::Box& box, double cutoff) {
+  return {image_layers(box, 0, cutoff), image_layers(box, 1, cutoff), image_layers(box, 2, cutoff)};
+}
 
 std::size_t ghost_capacity(std::size_t nlocal, const geometry::Box& box, double cutoff) {
   double factor = 1.05;
@@ -117,10 +109,11 @@ std::size_t most_entries(std::size_t nlocal, const geometry::Box& box, double cu
 
 void append_ghosts(Atoms& atoms, const geometry::Box& box, double cutoff) {
   wrap_owned(atoms, box);
-  for (int d = 0; d < 3; ++d) {
-    const int layers = image_layers(box, d, cutoff);
-    if (layers > 0) append_images_along(atoms, box, cutoff, d, layers);
-  }
+  const std::array<bool, 3> periodic{box.periodic(0), box.periodic(1), box.periodic(2)};
+  const parallel::ParticleExchange one_rank(parallel::Communicator::single().cartesian({1, 1, 1}, periodic),
+                                            ghost_spans(box), ghost_cutoffs(box, cutoff));
+  GhostAtoms view{atoms, box, box.triclinic()};
+  one_rank.build_ghosts(view, ghost_layers(box, cutoff));
 }
 
 void rebuild_ghosts(Atoms& atoms, const geometry::Box& box, double cutoff) {

@@ -9,6 +9,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/geometry/shrink_wrap.hpp"
+#include "shockfield/md/decomposition.hpp"
 #include "shockfield/md/force_evaluation.hpp"
 #include "shockfield/md/ghosts.hpp"
 
@@ -28,8 +29,12 @@ void Simulation::shrink_wrap() {
 }
 
 void Simulation::rebuild() {
-  shrink_wrap();
-  rebuild_ghosts(atoms, box, potential->cutoff() + skin);
+  if (domain) {
+    domain->rebuild(atoms, box, potential->cutoff() + skin);
+  } else {
+    shrink_wrap();
+    rebuild_ghosts(atoms, box, potential->cutoff() + skin);
+  }
   geometry::build_neighbor_list(atoms.x, atoms.nlocal, potential->cutoff() + skin, true, list);
   x_rebuild_.assign(atoms.x.begin(), atoms.x.begin() + static_cast<std::ptrdiff_t>(atoms.nlocal));
   box_rebuild_ = box;
@@ -53,6 +58,15 @@ void Simulation::restore_rebuild_state(const std::vector<Vec3>& x_rebuild, const
 }
 
 bool Simulation::needs_rebuild() const {
+  const bool here = needs_rebuild_here();
+  return domain ? domain->any(here) : here;  // every rank rebuilds when one must
+}
+
+std::vector<double> Simulation::over_ranks(std::vector<double> partials) const {
+  return domain ? domain->sum(partials) : partials;
+}
+
+bool Simulation::needs_rebuild_here() const {
   if (x_rebuild_.size() != atoms.nlocal) return true;
   if (steps_since_rebuild < neighbor_delay || steps_since_rebuild % neighbor_every != 0) return false;
   if (!neighbor_check) return true;
@@ -100,6 +114,7 @@ void Simulation::advance(const std::function<bool(std::int64_t)>& want_per_atom)
   double vmax2 = 0;
 #pragma omp parallel for reduction(max : vmax2) schedule(static)
   for (std::size_t i = 0; i < atoms.nlocal; ++i) vmax2 = std::max(vmax2, atoms.v[i].squaredNorm());
+  if (domain) vmax2 = domain->max(vmax2);
   max_drift_ = std::sqrt(vmax2) * dt;
   for (auto& fix : fixes) fix->post_integrate(*this);
   ++step;
@@ -108,6 +123,9 @@ void Simulation::advance(const std::function<bool(std::int64_t)>& want_per_atom)
   time = static_cast<double>(step) * dt;
   per_atom_this_step = want_per_atom(step);
   compute_forces(per_atom_this_step);
+#ifndef NDEBUG
+  if (domain) domain->check_total(atoms);  // every step: no atom lost or duplicated across ranks
+#endif
   for (auto& fix : fixes) fix->post_force(*this);
   for (auto& fix : fixes) fix->final_integrate(*this);
   for (auto& fix : fixes) fix->end_of_step(*this);
@@ -117,7 +135,7 @@ double Simulation::kinetic_energy() const {
   double sum = 0;
 #pragma omp parallel for reduction(+ : sum) schedule(static)
   for (std::size_t i = 0; i < atoms.nlocal; ++i) sum += atoms.mass_of(i) * atoms.v[i].squaredNorm();
-  return 0.5 * mvv2e * sum;
+  return 0.5 * mvv2e * over_ranks({sum})[0];
 }
 
 ThermoState Simulation::thermo() const {
@@ -129,16 +147,25 @@ ThermoState Simulation::thermo() const {
     kin += m * (Voigt6() << v.x() * v.x(), v.y() * v.y(), v.z() * v.z(), v.x() * v.y(),
                 v.x() * v.z(), v.y() * v.z()).finished();
   }
+  Voigt6 virial = forces.virial;
+  double energy = forces.energy, count = static_cast<double>(atoms.nlocal);
+  if (domain) {  // every rank's partial sums, added in rank order
+    std::vector<double> partials{energy, count};
+    partials.insert(partials.end(), kin.data(), kin.data() + 6);
+    partials.insert(partials.end(), virial.data(), virial.data() + 6);
+    const std::vector<double> total = domain->sum(partials);
+    energy = total[0], count = total[1];
+    for (int c = 0; c < 6; ++c) kin[c] = total[2 + c], virial[c] = total[8 + c];
+  }
   kin *= mvv2e;
   s.kinetic = 0.5 * (kin[0] + kin[1] + kin[2]);
-  const double dof = std::max(3.0 * static_cast<double>(atoms.nlocal) - 3.0, 1.0);
+  const double dof = std::max(3.0 * count - 3.0, 1.0);
   s.temperature = 2.0 * s.kinetic / (dof * boltz);
-  s.potential = forces.energy;
+  s.potential = energy;
   s.volume = box.volume();
   // LAMMPS compute pressure: P = (N_dof k T + Σ r·f) / (3V); tensor uses Σ m v v + virial.
-  s.pressure = (dof * boltz * s.temperature + forces.virial[0] + forces.virial[1] + forces.virial[2]) /
-               (3.0 * s.volume) * nktv2p;
-  s.pressure_tensor = (kin + forces.virial) / s.volume * nktv2p;
+  s.pressure = (dof * boltz * s.temperature + virial[0] + virial[1] + virial[2]) / (3.0 * s.volume) * nktv2p;
+  s.pressure_tensor = (kin + virial) / s.volume * nktv2p;
   return s;
 }
 
@@ -167,6 +194,11 @@ void Simulation::check_health() const {
     const auto i = static_cast<std::size_t>(k);
     if (bad_atom(i)) first_bad = std::min(first_bad, k);
     vmax2 = std::max(vmax2, atoms.v[i].squaredNorm());
+  }
+  if (domain) {  // every rank stops when one finds a bad atom (it throws the diagnosis)
+    vmax2 = domain->max(vmax2);
+    if (domain->any(first_bad < n) && first_bad == n)
+      throw RunError(fmt::format("step {}: another rank found a lost or non-finite atom", step));
   }
   if (first_bad < n) {
     const auto i = static_cast<std::size_t>(first_bad);

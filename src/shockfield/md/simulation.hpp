@@ -14,6 +14,8 @@
 
 namespace shockfield::md {
 
+class Decomposition;  // md/decomposition.hpp
+
 struct ThermoState {
   double temperature = 0;  ///< K, 3N−3 degrees of freedom (LAMMPS compute temp)
   double kinetic = 0;      ///< eV
@@ -42,6 +44,9 @@ class Simulation {
   std::int64_t step = 0;
   double time = 0;        ///< ps, step·dt (set by advance)
   std::vector<std::unique_ptr<Fix>> fixes;
+  /// The rank grid of a decomposed run (md/decomposition.hpp); null on one rank. With it, `atoms`
+  /// are this rank's, and every step (and thermo) is collective.
+  std::shared_ptr<Decomposition> domain;
   bool per_atom_this_step = false;  ///< set by diagnostics that need per-atom energy/virial
   std::int64_t rebuilds = 0;
   /// Neighbour-list policy (LAMMPS `neigh_modify every N delay D check yes|no`): a rebuild is
@@ -80,6 +85,9 @@ class Simulation {
 
  private:
   bool needs_rebuild() const;
+  bool needs_rebuild_here() const;
+  // Σ over every rank's atoms in rank order (the local sums on one rank).
+  std::vector<double> over_ranks(std::vector<double> partials) const;
   void shrink_wrap();
   std::vector<Vec3> x_rebuild_;
   geometry::Box box_rebuild_;

@@ -18,6 +18,11 @@ double group_twice_kinetic(const Atoms& atoms, std::uint32_t group_bit, std::siz
     sum += atoms.mass_of(i) * atoms.v[i].squaredNorm();
     ++count;
   }
+  if (atoms.ranks) {  // a decomposed run: every rank's atoms, partial sums added in rank order
+    const std::vector<double> total = atoms.ranks->sum({sum, static_cast<double>(count)});
+    sum = total[0];
+    count = static_cast<std::size_t>(total[1]);
+  }
   return sum * mvv2e;
 }
 

@@ -5,6 +5,7 @@
 namespace shockfield::parallel {
 
 Communicator Communicator::world() { return Communicator(world_backend()); }
+Communicator Communicator::single() { return Communicator(single_rank_backend()); }
 int Communicator::rank() const { return backend_->rank(); }
 int Communicator::size() const { return backend_->size(); }
 void Communicator::broadcast(void* data, std::size_t bytes, int root) const { backend_->broadcast(data, bytes, root); }

@@ -35,6 +35,8 @@ class Communicator {
  public:
   /// Every rank of the run (MPI_COMM_WORLD); one rank in the serial build.
   static Communicator world();
+  /// One rank without MPI, in any build and under mpirun too: a method's serial path.
+  static Communicator single();
 
   int rank() const;
   int size() const;
