@@ -5,10 +5,17 @@
 # the three shear pressures to 1e-8 relative (thermo.csv has 10 significant digits: 5e-10, plus the
 # growth of round-off over 100 steps of a hot, chaotic crystal); final.data keeps the tilt and is
 # read by LAMMPS read_data (when lmp is installed) and by shockfield; the dumps carry LAMMPS's
-# triclinic header; npt and profiles along x refuse a tilted box by key (exit 2); fix deform tilt
-# rates follow LAMMPS; a crystal built into a tilted cell; simple shear gives LAMMPS's C44.
+# triclinic header; msst and profiles along x refuse a tilted box by key (exit 2); npt couple =
+# "tri" follows LAMMPS fix npt tri and resumes bitwise; fix deform tilt rates follow LAMMPS; a
+# crystal built into a tilted cell; simple shear gives LAMMPS's C44.
 source "$(dirname "$0")/lib.bash"
 set -e
+# cu_u3_case DATA_FILE TIMESTEP THERMO_EVERY: the head of a case of Cu_u3 copper read from a data
+# file (skin 1 Å), up to its [output] table.
+cu_u3_case() {
+  printf 'method = "md"\n[system]\ndata_file = "%s"\n[potential]\nstyle = "eam"\nfile = "Cu_u3.eam"\n' "$1"
+  printf '[md]\ntimestep = %s\nskin = 1.0\n[output]\nthermo_every = %s\n' "$2" "$3"
+}
 case_text="method = \"md\"
 [system]
 data_file = \"$ROOT/tests/fixtures/io/data_triclinic.data\"
@@ -49,15 +56,70 @@ mv "$WORK/out" "$WORK/first"
 run_expecting 0 "${case_text/$ROOT\/tests\/fixtures\/io\/data_triclinic.data/$WORK/first/final.data}"
 # What does not take a tilted box yet stops the case by key.
 expect_error "$case_text
-ensemble = \"npt\"
-temperature = 300
-pressure = 0" "stage[0]" "ensemble" "npt is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
+ensemble = \"msst\"
+[stage.msst]
+axis = \"z\"
+shock_speed = 60" "stage[0]" "ensemble" "msst is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
 expect_error "${case_text/thermo_every = 10/thermo_every = 10
 profile_every = 10
 profile_axis = \"x\"}" "output" "profile_axis" "profiles along x are not supported in a triclinic box"
+# npt with couple = "tri" through the case file (LAMMPS `fix npt temp 300 300 0.1 tri 1000 1000
+# 0.5`, fixtures/lammps_npt_tri, the peer of tests/unit/md_npt/test_npt_tri_lammps.cpp): 400 steps
+# of 256 atoms in a sheared cell follow LAMMPS in T, pe, press, the shear pressures, the edges and
+# econserved to 1e-9 (LAMMPS's own 1-vs-2-rank spread is 2e-11 relative in pe, 1e-13 bar/bar in
+# the pressures), and final.data has LAMMPS's final tilts to 1e-12 Å (spread 5e-14 Å).
+npt_fixture="$ROOT/tests/fixtures/lammps_npt_tri"
+npt_tri_case="$(cu_u3_case "$npt_fixture/start.data" 0.002 10)
+thermo_full_precision = true
+[[stage]]
+steps = 400
+ensemble = \"npt\"
+temperature = 300
+damping = 0.1
+pressure = 1000
+pressure_damping = 0.5
+couple = \"tri\""
+run_expecting 0 "$npt_tri_case"
+/usr/bin/python3 - "$WORK/out/thermo.csv" "$npt_fixture/tri.thermo" "$WORK/out/final.data" <<'PY'
+import csv, sys
+ours = {int(r["step"]): r for r in csv.DictReader(open(sys.argv[1]))}
+# tri.thermo: step temp pe ke etotal press pxx pyy pzz pxy pxz pyz lx ly lz xy xz yz vol econserve
+columns = {"temperature_K": 1, "pe_eV": 2, "press_bar": 5, "pxy_bar": 9, "pxz_bar": 10, "pyz_bar": 11,
+           "lx_A": 12, "ly_A": 13, "lz_A": 14, "econserved_eV": 19}
+worst, last = 0.0, None
+for line in open(sys.argv[2]):
+    values = [float(v) for v in line.split()]
+    row, last = ours[int(values[0])], values
+    for name, c in columns.items():
+        scale = 3e4 if name.startswith("p") and name != "pe_eV" else max(abs(values[c]), 1.0)  # pressures: of the 3e4 bar scale
+        worst = max(worst, abs(float(row[name]) - values[c]) / scale)
+tilt = next([float(w) for w in l.split()[:3]] for l in open(sys.argv[3]) if l.rstrip().endswith("xy xz yz"))
+tilt_error = max(abs(a - b) for a, b in zip(tilt, last[15:18]))
+print(f"npt tri: largest deviation from LAMMPS {worst:.2e}; final tilts {tilt} (LAMMPS {last[15:18]}, {tilt_error:.1e} A)")
+sys.exit(0 if worst < 1e-9 and tilt_error < 1e-12 else "FAIL: npt couple = tri deviates from LAMMPS fix npt tri")
+PY
+# Stopped at step 170 and resumed (the tilts' barostat rates from the checkpoint): the same
+# thermo.csv and final.data, byte for byte.
+stop_then_resume "$WORK/case.toml" "$WORK/npt_resumed" 170
+same_files "$WORK/out" "$WORK/npt_resumed" thermo.csv final.data
+echo "ok: npt tri resumed from its checkpoint equals the uninterrupted run"
+expect_error "$npt_tri_case
+pressure_dims = [\"x\", \"xy\"]" "stage[0]" "pressure_dims" "couple = \"tri\" barostats x, y, z, xy, xz and yz"
+expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"x\", \"shear\"]}" "stage[0]" "pressure_dims" \
+  "expected a list of \"x\", \"y\", \"z\", \"xy\", \"xz\", \"yz\""
+expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"xz\"]
+deform_tilt_rate = [0, 0.01, 0]}" "stage[0]" "deform_tilt_rate" "the xz tilt is barostatted by npt and deformed at once"
+# A tilt whose second dimension is not periodic cannot be barostatted (LAMMPS: "Cannot use fix npt
+# on a 2nd non-periodic dimension"): the crystal below in an orthogonal cell, fixed in y.
+lattice_case=$(cat "$ROOT/tests/cli/cases/tilted_fcc.toml")
+expect_error "${lattice_case/tilt = \[2.1, -3.3, 1.7\]/boundary = \"pfp\"}
+ensemble = \"npt\"
+temperature = 300
+pressure = 0
+pressure_dims = [\"x\", \"xy\"]" "stage[0]" "pressure_dims" "npt can only change the xy tilt when y is periodic"
+
 # A crystal built into a tilted cell: fcc [1-10] [11-2] [111], 4 x 3 x 2 repeats, tilts 2.1 -3.3 1.7 Å
 # (the lattice test's LAMMPS peer: 144 atoms); a tilt beyond LAMMPS's limit is refused by key.
-lattice_case=$(cat "$ROOT/tests/cli/cases/tilted_fcc.toml")
 run_expecting 0 "$lattice_case"
 grep -q "^144 atoms$" "$WORK/out/final.data" || fail "the tilted fcc has not 144 atoms: $(sed -n 3p "$WORK/out/final.data")"
 grep -q "^2.1 -3.3 1.7 xy xz yz$" "$WORK/out/final.data" || fail "final.data lost the tilt"
@@ -67,17 +129,7 @@ expect_error "${lattice_case/tilt = \[2.1/tilt = [6.1}" "system.lattice.tilt" "t
 # ke, etotal, press, pxy pxz pyz to 1e-8 (thermo.csv's 10 digits plus 200 steps of round-off
 # growth), and the final tilts equal LAMMPS's to 1e-12 Å.
 fixture="$ROOT/tests/fixtures/lammps_triclinic"
-run_expecting 0 "method = \"md\"
-[system]
-data_file = \"$fixture/deform_start.data\"
-[potential]
-style = \"eam\"
-file = \"Cu_u3.eam\"
-[md]
-timestep = 0.001
-skin = 1.0
-[output]
-thermo_every = 20
+run_expecting 0 "$(cu_u3_case "$fixture/deform_start.data" 0.001 20)
 [[stage]]
 steps = 200
 deform_rate = [0.01, 0, 0]
