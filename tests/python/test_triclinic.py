@@ -11,9 +11,10 @@
   coordinates in [0, 1)); a malformed file raises InputError naming the line.
 - structure() on that tilted dump with its Box equals `shockfield analyze atoms` on the file (which
   reads the tilt itself) column for column; given only (lo, hi) — the tilt dropped — the
-  coordination differs, so the test sees a lost tilt. voids(), the voxel field, domains and
-  profiles along x on the tilted cell raise InputError saying they need an orthogonal box; a
-  profile along z runs (its slabs are whole in a tilted cell).
+  coordination differs, so the test sees a lost tilt. Profiles along x and y bin the fractional
+  coordinate (numpy's count per slab parallel to the b-c or a-c face; the Cartesian axis gives
+  other counts); a profile along z runs. voids(), the voxel field and domains on the tilted cell
+  raise InputError saying they need an orthogonal box.
 """
 
 import os
@@ -122,12 +123,29 @@ class Triclinic(unittest.TestCase):
         profile = analysis.structure(x, box, adaptive_cna=True, profile=("z", 3.615))["profile"]
         self.assertEqual(int(profile["atoms"].sum()), len(x))
 
+    def test_profiles_along_x_and_y_bin_the_fractional_coordinate(self):
+        # the slabs are parallel to the cell face the other two edges span: per bin the atoms
+        # numpy counts on s·L (L = lx, ly; the positions are LAMMPS's lattice jittered by 0.05 Å,
+        # off the bin faces); on the Cartesian axis the counts differ (a tilt ignored is seen)
+        [(_, _, box, atoms)] = read_lammps_dump(DUMP)
+        x = np.ascontiguousarray(np.column_stack([atoms["x"], atoms["y"], atoms["z"]]))
+        s = box.fractional(x) % 1.0
+        for d, axis in enumerate("xy"):
+            length, width = box.lengths[d], 3.615
+            profile = analysis.structure(x, box, adaptive_cna=True, profile=(axis, width))["profile"]
+            nbins = len(profile)
+            expected = np.bincount(np.minimum(np.floor(s[:, d] * length / width).astype(int), nbins - 1), minlength=nbins)
+            np.testing.assert_array_equal(profile["atoms"].astype(int), expected, axis)
+            np.testing.assert_allclose(profile["lo"], box.lo[d] + width * np.arange(nbins), rtol=1e-15)
+            cartesian = np.bincount(np.clip(np.floor((x[:, d] - box.lo[d]) / width).astype(int), 0, nbins - 1),
+                                    minlength=nbins)
+            self.assertFalse(np.array_equal(expected, cartesian), axis)
+
     def test_axis_grids_refuse_a_tilted_cell(self):
         [(_, _, box, atoms)] = read_lammps_dump(DUMP)
         x = np.ascontiguousarray(np.column_stack([atoms["x"], atoms["y"], atoms["z"]]))
         for call in (lambda: analysis.voids(x, box, 2.0),
                      lambda: analysis.structure(x, box, adaptive_cna=True, voxel=2.0),
-                     lambda: analysis.structure(x, box, adaptive_cna=True, profile=("x", 3.615)),
                      lambda: analysis.structure(x, box, adaptive_cna=True, clusters=3.0, cluster_select="acna:!fcc",
                                                 domains=3.0)):
             with self.assertRaises(shockfield.InputError) as caught:

@@ -84,6 +84,9 @@ struct OutputSpec {
   /// Not a key: the case has an nphug stage (the thermo table and thermo.csv then carry the
   /// Hugoniostat columns).
   bool nphug = false;
+  /// Not a key: the box is triclinic or a stage tilts it (thermo.csv then carries the tilt
+  /// factors xy_A xz_A yz_A after neighbor_rebuilds).
+  bool tilted = false;
 };
 
 struct MdCase {

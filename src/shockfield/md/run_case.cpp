@@ -125,9 +125,13 @@ Prepared prepare(const Config& root, const RunOptions& options) {
     root.derive("piston_speed_override_A_ps", *options.piston_speed);
   }
   const auto stages = root.tables("stage");
-  // A box that is tilted, or that a stage will tilt (deform_tilt_rate).
+  // A box that is tilted, or that a stage will tilt (deform_tilt_rate, an npt barostat on a tilt).
   const bool tilted = p.system.box.triclinic() ||
-                      std::any_of(p.md.stages.begin(), p.md.stages.end(), [](const StageSpec& s) { return s.deform_tilt_rate.has_value(); });
+                      std::any_of(p.md.stages.begin(), p.md.stages.end(), [](const StageSpec& s) {
+                        return s.deform_tilt_rate.has_value() ||
+                               std::any_of(s.pressure_tilts.begin(), s.pressure_tilts.end(), [](bool on) { return on; });
+                      });
+  p.md.output.tilted = tilted;
   for (std::size_t k = 0; k < p.md.stages.size(); ++k) {
     try {
       p.stage_groups.push_back(p.system.groups.find(p.md.stages[k].group));
@@ -158,12 +162,6 @@ Prepared prepare(const Config& root, const RunOptions& options) {
       stages[k].fail(key, "npt needs at least one periodic dimension to barostat");
   }
   for (const auto& add : p.md.velocity_adds) p.add_groups.push_back(p.system.groups.find(add.group));
-  // Along z a tilted cell's slabs are whole (only c has a z component; the cross-section is lx·ly);
-  // along x or y the tilts mix the axes.
-  if (tilted && p.md.output.profile_every > 0 && p.md.output.profile_axis != 2)
-    root.table("output").fail("profile_axis", fmt::format("binned profiles along {} are not supported in a triclinic box (tilt "
-                                                          "{} {} {}) yet: use profile_axis = \"z\"", "xyz"[p.md.output.profile_axis],
-                                                          p.system.box.tilt[0], p.system.box.tilt[1], p.system.box.tilt[2]));
   root.check_unknown_keys();
 
   const Vec3 l = p.system.box.length();
