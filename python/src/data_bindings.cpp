@@ -25,16 +25,21 @@ py::array_t<T> triples(const std::vector<Triple>& rows, std::size_t n) {
   py::array_t<T> out({static_cast<py::ssize_t>(n), py::ssize_t{3}});
   auto a = out.template mutable_unchecked<2>();
   for (std::size_t i = 0; i < n; ++i)
-    for (py::ssize_t d = 0; d < 3; ++d) a(static_cast<py::ssize_t>(i), d) = static_cast<T>(rows[i][d]);
+    for (py::ssize_t d = 0; d < 3; ++d)
+      a(static_cast<py::ssize_t>(i), d) = static_cast<T>(rows[i][d]);
   return out;
 }
 
-py::tuple vec3(const Vec3& v) { return py::make_tuple(v.x(), v.y(), v.z()); }
+py::tuple vec3(const Vec3& v) {
+  return py::make_tuple(v.x(), v.y(), v.z());
+}
 
 py::dict read_data(const std::string& path, const std::string& boundary) {
-  if (boundary.size() != 3) throw py::value_error("boundary: expected 3 letters p, f or s, got '" + boundary + "'");
+  if (boundary.size() != 3)
+    throw py::value_error("boundary: expected 3 letters p, f or s, got '" + boundary + "'");
   std::array<geometry::Boundary, 3> codes{};
-  for (std::size_t d = 0; d < 3; ++d) codes[d] = geometry::parse_boundary(std::string(1, boundary[d]), "boundary");
+  for (std::size_t d = 0; d < 3; ++d)
+    codes[d] = geometry::parse_boundary(std::string(1, boundary[d]), "boundary");
   io::DataFile data;
   {
     py::gil_scoped_release release;
@@ -50,11 +55,13 @@ py::dict read_data(const std::string& path, const std::string& boundary) {
   out["hi"] = vec3(data.box.hi);
   out["tilt"] = vec3(data.box.tilt);
   out["boundary"] = data.box.boundary_codes();
-  out["ids"] = to_numpy(std::vector<std::int64_t>(a.id.begin(), a.id.begin() + static_cast<std::ptrdiff_t>(n)));
+  out["ids"] = to_numpy(
+      std::vector<std::int64_t>(a.id.begin(), a.id.begin() + static_cast<std::ptrdiff_t>(n)));
   out["types"] = types;
   out["positions"] = triples<double>(a.x, n);
   out["images"] = triples<std::int32_t>(a.image, n);
-  out["velocities"] = data.has_velocities ? py::object(triples<double>(a.v, n)) : py::object(py::none());
+  out["velocities"] =
+      data.has_velocities ? py::object(triples<double>(a.v, n)) : py::object(py::none());
   out["masses"] = to_numpy(a.mass);
   out["elements"] = a.type_names;
   return out;

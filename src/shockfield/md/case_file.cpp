@@ -90,8 +90,9 @@ StageSpec read_stage(const Config& t, std::size_t index) {
     s.couple_iso = couple == "iso";
     if (couple == "tri") {  // LAMMPS `tri`: x y z xy xz yz, each on its own
       if (t.has("pressure_dims"))
-        t.fail("pressure_dims", "couple = \"tri\" barostats x, y, z, xy, xz and yz (LAMMPS tri); for a subset give "
-                                "pressure_dims with couple = \"aniso\" or \"iso\"");
+        t.fail("pressure_dims",
+               "couple = \"tri\" barostats x, y, z, xy, xz and yz (LAMMPS tri); for a subset give "
+               "pressure_dims with couple = \"aniso\" or \"iso\"");
       s.pressure_dims = std::array<bool, 3>{true, true, true};
       s.pressure_tilts = {true, true, true};
     }
@@ -100,9 +101,12 @@ StageSpec read_stage(const Config& t, std::size_t index) {
       const std::array<std::string, 3> tilts{"xy", "xz", "yz"};
       for (const auto& dim : t.get_strings("pressure_dims")) {
         const auto tilt = std::find(tilts.begin(), tilts.end(), dim);
-        if (tilt != tilts.end()) s.pressure_tilts[static_cast<std::size_t>(tilt - tilts.begin())] = true;
-        else if (dim == "x" || dim == "y" || dim == "z") (*s.pressure_dims)[dim[0] - 'x'] = true;
-        else t.fail("pressure_dims", "expected a list of \"x\", \"y\", \"z\", \"xy\", \"xz\", \"yz\"");
+        if (tilt != tilts.end())
+          s.pressure_tilts[static_cast<std::size_t>(tilt - tilts.begin())] = true;
+        else if (dim == "x" || dim == "y" || dim == "z")
+          (*s.pressure_dims)[dim[0] - 'x'] = true;
+        else
+          t.fail("pressure_dims", "expected a list of \"x\", \"y\", \"z\", \"xy\", \"xz\", \"yz\"");
       }
     }
   }

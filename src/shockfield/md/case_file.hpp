@@ -32,7 +32,8 @@ struct StageSpec {
   double pressure_damping = 1.0;   ///< ps (npt)
   bool couple_iso = false;         ///< npt couple = "iso" (else "aniso" or "tri")
   std::optional<std::array<bool, 3>> pressure_dims;  ///< npt barostatted dimensions; default: the periodic ones
-  std::array<bool, 3> pressure_tilts{false, false, false};  ///< npt barostatted tilt factors xy, xz, yz
+  std::array<bool, 3> pressure_tilts{false, false,
+                                     false};  ///< npt barostatted tilt factors xy, xz, yz
   std::optional<PistonSpec> piston;
   std::optional<Vec3> deform_rate; ///< 1/ps per dimension
   std::optional<Vec3> deform_tilt_rate;  ///< 1/ps per tilt factor xy, xz, yz (LAMMPS fix deform xy erate ...)

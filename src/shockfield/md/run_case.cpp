@@ -53,7 +53,9 @@ struct Prepared {
 void refuse_with_tilt(const StageSpec& s, const Config& stage, const geometry::Box& box) {
   const std::string tilt = fmt::format("a triclinic box (tilt {} {} {})", box.tilt[0], box.tilt[1], box.tilt[2]);
   if (s.ensemble == "msst" || s.ensemble == "nphug")
-    stage.fail("ensemble", fmt::format("{} is not supported in {} yet: use nve, langevin, nvt, npt or minimize", s.ensemble, tilt));
+    stage.fail("ensemble",
+               fmt::format("{} is not supported in {} yet: use nve, langevin, nvt, npt or minimize",
+                           s.ensemble, tilt));
   if (s.ensemble == "minimize" && s.minimize.relax_box != std::array<bool, 3>{false, false, false})
     stage.fail("relax_box", fmt::format("relaxing the box is not supported in {} yet", tilt));
   if (s.piston) stage.fail("piston", fmt::format("a piston is not supported in {} yet", tilt));
@@ -68,15 +70,24 @@ void check_barostatted_tilts(const StageSpec& s, const Config& stage, const geom
   for (std::size_t t = 0; t < 3; ++t) {
     if (!s.pressure_tilts[t]) continue;
     if (!box.periodic(second[t]))
-      stage.fail(key, fmt::format("npt can only change the {} tilt when {} is periodic", names[t], "xyz"[second[t]]));
+      stage.fail(key, fmt::format("npt can only change the {} tilt when {} is periodic", names[t],
+                                  "xyz"[second[t]]));
     if (s.deform_tilt_rate && (*s.deform_tilt_rate)[static_cast<int>(t)] != 0)
-      stage.fail("deform_tilt_rate", fmt::format("the {} tilt is barostatted by npt and deformed at once (LAMMPS: Cannot use fix "
-                                                 "npt and fix deform on same component of stress tensor)", names[t]));
+      stage.fail(
+          "deform_tilt_rate",
+          fmt::format(
+              "the {} tilt is barostatted by npt and deformed at once (LAMMPS: Cannot use fix "
+              "npt and fix deform on same component of stress tensor)",
+              names[t]));
   }
   for (int d = 0; d < 3; ++d)
     if ((*s.pressure_dims)[d] && s.deform_rate && (*s.deform_rate)[d] != 0)
-      stage.fail("deform_rate", fmt::format("{} is barostatted by npt and deformed at once (LAMMPS: Cannot use fix npt and "
-                                            "fix deform on same component of stress tensor)", "xyz"[d]));
+      stage.fail(
+          "deform_rate",
+          fmt::format(
+              "{} is barostatted by npt and deformed at once (LAMMPS: Cannot use fix npt and "
+              "fix deform on same component of stress tensor)",
+              "xyz"[d]));
 }
 
 // Masses and element names of the atom types. A mass: the case's masses = [...] (LAMMPS `mass`
@@ -129,7 +140,8 @@ Prepared prepare(const Config& root, const RunOptions& options) {
   const bool tilted = p.system.box.triclinic() ||
                       std::any_of(p.md.stages.begin(), p.md.stages.end(), [](const StageSpec& s) {
                         return s.deform_tilt_rate.has_value() ||
-                               std::any_of(s.pressure_tilts.begin(), s.pressure_tilts.end(), [](bool on) { return on; });
+                               std::any_of(s.pressure_tilts.begin(), s.pressure_tilts.end(),
+                                           [](bool on) { return on; });
                       });
   p.md.output.tilted = tilted;
   for (std::size_t k = 0; k < p.md.stages.size(); ++k) {
@@ -151,7 +163,9 @@ Prepared prepare(const Config& root, const RunOptions& options) {
     if (s.ensemble != "npt") continue;
     const geometry::Box& box = p.system.box;
     // couple = "tri" sets the dimensions without pressure_dims
-    const char* key = stages[k].has("pressure_dims") ? "pressure_dims" : s.pressure_dims ? "couple" : "ensemble";
+    const char* key = stages[k].has("pressure_dims") ? "pressure_dims"
+                      : s.pressure_dims              ? "couple"
+                                                     : "ensemble";
     if (!s.pressure_dims) s.pressure_dims = std::array<bool, 3>{box.periodic(0), box.periodic(1), box.periodic(2)};
     for (int d = 0; d < 3; ++d)
       if ((*s.pressure_dims)[d] && !box.periodic(d))
@@ -161,7 +175,8 @@ Prepared prepare(const Config& root, const RunOptions& options) {
         s.pressure_tilts == std::array<bool, 3>{false, false, false})
       stages[k].fail(key, "npt needs at least one periodic dimension to barostat");
   }
-  for (const auto& add : p.md.velocity_adds) p.add_groups.push_back(p.system.groups.find(add.group));
+  for (const auto& add : p.md.velocity_adds)
+    p.add_groups.push_back(p.system.groups.find(add.group));
   root.check_unknown_keys();
 
   const Vec3 l = p.system.box.length();
@@ -182,8 +197,8 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   else if (s.ensemble == "nvt") sim.fixes.push_back(std::make_unique<FixNoseHoover>(s.temperature, s.damping, s.chain, group));
   else if (s.ensemble == "npt")
     sim.fixes.push_back(std::make_unique<FixNoseHooverNpt>(
-        NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims, s.couple_iso, s.chain,
-                    std::nullopt, false, s.pressure_tilts},
+        NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims,
+                    s.couple_iso, s.chain, std::nullopt, false, s.pressure_tilts},
         group));
   else if (s.ensemble == "msst") sim.fixes.push_back(std::make_unique<FixMsst>(s.msst, group));
   else if (s.ensemble == "nphug") sim.fixes.push_back(std::make_unique<FixNphug>(s.nphug, group));

@@ -10,25 +10,45 @@
 // every few hundred fs. The bound is that growth as LAMMPS shows it between 1 and 2 MPI ranks.
 #include <gtest/gtest.h>
 
-#include "support/scratch_path.hpp"
-
 #include <filesystem>
 
 #include "../md/lammps_thermo_rows.hpp"
 #include "npt_fixture.hpp"
 #include "shockfield/io/lammps_data.hpp"
 #include "shockfield/md/checkpoint.hpp"
+#include "support/scratch_path.hpp"
 
 using namespace shockfield;
 using namespace shockfield::md;
 
 namespace {
 
-enum Column { kStep, kTemp, kPe, kKe, kEtotal, kPress, kPxx, kPyy, kPzz, kPxy, kPxz, kPyz, kLx, kLy, kLz,
-              kXy, kXz, kYz, kVol, kEconserve, kColumns };
-const std::array<const char*, kColumns> kNames{"step", "temp", "pe", "ke", "etotal", "press", "pxx", "pyy", "pzz",
-                                               "pxy", "pxz", "pyz", "lx", "ly", "lz", "xy", "xz", "yz", "vol",
-                                               "econserve"};
+enum Column {
+  kStep,
+  kTemp,
+  kPe,
+  kKe,
+  kEtotal,
+  kPress,
+  kPxx,
+  kPyy,
+  kPzz,
+  kPxy,
+  kPxz,
+  kPyz,
+  kLx,
+  kLy,
+  kLz,
+  kXy,
+  kXz,
+  kYz,
+  kVol,
+  kEconserve,
+  kColumns
+};
+const std::array<const char*, kColumns> kNames{
+    "step", "temp", "pe", "ke", "etotal", "press", "pxx", "pyy", "pzz", "pxy",
+    "pxz",  "pyz",  "lx", "ly", "lz",     "xy",    "xz",  "yz",  "vol", "econserve"};
 using Row = lammps_rows::Row<kColumns>;
 
 Row thermo_row(const Simulation& sim) {
@@ -36,8 +56,25 @@ Row thermo_row(const Simulation& sim) {
   const Vec3 l = sim.box.length(), tilt = sim.box.tilt;
   const double etotal = t.kinetic + t.potential;
   const auto& p = t.pressure_tensor;
-  return {static_cast<double>(sim.step), t.temperature, t.potential, t.kinetic, etotal, t.pressure, p[0], p[1], p[2],
-          p[3], p[4], p[5], l.x(), l.y(), l.z(), tilt.x(), tilt.y(), tilt.z(), t.volume,
+  return {static_cast<double>(sim.step),
+          t.temperature,
+          t.potential,
+          t.kinetic,
+          etotal,
+          t.pressure,
+          p[0],
+          p[1],
+          p[2],
+          p[3],
+          p[4],
+          p[5],
+          l.x(),
+          l.y(),
+          l.z(),
+          tilt.x(),
+          tilt.y(),
+          tilt.z(),
+          t.volume,
           etotal - sim.fixes[0]->energy_added()};
 }
 
@@ -78,8 +115,8 @@ std::vector<Row> expect_follows_lammps(const std::string& name, const NptSetting
   lammps_rows::expect_follows(ours, ref, np2, kNames, 10.0, 1e-13);
   const double drift_ours = ours.back()[kEconserve] - ours.front()[kEconserve];
   const double drift_lammps = ref.back()[kEconserve] - ref.front()[kEconserve];
-  std::printf("%s: conserved-quantity drift over 400 steps: ours %.6e eV, LAMMPS %.6e eV\n", name.c_str(), drift_ours,
-              drift_lammps);
+  std::printf("%s: conserved-quantity drift over 400 steps: ours %.6e eV, LAMMPS %.6e eV\n",
+              name.c_str(), drift_ours, drift_lammps);
   return ours;
 }
 
@@ -94,7 +131,8 @@ TEST(NptTriLammps, TriBarostatsTheSixComponents) {
   // max |ΔH| over the rows within 1e-4 eV/atom (measured 3e-5; the tilts' ½Wω̇² reach ~2e-3
   // eV/atom, so forgetting them or their chain would break it).
   double dev = 0;
-  for (const Row& r : ours) dev = std::max(dev, std::fabs(r[kEconserve] - ours.front()[kEconserve]));
+  for (const Row& r : ours)
+    dev = std::max(dev, std::fabs(r[kEconserve] - ours.front()[kEconserve]));
   EXPECT_LT(dev / 256.0, 1e-4);
 }
 

@@ -1,8 +1,9 @@
 #include "shockfield/md/fixes/nose_hoover_npt.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/units.hpp"
@@ -63,7 +64,8 @@ void FixNoseHooverNpt::final_integrate(Simulation& sim) {
 }
 
 bool FixNoseHooverNpt::tilts_barostatted() const {
-  return std::any_of(settings_.tilt_dims.begin(), settings_.tilt_dims.end(), [](bool on) { return on; });
+  return std::any_of(settings_.tilt_dims.begin(), settings_.tilt_dims.end(),
+                     [](bool on) { return on; });
 }
 
 void FixNoseHooverNpt::barostat_chain_step(const Simulation& sim) {
@@ -129,11 +131,13 @@ void FixNoseHooverNpt::barostat_kick(Simulation& sim) {
   // Eq. (5): the shear pressures P_xy, P_xz, P_yz (Voigt 3, 4, 5) against a zero target.
   for (int t = 0; t < 3; ++t)
     if (settings_.tilt_dims[t])
-      tilt_omega_dot_[t] += 0.5 * sim.dt * thermo.pressure_tensor[3 + t] * thermo.volume / nktv2p / mass_;
+      tilt_omega_dot_[t] +=
+          0.5 * sim.dt * thermo.pressure_tensor[3 + t] * thermo.volume / nktv2p / mass_;
 }
 
 void FixNoseHooverNpt::barostat_velocity_scaling(Simulation& sim) const {
-  if (tilts_barostatted()) {  // eq. (6) between two quarter steps of the diagonal (LAMMPS nh_v_press)
+  // With barostatted tilts: eq. (6) between two quarter steps of the diagonal (LAMMPS nh_v_press).
+  if (tilts_barostatted()) {
     Vec3 quarter;
     for (int d = 0; d < 3; ++d) quarter[d] = std::exp(-0.25 * sim.dt * (omega_dot_[d] + mu_));
     const double half_dt = 0.5 * sim.dt;
@@ -215,13 +219,15 @@ void FixNoseHooverNpt::dilate_triclinic(Simulation& sim) {
   }
   tilt_half();
   try {
-    box.check_tilt(fmt::format("step {}: npt (LAMMPS would flip the cell here; shockfield does not)", sim.step));
+    box.check_tilt(fmt::format(
+        "step {}: npt (LAMMPS would flip the cell here; shockfield does not)", sim.step));
   } catch (const InputError& e) {
     throw RunError(e.what());
   }
   Atoms& a = sim.atoms;
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < a.nlocal; ++i) a.x[i] = box.from_fractional(old.to_fractional(a.x[i]));
+  for (std::size_t i = 0; i < a.nlocal; ++i)
+    a.x[i] = box.from_fractional(old.to_fractional(a.x[i]));
   volume_ = box.volume();
 }
 
@@ -241,7 +247,10 @@ FixState FixNoseHooverNpt::state() const {
              {"mu", "1/ps", {mu_}},
              {"volume0", "Angstrom^3", {volume0_}},
              {"volume", "Angstrom^3", {volume_}}};
-  if (tilts_barostatted()) s.push_back({"omega_dot_tilt", "1/ps", {tilt_omega_dot_.x(), tilt_omega_dot_.y(), tilt_omega_dot_.z()}});
+  if (tilts_barostatted())
+    s.push_back({"omega_dot_tilt",
+                 "1/ps",
+                 {tilt_omega_dot_.x(), tilt_omega_dot_.y(), tilt_omega_dot_.z()}});
   atom_chain_.save(s, "thermostat");
   barostat_chain_.save(s, "barostat_chain");
   return s;
@@ -251,7 +260,8 @@ void FixNoseHooverNpt::restore(const FixState& s) {
   omega_dot_ = Vec3(fix_state_values(s, name(), "omega_dot", 3).data());
   mass_ = fix_state_value(s, name(), "barostat_mass");
   mu_ = fix_state_value(s, name(), "mu");
-  if (tilts_barostatted()) tilt_omega_dot_ = Vec3(fix_state_values(s, name(), "omega_dot_tilt", 3).data());
+  if (tilts_barostatted())
+    tilt_omega_dot_ = Vec3(fix_state_values(s, name(), "omega_dot_tilt", 3).data());
   volume0_ = fix_state_value(s, name(), "volume0");
   volume_ = fix_state_value(s, name(), "volume");
   atom_chain_.restore(s, name(), "thermostat");

@@ -61,7 +61,8 @@ struct NptSettings {
   int chain = 3;                  ///< length of both chains
   std::optional<int> pressure_chain;  ///< barostat chain length if not `chain` (LAMMPS pchain; 0: none)
   bool lammps_mtk = false;        ///< eq. (4) instead of (1–2) for a subset of dimensions
-  std::array<bool, 3> tilt_dims{false, false, false};  ///< barostatted tilt factors xy, xz, yz, eq. (5)
+  std::array<bool, 3> tilt_dims{false, false,
+                                false};  ///< barostatted tilt factors xy, xz, yz, eq. (5)
 };
 
 class FixNoseHooverNpt : public Fix {
