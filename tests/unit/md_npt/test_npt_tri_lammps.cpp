@@ -14,6 +14,7 @@
 
 #include "../md/lammps_thermo_rows.hpp"
 #include "npt_fixture.hpp"
+#include "shockfield/core/error.hpp"
 #include "shockfield/io/lammps_data.hpp"
 #include "shockfield/md/checkpoint.hpp"
 #include "support/scratch_path.hpp"
@@ -169,4 +170,26 @@ TEST(NptTriDynamics, ResumesBitwiseFromACheckpoint) {
     ASSERT_EQ(resumed.atoms.v[i], straight.atoms.v[i]) << "atom " << i;
   }
   std::filesystem::remove(file);
+}
+
+// A tilt driven past half its edge stops the run with a message saying why (LAMMPS would flip the
+// cell; shockfield does not): the xy barostat rate set to 150/ps moves xy by ~4 Å in one step of
+// 2 fs, from 4.215 Å past lx/2 = 7.23 Å (no barostat chain, which would damp the rate at once).
+TEST(NptTriDynamics, ATiltPastHalfAnEdgeStopsTheRun) {
+  NptSettings s = settings(false, {true, true, true});
+  s.pressure_chain = 0;
+  Simulation sim = from_start(s);
+  FixState state = sim.fixes[0]->state();
+  for (FixStateItem& item : state)
+    if (item.name == "omega_dot_tilt") item.values = {150.0, 0.0, 0.0};
+  sim.fixes[0]->restore(state);
+  try {
+    npt_test::run(sim, 1);
+    FAIL() << "no error; xy = " << sim.box.tilt.x();
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("LAMMPS would flip the cell here; shockfield does not"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("tilt xy"), std::string::npos) << e.what();
+  }
 }
