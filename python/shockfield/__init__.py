@@ -13,11 +13,12 @@ numpy arrays in-process (module ``shockfield._core``). Documentation: docs/pytho
 """
 
 from .errors import InputError, RunError, StaleViewError, StopRequested
+from .box import Box
 from .case import Case, shockfield_command
 from .run import Run
 from .simulation import Simulation
 from . import analysis, sweep
 
 __version__ = analysis.__version__
-__all__ = ["Case", "Run", "Simulation", "analysis", "InputError", "RunError", "StaleViewError", "StopRequested",
+__all__ = ["Box", "Case", "Run", "Simulation", "analysis", "InputError", "RunError", "StaleViewError", "StopRequested",
            "shockfield_command", "sweep"]

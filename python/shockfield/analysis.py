@@ -10,6 +10,7 @@ all cores). Estimators and conventions: docs/analysis-minkowski.md (Xu et al. (2
 
 import numpy as np
 
+from .box import Box
 from .errors import InputError  # noqa: F401  (raised by _core under this name)
 
 try:
@@ -128,7 +129,12 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     """Per-atom structure of atoms, as ``shockfield analyze atoms`` computes it for one frame
     (docs/analysis-atoms.md), over one neighbour pass.
 
-    ``positions``: float64 C-contiguous (n, 3) in Å; ``box``: ((xlo, ylo, zlo), (xhi, yhi, zhi));
+    ``positions``: float64 C-contiguous (n, 3) in Å; ``box``: ((xlo, ylo, zlo), (xhi, yhi, zhi)) or,
+    for a LAMMPS restricted triclinic cell, (lo, hi, (xy, xz, yz)) — a shockfield.box.Box, as
+    ``read_lammps_dump`` and ``read_lammps_data`` give, fits (lo, hi: the cell's corners, not its
+    bounding box). In a tilted cell the neighbour analyses, clusters and profiles along z run;
+    profiles along x or y, domains, voxels and Burgers circuits raise InputError (they grid or bin
+    along the axes);
     ``boundary``: LAMMPS codes per axis ("ppp", "pps", ...); ``types`` 1-based and ``ids``
     (default all 1 and 1..n). Analyses (at least one): ``coordination`` (cutoff Å), ``cna``
     (conventional CNA cutoff Å), ``adaptive_cna``, ``csp`` ("fcc", "bcc" or an even N),
@@ -175,7 +181,7 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
     ny, nx), ``origin``, ``spacing``, ``stretch``, ``empty_nodes``, ``selected``: voxels_<timestep>.vti);
     with a tracker ``track`` (int32 per atom: its cluster's track, 0 none; the dump column).
     """
-    lo, hi = box
+    box = Box.coerce(box)
     if domains_surface not in ("rolling", "packing"):
         raise ValueError(f"domains_surface: expected 'rolling' or 'packing', got {domains_surface!r}")
     profile_axis, profile_width = ("", 0.0) if profile is None else (str(profile[0]), float(profile[1]))
@@ -197,7 +203,7 @@ def structure(positions, box, boundary="ppp", types=None, ids=None, coordination
                    "orient": [tuple(int(v) for v in row) for row in burgers_orient], "lattice": burgers_lattice,
                    "band": burgers_band, "slab": burgers_slab, "spacing": burgers_spacing}
     r = _require_core().atoms_structure(
-        positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
+        positions, box.lo.tolist(), box.hi.tolist(), box.tilt.tolist(), boundary,
         None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
         coordination, cna, bool(adaptive_cna), None if csp is None else str(csp), bond_pairs, bool(diamond),
         clusters, cluster_select, int(cluster_min_size), domains, domains_surface, int(domains_min_atoms),
@@ -265,9 +271,9 @@ def voids(positions, box, probe, boundary="ppp", types=None, ids=None, atomic_vo
     ``surfaces`` (dict ``points`` (atoms and images), ``triangles``: voids_<timestep>.vtp's
     triangles, normals out of the voids). Runs with the GIL released, on one thread.
     """
-    lo, hi = box
+    box = Box.coerce(box)
     r = _require_core().atoms_voids(
-        positions, [float(v) for v in lo], [float(v) for v in hi], boundary,
+        positions, box.lo.tolist(), box.hi.tolist(), box.tilt.tolist(), boundary,
         None if types is None else np.asarray(types).tolist(), None if ids is None else np.asarray(ids).tolist(),
         float(probe), None if atomic_volume is None else float(atomic_volume),
         None if margin is None else float(margin), float(min_volume))

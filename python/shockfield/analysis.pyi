@@ -5,8 +5,12 @@ from typing import Optional, Sequence, Union
 import numpy as np
 import numpy.typing as npt
 
+from .box import Box
+
 __version__: str
 Field = npt.NDArray[np.float64]
+# (lo, hi), (lo, hi, (xy, xz, yz)) or a Box
+BoxLike = Union[Box, tuple[Sequence[float], Sequence[float]], tuple[Sequence[float], Sequence[float], Sequence[float]]]
 
 def minkowski(field: Field, thresholds: Optional[Sequence[float]] = None, count: Optional[int] = None,
               boundary: str = "periodic", connectivity: int = 8, adjacency: int = 26,
@@ -22,7 +26,7 @@ def statistics(field: Field, bins: int = 64, dimension: Optional[int] = None,
                threads: int = 0) -> dict[str, object]: ...
 def gaussian_random_field(shape: Sequence[int], correlation_length: float, seed: int = 1) -> Field: ...
 def structure(positions: npt.NDArray[np.float64],
-              box: tuple[Sequence[float], Sequence[float]], boundary: str = "ppp",
+              box: BoxLike, boundary: str = "ppp",
               types: Optional[Sequence[int]] = None, ids: Optional[Sequence[int]] = None,
               coordination: Optional[float] = None, cna: Optional[float] = None, adaptive_cna: bool = False,
               csp: Optional[Union[str, int]] = None, bond_pairs: Optional[float] = None, diamond: bool = False,
@@ -42,7 +46,7 @@ class ClusterTracker:
     def __init__(self) -> None: ...
     def tracks(self, origin: int = 0, dt: float = 1.0) -> np.ndarray: ...
     def growth(self, origin: int = 0, dt: float = 1.0) -> np.ndarray: ...
-def voids(positions: npt.NDArray[np.float64], box: tuple[Sequence[float], Sequence[float]], probe: float,
+def voids(positions: npt.NDArray[np.float64], box: BoxLike, probe: float,
           boundary: str = "ppp", types: Optional[Sequence[int]] = None, ids: Optional[Sequence[int]] = None,
           atomic_volume: Optional[float] = None, margin: Optional[float] = None,
           min_volume: float = 0.0) -> dict[str, object]: ...

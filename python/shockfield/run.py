@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .box import Box
 from .errors import InputError
 
 
@@ -111,12 +112,12 @@ class Frame:
     """One output frame: ``time`` (the method's unit), ``step`` (None for fields), ``data`` (a
     field as an array shaped (ny, nx) or (nz, ny, nx), void cells NaN; atoms, particles or a
     profile as a structured array of the file's columns or arrays), ``file``, and for dumps
-    ``box`` ((3, 2) bounds)."""
+    ``box`` (a shockfield.box.Box: lo, hi, tilt; ``box.cell`` the edge vectors)."""
     time: float
     data: np.ndarray
     file: str
     step: int = None
-    box: np.ndarray = None
+    box: Box = None
     extra: dict = field(default_factory=dict)
 
 
@@ -124,7 +125,9 @@ class Frame:
 def read_lammps_dump(path):
     """The frames of a LAMMPS text dump ([ITEM: UNITS] / [ITEM: TIME] / ITEM: TIMESTEP / [TIME] /
     NUMBER OF ATOMS / BOX BOUNDS / ATOMS ...) as (step, time or None, box, atoms structured array)
-    tuples; a column of names (``element``) is a string field, every other column float."""
+    tuples; ``box`` is a shockfield.box.Box (lo, hi, tilt): the cell, converted from the bounding
+    box and tilts of ``ITEM: BOX BOUNDS xy xz yz`` as LAMMPS's read_dump does; a column of names
+    (``element``) is a string field, every other column float."""
     lines = pathlib.Path(path).read_text().splitlines()
     frames, i = [], 0
     try:
@@ -140,7 +143,10 @@ def read_lammps_dump(path):
             if lines[i].startswith("ITEM: TIME"):
                 time, i = float(lines[i + 1]), i + 2
             count = int(lines[i + 1])  # lines[i]: ITEM: NUMBER OF ATOMS, then ITEM: BOX BOUNDS
-            box = np.array([[float(v) for v in lines[i + 3 + k].split()[:2]] for k in range(3)])
+            # BOX BOUNDS [xy xz yz]: per line the bounds and, for a tilted cell, a tilt (xy, xz, yz)
+            tilted = "xy xz yz" in lines[i + 2]
+            bounds = [[float(v) for v in lines[i + 3 + k].split()[:3 if tilted else 2]] for k in range(3)]
+            box = Box.from_bounds([b[:2] for b in bounds], [b[2] for b in bounds] if tilted else (0.0, 0.0, 0.0))
             names = lines[i + 6].split()[2:]
             rows = [lines[i + 7 + a].split() for a in range(count)]
             if any(len(row) != len(names) for row in rows):
@@ -155,6 +161,22 @@ def read_lammps_dump(path):
     except (IndexError, ValueError) as error:
         raise InputError(f"{path}: not a LAMMPS text dump near line {i + 1} ({error})") from None
     return frames
+
+
+def read_lammps_data(path, boundary="ppp"):
+    """A LAMMPS data file (atom style atomic), read by the library's parser (``[system] data_file``'s,
+    docs/md-system.md; needs the compiled module), as a dict: ``box`` (a shockfield.box.Box: lo,
+    hi, tilt (xy, xz, yz) of LAMMPS's restricted triclinic cell), ``boundary`` (the LAMMPS
+    ``boundary`` codes the file is read with, e.g. "ppp"), ``title``, ``ids`` (int64), ``types``
+    (int32, 1-based), ``positions`` ((n, 3) Å), ``images`` ((n, 3) int32), ``velocities`` ((n, 3)
+    Å/ps; None without a Velocities section), ``masses`` (per type, amu; 0 where the file gives
+    none) and ``elements`` (per type, "" where none). As LAMMPS read_data does, atoms outside a
+    periodic box are mapped into it (images updated); a malformed file raises InputError naming
+    the file and the line."""
+    from .analysis import _require_core
+    r = _require_core().read_lammps_data(str(path), boundary)
+    r["box"] = Box.of(r.pop("lo"), r.pop("hi"), r.pop("tilt"))
+    return r
 
 
 class Run:

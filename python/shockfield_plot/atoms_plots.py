@@ -80,7 +80,7 @@ def read_frame(path, k):
         step, _, box, atoms = frames[k]
     except IndexError:
         raise InputError(f"{path}: --frame {k}: the file has {len(frames)} frames") from None
-    return step, box[:, 0], box[:, 1], {name: atoms[name] for name in atoms.dtype.names}
+    return step, box.lo, box.hi, {name: atoms[name] for name in atoms.dtype.names}
 
 
 def slice_plot(dump, out, axis, at, thickness, column, frame):

@@ -47,10 +47,13 @@ py::dict counts(const aa::StructureCounts& c) {
   return d;
 }
 
-// The frame of `positions` (n, 3) in the box lo/hi with `boundary` ("ppp"), `types` (1-based)
+// The frame of `positions` (n, 3) in the box lo/hi/tilt (LAMMPS's restricted triclinic cell;
+// tilt 0 0 0: orthogonal) with `boundary` ("ppp"), `types` (1-based)
 // and `ids` (None: all type 1, ids 1..n); TypeError / ValueError for arrays of the wrong kind.
-aa::AtomFrame make_frame(const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
-                         const std::string& boundary, const py::object& types, const py::object& ids) {
+aa::AtomFrame make_frame(const py::array& positions, const std::vector<double>& lo,
+                         const std::vector<double>& hi, const std::vector<double>& tilt,
+                         const std::string& boundary, const py::object& types,
+                         const py::object& ids) {
   if (positions.dtype().num() != py::dtype::of<double>().num())
     throw py::type_error("positions: expected dtype float64, got " + std::string(py::str(positions.dtype())));
   if (positions.ndim() != 2 || positions.shape(1) != 3)
@@ -59,7 +62,8 @@ aa::AtomFrame make_frame(const py::array& positions, const std::vector<double>& 
                               positions.shape(), positions.shape() + positions.ndim()))))));
   if (!(positions.flags() & py::array::c_style))
     throw py::value_error("positions: the array is not C-contiguous; pass numpy.ascontiguousarray(positions)");
-  if (lo.size() != 3 || hi.size() != 3) throw py::value_error("box: expected lo and hi of 3 values each");
+  if (lo.size() != 3 || hi.size() != 3 || tilt.size() != 3)
+    throw py::value_error("box: expected lo, hi and tilt of 3 values each");
   if (boundary.size() != 3) throw py::value_error("boundary: expected 3 letters p, f or s, got '" + boundary + "'");
   aa::AtomFrame frame;
   for (int d = 0; d < 3; ++d) {
@@ -67,7 +71,10 @@ aa::AtomFrame make_frame(const py::array& positions, const std::vector<double>& 
     frame.box.hi[d] = hi[static_cast<std::size_t>(d)];
     frame.box.boundary[static_cast<std::size_t>(d)] =
         geometry::parse_boundary(std::string(1, boundary[static_cast<std::size_t>(d)]), "boundary");
+    frame.box.tilt[d] = tilt[static_cast<std::size_t>(d)];
   }
+  if (frame.box.triclinic())
+    frame.box.check_tilt("box");  // LAMMPS's limits, as the dump reader checks them
   const auto n = static_cast<std::size_t>(positions.shape(0));
   if (!types.is_none()) frame.types = types.cast<std::vector<int>>();
   if (!ids.is_none()) frame.ids = ids.cast<std::vector<std::int64_t>>();
@@ -258,14 +265,15 @@ py::dict voxel_dict(const aa::VoxelField& v) {
   return out;
 }
 
-py::dict structure(const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
+py::dict structure(const py::array& positions, const std::vector<double>& lo,
+                   const std::vector<double>& hi, const std::vector<double>& tilt,
                    const std::string& boundary, const py::object& types, const py::object& ids,
                    std::optional<double> coordination, std::optional<double> cna, bool adaptive_cna,
                    const py::object& csp, std::optional<double> bond_pairs, bool diamond,
-                   const ClusterOptions& c, const ExcessOptions& e, const py::object& burgers, const py::object& voxel,
-                   Tracker* tracker, long long timestep, int threads) {
+                   const ClusterOptions& c, const ExcessOptions& e, const py::object& burgers,
+                   const py::object& voxel, Tracker* tracker, long long timestep, int threads) {
   const ThreadCount thread_count(threads);
-  aa::AtomFrame frame = make_frame(positions, lo, hi, boundary, types, ids);
+  aa::AtomFrame frame = make_frame(positions, lo, hi, tilt, boundary, types, ids);
   frame.timestep = timestep;
   if (tracker && !c.cutoff) throw InputError("tracker needs clusters and cluster_select (the clusters it follows)");
   aa::StructureAnalyses analyses;
@@ -382,10 +390,12 @@ py::dict structure(const py::array& positions, const std::vector<double>& lo, co
 }
 
 // voids.csv's columns after frame and timestep, and the voids' surfaces.
-py::dict voids(const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
-               const std::string& boundary, const py::object& types, const py::object& ids, double probe,
-               std::optional<double> atomic_volume, std::optional<double> margin, double min_volume) {
-  const aa::AtomFrame frame = make_frame(positions, lo, hi, boundary, types, ids);
+py::dict voids(const py::array& positions, const std::vector<double>& lo,
+               const std::vector<double>& hi, const std::vector<double>& tilt,
+               const std::string& boundary, const py::object& types, const py::object& ids,
+               double probe, std::optional<double> atomic_volume, std::optional<double> margin,
+               double min_volume) {
+  const aa::AtomFrame frame = make_frame(positions, lo, hi, tilt, boundary, types, ids);
   aa::VoidResult r;
   {
     py::gil_scoped_release release;
@@ -410,36 +420,41 @@ void bind_atoms(py::module_& m) {
   m.def(
       "atoms_structure",
       [](const py::array& positions, const std::vector<double>& lo, const std::vector<double>& hi,
-         const std::string& boundary, const py::object& types, const py::object& ids, std::optional<double> coordination,
-         std::optional<double> cna, bool adaptive_cna, const py::object& csp, std::optional<double> bond_pairs,
-         bool diamond, std::optional<double> clusters, std::optional<std::string> cluster_select,
-         std::size_t cluster_min_size, std::optional<double> domains, const std::string& domains_surface,
-         std::size_t domains_min_atoms, const std::string& profile_axis, double profile_width,
-         std::optional<std::vector<double>> pe, bool excess_auto, std::optional<double> excess_reference,
-         const std::string& excess_crystal, const py::object& burgers, const py::object& voxel, Tracker* tracker,
-         long long timestep, int threads) {
-        return structure(positions, lo, hi, boundary, types, ids, coordination, cna, adaptive_cna, csp, bond_pairs,
-                         diamond,
-                         ClusterOptions{clusters, cluster_select, cluster_min_size, domains, domains_surface,
-                                        domains_min_atoms, profile_axis, profile_width},
-                         ExcessOptions{std::move(pe), excess_auto, excess_reference, excess_crystal}, burgers, voxel,
-                         tracker, timestep, threads);
+         const std::vector<double>& tilt, const std::string& boundary, const py::object& types,
+         const py::object& ids, std::optional<double> coordination, std::optional<double> cna,
+         bool adaptive_cna, const py::object& csp, std::optional<double> bond_pairs, bool diamond,
+         std::optional<double> clusters, std::optional<std::string> cluster_select,
+         std::size_t cluster_min_size, std::optional<double> domains,
+         const std::string& domains_surface, std::size_t domains_min_atoms,
+         const std::string& profile_axis, double profile_width,
+         std::optional<std::vector<double>> pe, bool excess_auto,
+         std::optional<double> excess_reference, const std::string& excess_crystal,
+         const py::object& burgers, const py::object& voxel, Tracker* tracker, long long timestep,
+         int threads) {
+        return structure(
+            positions, lo, hi, tilt, boundary, types, ids, coordination, cna, adaptive_cna, csp,
+            bond_pairs, diamond,
+            ClusterOptions{clusters, cluster_select, cluster_min_size, domains, domains_surface,
+                           domains_min_atoms, profile_axis, profile_width},
+            ExcessOptions{std::move(pe), excess_auto, excess_reference, excess_crystal}, burgers,
+            voxel, tracker, timestep, threads);
       },
-      py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"), py::arg("types"), py::arg("ids"),
-      py::arg("coordination"), py::arg("cna"), py::arg("adaptive_cna"), py::arg("csp"), py::arg("bond_pairs"),
-      py::arg("diamond"), py::arg("clusters"), py::arg("cluster_select"), py::arg("cluster_min_size"),
-      py::arg("domains"), py::arg("domains_surface"), py::arg("domains_min_atoms"), py::arg("profile_axis"),
-      py::arg("profile_width"), py::arg("pe"), py::arg("excess_auto"), py::arg("excess_reference"),
-      py::arg("excess_crystal"), py::arg("burgers"), py::arg("voxel"), py::arg("tracker").none(true),
-      py::arg("timestep"), py::arg("threads"));
+      py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("tilt"), py::arg("boundary"),
+      py::arg("types"), py::arg("ids"), py::arg("coordination"), py::arg("cna"),
+      py::arg("adaptive_cna"), py::arg("csp"), py::arg("bond_pairs"), py::arg("diamond"),
+      py::arg("clusters"), py::arg("cluster_select"), py::arg("cluster_min_size"),
+      py::arg("domains"), py::arg("domains_surface"), py::arg("domains_min_atoms"),
+      py::arg("profile_axis"), py::arg("profile_width"), py::arg("pe"), py::arg("excess_auto"),
+      py::arg("excess_reference"), py::arg("excess_crystal"), py::arg("burgers"), py::arg("voxel"),
+      py::arg("tracker").none(true), py::arg("timestep"), py::arg("threads"));
   py::class_<Tracker>(m, "ClusterTracker", "Clusters followed through frames; use shockfield.analysis.ClusterTracker")
       .def(py::init<>())
       .def_readonly("frames", &Tracker::frames)
       .def("tracks", &Tracker::tracks, py::arg("origin"), py::arg("dt"), py::arg("time_in_ps"))
       .def("growth", &Tracker::growth, py::arg("origin"), py::arg("dt"));
-  m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("boundary"),
-        py::arg("types"), py::arg("ids"), py::arg("probe"), py::arg("atomic_volume"), py::arg("margin"),
-        py::arg("min_volume"));
+  m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("tilt"),
+        py::arg("boundary"), py::arg("types"), py::arg("ids"), py::arg("probe"),
+        py::arg("atomic_volume"), py::arg("margin"), py::arg("min_volume"));
 }
 
 }  // namespace shockfield::python

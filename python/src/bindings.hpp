@@ -12,6 +12,7 @@ void bind_analysis(pybind11::module_& m);    // analysis_bindings.cpp
 void bind_simulation(pybind11::module_& m);  // simulation_bindings.cpp
 void bind_atoms(pybind11::module_& m);       // atoms_bindings.cpp
 void bind_geometry(pybind11::module_& m);    // geometry_bindings.cpp
+void bind_data(pybind11::module_& m);        // data_bindings.cpp
 
 // `threads` OpenMP threads for one call (0: the process's default), restored afterwards so that
 // a call's choice does not become the next call's default.

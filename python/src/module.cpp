@@ -33,4 +33,5 @@ PYBIND11_MODULE(_core, m) {
   shockfield::python::bind_simulation(m);
   shockfield::python::bind_atoms(m);
   shockfield::python::bind_geometry(m);
+  shockfield::python::bind_data(m);
 }

@@ -5,10 +5,18 @@
 # the three shear pressures to 1e-8 relative (thermo.csv has 10 significant digits: 5e-10, plus the
 # growth of round-off over 100 steps of a hot, chaotic crystal); final.data keeps the tilt and is
 # read by LAMMPS read_data (when lmp is installed) and by shockfield; the dumps carry LAMMPS's
-# triclinic header; npt and profiles along x refuse a tilted box by key (exit 2); fix deform tilt
-# rates follow LAMMPS; a crystal built into a tilted cell; simple shear gives LAMMPS's C44.
+# triclinic header; msst refuses a tilted box by key (exit 2); profiles along x and y bin the
+# fractional coordinate; npt couple =
+# "tri" follows LAMMPS fix npt tri and resumes bitwise; fix deform tilt rates follow LAMMPS; a
+# crystal built into a tilted cell; simple shear gives LAMMPS's C44.
 source "$(dirname "$0")/lib.bash"
 set -e
+# cu_u3_case DATA_FILE TIMESTEP THERMO_EVERY: the head of a case of Cu_u3 copper read from a data
+# file (skin 1 Å), up to its [output] table.
+cu_u3_case() {
+  printf 'method = "md"\n[system]\ndata_file = "%s"\n[potential]\nstyle = "eam"\nfile = "Cu_u3.eam"\n' "$1"
+  printf '[md]\ntimestep = %s\nskin = 1.0\n[output]\nthermo_every = %s\n' "$2" "$3"
+}
 case_text="method = \"md\"
 [system]
 data_file = \"$ROOT/tests/fixtures/io/data_triclinic.data\"
@@ -49,15 +57,106 @@ mv "$WORK/out" "$WORK/first"
 run_expecting 0 "${case_text/$ROOT\/tests\/fixtures\/io\/data_triclinic.data/$WORK/first/final.data}"
 # What does not take a tilted box yet stops the case by key.
 expect_error "$case_text
+ensemble = \"msst\"
+[stage.msst]
+axis = \"z\"
+shock_speed = 60" "stage[0]" "ensemble" "msst is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
+# npt with couple = "tri" through the case file (LAMMPS `fix npt temp 300 300 0.1 tri 1000 1000
+# 0.5`, fixtures/lammps_npt_tri, the peer of tests/unit/md_npt/test_npt_tri_lammps.cpp): 400 steps
+# of 256 atoms in a sheared cell follow LAMMPS in T, pe, press, the shear pressures, the edges and
+# econserved, and (thermo.csv's xy_A xz_A yz_A of a tilted run) the tilts to 1e-9 (LAMMPS's own
+# 1-vs-2-rank spread is 2e-11 relative in pe, 1e-13 bar/bar in the pressures), and final.data has
+# LAMMPS's final tilts to 1e-12 Å (spread 5e-14 Å).
+npt_fixture="$ROOT/tests/fixtures/lammps_npt_tri"
+npt_tri_case="$(cu_u3_case "$npt_fixture/start.data" 0.002 10)
+thermo_full_precision = true
+[[stage]]
+steps = 400
 ensemble = \"npt\"
 temperature = 300
-pressure = 0" "stage[0]" "ensemble" "npt is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
-expect_error "${case_text/thermo_every = 10/thermo_every = 10
-profile_every = 10
-profile_axis = \"x\"}" "output" "profile_axis" "profiles along x are not supported in a triclinic box"
+damping = 0.1
+pressure = 1000
+pressure_damping = 0.5
+couple = \"tri\""
+run_expecting 0 "$npt_tri_case"
+/usr/bin/python3 - "$WORK/out/thermo.csv" "$npt_fixture/tri.thermo" "$WORK/out/final.data" <<'PY'
+import csv, sys
+ours = {int(r["step"]): r for r in csv.DictReader(open(sys.argv[1]))}
+# tri.thermo: step temp pe ke etotal press pxx pyy pzz pxy pxz pyz lx ly lz xy xz yz vol econserve
+columns = {"temperature_K": 1, "pe_eV": 2, "press_bar": 5, "pxy_bar": 9, "pxz_bar": 10, "pyz_bar": 11,
+           "lx_A": 12, "ly_A": 13, "lz_A": 14, "xy_A": 15, "xz_A": 16, "yz_A": 17, "econserved_eV": 19}
+worst, last = 0.0, None
+for line in open(sys.argv[2]):
+    values = [float(v) for v in line.split()]
+    row, last = ours[int(values[0])], values
+    for name, c in columns.items():
+        scale = 3e4 if name.startswith("p") and name != "pe_eV" else max(abs(values[c]), 1.0)  # pressures: of the 3e4 bar scale
+        worst = max(worst, abs(float(row[name]) - values[c]) / scale)
+tilt = next([float(w) for w in l.split()[:3]] for l in open(sys.argv[3]) if l.rstrip().endswith("xy xz yz"))
+tilt_error = max(abs(a - b) for a, b in zip(tilt, last[15:18]))
+print(f"npt tri: largest deviation from LAMMPS {worst:.2e}; final tilts {tilt} (LAMMPS {last[15:18]}, {tilt_error:.1e} A)")
+sys.exit(0 if worst < 1e-9 and tilt_error < 1e-12 else "FAIL: npt couple = tri deviates from LAMMPS fix npt tri")
+PY
+# Stopped at step 170 and resumed (the tilts' barostat rates from the checkpoint): the same
+# thermo.csv and final.data, byte for byte.
+stop_then_resume "$WORK/case.toml" "$WORK/npt_resumed" 170
+same_files "$WORK/out" "$WORK/npt_resumed" thermo.csv final.data
+echo "ok: npt tri resumed from its checkpoint equals the uninterrupted run"
+# Profiles along x and y in the tilted cell bin the fractional coordinate s (slabs parallel to the
+# b-c or a-c face): on the npt run's final.data (thermal positions, tilts 3.59 0.014 0.0046 Å) the
+# step-0 count per 3.7 Å bin equals numpy's binning of s·L (L = lx, ly) and the density
+# count·m/(V·width/L) to the 10 printed digits; binning the Cartesian x instead gives other counts
+# (the check sees a tilt ignored).
+cp "$WORK/out/final.data" "$WORK/npt_final.data"
+profile_case="${npt_tri_case/$npt_fixture\/start.data/$WORK/npt_final.data}"
+for axis in x y; do
+  run_expecting 0 "${profile_case/thermo_full_precision = true/profile_every = 10
+profile_axis = \"$axis\"
+profile_bin_width = 3.7}"
+  /usr/bin/python3 - "$WORK/out/profiles.csv" "$WORK/npt_final.data" "$axis" <<'PY'
+import csv, sys
+import numpy as np
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["step"] == "0"]
+lines = open(sys.argv[2]).read().splitlines()
+value = lambda key, n: [float(w) for w in next(l for l in lines if l.endswith(key)).split()[:n]]
+lo, hi = np.array([value(f"{a}lo {a}hi", 2) for a in "xyz"]).T
+tilt = np.array(value("xy xz yz", 3))
+start = next(k for k, l in enumerate(lines) if l.startswith("Atoms")) + 2
+x = np.array([[float(w) for w in l.split()[2:5]] for l in lines[start:start + 256]])
+(lx, ly, lz), (xy, xz, yz) = hi - lo, tilt
+s = np.linalg.solve(np.array([[lx, 0, 0], [xy, ly, 0], [xz, yz, lz]]).T, (x - lo).T).T
+d, width = "xyz".index(sys.argv[3]), 3.7
+length = (hi - lo)[d]
+nbins = int(np.ceil(length / width - 1e-9))
+counts = np.bincount(np.clip(np.floor(s[:, d] * length / width).astype(int), 0, nbins - 1), minlength=nbins)
+cartesian = np.bincount(np.clip(np.floor((x[:, d] - lo[d]) / width).astype(int), 0, nbins - 1), minlength=nbins)
+ours = np.array([int(r["count"]) for r in rows])
+density = ours * 63.55 / (np.prod(hi - lo) * width / length) * 1.66053904  # amu/A^3 to g/cm^3 (core/units.hpp)
+worst = max(abs(float(r["density_g_cc"]) - rho) / rho for r, rho in zip(rows, density))
+print(f"profile along {sys.argv[3]}: counts {ours.tolist()} (numpy on s: {counts.tolist()}; on the Cartesian axis: "
+      f"{cartesian.tolist()}), density = count m/(V width/L) within {worst:.1e}")
+tilt_seen = d == 1 or not np.array_equal(counts, cartesian)  # y: yz = 0.005 A moves hardly an atom
+sys.exit(0 if np.array_equal(ours, counts) and worst < 1e-9 and tilt_seen
+         else "FAIL: the tilted cell's profile is not binned along the fractional coordinate")
+PY
+done
+expect_error "$npt_tri_case
+pressure_dims = [\"x\", \"xy\"]" "stage[0]" "pressure_dims" "couple = \"tri\" barostats x, y, z, xy, xz and yz"
+expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"x\", \"shear\"]}" "stage[0]" "pressure_dims" \
+  "expected a list of \"x\", \"y\", \"z\", \"xy\", \"xz\", \"yz\""
+expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"xz\"]
+deform_tilt_rate = [0, 0.01, 0]}" "stage[0]" "deform_tilt_rate" "the xz tilt is barostatted by npt and deformed at once"
+# A tilt whose second dimension is not periodic cannot be barostatted (LAMMPS: "Cannot use fix npt
+# on a 2nd non-periodic dimension"): the crystal below in an orthogonal cell, fixed in y.
+lattice_case=$(cat "$ROOT/tests/cli/cases/tilted_fcc.toml")
+expect_error "${lattice_case/tilt = \[2.1, -3.3, 1.7\]/boundary = \"pfp\"}
+ensemble = \"npt\"
+temperature = 300
+pressure = 0
+pressure_dims = [\"x\", \"xy\"]" "stage[0]" "pressure_dims" "npt can only change the xy tilt when y is periodic"
+
 # A crystal built into a tilted cell: fcc [1-10] [11-2] [111], 4 x 3 x 2 repeats, tilts 2.1 -3.3 1.7 Å
 # (the lattice test's LAMMPS peer: 144 atoms); a tilt beyond LAMMPS's limit is refused by key.
-lattice_case=$(cat "$ROOT/tests/cli/cases/tilted_fcc.toml")
 run_expecting 0 "$lattice_case"
 grep -q "^144 atoms$" "$WORK/out/final.data" || fail "the tilted fcc has not 144 atoms: $(sed -n 3p "$WORK/out/final.data")"
 grep -q "^2.1 -3.3 1.7 xy xz yz$" "$WORK/out/final.data" || fail "final.data lost the tilt"
@@ -67,17 +166,7 @@ expect_error "${lattice_case/tilt = \[2.1/tilt = [6.1}" "system.lattice.tilt" "t
 # ke, etotal, press, pxy pxz pyz to 1e-8 (thermo.csv's 10 digits plus 200 steps of round-off
 # growth), and the final tilts equal LAMMPS's to 1e-12 Å.
 fixture="$ROOT/tests/fixtures/lammps_triclinic"
-run_expecting 0 "method = \"md\"
-[system]
-data_file = \"$fixture/deform_start.data\"
-[potential]
-style = \"eam\"
-file = \"Cu_u3.eam\"
-[md]
-timestep = 0.001
-skin = 1.0
-[output]
-thermo_every = 20
+run_expecting 0 "$(cu_u3_case "$fixture/deform_start.data" 0.001 20)
 [[stage]]
 steps = 200
 deform_rate = [0.01, 0, 0]

@@ -86,12 +86,27 @@ StageSpec read_stage(const Config& t, std::size_t index) {
   if (s.ensemble == "npt") {
     s.pressure = t.get_double("pressure", Range::closed(-1e7, 1e8));  // bar: −1 TPa to 10 TPa
     s.pressure_damping = t.get_double_or("pressure_damping", 1.0, Range::positive());
-    s.couple_iso = t.get_choice_or("couple", {"iso", "aniso"}, "aniso") == "iso";
+    const std::string couple = t.get_choice_or("couple", {"iso", "aniso", "tri"}, "aniso");
+    s.couple_iso = couple == "iso";
+    if (couple == "tri") {  // LAMMPS `tri`: x y z xy xz yz, each on its own
+      if (t.has("pressure_dims"))
+        t.fail("pressure_dims",
+               "couple = \"tri\" barostats x, y, z, xy, xz and yz (LAMMPS tri); for a subset give "
+               "pressure_dims with couple = \"aniso\" or \"iso\"");
+      s.pressure_dims = std::array<bool, 3>{true, true, true};
+      s.pressure_tilts = {true, true, true};
+    }
     if (t.has("pressure_dims")) {  // periodicity is checked against the box in run_case
       s.pressure_dims = std::array<bool, 3>{false, false, false};
+      const std::array<std::string, 3> tilts{"xy", "xz", "yz"};
       for (const auto& dim : t.get_strings("pressure_dims")) {
-        if (dim != "x" && dim != "y" && dim != "z") t.fail("pressure_dims", "expected a list of \"x\", \"y\", \"z\"");
-        (*s.pressure_dims)[dim[0] - 'x'] = true;
+        const auto tilt = std::find(tilts.begin(), tilts.end(), dim);
+        if (tilt != tilts.end())
+          s.pressure_tilts[static_cast<std::size_t>(tilt - tilts.begin())] = true;
+        else if (dim == "x" || dim == "y" || dim == "z")
+          (*s.pressure_dims)[dim[0] - 'x'] = true;
+        else
+          t.fail("pressure_dims", "expected a list of \"x\", \"y\", \"z\", \"xy\", \"xz\", \"yz\"");
       }
     }
   }

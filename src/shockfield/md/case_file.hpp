@@ -30,8 +30,10 @@ struct StageSpec {
   int chain = 3;                   ///< Nosé–Hoover chain length
   double pressure = 0;             ///< bar (npt)
   double pressure_damping = 1.0;   ///< ps (npt)
-  bool couple_iso = false;         ///< npt couple = "iso" (else "aniso")
+  bool couple_iso = false;         ///< npt couple = "iso" (else "aniso" or "tri")
   std::optional<std::array<bool, 3>> pressure_dims;  ///< npt barostatted dimensions; default: the periodic ones
+  std::array<bool, 3> pressure_tilts{false, false,
+                                     false};  ///< npt barostatted tilt factors xy, xz, yz
   std::optional<PistonSpec> piston;
   std::optional<Vec3> deform_rate; ///< 1/ps per dimension
   std::optional<Vec3> deform_tilt_rate;  ///< 1/ps per tilt factor xy, xz, yz (LAMMPS fix deform xy erate ...)
@@ -83,6 +85,9 @@ struct OutputSpec {
   /// Not a key: the case has an nphug stage (the thermo table and thermo.csv then carry the
   /// Hugoniostat columns).
   bool nphug = false;
+  /// Not a key: the box is triclinic or a stage tilts it (thermo.csv then carries the tilt
+  /// factors xy_A xz_A yz_A after neighbor_rebuilds).
+  bool tilted = false;
 };
 
 struct MdCase {

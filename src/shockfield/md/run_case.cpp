@@ -47,15 +47,47 @@ struct Prepared {
   std::vector<std::string> notes;  ///< logged when the run starts
 };
 
-// What does not handle a tilted cell yet (issue 18's step 4: fix deform tilt rates, npt tri):
-// anything that changes the box or moves a face along an axis.
+// What does not handle a tilted cell yet: the shock methods that move a face along an axis or
+// compress the cell along one (LAMMPS refuses fix msst in a triclinic box too) and the box
+// relaxation of the minimiser.
 void refuse_with_tilt(const StageSpec& s, const Config& stage, const geometry::Box& box) {
   const std::string tilt = fmt::format("a triclinic box (tilt {} {} {})", box.tilt[0], box.tilt[1], box.tilt[2]);
-  if (s.ensemble == "npt" || s.ensemble == "msst" || s.ensemble == "nphug")
-    stage.fail("ensemble", fmt::format("{} is not supported in {} yet: use nve, langevin, nvt or minimize", s.ensemble, tilt));
+  if (s.ensemble == "msst" || s.ensemble == "nphug")
+    stage.fail("ensemble",
+               fmt::format("{} is not supported in {} yet: use nve, langevin, nvt, npt or minimize",
+                           s.ensemble, tilt));
   if (s.ensemble == "minimize" && s.minimize.relax_box != std::array<bool, 3>{false, false, false})
     stage.fail("relax_box", fmt::format("relaxing the box is not supported in {} yet", tilt));
   if (s.piston) stage.fail("piston", fmt::format("a piston is not supported in {} yet", tilt));
+}
+
+// An npt stage's barostatted tilts (LAMMPS fix nh's checks): the shear's second dimension
+// periodic (xy: y; xz, yz: z), and no fix deform on a barostatted component.
+void check_barostatted_tilts(const StageSpec& s, const Config& stage, const geometry::Box& box) {
+  const char* key = stage.has("pressure_dims") ? "pressure_dims" : "couple";
+  static constexpr std::array<const char*, 3> names{"xy", "xz", "yz"};
+  static constexpr std::array<int, 3> second{1, 2, 2};
+  for (std::size_t t = 0; t < 3; ++t) {
+    if (!s.pressure_tilts[t]) continue;
+    if (!box.periodic(second[t]))
+      stage.fail(key, fmt::format("npt can only change the {} tilt when {} is periodic", names[t],
+                                  "xyz"[second[t]]));
+    if (s.deform_tilt_rate && (*s.deform_tilt_rate)[static_cast<int>(t)] != 0)
+      stage.fail(
+          "deform_tilt_rate",
+          fmt::format(
+              "the {} tilt is barostatted by npt and deformed at once (LAMMPS: Cannot use fix "
+              "npt and fix deform on same component of stress tensor)",
+              names[t]));
+  }
+  for (int d = 0; d < 3; ++d)
+    if ((*s.pressure_dims)[d] && s.deform_rate && (*s.deform_rate)[d] != 0)
+      stage.fail(
+          "deform_rate",
+          fmt::format(
+              "{} is barostatted by npt and deformed at once (LAMMPS: Cannot use fix npt and "
+              "fix deform on same component of stress tensor)",
+              "xyz"[d]));
 }
 
 // Masses and element names of the atom types. A mass: the case's masses = [...] (LAMMPS `mass`
@@ -104,9 +136,14 @@ Prepared prepare(const Config& root, const RunOptions& options) {
     root.derive("piston_speed_override_A_ps", *options.piston_speed);
   }
   const auto stages = root.tables("stage");
-  // A box that is tilted, or that a stage will tilt (deform_tilt_rate).
+  // A box that is tilted, or that a stage will tilt (deform_tilt_rate, an npt barostat on a tilt).
   const bool tilted = p.system.box.triclinic() ||
-                      std::any_of(p.md.stages.begin(), p.md.stages.end(), [](const StageSpec& s) { return s.deform_tilt_rate.has_value(); });
+                      std::any_of(p.md.stages.begin(), p.md.stages.end(), [](const StageSpec& s) {
+                        return s.deform_tilt_rate.has_value() ||
+                               std::any_of(s.pressure_tilts.begin(), s.pressure_tilts.end(),
+                                           [](bool on) { return on; });
+                      });
+  p.md.output.tilted = tilted;
   for (std::size_t k = 0; k < p.md.stages.size(); ++k) {
     try {
       p.stage_groups.push_back(p.system.groups.find(p.md.stages[k].group));
@@ -125,21 +162,21 @@ Prepared prepare(const Config& root, const RunOptions& options) {
           stages[k].fail("nphug.style", fmt::format("nphug can only change periodic dimensions; {} is not periodic", "xyz"[d]));
     if (s.ensemble != "npt") continue;
     const geometry::Box& box = p.system.box;
-    const char* key = s.pressure_dims ? "pressure_dims" : "ensemble";
+    // couple = "tri" sets the dimensions without pressure_dims
+    const char* key = stages[k].has("pressure_dims") ? "pressure_dims"
+                      : s.pressure_dims              ? "couple"
+                                                     : "ensemble";
     if (!s.pressure_dims) s.pressure_dims = std::array<bool, 3>{box.periodic(0), box.periodic(1), box.periodic(2)};
     for (int d = 0; d < 3; ++d)
       if ((*s.pressure_dims)[d] && !box.periodic(d))
         stages[k].fail(key, fmt::format("npt can only change periodic dimensions; {} is not periodic", "xyz"[d]));
-    if (*s.pressure_dims == std::array<bool, 3>{false, false, false})
+    check_barostatted_tilts(s, stages[k], box);
+    if (*s.pressure_dims == std::array<bool, 3>{false, false, false} &&
+        s.pressure_tilts == std::array<bool, 3>{false, false, false})
       stages[k].fail(key, "npt needs at least one periodic dimension to barostat");
   }
-  for (const auto& add : p.md.velocity_adds) p.add_groups.push_back(p.system.groups.find(add.group));
-  // Along z a tilted cell's slabs are whole (only c has a z component; the cross-section is lx·ly);
-  // along x or y the tilts mix the axes.
-  if (tilted && p.md.output.profile_every > 0 && p.md.output.profile_axis != 2)
-    root.table("output").fail("profile_axis", fmt::format("binned profiles along {} are not supported in a triclinic box (tilt "
-                                                          "{} {} {}) yet: use profile_axis = \"z\"", "xyz"[p.md.output.profile_axis],
-                                                          p.system.box.tilt[0], p.system.box.tilt[1], p.system.box.tilt[2]));
+  for (const auto& add : p.md.velocity_adds)
+    p.add_groups.push_back(p.system.groups.find(add.group));
   root.check_unknown_keys();
 
   const Vec3 l = p.system.box.length();
@@ -160,8 +197,8 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   else if (s.ensemble == "nvt") sim.fixes.push_back(std::make_unique<FixNoseHoover>(s.temperature, s.damping, s.chain, group));
   else if (s.ensemble == "npt")
     sim.fixes.push_back(std::make_unique<FixNoseHooverNpt>(
-        NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims, s.couple_iso, s.chain,
-                    std::nullopt, false},
+        NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims,
+                    s.couple_iso, s.chain, std::nullopt, false, s.pressure_tilts},
         group));
   else if (s.ensemble == "msst") sim.fixes.push_back(std::make_unique<FixMsst>(s.msst, group));
   else if (s.ensemble == "nphug") sim.fixes.push_back(std::make_unique<FixNphug>(s.nphug, group));

@@ -38,6 +38,7 @@ const std::vector<std::string> kNphugColumns{"nphug_dhugoniot_K", "nphug_us_A_ps
 
 std::vector<std::string> thermo_columns(const OutputSpec& spec) {
   std::vector<std::string> c = kThermoColumns;
+  if (spec.tilted) c.insert(c.end(), {"xy_A", "xz_A", "yz_A"});
   if (spec.msst_axis) c.insert(c.end(), kMsstColumns.begin(), kMsstColumns.end());
   if (spec.nphug) c.insert(c.end(), kNphugColumns.begin(), kNphugColumns.end());
   return c;
@@ -178,6 +179,7 @@ void RunOutput::write_thermo(const Simulation& sim) {
                           t.potential + t.kinetic, t.potential + t.kinetic - added, t.pressure, t.pressure_tensor[0],
                           t.pressure_tensor[1], t.pressure_tensor[2], t.pressure_tensor[3], t.pressure_tensor[4],
                           t.pressure_tensor[5], t.volume, l.x(), l.y(), l.z(), static_cast<double>(sim.rebuilds)};
+  if (spec_.tilted) row.insert(row.end(), {sim.box.tilt[0], sim.box.tilt[1], sim.box.tilt[2]});
   if (spec_.msst_axis) {
     const FixMsst* msst = find_msst(sim);
     const MsstQuantities q = msst ? msst->quantities(sim) : MsstQuantities{NAN, NAN, NAN, NAN, NAN, NAN, NAN};

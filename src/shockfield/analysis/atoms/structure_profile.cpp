@@ -22,8 +22,9 @@ std::vector<std::pair<std::string, std::vector<ProfileBin>>> StructureProfile::p
 std::vector<ProfileBin> StructureProfile::compute(const AtomFrame& frame, const std::vector<Structure>& structure,
                                                   const std::vector<double>& value) const {
   if (axis < 0 || axis > 2) throw InputError(fmt::format("structure profile: axis {} is not 0, 1 or 2", axis));
-  // Along z a tilted cell repeats by lz alone (only c has a z component); x and y mix tilts.
-  if (axis != 2) geometry::require_orthogonal(frame.box, fmt::format("a structure profile along {}", "xyz"[axis]));
+  // In a tilted cell x and y bin the fractional coordinate s (slabs parallel to the cell face the
+  // other two edges span, all of one volume; along z, s·lz = z − zlo, only c has a z component).
+  const bool fractional = frame.box.triclinic() && axis != 2;
   const double length = frame.box.length()[axis];
   if (!(width > 0) || !std::isfinite(width) || length / width > 1e6)
     throw InputError(fmt::format("structure profile: the bin width must be > 0 and give at most 10^6 bins over the {:.6g} Å box "
@@ -38,7 +39,8 @@ std::vector<ProfileBin> StructureProfile::compute(const AtomFrame& frame, const 
     out[b].hi = std::min(out[b].lo + width, frame.box.hi[axis]);
   }
   for (std::size_t i = 0; i < frame.size(); ++i) {
-    double x = frame.positions[i][axis] - frame.box.lo[axis];
+    double x = fractional ? frame.box.to_fractional(frame.positions[i])[axis] * length
+                          : frame.positions[i][axis] - frame.box.lo[axis];
     if (frame.box.periodic(axis)) x -= length * std::floor(x / length);
     const auto b = static_cast<std::size_t>(std::clamp(std::floor(x / width), 0.0, static_cast<double>(bins - 1)));
     ProfileBin& bin = out[b];

@@ -28,8 +28,14 @@ Profile bin_profile(const Simulation& sim, int axis, double width) {
   p.bins.resize(static_cast<std::size_t>(nbins));
   std::vector<double> mass(nbins, 0.0);
   std::vector<Vec3> momentum(nbins, Vec3::Zero());
+  // In a tilted cell x and y bin the fractional coordinate s: slabs parallel to the face the
+  // other two edges span, each of volume V·width/L as an orthogonal slab's (along z, s·lz = z −
+  // zlo).
+  const bool fractional = sim.box.triclinic() && axis != 2;
   for (std::size_t i = 0; i < a.nlocal; ++i) {
-    const int b = std::clamp(static_cast<int>(std::floor((a.x[i][axis] - lo) / width)), 0, nbins - 1);
+    const double offset =
+        fractional ? sim.box.to_fractional(a.x[i])[axis] * length : a.x[i][axis] - lo;
+    const int b = std::clamp(static_cast<int>(std::floor(offset / width)), 0, nbins - 1);
     bin_of[i] = b;
     const double m = a.mass_of(i);
     mass[b] += m;

@@ -1,7 +1,11 @@
 #include "shockfield/md/fixes/nose_hoover_npt.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 
+#include "shockfield/core/error.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/md/simulation.hpp"
 #include "shockfield/md/velocity.hpp"
@@ -59,6 +63,11 @@ void FixNoseHooverNpt::final_integrate(Simulation& sim) {
   check_extended_energy(sim, name().c_str(), -energy_added(), atom_chain_.degrees_of_freedom(), settings_.temperature);
 }
 
+bool FixNoseHooverNpt::tilts_barostatted() const {
+  return std::any_of(settings_.tilt_dims.begin(), settings_.tilt_dims.end(),
+                     [](bool on) { return on; });
+}
+
 void FixNoseHooverNpt::barostat_chain_step(const Simulation& sim) {
   double twice_ke = 0;
   int dims = 0;
@@ -67,10 +76,19 @@ void FixNoseHooverNpt::barostat_chain_step(const Simulation& sim) {
       twice_ke += mass_ * omega_dot_[d] * omega_dot_[d];
       ++dims;
     }
-  // LAMMPS nhc_press_integrate: Q₁ = k_B T/ω_P²; an iso barostat is one degree of freedom.
-  const double factor = barostat_chain_.half_step(twice_ke, settings_.iso ? 1.0 : dims, 1.0, sim.dt);
+  for (int t = 0; t < 3; ++t)
+    if (settings_.tilt_dims[t]) {
+      twice_ke += mass_ * tilt_omega_dot_[t] * tilt_omega_dot_[t];
+      ++dims;
+    }
+  // LAMMPS nhc_press_integrate: Q₁ = k_B T/ω_P²; an iso barostat is one degree of freedom (with
+  // barostatted tilts LAMMPS's pstyle is TRICLINIC: every component counts).
+  const double dof = settings_.iso && !tilts_barostatted() ? 1.0 : dims;
+  const double factor = barostat_chain_.half_step(twice_ke, dof, 1.0, sim.dt);
   for (int d = 0; d < 3; ++d)
     if (settings_.dims[d]) omega_dot_[d] *= factor;
+  for (int t = 0; t < 3; ++t)
+    if (settings_.tilt_dims[t]) tilt_omega_dot_[t] *= factor;
 }
 
 void FixNoseHooverNpt::atom_chain_step(Simulation& sim) {
@@ -110,9 +128,31 @@ void FixNoseHooverNpt::barostat_kick(Simulation& sim) {
     trace += omega_dot_[d];
   }
   mu_ = trace / divisor;
+  // Eq. (5): the shear pressures P_xy, P_xz, P_yz (Voigt 3, 4, 5) against a zero target.
+  for (int t = 0; t < 3; ++t)
+    if (settings_.tilt_dims[t])
+      tilt_omega_dot_[t] +=
+          0.5 * sim.dt * thermo.pressure_tensor[3 + t] * thermo.volume / nktv2p / mass_;
 }
 
 void FixNoseHooverNpt::barostat_velocity_scaling(Simulation& sim) const {
+  // With barostatted tilts: eq. (6) between two quarter steps of the diagonal (LAMMPS nh_v_press).
+  if (tilts_barostatted()) {
+    Vec3 quarter;
+    for (int d = 0; d < 3; ++d) quarter[d] = std::exp(-0.25 * sim.dt * (omega_dot_[d] + mu_));
+    const double half_dt = 0.5 * sim.dt;
+    const Vec3& w = tilt_omega_dot_;
+    Atoms& a = sim.atoms;
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < a.nlocal; ++i) {
+      if (!(a.mask[i] & group_bit_)) continue;
+      Vec3 v = a.v[i].cwiseProduct(quarter);
+      v.x() -= half_dt * (v.y() * w[0] + v.z() * w[1]);
+      v.y() -= half_dt * v.z() * w[2];
+      a.v[i] = v.cwiseProduct(quarter);
+    }
+    return;
+  }
   Vec3 factor;
   for (int d = 0; d < 3; ++d) factor[d] = std::exp(-0.5 * sim.dt * (omega_dot_[d] + mu_));
   Atoms& a = sim.atoms;
@@ -130,6 +170,10 @@ void FixNoseHooverNpt::velocity_kick(Simulation& sim) const {
 }
 
 void FixNoseHooverNpt::dilate(Simulation& sim) {
+  if (tilts_barostatted() || sim.box.triclinic()) {
+    dilate_triclinic(sim);
+    return;
+  }
   geometry::Box& box = sim.box;
   Atoms& a = sim.atoms;
   for (int d = 0; d < 3; ++d) {
@@ -144,11 +188,56 @@ void FixNoseHooverNpt::dilate(Simulation& sim) {
   volume_ = box.volume();
 }
 
+// ḣ = ω̇ h over ½Δt with ω̇ and h upper triangular, in LAMMPS FixNH::remap's time-symmetric order:
+// the tilts by a quarter (xz: an eighth around the others) of the step, the diagonal, the tilts
+// again. The tilt updates read the edge lengths of the cell before this half step (LAMMPS's
+// domain->h until set_global_box).
+void FixNoseHooverNpt::dilate_triclinic(Simulation& sim) {
+  geometry::Box& box = sim.box;
+  const geometry::Box old = box;
+  const double dto = 0.5 * sim.dt;
+  const Vec3 l = old.length(), &w = omega_dot_, &wt = tilt_omega_dot_;  // wt: xy, xz, yz
+  const auto& tilt_on = settings_.tilt_dims;
+  double &xy = box.tilt[0], &xz = box.tilt[1], &yz = box.tilt[2];
+  auto shear = [](double& t, double e, double increment) { t = (t * e + increment) * e; };
+  auto tilt_half = [&] {
+    if (tilt_on[1]) shear(xz, std::exp(dto / 8 * w.x()), dto / 4 * (wt[0] * yz + wt[1] * l.z()));
+    if (tilt_on[2]) shear(yz, std::exp(dto / 4 * w.y()), dto / 2 * wt[2] * l.z());
+    if (tilt_on[0]) shear(xy, std::exp(dto / 4 * w.x()), dto / 2 * wt[0] * l.y());
+    if (tilt_on[1]) shear(xz, std::exp(dto / 8 * w.x()), dto / 4 * (wt[0] * yz + wt[1] * l.z()));
+  };
+  tilt_half();
+  for (int d = 0; d < 3; ++d) {
+    if (!settings_.dims[d]) continue;
+    const double c = 0.5 * (box.lo[d] + box.hi[d]), e = std::exp(dto * w[d]);
+    box.lo[d] = c + (box.lo[d] - c) * e;
+    box.hi[d] = c + (box.hi[d] - c) * e;
+    // A tilt left alone follows its second edge (LAMMPS scalexy, scalexz, scaleyz).
+    if (d == 1 && !tilt_on[0]) xy *= e;
+    if (d == 2 && !tilt_on[1]) xz *= e;
+    if (d == 2 && !tilt_on[2]) yz *= e;
+  }
+  tilt_half();
+  try {
+    box.check_tilt(fmt::format(
+        "step {}: npt (LAMMPS would flip the cell here; shockfield does not)", sim.step));
+  } catch (const InputError& e) {
+    throw RunError(e.what());
+  }
+  Atoms& a = sim.atoms;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < a.nlocal; ++i)
+    a.x[i] = box.from_fractional(old.to_fractional(a.x[i]));
+  volume_ = box.volume();
+}
+
 double FixNoseHooverNpt::energy_added() const {
   double e = atom_chain_.energy() + barostat_chain_.energy() +
              settings_.pressure * (volume_ - volume0_) / nktv2p;
   for (int d = 0; d < 3; ++d)
     if (settings_.dims[d]) e += 0.5 * mass_ * omega_dot_[d] * omega_dot_[d];
+  for (int t = 0; t < 3; ++t)
+    if (settings_.tilt_dims[t]) e += 0.5 * mass_ * tilt_omega_dot_[t] * tilt_omega_dot_[t];
   return -e;  // eq. (3): the extended variables hold this energy
 }
 
@@ -158,6 +247,10 @@ FixState FixNoseHooverNpt::state() const {
              {"mu", "1/ps", {mu_}},
              {"volume0", "Angstrom^3", {volume0_}},
              {"volume", "Angstrom^3", {volume_}}};
+  if (tilts_barostatted())
+    s.push_back({"omega_dot_tilt",
+                 "1/ps",
+                 {tilt_omega_dot_.x(), tilt_omega_dot_.y(), tilt_omega_dot_.z()}});
   atom_chain_.save(s, "thermostat");
   barostat_chain_.save(s, "barostat_chain");
   return s;
@@ -167,6 +260,8 @@ void FixNoseHooverNpt::restore(const FixState& s) {
   omega_dot_ = Vec3(fix_state_values(s, name(), "omega_dot", 3).data());
   mass_ = fix_state_value(s, name(), "barostat_mass");
   mu_ = fix_state_value(s, name(), "mu");
+  if (tilts_barostatted())
+    tilt_omega_dot_ = Vec3(fix_state_values(s, name(), "omega_dot_tilt", 3).data());
   volume0_ = fix_state_value(s, name(), "volume0");
   volume_ = fix_state_value(s, name(), "volume");
   atom_chain_.restore(s, name(), "thermostat");

@@ -25,6 +25,21 @@
 // With `lammps_mtk` the MTK terms of a subset of d barostatted dimensions are LAMMPS's,
 //   2K/(3N) → Σ_{d barostatted} Σ_i m_i v_i,d² / (d N),   μ = Σ_d ω̇_d / (d N)          (4)
 // (identical to (1–2) when all three dimensions are barostatted); fix nphug uses them.
+// Tilt factors (LAMMPS fix nh `tri`, `xy`, `xz`, `yz`; Shinoda et al. 2004 eq. 1 with the cell
+// matrix h upper triangular, h = [a b c] of geometry::Box): a barostatted tilt t ∈ {xy, xz, yz} is
+// one more strain rate ω̇_t of mass W, kicked by its shear pressure at zero target (LAMMPS's
+// shear targets; the deviatoric term of nonzero ones is not implemented),
+//   W dω̇_t/dt = V P_t                                                    (5)
+// it couples to the velocities through the upper-triangular ω̇ (LAMMPS nh_v_press; applied with
+// the diagonal factors split in two quarter steps around it, as LAMMPS does)
+//   v_x ← v_x − ½Δt (ω̇_xy v_y + ω̇_xz v_z),  v_y ← v_y − ½Δt ω̇_yz v_z      (6)
+// and moves the cell by ḣ = ω̇ h (LAMMPS FixNH::remap's time-symmetric split, below in
+// dilate_triclinic); atoms keep their fractional coordinates. Its kinetic energy ½ W ω̇_t² joins
+// (3) and the barostat chain (which then targets the number of all barostatted components, also
+// for iso: LAMMPS's pstyle TRICLINIC). A tilted box under a barostat that leaves a tilt alone
+// scales that tilt with its second edge (xy with ly, xz and yz with lz: LAMMPS's default
+// scalexy/scalexz/scaleyz yes). A tilt that passes half an edge stops the run (LAMMPS flips the
+// cell; shockfield does not).
 // A derived fix may move the thermostat target every step (target_temperature(), called after the
 // barostat chain's first half step, as LAMMPS FixNH::compute_temp_target), with the masses kept
 // at the temperature the fix was built with or reset by set_reference_temperature().
@@ -46,6 +61,8 @@ struct NptSettings {
   int chain = 3;                  ///< length of both chains
   std::optional<int> pressure_chain;  ///< barostat chain length if not `chain` (LAMMPS pchain; 0: none)
   bool lammps_mtk = false;        ///< eq. (4) instead of (1–2) for a subset of dimensions
+  std::array<bool, 3> tilt_dims{false, false,
+                                false};  ///< barostatted tilt factors xy, xz, yz, eq. (5)
 };
 
 class FixNoseHooverNpt : public Fix {
@@ -77,17 +94,23 @@ class FixNoseHooverNpt : public Fix {
   void barostat_chain_step(const Simulation& sim);
   /// Atom chain by ½Δt; scales the group's velocities.
   void atom_chain_step(Simulation& sim);
-  /// v_d ← v_d e^{−½Δt(ω̇_d + μ)} for the group.
+  /// v_d ← v_d e^{−½Δt(ω̇_d + μ)} for the group, with eq. (6) between two quarter steps when a
+  /// tilt is barostatted.
   void barostat_velocity_scaling(Simulation& sim) const;
   /// v ← v + ½Δt f/m for the group.
   void velocity_kick(Simulation& sim) const;
   /// Box and all atoms dilated by e^{½Δt ω̇_d} about the box centre.
   void dilate(Simulation& sim);
+  /// The same for a tilted cell or barostatted tilts: ḣ = ω̇ h over ½Δt, atoms at fixed
+  /// fractional coordinates.
+  void dilate_triclinic(Simulation& sim);
+  bool tilts_barostatted() const;
 
   NptSettings settings_;
   std::uint32_t group_bit_;
   NoseHooverChain atom_chain_, barostat_chain_;
   Vec3 omega_dot_ = Vec3::Zero();  ///< 1/ps
+  Vec3 tilt_omega_dot_ = Vec3::Zero();  ///< ω̇_t of xy, xz, yz, eq. (5), 1/ps
   double mass_ = 0;                ///< W, eV ps²
   double mu_ = 0;                  ///< eq. (2), 1/ps
   double volume0_ = 0, volume_ = 0;
