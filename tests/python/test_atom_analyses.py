@@ -43,7 +43,7 @@ import numpy as np
 import shockfield
 from shockfield import _core, analysis
 from test_structure import fcc_cu, read_dump_columns, write_dump
-from test_surface import read_vtp
+from vtk_files import read_cells
 
 SF = os.environ["SHOCKFIELD_BIN"]
 SOURCE = pathlib.Path(os.environ["SHOCKFIELD_SOURCE"])
@@ -124,7 +124,7 @@ class AtomAnalyses(unittest.TestCase):
         self.assertEqual((v["euler_characteristic"][0], v["manifold"][0]), (2, 1))
         np.testing.assert_allclose([v["x_A"][0], v["y_A"][0], v["z_A"][0]], box[1] / 2, atol=1e-6)
         self.assert_rows_printed_equal(v, read_csv(out / "voids.csv"), 10)
-        points, triangles = read_vtp(out / "voids_0.vtp")
+        points, triangles = read_cells(out / "voids_0.vtp", 3)
         np.testing.assert_array_equal(renumbered(r["surfaces"]["triangles"]), triangles)
         used = list(dict.fromkeys(r["surfaces"]["triangles"].ravel().tolist()))
         np.testing.assert_array_equal(r["surfaces"]["points"][used], points)
@@ -143,7 +143,7 @@ class AtomAnalyses(unittest.TestCase):
         self.assertEqual((r["domains"]["euler_characteristic"][0], r["domains"]["manifold"][0]), (2, 1))
         self.assert_rows_printed_equal(r["domains"], read_csv(out / "domains.csv"), 10)
         self.assert_rows_printed_equal(r["clusters"], read_csv(out / "clusters.csv"), 10)
-        _, triangles = read_vtp(out / "domains_0.vtp")
+        _, triangles = read_cells(out / "domains_0.vtp", 3)
         np.testing.assert_array_equal(renumbered(r["domain_surfaces"]["triangles"]), triangles)
         summary = read_csv(out / "structures.csv")[0]
         for column, value in r["counts"].items():

@@ -23,6 +23,7 @@ import numpy as np
 
 import shockfield
 from shockfield import analysis
+from vtk_files import read_cells
 
 SF = os.environ["SHOCKFIELD_BIN"]
 
@@ -100,9 +101,7 @@ class Structure(unittest.TestCase):
                                           str(distance), "-o", str(out)], capture_output=True, text=True)
                 self.assertEqual(process.returncode, 0, process.stderr)
                 r = analysis.delaunay(points, cluster_distance=distance)
-                vtu = (out / "delaunay.vtu").read_text()
-                block = vtu.split('Name="connectivity" format="ascii">')[1].split("</DataArray>")[0]
-                cells = np.array(block.split(), dtype=np.int32).reshape(-1, dim + 1)
+                _, cells = read_cells(out / "delaunay.vtu", dim + 1)
                 np.testing.assert_array_equal(r["simplices"], cells)
                 labels = np.genfromtxt(out / "clusters.csv", delimiter=",", names=True)
                 np.testing.assert_array_equal(r["seed_rule"]["label"], labels["seed_rule"].astype(int))

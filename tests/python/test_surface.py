@@ -30,6 +30,7 @@ import numpy as np
 
 import shockfield
 from shockfield import analysis
+from vtk_files import read_cells
 
 SF = os.environ["SHOCKFIELD_BIN"]
 
@@ -41,19 +42,6 @@ def fibonacci_sphere(n=1500, jitter=1e-3, seed=7):
     rho = np.sqrt(1.0 - z * z)
     r = 1.0 + jitter * (np.random.default_rng(seed).random(n) - 0.5) * 2.0
     return np.ascontiguousarray(np.column_stack((rho * np.cos(phi), rho * np.sin(phi), z)) * r[:, None])
-
-
-def read_vtp(path):
-    """Points and triangles of a .vtp, read by VTK's XML reader (the file is zlib-compressed binary)."""
-    import vtk
-    from vtk.util.numpy_support import vtk_to_numpy
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    data = reader.GetOutput()
-    points = vtk_to_numpy(data.GetPoints().GetData()).astype(float)
-    triangles = vtk_to_numpy(data.GetPolys().GetConnectivityArray()).astype(np.int32).reshape(-1, 3)
-    return points, triangles
 
 
 METHODS = (("delaunay", ["--ball-radius", "0.3"], {"radius": 0.3}),
@@ -85,7 +73,7 @@ class Surface(unittest.TestCase):
                 process = subprocess.run([SF, "analyze", "geometry", str(csv), "--no-mesh", "--surface-method", method,
                                           *options, "-o", str(out)], capture_output=True, text=True)
                 self.assertEqual(process.returncode, 0, process.stderr)
-                vtp_points, vtp_triangles = read_vtp(out / "surface.vtp")
+                vtp_points, vtp_triangles = read_cells(out / "surface.vtp", 3)
                 np.testing.assert_array_equal(s["points"], vtp_points)
                 np.testing.assert_array_equal(s["triangles"], vtp_triangles)
                 summary = dict(line.split() for line in (out / "summary.txt").read_text().splitlines())

@@ -136,7 +136,7 @@ class Triclinic(unittest.TestCase):
             nbins = len(profile)
             expected = np.bincount(np.minimum(np.floor(s[:, d] * length / width).astype(int), nbins - 1), minlength=nbins)
             np.testing.assert_array_equal(profile["atoms"].astype(int), expected, axis)
-            np.testing.assert_allclose(profile["lo"], box.lo[d] + width * np.arange(nbins), rtol=1e-15)
+            np.testing.assert_allclose(profile["lo_A"], box.lo[d] + width * np.arange(nbins), rtol=1e-15)
             cartesian = np.bincount(np.clip(np.floor((x[:, d] - box.lo[d]) / width).astype(int), 0, nbins - 1),
                                     minlength=nbins)
             self.assertFalse(np.array_equal(expected, cartesian), axis)
