@@ -10,6 +10,7 @@
 #include "shockfield/core/run_driver.hpp"
 #include "shockfield/core/run_options.hpp"
 #include "shockfield/dbm/run_case.hpp"
+#include "shockfield/md/run_case.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/parallel/communicator.hpp"
 #include "shockfield/registry/method_registry.hpp"
@@ -21,7 +22,7 @@ namespace {
 // ranks other than 0 run: rank 0 runs the driver as in a serial run and drives them.
 using RankServer = void (*)(const Config&, const RunOptions&);
 const std::map<std::string, RankServer>& decomposed_methods() {
-  static const std::map<std::string, RankServer> table{{"dbm", &dbm::serve_ranks}};
+  static const std::map<std::string, RankServer> table{{"dbm", &dbm::serve_ranks}, {"md", &md::serve_ranks}};
   return table;
 }
 
