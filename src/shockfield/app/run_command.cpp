@@ -75,7 +75,7 @@ void add_run_command(CLI::App& app, const std::vector<std::string>& command_line
   cmd->add_flag("-q,--quiet", options->quiet, "No progress line");
   cmd->add_option("--rank-grid", options->rank_grid,
                   "MPI ranks along x, y (and z) as PxQ or PxQxR, their product the rank count\n"
-                  "(mpirun -np); default: the grid with the least halo traffic (dbm only;\n"
+                  "(mpirun -np); default: the grid with the least halo traffic (dbm and md;\n"
                   "docs/parallel.md)")
       ->type_name("PxQ");
   cmd->add_option("--stop-after", options->stop_after,
