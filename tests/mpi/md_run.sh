@@ -54,6 +54,13 @@ if [ "$PART" = ranks ]; then
   grep -q "256 atoms, on 4 ranks (rank grid 1 x 2 x 2)" "$WORK/np4/log.txt" || fail "the log does not give the rank grid"
   # Rank 0 alone prints: one log header on stdout.
   [ "$(grep -c "shockfield .* md: .*(256 atoms" "$WORK/np4.txt")" -eq 1 ] || fail "the log header is not printed once: $(cat "$WORK/np4.txt")"
+  # Langevin (random force keyed by step and atom id; the bath work of econserved summed over the
+  # ranks) on 2 ranks x 2 OpenMP threads (unbound, so the threads may use both cores).
+  langevin=(--set 'stage[0].ensemble="langevin"')
+  "$SF" run "$WORK/cu.toml" --output "$WORK/serial_langevin" -q "${full[@]}" "${langevin[@]}" > /dev/null
+  OMP_NUM_THREADS=2 "$MPIEXEC" --oversubscribe --allow-run-as-root --bind-to none -np 2 "$SF" run "$WORK/cu.toml" \
+    --output "$WORK/hybrid_langevin" -q "${full[@]}" "${langevin[@]}" > /dev/null
+  same_thermo "$WORK/serial_langevin" "$WORK/hybrid_langevin" "tiny_cu, langevin then nve, on 2 ranks x 2 threads"
   # On one rank mpirun takes the serial path: the serial bytes.
   cmp -s "$WORK/serial/thermo.csv" "$WORK/np1/thermo.csv" || fail "thermo.csv on 1 rank is not the serial one"
 fi
