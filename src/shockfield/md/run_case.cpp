@@ -19,6 +19,7 @@
 #include "shockfield/md/checkpoint.hpp"
 #include "shockfield/md/diagnostics/hugoniot.hpp"
 #include "shockfield/md/fixes/deform.hpp"
+#include "shockfield/md/force_evaluation.hpp"
 #include "shockfield/md/fixes/langevin.hpp"
 #include "shockfield/md/fixes/nose_hoover.hpp"
 #include "shockfield/md/fixes/nose_hoover_npt.hpp"
@@ -411,21 +412,28 @@ class MdMethod final : public Method {
   void announce(parallel::MethodCall call) const {
     if (mirror_) mirror_->announce(call);
   }
-  // A resumed decomposed run: keeps the checkpoint's atoms in this rank's piece with their saved
-  // forces (a Langevin step's include the bath's), and makes the ghosts, the list and the
-  // energies of the restored step on the rank grid. The list is rebuilt here, not at the
-  // checkpoint's rebuild positions: the rebuild steps, and the sums' order, may differ from the
-  // uninterrupted run's (round-off; docs/parallel.md).
+  // A resumed decomposed run (the whole checkpoint read): keeps the atoms of this rank's piece
+  // and lists them where the last rebuild saw them, as the serial restore does
+  // (Simulation::restore_rebuild_state), so that the resumed run rebuilds at the steps the
+  // uninterrupted one does; then the current positions, the energies of the restored step and
+  // the saved forces (a Langevin step's include the bath's).
   void deal_out_checkpoint() {
-    Atoms& atoms = sim_->atoms;
-    std::unordered_map<std::int64_t, Vec3> saved;  // of the whole system: an atom may migrate below
-    for (std::size_t i = 0; i < atoms.nlocal; ++i) saved.emplace(atoms.id[i], atoms.f[i]);
-    keep_own_atoms(*domain_, atoms);
-    sim_->domain = domain_;
-    const std::int64_t rebuilds = sim_->rebuilds;
-    sim_->setup(false);
-    for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.f[i] = saved.at(atoms.id[i]);
-    sim_->rebuilds = rebuilds;
+    Simulation& sim = *sim_;
+    Atoms& atoms = sim.atoms;
+    std::unordered_map<std::int64_t, std::pair<Vec3, Vec3>> now;  // position and force by id
+    for (std::size_t i = 0; i < atoms.nlocal; ++i) now.emplace(atoms.id[i], std::pair{atoms.x[i], atoms.f[i]});
+    const std::vector<Vec3> x_rebuild = sim.positions_at_rebuild();
+    std::copy(x_rebuild.begin(), x_rebuild.end(), atoms.x.begin());
+    keep_own_atoms(*domain_, atoms);  // by the rebuild positions, which lie in the box: no migration
+    sim.domain = domain_;
+    const std::int64_t rebuilds = sim.rebuilds, since = sim.steps_since_rebuild;
+    sim.rebuild();
+    for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.x[i] = now.at(atoms.id[i]).first;
+    atoms.update_ghost_positions(sim.box);
+    evaluate_forces(atoms, *sim.potential, sim.list, sim.forces, false);
+    for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.f[i] = now.at(atoms.id[i]).second;
+    sim.rebuilds = rebuilds;
+    sim.steps_since_rebuild = since;
   }
   // Every rank's atoms on rank 0 as a Simulation of its own for the serial checkpoint writer
   // (with their forces and rebuild positions); nothing on the other ranks. Collective.
