@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
-#include <unordered_map>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/run_driver.hpp"
@@ -19,7 +18,6 @@
 #include "shockfield/md/checkpoint.hpp"
 #include "shockfield/md/diagnostics/hugoniot.hpp"
 #include "shockfield/md/fixes/deform.hpp"
-#include "shockfield/md/force_evaluation.hpp"
 #include "shockfield/md/fixes/langevin.hpp"
 #include "shockfield/md/fixes/nose_hoover.hpp"
 #include "shockfield/md/fixes/nose_hoover_npt.hpp"
@@ -266,7 +264,7 @@ class MdMethod final : public Method {
     if (k_ >= stages().size()) return;  // finished
     add_fixes();
     read_checkpoint(run.checkpoint, *sim_);  // the whole system, on every rank
-    if (domain_) deal_out_checkpoint();
+    if (domain_) deal_out_checkpoint(*sim_, domain_);
     done_ = start.stage_step;
     output_.emplace(run.folder, p_.md.output, sim_->step, writes());
     begin_stage(/*fixes_added=*/true, /*mid_stage=*/done_ > 0);
@@ -310,7 +308,7 @@ class MdMethod final : public Method {
                                                                  : CheckpointPosition{static_cast<std::int64_t>(n - 1),
                                                                                       stages().back().steps};
     if (!domain_) return md::write_checkpoint(file, *sim_, where);
-    std::optional<Simulation> whole = gathered();
+    std::optional<Simulation> whole = gather_simulation(*sim_);
     if (!whole) return;
     std::swap(whole->fixes, sim_->fixes);  // their state is the same on every rank
     md::write_checkpoint(file, *whole, where);
@@ -411,47 +409,6 @@ class MdMethod final : public Method {
   bool writes() const { return !domain_ || domain_->comm().is_root(); }
   void announce(parallel::MethodCall call) const {
     if (mirror_) mirror_->announce(call);
-  }
-  // A resumed decomposed run (the whole checkpoint read): keeps the atoms of this rank's piece
-  // and lists them where the last rebuild saw them, as the serial restore does
-  // (Simulation::restore_rebuild_state), so that the resumed run rebuilds at the steps the
-  // uninterrupted one does; then the current positions, the energies of the restored step and
-  // the saved forces (a Langevin step's include the bath's).
-  void deal_out_checkpoint() {
-    Simulation& sim = *sim_;
-    Atoms& atoms = sim.atoms;
-    std::unordered_map<std::int64_t, std::pair<Vec3, Vec3>> now;  // position and force by id
-    for (std::size_t i = 0; i < atoms.nlocal; ++i) now.emplace(atoms.id[i], std::pair{atoms.x[i], atoms.f[i]});
-    const std::vector<Vec3> x_rebuild = sim.positions_at_rebuild();
-    std::copy(x_rebuild.begin(), x_rebuild.end(), atoms.x.begin());
-    keep_own_atoms(*domain_, atoms);  // by the rebuild positions, which lie in the box: no migration
-    sim.domain = domain_;
-    const std::int64_t rebuilds = sim.rebuilds, since = sim.steps_since_rebuild;
-    sim.rebuild();
-    for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.x[i] = now.at(atoms.id[i]).first;
-    atoms.update_ghost_positions(sim.box);
-    evaluate_forces(atoms, *sim.potential, sim.list, sim.forces, false);
-    for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.f[i] = now.at(atoms.id[i]).second;
-    sim.rebuilds = rebuilds;
-    sim.steps_since_rebuild = since;
-  }
-  // Every rank's atoms on rank 0 as a Simulation of its own for the serial checkpoint writer
-  // (with their forces and rebuild positions); nothing on the other ranks. Collective.
-  std::optional<Simulation> gathered() const {
-    Atoms atoms = gather_atoms(*domain_, sim_->atoms);
-    std::vector<Vec3> forces = gather_by_id(*domain_, sim_->atoms, sim_->atoms.f);
-    std::vector<Vec3> x_rebuild = gather_by_id(*domain_, sim_->atoms, sim_->positions_at_rebuild());
-    if (!writes()) return std::nullopt;
-    std::copy(forces.begin(), forces.end(), atoms.f.begin());
-    std::optional<Simulation> whole;
-    whole.emplace(sim_->box, std::move(atoms), nullptr, sim_->dt, sim_->skin);
-    whole->shrink_margin = sim_->shrink_margin;
-    whole->step = sim_->step;
-    whole->time = sim_->time;
-    whole->rebuilds = sim_->rebuilds;
-    whole->steps_since_rebuild = sim_->steps_since_rebuild;
-    whole->set_rebuild_reference(std::move(x_rebuild), sim_->box_at_rebuild());
-    return whole;
   }
   void add_fixes() { add_stage_fixes(*sim_, stages()[k_], p_.stage_groups[k_], p_.md.seed + k_); }
 

@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/md/force_evaluation.hpp"
 #include "shockfield/parallel/communicator.hpp"
 
 namespace shockfield::md {
@@ -51,6 +53,42 @@ std::shared_ptr<Decomposition> decompose_run(const Config& root, const MdCase& m
                                                           : parallel::parse_rank_grid(options.rank_grid);
   const parallel::Dims3 dims = md_rank_grid(box, interaction_range, world.size(), given);
   return std::make_shared<Decomposition>(world, dims, box, interaction_range);
+}
+
+void deal_out_checkpoint(Simulation& sim, const std::shared_ptr<Decomposition>& domain) {
+  Atoms& atoms = sim.atoms;
+  std::unordered_map<std::int64_t, std::pair<Vec3, Vec3>> now;  // position and force by id
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) now.emplace(atoms.id[i], std::pair{atoms.x[i], atoms.f[i]});
+  const std::vector<Vec3> x_rebuild = sim.positions_at_rebuild();
+  std::copy(x_rebuild.begin(), x_rebuild.end(), atoms.x.begin());
+  keep_own_atoms(*domain, atoms);  // by the rebuild positions, which lie in the box: no migration
+  sim.domain = domain;
+  const std::int64_t rebuilds = sim.rebuilds, since = sim.steps_since_rebuild;
+  sim.rebuild();
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.x[i] = now.at(atoms.id[i]).first;
+  atoms.update_ghost_positions(sim.box);
+  evaluate_forces(atoms, *sim.potential, sim.list, sim.forces, false);
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.f[i] = now.at(atoms.id[i]).second;
+  sim.rebuilds = rebuilds;
+  sim.steps_since_rebuild = since;
+}
+
+std::optional<Simulation> gather_simulation(const Simulation& sim) {
+  const Decomposition& domain = *sim.domain;
+  Atoms atoms = gather_atoms(domain, sim.atoms);
+  const std::vector<Vec3> forces = gather_by_id(domain, sim.atoms, sim.atoms.f);
+  std::vector<Vec3> x_rebuild = gather_by_id(domain, sim.atoms, sim.positions_at_rebuild());
+  if (!domain.comm().is_root()) return std::nullopt;
+  std::copy(forces.begin(), forces.end(), atoms.f.begin());
+  std::optional<Simulation> whole;
+  whole.emplace(sim.box, std::move(atoms), nullptr, sim.dt, sim.skin);
+  whole->shrink_margin = sim.shrink_margin;
+  whole->step = sim.step;
+  whole->time = sim.time;
+  whole->rebuilds = sim.rebuilds;
+  whole->steps_since_rebuild = sim.steps_since_rebuild;
+  whole->set_rebuild_reference(std::move(x_rebuild), sim.box_at_rebuild());
+  return whole;
 }
 
 }  // namespace shockfield::md
