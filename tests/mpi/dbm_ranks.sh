@@ -10,12 +10,10 @@
 # with the message printed once; a blow-up exits 3 with the serial run's message.
 # Usage: dbm_ranks.sh SHOCKFIELD SOURCE_DIR MPIEXEC PART, PART one of sod (the tube on 1, 2, 4
 # ranks and 2 ranks x 2 threads; stop and resume), grids_2d (the 2D cases on four rank grids; label slow), bad_input.
-source "$(dirname "$0")/../cli/lib.bash"
-MPIEXEC="$3"
+source "$(dirname "$0")/lib.bash"
 PART="$4"
 set -e
 export OMP_NUM_THREADS=1
-mpi() { local np="$1"; shift; "$MPIEXEC" --oversubscribe --allow-run-as-root -np "$np" "$SF" "$@"; }
 # Everything the run writes except what records the run itself (log, provenance, timings) and
 # the checkpoint (its ghost cells hold the last stage's halo, not comparable; its interior is
 # checked through the resumed run).
@@ -88,19 +86,6 @@ fi
 [ "$PART" = bad_input ] || { echo "dbm_ranks $PART: passed"; exit 0; }
 
 # Bad input: exit 2, one message, no run folder.
-refused() {  # NP PATTERN ARGS...
-  local np="$1" pattern="$2"; shift 2
-  rm -rf "$WORK/bad"
-  set +e
-  mpi "$np" run "$@" --output "$WORK/bad" -q > "$WORK/stdout" 2> "$WORK/stderr"
-  local code=$?
-  set -e
-  [ $code -eq 2 ] || fail "exit code $code (expected 2) for $*: $(cat "$WORK/stderr")"
-  grep -qF -- "$pattern" "$WORK/stderr" || fail "message lacks '$pattern': $(cat "$WORK/stderr")"
-  [ "$(grep -c '^error:' "$WORK/stderr")" -eq 1 ] || fail "the error is not printed once: $(cat "$WORK/stderr")"
-  [ ! -e "$WORK/bad" ] || fail "a run folder was left behind for $*"
-  echo "ok: $(grep '^error:' "$WORK/stderr" | head -c 160)"
-}
 refused 4 "use at most 3 ranks" "$WORK/sod.toml" --set grid.nx=6
 refused 2 "--rank-grid 3 x 1 x 1 has 3 ranks, the run has 2" "$WORK/sod.toml" --rank-grid 3x1
 refused 2 "--rank-grid cuts y (1 cells) into 2 blocks" "$WORK/sod.toml" --rank-grid 1x2

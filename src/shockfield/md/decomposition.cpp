@@ -90,7 +90,8 @@ parallel::Dims3 md_rank_grid(const geometry::Box& box, double ghost_cutoff, int 
 
 Decomposition::Decomposition(const parallel::Communicator& world, const parallel::Dims3& dims,
                              const geometry::Box& box, double ghost_cutoff)
-    : exchange_(world.cartesian(dims, {box.periodic(0), box.periodic(1), box.periodic(2)}), ghost_spans(box),
+    : dims_(dims),
+      exchange_(world.cartesian(dims, {box.periodic(0), box.periodic(1), box.periodic(2)}), ghost_spans(box),
                 ghost_cutoffs(box, ghost_cutoff)) {}
 
 Atoms gather_atoms(const Decomposition& domain, const Atoms& atoms) {
@@ -111,6 +112,21 @@ Atoms gather_atoms(const Decomposition& domain, const Atoms& atoms) {
               all.begin() + static_cast<std::ptrdiff_t>((order[k] + 1) * width), sorted.begin() + static_cast<std::ptrdiff_t>(k * width));
   MigratingAtoms{whole}.append_owned(sorted.data(), order.size());
   return whole;
+}
+
+std::vector<Vec3> gather_by_id(const Decomposition& domain, const Atoms& atoms, const std::vector<Vec3>& values) {
+  std::vector<double> mine;
+  mine.reserve(4 * atoms.nlocal);
+  for (std::size_t i = 0; i < atoms.nlocal; ++i)
+    mine.insert(mine.end(), {static_cast<double>(atoms.id[i]), values[i][0], values[i][1], values[i][2]});
+  const std::vector<double> all = domain.comm().gather(mine);
+  std::vector<std::size_t> order(all.size() / 4);
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all[4 * a] < all[4 * b]; });
+  std::vector<Vec3> sorted;
+  sorted.reserve(order.size());
+  for (std::size_t k : order) sorted.emplace_back(all[4 * k + 1], all[4 * k + 2], all[4 * k + 3]);
+  return sorted;
 }
 
 void keep_own_atoms(const Decomposition& domain, Atoms& atoms) {

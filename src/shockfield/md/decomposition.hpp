@@ -28,6 +28,9 @@ class Decomposition;
 /// Every rank's owned atoms on rank 0, in id order, with the types' masses and names (empty on
 /// the other ranks): what the serial output and checkpoint code read. Collective.
 Atoms gather_atoms(const Decomposition& domain, const Atoms& atoms);
+/// `values` (one per owned atom, e.g. atoms.f) of every rank on rank 0, in the id order of
+/// gather_atoms (empty on the other ranks). Collective.
+std::vector<Vec3> gather_by_id(const Decomposition& domain, const Atoms& atoms, const std::vector<Vec3>& values);
 /// Keeps the owned atoms of a whole system (read or built the same on every rank) that lie in
 /// this rank's piece: how a checkpoint of any rank count is dealt out. Not collective.
 void keep_own_atoms(const Decomposition& domain, Atoms& atoms);
@@ -39,6 +42,8 @@ class Decomposition final : public AtomRanks, public std::enable_shared_from_thi
                 double ghost_cutoff);
 
   const parallel::Communicator& comm() const { return exchange_.comm(); }
+  /// Ranks along x, y and z.
+  const parallel::Dims3& dims() const { return dims_; }
   const parallel::ParticleExchange& exchange() const { return exchange_; }
   /// Whether `x` lies in this rank's piece (for dealing out the atoms of a whole system).
   bool owns(const Vec3& x) const;
@@ -66,6 +71,7 @@ class Decomposition final : public AtomRanks, public std::enable_shared_from_thi
   mutable double halo_seconds = 0;
 
  private:
+  parallel::Dims3 dims_;
   parallel::ParticleExchange exchange_;
   std::vector<parallel::GhostSwap> swaps_;
   long long first_total_ = -1;

@@ -30,8 +30,10 @@
 #include "shockfield/md/state_arrays.hpp"
 #include "shockfield/md/potentials/registry.hpp"
 #include "shockfield/md/run_output.hpp"
+#include "shockfield/md/run_ranks.hpp"
 #include "shockfield/md/system_builder.hpp"
 #include "shockfield/md/velocity.hpp"
+#include "shockfield/parallel/method_mirror.hpp"
 
 namespace shockfield::md {
 
@@ -245,13 +247,29 @@ std::optional<HugoniotState> report_hugoniot(const Simulation& sim, const RunOut
 // then advance() makes its steps; a stage ends (final output, Hugoniot) lazily, at the next
 // advance() or at the end of the run, so that the checkpoint position {stage, steps done} means
 // what it always meant.
+// Under mpirun the box is decomposed (run_ranks.hpp): every rank builds the whole system, keeps
+// the atoms of its piece and steps them; rank 0 runs the driver and announces each collective
+// call to the other ranks, which serve() by making the same call (parallel/method_mirror.hpp).
+// The outputs are the serial ones, written by rank 0 from the gathered atoms.
 class MdMethod final : public Method {
  public:
   MdMethod(const Config& root, const RunOptions& options)
-      : p_(prepare(root, options)), atoms_(p_.system.atom_count()) {}
+      : p_(prepare(root, options)), atoms_(p_.system.atom_count()),
+        domain_(decompose_run(root, p_.md, p_.system.box, p_.potential->cutoff() + p_.md.skin, options)) {
+    if (domain_) mirror_.emplace(domain_->comm());
+  }
+  ~MdMethod() override { announce(parallel::MethodCall::quit); }
+  MdMethod(const MdMethod&) = delete;
+  MdMethod& operator=(const MdMethod&) = delete;
+  /// The ranks other than 0 of a decomposed run: their part of each of rank 0's calls.
+  void serve() { mirror_->serve(*this); }
 
   std::string name() const override { return "md"; }
-  std::string size_text() const override { return fmt::format("{} atoms", atoms_); }
+  std::string size_text() const override {
+    if (!domain_) return fmt::format("{} atoms", atoms_);
+    const parallel::Dims3& d = domain_->dims();
+    return fmt::format("{} atoms, on {} ranks (rank grid {} x {} x {})", atoms_, domain_->comm().size(), d[0], d[1], d[2]);
+  }
   std::string check_text() const override {
     // ~400 B an atom: position, velocity, force, ids, image and group flags, its share of the
     // ghosts and of the neighbour list (~40 neighbours within cutoff + skin in a metal).
@@ -261,35 +279,50 @@ class MdMethod final : public Method {
   }
 
   void start(RunContext& run) override {
+    announce(parallel::MethodCall::start);
     build(run);
+    // Velocities of the whole system (the serial bits on every rank), then dealt out.
     if (p_.md.temperature) create_velocities(sim_->atoms, *p_.md.temperature, p_.md.seed);
     for (std::size_t k = 0; k < p_.md.velocity_adds.size(); ++k)
       add_velocity(sim_->atoms, p_.md.velocity_adds[k].velocity, p_.add_groups[k]);
-    output_.emplace(run.folder, p_.md.output, std::nullopt);
+    if (domain_) {
+      keep_own_atoms(*domain_, sim_->atoms);
+      sim_->domain = domain_;
+    }
+    output_.emplace(run.folder, p_.md.output, std::nullopt, writes());
     for (const auto& note : p_.notes) run.log.info("note: {}", note);
     begin_pending();
   }
   void resume(RunContext& run) override {
+    if (mirror_) mirror_->announce_resume(run.checkpoint.string());
     build(run);
     const CheckpointPosition start = read_checkpoint_header(run.checkpoint);
     k_ = static_cast<std::size_t>(start.stage);
     if (k_ >= stages().size()) return;  // finished
     add_fixes();
-    read_checkpoint(run.checkpoint, *sim_);
+    read_checkpoint(run.checkpoint, *sim_);  // the whole system, on every rank
+    if (domain_) deal_out_checkpoint(*sim_, domain_);
     done_ = start.stage_step;
-    output_.emplace(run.folder, p_.md.output, sim_->step);
+    output_.emplace(run.folder, p_.md.output, sim_->step, writes());
     begin_stage(/*fixes_added=*/true, /*mid_stage=*/done_ > 0);
     begin_pending();
   }
 
   bool finished() const override { return steps_left() == 0; }
   void advance() override {
+    announce(parallel::MethodCall::advance);
     while (done_ >= stages()[k_].steps) finish_stage();
     sim_->advance(want_per_atom_);
     ++done_;
   }
-  void check_health() override { sim_->check_health(); }
-  void write_outputs() override { output_->write(*sim_); }
+  void check_health() override {
+    announce(parallel::MethodCall::check_health);
+    sim_->check_health();
+  }
+  void write_outputs() override {
+    announce(parallel::MethodCall::write_outputs);
+    output_->write(*sim_);
+  }
   std::int64_t step() const override { return sim_->step; }
   std::string position() const override {
     if (k_ >= stages().size()) return " (all stages done)";
@@ -305,18 +338,27 @@ class MdMethod final : public Method {
   // At the end the position is the last stage with all its steps done (when it is dynamic), so
   // that a resume with more steps in it continues the run.
   void write_checkpoint(const fs::path& file) override {
+    announce(parallel::MethodCall::write_checkpoint);
     const std::size_t n = stages().size();
     CheckpointPosition where{static_cast<std::int64_t>(k_), done_};
     if (k_ >= n) where = stages().back().ensemble == "minimize" ? CheckpointPosition{static_cast<std::int64_t>(n), 0}
                                                                  : CheckpointPosition{static_cast<std::int64_t>(n - 1),
                                                                                       stages().back().steps};
-    md::write_checkpoint(file, *sim_, where);
+    if (!domain_) return md::write_checkpoint(file, *sim_, where);
+    std::optional<Simulation> whole = gather_simulation(*sim_);
+    if (!whole) return;
+    std::swap(whole->fixes, sim_->fixes);  // their state is the same on every rank
+    md::write_checkpoint(file, *whole, where);
+    std::swap(whole->fixes, sim_->fixes);
   }
   void write_final_outputs() override {
+    announce(parallel::MethodCall::write_final_outputs);
     while (k_ < stages().size()) finish_stage();
     io::DataWriteOptions data;
     data.shrink_margin = sim_->shrink_margin;
-    io::write_data(run_->folder / "final.data", sim_->box, sim_->atoms, data);
+    if (!domain_) return io::write_data(run_->folder / "final.data", sim_->box, sim_->atoms, data);
+    const Atoms atoms = gather_atoms(*domain_, sim_->atoms);
+    if (writes()) io::write_data(run_->folder / "final.data", sim_->box, atoms, data);
   }
   void log_results(double) override {
     run_->log.info("finished: {} steps; final configuration in {}", sim_->step, (run_->folder / "final.data").string());
@@ -330,6 +372,7 @@ class MdMethod final : public Method {
     return c;
   }
   std::vector<double> thermo_values() const override {
+    announce(parallel::MethodCall::thermo_values);
     const ThermoState t = sim_->thermo();
     std::vector<double> v{static_cast<double>(sim_->step), sim_->time, t.temperature, t.potential, t.kinetic,
                           t.potential + t.kinetic, t.pressure};
@@ -351,6 +394,7 @@ class MdMethod final : public Method {
   std::string time_unit() const override { return "ps"; }
   // The Hugoniot state of every piston stage ended in this session and the final energies.
   Json results() const override {
+    announce(parallel::MethodCall::results);
     Json hugoniot = Json::array();
     for (const auto& [stage, h] : hugoniot_)
       hugoniot.push(Json::object()
@@ -398,6 +442,10 @@ class MdMethod final : public Method {
     sim_->neighbor_delay = p_.md.neighbor_delay;
     sim_->neighbor_check = p_.md.neighbor_check;
     want_per_atom_ = [this](std::int64_t step) { return output_->needs_per_atom(step); };
+  }
+  bool writes() const { return !domain_ || domain_->comm().is_root(); }
+  void announce(parallel::MethodCall call) const {
+    if (mirror_) mirror_->announce(call);
   }
   void add_fixes() { add_stage_fixes(*sim_, stages()[k_], p_.stage_groups[k_], p_.md.seed + k_); }
 
@@ -471,6 +519,8 @@ class MdMethod final : public Method {
   std::size_t atoms_;
   std::optional<Simulation> sim_;
   std::optional<RunOutput> output_;
+  std::shared_ptr<Decomposition> domain_;  ///< the rank grid under mpirun; null on one rank
+  std::optional<parallel::MethodMirror> mirror_;
   std::function<bool(std::int64_t)> want_per_atom_;
   std::vector<std::pair<std::string, HugoniotState>> hugoniot_;  ///< stages ended in this session
   std::vector<MsstReport> msst_;                                 ///< msst stages ended in this session
@@ -487,6 +537,11 @@ class MdMethod final : public Method {
 
 std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options) {
   return std::make_unique<MdMethod>(root, options);
+}
+
+void serve_ranks(const Config& root, const RunOptions& options) {
+  MdMethod method(root, options);  // bad input: thrown on every rank
+  method.serve();
 }
 
 void run_case(const Config& root, const RunOptions& options) { run_method(root, options, &make_method); }

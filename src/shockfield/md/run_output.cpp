@@ -12,6 +12,7 @@
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/extxyz.hpp"
 #include "shockfield/io/lammps_dump.hpp"
+#include "shockfield/md/decomposition.hpp"
 #include "shockfield/md/diagnostics/profiles.hpp"
 #include "shockfield/md/msst_report.hpp"
 #include "shockfield/md/nphug_report.hpp"
@@ -51,8 +52,8 @@ std::int64_t frame_step(const fs::path& file) {
 
 // Per-atom columns computed from the force evaluation, in LAMMPS conventions: pe (eV), ke (eV),
 // stress/atom s_ab = −(m v_a v_b + W_ab) in bar·Å³ (compute stress/atom, units "pressure*volume").
-std::vector<double> computed_column(const Simulation& sim, const std::string& field) {
-  const Atoms& a = sim.atoms;
+// `a`: sim.atoms, or a decomposed run's gathered atoms (then only "ke": no per-atom tallies).
+std::vector<double> computed_column(const Simulation& sim, const Atoms& a, const std::string& field) {
   std::vector<double> out(a.nlocal, 0.0);
   const bool per_atom = sim.forces.per_atom && sim.forces.energy_atom.size() == a.nlocal;
   static const std::vector<std::string> stress{"sxx", "syy", "szz", "sxy", "sxz", "syz"};
@@ -77,8 +78,11 @@ bool is_computed(const std::string& f) {
 
 }  // namespace
 
-RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::optional<std::int64_t> resume_step)
-    : folder_(folder), profiles_file_(folder / "profiles.csv"), spec_(spec), resume_step_(resume_step) {
+RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::optional<std::int64_t> resume_step,
+                     bool writes)
+    : folder_(folder), profiles_file_(folder / "profiles.csv"), spec_(spec), resume_step_(resume_step), writes_(writes) {
+  if (resume_step) last_thermo_step_ = last_frame_step_ = *resume_step;
+  if (!writes) return;
   const double* keep = nullptr;
   double keep_value = 0;
   if (resume_step) {
@@ -98,7 +102,6 @@ RunOutput::RunOutput(const fs::path& folder, const OutputSpec& spec, std::option
       for (const auto& entry : fs::directory_iterator(folder / "dumps"))
         if (frame_step(entry.path()) > *resume_step) fs::remove(entry.path());
   }
-  if (resume_step) last_thermo_step_ = last_frame_step_ = *resume_step;
 }
 
 bool RunOutput::dump_needs_per_atom() const {
@@ -135,7 +138,10 @@ void RunOutput::write(const Simulation& sim, bool force_thermo) {
       for (const auto& row : analysis::atoms::cluster_rows(*analysed->clusters, static_cast<double>(sim.step), sim.time))
         clusters_.row(row);
   }
-  if (dump_due) write_dump(sim, spec_.analysis.dump_columns ? &*analysed : nullptr);
+  if (dump_due) {
+    const Atoms gathered = sim.domain ? gather_atoms(*sim.domain, sim.atoms) : Atoms{};  // collective
+    if (writes_) write_dump(sim, sim.domain ? gathered : sim.atoms, spec_.analysis.dump_columns ? &*analysed : nullptr);
+  }
   if (spec_.h5md_every > 0 && sim.step % spec_.h5md_every == 0) write_h5md(sim);
 }
 
@@ -173,7 +179,8 @@ void RunOutput::write_thermo(const Simulation& sim) {
   last_thermo_step_ = sim.step;
   const ThermoState t = sim.thermo();
   double added = 0;
-  for (const auto& fix : sim.fixes) added += fix->energy_added();
+  for (const auto& fix : sim.fixes) added += fix->energy_added();  // the same on every rank
+  if (!writes_) return;  // a decomposed run's rank other than 0 took its part in the sums
   const Vec3 l = sim.box.length();
   std::vector<double> row{static_cast<double>(sim.step), sim.time, t.temperature, t.potential, t.kinetic,
                           t.potential + t.kinetic, t.potential + t.kinetic - added, t.pressure, t.pressure_tensor[0],
@@ -192,20 +199,21 @@ void RunOutput::write_thermo(const Simulation& sim) {
   thermo_.row(row);
 }
 
-void RunOutput::write_dump(const Simulation& sim, const analysis::atoms::StructureAnalysisResult* analysed) const {
+void RunOutput::write_dump(const Simulation& sim, const Atoms& atoms,
+                           const analysis::atoms::StructureAnalysisResult* analysed) const {
   std::vector<std::string> basic;
   for (const auto& f : spec_.dump_fields)
     if (!is_computed(f)) basic.push_back(f);
-  io::DumpFrame frame = io::make_dump_frame(sim.step, sim.box, sim.atoms, basic);
+  io::DumpFrame frame = io::make_dump_frame(sim.step, sim.box, atoms, basic);
   if (spec_.dump_time) frame.time = sim.time;
   for (const auto& f : spec_.dump_fields)
-    if (is_computed(f)) frame.set_column(f, computed_column(sim, f));
-  if (analysed) analysis::atoms::append_structure_columns(frame, *analysed, sim.atoms.nlocal);
+    if (is_computed(f)) frame.set_column(f, computed_column(sim, atoms, f));
+  if (analysed) analysis::atoms::append_structure_columns(frame, *analysed, atoms.nlocal);
   const std::string ext = spec_.dump_format == "extxyz" ? "xyz" : "lammpstrj";
   const fs::path file = folder_ / "dumps" / fmt::format("dump.{:0{}}.{}", sim.step, spec_.dump_pad, ext);
   io::CheckedOutput out(file);
   const io::DumpWriteOptions options{spec_.dump_full_precision};
-  if (spec_.dump_format == "extxyz") io::write_extxyz_frame(out.stream(), frame, sim.atoms.type_names, options);
+  if (spec_.dump_format == "extxyz") io::write_extxyz_frame(out.stream(), frame, atoms.type_names, options);
   else io::write_dump_frame(out.stream(), frame, options);
   out.close();
 }

@@ -76,6 +76,12 @@ class Simulation {
   /// Positions and box at the last rebuild (the restart reproduces the list from them).
   const std::vector<Vec3>& positions_at_rebuild() const { return x_rebuild_; }
   const geometry::Box& box_at_rebuild() const { return box_rebuild_; }
+  /// Sets the rebuild reference without rebuilding: a copy of a decomposed run gathered on one
+  /// rank to be written as the serial checkpoint (`x_rebuild` per owned atom).
+  void set_rebuild_reference(std::vector<Vec3> x_rebuild, const geometry::Box& box_rebuild) {
+    x_rebuild_ = std::move(x_rebuild);
+    box_rebuild_ = box_rebuild;
+  }
   /// Restores a rebuild reference from a checkpoint and rebuilds ghosts and list from it.
   void restore_rebuild_state(const std::vector<Vec3>& x_rebuild, const geometry::Box& box_rebuild);
 

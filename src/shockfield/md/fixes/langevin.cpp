@@ -38,6 +38,7 @@ void FixLangevin::final_integrate(Simulation& sim) {
   // estimate, adequate for the conserved-quantity diagnostic).
   double work = 0;
   for (std::size_t i = 0; i < sim.atoms.nlocal; ++i) work += bath_force_[i].dot(sim.atoms.v[i]);
+  if (sim.atoms.ranks) work = sim.atoms.ranks->sum({work})[0];  // every rank's atoms: the same tally on each
   energy_added_ += work * sim.dt;
 }
 
