@@ -11,7 +11,7 @@
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
-for tool in pvbatch Xvfb; do
+for tool in pvbatch Xvfb; do  # (and pvbatch's Python package: checked on its first run below)
   command -v $tool > /dev/null || { echo "SKIP: $tool not installed (apt-get install paraview xvfb)"; exit 77; }
 done
 series=()
@@ -49,6 +49,9 @@ for attempt in 1 2 3; do
   DISPLAY=":$display" pvbatch "$ROOT/tests/cli/paraview_open.py" "$WORK/pictures" "${series[@]}" > "$WORK/pv.txt" 2>&1 || code=$?
   grep -q "bad X server connection" "$WORK/pv.txt" || break
 done
+if grep -q "No module named 'paraview'" "$WORK/pv.txt"; then  # pvbatch without its Python package
+  echo "SKIP: pvbatch cannot import paraview (apt-get install python3-paraview)"; exit 77
+fi
 grep -v "^\s*[0-9]* *0x\|^\[" "$WORK/pv.txt" | grep -v "^$" || true
 [ $code -eq 0 ] || fail "ParaView shows the outputs otherwise than they are written (above; exit $code)"
 [ -n "${PARAVIEW_PICTURES:-}" ] && cp "$WORK"/pictures/*.png "$PARAVIEW_PICTURES/"
