@@ -7,12 +7,12 @@
 # a picture of one array per method that is drawn and has no NaN-coloured pixel
 # (tests/cli/paraview_open.py). Skips (exit 77, CTest SKIP_RETURN_CODE) with a message when pvbatch
 # or Xvfb is absent: ParaView is about 800 MB installed, so .ci/run does not install it
-# (`apt-get install paraview xvfb` does).
+# (`apt-get install paraview python3-paraview xvfb` does).
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
 for tool in pvbatch Xvfb; do  # (and pvbatch's Python package: checked on its first run below)
-  command -v $tool > /dev/null || { echo "SKIP: $tool not installed (apt-get install paraview xvfb)"; exit 77; }
+  command -v $tool > /dev/null || { echo "SKIP: $tool not installed (apt-get install paraview python3-paraview xvfb)"; exit 77; }
 done
 series=()
 run() {  # run NAME CASE_FILE [--set ...]
