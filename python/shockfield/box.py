@@ -15,6 +15,14 @@ from typing import NamedTuple
 import numpy as np
 
 
+def _bounding_pads(tilt):
+    """How far a tilted cell's bounding box reaches below lo and above hi on each axis (LAMMPS
+    Domain): x by min/max(0, xy, xz, xy + xz), y by min/max(0, yz), z not at all."""
+    xy, xz, yz = (float(t) for t in tilt)
+    return (np.array([min(0.0, xy, xz, xy + xz), min(0.0, yz), 0.0]),
+            np.array([max(0.0, xy, xz, xy + xz), max(0.0, yz), 0.0]))
+
+
 class Box(NamedTuple):
     """``lo``, ``hi``: the cell's corners (Å, arrays of 3); ``tilt``: (xy, xz, yz) (Å)."""
     lo: np.ndarray
@@ -49,10 +57,8 @@ class Box(NamedTuple):
         etc. and the tilts (LAMMPS Domain: xlo = xlo_bound − min(0, xy, xz, xy + xz),
         xhi = xhi_bound − max(0, xy, xz, xy + xz), ylo = ylo_bound − min(0, yz), yhi likewise)."""
         bounds = np.asarray(bounds, dtype=np.float64)
-        xy, xz, yz = (float(t) for t in tilt)
-        lo = bounds[:, 0] - np.array([min(0.0, xy, xz, xy + xz), min(0.0, yz), 0.0])
-        hi = bounds[:, 1] - np.array([max(0.0, xy, xz, xy + xz), max(0.0, yz), 0.0])
-        return cls.of(lo, hi, (xy, xz, yz))
+        pad_lo, pad_hi = _bounding_pads(tilt)
+        return cls.of(bounds[:, 0] - pad_lo, bounds[:, 1] - pad_hi, tilt)
 
     @property
     def triclinic(self):
@@ -78,9 +84,7 @@ class Box(NamedTuple):
     @property
     def bounds(self):
         """The axis-aligned bounding box as (3, 2) rows ``lo hi`` (a LAMMPS dump's BOX BOUNDS)."""
-        xy, xz, yz = self.tilt
-        pad_lo = np.array([min(0.0, xy, xz, xy + xz), min(0.0, yz), 0.0])
-        pad_hi = np.array([max(0.0, xy, xz, xy + xz), max(0.0, yz), 0.0])
+        pad_lo, pad_hi = _bounding_pads(self.tilt)
         return np.column_stack([self.lo + pad_lo, self.hi + pad_hi])
 
     def fractional(self, positions):

@@ -100,6 +100,18 @@ class ArrayWriter {
   std::size_t offset_ = 0;
 };
 
+// Each point-data array holds `points` tuples and each cell-data array `cells` (RunError naming
+// the file and the array otherwise).
+void require_array_lengths(const std::filesystem::path& file, const std::vector<VtkArray>& point_data,
+                           std::size_t points, const std::vector<VtkArray>& cell_data, std::size_t cells) {
+  for (const auto& [arrays, count, what] : {std::tuple{&point_data, points, "points"},
+                                            std::tuple{&cell_data, cells, "cells"}})
+    for (const VtkArray& a : *arrays)
+      if (a.values.size() != count * static_cast<std::size_t>(a.components))
+        throw RunError(fmt::format("{}: array '{}' has {} values for {} {}", file.string(), a.name, a.values.size(),
+                                   count, what));
+}
+
 }  // namespace
 
 std::string base64(const unsigned char* data, std::size_t size) {
@@ -147,12 +159,7 @@ void write_vti_piece(const std::filesystem::path& file, const VtkImage& image, V
   // VTK's cell count: n − 1 per axis, one layer along an axis of a single point.
   const std::size_t cells =
       (std::max<std::size_t>(n[0], 2) - 1) * (std::max<std::size_t>(n[1], 2) - 1) * (std::max<std::size_t>(n[2], 2) - 1);
-  for (const auto& [arrays, count, what] : {std::tuple{&image.point_data, n[0] * n[1] * n[2], "points"},
-                                            std::tuple{&image.cell_data, cells, "cells"}})
-    for (const VtkArray& a : *arrays)
-      if (a.values.size() != count * static_cast<std::size_t>(a.components))
-        throw RunError(fmt::format("{}: array '{}' has {} values for {} {}", file.string(), a.name, a.values.size(),
-                                   count, what));
+  require_array_lengths(file, image.point_data, n[0] * n[1] * n[2], image.cell_data, cells);
   out << "<?xml version=\"1.0\"?>\n"
       << arrays.file_tag("ImageData")
       << fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{} {} {}\" Spacing=\"{} {} {}\">\n",
@@ -204,19 +211,18 @@ namespace {
 // Checks the cell list and array lengths of a mesh, then writes its <Points>, its cells as
 // `section` (Polys or Cells: connectivity and offsets, plus the VTK cell types in a Cells section)
 // and its point and cell data.
+std::size_t cell_count(const VtkCells& mesh) {
+  return mesh.connectivity.size() / static_cast<std::size_t>(std::max(mesh.vertices_per_cell, 1));
+}
+
 void mesh_piece(std::ostringstream& out, ArrayWriter& arrays, const std::filesystem::path& file, const VtkCells& mesh,
                 const char* section) {
   const std::size_t points = mesh.xyz.size() / 3, per_cell = static_cast<std::size_t>(mesh.vertices_per_cell);
-  const std::size_t cells = mesh.connectivity.size() / per_cell;
-  if (mesh.xyz.size() % 3 != 0 || mesh.connectivity.size() % per_cell != 0 || (per_cell != 3 && per_cell != 4))
+  const std::size_t cells = cell_count(mesh);
+  if ((per_cell != 3 && per_cell != 4) || mesh.xyz.size() % 3 != 0 || mesh.connectivity.size() % per_cell != 0)
     throw RunError(fmt::format("{}: {} coordinates and {} cell vertices for cells of {}", file.string(),
                                mesh.xyz.size(), mesh.connectivity.size(), per_cell));
-  for (const auto& [data, count, what] : {std::tuple{&mesh.point_data, points, "points"},
-                                          std::tuple{&mesh.cell_data, cells, "cells"}})
-    for (const VtkArray& a : *data)
-      if (a.values.size() != count * static_cast<std::size_t>(a.components))
-        throw RunError(fmt::format("{}: array '{}' has {} values for {} {}", file.string(), a.name, a.values.size(),
-                                   count, what));
+  require_array_lengths(file, mesh.point_data, points, mesh.cell_data, cells);
   out << "      <PointData>\n";
   for (const VtkArray& a : mesh.point_data) arrays.data(a);
   out << "      </PointData>\n      <CellData>\n";
@@ -242,8 +248,7 @@ void write_vtp_polygons(const std::filesystem::path& file, const VtkCells& mesh,
   ArrayWriter arrays(out, format);
   out << "<?xml version=\"1.0\"?>\n" << arrays.file_tag("PolyData") << "  <PolyData>\n"
       << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
-                     "NumberOfPolys=\"{}\">\n", mesh.xyz.size() / 3,
-                     mesh.connectivity.size() / static_cast<std::size_t>(std::max(mesh.vertices_per_cell, 1)));
+                     "NumberOfPolys=\"{}\">\n", mesh.xyz.size() / 3, cell_count(mesh));
   mesh_piece(out, arrays, file, mesh, "Polys");
   out << "  </PolyData>\n";
   arrays.write(file);
@@ -253,8 +258,7 @@ void write_vtu(const std::filesystem::path& file, const VtkCells& mesh, VtkForma
   std::ostringstream out;
   ArrayWriter arrays(out, format);
   out << "<?xml version=\"1.0\"?>\n" << arrays.file_tag("UnstructuredGrid") << "  <UnstructuredGrid>\n"
-      << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", mesh.xyz.size() / 3,
-                     mesh.connectivity.size() / static_cast<std::size_t>(std::max(mesh.vertices_per_cell, 1)));
+      << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", mesh.xyz.size() / 3, cell_count(mesh));
   mesh_piece(out, arrays, file, mesh, "Cells");
   out << "  </UnstructuredGrid>\n";
   arrays.write(file);
