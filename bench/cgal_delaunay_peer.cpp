@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -59,14 +60,16 @@ int main(int argc, char** argv) {
   const int dim = std::atoi(argv[1]);
   const auto pts = read(argv[2]);
   const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
+  auto cpu_seconds = [&] { return double(std::clock() - c0) / CLOCKS_PER_SEC; };
   if (dim == 3) {
     std::vector<std::pair<K::Point_3, int>> in;
     for (std::size_t i = 0; i < pts.size(); ++i)
       in.emplace_back(K::Point_3(pts[i][0], pts[i][1], pts[i][2]), static_cast<int>(i));
     Dt3 dt(in.begin(), in.end());
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("cgal 3d points %zu tetrahedra %zu seconds %.3f\n", pts.size(),
-                dt.number_of_finite_cells(), t);
+    std::printf("cgal 3d points %zu tetrahedra %zu seconds %.3f cpu_seconds %.3f\n", pts.size(),
+                dt.number_of_finite_cells(), t, cpu_seconds());
     if (argc > 3) {
       std::vector<std::array<int, 4>> s;
       for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
@@ -80,8 +83,8 @@ int main(int argc, char** argv) {
       in.emplace_back(K::Point_2(pts[i][0], pts[i][1]), static_cast<int>(i));
     Dt2 dt(in.begin(), in.end());
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("cgal 2d points %zu triangles %zu seconds %.3f\n", pts.size(),
-                dt.number_of_faces(), t);
+    std::printf("cgal 2d points %zu triangles %zu seconds %.3f cpu_seconds %.3f\n", pts.size(),
+                dt.number_of_faces(), t, cpu_seconds());
     if (argc > 3) {
       std::vector<std::array<int, 3>> s;
       for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)

@@ -1,5 +1,8 @@
 // GISO benchmark (bench/RESULTS.md "## GISO"): Delaunay division and SHT queries.
 //   delaunay_bench generate DIM N FILE   uniform random points in the unit cube, CSV (seeded)
+//   delaunay_bench generate-fcc N FILE   an fcc crystal of about N atoms (lattice constant 1, a
+//                                        cube of unit cells) with Gaussian thermal displacements
+//                                        of 0.03 per coordinate (seeded), CSV
 //   delaunay_bench delaunay DIM FILE     time of our Delaunay division of the points of FILE
 //   delaunay_bench queries N Q           nearest and radius query rates of the SHT beside
 //                                        nanoflann's kd-tree on the same N points, Q queries;
@@ -8,6 +11,8 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <nanoflann.hpp>
@@ -36,13 +41,40 @@ std::vector<std::array<double, 3>> uniform(std::size_t n, std::uint64_t seed) {
   return p;
 }
 
+void write_csv(const std::string& file, const std::vector<std::array<double, 3>>& points, int dim) {
+  std::ofstream out(file);
+  out << (dim == 2 ? "x,y\n" : "x,y,z\n");
+  for (const auto& p : points)
+    out << (dim == 2 ? fmt::format("{:.17g},{:.17g}\n", p[0], p[1])
+                     : fmt::format("{:.17g},{:.17g},{:.17g}\n", p[0], p[1], p[2]));
+}
+
+/// fcc: 4 atoms per unit cell at (0,0,0), (½,½,0), (½,0,½), (0,½,½); σ = 0.03 of the lattice
+/// constant is about copper's room-temperature vibration (√⟨u²⟩ ≈ 0.08–0.1 Å of a = 3.6 Å).
+std::vector<std::array<double, 3>> perturbed_fcc(std::size_t atoms, std::uint64_t seed) {
+  const auto cells = static_cast<int>(std::lround(std::cbrt(atoms / 4.0)));
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> thermal(0.0, 0.03);
+  const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  std::vector<std::array<double, 3>> p;
+  p.reserve(4 * static_cast<std::size_t>(cells) * cells * cells);
+  for (int i = 0; i < cells; ++i)
+    for (int j = 0; j < cells; ++j)
+      for (int k = 0; k < cells; ++k)
+        for (const auto& b : basis)
+          p.push_back({i + b[0] + thermal(rng), j + b[1] + thermal(rng), k + b[2] + thermal(rng)});
+  return p;
+}
+
 template <int N>
 int delaunay(const std::string& file) {
   const auto pts = sg::read_points<N>(file);
   const auto t0 = Clock::now();
+  const std::clock_t c0 = std::clock();
   const auto d = sg::delaunay_division<N>(pts, file);
-  std::printf("shockfield %dd points %zu simplices %zu seconds %.3f\n", N, pts.size(),
-              d.simplices.size(), seconds_since(t0));
+  std::printf("shockfield %dd points %zu simplices %zu seconds %.3f cpu_seconds %.3f\n", N,
+              pts.size(), d.simplices.size(), seconds_since(t0),
+              double(std::clock() - c0) / CLOCKS_PER_SEC);
   return 0;
 }
 
@@ -67,27 +99,35 @@ int queries(std::size_t n, std::size_t q) {
                                                   3, std::uint32_t>;
   Kd kd(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   const double kd_build = seconds_since(t0);
+  // The four query loops run on 20 slices of the queries in turn (SHT, nanoflann, SHT, ...),
+  // so that a change of the machine's load mid-run hits both alike.
   std::vector<double> sht_nn(q), kd_nn(q);
-  t0 = Clock::now();
-  for (std::size_t i = 0; i < q; ++i) sht_nn[i] = sg::nearest<3>(tree, qs[i]).distance;
-  const double sht_nearest = seconds_since(t0);
-  t0 = Clock::now();
-  for (std::size_t i = 0; i < q; ++i) {
-    std::uint32_t idx;
-    double d2;
-    kd.knnSearch(qs[i].data(), 1, &idx, &d2);
-    kd_nn[i] = std::sqrt(d2);
-  }
-  const double kd_nearest = seconds_since(t0);
   std::size_t sht_found = 0, kd_found = 0;
-  t0 = Clock::now();
-  for (std::size_t i = 0; i < q; ++i) sht_found += sg::within_radius<3>(tree, qs[i], r).size();
-  const double sht_radius = seconds_since(t0);
-  t0 = Clock::now();
+  double sht_nearest = 0, kd_nearest = 0, sht_radius = 0, kd_radius = 0;
   std::vector<std::pair<std::uint32_t, double>> found;  // nanoflann 1.4 (Debian 12)
-  for (std::size_t i = 0; i < q; ++i)
-    kd_found += kd.radiusSearch(qs[i].data(), r * r, found, nanoflann::SearchParams(32, 0.0f, false));
-  const double kd_radius = seconds_since(t0);
+  constexpr std::size_t kSlices = 20;
+  for (std::size_t slice = 0; slice < kSlices; ++slice) {
+    const std::size_t from = q * slice / kSlices, to = q * (slice + 1) / kSlices;
+    t0 = Clock::now();
+    for (std::size_t i = from; i < to; ++i) sht_nn[i] = sg::nearest<3>(tree, qs[i]).distance;
+    sht_nearest += seconds_since(t0);
+    t0 = Clock::now();
+    for (std::size_t i = from; i < to; ++i) {
+      std::uint32_t idx;
+      double d2;
+      kd.knnSearch(qs[i].data(), 1, &idx, &d2);
+      kd_nn[i] = std::sqrt(d2);
+    }
+    kd_nearest += seconds_since(t0);
+    t0 = Clock::now();
+    for (std::size_t i = from; i < to; ++i) sht_found += sg::within_radius<3>(tree, qs[i], r).size();
+    sht_radius += seconds_since(t0);
+    t0 = Clock::now();
+    for (std::size_t i = from; i < to; ++i)
+      kd_found +=
+          kd.radiusSearch(qs[i].data(), r * r, found, nanoflann::SearchParams(32, 0.0f, false));
+    kd_radius += seconds_since(t0);
+  }
   std::size_t mismatches = 0;
   for (std::size_t i = 0; i < q; ++i) mismatches += sht_nn[i] != kd_nn[i];
   std::printf("points %zu queries %zu radius %.5g\n", n, q, r);
@@ -105,12 +145,11 @@ int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   try {
     if (mode == "generate" && argc == 5) {
-      const int dim = std::stoi(argv[2]);
-      std::ofstream out(argv[4]);
-      out << (dim == 2 ? "x,y\n" : "x,y,z\n");
-      for (const auto& p : uniform(std::stoull(argv[3]), 7))
-        out << (dim == 2 ? fmt::format("{:.17g},{:.17g}\n", p[0], p[1])
-                         : fmt::format("{:.17g},{:.17g},{:.17g}\n", p[0], p[1], p[2]));
+      write_csv(argv[4], uniform(std::stoull(argv[3]), 7), std::stoi(argv[2]));
+      return 0;
+    }
+    if (mode == "generate-fcc" && argc == 4) {
+      write_csv(argv[3], perturbed_fcc(std::stoull(argv[2]), 11), 3);
       return 0;
     }
     if (mode == "delaunay" && argc == 4) return argv[2][0] == '2' ? delaunay<2>(argv[3]) : delaunay<3>(argv[3]);
@@ -120,6 +159,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::fprintf(stderr,
-               "usage: delaunay_bench generate DIM N FILE | delaunay DIM FILE | queries N Q\n");
+               "usage: delaunay_bench generate DIM N FILE | generate-fcc N FILE | delaunay DIM FILE "
+               "| queries N Q\n");
   return 2;
 }

@@ -6,12 +6,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/predicates.hpp"
-#include "shockfield/geometry/space_tree.hpp"
+#include "shockfield/geometry/spatial_sort.hpp"
 
 namespace shockfield::geometry {
 namespace {
@@ -24,7 +25,11 @@ class Triangulation {
   using Point = std::array<double, N>;
   using Cell = std::array<std::int32_t, N + 1>;
 
-  explicit Triangulation(const std::vector<Point>& points) : points_(points) {}
+  /// Vertices are indices into `points` (given in insertion order, so that the points of
+  /// neighbouring cells sit close in memory, as in CGAL's vertex storage); original[v] is the
+  /// caller's index of vertex v: its rank in the perturbation and its name in the output.
+  Triangulation(const std::vector<Point>& points, const std::vector<std::int32_t>& original)
+      : points_(points), original_(original) {}
 
   /// The first simplex (positively oriented) and the N+1 cells through the vertex at infinity.
   void start(const Cell& first);
@@ -50,9 +55,10 @@ class Triangulation {
   bool in_conflict(std::int32_t c, std::int32_t p) const;
   std::int32_t locate(std::int32_t p);
   std::int32_t new_cell(const Cell& v);
-  void link_new_cells(std::size_t from);
+  void link_new_cells();
 
   const std::vector<Point>& points_;
+  const std::vector<std::int32_t>& original_;
   std::vector<Cell> cells_, nb_;
   std::vector<char> alive_;
   std::vector<std::int32_t> free_;
@@ -61,6 +67,38 @@ class Triangulation {
   std::int32_t last_ = 0;
   std::vector<std::int32_t> created_, cavity_;
   std::vector<Boundary> boundary_;
+  using FaceKey = std::array<std::int32_t, N>;
+  struct FaceSlot {
+    FaceKey key{};
+    std::int32_t cell = 0;
+    int slot = 0;
+    std::uint32_t stamp = 0;  ///< == link_stamp_: entered by the current link_new_cells
+    bool matched = false;
+  };
+  /// The vertices of cell v but v[i], sorted (a sorting network kept in registers).
+  static FaceKey sorted_face(const Cell& v, int i) {
+    FaceKey key;
+    for (int j = 0, r = 0; j <= N; ++j)
+      if (j != i) key[r++] = v[j];
+    auto order = [&](int a, int b) {
+      const std::int32_t lo = std::min(key[a], key[b]), hi = std::max(key[a], key[b]);
+      key[a] = lo;
+      key[b] = hi;
+    };
+    order(0, 1);
+    if constexpr (N == 3) {
+      order(1, 2);
+      order(0, 1);
+    }
+    return key;
+  }
+  static bool same_face(const FaceKey& a, const FaceKey& b) {
+    bool same = true;
+    for (int k = 0; k < N; ++k) same &= a[k] == b[k];
+    return same;
+  }
+  std::vector<FaceSlot> table_;
+  std::uint32_t link_stamp_ = 0;
   std::minstd_rand rng_{12345};
 };
 
@@ -100,37 +138,55 @@ void Triangulation<N>::start(const Cell& first) {
     nb_[last_][i] = c;
   }
   created_.erase(created_.begin());  // the finite cell's links are set; link the others
-  link_new_cells(0);
+  link_new_cells();
 }
 
-/// Links the faces through the newest vertex... in general: every face of the created cells
-/// whose neighbour is not yet set is matched with the other created cell having the same face.
+/// Every face of the created cells whose neighbour is not yet set is matched with the other
+/// created cell having the same face (the same vertex set): faces are entered in an
+/// open-addressing hash table kept between calls, its slots of earlier calls told apart by a
+/// stamp, so linking a cavity allocates nothing and costs O(faces).
 template <int N>
-void Triangulation<N>::link_new_cells(std::size_t from) {
-  struct Face {
-    std::array<std::int32_t, N> key;
-    std::int32_t cell;
-    int slot;
-  };
-  std::vector<Face> faces;
-  for (std::size_t k = from; k < created_.size(); ++k) {
-    const std::int32_t c = created_[k];
+void Triangulation<N>::link_new_cells() {
+  const std::size_t faces = created_.size() * (N + 1);
+  if (table_.size() < 2 * faces || link_stamp_ == std::numeric_limits<std::uint32_t>::max()) {
+    std::size_t size = 64;
+    while (size < 2 * faces) size *= 2;
+    table_.assign(size, FaceSlot{});
+    link_stamp_ = 0;
+  }
+  ++link_stamp_;
+  const std::size_t mask = table_.size() - 1;
+  std::size_t unmatched = 0;
+  for (const std::int32_t c : created_) {
     for (int i = 0; i <= N; ++i) {
       if (nb_[c][i] != kInfinite) continue;
-      Face f{{}, c, i};
-      for (int j = 0, r = 0; j <= N; ++j)
-        if (j != i) f.key[r++] = cells_[c][j];
-      std::sort(f.key.begin(), f.key.end());
-      faces.push_back(f);
+      const FaceKey key = sorted_face(cells_[c], i);
+      std::uint64_t h = 0;
+      for (std::int32_t v : key) h = (h ^ static_cast<std::uint32_t>(v)) * 0x9E3779B97F4A7C15ull;
+      for (std::size_t s = (h >> 32) & mask;; s = (s + 1) & mask) {
+        FaceSlot& slot = table_[s];
+        if (slot.stamp != link_stamp_) {  // free: the first of the pair
+          slot.key = key;
+          slot.cell = c;
+          slot.slot = i;
+          slot.stamp = link_stamp_;
+          slot.matched = false;
+          ++unmatched;
+          break;
+        }
+        if (!same_face(slot.key, key)) continue;
+        if (slot.matched)
+          throw RunError("delaunay: a face of the cavity is shared by three cells (internal error)");
+        slot.matched = true;
+        nb_[c][i] = slot.cell;
+        nb_[slot.cell][slot.slot] = c;
+        --unmatched;
+        break;
+      }
     }
   }
-  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.key < b.key; });
-  for (std::size_t k = 0; k < faces.size(); k += 2) {
-    if (k + 1 >= faces.size() || faces[k].key != faces[k + 1].key)
-      throw RunError("delaunay: the cavity of an inserted point is not a ball (internal error)");
-    nb_[faces[k].cell][faces[k].slot] = faces[k + 1].cell;
-    nb_[faces[k + 1].cell][faces[k + 1].slot] = faces[k].cell;
-  }
+  if (unmatched != 0)
+    throw RunError("delaunay: the cavity of an inserted point is not a ball (internal error)");
 }
 
 template <int N>
@@ -141,10 +197,10 @@ bool Triangulation<N>::in_conflict(std::int32_t c, std::int32_t p) const {
     std::array<std::int64_t, N + 2> rank;
     for (int j = 0; j <= N; ++j) {
       r[j] = at(cells_[c][j]);
-      rank[j] = cells_[c][j];
+      rank[j] = original_[cells_[c][j]];
     }
     r[N + 1] = at(p);
-    rank[N + 1] = p;
+    rank[N + 1] = original_[p];
     return in_sphere_perturbed<N>(r, rank) > 0;
   }
   // Through the vertex at infinity: P strictly beyond the hull face; on its plane, the answer of
@@ -217,7 +273,7 @@ void Triangulation<N>::insert(std::int32_t p) {
     alive_[c] = 0;
     free_.push_back(c);
   }
-  link_new_cells(0);
+  link_new_cells();
   last_ = created_.back();
 }
 
@@ -227,7 +283,9 @@ DelaunayDivision<N> Triangulation<N>::finish(DelaunayDivision<N> out) const {
   for (std::size_t c = 0; c < cells_.size(); ++c)
     if (alive_[c] && infinite_slot(static_cast<std::int32_t>(c)) < 0) {
       index[c] = static_cast<std::int32_t>(out.simplices.size());
-      out.simplices.push_back(cells_[c]);
+      Cell named;
+      for (int i = 0; i <= N; ++i) named[i] = original_[cells_[c][i]];
+      out.simplices.push_back(named);
     }
   out.neighbours.resize(out.simplices.size());
   for (std::size_t c = 0; c < cells_.size(); ++c)
@@ -303,30 +361,31 @@ DelaunayDivision<N> delaunay_division(std::vector<std::array<double, N>> points,
   if (distinct < N + 1)
     throw InputError(fmt::format("{}: {} distinct points; a {}D Delaunay division needs at least {}",
                                  source, distinct, N, N + 1));
-  // The point tree tp; the points come off it in its depth-first (Morton) order.
-  auto adaptor = points_adaptor<N>(n, [&](std::size_t i, int k) { return pts[i][k]; });
-  using Tree = SpaceTree<N, decltype(adaptor)>;
-  Tree tree(adaptor, {.bucket = 8});
+  // The order of insertion: BRIO rounds along a Hilbert curve (spatial_sort.hpp), where the
+  // paper takes the points off its point tree tp.
+  std::vector<std::int32_t> unique;
+  unique.reserve(distinct);
   for (std::size_t i = 0; i < n; ++i)
     if (out.representative[i] == static_cast<std::int32_t>(i))
-      tree.insert(static_cast<std::uint32_t>(i));
-  std::vector<std::int32_t> order;
-  order.reserve(distinct);
-  auto all = [](const auto&) { return true; };
-  tree.conditional_search(all, all, [&](std::uint32_t id) {
-    order.push_back(static_cast<std::int32_t>(id));
-    return true;
-  });
+      unique.push_back(static_cast<std::int32_t>(i));
+  const std::vector<std::int32_t> order = brio_hilbert_order<N>(pts, std::move(unique));
+  // The points copied in that order: vertex v of the triangulation is point order[v].
+  std::vector<std::array<double, N>> ordered(order.size());
+  std::vector<std::int32_t> vertices(order.size());
+  for (std::size_t v = 0; v < order.size(); ++v) {
+    ordered[v] = pts[order[v]];
+    vertices[v] = static_cast<std::int32_t>(v);
+  }
   std::array<std::int32_t, N + 1> first;
-  if (!first_simplex<N>(pts, order, first))
+  if (!first_simplex<N>(ordered, vertices, first))
     throw InputError(fmt::format("{}: all {} distinct points lie on one {}; a {}D Delaunay "
                                  "division needs points spanning the {}",
                                  source, distinct, N == 2 ? "line" : "plane", N,
                                  N == 2 ? "plane" : "space"));
-  Triangulation<N> t(pts);
+  Triangulation<N> t(ordered, order);
   t.start(first);
-  for (std::int32_t p : order)
-    if (std::find(first.begin(), first.end(), p) == first.end()) t.insert(p);
+  for (std::int32_t v : vertices)
+    if (std::find(first.begin(), first.end(), v) == first.end()) t.insert(v);
   return t.finish(std::move(out));
 }
 

@@ -3,15 +3,16 @@
 // algorithm of Xu et al. (2015) §3.2.3 "Delaunay division" (Fig. 11) — Bowyer–Watson insertion:
 //
 //   seed step                                          here
-//   point tree tp, points taken off it one by one      SpaceTree over the points; they are
-//                                                      inserted in its depth-first (Morton) order
+//   point tree tp, points taken off it one by one      the points in BRIO rounds, each along a
+//                                                      Hilbert curve (spatial_sort.hpp, as CGAL)
 //   containing tetrahedron T of size ~20a               the containing simplex in the limit of
 //                                                      infinite size: its vertices merged into one
 //                                                      vertex at infinity (as in CGAL), see below
 //   search the simplices whose circumsphere holds P    locate P by a walk from the last simplex
 //   (the set Q)                                        made (orientation tests), then grow Q over
 //                                                      neighbours by in-sphere tests
-//   remove Q, link each boundary face of Q to P        Triangulation::insert's cavity step
+//   remove Q, link each boundary face of Q to P        Triangulation::insert's cavity step; the
+//                                                      new cells' faces paired in a hash table
 //   remove the simplices sharing a face with T          drop the simplices on the vertex at infinity
 //
 // Why the infinite simplex: with a finite containing simplex, a hull simplex whose circumsphere

@@ -18,19 +18,59 @@
 // operations are the constructor (establish), insert and remove; the root grows when an object
 // falls outside it.
 //
-// Searches, written once (space_tree_search.hpp): the conditional search prunes cubes with a
+// Searches, written once (space_tree_impl.hpp): the conditional search prunes cubes with a
 // may_contain(cube) test and tests objects with a condition; the minimum search ranks cubes by a
 // range [m(b), M(b)] of the values their objects can take and objects by value(o).
+//
+// Layout for speed: a cube keeps its objects' ids together with their boxes (read from the
+// adaptor once, at insertion), so a search reads one contiguous array per cube instead of the
+// caller's storage in random order; condition/value may take the held object (id and box) rather
+// than the id. An object whose box changes must therefore be removed and inserted again. The
+// searches allocate nothing for trees of ordinary depth (their stacks and heaps live in place).
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/geometry/inline_vector.hpp"
 
 namespace shockfield::geometry {
+
+/// Squared distance from q to the box [lo, hi] (0 inside it).
+template <int N>
+double distance2_to_box(const std::array<double, N>& q, const std::array<double, N>& lo,
+                        const std::array<double, N>& hi) {
+  double d2 = 0.0;
+  for (int k = 0; k < N; ++k) {
+    const double d = std::max({lo[k] - q[k], q[k] - hi[k], 0.0});
+    d2 += d * d;
+  }
+  return d2;
+}
+
+/// An object as the tree holds it: its id (adaptor index) and its box when it was inserted;
+/// for an adaptor of points (kPoint) the box is one point, stored once (32 bytes a point in 3D
+/// instead of 56, so a cube's points take half the cache lines).
+template <int N, bool kPoint>
+struct TreeObject {
+  std::uint32_t id;
+  std::array<double, N> low, high;
+  const std::array<double, N>& lo() const { return low; }
+  const std::array<double, N>& hi() const { return high; }
+  double distance2_to(const std::array<double, N>& q) const { return distance2_to_box<N>(q, low, high); }
+};
+template <int N>
+struct TreeObject<N, true> {
+  std::uint32_t id;
+  std::array<double, N> low;
+  const std::array<double, N>& lo() const { return low; }
+  const std::array<double, N>& hi() const { return low; }
+  double distance2_to(const std::array<double, N>& q) const { return distance2_to_box<N>(q, low, low); }
+};
 
 /// A cube of the tree as the searches see it: its centre and half-side, and the region its
 /// objects (those of its sub-cubes included) occupy: the cube widened by `margin` on every side.
@@ -43,12 +83,12 @@ struct TreeCube {
   double hi(int k) const { return centre[k] + half + margin; }
   /// Squared distance from q to the region (0 inside it).
   double distance2_to(const std::array<double, N>& q) const {
-    double d2 = 0.0;
+    std::array<double, N> l, h;
     for (int k = 0; k < N; ++k) {
-      const double d = std::max({lo(k) - q[k], q[k] - hi(k), 0.0});
-      d2 += d * d;
+      l[k] = lo(k);
+      h[k] = hi(k);
     }
-    return d2;
+    return distance2_to_box<N>(q, l, h);
   }
   /// Squared distance from q to the farthest point of the region.
   double farthest2_from(const std::array<double, N>& q) const {
@@ -64,6 +104,7 @@ struct TreeCube {
 /// Points given coordinate by coordinate: coordinate(i, k) of point i, count points.
 template <int N, class Coordinate>
 struct PointsAdaptor {
+  static constexpr bool kPoints = true;  ///< every box is a point (lo == hi)
   std::size_t count;
   Coordinate coordinate;
   std::size_t size() const { return count; }
@@ -92,6 +133,8 @@ class SpaceTree {
  public:
   using Id = std::uint32_t;
   using Point = std::array<double, N>;
+  static constexpr bool kPoints = requires { requires Adaptor::kPoints; };
+  using Object = TreeObject<N, kPoints>;
   static constexpr int kChildren = 1 << N;
 
   /// An empty tree over `objects` (nothing inserted).
@@ -118,7 +161,13 @@ class SpaceTree {
     }
     if (objects_->size() > 0 && nodes_.empty()) make_root(lo, hi);
     for (std::size_t i = 0; i < objects_->size(); ++i) insert(static_cast<Id>(i));
+    lay_out_depth_first();
   }
+
+  /// Renumbers the cubes in depth-first order and moves each cube's objects to a fresh array in
+  /// that order, so that a search walks memory forwards (done by insert_all; worth calling
+  /// again after many inserts and removes). Changes nothing a search returns.
+  void lay_out_depth_first();
 
   /// Adds object `id` (an index into the adaptor). Throws InputError for a box with NaN or
   /// infinite coordinates, or an object already held.
@@ -137,7 +186,8 @@ class SpaceTree {
   /// Conditional search (§3.2.2): visits, from the largest cube to the smallest (depth first,
   /// sub-cubes in Morton order), the cubes for which may_contain(cube) is true, skipping the
   /// others with everything below them, and calls visit(id) for each object of a visited cube
-  /// with condition(id) true; visit returns false to stop the search.
+  /// with condition(object) true; visit returns false to stop the search. condition (and value
+  /// below) take either the id or the held Object (id and box).
   template <class MayContain, class Condition, class Visit>
   void conditional_search(MayContain&& may_contain, Condition&& condition, Visit&& visit) const;
 
@@ -148,32 +198,53 @@ class SpaceTree {
   /// Minimum search (§3.2.2): the k objects of smallest value(id), in increasing value (fewer
   /// when fewer objects have a finite value). range(cube) returns {m, M}: bounds of the values
   /// of the objects in the cube's region, m(b) <= value <= M(b) (M = +inf when unknown). Cubes
-  /// are opened in increasing m(b); a cube is skipped when m(b) exceeds the k-th value found, or
+  /// are opened depth first, the sub-cubes of a cube in increasing m(b) (the one nearest in
+  /// value first, as a kd-tree does; the paper's order by m(b) over all cubes needs a heap and
+  /// finds the same objects); a cube is skipped when m(b) exceeds the k-th value found, or
   /// (k = 1) the smallest M(b) of a cube seen (every cube holds an object); a cube with
   /// m(b) = +inf is never opened. Ties in value are resolved by the lower id (a cube whose m(b)
   /// equals the k-th value is still opened), so the result does not depend on the tree's shape.
   template <class Range, class Value>
-  std::vector<Found> minimum_search(std::size_t k, Range&& range, Value&& value) const;
-
-  /// The centre and size (longest side) of an object's box.
-  void centre_and_size(Id id, Point& centre, double& size) const {
-    Point lo, hi;
-    objects_->bounds(id, lo, hi);
-    size = 0.0;
-    for (int k = 0; k < N; ++k) {
-      centre[k] = 0.5 * (lo[k] + hi[k]);
-      size = std::max(size, hi[k] - lo[k]);
-    }
+  std::vector<Found> minimum_search(std::size_t k, Range&& range, Value&& value) const {
+    std::vector<Found> best;
+    minimum_search_into(k, range, value, best);
+    return best;
   }
+  /// The same into `best` (cleared first; a std::vector or an InlineVector, which lets a
+  /// nearest-point query run without allocating).
+  template <class Range, class Value, class Best>
+  void minimum_search_into(std::size_t k, Range&& range, Value&& value, Best& best) const;
 
  private:
-  struct Node {
-    TreeCube<N> cube;
-    int parent = -1;
-    bool split = false;
+  /// The centre and size (longest side) of an object's box.
+  static void centre_and_size(const Object& o, Point& centre, double& size) {
+    size = 0.0;
+    for (int k = 0; k < N; ++k) {
+      centre[k] = 0.5 * (o.lo()[k] + o.hi()[k]);
+      size = std::max(size, o.hi()[k] - o.lo()[k]);
+    }
+  }
+  /// condition/value of a search called with the held object, or with its id.
+  template <class F>
+  static decltype(auto) call_on(F& f, const Object& o) {
+    if constexpr (std::is_invocable_v<F&, const Object&>)
+      return f(o);
+    else
+      return f(o.id);
+  }
+
+  /// A cube's record; what a search reads of a leaf (objects, split, child) comes first, in
+  /// the first cache line (3D), what it reads of a split cube next.
+  struct alignas(64) Node {
+    std::vector<Object> objects;
     std::array<int, kChildren> child;
+    bool split = false;
+    TreeCube<N> cube;
+    /// The children's margins, copied here so that a search ranks a child without reading it.
+    std::array<double, kChildren> child_margin{};
+    int parent = -1;
+    int slot = 0;  ///< which child of the parent this cube is
     std::size_t count = 0;  ///< objects in this cube and its sub-cubes
-    std::vector<Id> objects;
   };
   struct Where {
     int node = -1;
@@ -191,15 +262,46 @@ class SpaceTree {
       if (c[k] >= node.cube.centre[k]) b |= 1 << k;
     return b;
   }
+  /// Child b of a cube as the searches see it (from the parent's record alone).
+  static TreeCube<N> child_cube(const Node& node, int b) {
+    TreeCube<N> cube;
+    cube.half = 0.5 * node.cube.half;
+    for (int k = 0; k < N; ++k)
+      cube.centre[k] = node.cube.centre[k] + ((b >> k & 1) ? cube.half : -cube.half);
+    cube.margin = node.child_margin[b];
+    return cube;
+  }
+  /// Asks the processor to bring the first line of cube n's record into cache: a search pushes
+  /// the sub-cubes it will open, and their loads then overlap instead of following one another.
+  void prefetch(int n) const {
+    __builtin_prefetch(&nodes_[n]);
+    prefetch_geometry(nodes_[n]);
+  }
+  /// The rest of a split cube's record (its geometry and sub-cube margins).
+  void prefetch_geometry(const Node& node) const {
+    __builtin_prefetch(&node.cube);
+    __builtin_prefetch(&node.child_margin.back());
+  }
+  void prefetch_objects(const Node& node) const {
+    const char* first = reinterpret_cast<const char*>(node.objects.data());
+    const std::size_t bytes = node.objects.size() * sizeof(Object);
+    for (std::size_t at = 0; at < bytes && at < 512; at += 64) __builtin_prefetch(first + at);
+  }
+  /// Widens cube n's margin (and its parent's copy of it) to hold an object of this size.
+  void widen(int n, double size) {
+    Node& node = nodes_[n];
+    node.cube.margin = std::max(node.cube.margin, 0.5 * size);
+    if (node.parent >= 0) nodes_[node.parent].child_margin[node.slot] = node.cube.margin;
+  }
   bool fits_child(const Node& node, double size) const {
     const double h = 0.5 * node.cube.half;
     return size <= h && h >= min_half_;
   }
   int ensure_child(int n, int b);
-  void place(Id id, int n);
+  void place(const Object& o, int n);
   void split(int n);
   void collapse(int n);
-  void gather(int n, std::vector<Id>& out);
+  void gather(int n, std::vector<Object>& out);
   std::string check_node(int n, std::size_t& counted) const;
 
   const Adaptor* objects_;

@@ -64,7 +64,9 @@ int SpaceTree<N, A>::ensure_child(int n, int b) {
   Point c = nodes_[n].cube.centre;
   for (int k = 0; k < N; ++k) c[k] += (b >> k & 1) ? h : -h;
   const int child = new_node(c, h, n);  // may reallocate nodes_
+  nodes_[child].slot = b;
   nodes_[n].child[b] = child;
+  nodes_[n].child_margin[b] = 0.0;
   return child;
 }
 
@@ -90,15 +92,17 @@ void SpaceTree<N, A>::grow_root_towards(const Point& c) {
   root.child[b] = old_root;
   root.count = nodes_[old_root].count;
   root.cube.margin = nodes_[old_root].cube.margin;
+  root.child_margin[b] = root.cube.margin;
   nodes_[old_root].parent = root_;
+  nodes_[old_root].slot = b;
   update_resolution(centre, 2.0 * h);
 }
 
 template <int N, SpaceTreeAdaptor<N> A>
-void SpaceTree<N, A>::place(Id id, int n) {
+void SpaceTree<N, A>::place(const Object& o, int n) {
   Node& node = nodes_[n];
-  where_[id] = Where{n, static_cast<std::uint32_t>(node.objects.size())};
-  node.objects.push_back(id);
+  where_[o.id] = Where{n, static_cast<std::uint32_t>(node.objects.size())};
+  node.objects.push_back(o);
 }
 
 template <int N, SpaceTreeAdaptor<N> A>
@@ -107,9 +111,17 @@ void SpaceTree<N, A>::insert(Id id) {
     throw InputError(fmt::format("space tree: object {} is not in the adaptor ({} objects)", id,
                                  objects_->size()));
   if (contains(id)) throw InputError(fmt::format("space tree: object {} is already held", id));
+  Object o{};
+  o.id = id;
+  {
+    Point lo, hi;
+    objects_->bounds(id, lo, hi);
+    o.low = lo;
+    if constexpr (!kPoints) o.high = hi;
+  }
   Point c;
   double size;
-  centre_and_size(id, c, size);
+  centre_and_size(o, c, size);
   for (int k = 0; k < N; ++k)
     if (!std::isfinite(c[k]) || !std::isfinite(size))
       throw InputError(fmt::format("space tree: object {} has a non-finite coordinate", id));
@@ -125,11 +137,11 @@ void SpaceTree<N, A>::insert(Id id) {
   for (;;) {
     Node& node = nodes_[n];
     ++node.count;
-    node.cube.margin = std::max(node.cube.margin, 0.5 * size);
+    widen(n, size);
     if (!node.split || !fits_child(node, size)) break;
     n = ensure_child(n, child_of(node, c));
   }
-  place(id, n);
+  place(o, n);
   ++held_;
   const Node& leaf = nodes_[n];
   if (!leaf.split && leaf.objects.size() > options_.bucket) split(n);
@@ -141,24 +153,24 @@ void SpaceTree<N, A>::split(int n) {
   std::size_t movable = 0;
   Point c;
   double size;
-  for (Id id : nodes_[n].objects) {
-    centre_and_size(id, c, size);
+  for (const Object& o : nodes_[n].objects) {
+    centre_and_size(o, c, size);
     movable += fits_child(nodes_[n], size);
   }
   if (movable <= options_.bucket) return;
   nodes_[n].split = true;
-  std::vector<Id> all = std::move(nodes_[n].objects);
+  std::vector<Object> all = std::move(nodes_[n].objects);
   nodes_[n].objects.clear();
-  for (Id id : all) {
-    centre_and_size(id, c, size);
+  for (const Object& o : all) {
+    centre_and_size(o, c, size);
     if (!fits_child(nodes_[n], size)) {
-      place(id, n);
+      place(o, n);
       continue;
     }
     const int child = ensure_child(n, child_of(nodes_[n], c));
     ++nodes_[child].count;
-    nodes_[child].cube.margin = std::max(nodes_[child].cube.margin, 0.5 * size);
-    place(id, child);
+    widen(child, size);
+    place(o, child);
   }
   for (int b = 0; b < kChildren; ++b) {
     const int child = nodes_[n].child[b];
@@ -167,13 +179,46 @@ void SpaceTree<N, A>::split(int n) {
 }
 
 template <int N, SpaceTreeAdaptor<N> A>
+void SpaceTree<N, A>::lay_out_depth_first() {
+  if (root_ < 0) return;
+  std::vector<int> order, renumbered(nodes_.size(), -1), stack{root_};
+  order.reserve(cube_count());
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    renumbered[n] = static_cast<int>(order.size());
+    order.push_back(n);
+    for (int b = kChildren - 1; b >= 0; --b)
+      if (nodes_[n].child[b] >= 0) stack.push_back(nodes_[n].child[b]);
+  }
+  std::vector<Node> laid(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    Node& node = laid[i];
+    const Node& old = nodes_[order[i]];
+    node.cube = old.cube;
+    node.parent = old.parent < 0 ? -1 : renumbered[old.parent];
+    node.slot = old.slot;
+    node.split = old.split;
+    node.child_margin = old.child_margin;
+    for (int b = 0; b < kChildren; ++b)
+      node.child[b] = old.child[b] < 0 ? -1 : renumbered[old.child[b]];
+    node.count = old.count;
+    node.objects.assign(old.objects.begin(), old.objects.end());  // allocated in this order
+    for (const Object& o : node.objects) where_[o.id].node = static_cast<int>(i);
+  }
+  nodes_ = std::move(laid);
+  free_.clear();
+  root_ = renumbered[root_];
+}
+
+template <int N, SpaceTreeAdaptor<N> A>
 bool SpaceTree<N, A>::remove(Id id) {
   if (!contains(id)) return false;
   const Where w = where_[id];
   Node& node = nodes_[w.node];
-  const Id moved = node.objects.back();
+  const Object moved = node.objects.back();
   node.objects[w.slot] = moved;
-  where_[moved].slot = w.slot;
+  where_[moved.id].slot = w.slot;
   node.objects.pop_back();
   where_[id] = Where{};
   --held_;
@@ -203,7 +248,7 @@ bool SpaceTree<N, A>::remove(Id id) {
 }
 
 template <int N, SpaceTreeAdaptor<N> A>
-void SpaceTree<N, A>::gather(int n, std::vector<Id>& out) {
+void SpaceTree<N, A>::gather(int n, std::vector<Object>& out) {
   Node& node = nodes_[n];
   out.insert(out.end(), node.objects.begin(), node.objects.end());
   for (int c : node.child)
@@ -215,80 +260,100 @@ void SpaceTree<N, A>::gather(int n, std::vector<Id>& out) {
 
 template <int N, SpaceTreeAdaptor<N> A>
 void SpaceTree<N, A>::collapse(int n) {
-  std::vector<Id> all;
+  std::vector<Object> all;
   gather(n, all);
   Node& node = nodes_[n];
   node.objects.clear();
   node.child.fill(-1);
   node.split = false;
-  for (Id id : all) place(id, n);
+  for (const Object& o : all) place(o, n);
 }
 
 template <int N, SpaceTreeAdaptor<N> A>
 template <class MayContain, class Condition, class Visit>
 void SpaceTree<N, A>::conditional_search(MayContain&& may_contain, Condition&& condition,
                                          Visit&& visit) const {
-  if (root_ < 0) return;
-  std::vector<int> stack{root_};
+  if (root_ < 0 || !may_contain(nodes_[root_].cube)) return;
+  InlineVector<int, 256> stack;  // cubes found to may_contain, not yet visited
+  stack.push_back(root_);
   while (!stack.empty()) {
     const Node& node = nodes_[stack.back()];
     stack.pop_back();
-    if (!may_contain(node.cube)) continue;
-    for (Id id : node.objects)
-      if (condition(id) && !visit(id)) return;
+    prefetch_objects(node);  // arriving while the sub-cubes are tested
     for (int b = kChildren - 1; b >= 0; --b)  // popped in Morton order
-      if (node.child[b] >= 0) stack.push_back(node.child[b]);
+      if (node.child[b] >= 0 && may_contain(child_cube(node, b))) {
+        prefetch(node.child[b]);
+        stack.push_back(node.child[b]);
+      }
+    for (const Object& o : node.objects)
+      if (call_on(condition, o) && !visit(o.id)) return;
   }
 }
 
 template <int N, SpaceTreeAdaptor<N> A>
-template <class Range, class Value>
-auto SpaceTree<N, A>::minimum_search(std::size_t k, Range&& range, Value&& value) const
-    -> std::vector<Found> {
-  std::vector<Found> best;  // max-heap on value, at most k
-  if (root_ < 0 || k == 0) return best;
+template <class Range, class Value, class Best>
+void SpaceTree<N, A>::minimum_search_into(std::size_t k, Range&& range, Value&& value,
+                                          Best& best) const {
+  best.clear();  // a max-heap on value, at most k
+  if (root_ < 0 || k == 0) return;
   // Ties in value go to the lower id: (value, id) compared lexicographically.
   auto worse = [](const Found& a, const Found& b) {
     return a.value < b.value || (a.value == b.value && a.id < b.id);
   };
+  // Depth first, the children of a cube taken in increasing m(b) (nearest first), which finds
+  // a good k-th value as soon as best-first order does, without a heap of cubes.
   struct Open {
     double m;
     int node;
-    bool operator<(const Open& o) const { return m > o.m; }  // min-heap on m
   };
-  std::vector<Open> open;
+  InlineVector<Open, 256> open;  // cubes to open, the next on top
   double upper = std::numeric_limits<double>::infinity();  // min M(b) seen, used when k == 1
-  auto push = [&](int n) {
-    const auto [m, M] = range(nodes_[n].cube);
-    if (!(m < std::numeric_limits<double>::infinity())) return;  // no finite value inside
-    if (k == 1) upper = std::min(upper, M);
-    open.push_back({m, n});
-    std::push_heap(open.begin(), open.end());
+  auto skipped = [&](double m) {
+    return m > upper || (best.size() == k && m > best.front().value);
   };
-  push(root_);
+  {
+    const auto [m, M] = range(nodes_[root_].cube);
+    if (!(m < std::numeric_limits<double>::infinity())) return;  // no finite value inside
+    if (k == 1) upper = M;
+    open.push_back({m, root_});
+  }
   while (!open.empty()) {
-    std::pop_heap(open.begin(), open.end());
     const Open top = open.back();
     open.pop_back();
-    if (top.m > upper || (best.size() == k && top.m > best.front().value)) break;
+    if (skipped(top.m)) continue;
     const Node& node = nodes_[top.node];
-    for (Id id : node.objects) {
-      const double v = value(id);
+    prefetch_objects(node);  // arriving while the sub-cubes are ranked
+    std::array<Open, kChildren> children;
+    int count = 0;
+    for (int b = 0; b < kChildren && node.split; ++b) {
+      if (node.child[b] < 0) continue;
+      const auto [m, M] = range(child_cube(node, b));
+      if (!(m < std::numeric_limits<double>::infinity())) continue;  // no finite value inside
+      if (k == 1) upper = std::min(upper, M);
+      // Insertion into `children`, kept in decreasing m so that the nearest is pushed last.
+      int at = count++;
+      for (; at > 0 && children[at - 1].m < m; --at) children[at] = children[at - 1];
+      children[at] = {m, node.child[b]};
+    }
+    for (const Object& o : node.objects) {
+      const double v = call_on(value, o);
       if (!(v < std::numeric_limits<double>::infinity())) continue;
       if (best.size() < k) {
-        best.push_back({v, id});
+        best.push_back({v, o.id});
         std::push_heap(best.begin(), best.end(), worse);
-      } else if (worse(Found{v, id}, best.front())) {
+      } else if (worse(Found{v, o.id}, best.front())) {
         std::pop_heap(best.begin(), best.end(), worse);
-        best.back() = {v, id};
+        best.back() = {v, o.id};
         std::push_heap(best.begin(), best.end(), worse);
       }
     }
-    for (int c : node.child)
-      if (c >= 0) push(c);
+    for (int c = 0; c < count; ++c)
+      if (!skipped(children[c].m)) {
+        prefetch(children[c].node);
+        open.push_back(children[c]);
+      }
   }
   std::sort_heap(best.begin(), best.end(), worse);
-  return best;
 }
 
 template <int N, SpaceTreeAdaptor<N> A>
@@ -296,12 +361,17 @@ std::string SpaceTree<N, A>::check_node(int n, std::size_t& counted) const {
   const Node& node = nodes_[n];
   std::size_t sub = node.objects.size(), movable = 0;
   for (std::size_t s = 0; s < node.objects.size(); ++s) {
-    const Id id = node.objects[s];
+    const Object& o = node.objects[s];
+    const Id id = o.id;
     if (id >= where_.size() || where_[id].node != n || where_[id].slot != s)
       return fmt::format("object {} in cube {} has a wrong locator", id, n);
+    Point lo, hi;
+    objects_->bounds(id, lo, hi);
+    if (lo != o.lo() || hi != o.hi())
+      return fmt::format("object {} in cube {} holds a box other than the adaptor's", id, n);
     Point c;
     double size;
-    centre_and_size(id, c, size);
+    centre_and_size(o, c, size);
     for (int k = 0; k < N; ++k)
       if (std::abs(c[k] - node.cube.centre[k]) > node.cube.half)
         return fmt::format("object {} lies outside its cube {}", id, n);
@@ -326,6 +396,8 @@ std::string SpaceTree<N, A>::check_node(int n, std::size_t& counted) const {
       return fmt::format("cube {} is linked wrongly to parent {}", c, n);
     if (ch.count == 0) return fmt::format("cube {} is empty", c);
     if (ch.cube.margin > node.cube.margin) return fmt::format("cube {} margin exceeds parent", c);
+    if (ch.slot != b || node.child_margin[b] != ch.cube.margin)
+      return fmt::format("cube {}: its parent {} records a wrong slot or margin", c, n);
     sub += ch.count;
     if (std::string e = check_node(c, counted); !e.empty()) return e;
   }

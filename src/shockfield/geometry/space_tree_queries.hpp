@@ -12,17 +12,18 @@
 
 namespace shockfield::geometry {
 
-/// Squared distance from q to the box of object id.
+/// Squared distance from q to the box of object id (as the adaptor gives it now).
 template <int N, class Tree>
 double box_distance2(const Tree& tree, typename Tree::Id id, const std::array<double, N>& q) {
   std::array<double, N> lo, hi;
   tree.objects().bounds(id, lo, hi);
-  double d2 = 0.0;
-  for (int k = 0; k < N; ++k) {
-    const double d = std::max({lo[k] - q[k], q[k] - hi[k], 0.0});
-    d2 += d * d;
-  }
-  return d2;
+  return distance2_to_box<N>(q, lo, hi);
+}
+
+/// MS2's range of a cube for the distance to q: [distance to its region, to its farthest point].
+template <int N>
+std::pair<double, double> distance2_range(const TreeCube<N>& cube, const std::array<double, N>& q) {
+  return {cube.distance2_to(q), cube.farthest2_from(q)};
 }
 
 struct Neighbour {
@@ -34,22 +35,23 @@ struct Neighbour {
 template <int N, class Tree>
 std::vector<Neighbour> k_nearest(const Tree& tree, const std::array<double, N>& q, std::size_t k) {
   const auto found = tree.minimum_search(
-      k,
-      [&](const TreeCube<N>& cube) {
-        return std::pair{cube.distance2_to(q), cube.farthest2_from(q)};
-      },
-      [&](typename Tree::Id id) { return box_distance2<N>(tree, id, q); });
+      k, [&](const TreeCube<N>& cube) { return distance2_range<N>(cube, q); },
+      [&](const typename Tree::Object& o) { return o.distance2_to(q); });
   std::vector<Neighbour> out;
   out.reserve(found.size());
   for (const auto& f : found) out.push_back({std::sqrt(f.value), f.id});
   return out;
 }
 
-/// The nearest object to q (MS2); distance +inf and id 0 for an empty tree.
+/// The nearest object to q (MS2); distance +inf and id 0 for an empty tree. Allocates nothing.
 template <int N, class Tree>
 Neighbour nearest(const Tree& tree, const std::array<double, N>& q) {
-  const auto found = k_nearest<N>(tree, q, 1);
-  return found.empty() ? Neighbour{std::numeric_limits<double>::infinity(), 0} : found.front();
+  InlineVector<typename Tree::Found, 1> found;
+  tree.minimum_search_into(
+      1, [&](const TreeCube<N>& cube) { return distance2_range<N>(cube, q); },
+      [&](const typename Tree::Object& o) { return o.distance2_to(q); }, found);
+  if (found.empty()) return {std::numeric_limits<double>::infinity(), 0};
+  return {std::sqrt(found.front().value), found.front().id};
 }
 
 /// Every object whose box comes within distance r of q (<= r), in no particular order.
@@ -59,7 +61,7 @@ std::vector<std::uint32_t> within_radius(const Tree& tree, const std::array<doub
   std::vector<std::uint32_t> out;
   const double r2 = r * r;
   tree.conditional_search([&](const TreeCube<N>& cube) { return cube.distance2_to(q) <= r2; },
-                          [&](typename Tree::Id id) { return box_distance2<N>(tree, id, q) <= r2; },
+                          [&](const typename Tree::Object& o) { return o.distance2_to(q) <= r2; },
                           [&](typename Tree::Id id) {
                             out.push_back(id);
                             return true;

@@ -174,6 +174,8 @@ TEST(SpaceTree, InsertRemoveSequencesKeepInvariants) {
       ++count;
     }
     held[id] = !held[id];
+    // Re-laying the cubes out (free slots dropped, cubes renumbered) keeps every invariant.
+    if (op % 700 == 350) tree.lay_out_depth_first();
     ASSERT_EQ(tree.size(), count);
     ASSERT_EQ(tree.check(), "") << "after operation " << op;
     ASSERT_EQ(tree.contains(id), held[id]);
@@ -196,6 +198,38 @@ TEST(SpaceTree, InsertRemoveSequencesKeepInvariants) {
   EXPECT_FALSE(tree.remove(0));
   // Memory follows the objects held: an emptied tree keeps no cubes.
   EXPECT_EQ(tree.cube_count(), 0u);
+}
+
+TEST(SpaceTree, CheckFindsAnObjectMovedWithoutReinsertion) {
+  // The tree keeps each object's box from its insertion; moving a point behind its back is a
+  // misuse check() must name.
+  Points<3> pts = make_cloud<3>(Cloud::Uniform, 200, 7);
+  const auto adaptor = adaptor_of<3>(pts);
+  auto tree = SpaceTree<3, decltype(adaptor)>::with_all(adaptor);
+  ASSERT_EQ(tree.check(), "");
+  pts[17][1] += 1e-9;
+  EXPECT_NE(tree.check().find("object 17 in cube"), std::string::npos) << tree.check();
+  ASSERT_TRUE(tree.remove(17));
+  tree.insert(17);
+  EXPECT_EQ(tree.check(), "");
+}
+
+TEST(SpaceTree, InlineVectorSpillsToTheHeap) {
+  InlineVector<int, 4> v;
+  std::vector<int> expected;
+  for (int i = 0; i < 1000; ++i) {
+    v.push_back(3 * i);
+    expected.push_back(3 * i);
+    if (i % 7 == 6) {
+      v.pop_back();
+      expected.pop_back();
+    }
+  }
+  ASSERT_EQ(v.size(), expected.size());
+  EXPECT_TRUE(std::equal(v.begin(), v.end(), expected.begin()));
+  EXPECT_EQ(v.back(), expected.back());
+  v.clear();
+  EXPECT_TRUE(v.empty());
 }
 
 TEST(SpaceTree, RejectsNonFiniteAndDoubleInsert) {
