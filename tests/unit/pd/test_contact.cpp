@@ -1,6 +1,7 @@
 // The short-range contact force (contact.hpp, LAMMPS's PERI rule): its value for one pair, forces
 // against finite differences of the potential energy (bonds + contact, PMB and LPS), and two
-// bodies that bounce apart only because of it, with momentum and energy balances.
+// bodies that bounce apart only because of it, with momentum and energy balances; the faces of a
+// zero-width cut that come into contact when they slide.
 #include <gtest/gtest.h>
 #include <omp.h>
 
