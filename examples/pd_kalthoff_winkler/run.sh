@@ -5,7 +5,7 @@
 # experiment's ~70° (the issue's goal), ΔX = 1 mm within 60°–80° (65.1° measured; 53.9° when the
 # contact force acts across the notches, README.md).
 # COARSE=1: the ΔX = 1 mm run alone (about 4 s of CPU: the default suite's stand-in).
-# FINE=1: also the run at ΔX = 0.25 mm (about 10 min) and convergence.png.
+# FINE=1: also the run at ΔX = 0.25 mm (about 4 min of CPU) and convergence.png.
 #   examples/pd_kalthoff_winkler/run.sh [RUNS_DIR]   (from the repository root; SHOCKFIELD=path/to/shockfield)
 set -eu
 . "$(dirname "$0")/../run_common.sh"
