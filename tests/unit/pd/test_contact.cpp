@@ -1,6 +1,7 @@
 // The short-range contact force (contact.hpp, LAMMPS's PERI rule): its value for one pair, forces
 // against finite differences of the potential energy (bonds + contact, PMB and LPS), and two
-// bodies that bounce apart only because of it, with momentum and energy balances.
+// bodies that bounce apart only because of it, with momentum and energy balances; the faces of a
+// zero-width cut that come into contact when they slide.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -163,4 +164,30 @@ TEST(ShortRangeContact, ResultsDoNotDependOnThreadCount) {
   omp_set_num_threads(1);
   EXPECT_GT(pairs, 0u);
   for (std::size_t i = 0; i < y[0].size(); ++i) ASSERT_EQ(y[0][i], y[1][i]) << i;
+}
+
+// The faces of a zero-width pre-crack (two rows of a 2D lattice ΔX apart) sliding past each other
+// by u along the cut (docs/theory/pd.md, "Short-range contact"): the pair straight across stays out
+// of its reach 0.9ΔX, a diagonal pair comes into its reach 0.9·√2ΔX once (ΔX − u)² + ΔX² < 1.62ΔX²,
+// i.e. u > 0.2126ΔX. Then the contact force pushes the upper face up (opening the cut) and back
+// against the slide; this is what lowered the Kalthoff–Winkler crack angle (examples/pd_kalthoff_winkler).
+TEST(ShortRangeContact, SlidingCutFacesComeIntoContactAfterAFifthOfTheSpacing) {
+  const int n = 8;
+  const PointCloud cloud = lattice_cloud(2, {n, 2, 1}, kSpacing);  // row y = 0 (lower face), row y = ΔX (upper)
+  ShortRangeContact contact(cloud, kMicromodulus, kHorizon);
+  const auto slid = [&](double u) {
+    std::vector<Vec3> y = cloud.x;
+    for (std::size_t i = 0; i < y.size(); ++i)
+      if (cloud.x[i].y() > 0.5 * kSpacing) y[i].x() += u * kSpacing;
+    return y;
+  };
+  const double threshold = 1.0 - std::sqrt(2.0 * 0.81 - 1.0);  // 0.2126
+  EXPECT_EQ(contact.active_pairs(slid(0.0)), 0u);
+  EXPECT_EQ(contact.active_pairs(slid(threshold - 0.005)), 0u);
+  const std::vector<Vec3> y = slid(threshold + 0.05);
+  EXPECT_EQ(contact.active_pairs(y), static_cast<std::size_t>(n - 1));  // one diagonal pair per column but the last
+  contact.update(y);
+  const Vec3 f = contact.force_density(n + n / 2, y);  // an upper-face point in the middle
+  EXPECT_GT(f.y(), 0.0);                              // the faces are pushed apart
+  EXPECT_LT(f.x(), 0.0);                              // and the slide (+x) is held back
 }
