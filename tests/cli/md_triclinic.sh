@@ -105,7 +105,7 @@ echo "ok: npt tri resumed from its checkpoint equals the uninterrupted run"
 # Profiles along x and y in the tilted cell bin the fractional coordinate s (slabs parallel to the
 # b-c or a-c face): on the npt run's final.data (thermal positions, tilts 3.59 0.014 0.0046 Å) the
 # step-0 count per 3.7 Å bin equals numpy's binning of s·L (L = lx, ly) and the density
-# count·m/(V·width/L) to the 10 printed digits; binning the Cartesian x instead gives other counts
+# count·m/(V·width_b/L) to the 10 printed digits (width_b: the last slab ends at the face); binning the Cartesian x instead gives other counts
 # (the check sees a tilt ignored).
 cp "$WORK/out/final.data" "$WORK/npt_final.data"
 profile_case="${npt_tri_case/$npt_fixture\/start.data/$WORK/npt_final.data}"
@@ -131,10 +131,12 @@ nbins = int(np.ceil(length / width - 1e-9))
 counts = np.bincount(np.clip(np.floor(s[:, d] * length / width).astype(int), 0, nbins - 1), minlength=nbins)
 cartesian = np.bincount(np.clip(np.floor((x[:, d] - lo[d]) / width).astype(int), 0, nbins - 1), minlength=nbins)
 ours = np.array([int(r["count"]) for r in rows])
-density = ours * 63.55 / (np.prod(hi - lo) * width / length) * 1.66053904  # amu/A^3 to g/cm^3 (core/units.hpp)
+widths = np.full(nbins, width)
+widths[-1] = length - (nbins - 1) * width  # the last slab ends at the cell face
+density = ours * 63.55 / (np.prod(hi - lo) * widths / length) * 1.66053904  # amu/A^3 to g/cm^3 (core/units.hpp)
 worst = max(abs(float(r["density_g_cc"]) - rho) / rho for r, rho in zip(rows, density))
 print(f"profile along {sys.argv[3]}: counts {ours.tolist()} (numpy on s: {counts.tolist()}; on the Cartesian axis: "
-      f"{cartesian.tolist()}), density = count m/(V width/L) within {worst:.1e}")
+      f"{cartesian.tolist()}), density = count m/(V width_b/L) within {worst:.1e}")
 tilt_seen = d == 1 or not np.array_equal(counts, cartesian)  # y: yz = 0.005 A moves hardly an atom
 sys.exit(0 if np.array_equal(ours, counts) and worst < 1e-9 and tilt_seen
          else "FAIL: the tilted cell's profile is not binned along the fractional coordinate")

@@ -20,7 +20,10 @@ Profile bin_profile(const Simulation& sim, int axis, double width) {
   const int nbins = std::max(1, static_cast<int>(std::ceil(length / width - 1e-9)));
   const Vec3 l = sim.box.length();
   const double area = l.prod() / l[axis];
-  const double volume = area * width;
+  // The last slab ends at the box face: it is narrower when the length is not a multiple of the
+  // width, and its density and pressure divide by its own volume (LAMMPS fix ave/chunk divides
+  // every bin by the full width, so its last bin reads low).
+  auto bin_width = [&](int b) { return b + 1 < nbins ? width : length - (nbins - 1) * width; };
   std::vector<int> bin_of(a.nlocal);
   Profile p;
   p.step = sim.step;
@@ -57,7 +60,8 @@ Profile bin_profile(const Simulation& sim, int axis, double width) {
   }
   for (int b = 0; b < nbins; ++b) {
     ProfileBin& bin = p.bins[b];
-    bin.position = lo + (b + 0.5) * width;
+    const double volume = area * bin_width(b);
+    bin.position = lo + b * width + 0.5 * bin_width(b);
     bin.density = mass[b] / volume * amu_per_A3_to_g_per_cc;
     const double dof = 3.0 * bin.count - 3.0;
     bin.temperature = dof > 0 ? mvv2e * (kinetic[b][0] + kinetic[b][1] + kinetic[b][2]) / (dof * boltz) : 0.0;
