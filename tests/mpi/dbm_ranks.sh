@@ -14,21 +14,6 @@ source "$(dirname "$0")/lib.bash"
 PART="$4"
 set -e
 export OMP_NUM_THREADS=1
-# Everything the run writes except what records the run itself (log, provenance, timings) and
-# the checkpoint (its ghost cells hold the last stage's halo, not comparable; its interior is
-# checked through the resumed run).
-outputs() { (cd "$1" && find . -type f ! -name log.txt ! -name summary.json ! -name config.resolved.toml \
-             ! -name 'checkpoint*' | sort); }
-same_outputs() {  # REFERENCE RUN WHAT
-  local n=0
-  [ "$(outputs "$1")" = "$(outputs "$2")" ] || fail "$3: the file lists differ: $(outputs "$2" | tr '\n' ' ')"
-  for f in $(outputs "$1"); do
-    cmp -s "$1/$f" "$2/$f" || fail "$3: $f differs from the serial run's"
-    n=$((n + 1))
-  done
-  echo "ok: $3: $n files byte-identical to the serial run"
-}
-
 sod=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/dbm_sod.toml")
 printf '%s\n' "$sod" > "$WORK/sod.toml"
 # 2D: y periodic (the default; cut in y, the halo wraps it across ranks) or reflecting walls (the
@@ -75,12 +60,7 @@ fi
 
 # Stopped on 4 ranks after 20 steps, resumed on 2.
 if [ "$PART" = sod ]; then
-set +e
-mpi 4 run "$WORK/sod.toml" --output "$WORK/restart" -q --stop-after 20 > /dev/null 2> "$WORK/stop.txt"
-code=$?
-set -e
-[ $code -eq 130 ] || fail "the stopped 4-rank run exited $code: $(cat "$WORK/stop.txt")"
-mpi 2 run "$WORK/sod.toml" --output "$WORK/restart" -q --resume > /dev/null
+stop_then_resume 20 2 "$WORK/restart" "$WORK/sod.toml"
 same_outputs "$WORK/serial" "$WORK/restart" "sod stopped on 4 ranks, resumed on 2"
 fi
 [ "$PART" = bad_input ] || { echo "dbm_ranks $PART: passed"; exit 0; }
