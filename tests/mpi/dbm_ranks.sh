@@ -77,15 +77,5 @@ refused 2 "method 'mpm' runs on one rank only so far" "$WORK/mpm.toml"
 blowup="${sod/p = 0.1 \}/p = 1e-4 \}}"
 printf '%s\n' "${blowup/tau = 1e-3/tau = 1e-3
 stability_check = \"off\"}" > "$WORK/blowup.toml"
-set +e
-"$SF" run "$WORK/blowup.toml" --output "$WORK/blow1" -q > /dev/null 2> "$WORK/blow1.txt"
-code1=$?
-mpi 2 run "$WORK/blowup.toml" --output "$WORK/blow2" -q > /dev/null 2> "$WORK/blow2.txt"
-code2=$?
-set -e
-[ $code1 -eq 3 ] && [ $code2 -eq 3 ] || fail "blow-up exit codes $code1 (serial), $code2 (2 ranks), expected 3"
-serial_line=$(grep "broke down" "$WORK/blow1.txt")
-[ -n "$serial_line" ] && [ "$(grep "broke down" "$WORK/blow2.txt")" = "$serial_line" ] ||
-  fail "the 2-rank blow-up message differs: $(cat "$WORK/blow2.txt") vs $serial_line"
-same_outputs "$WORK/blow1" "$WORK/blow2" "blow-up on 2 ranks (output kept)"
+fails_alike "broke down" "blow-up" "$WORK/blowup.toml"
 echo "dbm_ranks bad_input: refused on every rank with one message; blow-up diagnosed as in the serial run"

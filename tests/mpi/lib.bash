@@ -1,6 +1,7 @@
 # Shared by the `shockfield run` tests under mpirun (dbm_ranks.sh, md_run.sh, pd_ranks.sh):
 # tests/cli/lib.bash (SF, ROOT, WORK, fail) with MPIEXEC, `mpi NP ARGS...`, `refused NP PATTERN
-# ARGS...`, `same_outputs REFERENCE RUN WHAT` and `stop_then_resume STEPS NP FOLDER ARGS...`.
+# ARGS...`, `same_outputs REFERENCE RUN WHAT`, `stop_then_resume STEPS NP FOLDER ARGS...` and
+# `fails_alike PATTERN WHAT ARGS...`.
 source "$(dirname "${BASH_SOURCE[0]}")/../cli/lib.bash"
 MPIEXEC="$3"
 mpi() { local np="$1"; shift; "$MPIEXEC" --oversubscribe --allow-run-as-root -np "$np" "$SF" "$@"; }
@@ -44,4 +45,21 @@ stop_then_resume() {  # STEPS NP FOLDER ARGS...
   set -e
   [ $code -eq 130 ] || fail "the stopped 4-rank run exited $code: $(cat "$WORK/stop.txt")"
   mpi "$np" run "$@" --output "$folder" -q --resume > /dev/null
+}
+# `shockfield run ARGS` blows up alike serially and on 2 ranks: exit code 3, the same error line
+# (the one holding PATTERN) and the same output kept.
+fails_alike() {  # PATTERN WHAT ARGS...
+  local pattern="$1" what="$2"; shift 2
+  set +e
+  "$SF" run "$@" --output "$WORK/fail1" -q > /dev/null 2> "$WORK/fail1.txt"
+  local code1=$?
+  mpi 2 run "$@" --output "$WORK/fail2" -q > /dev/null 2> "$WORK/fail2.txt"
+  local code2=$?
+  set -e
+  [ $code1 -eq 3 ] && [ $code2 -eq 3 ] || fail "$what: exit codes $code1 (serial), $code2 (2 ranks), expected 3"
+  local serial_line
+  serial_line=$(grep -F -- "$pattern" "$WORK/fail1.txt")
+  [ -n "$serial_line" ] && [ "$(grep -F -- "$pattern" "$WORK/fail2.txt")" = "$serial_line" ] ||
+    fail "$what: the 2-rank message differs: $(cat "$WORK/fail2.txt") vs $serial_line"
+  same_outputs "$WORK/fail1" "$WORK/fail2" "$what on 2 ranks (output kept)"
 }

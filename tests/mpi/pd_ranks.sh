@@ -11,7 +11,7 @@
 # of each of the 4-rank cuts; the point count of the profiles is exact. A run stopped after 30 steps on 4
 # ranks and resumed on 2 is identical too. Bad input (more ranks than the body cuts into for δ, a
 # correspondence model, the contact force, a [homogeneous] case) exits 2 on every rank with the
-# message printed once and no run folder.
+# message printed once and no run folder; a blow-up on 2 ranks exits 3 with the serial message and output.
 # Usage: pd_ranks.sh SHOCKFIELD SOURCE_DIR MPIEXEC PART, PART one of ranks, restart, bad_input.
 source "$(dirname "$0")/lib.bash"
 PART="$4"
@@ -64,4 +64,8 @@ refused 2 "key 'material.model': pmb or lps under mpirun: the correspondence mod
 refused 2 "key 'material.contact': false under mpirun: the short-range contact force" "$CASES/pd_bar_fragments.toml" \
   --set material.contact=true
 refused 2 "a [homogeneous] pd case runs on one rank only" "$ROOT/examples/pd_ofhc_compression/ofhc_compression.toml"
+# A blow-up (velocities of 1e305 m/s: the first step is not finite) on 2 ranks: exit 3, the serial
+# message (raised from the gathered body) and the serial failure profile.
+fails_alike "non-finite positions or velocities at step 1" "pd blow-up" "$CASES/pd_bar_fragments.toml" \
+  --set 'region[0].velocity_formula=["1e305 * (x - 10e-3)"]'
 echo "pd_ranks bad_input: passed"
