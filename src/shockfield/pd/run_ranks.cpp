@@ -87,7 +87,8 @@ void deal_out(const Decomposition& domain, const Simulation& whole, Simulation& 
 void gather_whole(const Decomposition& domain, const Simulation& local, const ModelState& local_state,
                   Simulation& whole, ModelState& whole_state) {
   // One record per owned point (index, y, v, f, its per-point arrays' rows) and per bond of an
-  // owned point (index in the whole family, its per-bond arrays' rows).
+  // owned point (its per-bond arrays' rows; an owned point has all its bonds, in the whole
+  // family's order, so rank 0 places them by the point's index).
   std::vector<double> points, bonds;
   for (std::size_t l = 0; l < domain.owned(); ++l) {
     points.push_back(static_cast<double>(domain.point_origin()[l]));
@@ -95,17 +96,16 @@ void gather_whole(const Decomposition& domain, const Simulation& local, const Mo
       points.insert(points.end(), a->data(), a->data() + 3);
     for (const ModelStateArray& a : local_state)
       if (!per_bond(a)) pack_row(a, l, points);
-    for (int b = domain.family().begin(l); b < domain.family().end(l); ++b) {
-      bonds.push_back(static_cast<double>(domain.bond_origin()[static_cast<std::size_t>(b)]));
+    for (int b = domain.family().begin(l); b < domain.family().end(l); ++b)
       for (const ModelStateArray& a : local_state)
         if (per_bond(a)) pack_row(a, static_cast<std::size_t>(b), bonds);
-    }
   }
   const std::vector<double> all_points = domain.comm().gather(points), all_bonds = domain.comm().gather(bonds);
   if (!domain.comm().is_root()) return;
   const std::size_t n = whole.cloud().size();
   std::vector<Vec3> y(n), v(n), f(n);
   std::vector<int> seen(n, 0);
+  const double* bond_in = all_bonds.data();
   for (const double* in = all_points.data(); in < all_points.data() + all_points.size();) {
     const auto g = static_cast<std::size_t>(*in++);
     ++seen[g];
@@ -113,16 +113,14 @@ void gather_whole(const Decomposition& domain, const Simulation& local, const Mo
     in += 9;
     for (ModelStateArray& a : whole_state)
       if (!per_bond(a)) in = unpack_row(a, g, in);
+    for (int b = whole.family().begin(g); b < whole.family().end(g); ++b)
+      for (ModelStateArray& a : whole_state)
+        if (per_bond(a)) bond_in = unpack_row(a, static_cast<std::size_t>(b), bond_in);
   }
   const auto missing = std::count_if(seen.begin(), seen.end(), [](int s) { return s != 1; });
   if (missing > 0)
     throw RunError(fmt::format("pd on {} ranks: {} of {} points lost or held twice at step {} (a decomposition bug)",
                                domain.comm().size(), missing, n, local.step_count()));
-  for (const double* in = all_bonds.data(); in < all_bonds.data() + all_bonds.size();) {
-    const auto b = static_cast<std::size_t>(*in++);
-    for (ModelStateArray& a : whole_state)
-      if (per_bond(a)) in = unpack_row(a, b, in);
-  }
   whole.restore(std::move(y), std::move(v), std::move(f), local.step_count(), local.time());
 }
 
