@@ -6,7 +6,8 @@
 # every point), the .vtp frames and the LAMMPS dumps — must be byte-identical (cmp) to the serial
 # run's: each owned point's bond sums add the same terms in the serial order from ghosts holding
 # their owners' bits, and rank 0 writes from the gathered whole body with the serial code, so
-# nothing is reordered (no round-off bound is needed). The same on the 2 x 2 grid (corner ghosts)
+# nothing is reordered (no round-off bound is needed). The same on the 2 x 2 grid (corner ghosts),
+# on the 1 x 1 grid without mpirun
 # and on 2 ranks x 2 OpenMP threads; the bar's final damage has broken bonds within δ on both sides
 # of each of the 4-rank cuts; the point count of the profiles is exact. A run stopped after 30 steps on 4
 # ranks and resumed on 2 is identical too. Bad input (more ranks than the body cuts into for δ, a
@@ -32,6 +33,9 @@ if [ "$PART" = ranks ]; then
       --output "$WORK/hybrid_$c" -q > /dev/null
     same_outputs "$WORK/serial_$c" "$WORK/hybrid_$c" "$c on 2 ranks x 2 threads"
   done
+  # --rank-grid 1x1 without mpirun: the decomposed path on one rank.
+  "$SF" run "$CASES/pd_plate_tension.toml" --output "$WORK/grid1x1" -q --rank-grid 1x1 > /dev/null
+  same_outputs "$WORK/serial_pd_plate_tension" "$WORK/grid1x1" "pd_plate_tension on the 1 x 1 rank grid"
   mpi 4 run "$CASES/pd_plate_tension.toml" --output "$WORK/grid2x2" --rank-grid 2x2 > "$WORK/grid.txt"
   same_outputs "$WORK/serial_pd_plate_tension" "$WORK/grid2x2" "pd_plate_tension on the 2 x 2 rank grid"
   grep -q "960 points, .* on 4 ranks (rank grid 2 x 2 x 1)" "$WORK/grid2x2/log.txt" || fail "the log does not give the rank grid"
