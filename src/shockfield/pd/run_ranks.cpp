@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <variant>
 
 #include "shockfield/core/error.hpp"
@@ -117,10 +118,14 @@ void gather_whole(const Decomposition& domain, const Simulation& local, const Mo
       for (ModelStateArray& a : whole_state)
         if (per_bond(a)) bond_in = unpack_row(a, static_cast<std::size_t>(b), bond_in);
   }
+  // A point lost or held twice is a bug of the decomposition: rank 0 alone knows, so it ends every
+  // rank (MPI_Abort, exit 3) rather than leave them waiting in the next collective.
   const auto missing = std::count_if(seen.begin(), seen.end(), [](int s) { return s != 1; });
-  if (missing > 0)
-    throw RunError(fmt::format("pd on {} ranks: {} of {} points lost or held twice at step {} (a decomposition bug)",
-                               domain.comm().size(), missing, n, local.step_count()));
+  if (missing > 0) {
+    fmt::print(stderr, "error: pd on {} ranks: {} of {} points lost or held twice at step {} (a decomposition bug)\n",
+               domain.comm().size(), missing, n, local.step_count());
+    domain.comm().abort(3);
+  }
   whole.restore(std::move(y), std::move(v), std::move(f), local.step_count(), local.time());
 }
 

@@ -35,7 +35,8 @@ void deal_out(const Decomposition& domain, const Simulation& whole, Simulation& 
 
 /// Every rank's owned points (state, force densities, clock) and their model state gathered on
 /// rank 0 into `whole` and `whole_state` (which holds the whole body's arrays, overwritten);
-/// nothing changes elsewhere. RunError when a point arrives twice or not at all. Collective.
+/// nothing changes elsewhere. A point arriving twice or not at all ends every rank (exit 3).
+/// Collective.
 void gather_whole(const Decomposition& domain, const Simulation& local, const ModelState& local_state,
                   Simulation& whole, ModelState& whole_state);
 
