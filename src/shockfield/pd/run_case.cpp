@@ -186,20 +186,9 @@ class PdMethod final : public Method {
  public:
   /// `options.validate_only` (shockfield run --check): the model is built on a sub-body
   /// (checked_body) and the sizes of the whole body are counted, not built.
+  /// Under mpirun (or with --rank-grid) the body is then decomposed (run_ranks.hpp).
   PdMethod(const Config& root, const PdCase& c, const RunOptions& options)
-      : PdMethod(root, c, options.validate_only) {
-    if (!options.validate_only) decompose(root, options);
-  }
-  ~PdMethod() override { announce(parallel::MethodCall::quit); }
-  PdMethod(const PdMethod&) = delete;
-  PdMethod& operator=(const PdMethod&) = delete;
-  /// The ranks other than 0 of a decomposed run: their part of each of rank 0's calls.
-  void serve() {
-    if (mirror_) mirror_->serve(*this);
-  }
-
-  PdMethod(const Config& root, const PdCase& c, bool check)
-      : c_(c), built_(check ? checked_body(c_.body) : c_.body),
+      : c_(c), built_(options.validate_only ? checked_body(c_.body) : c_.body),
         cloud_(built_.cloud ? *built_.cloud : lattice_cloud(built_.dim, built_.counts, built_.spacing, built_.origin)),
         cracked_(cracked_family(c_, cloud_, built_)),
         model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, cracked_.family, cracked_.cut); },
@@ -213,6 +202,14 @@ class PdMethod final : public Method {
     derive_common(root, c_, points(), bonds(), sim_, dt_);
     if (model_.derive) model_.derive(root);
     model_.fields.damage = [this] { return sim_.model().damage(); };
+    if (!options.validate_only) decompose(root, options);
+  }
+  ~PdMethod() override { announce(parallel::MethodCall::quit); }
+  PdMethod(const PdMethod&) = delete;
+  PdMethod& operator=(const PdMethod&) = delete;
+  /// The ranks other than 0 of a decomposed run: their part of each of rank 0's calls.
+  void serve() {
+    if (mirror_) mirror_->serve(*this);
   }
 
   std::string name() const override { return "pd"; }
