@@ -81,6 +81,9 @@ Decomposition::Decomposition(const parallel::Communicator& world, const parallel
     points.x.push_back(cloud.x[g]);
   }
   owned_ = points.size();
+  if (exchange_.total(owned_) != static_cast<long long>(cloud.size()))  // every point owned once
+    throw RunError(fmt::format("pd decomposition: the ranks own {} of the body's {} points", exchange_.total(owned_),
+                               cloud.size()));
   swaps_ = exchange_.build_ghosts(points, {0, 0, 0});
   point_origin_ = std::move(points.origin);
 
