@@ -14,21 +14,6 @@ source "$(dirname "$0")/lib.bash"
 PART="$4"
 set -e
 export OMP_NUM_THREADS=1
-# Everything the run writes except what records the run itself (log, provenance, timings) and
-# the checkpoint (its ghost cells hold the last stage's halo, not comparable; its interior is
-# checked through the resumed run).
-outputs() { (cd "$1" && find . -type f ! -name log.txt ! -name summary.json ! -name config.resolved.toml \
-             ! -name 'checkpoint*' | sort); }
-same_outputs() {  # REFERENCE RUN WHAT
-  local n=0
-  [ "$(outputs "$1")" = "$(outputs "$2")" ] || fail "$3: the file lists differ: $(outputs "$2" | tr '\n' ' ')"
-  for f in $(outputs "$1"); do
-    cmp -s "$1/$f" "$2/$f" || fail "$3: $f differs from the serial run's"
-    n=$((n + 1))
-  done
-  echo "ok: $3: $n files byte-identical to the serial run"
-}
-
 sod=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/dbm_sod.toml")
 printf '%s\n' "$sod" > "$WORK/sod.toml"
 # 2D: y periodic (the default; cut in y, the halo wraps it across ranks) or reflecting walls (the
@@ -75,12 +60,7 @@ fi
 
 # Stopped on 4 ranks after 20 steps, resumed on 2.
 if [ "$PART" = sod ]; then
-set +e
-mpi 4 run "$WORK/sod.toml" --output "$WORK/restart" -q --stop-after 20 > /dev/null 2> "$WORK/stop.txt"
-code=$?
-set -e
-[ $code -eq 130 ] || fail "the stopped 4-rank run exited $code: $(cat "$WORK/stop.txt")"
-mpi 2 run "$WORK/sod.toml" --output "$WORK/restart" -q --resume > /dev/null
+stop_then_resume 20 2 "$WORK/restart" "$WORK/sod.toml"
 same_outputs "$WORK/serial" "$WORK/restart" "sod stopped on 4 ranks, resumed on 2"
 fi
 [ "$PART" = bad_input ] || { echo "dbm_ranks $PART: passed"; exit 0; }
@@ -97,15 +77,5 @@ refused 2 "method 'mpm' runs on one rank only so far" "$WORK/mpm.toml"
 blowup="${sod/p = 0.1 \}/p = 1e-4 \}}"
 printf '%s\n' "${blowup/tau = 1e-3/tau = 1e-3
 stability_check = \"off\"}" > "$WORK/blowup.toml"
-set +e
-"$SF" run "$WORK/blowup.toml" --output "$WORK/blow1" -q > /dev/null 2> "$WORK/blow1.txt"
-code1=$?
-mpi 2 run "$WORK/blowup.toml" --output "$WORK/blow2" -q > /dev/null 2> "$WORK/blow2.txt"
-code2=$?
-set -e
-[ $code1 -eq 3 ] && [ $code2 -eq 3 ] || fail "blow-up exit codes $code1 (serial), $code2 (2 ranks), expected 3"
-serial_line=$(grep "broke down" "$WORK/blow1.txt")
-[ -n "$serial_line" ] && [ "$(grep "broke down" "$WORK/blow2.txt")" = "$serial_line" ] ||
-  fail "the 2-rank blow-up message differs: $(cat "$WORK/blow2.txt") vs $serial_line"
-same_outputs "$WORK/blow1" "$WORK/blow2" "blow-up on 2 ranks (output kept)"
+fails_alike "broke down" "blow-up" "$WORK/blowup.toml"
 echo "dbm_ranks bad_input: refused on every rank with one message; blow-up diagnosed as in the serial run"

@@ -68,12 +68,7 @@ fi
 
 if [ "$PART" = restart ]; then
   for np in 2 1; do
-    set +e
-    mpi 4 run "$WORK/cu.toml" --output "$WORK/restart$np" -q "${full[@]}" --stop-after 130 > /dev/null 2> "$WORK/stop.txt"
-    code=$?
-    set -e
-    [ $code -eq 130 ] || fail "the stopped 4-rank run exited $code: $(cat "$WORK/stop.txt")"
-    mpi $np run "$WORK/cu.toml" --output "$WORK/restart$np" -q "${full[@]}" --resume > /dev/null
+    stop_then_resume 130 $np "$WORK/restart$np" "$WORK/cu.toml" "${full[@]}"
     same_thermo "$WORK/serial" "$WORK/restart$np" "tiny_cu stopped on 4 ranks at step 130, resumed on $np"
     same_atoms "$WORK/serial" "$WORK/restart$np" "tiny_cu stopped on 4 ranks, resumed on $np"
   done

@@ -11,6 +11,7 @@
 #include "shockfield/core/run_options.hpp"
 #include "shockfield/dbm/run_case.hpp"
 #include "shockfield/md/run_case.hpp"
+#include "shockfield/pd/run_case.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/parallel/communicator.hpp"
 #include "shockfield/registry/method_registry.hpp"
@@ -22,7 +23,7 @@ namespace {
 // ranks other than 0 run: rank 0 runs the driver as in a serial run and drives them.
 using RankServer = void (*)(const Config&, const RunOptions&);
 const std::map<std::string, RankServer>& decomposed_methods() {
-  static const std::map<std::string, RankServer> table{{"dbm", &dbm::serve_ranks}, {"md", &md::serve_ranks}};
+  static const std::map<std::string, RankServer> table{{"dbm", &dbm::serve_ranks}, {"md", &md::serve_ranks}, {"pd", &pd::serve_ranks}};
   return table;
 }
 
@@ -75,7 +76,7 @@ void add_run_command(CLI::App& app, const std::vector<std::string>& command_line
   cmd->add_flag("-q,--quiet", options->quiet, "No progress line");
   cmd->add_option("--rank-grid", options->rank_grid,
                   "MPI ranks along x, y (and z) as PxQ or PxQxR, their product the rank count\n"
-                  "(mpirun -np); default: the grid with the least halo traffic (dbm and md;\n"
+                  "(mpirun -np); default: the grid with the least halo traffic (dbm, md and pd;\n"
                   "docs/parallel.md)")
       ->type_name("PxQ");
   cmd->add_option("--stop-after", options->stop_after,

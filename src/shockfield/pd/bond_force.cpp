@@ -42,6 +42,12 @@ void BondForce<Model>::break_bonds(const std::vector<unsigned char>& cut) {
 }
 
 template <class Model>
+void BondForce<Model>::set_ghost_forward(std::function<void(std::vector<double>&)> forward) {
+  forward_ = std::move(forward);
+  forward_(weighted_volume_);
+}
+
+template <class Model>
 BondTerms BondForce<Model>::terms(std::size_t i, int b, double e) const {
   const auto j = static_cast<std::size_t>(family_.neighbor[b]);
   return {family_.length[b], e, omega_[b], theta_[i], theta_[j], weighted_volume_[i], weighted_volume_[j]};
@@ -72,7 +78,11 @@ void BondForce<Model>::compute_dilatation(const std::vector<Vec3>& y) {
 template <class Model>
 void BondForce<Model>::compute(const Kinematics& k, std::vector<Vec3>& force_density) {
   const auto& y = k.y;
-  if constexpr (Model::uses_dilatation) compute_dilatation(y);
+  if (forward_ && damage_law_.enabled()) forward_(s0_);
+  if constexpr (Model::uses_dilatation) {
+    compute_dilatation(y);
+    if (forward_) forward_(theta_);
+  }
   if (contact_) contact_->update(y);
   const auto n = static_cast<std::ptrdiff_t>(cloud_.size());
   force_density.resize(cloud_.size());

@@ -4,6 +4,7 @@
 // LAMMPS's fix PERI_NEIGH), so a thread writes only its own points: no atomics and results that
 // do not depend on the thread count. With `contact` the short-range contact force of LAMMPS's
 // PERI package (contact.hpp) is added to every point's bond force.
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -34,6 +35,12 @@ class BondForce final : public ForceModel {
   /// Breaks the bonds flagged 1 in `cut` (one flag per bond of the family: a pre-crack,
   /// precrack.hpp) before the first step; they count in the damage like any broken bond.
   void break_bonds(const std::vector<unsigned char>& cut);
+
+  /// On MPI ranks (pd/decomposition.hpp) the body holds ghosts, whose families are cut short:
+  /// `forward` copies every owned point's value of a per-point array to its ghosts. It is applied
+  /// to the weighted volumes now, to the critical stretches before each evaluation and to the
+  /// dilatations once computed, so that what a bond of an owned point reads of a ghost is its owner's.
+  void set_ghost_forward(std::function<void(std::vector<double>&)> forward);
 
   const std::vector<double>& weighted_volume() const { return weighted_volume_; }
   const std::vector<double>& dilatation() const { return theta_; }
@@ -69,6 +76,7 @@ class BondForce final : public ForceModel {
   std::vector<unsigned char> intact_;    // per bond
   std::vector<double> s0_, s0_new_;
   std::optional<ShortRangeContact> contact_;
+  std::function<void(std::vector<double>&)> forward_;
 };
 
 using PmbForce = BondForce<PmbModel>;

@@ -18,10 +18,13 @@
 #include "shockfield/pd/bar_impact.hpp"
 #include "shockfield/pd/bond_force.hpp"
 #include "shockfield/pd/case_file.hpp"
+#include "shockfield/pd/check_body.hpp"
 #include "shockfield/pd/checkpoint.hpp"
 #include "shockfield/pd/homogeneous_case.hpp"
 #include "shockfield/pd/lattice_bonds.hpp"
 #include "shockfield/pd/run_output.hpp"
+#include "shockfield/pd/run_ranks.hpp"
+#include "shockfield/parallel/method_mirror.hpp"
 
 namespace shockfield::pd {
 
@@ -94,6 +97,8 @@ struct ModelRun {
   /// Takes back the saved state.
   std::function<void(const ModelState&)> restore;
   std::function<void(const Config&)> derive;
+  /// A bond model's BondForce::set_ghost_forward (MPI ranks); empty for the others.
+  std::function<void(std::function<void(std::vector<double>&)>)> set_ghost_forward = {};
 };
 
 // Correspondence (J2 or crystal): σ, the plastic measure and the material state of every point.
@@ -136,7 +141,8 @@ ModelRun make_model(const Config&, const PdCase& c, const BondSpec<Law>& spec, c
                {{}, {}, std::vector<int>(cloud.size(), 0), {}},
                [&force] { return force.saved_state(); },
                [&force](const ModelState& state) { force.restore_state(state); },
-               {}};
+               {},
+               [&force](std::function<void(std::vector<double>&)> forward) { force.set_ghost_forward(std::move(forward)); }};
   run.force = std::move(model);
   return run;
 }
@@ -168,52 +174,21 @@ CrackedFamily cracked_family(const PdCase& c, const PointCloud& cloud, const Bod
   return f;
 }
 
-// The body --check builds the model on: at most 4⌈m⌉ + 1 points along each axis (m the horizon
-// factor), so that it holds every kind of point of the whole body: a point's stable step depends
-// on its family and its neighbours' families (shape tensors, weighted volumes), i.e. on what lies
-// within two horizons (2⌈m⌉ points) of it, and along an axis of 4⌈m⌉ + 1 points there is a point
-// at each distance 0..2⌈m⌉ from either surface with at least 2⌈m⌉ on its other side. So the sub-body
-// has the whole body's smallest stable step (for a polycrystal, of the grains the sub-body holds).
-// Its bonds grow as m^6 in 3D, so beyond kCheckBonds (~0.2 GB and ~2 s; m > 4 in 3D) it
-// is made smaller until it has at most kCheckBonds (a body of (m+1)^3 points is all bonds, so for a
-// huge m the sub-body holds no whole family): the stable step is then an estimate (the run
-// computes its own on the whole body before its folder exists).
-constexpr double kCheckBonds = 5e6;
-
-// A body from a points_file is checked whole (its file has been read anyway).
-BodySpec checked_body(const BodySpec& body) {
-  if (body.cloud) return body;
-  const int m = static_cast<int>(std::ceil(body.horizon_factor));
-  BodySpec sub = body;
-  for (int most = 4 * m + 1; most >= 2; --most) {
-    for (int d = 0; d < body.dim; ++d) {
-      const auto a = static_cast<std::size_t>(d);
-      sub.counts[a] = std::min(body.counts[a], most);
-    }
-    if (lattice_bonds(sub.dim, sub.counts, sub.horizon_factor) <= kCheckBonds) break;
-  }
-  return sub;
-}
-
-// Whether a sub-body of checked_body has every kind of point of the body (else its stable step is
-// an estimate).
-bool holds_every_kind(const BodySpec& sub, const BodySpec& body) {
-  const int m = static_cast<int>(std::ceil(body.horizon_factor));
-  for (int d = 0; d < body.dim; ++d) {
-    const auto a = static_cast<std::size_t>(d);
-    if (sub.counts[a] < std::min(body.counts[a], 4 * m + 1)) return false;
-  }
-  return true;
-}
-
 // Peridynamics as a plug-in of the run driver: velocity-Verlet with a fixed step to end_time
 // (the last step lands on it), rows and profiles at the first step at or past k·interval.
+// Under mpirun (run_ranks.hpp) every rank builds the whole body and its model as in a serial run,
+// starts or resumes it, then deals its points out to `local_` (owned points and ghosts), which the
+// steps advance. Rank 0 runs the driver and announces each collective call to the other ranks,
+// which serve() by making the same call (parallel/method_mirror.hpp); before anything reads the
+// state (an output due, a thermo row, a checkpoint, the results) sync() gathers every rank's
+// points into rank 0's whole body, from which the serial code writes every output.
 class PdMethod final : public Method {
  public:
-  /// `check` (shockfield run --check): the model is built on a sub-body (checked_body) and the
-  /// sizes of the whole body are counted, not built.
-  PdMethod(const Config& root, const PdCase& c, bool check)
-      : c_(c), built_(check ? checked_body(c_.body) : c_.body),
+  /// `options.validate_only` (shockfield run --check): the model is built on a sub-body
+  /// (checked_body) and the sizes of the whole body are counted, not built.
+  /// Under mpirun (or with --rank-grid) the body is then decomposed (run_ranks.hpp).
+  PdMethod(const Config& root, const PdCase& c, const RunOptions& options)
+      : c_(c), built_(options.validate_only ? checked_body(c_.body) : c_.body),
         cloud_(built_.cloud ? *built_.cloud : lattice_cloud(built_.dim, built_.counts, built_.spacing, built_.origin)),
         cracked_(cracked_family(c_, cloud_, built_)),
         model_(std::visit([&](const auto& m) { return make_model(root, c_, m, cloud_, cracked_.family, cracked_.cut); },
@@ -227,11 +202,22 @@ class PdMethod final : public Method {
     derive_common(root, c_, points(), bonds(), sim_, dt_);
     if (model_.derive) model_.derive(root);
     model_.fields.damage = [this] { return sim_.model().damage(); };
+    if (!options.validate_only) decompose(root, options);
+  }
+  ~PdMethod() override { announce(parallel::MethodCall::quit); }
+  PdMethod(const PdMethod&) = delete;
+  PdMethod& operator=(const PdMethod&) = delete;
+  /// The ranks other than 0 of a decomposed run: their part of each of rank 0's calls.
+  void serve() {
+    if (mirror_) mirror_->serve(*this);
   }
 
   std::string name() const override { return "pd"; }
   std::string size_text() const override {
-    return fmt::format("{} points, {} bonds, {}D", cloud_.size(), cracked_.family.bonds(), c_.body.dim);
+    const std::string text = fmt::format("{} points, {} bonds, {}D", cloud_.size(), cracked_.family.bonds(), c_.body.dim);
+    if (!domain_) return text;
+    const parallel::Dims3& d = domain_->dims();
+    return fmt::format("{}, on {} ranks (rank grid {} x {} x {})", text, domain_->comm().size(), d[0], d[1], d[2]);
   }
   std::string check_text() const override {
     const auto& n = built_.counts;
@@ -244,37 +230,66 @@ class PdMethod final : public Method {
   }
 
   void start(RunContext& run) override {
+    announce(parallel::MethodCall::start);
     set_impact_velocity(sim_, c_.impact_speed);
     apply_regions(sim_, c_.regions, true);
     sim_.setup();
+    deal_out_whole();
     open(run, std::nullopt);
     write_due();
   }
+  // Under mpirun every rank reads the whole (serial) checkpoint, then deals it out.
   void resume(RunContext& run) override {
+    if (mirror_) mirror_->announce_resume(run.checkpoint.string());
     ModelState state;
     counters_ = read_checkpoint(run.checkpoint, sim_, state);
     model_.restore(state);
     apply_regions(sim_, c_.regions, false);
+    deal_out_whole();
     open(run, ResumePoint{sim_.step_count(), counters_.profiles, sim_.time()});
   }
-  bool finished() const override { return !(sim_.time() < c_.solver.end_time - tol_); }
-  void advance() override { sim_.step(std::min(dt_, c_.solver.end_time - sim_.time())); }
-  void write_outputs() override { write_due(); }
-  std::int64_t step() const override { return sim_.step_count(); }
-  std::string position() const override { return fmt::format(" (t = {} s)", sim_.time()); }
+  bool finished() const override { return !(clock().time() < c_.solver.end_time - tol_); }
+  // A decomposed step that is not finite on some rank fails on every rank, with the serial message
+  // raised from the gathered whole body.
+  void advance() override {
+    const double dt = std::min(dt_, c_.solver.end_time - clock().time());
+    if (!domain_) return sim_.step(dt);
+    announce(parallel::MethodCall::advance);
+    int finite = 1;
+    try {
+      local_->step(dt);
+    } catch (const RunError&) {
+      finite = 0;
+    }
+    if (domain_->comm().min(finite) == 1) return;
+    sync();
+    sim_.throw_unstable(dt);
+  }
+  void write_outputs() override {
+    announce(parallel::MethodCall::write_outputs);
+    write_due();
+  }
+  std::int64_t step() const override { return clock().step_count(); }
+  std::string position() const override { return fmt::format(" (t = {} s)", clock().time()); }
   std::int64_t steps_left() const override {
-    return static_cast<std::int64_t>(std::ceil((c_.solver.end_time - sim_.time()) / dt_ - 1e-9));
+    return static_cast<std::int64_t>(std::ceil((c_.solver.end_time - clock().time()) / dt_ - 1e-9));
   }
   std::int64_t checkpoint_every() const override { return c_.output.checkpoint_every; }
   void write_checkpoint(const fs::path& file) override {
-    pd::write_checkpoint(file, sim_, model_.save(), counters_);
+    announce(parallel::MethodCall::write_checkpoint);
+    sync();
+    if (writes()) pd::write_checkpoint(file, sim_, model_.save(), counters_);
   }
   std::string write_failure_state() override {
     output_->write_profile(sim_, counters_.profiles);
     return fmt::format("the points at the failure: profiles/profile_{}.csv", counters_.profiles);
   }
   void write_final_outputs() override {
-    if (c_.output.profile_interval == 0.0) output_->write_profile(sim_, counters_.profiles++);
+    announce(parallel::MethodCall::write_final_outputs);
+    if (c_.output.profile_interval != 0.0) return;
+    sync();
+    if (writes()) output_->write_profile(sim_, counters_.profiles);
+    ++counters_.profiles;
   }
   void log_results(double steps_per_second) override {
     const Vec3 p = sim_.momentum();
@@ -289,12 +304,8 @@ class PdMethod final : public Method {
     return {"Step", "Time", "KinEng", "Px", "MeanDamage", "Broken"};
   }
   std::vector<double> thermo_values() const override {
-    const std::vector<double> damage = model_.fields.damage();
-    double mean = 0.0, broken = 0.0;
-    for (double d : damage) mean += d, broken += d > 0.0 ? 1.0 : 0.0;
-    if (!damage.empty()) mean /= static_cast<double>(damage.size());
-    return {static_cast<double>(sim_.step_count()), sim_.time(), sim_.kinetic_energy(), sim_.momentum()[0], mean,
-            broken};
+    announce(parallel::MethodCall::thermo_values);
+    return whole_values();
   }
   std::int64_t thermo_every() const override {
     return thermo_interval(c_.output.thermo_every, total_steps());
@@ -307,10 +318,11 @@ class PdMethod final : public Method {
     return {state_array("positions", sim_.positions(), n, "m"), state_array("velocities", sim_.velocities(), n, "m/s"),
             state_array("force_densities", sim_.force_density(), n, "N/m³")};
   }
-  double time() const override { return sim_.time(); }
+  double time() const override { return clock().time(); }
   std::string time_unit() const override { return "s"; }
   Json results() const override {
-    const std::vector<double> values = thermo_values();
+    announce(parallel::MethodCall::results);
+    const std::vector<double> values = whole_values();
     const Vec3 p = sim_.momentum();
     const std::string per = units::si::per_missing_dimensions_column(c_.body.dim);  // totals: per m in 2D
     return Json::object()
@@ -324,6 +336,57 @@ class PdMethod final : public Method {
   }
 
  private:
+  // The thermo row of the whole body (after sync()).
+  std::vector<double> whole_values() const {
+    sync();
+    const std::vector<double> damage = model_.fields.damage();
+    double mean = 0.0, broken = 0.0;
+    for (double d : damage) mean += d, broken += d > 0.0 ? 1.0 : 0.0;
+    if (!damage.empty()) mean /= static_cast<double>(damage.size());
+    return {static_cast<double>(sim_.step_count()), sim_.time(), sim_.kinetic_energy(), sim_.momentum()[0], mean,
+            broken};
+  }
+
+  // ---- MPI ranks (run_ranks.hpp)
+  void decompose(const Config& root, const RunOptions& options) {
+    domain_ = decompose_run(root, c_, cloud_, cracked_.family, options);
+    if (!domain_) return;
+    std::vector<unsigned char> cut;
+    if (!cracked_.cut.empty())
+      for (std::size_t b : domain_->bond_origin()) cut.push_back(cracked_.cut[b]);
+    local_model_ = std::visit(
+        [&](const auto& m) { return make_model(root, c_, m, domain_->cloud(), domain_->family(), cut); }, c_.material);
+    local_.emplace(domain_->cloud(), domain_->family(), std::move(local_model_.force), std::vector<double>{model_.density});
+    const Decomposition* domain = domain_.get();
+    local_model_.set_ghost_forward([domain](std::vector<double>& values) { domain->forward(values); });
+    apply_regions(*local_, c_.regions, false);
+    local_->add_hook(Simulation::Stage::before_force,
+                     [domain](Simulation& s) { domain->forward(s.positions(), s.velocities()); });
+    mirror_.emplace(domain_->comm());
+  }
+  void announce(parallel::MethodCall call) const {
+    if (mirror_) mirror_->announce(call);
+  }
+  // Only rank 0 writes.
+  bool writes() const { return !domain_ || domain_->comm().is_root(); }
+  // The simulation the steps advance: the rank's points under mpirun, else the whole body.
+  const Simulation& clock() const { return local_ ? *local_ : sim_; }
+  // The whole body's state (on every rank, as started or resumed) to this rank's points.
+  void deal_out_whole() {
+    if (!domain_) return;
+    deal_out(*domain_, sim_, *local_);
+    local_model_.restore(local_state(*domain_, model_.save()));
+    synced_step_ = sim_.step_count();
+  }
+  // Rank 0's whole body takes every rank's points, at most once a step. Collective.
+  void sync() const {
+    if (!domain_ || synced_step_ == local_->step_count()) return;
+    ModelState whole = model_.save();
+    gather_whole(*domain_, *local_, local_model_.save(), sim_, whole);
+    if (writes()) model_.restore(whole);
+    synced_step_ = local_->step_count();
+  }
+
   void open(RunContext& run, std::optional<ResumePoint> resume) {
     log_ = &run.log;
     for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
@@ -332,17 +395,22 @@ class PdMethod final : public Method {
                  cracked_.cut.empty() ? "left out of the correspondence family" : "broken from step 0");
     for (std::size_t k = 0; k < c_.regions.size(); ++k)
       log_->info("region {}: {}", k, describe(c_.regions[k], points_in(c_.regions[k].shape, cloud_).size()));
-    output_.emplace(run.folder, c_.body.dim, model_.fields, c_.output, total_steps(), resume);
+    if (writes()) output_.emplace(run.folder, c_.body.dim, model_.fields, c_.output, total_steps(), resume);
     if (!finished())
       log_->info("running to t = {} s with dt = {} s ({} of the stable {} s; the last step lands on end_time)",
                  c_.solver.end_time, dt_, dt_ / stable_, stable_);
   }
   long long total_steps() const { return static_cast<long long>(std::ceil(c_.solver.end_time / dt_ - 1e-9)); }
   void write_due() {
-    const double t = sim_.time() + tol_;
-    write_due_frames(counters_.series, c_.output.series_interval, t, [&](auto) { output_->write_series(sim_); });
-    write_due_frames(counters_.profiles, c_.output.profile_interval, t,
-                     [&](auto k) { output_->write_profile(sim_, k); });
+    const double t = clock().time() + tol_;
+    write_due_frames(counters_.series, c_.output.series_interval, t, [&](auto) {
+      sync();
+      if (writes()) output_->write_series(sim_);
+    });
+    write_due_frames(counters_.profiles, c_.output.profile_interval, t, [&](auto k) {
+      sync();
+      if (writes()) output_->write_profile(sim_, k);
+    });
   }
 
   // The whole body's points and bonds: as built, or for a --check sub-body counted
@@ -365,21 +433,40 @@ class PdMethod final : public Method {
   BodySpec built_;  ///< c_.body, or for --check its sub-body
   PointCloud cloud_;
   CrackedFamily cracked_;
-  ModelRun model_;
-  Simulation sim_;
+  // mutable: the const reads of a decomposed run (a thermo row, the results) first gather the
+  // whole body from the ranks (sync).
+  mutable ModelRun model_;
+  mutable Simulation sim_;
   double stable_, dt_, tol_;
   OutputCounters counters_;
   std::optional<RunOutput> output_;
   Logger* log_ = nullptr;
+  std::shared_ptr<Decomposition> domain_;  ///< the rank grid under mpirun; null on one rank
+  ModelRun local_model_;                   ///< the force model of this rank's points
+  std::optional<Simulation> local_;        ///< this rank's points (owned, then ghosts)
+  std::optional<parallel::MethodMirror> mirror_;
+  mutable std::int64_t synced_step_ = -1;  ///< the step rank 0's whole body was last gathered at
 };
 
 }  // namespace
 
 std::unique_ptr<Method> make_method(const Config& root, const RunOptions& options) {
-  if (root.has("homogeneous")) return make_homogeneous_method(root, options);
+  if (root.has("homogeneous")) {
+    const int ranks = parallel::Communicator::world().size();
+    if (ranks > 1 || !options.rank_grid.empty())
+      throw InputError(fmt::format("{}: a [homogeneous] pd case runs on one rank only so far ({} ranks started); "
+                                   "run it without mpirun (docs/parallel.md)",
+                                   options.case_file.string(), ranks));
+    return make_homogeneous_method(root, options);
+  }
   const PdCase c = read_pd_case(root);
   root.check_unknown_keys();
-  return std::make_unique<PdMethod>(root, c, options.validate_only);
+  return std::make_unique<PdMethod>(root, c, options);
+}
+
+void serve_ranks(const Config& root, const RunOptions& options) {
+  const std::unique_ptr<Method> method = make_method(root, options);  // bad input: thrown on every rank
+  static_cast<PdMethod&>(*method).serve();
 }
 
 void run_case(const Config& root, const RunOptions& options) { run_method(root, options, &make_method); }

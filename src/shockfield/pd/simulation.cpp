@@ -55,11 +55,14 @@ void Simulation::step(double dt) {
     finite = finite && v_[i].allFinite() && y_[i].allFinite();
   }
   ++steps_;
-  if (!finite)
-    throw RunError(fmt::format("pd: non-finite positions or velocities at step {} (t = {:.6g} s): the time step "
-                               "{:.6g} s is unstable (estimate {:.6g} s)",
-                               steps_, time_, dt, stable_step()));
+  if (!finite) throw_unstable(dt);
   run_hooks(Stage::end_of_step);
+}
+
+void Simulation::throw_unstable(double dt) const {
+  throw RunError(fmt::format("pd: non-finite positions or velocities at step {} (t = {:.6g} s): the time step "
+                             "{:.6g} s is unstable (estimate {:.6g} s)",
+                             steps_, time_, dt, stable_step()));
 }
 
 void Simulation::restore(std::vector<Vec3> y, std::vector<Vec3> v, std::vector<Vec3> force_density, long long steps,

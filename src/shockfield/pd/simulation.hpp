@@ -38,6 +38,9 @@ class Simulation {
   /// evaluation, the clock): the next step continues bitwise as if never stopped.
   void restore(std::vector<Vec3> y, std::vector<Vec3> v, std::vector<Vec3> force_density, long long steps,
                double time);
+  /// The RunError step() throws when the state of the step of size dt stopped being finite (a
+  /// decomposed run raises it from the gathered whole body: run_ranks.hpp).
+  [[noreturn]] void throw_unstable(double dt) const;
   void add_hook(Stage stage, Hook hook) { hooks_.push_back({stage, std::move(hook)}); }
   /// Largest stable step for this body and model (the model's estimate) [s].
   double stable_step() const { return model_->stable_step(density_); }
