@@ -1,0 +1,91 @@
+"""Writing into MPM's and PD's views changes their next step (ctest python.test_simulation_views);
+md, granular, macroparticle, phasefield and dbm have theirs in test_simulation.py.
+
+- PD: bond forces depend on relative positions only (Galilean invariance), so adding a uniform
+  velocity c along the bar to every point of one of two identical runs leaves its forces as they
+  were and, after one step, its velocities c higher and its points c dt further than the other
+  run's. The 400-point bar of pd_tiny.toml has free ends (its impact is the two halves' initial
+  velocities), so nothing breaks the invariance.
+- MPM: a uniform velocity field does not deform a body, so a strip given v = (0, -u, 0) on every
+  particle (u = 250 m/s, the case's own loading is 1000 m/s) keeps that velocity for one step and
+  moves by -u dt, away from the wall's and the grid sides' cells (two cells, 50 µm, around them);
+  without the write the same particles move at 1000 m/s.
+- Both keep their arrays' addresses for the whole run (they never resize them).
+"""
+
+import os
+import pathlib
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+import shockfield
+
+CASES = pathlib.Path(os.environ["SHOCKFIELD_SOURCE"]) / "tests" / "cli" / "cases"
+
+
+def addresses(sim):
+    return {name: a.__array_interface__["data"][0] for name, a in sim.arrays().items()}
+
+
+class WritesChangeTheNextStep(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = pathlib.Path(self.tmp.name)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_pd_uniform_velocity_added(self):
+        plain = shockfield.Simulation(CASES / "pd_tiny.toml", self.dir / "plain", threads=1)
+        moved = shockfield.Simulation(CASES / "pd_tiny.toml", self.dir / "moved", threads=1)
+        where = addresses(moved)
+        plain.step(10)
+        moved.step(10)
+        x0 = moved["positions"].copy()
+        np.testing.assert_array_equal(x0, plain["positions"])
+        c = 50.0  # m/s along the bar
+        moved["velocities"][:, 0] += c
+        dt = plain.time / plain.step_number  # fixed step
+        plain.step(1)
+        moved.step(1)
+        # velocities: c more, to the rounding of |v| ≈ 300 m/s and of the forces of positions
+        # shifted by c dt (measured 1.3e-11 m/s; the forces 2.2e-12 of the largest, the shift
+        # 3.3e-12 of c dt ≈ 7e-8 m)
+        np.testing.assert_allclose(moved["velocities"][:, 0] - plain["velocities"][:, 0], c, rtol=0, atol=1e-9)
+        np.testing.assert_array_equal(moved["velocities"][:, 1:], plain["velocities"][:, 1:])
+        shift = (moved["positions"][:, 0] - x0[:, 0]) - (plain["positions"][:, 0] - x0[:, 0])
+        np.testing.assert_allclose(shift, c * dt, rtol=1e-9)
+        force = plain["force_densities"]
+        np.testing.assert_allclose(moved["force_densities"], force, rtol=0, atol=1e-9 * np.max(np.abs(force)))
+        while not moved.finished:
+            moved.step(50)
+        self.assertEqual(addresses(moved), where)
+
+    def test_mpm_uniform_velocity_written(self):
+        sim = shockfield.Simulation(CASES / "mpm_tiny.toml", self.dir / "run", threads=1)
+        where = addresses(sim)
+        x, v = sim["positions"], sim["velocities"]
+        x0 = x.copy()
+        np.testing.assert_allclose(v[:, 1], -1000.0)  # the case's loading: towards the wall at y = 0
+        u = 250.0
+        v[:] = (0.0, -u, 0.0)
+        sim.step(1)
+        dt = sim.time
+        margin = 50e-6  # two cells from the wall (y = 0) and the grid's sides (x = 0, 0.4 mm)
+        inner = (x0[:, 1] > margin) & (x0[:, 0] > margin) & (x0[:, 0] < 0.4e-3 - margin)
+        self.assertGreater(inner.sum(), 500)
+        # a uniform field stays uniform: v to the rounding of u (measured 9e-13 m/s), the step -u dt
+        # to 1.4e-13 of it, no sideways motion at all (835 of the 1217 particles inside)
+        np.testing.assert_allclose(v[inner], np.tile([0.0, -u, 0.0], (inner.sum(), 1)), rtol=0, atol=1e-9)
+        np.testing.assert_allclose((x - x0)[inner][:, 1], -u * dt, rtol=1e-9)
+        np.testing.assert_allclose((x - x0)[inner][:, 0], 0.0, rtol=0, atol=1e-9 * u * dt)
+        while not sim.finished:
+            sim.step(50)
+        self.assertEqual(addresses(sim), where)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0], "-v"])
