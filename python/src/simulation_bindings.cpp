@@ -149,6 +149,7 @@ class InProcessRun {
       if (a.shape.empty() && a.columns > 1) shape.push_back(static_cast<py::ssize_t>(a.columns));
       std::vector<py::ssize_t> strides(shape.size(), static_cast<py::ssize_t>(size));  // row-major
       for (std::size_t d = shape.size() - 1; d > 0; --d) strides[d - 1] = strides[d] * shape[d];
+      if (!a.strides.empty()) strides.assign(a.strides.begin(), a.strides.end());  // a member of structs
       views[py::str(a.name)] = py::array(dtype_of(a.type), shape, strides, a.data, self);
     }
     return views;

@@ -7,6 +7,8 @@
   the module lacks (besides its own type aliases). A stub beside a .py hides the .py from type
   checkers, so a stub missing a name would make that name an error for a user's checker.
 - Docstrings: every public function, class, method and property of every module has one.
+- pandas: ``Run.table(name, pandas=True)`` hands the CSV to ``pandas.read_csv`` (pandas is not
+  installed here: a stand-in module records the call; without it the table is a numpy array).
 """
 
 import ast
@@ -15,7 +17,12 @@ import inspect
 import pathlib
 import re
 import sys
+import tempfile
+import types
 import unittest
+from unittest import mock
+
+import numpy as np
 
 import shockfield
 
@@ -147,6 +154,22 @@ class Docstrings(unittest.TestCase):
                     if not (getattr(raw, "__doc__", None) or "").strip():
                         missing.append(f"{name}.{item}.{member}")
         self.assertEqual(missing, [])
+
+
+class Pandas(unittest.TestCase):
+    def test_table_goes_through_pandas_read_csv(self):
+        with tempfile.TemporaryDirectory() as folder:
+            folder = pathlib.Path(folder)
+            (folder / "config.resolved.toml").write_text('method = "md"\n')
+            (folder / "thermo.csv").write_text("# a comment\nstep,ke_eV\n0,1.5\n10,2.5\n")
+            run = shockfield.Run.open(folder)
+            np.testing.assert_array_equal(run.table("thermo")["ke_eV"], [1.5, 2.5])
+            calls = []
+            stand_in = types.ModuleType("pandas")
+            stand_in.read_csv = lambda path, **options: calls.append((pathlib.Path(path), options)) or "frame"
+            with mock.patch.dict(sys.modules, {"pandas": stand_in}):
+                self.assertEqual(run.table("thermo", pandas=True), "frame")
+            self.assertEqual(calls, [(folder / "thermo.csv", {"comment": "#"})])
 
 
 if __name__ == "__main__":

@@ -10,6 +10,9 @@ md, granular, macroparticle, phasefield and dbm have theirs in test_simulation.p
   particle (u = 250 m/s, the case's own loading is 1000 m/s) keeps that velocity for one step and
   moves by -u dt, away from the wall's and the grid sides' cells (two cells, 50 µm, around them);
   without the write the same particles move at 1000 m/s.
+- MPM's material state (pressure, energy, ..., deviator, F) is a strided view into the particles'
+  array of structs: energy raised by Δe raises the next pressure by ρ0 Γ0 Δe, and the views equal
+  the particle frames (float32) at the end of the run.
 - Both keep their arrays' addresses for the whole run (they never resize them).
 """
 
@@ -85,6 +88,50 @@ class WritesChangeTheNextStep(unittest.TestCase):
         while not sim.finished:
             sim.step(50)
         self.assertEqual(addresses(sim), where)
+
+    def test_mpm_material_state_views(self):
+        # Each particle's material state (pressure, energy, ..., deviator and F) is a strided view
+        # into the particles' array of structs: the values the particle frames write, and writing
+        # into them changes the next step. Mie–Grüneisen is linear in e, P = P_H(ρ) + ρ0 Γ0 (e − e_H)
+        # (Xu et al. (2015), eq. 5), so energy raised by Δe on every particle raises the pressure of
+        # the undeformed inner particles after one step by ρ0 Γ0 Δe exactly (a uniform velocity does
+        # no work: their energy stays Δe above the other run's).
+        plain = shockfield.Simulation(CASES / "mpm_tiny.toml", self.dir / "plain", threads=1)
+        hot = shockfield.Simulation(CASES / "mpm_tiny.toml", self.dir / "hot", threads=1)
+        n = len(hot["positions"])
+        state = hot.arrays()
+        self.assertEqual((state["pressures"].shape, state["deviators"].shape, state["deformations"].shape),
+                         ((n,), (n, 3, 3), (n, 3, 3)))
+        np.testing.assert_array_equal(state["deformations"], np.broadcast_to(np.eye(3), (n, 3, 3)))
+        self.assertEqual(hot.units()["energies"], "J/kg")
+        x0 = hot["positions"].copy()
+        de = 2.0e4  # J/kg
+        state["energies"] += de
+        plain.step(1)
+        hot.step(1)
+        config = shockfield.Run.open(hot.folder).config
+        material = next(m for m in config["material"] if m["name"] == "al")
+        rho0_gamma0 = material["rho0"] * material["gamma0"]  # 2700 kg/m³ × 1.96
+        margin = 50e-6
+        inner = (x0[:, 1] > margin) & (x0[:, 0] > margin) & (x0[:, 0] < 0.4e-3 - margin)
+        np.testing.assert_allclose((hot["energies"] - plain["energies"])[inner], de, rtol=1e-12)
+        # both measured equal to 4e-16 (relative)
+        np.testing.assert_allclose((hot["pressures"] - plain["pressures"])[inner], rho0_gamma0 * de, rtol=1e-12)
+        # the views are the frames' values: run to the end, whose state the last particle frame holds
+        while not plain.finished:
+            plain.step(50)
+        plain.finish()
+        frame = shockfield.Run.open(plain.folder).last_frame(kind="particles")
+        self.assertAlmostEqual(frame.time, plain.time, delta=1e-12 * plain.time)
+        views, data = plain.arrays(), frame.data  # the frames store float32: the views rounded to it
+        for view, column in (("temperatures", "temperature"), ("energies", "energy"), ("plastic_works", "plastic_work"),
+                             ("plastic_strains", "plastic_strain"), ("damages", "damage")):
+            np.testing.assert_array_equal(views[view].astype(np.float32), data[column], view)
+        np.testing.assert_array_equal(views["deviators"].reshape(-1, 9).astype(np.float32), data["deviator"].reshape(-1, 9))
+        # the frame's pressure is −tr σ / 3 = P + q − tr s / 3 (tr s ≈ 0), rounded to float32
+        np.testing.assert_allclose(views["pressures"] + views["viscous_pressures"], data["pressure"], rtol=1e-7,
+                                   atol=1e-7 * np.max(np.abs(data["pressure"])))
+        self.assertGreater(np.max(data["plastic_strain"]), 0.0)
 
 
 if __name__ == "__main__":
