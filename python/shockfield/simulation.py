@@ -86,7 +86,8 @@ class Simulation:
         """The fields the method computes from its state, by name, as numpy arrays that are
         copies made at this call (writing into them changes nothing; call again after a step):
         dbm ``rho`` (ny, nx), ``velocity`` (ny, nx, 2) (vx, vy) and ``T`` (ny, nx), the moments
-        of f in lattice units — the values the run's field frames hold for this step. Other
+        of f in lattice units — the values the run's field frames hold for this step; pd
+        ``damage`` (n,), the share of each point's bonds broken (its profiles' column). Other
         methods (and decomposed DBM runs) raise ``ValueError``."""
         return self._core.fields()
 

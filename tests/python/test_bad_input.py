@@ -8,10 +8,14 @@ Fortran-ordered copy, an empty array, a NaN and an infinity in one entry. Dtype 
 TypeError; layout, shape and emptiness ValueError; bad values InputError (a ValueError) naming the
 value (NaN in a field: the cell, as the command line names the file's line). An empty atom list is
 an empty frame, not an error: structure returns no counts (and no per-atom arrays). A crash would end this process, failing
-the test. Case.set, Simulation arrays and the refusals of the command line's own messages are in
-test_case.py and test_simulation.py.
+the test. Case.set of a bad key or value (NaN, a string, a list, a negative size, a misspelt key)
+raises InputError carrying the command line's message for the same --set, word for word.
+Simulation's arrays: test_simulation.py.
 """
 
+import os
+import pathlib
+import subprocess
 import sys
 import unittest
 
@@ -90,6 +94,23 @@ class BadArrays(unittest.TestCase):
                         self.assertRegex(message, f"non-finite|value {words}", message)
                     else:
                         self.assertIn(words, message)
+
+
+class BadCaseValues(unittest.TestCase):
+    def test_case_set_raises_the_command_lines_message(self):
+        case_file = pathlib.Path(os.environ["SHOCKFIELD_SOURCE"]) / "tests/cli/cases/mpm_tiny.toml"
+        for key, value, text in (("loading.speed", float("nan"), "nan"), ("loading.speed", "fast", '"fast"'),
+                                 ("loading.speed", [1, 2], "[1, 2]"), ("grid.cell_size", -1.0, "-1.0"),
+                                 ("loading.sped", 1.0, "1.0")):
+            with self.subTest(key=key, value=text):
+                case = shockfield.Case.load(case_file)
+                with self.assertRaises(shockfield.InputError) as caught:
+                    case.set(key, value)
+                self.assertEqual(case.overrides, [])  # the bad value is not kept
+                cli = subprocess.run([os.environ["SHOCKFIELD_BIN"], "run", str(case_file), "--check", "--set",
+                                      f"{key}={text}"], capture_output=True, text=True)
+                self.assertEqual(cli.returncode, 2)
+                self.assertEqual(str(caught.exception), cli.stderr.strip().removeprefix("error: "))
 
 
 if __name__ == "__main__":

@@ -13,6 +13,8 @@ md, granular, macroparticle, phasefield and dbm have theirs in test_simulation.p
 - MPM's material state (pressure, energy, ..., deviator, F) is a strided view into the particles'
   array of structs: energy raised by Δe raises the next pressure by ρ0 Γ0 Δe, and the views equal
   the particle frames (float32) at the end of the run.
+- PD's damage (computed from its bonds) comes from Simulation.fields() as a copy equal to the
+  profiles' damage column and, averaged, to the thermo's MeanDamage.
 - Both keep their arrays' addresses for the whole run (they never resize them).
 """
 
@@ -132,6 +134,29 @@ class WritesChangeTheNextStep(unittest.TestCase):
         np.testing.assert_allclose(views["pressures"] + views["viscous_pressures"], data["pressure"], rtol=1e-7,
                                    atol=1e-7 * np.max(np.abs(data["pressure"])))
         self.assertGreater(np.max(data["plastic_strain"]), 0.0)
+
+    def test_pd_damage_field(self):
+        # PD's damage is computed from the bonds, not stored: Simulation.fields() gives it as a copy.
+        # The 40 × 20 plate's pre-crack leaves points with broken bonds from the start; at the end
+        # the field equals the last profile's damage column (printed to 10 digits) and its mean the
+        # thermo row's MeanDamage.
+        sim = shockfield.Simulation(CASES / "pd_plate_loading.toml", self.dir / "plate", threads=1)
+        first = sim.fields()["damage"]
+        self.assertEqual(first.shape, (len(sim["positions"]),))
+        self.assertGreater(np.count_nonzero(first), 0)
+        first[:] = 1.0  # a copy: the simulation does not see it
+        self.assertLess(sim.fields()["damage"].max(), 1.0)
+        while not sim.finished:
+            sim.step(50)
+        damage = sim.fields()["damage"]
+        self.assertAlmostEqual(damage.mean(), sim.thermo()["MeanDamage"], delta=1e-15)
+        sim.finish()
+        profile = shockfield.Run.open(sim.folder).last_frame(kind="profiles")
+        self.assertAlmostEqual(profile.time, sim.time, delta=1e-12 * sim.time)
+        np.testing.assert_allclose(damage, profile.data["damage"], rtol=1e-9, atol=1e-12)
+        self.assertEqual(np.count_nonzero(damage), 64)  # the thermo's Broken column (measured)
+        with self.assertRaisesRegex(ValueError, "the mpm method computes no fields"):
+            shockfield.Simulation(CASES / "mpm_tiny.toml", self.dir / "mpm", threads=1).fields()
 
 
 if __name__ == "__main__":

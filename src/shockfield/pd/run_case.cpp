@@ -9,6 +9,7 @@
 #include <optional>
 #include <variant>
 
+#include "shockfield/core/derived_arrays.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
@@ -208,7 +209,7 @@ bool holds_every_kind(const BodySpec& sub, const BodySpec& body) {
 
 // Peridynamics as a plug-in of the run driver: velocity-Verlet with a fixed step to end_time
 // (the last step lands on it), rows and profiles at the first step at or past k·interval.
-class PdMethod final : public Method {
+class PdMethod final : public Method, public DerivedArrays {
  public:
   /// `check` (shockfield run --check): the model is built on a sub-body (checked_body) and the
   /// sizes of the whole body are counted, not built.
@@ -306,6 +307,13 @@ class PdMethod final : public Method {
     const std::size_t n = sim_.positions().size();
     return {state_array("positions", sim_.positions(), n, "m"), state_array("velocities", sim_.velocities(), n, "m/s"),
             state_array("force_densities", sim_.force_density(), n, "N/m³")};
+  }
+  // Each point's damage (the share of its bonds broken; 0 for correspondence models), computed from
+  // the bonds rather than stored: the profiles' damage column (Simulation.fields() in Python).
+  std::vector<DerivedArray> derived_arrays() const override {
+    std::vector<double> damage = model_.fields.damage();
+    const std::size_t n = damage.size();
+    return {{"damage", std::move(damage), {n}, "1"}};
   }
   double time() const override { return sim_.time(); }
   std::string time_unit() const override { return "s"; }
