@@ -87,7 +87,8 @@ class Simulation:
         copies made at this call (writing into them changes nothing; call again after a step):
         dbm ``rho`` (ny, nx), ``velocity`` (ny, nx, 2) (vx, vy) and ``T`` (ny, nx), the moments
         of f in lattice units — the values the run's field frames hold for this step; pd
-        ``damage`` (n,), the share of each point's bonds broken (its profiles' column). Other
+        ``damage`` (n,), the share of each point's bonds broken, and for models with them
+        ``stress`` (n, 3, 3) and ``plastic`` (n,) (its profiles' columns). Other
         methods (and decomposed DBM runs) raise ``ValueError``."""
         return self._core.fields()
 

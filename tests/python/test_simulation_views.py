@@ -14,7 +14,8 @@ md, granular, macroparticle, phasefield and dbm have theirs in test_simulation.p
   array of structs: energy raised by Δe raises the next pressure by ρ0 Γ0 Δe, and the views equal
   the particle frames (float32) at the end of the run.
 - PD's damage (computed from its bonds) comes from Simulation.fields() as a copy equal to the
-  profiles' damage column and, averaged, to the thermo's MeanDamage.
+  profiles' damage column and, averaged, to the thermo's MeanDamage; a correspondence model's
+  stress and plastic strain equal the profiles' columns too.
 - Both keep their arrays' addresses for the whole run (they never resize them).
 """
 
@@ -157,6 +158,28 @@ class WritesChangeTheNextStep(unittest.TestCase):
         self.assertEqual(np.count_nonzero(damage), 64)  # the thermo's Broken column (measured)
         with self.assertRaisesRegex(ValueError, "the mpm method computes no fields"):
             shockfield.Simulation(CASES / "mpm_tiny.toml", self.dir / "mpm", threads=1).fields()
+
+    def test_pd_stress_and_plastic_fields(self):
+        # A correspondence (J2) model's Cauchy stress and plastic strain per point, from fields(): at
+        # the end of the 300 m/s bar impact they are the last profile's columns (10 printed digits).
+        sim = shockfield.Simulation(CASES / "pd_tiny.toml", self.dir / "bar", threads=1)
+        while not sim.finished:
+            sim.step(50)
+        fields = sim.fields()
+        sim.finish()
+        n = len(sim["positions"])
+        self.assertEqual((fields["stress"].shape, fields["plastic"].shape), ((n, 3, 3), (n,)))
+        np.testing.assert_array_equal(fields["damage"], np.zeros(n))  # no bonds to break
+        profile = shockfield.Run.open(sim.folder).last_frame(kind="profiles")
+        self.assertAlmostEqual(profile.time, sim.time, delta=1e-12 * sim.time)
+        scale = np.max(np.abs(fields["stress"]))
+        self.assertGreater(scale, 1e8)  # the impact stress, ~1 GPa
+        for column, (row, col) in (("sxx_Pa", (0, 0)), ("syy_Pa", (1, 1)), ("szz_Pa", (2, 2)), ("sxy_Pa", (0, 1)),
+                                   ("sxz_Pa", (0, 2)), ("syz_Pa", (1, 2))):
+            np.testing.assert_allclose(fields["stress"][:, row, col], profile.data[column], rtol=1e-9,
+                                       atol=1e-12 * scale, err_msg=column)
+        np.testing.assert_allclose(fields["plastic"], profile.data["plastic"], rtol=1e-9, atol=1e-15)
+        self.assertGreater(fields["plastic"].max(), 0.0)
 
 
 if __name__ == "__main__":

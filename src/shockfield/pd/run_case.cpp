@@ -308,12 +308,26 @@ class PdMethod final : public Method, public DerivedArrays {
     return {state_array("positions", sim_.positions(), n, "m"), state_array("velocities", sim_.velocities(), n, "m/s"),
             state_array("force_densities", sim_.force_density(), n, "N/m³")};
   }
-  // Each point's damage (the share of its bonds broken; 0 for correspondence models), computed from
-  // the bonds rather than stored: the profiles' damage column (Simulation.fields() in Python).
+  // What the profiles write of each point, computed from the model rather than stored
+  // (Simulation.fields() in Python): damage (the share of its bonds broken; 0 for correspondence
+  // models) and, for models that have them, the Cauchy stress (n, 3, 3) and the plastic measure.
   std::vector<DerivedArray> derived_arrays() const override {
-    std::vector<double> damage = model_.fields.damage();
+    const PointFields& f = model_.fields;
+    std::vector<double> damage = f.damage();
     const std::size_t n = damage.size();
-    return {{"damage", std::move(damage), {n}, "1"}};
+    std::vector<DerivedArray> arrays{{"damage", std::move(damage), {n}, "1"}};
+    if (f.stress) {
+      DerivedArray stress{"stress", std::vector<double>(9 * n), {n, 3, 3}, "Pa"};
+      using RowMajor = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;  // [i, row, column], as the profiles
+      for (std::size_t i = 0; i < n; ++i) Eigen::Map<RowMajor>(&stress.values[9 * i]) = f.stress(i);
+      arrays.push_back(std::move(stress));
+    }
+    if (f.plastic) {
+      DerivedArray plastic{"plastic", std::vector<double>(n), {n}, "1"};
+      for (std::size_t i = 0; i < n; ++i) plastic.values[i] = f.plastic(i);
+      arrays.push_back(std::move(plastic));
+    }
+    return arrays;
   }
   double time() const override { return sim_.time(); }
   std::string time_unit() const override { return "s"; }
