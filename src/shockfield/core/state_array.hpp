@@ -46,19 +46,17 @@ inline StateArray grid_state_array(std::string name, std::vector<double>& values
 /// (rows, 3, 3) indexed [i, row, column] (Eigen stores a matrix column after column).
 template <class S, class Member>
 StateArray member_state_array(std::string name, std::vector<S>& values, Member member, std::string unit = "") {
+  using Value = std::remove_reference_t<std::invoke_result_t<Member, S&>>;
+  static_assert(std::is_same_v<Value, double> || std::is_same_v<Value, Mat3>, "a double or Mat3 member");
   StateArray a{std::move(name), nullptr, values.size(), 1, StateArray::Type::f64, std::move(unit), {values.size()},
                {sizeof(S)}};
-  if (values.empty()) return a;
-  auto& first = member(values.front());
-  using Value = std::remove_reference_t<decltype(first)>;
-  static_assert(std::is_same_v<Value, double> || std::is_same_v<Value, Mat3>, "a double or Mat3 member");
-  a.data = &first;
   if constexpr (std::is_same_v<Value, Mat3>) {
     static_assert(!Mat3::IsRowMajor && sizeof(Mat3) == 9 * sizeof(double));
     a.columns = 9;
     a.shape = {values.size(), 3, 3};
     a.strides = {sizeof(S), sizeof(double), 3 * sizeof(double)};
   }
+  if (!values.empty()) a.data = &member(values.front());
   return a;
 }
 
