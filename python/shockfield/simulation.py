@@ -72,7 +72,10 @@ class Simulation:
         """Every state array (per particle, or a grid's field) as a numpy view (no copy) of the
         simulation's memory, by name: md ``positions``, ``velocities``, ``forces`` (n, 3),
         ``types`` (0-based), ``ids``, ``images`` and, when computed, ``energies``; mpm
-        ``positions``, ``velocities``, ``masses``, ``volumes0``, ``materials``; pd ``positions``,
+        ``positions``, ``velocities``, ``masses``, ``volumes0``, ``materials`` and each particle's
+        material state as strided views: ``pressures`` (EOS), ``viscous_pressures``, ``energies``,
+        ``temperatures``, ``plastic_works``, ``plastic_strains``, ``damages`` (n,), ``deviators``
+        and ``deformations`` (n, 3, 3); pd ``positions``,
         ``velocities``, ``force_densities``; granular ``displacements``, ``velocities``,
         ``forces`` (n,); phasefield ``xi`` shaped as the grid ((ny, nx) in 2D, x last); dbm ``f``
         (Q, ny + 4, nx + 4), ghosts included; macroparticle md's arrays in the engine's reduced
@@ -83,7 +86,9 @@ class Simulation:
         """The fields the method computes from its state, by name, as numpy arrays that are
         copies made at this call (writing into them changes nothing; call again after a step):
         dbm ``rho`` (ny, nx), ``velocity`` (ny, nx, 2) (vx, vy) and ``T`` (ny, nx), the moments
-        of f in lattice units — the values the run's field frames hold for this step. Other
+        of f in lattice units — the values the run's field frames hold for this step; pd
+        ``damage`` (n,), the share of each point's bonds broken, and for models with them
+        ``stress`` (n, 3, 3) and ``plastic`` (n,) (its profiles' columns). Other
         methods (and decomposed DBM runs) raise ``ValueError``."""
         return self._core.fields()
 

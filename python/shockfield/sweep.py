@@ -130,6 +130,8 @@ def format_table(rows, width=14):
 
 
 def main(argv=None):
+    """`shockfield sweep` (docs/python.md, Sweeps): runs the sweep the arguments describe, prints
+    its table; returns the exit code (0 every run finished, 2 bad input, 3 a run failed)."""
     parser = argparse.ArgumentParser(prog="shockfield sweep", description=__doc__.split("\n\n")[0])
     parser.add_argument("case")
     parser.add_argument("--set", action="append", default=[], metavar="KEY=V1,V2,...")

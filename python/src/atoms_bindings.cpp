@@ -449,9 +449,9 @@ void bind_atoms(py::module_& m) {
       py::arg("tracker").none(true), py::arg("timestep"), py::arg("threads"));
   py::class_<Tracker>(m, "ClusterTracker", "Clusters followed through frames; use shockfield.analysis.ClusterTracker")
       .def(py::init<>())
-      .def_readonly("frames", &Tracker::frames)
-      .def("tracks", &Tracker::tracks, py::arg("origin"), py::arg("dt"), py::arg("time_in_ps"))
-      .def("growth", &Tracker::growth, py::arg("origin"), py::arg("dt"));
+      .def_readonly("frames", &Tracker::frames, "Frames added so far")
+      .def("tracks", &Tracker::tracks, "tracks.csv's columns, by name", py::arg("origin"), py::arg("dt"), py::arg("time_in_ps"))
+      .def("growth", &Tracker::growth, "growth.csv's columns, by name", py::arg("origin"), py::arg("dt"));
   m.def("atoms_voids", &voids, py::arg("positions"), py::arg("lo"), py::arg("hi"), py::arg("tilt"),
         py::arg("boundary"), py::arg("types"), py::arg("ids"), py::arg("probe"),
         py::arg("atomic_volume"), py::arg("margin"), py::arg("min_volume"));

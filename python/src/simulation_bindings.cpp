@@ -149,6 +149,7 @@ class InProcessRun {
       if (a.shape.empty() && a.columns > 1) shape.push_back(static_cast<py::ssize_t>(a.columns));
       std::vector<py::ssize_t> strides(shape.size(), static_cast<py::ssize_t>(size));  // row-major
       for (std::size_t d = shape.size() - 1; d > 0; --d) strides[d - 1] = strides[d] * shape[d];
+      if (!a.strides.empty()) strides.assign(a.strides.begin(), a.strides.end());  // a member of structs
       views[py::str(a.name)] = py::array(dtype_of(a.type), shape, strides, a.data, self);
     }
     return views;
@@ -220,21 +221,21 @@ void bind_simulation(py::module_& m) {
       .def(py::init<const std::string&, const std::vector<std::string>&, const std::string&, int, bool, bool, bool>(),
            py::arg("case_file"), py::arg("overrides"), py::arg("output"), py::arg("threads"), py::arg("overwrite"),
            py::arg("quiet"), py::arg("resume"))
-      .def_property_readonly("method", &InProcessRun::method_name)
-      .def_property_readonly("step_number", &InProcessRun::step_number)
-      .def_property_readonly("time", &InProcessRun::time)
-      .def_property_readonly("time_unit", &InProcessRun::time_unit)
-      .def_property_readonly("steps_left", &InProcessRun::steps_left)
-      .def_property_readonly("finished", &InProcessRun::finished)
-      .def_property_readonly("closed", &InProcessRun::closed)
-      .def_property_readonly("folder", &InProcessRun::folder)
-      .def("thermo", &InProcessRun::thermo)
-      .def("step", &InProcessRun::step, py::arg("n") = 1)
-      .def("finish", &InProcessRun::finish)
-      .def("stop", &InProcessRun::stop)
-      .def("arrays", &InProcessRun::arrays)
-      .def("fields", &InProcessRun::fields)
-      .def("units", &InProcessRun::units);
+      .def_property_readonly("method", &InProcessRun::method_name, "The method's name: md, mpm, pd, ...")
+      .def_property_readonly("step_number", &InProcessRun::step_number, "The step counter")
+      .def_property_readonly("time", &InProcessRun::time, "Simulated time, in time_unit")
+      .def_property_readonly("time_unit", &InProcessRun::time_unit, "ps, s or 1 (lattice units)")
+      .def_property_readonly("steps_left", &InProcessRun::steps_left, "Steps left (an estimate for adaptive steps)")
+      .def_property_readonly("finished", &InProcessRun::finished, "True when no step is left")
+      .def_property_readonly("closed", &InProcessRun::closed, "True after finish() or stop()")
+      .def_property_readonly("folder", &InProcessRun::folder, "The run folder")
+      .def("thermo", &InProcessRun::thermo, "The thermo columns at this step, by name")
+      .def("step", &InProcessRun::step, "Makes up to n steps; returns the steps made", py::arg("n") = 1)
+      .def("finish", &InProcessRun::finish, "Writes the end of the run (final outputs, summary.json)")
+      .def("stop", &InProcessRun::stop, "Stops the run as Ctrl-C does; returns the command line's message")
+      .def("arrays", &InProcessRun::arrays, "Numpy views of the state arrays, by name")
+      .def("fields", &InProcessRun::fields, "Copies of the fields computed from the state, by name")
+      .def("units", &InProcessRun::units, "The unit of each array, by name");
 }
 
 }  // namespace shockfield::python

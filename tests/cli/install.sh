@@ -4,8 +4,9 @@
 # names the moved tree's Python helpers, it runs a case copied out of the source tree and plots
 # it (Python found by the documented rule, with a python3 first on PATH that lacks numpy), a bad
 # SHOCKFIELD_PYTHON is refused, `import shockfield` works from the moved tree and finds the
-# moved command, and a program outside the tree builds against the library with
-# find_package(shockfield) and with pkg-config. About 20 s (two small compiles).
+# moved command, examples/python_sweep runs from it (its runs by the moved command), and a program
+# outside the tree builds against the library with find_package(shockfield) and with pkg-config.
+# About 25 s (two small compiles, the example's 5 s).
 set -euo pipefail
 source "$(dirname "$0")/lib.bash"
 BUILD=$(dirname "$SF")
@@ -70,6 +71,20 @@ f = np.zeros((16, 16)); f[4:12, 4:12] = 1.0
 m = shockfield.analysis.minkowski(f, thresholds=[0.5])
 assert m['chi'][0] == 1 and m['A'][0] == 0.25, m
 print('ok: shockfield.analysis.minkowski from the install tree')" || fail "the installed module failed"
+fi
+
+# An example from the moved tree: examples/python_sweep (--small, ~5 s) with the installed package
+# and no build tree on any path; every run it starts must be the moved command's.
+if grep -q "Python module: built" "$WORK/version.txt"; then
+  (cd "$WORK" && env -u SHOCKFIELD_BIN PYTHONPATH="$PYDIR" OUT="$WORK/sweep" PATH="$P/bin:/usr/bin:/bin" \
+    bash "$ROOT/examples/python_sweep/run.sh" --small > "$WORK/sweep.txt" 2>&1) \
+    || fail "examples/python_sweep from the install tree failed: $(tail -20 "$WORK/sweep.txt")"
+  [ "$(grep -cE '^(mpm|pd) ' "$WORK/sweep.txt")" -eq 4 ] || fail "python_sweep printed no 4 states: $(cat "$WORK/sweep.txt")"
+  [ -s "$WORK/sweep/sweep.png" ] || fail "python_sweep drew no sweep.png"
+  logs=$(find "$WORK/sweep" -name log.txt | wc -l)
+  moved=$(grep -l "command line: $BIN run " $(find "$WORK/sweep" -name log.txt) | wc -l)
+  [ "$logs" -eq 4 ] && [ "$moved" -eq 4 ] || fail "python_sweep: $moved of $logs runs by the moved command $BIN"
+  echo "ok: examples/python_sweep from the install tree (4 runs by $BIN, sweep.png)"
 fi
 
 # A consumer project: find_package(shockfield), then pkg-config, against the moved tree.

@@ -109,8 +109,9 @@ class Plot(unittest.TestCase):
                     ("phase-separation", "gls", 7), ("chain", "granular", 3),
                     ("stress-strain", "macroparticle", 1), ("phasefield", "phasefield", 3), ("damage", "plate", 1),
                     ("compression", "taylor", 2), ("orientations", "taylor", 2)]
-        # structures and slice: tests/cli/plot_atoms.sh; hugoniot: test_hugoniot_folder.
-        self.assertEqual({k for k, _, _ in expected} | {"hugoniot", "structures", "slice"},
+        # structures and slice: tests/cli/plot_atoms.sh; hugoniot: test_hugoniot_folder; voids and
+        # domains: test_voids_and_domains_folders.
+        self.assertEqual({k for k, _, _ in expected} | {"hugoniot", "structures", "slice", "voids", "domains"},
                          set(shockfield.plot.KINDS), "a kind without a test here")
         for kind, name, panels in expected:
             with self.subTest(kind=kind, run=name):
@@ -142,6 +143,41 @@ class Plot(unittest.TestCase):
         with self.assertRaises(shockfield.InputError) as caught:
             shockfield.plot.plot("hugoniot", self.folder("md"))
         self.assertIn("no hugoniot_sweep.csv", str(caught.exception))
+
+    def test_voids_and_domains_folders(self):
+        """The folders of `analyze atoms --voids` (here on the void fixture, by the command line)
+        and `--domains` (a two-frame domains.csv in the command's columns): the lines drawn are
+        the CSV's total and largest volume and area per timestep; a folder without the table and
+        a run folder are refused naming the table."""
+        folder = pathlib.Path(self.tmp.name) / "voids"
+        dump = SOURCE / "tests/fixtures/lammps_structure/cu_void_300K.dump"
+        subprocess.run([os.environ["SHOCKFIELD_BIN"], "analyze", "atoms", str(dump), "--voids", "2.17", "--no-plot",
+                        "-o", str(folder)], check=True, capture_output=True)
+        domains = pathlib.Path(self.tmp.name) / "domains"
+        domains.mkdir()
+        (domains / "domains.csv").write_text(
+            "frame,timestep,domain,atoms,volume_A3,area_A2,equivalent_radius_A,atoms_volume_A3,atoms_radius_A,"
+            "x_A,y_A,z_A,euler_characteristic,manifold\n"
+            "0,0,1,300,3000,1000,8.9,3000,8.9,1,2,3,2,1\n0,0,2,50,500,300,4.9,500,4.9,5,6,7,2,1\n"
+            "1,1000,1,400,4000,1200,9.8,4000,9.8,1,2,3,2,1\n")
+        for kind, target in (("voids", folder), ("domains", domains)):
+            with self.subTest(kind=kind):
+                table = read_csv(target / f"{kind}.csv")
+                out, axes = drawn_axes(kind, target)
+                self.assertEqual(out, str(target / f"{kind}.png"))
+                self.assertTrue(is_png(out))
+                steps = np.unique(table["timestep"])
+                for ax, column in zip(axes, ("volume_A3", "area_A2")):
+                    total, largest = ax.get_lines()[:2]
+                    np.testing.assert_array_equal(total.get_xdata(), steps)
+                    np.testing.assert_allclose(total.get_ydata(),
+                                               [table[column][table["timestep"] == t].sum() for t in steps])
+                    np.testing.assert_allclose(largest.get_ydata(),
+                                               [table[column][table["timestep"] == t].max() for t in steps])
+                self.assertGreater(np.sum(axes[0].get_lines()[0].get_ydata()), 0.0)
+                with self.assertRaises(shockfield.InputError) as caught:
+                    shockfield.plot.plot(kind, self.folder("md"))
+                self.assertIn(f"no {kind}.csv (the folder of `shockfield analyze atoms --{kind}`)", str(caught.exception))
 
     def test_wrong_kind_is_refused(self):
         cases = [("bar", "mpm", "a mpm run; 'bar' draws pd runs. Kinds for this run: thermo, series, porous, cavity"),

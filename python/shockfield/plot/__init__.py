@@ -26,9 +26,11 @@ class Kind:
     only: tuple = None
 
     def draws(self, run):
+        """True when this kind draws ``run`` (a Run): its method and the extra condition."""
         return (self.methods is None or run.method in self.methods) and (self.only is None or self.only[0](run))
 
     def runs_text(self):
+        """The runs it draws, in words, for a refusal ("pd runs", "dbm runs of ...")."""
         runs = f"{'/'.join(sorted(self.methods))} runs"
         return f"{runs} {self.only[1]}" if self.only else runs
 
@@ -72,6 +74,10 @@ KINDS = {
                        target="folder"),
     "slice": Kind(None, "an annotated dump of `analyze atoms`: a slice of atoms by structure type",
                   target="file"),
+    "voids": Kind(None, "the folder of `analyze atoms --voids`: total and largest void volume and area",
+                  target="folder"),
+    "domains": Kind(None, "the folder of `analyze atoms --domains`: total and largest domain volume and area",
+                    target="folder"),
 }
 
 
@@ -150,7 +156,8 @@ def _draw_run(kind, run, out, options):
 
 
 def _draw_other(kind, target, out, options):
-    """Draws a kind whose target is not a run folder (hugoniot, structures: folders; slice: a dump)."""
+    """Draws a kind whose target is not a run folder (hugoniot, structures, voids, domains: folders;
+    slice: a dump)."""
     path = pathlib.Path(target)
     if kind == "slice":
         if not path.is_file():
@@ -168,6 +175,12 @@ def _draw_other(kind, target, out, options):
     if kind == "hugoniot":
         from shockfield_plot import md_plots
         md_plots.plot_hugoniot(str(path), out, options.get("compare"))
+    elif kind in ("voids", "domains"):  # the figure `analyze atoms` draws itself (OUTPUT/voids.png)
+        table = path / f"{kind}.csv"
+        if not table.is_file():
+            raise InputError(f"{path}: no {kind}.csv (the folder of `shockfield analyze atoms --{kind}`)")
+        from shockfield_plot.__main__ import surfaces
+        surfaces(str(table), out)
     else:
         from shockfield_plot import atoms_plots
         atoms_plots.structures(str(path), out)
@@ -175,8 +188,8 @@ def _draw_other(kind, target, out, options):
 
 
 def plot(kind, target, out=None, columns=None, **options):
-    """Draws ``kind`` of ``target`` (a run folder; for hugoniot and structures an output folder,
-    for slice a dump file) to ``out`` (default TARGET/KIND.png); returns the PNG's path.
+    """Draws ``kind`` of ``target`` (a run folder; for hugoniot, structures, voids and domains an
+    output folder, for slice a dump file) to ``out`` (default TARGET/KIND.png); returns the PNG's path.
     ``columns``: for thermo and series, the columns to draw (default the first MAX_PANELS numeric
     ones); ``options``: axis (md profiles, slice), at, thickness, column, frame (slice), compare
     (hugoniot). InputError for an unknown kind, an unknown column or a run the kind does not draw."""

@@ -35,7 +35,8 @@ struct RunContext {
 /// One per-particle array of a method's state, for a program that steps the method itself and
 /// reads or writes its state between steps (the Python module's numpy views, docs/python.md):
 /// `rows` × `columns` values of `type`, row-major at `data`, owned by the method; a grid's field
-/// gives its `shape` instead (slowest index first, x fastest: (nz, ny, nx) in 3D).
+/// gives its `shape` instead (slowest index first, x fastest: (nz, ny, nx) in 3D). A member of an
+/// array of structs (one value per particle inside its state) gives `shape` and `strides` too.
 struct StateArray {
   enum class Type { f64, i32, i64 };
   std::string name;  ///< "positions", "velocities", ...
@@ -44,6 +45,7 @@ struct StateArray {
   Type type = Type::f64;
   std::string unit;  ///< "Å", "m/s", "" for indices
   std::vector<std::size_t> shape;  ///< empty: rows × columns (or rows when columns = 1)
+  std::vector<std::size_t> strides;  ///< bytes from one index to the next along each of `shape`; empty: row-major
 };
 
 /// A wall-time share a method measured itself (e.g. MD's force and neighbour phases).

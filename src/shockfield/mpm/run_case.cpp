@@ -185,9 +185,21 @@ class MpmMethod final : public Method {
 
   std::vector<StateArray> state_arrays() override {
     Particles& p = sim_.particles();  // also tells the simulation its particles may be written
+    using State = materials::PointState;
+    // Each particle's material state (materials/solid_material.hpp) as strided views, one value per particle.
     return {state_array("positions", p.x, p.size(), "m"), state_array("velocities", p.v, p.size(), "m/s"),
             state_array("masses", p.mass, p.size(), "kg"), state_array("volumes0", p.volume0, p.size(), "m³"),
-            state_array("materials", p.material, p.size())};
+            state_array("materials", p.material, p.size()),
+            member_state_array("pressures", p.state, [](State& s) -> double& { return s.pressure; }, "Pa"),
+            member_state_array("viscous_pressures", p.state, [](State& s) -> double& { return s.viscous_pressure; }, "Pa"),
+            member_state_array("energies", p.state, [](State& s) -> double& { return s.energy; }, "J/kg"),
+            member_state_array("temperatures", p.state, [](State& s) -> double& { return s.temperature; }, "K"),
+            member_state_array("plastic_works", p.state, [](State& s) -> double& { return s.plastic_work; }, "J/kg"),
+            member_state_array("plastic_strains", p.state,
+                               [](State& s) -> double& { return s.deviatoric.plastic_strain; }),
+            member_state_array("damages", p.state, [](State& s) -> double& { return s.damage; }),
+            member_state_array("deviators", p.state, [](State& s) -> Mat3& { return s.deviatoric.s; }, "Pa"),
+            member_state_array("deformations", p.state, [](State& s) -> Mat3& { return s.deformation; })};
   }
   double time() const override { return sim_.time(); }
   std::string time_unit() const override { return "s"; }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <variant>
 
+#include "shockfield/core/derived_arrays.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/output_schedule.hpp"
 #include "shockfield/core/run_driver.hpp"
@@ -182,7 +183,7 @@ CrackedFamily cracked_family(const PdCase& c, const PointCloud& cloud, const Bod
 // which serve() by making the same call (parallel/method_mirror.hpp); before anything reads the
 // state (an output due, a thermo row, a checkpoint, the results) sync() gathers every rank's
 // points into rank 0's whole body, from which the serial code writes every output.
-class PdMethod final : public Method {
+class PdMethod final : public Method, public DerivedArrays {
  public:
   /// `options.validate_only` (shockfield run --check): the model is built on a sub-body
   /// (checked_body) and the sizes of the whole body are counted, not built.
@@ -317,6 +318,27 @@ class PdMethod final : public Method {
     const std::size_t n = sim_.positions().size();
     return {state_array("positions", sim_.positions(), n, "m"), state_array("velocities", sim_.velocities(), n, "m/s"),
             state_array("force_densities", sim_.force_density(), n, "N/m³")};
+  }
+  // What the profiles write of each point, computed from the model rather than stored
+  // (Simulation.fields() in Python): damage (the share of its bonds broken; 0 for correspondence
+  // models) and, for models that have them, the Cauchy stress (n, 3, 3) and the plastic measure.
+  std::vector<DerivedArray> derived_arrays() const override {
+    const PointFields& f = model_.fields;
+    std::vector<double> damage = f.damage();
+    const std::size_t n = damage.size();
+    std::vector<DerivedArray> arrays{{"damage", std::move(damage), {n}, "1"}};
+    if (f.stress) {
+      DerivedArray stress{"stress", std::vector<double>(9 * n), {n, 3, 3}, "Pa"};
+      using RowMajor = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;  // [i, row, column], as the profiles
+      for (std::size_t i = 0; i < n; ++i) Eigen::Map<RowMajor>(&stress.values[9 * i]) = f.stress(i);
+      arrays.push_back(std::move(stress));
+    }
+    if (f.plastic) {
+      DerivedArray plastic{"plastic", std::vector<double>(n), {n}, "1"};
+      for (std::size_t i = 0; i < n; ++i) plastic.values[i] = f.plastic(i);
+      arrays.push_back(std::move(plastic));
+    }
+    return arrays;
   }
   double time() const override { return clock().time(); }
   std::string time_unit() const override { return "s"; }
