@@ -7,6 +7,11 @@ The folders after --analysis are output folders of `shockfield analyze atoms` (n
 metal units): their CSV tables (structures, clusters, profiles, tracks, growth, burgers, domains,
 voids) and .vtp surfaces are checked as an MD run's, as the method "analyze_atoms".
 
+The tables of the field analyses (`shockfield analyze minkowski|similarity|stats`: FIELD_TABLES),
+in any folder given, are in the units of the field they read: every column is a pure number
+(FIELD_DIMENSIONLESS) or a quantity of FIELD_QUANTITIES followed by its unit's suffix, `_1` (a pure
+number or model unit) or `_unknown` (an input that names no unit); one time column `time_<unit>`.
+
 Every .vti/.vtp file: each DataArray but a vertex cell's connectivity and offsets and VTK's
 blanking array vtkGhostType carries a units attribute, and an array named ux/uy/uz is not a
 velocity (u is a displacement, v a velocity). Every .csv file: at most one time column (time,
@@ -71,6 +76,29 @@ DIMENSIONLESS = {"step", "steps", "profile", "grain", "bin", "particles", "plast
 # last ones (MD's clusters.csv and structures.csv, PD's summary.json) follow it since issue 15.
 NOT_YET_UNIFORM = {}
 PER_MISSING_LABELS = ("_per_m", "_per_m2")
+
+# The tables of `shockfield analyze minkowski|similarity|stats` (docs/conventions.md, "Field analysis
+# tables"): in the units of the field read, named after its array's `units`, the grid's `length_units`
+# and the .pvd's `time_units` (core/unit_names: Pa, kg_m3, m2, per_m, kg2_m6; 1; unknown).
+FIELD_TABLES = {"minkowski.csv", "similarity.csv", "stats.csv", "histogram.csv", "structure_factor.csv",
+                "correlation.csv"}
+FIELD_QUANTITIES = ("domain_size_R", "threshold", "time", "mean", "std", "lo", "hi", "L", "S", "b", "M", "k", "r")
+FIELD_DIMENSIONLESS = {"file", "candidate", "A", "V", "chi", "chi_per_black", "d_P", "S_D", "cells", "void_cells",
+                       "skewness", "kurtosis", "count", "shell_points", "C"}
+FIELD_UNIT = re.compile(r"1|unknown|(per_)?[A-Za-z]+\d*(_[A-Za-z]+\d*)*")
+
+
+def check_field_table(path):
+    header = next(csv_lines(path), [])
+    times = [c for c in header if c == "time" or c.startswith("time_")]
+    if len(times) != (0 if path.name == "similarity.csv" else 1):
+        yield f"{path}: time columns {times}; expected one, time_<unit>"
+    for c in header:
+        if c in FIELD_DIMENSIONLESS:
+            continue
+        if not any(c.startswith(q + "_") and FIELD_UNIT.fullmatch(c[len(q) + 1:]) for q in FIELD_QUANTITIES):
+            yield (f"{path}: column '{c}' has no unit suffix (a quantity of FIELD_QUANTITIES, then _<unit>, _1 "
+                   "or _unknown) and is not a pure number")
 
 
 def unit_problem(column, system):
@@ -324,6 +352,8 @@ def main():
         for path in sorted(run.rglob("*")):
             if path.suffix in (".vti", ".vtp", ".vtu"):
                 problems += check_vtk(path, method)
+            elif path.suffix == ".csv" and path.name in FIELD_TABLES:
+                problems += check_field_table(path)
             elif path.suffix == ".csv":
                 problems += check_csv(path, method, dim_of(run))
             elif path.name == "summary.json":

@@ -80,7 +80,19 @@ for f in structures clusters tracks growth profiles burgers domains voids; do
   [ "$(wc -l < "$WORK/atoms/$f.csv")" -ge 1 ] || fail "analyze atoms wrote no $f.csv"
 done
 [ "$(wc -l < "$WORK/atoms/growth.csv")" -gt 1 ] && ls "$WORK"/atoms/domains_*.vtp > /dev/null || fail "no growth laws or domain surfaces to check"
-check "${runs[@]}" --analysis "$WORK/atoms" || fail "a run or analysis folder breaks the output conventions (above)"
+# The tables of the field analyses in the units of the fields they read: an MPM grid (SI, the
+# .pvd's time_units and the grid's length_units) and a phase-field grid (model units: _1).
+"$SF" analyze minkowski "$WORK/mpm_tiny" --array pressure -n 3 --no-plot -o "$WORK/fields_mpm" > /dev/null
+"$SF" analyze stats "$WORK/mpm_tiny" --array pressure --bins 4 -o "$WORK/fields_mpm" > /dev/null
+"$SF" analyze minkowski "$WORK/phasefield_tiny" -n 3 --no-plot -o "$WORK/fields_phasefield" > /dev/null
+[ "$(head -1 "$WORK/fields_mpm/minkowski.csv")" = "file,time_s,threshold_Pa,A,L_m,chi,chi_per_black" ] ||
+  fail "MPM minkowski.csv columns: $(head -1 "$WORK/fields_mpm/minkowski.csv")"
+[ "$(head -1 "$WORK/fields_mpm/structure_factor.csv")" = "file,time_s,k_per_m,S_Pa2,shell_points" ] ||
+  fail "MPM structure_factor.csv columns: $(head -1 "$WORK/fields_mpm/structure_factor.csv")"
+[ "$(head -1 "$WORK/fields_phasefield/minkowski.csv")" = "file,time_1,threshold_1,A,L_1,chi,chi_per_black" ] ||
+  fail "phase-field minkowski.csv columns: $(head -1 "$WORK/fields_phasefield/minkowski.csv")"
+check "${runs[@]}" --analysis "$WORK/atoms" "$WORK/fields_mpm" "$WORK/fields_phasefield" ||
+  fail "a run or analysis folder breaks the output conventions (above)"
 
 # The checker on a deliberately broken folder: it must exit 1 and report each message given.
 expect_reported() {
@@ -190,6 +202,14 @@ expect_reported "$WORK/broken_dbm_totals" "a DBM total without its per-length la
   "summary.json: results key 'mass' is a total of a 2D run (model units); name it 'mass_per_length'"
 expect_reported "$WORK/broken_phasefield" "a phase-field total without its per-length label" \
   "series.csv: column 'free_energy' is a total of a 2D run (model units); name it 'free_energy_per_length'"
+# Field-analysis tables under their names before issue 15 (no units) and with a second time column.
+mkdir -p "$WORK/broken_fields"
+sed '1s/time_s,threshold_Pa,A,L_m,/time,threshold,A,L,/' "$WORK/fields_mpm/minkowski.csv" > "$WORK/broken_fields/minkowski.csv"
+sed '1s/,mean_Pa,/,mean,/; 1s/,domain_size_R_m$/,domain_size_R,time_ps/' "$WORK/fields_mpm/stats.csv" > "$WORK/broken_fields/stats.csv"
+AS_ANALYSIS=1 expect_reported "$WORK/broken_fields" "field-analysis tables without units" \
+  "minkowski.csv: column 'threshold' has no unit suffix" "minkowski.csv: column 'L' has no unit suffix" \
+  "minkowski.csv: column 'time' has no unit suffix" "stats.csv: column 'mean' has no unit suffix" \
+  "stats.csv: column 'domain_size_R' has no unit suffix" "stats.csv: time columns ['time_s', 'time_ps']"
 # The next method: a run folder of a method the checker has no unit system for is itself a violation.
 mkdir -p "$WORK/broken_new_method"
 printf "method = 'newmethod'\n" > "$WORK/broken_new_method/config.resolved.toml"
