@@ -1,0 +1,23 @@
+#pragma once
+// Reading the points of a particle frame for `shockfield analyze geometry`: a VTK XML PolyData
+// file (.vtp: what MPM, PD, granular and macroparticle runs write, io/particle_frame, io/vtk_xml)
+// or its parallel summary (.pvtp, [output] vtk_pieces > 1: each <Piece Source> a .vtp next to or
+// below it, read in order and joined). The <Points> array of every <Piece> (3 components; ascii,
+// inline base64 or appended raw/base64, uncompressed or zlib: analysis/vti_binary) and its `units`
+// attribute (io/vtk_xml writes units="m" for the SI methods). Lives beside the .vti readers it
+// shares the binary decoding with.
+#include <string>
+#include <vector>
+
+namespace shockfield::analysis {
+
+struct PointFrame {
+  std::vector<double> xyz;     ///< x, y, z interleaved
+  std::string position_units;  ///< the Points array's units attribute; empty: not named
+};
+
+/// The points of the .vtp or .pvtp file `path`. Throws InputError naming the file (and the piece)
+/// on anything it cannot read: no <Points>, a count the file cannot hold, a non-finite coordinate.
+PointFrame read_point_frame(const std::string& path);
+
+}  // namespace shockfield::analysis
