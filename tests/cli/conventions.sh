@@ -6,7 +6,8 @@
 # (model units too), self-describing checkpoints (docs/checkpoints.md), and the same for the tables and surfaces
 # of `analyze atoms` (metal units). The checker
 # itself fails on a folder that breaks them (a second time column, a time column of another unit
-# system, an array without units, granular, PD and MPM columns without their units, PD summary keys
+# system, an array without units, an image without its length_units and a .pvd without or with
+# another time_units, granular, PD and MPM columns without their units, PD summary keys
 # without their unit or per-area label, MD analysis tables without units, an MPM velocity and a DBM
 # (model-unit) velocity named u, DBM and phase-field totals without their per-length label, analyze
 # atoms' tables under their old names (tracks.csv, growth.csv, profiles.csv) and a surface without
@@ -112,7 +113,9 @@ printf "method = 'mpm'\n" > "$WORK/broken/config.resolved.toml"
 printf "step,time_s,time\n0,0,0\n" > "$WORK/broken/series.csv"
 printf "step,time_ps\n0,0\n" > "$WORK/broken/profile.csv"
 cp "$WORK/mpm_tiny/fields/grid_000000000.vti" "$WORK/broken/fields/"
-sed -i '0,/ units="K"/s/ units="K"//' "$WORK/broken/fields/grid_000000000.vti"
+sed -i -e '0,/ units="K"/s/ units="K"//' -e 's/ length_units="m"//' "$WORK/broken/fields/grid_000000000.vti"
+sed 's/ time_units="s"//' "$WORK/mpm_tiny/grid.pvd" > "$WORK/broken/grid.pvd"
+sed 's/ time_units="s"/ time_units="ps"/' "$WORK/mpm_tiny/particles.pvd" > "$WORK/broken/particles.pvd"
 cp "$WORK/mpm_tiny/checkpoint.h5" "$WORK/broken/"
 /usr/bin/python3 -c 'import h5py, sys
 with h5py.File(sys.argv[1], "r+") as f:
@@ -123,7 +126,10 @@ expect_reported "$WORK/broken" "a broken folder" \
   "series.csv: 2 time columns" "profile.csv: time column 'time_ps'; a mpm run names it 'time_s'" \
   "DataArray 'temperature' has no units attribute" "checkpoint.h5: dataset 'pressure' has no units attribute" \
   "checkpoint.h5: attribute 'step' is not stored as an integer" "checkpoint.h5: dataset 'mass' is an opaque mix" \
-  "checkpoint.h5: attribute 'case' is not the run's config.resolved.toml"
+  "checkpoint.h5: attribute 'case' is not the run's config.resolved.toml" \
+  "grid_000000000.vti: <ImageData> names no length_units" \
+  "grid.pvd: <Collection> names no time_units; a mpm run's times are in 's'" \
+  "particles.pvd: time_units 'ps'; a mpm run's times are in 's'"
 # A granular series column without its unit.
 mkdir -p "$WORK/broken_granular"
 cp "$WORK/granular_tiny/config.resolved.toml" "$WORK/broken_granular/"
