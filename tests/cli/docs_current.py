@@ -4,7 +4,7 @@
     docs_current.py SHOCKFIELD SOURCE_ROOT [FILE ...]
 
 FILEs default to every docs/**/*.md, README.md, examples/*/README.md and examples/*/run.sh of
-SOURCE_ROOT. Three checks, each cheap and each catching a sentence that went stale when the code
+SOURCE_ROOT. Four checks, each cheap and each catching a sentence that went stale when the code
 changed under it:
 
 - Flags: every command line a file quotes, `shockfield SUB [SUB2] ... --flag` (in a code block
@@ -19,6 +19,9 @@ changed under it:
   `python/…`, `bench/…`, `scripts/…`) exists, as written or as a module name with its source
   ending (`io/vtk_xml` for vtk_xml.hpp/.cpp) or a prefix ending in `_` (`crystal_*`); paths with
   a pattern ({ } * < >) and the peers' own paths (FOREIGN_PATHS) are left out.
+- Python names: every `shockfield.x.y` / `shockfield_plot.x` a Markdown file quotes in inline code
+  is a package, a module (.py, .pyi: the compiled _core) or a name its module defines (def, class,
+  assignment, import) under python/.
 
 Prints each stale quote with its file and line; exits 1 if there is any.
 """
@@ -36,6 +39,8 @@ MODULE_ENDINGS = ("", ".hpp", ".cpp", ".py", ".sh")
 # Paths in other projects' trees that the docs cite: LAMMPS's sources and benchmark input, CabanaPD's
 # examples.
 FOREIGN_PATHS = ("src/SHOCK/", "src/fix_", "bench/in.", "examples/mechanics/")
+PYTHON_NAME = re.compile(r"`(shockfield(?:_plot)?(?:\.\w+)+)")
+NOT_PYTHON = {"shockfield.pc"}  # the pkg-config file (docs/install.md)
 
 
 def help_tree(binary):
@@ -100,6 +105,30 @@ def stale_paths(path, text, root):
                 yield f"{path}:{number}: path `{quoted}` does not exist"
 
 
+def defines(module, name):
+    """Whether the module at `module` (a .py/.pyi file or a package's __init__.py) defines `name`."""
+    sources = [module.with_suffix(".py"), module.with_suffix(".pyi"), module / "__init__.py"]
+    pattern = re.compile(rf"^\s*(def|class) {name}\b|^\s*{name}\s*[:=]|^\s*(from|import) [^\n]*\b{name}\b", re.M)
+    return any(s.exists() and pattern.search(s.read_text()) for s in sources)
+
+
+def python_name_exists(dotted, root):
+    path = root / "python" / dotted.split(".")[0]
+    for part in dotted.split(".")[1:]:
+        if (path / part).is_dir() or (path / (part + ".py")).exists() or (path / (part + ".pyi")).exists():
+            path = path / part
+            continue
+        return defines(path, part)  # an attribute of the module: deeper parts are its members
+    return True
+
+
+def stale_python_names(path, text, root):
+    for number, line in enumerate(text.splitlines(), 1):
+        for dotted in PYTHON_NAME.findall(line):
+            if dotted not in NOT_PYTHON and not python_name_exists(dotted, root):
+                yield f"{path}:{number}: Python name `{dotted}` does not exist under python/"
+
+
 def main():
     binary, root, *files = sys.argv[1:]
     root = pathlib.Path(root)
@@ -116,11 +145,12 @@ def main():
         if f.suffix == ".md":
             problems += stale_keys(f, text, literals)
             problems += stale_paths(f, text, root)
+            problems += stale_python_names(f, text, root)
     for p in problems:
         print(p)
     if problems:
         sys.exit(1)
-    print(f"ok: {len(files)} files quote only flags the --help lists, keys the readers read and paths that exist "
+    print(f"ok: {len(files)} files quote only flags the --help lists, keys the readers read, paths and Python names that exist "
           f"({len(flags)} subcommands)")
 
 

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The docs are not stale (tests/cli/docs_current.py): every `shockfield SUB --flag` they quote is in
 # that subcommand's --help, every key of their key tables is read by name in src/shockfield; and
-# every repository path they quote exists; and the check fails on a planted stale sentence of each
+# every repository path and Python name (shockfield.x.y) they quote exists; and the check fails on a planted stale sentence of each
 # kind (a flag the command lacks, a flag of another subcommand, a key nobody reads, a file that is
-# not there).
+# not there, a Python module that is not there).
 source "$(dirname "$0")/lib.bash"
 set -e
 check() { /usr/bin/python3 "$ROOT/tests/cli/docs_current.py" "$SF" "$ROOT" "$@"; }
@@ -21,13 +21,15 @@ shockfield analyze minkowski fields/ -n 8 \
 | `cell_sizing_rule` | a key no reader reads | 1 |
 
 The reader is `src/shockfield/analysis/field_reader` (`src/shockfield/analysis/grid_reader.cpp` before).
+Python reads them with `shockfield.vtk_arrays.read_vtk_arrays`, not `shockfield_plot.vtk_arrays`.
 DOC
 if check "$WORK/stale.md" > "$WORK/report.txt"; then fail "the check passed a stale page: $(cat "$WORK/report.txt")"; fi
 for p in "stale.md:1: \`shockfield analyze stats\` has no --histogram-bins" \
   "stale.md:3: \`shockfield analyze minkowski\` has no --reference-threshold" \
   "stale.md:10: key \`cell_sizing_rule\` of a key table is read nowhere" \
-  "stale.md:12: path \`src/shockfield/analysis/grid_reader.cpp\` does not exist"; do
+  "stale.md:12: path \`src/shockfield/analysis/grid_reader.cpp\` does not exist" \
+  "stale.md:13: Python name \`shockfield_plot.vtk_arrays\` does not exist"; do
   grep -qF -- "$p" "$WORK/report.txt" || fail "not reported: $p ($(cat "$WORK/report.txt"))"
 done
-[ "$(wc -l < "$WORK/report.txt")" -eq 4 ] || fail "more than the four planted problems: $(cat "$WORK/report.txt")"
+[ "$(wc -l < "$WORK/report.txt")" -eq 5 ] || fail "more than the five planted problems: $(cat "$WORK/report.txt")"
 echo "docs_current: ok"
