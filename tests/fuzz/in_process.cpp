@@ -62,7 +62,9 @@ void parse_data(const fs::path& file) { io::read_data(file); }
 
 void parse_point_frame(const fs::path& file) {
   double sum = 0.0;
-  for (const double v : analysis::read_point_frame(file.string()).xyz) sum += v;
+  const analysis::PointFrame frame = analysis::read_point_frame(file.string(), "radius");  // the fixtures' grains
+  for (const double v : frame.xyz) sum += v;
+  for (const double v : frame.values) sum += v;
   if (!std::isfinite(sum)) throw InputError(fmt::format("{}: the reader returned a non-finite coordinate", file.string()));
 }
 

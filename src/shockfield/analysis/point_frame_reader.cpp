@@ -42,8 +42,43 @@ std::vector<double> ascii_values(std::string_view body, std::size_t count, const
   return values;
 }
 
-// The points of a .vtp's every <Piece>, appended to `frame`.
-void read_vtp(const std::string& path, const std::string& text, PointFrame& frame) {
+// The values of the DataArray whose start tag is at `pos` of `markup` (in `text`): `count` of them.
+std::vector<double> array_values(const std::string& text, std::string_view markup, std::size_t pos, std::size_t count,
+                                 const std::string& where) {
+  const std::string_view da = tag_at(markup, pos);
+  const std::string format = xml_attribute(da, "format"), name = xml_attribute(da, "Name");
+  const std::size_t body = markup.find('>', pos) + 1;
+  const VtiBinary b{text, where, name, xml_attribute(da, "type")};
+  std::vector<double> values;
+  if (format == "ascii") {
+    values = ascii_values(markup.substr(body, markup.find("</DataArray>", body) - body), count, where);
+  } else if (format == "binary") {
+    values = b.inline_values(body, count);
+  } else if (format == "appended") {
+    double offset = -1.0;
+    const std::string o = xml_attribute(da, "offset");
+    std::from_chars(o.data(), o.data() + o.size(), offset);
+    values = b.appended_values(offset, count);
+  } else {
+    throw InputError(fmt::format("{}: DataArray '{}' has format=\"{}\"; expected ascii, binary or appended", where,
+                                 name, format));
+  }
+  for (const double v : values)
+    if (!std::isfinite(v))
+      throw InputError(fmt::format("{}: DataArray '{}' holds {}; expected finite numbers", where, name, v));
+  return values;
+}
+
+// `value` (a unit) of every piece must be the first piece's.
+void require_same(std::string& first, const std::string& value, std::size_t piece, const char* what,
+                  const std::string& where) {
+  if (piece > 1 && value != first)
+    throw InputError(fmt::format("{}: {} in '{}', the first piece's in '{}'", where, what, value, first));
+  first = value;
+}
+
+// The points (and the point array `array`, if named) of a .vtp's every <Piece>, appended to `frame`.
+void read_vtp(const std::string& path, const std::string& text, const std::string& array, PointFrame& frame) {
   const std::string_view markup = std::string_view(text).substr(0, text.find("<AppendedData"));
   if (markup.find("<PolyData") == std::string_view::npos)
     throw InputError(fmt::format("{}: no <PolyData> element; expected a VTK XML PolyData file (.vtp)", path));
@@ -62,41 +97,33 @@ void read_vtp(const std::string& path, const std::string& text, PointFrame& fram
     if (static_cast<double>(n) * 3.0 > static_cast<double>(text.size()) * (compressed ? io::kZlibMaxExpansion : 1))
       throw InputError(fmt::format("{}: {} points cannot fit in a file of {} bytes", where, n, text.size()));
     const auto points = markup.find("<Points", piece), next_piece = markup.find("<Piece", piece + 1);
-    const auto array = markup.find("<DataArray", points);
-    if (points == std::string_view::npos || array == std::string_view::npos || array > next_piece)
+    const auto xyz_array = markup.find("<DataArray", points);
+    if (points == std::string_view::npos || xyz_array == std::string_view::npos || xyz_array > next_piece)
       throw InputError(fmt::format("{}: no <Points> <DataArray>", where));
-    const std::string_view da = tag_at(markup, array);
+    const std::string_view da = tag_at(markup, xyz_array);
     if (const std::string nc = xml_attribute(da, "NumberOfComponents"); nc != "3")
       throw InputError(fmt::format("{}: the Points array has NumberOfComponents=\"{}\"; expected 3", where, nc));
-    const std::string format = xml_attribute(da, "format"), units = xml_attribute(da, "units");
-    if (pieces > 1 && units != frame.position_units)
-      throw InputError(fmt::format("{}: points in '{}', the first piece's in '{}'", where, units, frame.position_units));
-    frame.position_units = units;
-    const std::size_t body = markup.find('>', array) + 1;
-    const VtiBinary b{text, where, xml_attribute(da, "Name"), xml_attribute(da, "type")};
-    std::vector<double> xyz;
-    if (format == "ascii")
-      xyz = ascii_values(markup.substr(body, markup.find("</DataArray>", body) - body), 3 * n, where);
-    else if (format == "binary")
-      xyz = b.inline_values(body, 3 * n);
-    else if (format == "appended") {
-      double offset = -1.0;
-      const std::string o = xml_attribute(da, "offset");
-      std::from_chars(o.data(), o.data() + o.size(), offset);
-      xyz = b.appended_values(offset, 3 * n);
-    } else {
-      throw InputError(fmt::format("{}: the Points array has format=\"{}\"; expected ascii, binary or appended", where,
-                                   format));
-    }
-    for (const double v : xyz)
-      if (!std::isfinite(v)) throw InputError(fmt::format("{}: a coordinate is {}; expected finite numbers", where, v));
+    require_same(frame.position_units, xml_attribute(da, "units"), pieces, "points", where);
+    const std::vector<double> xyz = array_values(text, markup, xyz_array, 3 * n, where);
     frame.xyz.insert(frame.xyz.end(), xyz.begin(), xyz.end());
+    if (array.empty()) continue;
+    // The named array of one component in this piece's <PointData>.
+    const auto data = markup.find("<PointData", piece), data_end = markup.find("</PointData>", data);
+    auto pos = markup.find("<DataArray", data);
+    while (pos < data_end && xml_attribute(tag_at(markup, pos), "Name") != array) pos = markup.find("<DataArray", pos + 1);
+    if (data > next_piece || data_end == std::string_view::npos || data_end > next_piece || pos >= data_end)
+      throw InputError(fmt::format("{}: no point array named '{}'", where, array));
+    if (const std::string nc = xml_attribute(tag_at(markup, pos), "NumberOfComponents"); !nc.empty() && nc != "1")
+      throw InputError(fmt::format("{}: point array '{}' has {} components; expected 1", where, array, nc));
+    require_same(frame.values_units, xml_attribute(tag_at(markup, pos), "units"), pieces, array.c_str(), where);
+    const std::vector<double> values = array_values(text, markup, pos, n, where);
+    frame.values.insert(frame.values.end(), values.begin(), values.end());
   }
   if (pieces == 0) throw InputError(fmt::format("{}: no <Piece>", path));
 }
 
 // The pieces of a .pvtp, in order.
-void read_pvtp(const std::string& path, const std::string& text, PointFrame& frame) {
+void read_pvtp(const std::string& path, const std::string& text, const std::string& array, PointFrame& frame) {
   const auto summary = text.find("<PPolyData");
   if (summary == std::string::npos)
     throw InputError(fmt::format("{}: no <PPolyData> element; expected a parallel VTK PolyData file (.pvtp)", path));
@@ -110,28 +137,28 @@ void read_pvtp(const std::string& path, const std::string& text, PointFrame& fra
     PointFrame piece;
     try {
       const std::string piece_path = (fs::path(path).parent_path() / file).string();
-      read_vtp(piece_path, read_text(piece_path), piece);
+      read_vtp(piece_path, read_text(piece_path), array, piece);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: {}", where, e.what()));
     }
-    if (pieces++ > 0 && piece.position_units != frame.position_units)
-      throw InputError(fmt::format("{}: points in '{}', the first piece's in '{}'", where, piece.position_units,
-                                   frame.position_units));
-    frame.position_units = piece.position_units;
+    ++pieces;
+    require_same(frame.position_units, piece.position_units, pieces, "points", where);
+    require_same(frame.values_units, piece.values_units, pieces, array.c_str(), where);
     frame.xyz.insert(frame.xyz.end(), piece.xyz.begin(), piece.xyz.end());
+    frame.values.insert(frame.values.end(), piece.values.begin(), piece.values.end());
   }
   if (pieces == 0) throw InputError(fmt::format("{}: no <Piece Source> entries", path));
 }
 
 }  // namespace
 
-PointFrame read_point_frame(const std::string& path) {
+PointFrame read_point_frame(const std::string& path, const std::string& array) {
   const std::string text = read_text(path);
   PointFrame frame;
   if (fs::path(path).extension() == ".pvtp")
-    read_pvtp(path, text, frame);
+    read_pvtp(path, text, array, frame);
   else
-    read_vtp(path, text, frame);
+    read_vtp(path, text, array, frame);
   return frame;
 }
 

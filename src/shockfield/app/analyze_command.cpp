@@ -18,6 +18,7 @@
 #include "shockfield/analysis/field_reader.hpp"
 #include "shockfield/analysis/field_statistics.hpp"
 #include "shockfield/analysis/minkowski.hpp"
+#include "shockfield/analysis/particle_binning.hpp"
 #include "shockfield/analysis/similarity.hpp"
 #include "shockfield/analysis/spectral_statistics.hpp"
 #include "shockfield/app/commands.hpp"
@@ -37,6 +38,7 @@ struct Common {
   std::vector<double> times;
   std::string time_units;  // empty: the .pvd's time_units
   std::string array;
+  double bin_size = 0.0;  // particle frames: the side of the cells they are binned on
   std::string output = "analysis";
   int threads = 0;
   int dimension = 0;  // 0: from the grid (3D when it has more than one z layer)
@@ -55,7 +57,8 @@ const char* kFormats =
     "`void` marks a void cell, `# spacing = h`), .vtk (legacy ASCII STRUCTURED_POINTS), .vti "
     "(XML ImageData: ascii, binary or appended raw/base64, uncompressed or zlib), .pvti (its parallel "
     "pieces); a .pvd series or a run folder with one .pvd of .vti or .pvti fields stands for its fields "
-    "at its times. See "
+    "at its times. Particle frames (.vtp, .pvtp, a .pvd of them) are binned with --bin-size H and --array "
+    "NAME. See "
     "docs/analysis-minkowski.md.";
 
 void add_common(CLI::App* cmd, Common& c, const char* files_help) {
@@ -72,6 +75,10 @@ void add_common(CLI::App* cmd, Common& c, const char* files_help) {
                   "of a single z layer as one layer of voxels")
       ->check(CLI::IsMember({2, 3}));
   cmd->add_option("--array", c.array, "Data array to read from VTK files (default: the first)");
+  cmd->add_option("--bin-size", c.bin_size,
+                  "Particle frames (.vtp, .pvtp, a .pvd of them: MPM, PD, granular, macroparticle): bin "
+                  "--array's values (mean per cell; empty cells void) on cubic cells of this side, in the "
+                  "frames' length unit, one grid over every frame's particles");
   cmd->add_option("-o,--output", c.output, "Output folder (created if missing)")
       ->capture_default_str();
   cmd->add_option("-j,--threads", c.threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
@@ -168,8 +175,22 @@ Inputs read_all(const Common& c, const std::vector<std::string>& paths, const ch
                                            [&](const std::string& u) { return u == series_units.front(); });
   in.time_units = !c.time_units.empty() ? c.time_units
                   : c.times.empty() && one_series_unit ? series_units.front() : "";
-  for (const auto& f : in.files) {
-    auto& field = in.fields.emplace_back(sa::read_grid_field(f, c.array));
+  const auto is_frame = [](const std::string& f) {
+    const auto ext = fs::path(f).extension();
+    return ext == ".vtp" || ext == ".pvtp";
+  };
+  const auto frames = std::count_if(in.files.begin(), in.files.end(), is_frame);
+  if (frames > 0 && frames < static_cast<std::ptrdiff_t>(in.files.size()))
+    throw InputError(fmt::format("{} fields: particle frames (.vtp, .pvtp) mixed with grids; give one kind", role));
+  if (frames > 0 && (c.bin_size <= 0.0 || c.array.empty()))
+    throw InputError(fmt::format("{}: a particle frame; give --bin-size H (the cell side, in the frame's length "
+                                 "unit) and --array NAME (the point array to bin)", in.files.front()));
+  if (frames == 0 && c.bin_size > 0.0)
+    throw InputError(fmt::format("--bin-size bins particle frames (.vtp, .pvtp); {} is a grid", in.files.front()));
+  if (frames > 0) in.fields = sa::bin_point_frames(in.files, c.array, c.bin_size);
+  for (std::size_t k = 0; k < in.files.size(); ++k) {
+    const std::string& f = in.files[k];
+    auto& field = frames > 0 ? in.fields[k] : in.fields.emplace_back(sa::read_grid_field(f, c.array));
     if (c.dimension == 2 && field.n[2] > 1)
       throw InputError(
           fmt::format("{}: {} z layers; --dimension 2 needs a single layer", f, field.n[2]));
