@@ -28,7 +28,8 @@ def main(out):
             front = 1.0 / (1.0 + np.exp((y - speed * t) / 3.0))
             temp = 300.0 + front * (80.0 + extra + 30.0 * noise)
             with open(out / f"{name}_t{i}.csv", "w") as f:
-                f.write("# synthetic temperature (K), spacing in micrometres\n# spacing = 0.5\n")
+                f.write("# synthetic temperature, spacing in micrometres\n# spacing = 0.5\n"
+                        "# units = K\n# length_units = um\n")
                 for row, hole in zip(temp, pores):
                     f.write(",".join("void" if h else f"{v:.3f}" for v, h in zip(row, hole)) + "\n")
 

@@ -9,12 +9,12 @@ sf=${1:-shockfield}
 out=${2:-runs/analysis_minkowski}
 fields="$out/fields"
 /usr/bin/python3 "$here/make_fields.py" "$fields"
-T=0,0.2,0.4,0.6,0.8,1.0
-"$sf" analyze minkowski "$fields"/ref_t{0..5}.csv --times $T -t 310,330,350,370,390,410 \
+T=0,0.2,0.4,0.6,0.8,1.0  # a dimensionless time: the tables' time_1 column
+"$sf" analyze minkowski "$fields"/ref_t{0..5}.csv --times $T --time-units 1 -t 310,330,350,370,390,410 \
   -o "$out/minkowski"
 "$sf" analyze similarity -r "$fields"/ref_t{0..5}.csv --reference-threshold 350 \
-  "$fields"/hot_t{0..5}.csv --times $T -n 60 -o "$out/similarity"
-"$sf" analyze stats "$fields"/ref_t{0..5}.csv --times $T -o "$out/stats"
+  "$fields"/hot_t{0..5}.csv --times $T --time-units 1 -n 60 -o "$out/similarity"
+"$sf" analyze stats "$fields"/ref_t{0..5}.csv --times $T --time-units 1 -o "$out/stats"
 for picture in minkowski/minkowski.png similarity/similarity.png; do
   [ -f "$out/$picture" ] && cp "$out/$picture" "$here/"
 done

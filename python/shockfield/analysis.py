@@ -53,7 +53,9 @@ def minkowski(field, thresholds=None, count=None, boundary="periodic", connectiv
     ``void`` a bool array of the field's shape marking cells without material (black at every
     threshold).
 
-    Returns a numpy structured array, one row per threshold, with the columns of minkowski.csv:
+    Returns a numpy structured array, one row per threshold, with the columns of minkowski.csv
+    under their bare names (minkowski.csv adds each one's unit, ``threshold_K``, ``L_m``; a numpy
+    array carries none: docs/conventions.md):
     2D ``threshold, A, L, chi, chi_per_black`` (area fraction, boundary length, Euler
     characteristic χ = N_W − N_B of eq. (32), χ/N of eq. (33)); 3D ``threshold, V, S, b, M, chi,
     chi_per_black`` (volume fraction, surface area, mean breadth, M = 2πb, χ, χ/N).

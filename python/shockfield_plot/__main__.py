@@ -4,9 +4,11 @@
     python3 -m shockfield_plot similarity similarity.csv similarity.png
     python3 -m shockfield_plot surfaces voids.csv voids.png      (or domains.csv domains.png)
 
-minkowski: one panel per functional (columns after `threshold`), each functional against time
+minkowski: one panel per functional (columns after `threshold_<unit>`), each functional against time
 with one curve per threshold (the paper's Figs. 32-41), or against the threshold when there is a
 single time. similarity: process distance d_P against the candidate threshold (Fig. 43's search).
+Column names end in their unit (`time_s`, `threshold_K`, `L_m`; `_1` a pure number or model unit,
+`_unknown` an input without units: docs/conventions.md); the axis labels show it.
 surfaces: the voids or phase domains of `analyze atoms --voids/--domains` (columns timestep, void or
 domain, volume, area): their total and the largest one's volume and area against the timestep.
 """
@@ -22,7 +24,7 @@ from shockfield.run import read_csv  # noqa: E402
 
 
 def minkowski(csv_path, png_path):
-    table = read_csv(csv_path)  # columns: file, time, threshold, functionals...
+    table = read_csv(csv_path)  # columns: file, time_<unit>, threshold_<unit>, functionals...
     _, time_name, threshold_name, *names = table.dtype.names
     time, threshold = table[time_name], table[threshold_name]
     times, thresholds = np.unique(time), np.unique(threshold)
@@ -34,25 +36,26 @@ def minkowski(csv_path, png_path):
                 rows = np.flatnonzero(threshold == t)
                 rows = rows[np.argsort(time[rows], kind="stable")]
                 ax.plot(time[rows], table[name][rows], label=f"{t:g}")
-            ax.set_xlabel("time")
+            ax.set_xlabel(time_name)
         else:
             ax.plot(threshold, table[name])
-            ax.set_xlabel("threshold")
+            ax.set_xlabel(threshold_name)
         ax.set_title(name)
     if len(times) > 1:
-        axes[0].legend(title="threshold", fontsize="small")
+        axes[0].legend(title=threshold_name, fontsize="small")
     fig.tight_layout()
     fig.savefig(png_path, dpi=120)
 
 
 def similarity(csv_path, png_path):
-    table = read_csv(csv_path)  # columns: candidate, threshold, d_P, S_D
-    threshold, distance = table["threshold"], table["d_P"]
+    table = read_csv(csv_path)  # columns: candidate, threshold_<unit>, d_P, S_D
+    threshold_name = table.dtype.names[1]
+    threshold, distance = table[threshold_name], table["d_P"]
     fig, ax = plt.subplots(figsize=(5, 3.4))
     ax.plot(threshold, distance, marker=".")
     best = threshold[np.argmin(distance)]
     ax.axvline(best, color="grey", ls="--", label=f"best {best:g}")
-    ax.set_xlabel("candidate threshold")
+    ax.set_xlabel(f"candidate {threshold_name}")
     ax.set_ylabel("process distance d_P")
     ax.legend()
     fig.tight_layout()

@@ -18,6 +18,7 @@ grep -q "^# reference threshold 10.5, interval \[0, 0.5\], best candidate thresh
   fail "similarity.csv header: $(head -1 "$csv")"
 [ "$(grep -c '^c,' "$csv")" -eq 6 ] || fail "one row per candidate threshold: $(cat "$csv")"
 awk -F, '$1 == "c" && $2 != 15.5 && !($3 > 0) { exit 1 }' "$csv" || fail "d_P > 0 elsewhere"
+[ "$(sed -n 2p "$csv")" = "candidate,threshold_unknown,d_P,S_D" ] || fail "similarity.csv columns: $(sed -n 2p "$csv")"
 [ "$(head -c 4 "$WORK/sim/similarity.png" | tail -c 3)" = "PNG" ] || fail "no similarity.png"
 grep -q "warning: the best threshold" "$WORK/out.txt" && fail "a warning for a minimum inside the range"
 # A best threshold on the edge of the candidates: the minimum may lie outside, the command says so.
@@ -40,4 +41,15 @@ done
 "$SF" analyze stats "$F/grid.csv" --no-plot -o "$WORK/grid" > /dev/null
 [ "$(awk -F, 'NR == 2 { print $3 "," $4 }' "$WORK/grid/stats.csv")" = "24,1" ] ||
   fail "void cells: $(cat "$WORK/grid/stats.csv")"
+# The tables name the field's units (`# units`, `# length_units`, --time-units): docs/conventions.md.
+{ echo "# units = kg/m3"; echo "# length_units = m"; cat "$F/two_disks.csv"; } > "$WORK/disks_si.csv"
+"$SF" analyze stats "$WORK/disks_si.csv" --times 1e-6 --time-units s -o "$WORK/stats_si" > /dev/null
+for pair in "stats:file,time_s,cells,void_cells,mean_kg_m3,std_kg_m3,skewness,kurtosis,domain_size_R_m" \
+  "histogram:file,time_s,lo_kg_m3,hi_kg_m3,count" "structure_factor:file,time_s,k_per_m,S_kg2_m6,shell_points" \
+  "correlation:file,time_s,r_m,C,shell_points"; do
+  [ "$(head -1 "$WORK/stats_si/${pair%%:*}.csv")" = "${pair#*:}" ] ||
+    fail "${pair%%:*}.csv header: $(head -1 "$WORK/stats_si/${pair%%:*}.csv")"
+done
+[ "$(cut -d, -f2- "$WORK/stats_si/stats.csv" | tail -1)" = "$(cut -d, -f2- "$WORK/stats/stats.csv" | sed -n 2p | sed 's/^1,/1e-06,/')" ] ||
+  fail "the units changed the values: $(cat "$WORK/stats_si/stats.csv")"
 echo "analyze_similarity_stats: ok"

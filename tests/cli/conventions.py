@@ -7,8 +7,14 @@ The folders after --analysis are output folders of `shockfield analyze atoms` (n
 metal units): their CSV tables (structures, clusters, profiles, tracks, growth, burgers, domains,
 voids) and .vtp surfaces are checked as an MD run's, as the method "analyze_atoms".
 
+The tables of the field analyses (`shockfield analyze minkowski|similarity|stats`: FIELD_TABLES),
+in any folder given, are in the units of the field they read: every column is a pure number
+(FIELD_DIMENSIONLESS) or a quantity of FIELD_QUANTITIES followed by its unit's suffix, `_1` (a pure
+number or model unit) or `_unknown` (an input that names no unit); one time column `time_<unit>`.
+
 Every .vti/.vtp file: each DataArray but a vertex cell's connectivity and offsets and VTK's
-blanking array vtkGhostType carries a units attribute, and an array named ux/uy/uz is not a
+blanking array vtkGhostType carries a units attribute (an image its grid's, <ImageData
+length_units>; every .pvd its times', <Collection time_units>, s / ps / 1 by the unit system), and an array named ux/uy/uz is not a
 velocity (u is a displacement, v a velocity). Every .csv file: at most one time column (time,
 time_s, time_ps, Time), and its name is the one of the method's unit system (the method is read
 from the run folder's config.resolved.toml; a method without a unit system in UNIT_SYSTEM is
@@ -30,6 +36,7 @@ naming the run's method); integer counters (step, format_version)
 stored as integers; a units attribute on every dataset. Prints each violation with its file and
 exits 1 if there is any.
 """
+import fnmatch
 import hashlib
 import pathlib
 import re
@@ -67,10 +74,34 @@ DIMENSIONLESS = {"step", "steps", "profile", "grain", "bin", "particles", "plast
                  "surface_atoms", "euler_characteristic", "manifold", "circuit", "b_h6", "b_k6", "b_l6",
                  "axis_x", "axis_y", "axis_z", "max_step_error", "reliable"} | {
                  f"axis{k}_{d}" for k in (1, 2, 3) for d in "xyz"}
-# Files known to break the unit rule, with the reason; each entry must still break it. Empty: the
-# last ones (MD's clusters.csv and structures.csv, PD's summary.json) follow it since issue 15.
-NOT_YET_UNIFORM = {}
+# Files known to break the unit rule, with the reason; each entry must still break it. The last CSV
+# and JSON ones (MD's clusters.csv and structures.csv, PD's summary.json) follow it since issue 15.
+NOT_YET_UNIFORM = {("dbm", "grid.pvd"): "dbm/run_output.cpp does not yet name the .pvd's time_units",
+                   ("dbm", "grid_*.vti"): "dbm/run_output.cpp does not yet name the grid's length_units"}
 PER_MISSING_LABELS = ("_per_m", "_per_m2")
+
+# The tables of `shockfield analyze minkowski|similarity|stats` (docs/conventions.md, "Field analysis
+# tables"): in the units of the field read, named after its array's `units`, the grid's `length_units`
+# and the .pvd's `time_units` (core/unit_names: Pa, kg_m3, m2, per_m, kg2_m6; 1; unknown).
+FIELD_TABLES = {"minkowski.csv", "similarity.csv", "stats.csv", "histogram.csv", "structure_factor.csv",
+                "correlation.csv"}
+FIELD_QUANTITIES = ("domain_size_R", "threshold", "time", "mean", "std", "lo", "hi", "L", "S", "b", "M", "k", "r")
+FIELD_DIMENSIONLESS = {"file", "candidate", "A", "V", "chi", "chi_per_black", "d_P", "S_D", "cells", "void_cells",
+                       "skewness", "kurtosis", "count", "shell_points", "C"}
+FIELD_UNIT = re.compile(r"1|unknown|(per_)?[A-Za-z]+\d*(_[A-Za-z]+\d*)*")
+
+
+def check_field_table(path):
+    header = next(csv_lines(path), [])
+    times = [c for c in header if c == "time" or c.startswith("time_")]
+    if len(times) != (0 if path.name == "similarity.csv" else 1):
+        yield f"{path}: time columns {times}; expected one, time_<unit>"
+    for c in header:
+        if c in FIELD_DIMENSIONLESS:
+            continue
+        if not any(c.startswith(q + "_") and FIELD_UNIT.fullmatch(c[len(q) + 1:]) for q in FIELD_QUANTITIES):
+            yield (f"{path}: column '{c}' has no unit suffix (a quantity of FIELD_QUANTITIES, then _<unit>, _1 "
+                   "or _unknown) and is not a pure number")
 
 
 def unit_problem(column, system):
@@ -156,6 +187,9 @@ def model_unit_velocity(name, method, where):
 
 def check_vtk(path, method):
     text = path.read_bytes().split(b"<AppendedData")[0].decode("utf-8", "replace")
+    image = re.search(r"<P?ImageData[^>]*>", text)
+    if image and "length_units=" not in image.group(0):
+        yield from exempted(path, method, [f"{path}: <ImageData> names no length_units (the unit of its Origin and Spacing)"])
     for tag in re.findall(r"<DataArray[^>]*>", text):
         name = re.search(r'Name="([^"]+)"', tag)
         name = name.group(1) if name else "?"
@@ -166,6 +200,24 @@ def check_vtk(path, method):
         problem = model_unit_velocity(name, method, "DataArray")
         if problem:
             yield f"{path}: {problem}"
+
+
+# The unit of a .pvd's times (<Collection time_units="...">) per unit system.
+PVD_TIME_UNITS = {"si": "s", "metal": "ps", "model": "1"}
+
+
+def check_pvd(path, method):
+    system = UNIT_SYSTEM.get(method)
+    if system is None:
+        return
+    m = re.search(r'<Collection[^>]*time_units="([^"]*)"', path.read_text())
+    if not m:
+        problem = f"{path}: <Collection> names no time_units; a {method} run's times are in '{PVD_TIME_UNITS[system]}'"
+    elif m.group(1) != PVD_TIME_UNITS[system]:
+        problem = f"{path}: time_units '{m.group(1)}'; a {method} run's times are in '{PVD_TIME_UNITS[system]}'"
+    else:
+        problem = None
+    yield from exempted(path, method, [problem] if problem else [])
 
 
 def csv_lines(path):
@@ -260,10 +312,11 @@ def check_summary(path, method, dim=3):
 
 def exempted(path, method, problems):
     """The problems of a file, or for a file in NOT_YET_UNIFORM a note when it has none."""
-    if (method, path.name) not in NOT_YET_UNIFORM:
+    entry = next(((m, name) for m, name in NOT_YET_UNIFORM if m == method and fnmatch.fnmatch(path.name, name)), None)
+    if entry is None:
         yield from problems
     elif not problems:
-        yield f"{path}: follows the unit rule now; remove ({method!r}, {path.name!r}) from NOT_YET_UNIFORM"
+        yield f"{path}: follows the unit rule now; remove {entry!r} from NOT_YET_UNIFORM"
 
 
 CHECKPOINT_ATTRIBUTES = ("format", "method", "format_version", "shockfield_version", "git_commit", "case",
@@ -324,6 +377,10 @@ def main():
         for path in sorted(run.rglob("*")):
             if path.suffix in (".vti", ".vtp", ".vtu"):
                 problems += check_vtk(path, method)
+            elif path.suffix == ".pvd":
+                problems += check_pvd(path, method)
+            elif path.suffix == ".csv" and path.name in FIELD_TABLES:
+                problems += check_field_table(path)
             elif path.suffix == ".csv":
                 problems += check_csv(path, method, dim_of(run))
             elif path.name == "summary.json":

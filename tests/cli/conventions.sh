@@ -6,7 +6,8 @@
 # (model units too), self-describing checkpoints (docs/checkpoints.md), and the same for the tables and surfaces
 # of `analyze atoms` (metal units). The checker
 # itself fails on a folder that breaks them (a second time column, a time column of another unit
-# system, an array without units, granular, PD and MPM columns without their units, PD summary keys
+# system, an array without units, an image without its length_units and a .pvd without or with
+# another time_units, granular, PD and MPM columns without their units, PD summary keys
 # without their unit or per-area label, MD analysis tables without units, an MPM velocity and a DBM
 # (model-unit) velocity named u, DBM and phase-field totals without their per-length label, analyze
 # atoms' tables under their old names (tracks.csv, growth.csv, profiles.csv) and a surface without
@@ -80,7 +81,19 @@ for f in structures clusters tracks growth profiles burgers domains voids; do
   [ "$(wc -l < "$WORK/atoms/$f.csv")" -ge 1 ] || fail "analyze atoms wrote no $f.csv"
 done
 [ "$(wc -l < "$WORK/atoms/growth.csv")" -gt 1 ] && ls "$WORK"/atoms/domains_*.vtp > /dev/null || fail "no growth laws or domain surfaces to check"
-check "${runs[@]}" --analysis "$WORK/atoms" || fail "a run or analysis folder breaks the output conventions (above)"
+# The tables of the field analyses in the units of the fields they read: an MPM grid (SI, the
+# .pvd's time_units and the grid's length_units) and a phase-field grid (model units: _1).
+"$SF" analyze minkowski "$WORK/mpm_tiny" --array pressure -n 3 --no-plot -o "$WORK/fields_mpm" > /dev/null
+"$SF" analyze stats "$WORK/mpm_tiny" --array pressure --bins 4 -o "$WORK/fields_mpm" > /dev/null
+"$SF" analyze minkowski "$WORK/phasefield_tiny" -n 3 --no-plot -o "$WORK/fields_phasefield" > /dev/null
+[ "$(head -1 "$WORK/fields_mpm/minkowski.csv")" = "file,time_s,threshold_Pa,A,L_m,chi,chi_per_black" ] ||
+  fail "MPM minkowski.csv columns: $(head -1 "$WORK/fields_mpm/minkowski.csv")"
+[ "$(head -1 "$WORK/fields_mpm/structure_factor.csv")" = "file,time_s,k_per_m,S_Pa2,shell_points" ] ||
+  fail "MPM structure_factor.csv columns: $(head -1 "$WORK/fields_mpm/structure_factor.csv")"
+[ "$(head -1 "$WORK/fields_phasefield/minkowski.csv")" = "file,time_1,threshold_1,A,L_1,chi,chi_per_black" ] ||
+  fail "phase-field minkowski.csv columns: $(head -1 "$WORK/fields_phasefield/minkowski.csv")"
+check "${runs[@]}" --analysis "$WORK/atoms" "$WORK/fields_mpm" "$WORK/fields_phasefield" ||
+  fail "a run or analysis folder breaks the output conventions (above)"
 
 # The checker on a deliberately broken folder: it must exit 1 and report each message given.
 expect_reported() {
@@ -100,7 +113,9 @@ printf "method = 'mpm'\n" > "$WORK/broken/config.resolved.toml"
 printf "step,time_s,time\n0,0,0\n" > "$WORK/broken/series.csv"
 printf "step,time_ps\n0,0\n" > "$WORK/broken/profile.csv"
 cp "$WORK/mpm_tiny/fields/grid_000000000.vti" "$WORK/broken/fields/"
-sed -i '0,/ units="K"/s/ units="K"//' "$WORK/broken/fields/grid_000000000.vti"
+sed -i -e '0,/ units="K"/s/ units="K"//' -e 's/ length_units="m"//' "$WORK/broken/fields/grid_000000000.vti"
+sed 's/ time_units="s"//' "$WORK/mpm_tiny/grid.pvd" > "$WORK/broken/grid.pvd"
+sed 's/ time_units="s"/ time_units="ps"/' "$WORK/mpm_tiny/particles.pvd" > "$WORK/broken/particles.pvd"
 cp "$WORK/mpm_tiny/checkpoint.h5" "$WORK/broken/"
 /usr/bin/python3 -c 'import h5py, sys
 with h5py.File(sys.argv[1], "r+") as f:
@@ -111,7 +126,10 @@ expect_reported "$WORK/broken" "a broken folder" \
   "series.csv: 2 time columns" "profile.csv: time column 'time_ps'; a mpm run names it 'time_s'" \
   "DataArray 'temperature' has no units attribute" "checkpoint.h5: dataset 'pressure' has no units attribute" \
   "checkpoint.h5: attribute 'step' is not stored as an integer" "checkpoint.h5: dataset 'mass' is an opaque mix" \
-  "checkpoint.h5: attribute 'case' is not the run's config.resolved.toml"
+  "checkpoint.h5: attribute 'case' is not the run's config.resolved.toml" \
+  "grid_000000000.vti: <ImageData> names no length_units" \
+  "grid.pvd: <Collection> names no time_units; a mpm run's times are in 's'" \
+  "particles.pvd: time_units 'ps'; a mpm run's times are in 's'"
 # A granular series column without its unit.
 mkdir -p "$WORK/broken_granular"
 cp "$WORK/granular_tiny/config.resolved.toml" "$WORK/broken_granular/"
@@ -190,6 +208,14 @@ expect_reported "$WORK/broken_dbm_totals" "a DBM total without its per-length la
   "summary.json: results key 'mass' is a total of a 2D run (model units); name it 'mass_per_length'"
 expect_reported "$WORK/broken_phasefield" "a phase-field total without its per-length label" \
   "series.csv: column 'free_energy' is a total of a 2D run (model units); name it 'free_energy_per_length'"
+# Field-analysis tables under their names before issue 15 (no units) and with a second time column.
+mkdir -p "$WORK/broken_fields"
+sed '1s/time_s,threshold_Pa,A,L_m,/time,threshold,A,L,/' "$WORK/fields_mpm/minkowski.csv" > "$WORK/broken_fields/minkowski.csv"
+sed '1s/,mean_Pa,/,mean,/; 1s/,domain_size_R_m$/,domain_size_R,time_ps/' "$WORK/fields_mpm/stats.csv" > "$WORK/broken_fields/stats.csv"
+AS_ANALYSIS=1 expect_reported "$WORK/broken_fields" "field-analysis tables without units" \
+  "minkowski.csv: column 'threshold' has no unit suffix" "minkowski.csv: column 'L' has no unit suffix" \
+  "minkowski.csv: column 'time' has no unit suffix" "stats.csv: column 'mean' has no unit suffix" \
+  "stats.csv: column 'domain_size_R' has no unit suffix" "stats.csv: time columns ['time_s', 'time_ps']"
 # The next method: a run folder of a method the checker has no unit system for is itself a violation.
 mkdir -p "$WORK/broken_new_method"
 printf "method = 'newmethod'\n" > "$WORK/broken_new_method/config.resolved.toml"

@@ -40,7 +40,7 @@ done
 import csv, sys
 rows = [list(csv.DictReader(open(f"{d}/stats.csv")))[0] for d in sys.argv[1:]]
 assert rows[0]["void_cells"] == rows[1]["void_cells"], "void cells differ"
-for key in ("mean", "std", "skewness"):
+for key in ("mean_Pa", "std_Pa", "skewness"):  # the grid's pressure array says units="Pa"
     a, b = float(rows[0][key]), float(rows[1][key])
     assert abs(a - b) <= 1e-6 * max(abs(a), 1.0), (key, a, b)  # Float32: 6e-8 relative per value
 print("ok: analyze stats agree")

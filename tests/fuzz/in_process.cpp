@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <string>
 
 #include "shockfield/analysis/field_reader.hpp"
+#include "shockfield/analysis/point_frame_reader.hpp"
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/expression.hpp"
@@ -57,6 +59,14 @@ void parse_pair_table(const fs::path& file) {
 }
 
 void parse_data(const fs::path& file) { io::read_data(file); }
+
+void parse_point_frame(const fs::path& file) {
+  double sum = 0.0;
+  const analysis::PointFrame frame = analysis::read_point_frame(file.string(), "radius");  // the fixtures' grains
+  for (const double v : frame.xyz) sum += v;
+  for (const double v : frame.values) sum += v;
+  if (!std::isfinite(sum)) throw InputError(fmt::format("{}: the reader returned a non-finite coordinate", file.string()));
+}
 
 void parse_points(const fs::path& file) {
   if (file.extension() == ".txt") geometry::read_points<2>(file);

@@ -19,6 +19,9 @@ void parse_eam(const std::filesystem::path& file);
 void parse_pair_table(const std::filesystem::path& file);
 /// A LAMMPS data file, periodic in x, y and z.
 void parse_data(const std::filesystem::path& file);
+/// A particle frame (.vtp, .pvtp: `analyze geometry`, `analyze stats --bin-size`) with its point
+/// array `radius`, every value touched.
+void parse_point_frame(const std::filesystem::path& file);
 /// A point set (`analyze geometry`): 2D for a .txt file, else 3D.
 void parse_points(const std::filesystem::path& file);
 /// A case file: the TOML, then the case reader of its method where it needs no simulation

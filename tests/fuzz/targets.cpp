@@ -170,6 +170,13 @@ std::vector<fs::path> field_inputs(const Context& c) {
 // A parallel image (.pvti): the summary is mutated, its piece folder linked next to the mutant.
 std::vector<fs::path> pvti_inputs(const Context& c) { return {c.source / "tests/fixtures/fuzz/inputs/pvti/grid.pvti"}; }
 
+// Particle frames (.vtp) written by the output layer (ascii, zlib Float32), and a .pvtp of two
+// pieces (its piece folder linked next to the mutant).
+std::vector<fs::path> vtp_inputs(const Context& c) {
+  const fs::path dir = c.source / "tests/fixtures/fuzz/inputs/vtp";
+  return {dir / "grains_ascii.vtp", dir / "grains_zlib.vtp", dir / "grains.pvtp"};
+}
+
 std::vector<fs::path> point_inputs(const Context& c) {
   std::vector<fs::path> points;
   for (const char* f : {"cube.csv", "pairs.txt", "tet.xyz", "atoms.dump"})
@@ -227,6 +234,7 @@ std::vector<Target> parser_targets(const Context& c) {
           in_process(c, "field", field_inputs(c), parse_field),
           in_process(c, "pvti", pvti_inputs(c), parse_field, false, true),
           in_process(c, "points", point_inputs(c), parse_points),
+          in_process(c, "vtp", vtp_inputs(c), parse_point_frame, false, true),
           in_process(c, "checkpoint", {c.source / "tests/fixtures/fuzz/inputs/checkpoint/checkpoint.h5"},
                      parse_checkpoint, true),
           in_process(c, "pd_cloud", pd_cloud_inputs(c), parse_pd_cloud),
@@ -264,6 +272,7 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
   t.push_back(in_process(c, "extxyz", extxyz_inputs(c), parse_extxyz));
   t.push_back(in_process(c, "field", field_inputs(c), parse_field));
   t.push_back(in_process(c, "pvti", pvti_inputs(c), parse_field, false, true));
+  t.push_back(in_process(c, "vtp", vtp_inputs(c), parse_point_frame, false, true));
   t.push_back({"points", point_inputs(c), false, false, "",
                [c](const fs::path& file, const fs::path& work) { return analyze_geometry(c, file, work); }});
   const auto atoms = [c](const fs::path& file, const fs::path& work) { return analyze_atoms(c, file, work); };

@@ -33,11 +33,14 @@ def write_csv_field(path, field):
 
 
 def cli_table(*args):
+    """The CLI's table, its columns under the Python API's names: a CSV grid that names no unit
+    gives columns ending in `_unknown` (docs/conventions.md), the numpy results carry no unit."""
     with tempfile.TemporaryDirectory() as out:
         subprocess.run([SF, "analyze", *args, "--no-plot", "-o", out], check=True, capture_output=True)
         name = {"minkowski": "minkowski.csv", "stats": "stats.csv", "similarity": "similarity.csv"}[args[0]]
         with open(pathlib.Path(out) / name) as f:
-            return list(csv.DictReader(line for line in f if not line.startswith("#")))
+            rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+        return [{key.removesuffix("_unknown"): value for key, value in row.items()} for row in rows]
 
 
 def close(a, b, rel=1e-9):

@@ -156,6 +156,11 @@ GridField read_csv(const std::string& path, const std::string& text) {
         std::getline(c, rest);
         f.spacing.fill(finite_number(trim(rest), where));
       }
+      if (key == "units" || key == "length_units") {
+        std::string unit;
+        c >> unit;
+        (key == "units" ? f.units : f.length_units) = unit;
+      }
       if (key == "origin")
         for (auto& o : f.origin)
           o = finite_number(
@@ -290,6 +295,7 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
     check_extent(e, "Piece Extent");
   }
   GridField f;
+  f.length_units = xml_attribute(tag, "length_units");
   for (const auto& [key, values] : {std::pair{"Origin", &f.origin}, {"Spacing", &f.spacing}}) {
     const std::string given = xml_attribute(tag, key);
     Tokens t(given, path, line_at(text, image));
@@ -307,6 +313,7 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
     if (!scalar)
       throw InputError(
           fmt::format("{}: DataArray '{}' has {} components; expected 1", where(pos), name, nc));
+    f.units = xml_attribute(da, "units");
     const auto cell_pos = markup.rfind("<CellData", pos),
                point_pos = markup.rfind("<PointData", pos);
     const bool cell =
@@ -358,6 +365,9 @@ std::vector<SeriesEntry> read_pvd(const std::filesystem::path& pvd) {
   if (!in) throw InputError(fmt::format("{}: cannot open", pvd.string()));
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::vector<SeriesEntry> out;
+  const auto collection = text.find("<Collection");
+  const std::string time_units =
+      collection == std::string::npos ? "" : xml_attribute(std::string_view(text).substr(collection, text.find('>', collection) - collection), "time_units");
   for (auto pos = text.find("<DataSet"); pos != std::string::npos;
        pos = text.find("<DataSet", pos + 1)) {
     const std::string tag = text.substr(pos, text.find('>', pos) - pos);
@@ -365,7 +375,7 @@ std::vector<SeriesEntry> read_pvd(const std::filesystem::path& pvd) {
     const std::string file = xml_attribute(tag, "file"), time = xml_attribute(tag, "timestep");
     if (file.empty()) throw InputError(fmt::format("{}: <DataSet> without a file", where));
     out.push_back({time.empty() ? double(out.size()) : finite_number(time, where),
-                   (pvd.parent_path() / file).string()});
+                   (pvd.parent_path() / file).string(), time_units});
   }
   if (out.empty()) throw InputError(fmt::format("{}: no <DataSet> entries", pvd.string()));
   std::stable_sort(out.begin(), out.end(), [](auto& a, auto& b) { return a.time < b.time; });

@@ -20,6 +20,8 @@ struct GridGeometry {
   std::array<double, 3> spacing{1.0, 1.0, 1.0};  ///< grid step along x, y, z
   std::array<double, 3> origin{0.0, 0.0, 0.0};   ///< position of cell (0, 0, 0)
   bool single_layer_3d = false;  ///< nz = 1 but a 3D grid (one layer of voxels): dimension() 3
+  /// The unit of spacing and origin as the file names it ("m", "A", "1"); empty: not named.
+  std::string length_units{};
 
   std::size_t size() const { return n[0] * n[1] * n[2]; }
   int dimension() const { return n[2] > 1 || single_layer_3d ? 3 : 2; }
@@ -42,6 +44,7 @@ struct GridFieldView : GridGeometry {
 /// A field that owns its values. It converts to a GridFieldView, so every analysis accepts it.
 struct GridField : GridGeometry {
   std::vector<double> values;         ///< n[0] * n[1] * n[2] values
+  std::string units{};                ///< the values' unit as the file names it ("Pa", "1"); empty: not named
   std::vector<std::uint8_t> is_void;  ///< empty (no void cells) or one flag per cell
 
   /// A field of nx × ny × nz cells, all equal to `value`.

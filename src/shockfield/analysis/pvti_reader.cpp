@@ -49,7 +49,7 @@ GridField read_pvti(const std::string& path, const std::string& text, const std:
   const std::string_view tag = std::string_view(text).substr(image, text.find('>', image) - image);
   const std::array<long long, 6> whole = parse_extent(xml_attribute(tag, "WholeExtent"), path + " WholeExtent");
   // The array: the one named, else the first of one component, as in a .vti.
-  std::string name;
+  std::string name, units;
   bool cell = false;
   for (auto pos = text.find("<PDataArray", image); pos != std::string::npos && name.empty();
        pos = text.find("<PDataArray", pos + 1)) {
@@ -57,6 +57,7 @@ GridField read_pvti(const std::string& path, const std::string& text, const std:
     const std::string components = xml_attribute(da, "NumberOfComponents");
     if (array.empty() ? (components.empty() || components == "1") : xml_attribute(da, "Name") == array) {
       name = xml_attribute(da, "Name");
+      units = xml_attribute(da, "units");
       const auto cell_pos = text.rfind("<PCellData", pos), point_pos = text.rfind("<PPointData", pos);
       cell = cell_pos != std::string::npos && cell_pos > image && (point_pos == std::string::npos || cell_pos > point_pos);
     }
@@ -70,6 +71,8 @@ GridField read_pvti(const std::string& path, const std::string& text, const std:
     return cell ? std::max<std::size_t>(points, 2) - 1 : points;
   };
   GridField f;
+  f.units = units;
+  f.length_units = xml_attribute(tag, "length_units");
   for (std::size_t a = 0; a < 3; ++a) f.n[a] = size(whole, a);
   parse_triple(xml_attribute(tag, "Origin"), f.origin, path + " Origin");
   parse_triple(xml_attribute(tag, "Spacing"), f.spacing, path + " Spacing");

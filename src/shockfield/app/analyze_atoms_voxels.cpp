@@ -32,6 +32,7 @@ void VoxelOutput::add(const analysis::atoms::AtomFrame& frame, const std::vector
   image.points = last_.n;
   image.origin = last_.origin;
   image.spacing = {last_.spacing, last_.spacing, last_.spacing};
+  image.length_units = "A";
   image.point_data.push_back({"fraction", 1, last_.fraction, "1"});
   image.point_data.push_back({"density", 1, last_.density, "1/A^3"});
   io::write_vti(add_file_(fmt::format("voxels_{}.vti", frame.timestep)), image, io::VtkFormat(io::VtkEncoding::Zlib));

@@ -1,24 +1,30 @@
 // `shockfield analyze minkowski|similarity|stats`: morphology and statistics of grid fields
 // (Xu et al. 2015, §3.1, §4.1.2). Reads CSV grids and VTK image data (analysis/field_reader.hpp), writes
 // CSV and, for minkowski and similarity, a PNG through shockfield_plot (app/python_helpers.hpp;
-// skipped with a warning when that fails). Docs: docs/analysis-minkowski.md.
+// skipped with a warning when that fails). Column names carry the input's units (the array's
+// `units`, the grid's `length_units`, the .pvd's `time_units`; core/unit_names, docs/conventions.md).
+// Docs: docs/analysis-minkowski.md.
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <tuple>
 
 #include "shockfield/analysis/field_reader.hpp"
 #include "shockfield/analysis/field_statistics.hpp"
 #include "shockfield/analysis/minkowski.hpp"
+#include "shockfield/analysis/particle_binning.hpp"
 #include "shockfield/analysis/similarity.hpp"
 #include "shockfield/analysis/spectral_statistics.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/app/python_helpers.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/unit_names.hpp"
 #include "shockfield/io/checked_file.hpp"
 
 namespace shockfield::app {
@@ -30,7 +36,9 @@ namespace fs = std::filesystem;
 struct Common {
   std::vector<std::string> files;
   std::vector<double> times;
+  std::string time_units;  // empty: the .pvd's time_units
   std::string array;
+  double bin_size = 0.0;  // particle frames: the side of the cells they are binned on
   std::string output = "analysis";
   int threads = 0;
   int dimension = 0;  // 0: from the grid (3D when it has more than one z layer)
@@ -49,7 +57,8 @@ const char* kFormats =
     "`void` marks a void cell, `# spacing = h`), .vtk (legacy ASCII STRUCTURED_POINTS), .vti "
     "(XML ImageData: ascii, binary or appended raw/base64, uncompressed or zlib), .pvti (its parallel "
     "pieces); a .pvd series or a run folder with one .pvd of .vti or .pvti fields stands for its fields "
-    "at its times. See "
+    "at its times. Particle frames (.vtp, .pvtp, a .pvd of them) are binned with --bin-size H and --array "
+    "NAME. See "
     "docs/analysis-minkowski.md.";
 
 void add_common(CLI::App* cmd, Common& c, const char* files_help) {
@@ -58,11 +67,18 @@ void add_common(CLI::App* cmd, Common& c, const char* files_help) {
                   "Time of each field, in order (default: the .pvd's times, else 0, 1, 2, ...); "
                   "strictly increasing")
       ->delimiter(',');
+  cmd->add_option("--time-units", c.time_units,
+                  "Unit of the times, named in the time column (time_s, time_ps; default: the "
+                  ".pvd's time_units, else 'unknown')");
   cmd->add_option("--dimension", c.dimension,
                   "2 or 3 (default: 3 when the grid has more than one z layer); 3 analyses a grid "
                   "of a single z layer as one layer of voxels")
       ->check(CLI::IsMember({2, 3}));
   cmd->add_option("--array", c.array, "Data array to read from VTK files (default: the first)");
+  cmd->add_option("--bin-size", c.bin_size,
+                  "Particle frames (.vtp, .pvtp, a .pvd of them: MPM, PD, granular, macroparticle): bin "
+                  "--array's values (mean per cell; empty cells void) on cubic cells of this side, in the "
+                  "frames' length unit, one grid over every frame's particles");
   cmd->add_option("-o,--output", c.output, "Output folder (created if missing)")
       ->capture_default_str();
   cmd->add_option("-j,--threads", c.threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
@@ -91,12 +107,28 @@ void add_morphology(CLI::App* cmd, Morphology& m) {
       ->check(CLI::IsMember({6, 26}));
 }
 
-// The inputs: field files, with .pvd series and run folders expanded into their fields.
+// The inputs: field files, with .pvd series and run folders expanded into their fields, and the
+// units their columns name (empty: the input does not say).
 struct Inputs {
   std::vector<std::string> files;
   std::vector<double> times;
   std::vector<sa::GridField> fields;
+  std::string time_units;
+
+  const std::string& units() const { return fields.front().units; }
+  const std::string& length_units() const { return fields.front().length_units; }
+  std::string time_column() const { return units::column_name("time", time_units); }
 };
+
+// Every field of one analysis in the same units: a table names one unit per column.
+void require_same_units(const sa::GridField& a, const sa::GridField& b, const std::string& file_a,
+                        const std::string& file_b) {
+  for (const auto& [what, ua, ub] : {std::tuple{"units", &a.units, &b.units},
+                                     std::tuple{"length_units", &a.length_units, &b.length_units}})
+    if (*ua != *ub)
+      throw InputError(fmt::format("{}: {} '{}' but {} has '{}'; expected every field in the same units", file_b,
+                                   what, *ub, file_a, *ua));
+}
 
 // Times: --times, else the series' times (every input a series), else 0, 1, 2, ...; as many as
 // fields, finite and strictly increasing.
@@ -128,22 +160,48 @@ Inputs read_all(const Common& c, const std::vector<std::string>& paths, const ch
   if (paths.empty()) throw InputError(fmt::format("analyze: no {} field files given", role));
   Inputs in;
   std::vector<double> series_times;
+  std::vector<std::string> series_units;
   for (const auto& p : paths) {
     if (fs::is_directory(p) || fs::path(p).extension() == ".pvd") {
       for (const auto& e : sa::read_series(p))
-        in.files.push_back(e.file), series_times.push_back(e.time);
+        in.files.push_back(e.file), series_times.push_back(e.time), series_units.push_back(e.time_units);
     } else {
       in.files.push_back(p);
     }
   }
   in.times = times_of(c, in.files, series_times, role);
-  for (const auto& f : in.files) {
-    auto& field = in.fields.emplace_back(sa::read_grid_field(f, c.array));
+  const bool one_series_unit = series_units.size() == in.files.size() &&
+                               std::all_of(series_units.begin(), series_units.end(),
+                                           [&](const std::string& u) { return u == series_units.front(); });
+  in.time_units = !c.time_units.empty() ? c.time_units
+                  : c.times.empty() && one_series_unit ? series_units.front() : "";
+  const auto is_frame = [](const std::string& f) {
+    const auto ext = fs::path(f).extension();
+    return ext == ".vtp" || ext == ".pvtp";
+  };
+  const auto frames = std::count_if(in.files.begin(), in.files.end(), is_frame);
+  if (frames > 0 && frames < static_cast<std::ptrdiff_t>(in.files.size()))
+    throw InputError(fmt::format("{} fields: particle frames (.vtp, .pvtp) mixed with grids; give one kind", role));
+  if (frames > 0 && (c.bin_size <= 0.0 || c.array.empty()))
+    throw InputError(fmt::format("{}: a particle frame; give --bin-size H (the cell side, in the frame's length "
+                                 "unit) and --array NAME (the point array to bin)", in.files.front()));
+  if (frames == 0 && c.bin_size > 0.0)
+    throw InputError(fmt::format("--bin-size bins particle frames (.vtp, .pvtp); {} is a grid", in.files.front()));
+  if (frames > 0) in.fields = sa::bin_point_frames(in.files, c.array, c.bin_size);
+  for (std::size_t k = 0; k < in.files.size(); ++k) {
+    const std::string& f = in.files[k];
+    auto& field = frames > 0 ? in.fields[k] : in.fields.emplace_back(sa::read_grid_field(f, c.array));
     if (c.dimension == 2 && field.n[2] > 1)
       throw InputError(
           fmt::format("{}: {} z layers; --dimension 2 needs a single layer", f, field.n[2]));
     field.single_layer_3d = c.dimension == 3;
     sa::require_same_grid(in.fields.front(), field, in.files.front(), f);
+    require_same_units(in.fields.front(), field, in.files.front(), f);
+  }
+  try {  // a unit the column names cannot spell stops here, naming the file
+    (void)units::column_suffix(in.units()), (void)units::column_suffix(in.length_units()), (void)in.time_column();
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", in.files.front(), e.what()));
   }
   return in;
 }
@@ -175,7 +233,10 @@ Table functionals(const std::vector<sa::GridField>& fields, std::span<const doub
                   const sa::MinkowskiOptions& o) {
   Table t;
   const bool three = fields.front().dimension() == 3;
-  t.header = three ? "V,S,b,M,chi,chi_per_black" : "A,L,chi,chi_per_black";
+  const std::string& length = fields.front().length_units;
+  t.header = three ? fmt::format("V,{},{},{},chi,chi_per_black", units::column_name("S", length, 2),
+                                 units::column_name("b", length), units::column_name("M", length))
+                   : fmt::format("A,{},chi,chi_per_black", units::column_name("L", length));
   for (const auto& f : fields) {
     auto& rows = t.rows.emplace_back();
     auto& points = t.points.emplace_back();
@@ -220,7 +281,7 @@ void run_minkowski(const Common& c, const Morphology& m) {
   const auto thresholds = thresholds_of(m, in.fields);
   const Table t = functionals(in.fields, thresholds, options_of(m));
   auto out = open_output(c, "minkowski.csv");
-  out << "file,time,threshold," << t.header << "\n";
+  out << "file," << in.time_column() << "," << units::column_name("threshold", in.units()) << "," << t.header << "\n";
   for (std::size_t i = 0; i < in.fields.size(); ++i)
     for (const auto& row : t.rows[i])
       out << in.files[i] << "," << in.times[i] << "," << row << "\n";
@@ -267,7 +328,7 @@ void run_similarity(const Common& c, const Morphology& m, const SimilarityArgs& 
   auto out = open_output(c, "similarity.csv");
   out << "# reference threshold " << s.reference_threshold << ", interval [" << t1 << ", " << t2
       << "], best candidate threshold " << match.threshold << " (d_P = " << match.distance << ")\n";
-  out << "candidate,threshold,d_P,S_D\n";
+  out << "candidate," << units::column_name("threshold", in.units()) << ",d_P,S_D\n";
   for (std::size_t k = 0; k < thresholds.size(); ++k)
     out << "c," << thresholds[k] << "," << match.distances[k] << ","
         << (match.distances[k] > 0 ? 1.0 / match.distances[k] : INFINITY) << "\n";
@@ -292,10 +353,14 @@ void run_stats(const Common& c, std::size_t bins) {
   auto hist = open_output(c, "histogram.csv");
   auto sk = open_output(c, "structure_factor.csv");
   auto corr = open_output(c, "correlation.csv");
-  stats << "file,time,cells,void_cells,mean,std,skewness,kurtosis,domain_size_R\n";
-  hist << "file,time,lo,hi,count\n";
-  sk << "file,time,k,S,shell_points\n";
-  corr << "file,time,r,C,shell_points\n";
+  using units::column_name;
+  const std::string time = in.time_column(), &u = in.units(), &length = in.length_units();
+  stats << fmt::format("file,{},cells,void_cells,{},{},skewness,kurtosis,{}\n", time, column_name("mean", u),
+                       column_name("std", u), column_name("domain_size_R", length));
+  hist << fmt::format("file,{},{},{},count\n", time, column_name("lo", u), column_name("hi", u));
+  // S(k) = |Σ δΘ e^{−ik·x}|² / N carries the values' unit squared; k is a reciprocal length.
+  sk << fmt::format("file,{},{},{},shell_points\n", time, column_name("k", length, -1), column_name("S", u, 2));
+  corr << fmt::format("file,{},{},C,shell_points\n", time, column_name("r", length));
   for (std::size_t i = 0; i < fields.size(); ++i) {
     const auto& f = fields[i];
     const auto m = sa::moments(f);

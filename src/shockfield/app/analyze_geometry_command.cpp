@@ -1,6 +1,6 @@
 // `shockfield analyze geometry`: the Delaunay division and clusters of a point set (Xu et al.
-// 2015 §3.2.3) from a CSV/XYZ file or a LAMMPS dump, and its rolling-ball or packing-sculpting
-// surface. Writes OUTPUT/delaunay.vtu (ParaView), OUTPUT/clusters.csv, OUTPUT/surface.vtp and
+// 2015 §3.2.3) from a CSV/XYZ file, a LAMMPS dump or a particle frame (.vtp, .pvtp, a .pvd of
+// them: analysis/point_frame_reader), and its rolling-ball or packing-sculpting surface. Writes OUTPUT/delaunay.vtu (ParaView), OUTPUT/clusters.csv, OUTPUT/surface.vtp and
 // OUTPUT/summary.txt. Docs: docs/geometry-giso.md.
 #include <fmt/format.h>
 
@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 
+#include "shockfield/analysis/field_reader.hpp"
+#include "shockfield/analysis/point_frame_reader.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/delaunay.hpp"
@@ -37,9 +39,34 @@ struct GeometryArgs {
   bool no_mesh = false;
 };
 
+// The points of the input and their unit ("1" when the file does not say: CSV, XYZ; a LAMMPS dump
+// names none either). A particle frame (.vtp, .pvtp) gives its Points' units; a .pvd its frame
+// number `frame` (0-based, −1 the last) in time order.
+template <int N>
+std::pair<std::vector<std::array<double, N>>, std::string> input_points(const GeometryArgs& a) {
+  const std::string ext = fs::path(a.input).extension().string();
+  if (ext != ".vtp" && ext != ".pvtp" && ext != ".pvd") return {sg::read_points<N>(a.input, a.frame), "1"};
+  std::string file = a.input;
+  if (ext == ".pvd") {
+    const auto series = analysis::read_series(a.input);
+    const long long k = a.frame < 0 ? static_cast<long long>(series.size()) + a.frame : a.frame;
+    if (k < 0 || k >= static_cast<long long>(series.size()))
+      throw InputError(fmt::format("{}: --frame {}; the series has {} frames (0 … {}, or −1 for the last)", a.input,
+                                   a.frame, series.size(), series.size() - 1));
+    file = series[static_cast<std::size_t>(k)].file;
+    if (const std::string e = fs::path(file).extension().string(); e != ".vtp" && e != ".pvtp")
+      throw InputError(fmt::format("{}: its frames are {} files; expected particle frames (.vtp, .pvtp)", a.input, e));
+  }
+  const analysis::PointFrame frame = analysis::read_point_frame(file);
+  std::vector<std::array<double, N>> points(frame.xyz.size() / 3);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int d = 0; d < N; ++d) points[i][static_cast<std::size_t>(d)] = frame.xyz[3 * i + static_cast<std::size_t>(d)];
+  return {std::move(points), frame.position_units.empty() ? "1" : frame.position_units};
+}
+
 template <int N>
 void run_geometry(const GeometryArgs& a) {
-  auto points = sg::read_points<N>(a.input, a.frame);
+  auto [points, units] = input_points<N>(a);
   const auto division = sg::delaunay_division<N>(std::move(points), a.input);
   if (a.check) {
     if (const std::string e = sg::check_delaunay<N>(division); !e.empty())
@@ -68,7 +95,7 @@ void run_geometry(const GeometryArgs& a) {
   sg::PointArrays arrays;
   for (const auto& [name, c] : clusterings)
     arrays.emplace_back(name, std::vector<double>(c.label.begin(), c.label.end()));
-  if (!a.no_mesh) sg::write_delaunay_vtu<N>(out / "delaunay.vtu", division, arrays, "1");  // the input's unit
+  if (!a.no_mesh) sg::write_delaunay_vtu<N>(out / "delaunay.vtu", division, arrays, units);
   std::vector<std::pair<std::string, const sg::PointClusters*>> refs;
   for (const auto& [name, c] : clusterings) refs.emplace_back(name, &c);
   if (!clusterings.empty()) sg::write_clusters_csv<N>(out / "clusters.csv", division, refs);
@@ -78,7 +105,7 @@ void run_geometry(const GeometryArgs& a) {
       sg::total_volume<N>(division));
   if (a.check) summary += "check passed\n";
   if (surface) {
-    sg::write_surface_vtp(out / "surface.vtp", surface->points, surface->triangles, "1");  // the input's unit
+    sg::write_surface_vtp(out / "surface.vtp", surface->points, surface->triangles, units);
     summary += fmt::format(
         "surface_triangles {}\nsurface_area {:.12g}\nsurface_volume {:.12g}\n"
         "surface_euler_characteristic {}\nsurface_manifold {}\n",
@@ -111,9 +138,10 @@ void add_analyze_geometry_command(CLI::App& analyze) {
       "OUTPUT/clusters.csv (index, coordinates, one label column per rule) when\n"
       "--cluster-distance is given, OUTPUT/surface.vtp with --ball-radius (rolling-ball\n"
       "surface) or --sculpt-depth (packing-sculpting surface), and OUTPUT/summary.txt.\n"
-      "Input: CSV/text (x,y[,z] by header name or the first columns), .xyz (count, comment, 'species x y z' lines) or a LAMMPS text\n"
-      "dump. See docs/geometry-giso.md.");
-  cmd->add_option("points", a->input, "Point file (.csv/.txt, .xyz, or a LAMMPS dump)")
+      "Input: CSV/text (x,y[,z] by header name or the first columns), .xyz (count, comment, 'species x y z' lines), a LAMMPS text\n"
+      "dump, or a particle frame of a run (.vtp, .pvtp, or a .pvd of them with --frame: MPM, PD, granular,\n"
+      "macroparticle; the outputs then carry its points' units). See docs/geometry-giso.md.");
+  cmd->add_option("points", a->input, "Point file (.csv/.txt, .xyz, a LAMMPS dump, .vtp, .pvtp or a .pvd of them)")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", a->output, "Output folder (created if missing)")
@@ -121,7 +149,7 @@ void add_analyze_geometry_command(CLI::App& analyze) {
   cmd->add_option("--dimension", a->dimension, "2 (x, y) or 3 (x, y, z)")
       ->capture_default_str()
       ->check(CLI::IsMember({2, 3}));
-  cmd->add_option("--frame", a->frame, "Frame of a LAMMPS dump, 0-based; -1 = the last")
+  cmd->add_option("--frame", a->frame, "Frame of a LAMMPS dump or a .pvd, 0-based; -1 = the last")
       ->capture_default_str();
   cmd->add_option("-d,--cluster-distance", a->cluster_distance,
                   "Critical distance d of the clusters (same length unit as the points); "

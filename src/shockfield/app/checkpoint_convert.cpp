@@ -173,6 +173,7 @@ void write_dbm_grid(const io::CheckpointReader& checkpoint, const fs::path& out,
       for (int i = 0; i < l.nx; ++i) reactant.push_back(phi[l.at(i, j)]);
     img.cell_data.push_back({"reactant", 1, std::move(reactant), "1"});
   }
+  img.length_units = "1";  // lattice units
   io::write_vti(out, img, vtk);
 }
 
@@ -184,6 +185,7 @@ void write_phasefield_grid(const io::CheckpointReader& checkpoint, const fs::pat
   const double dx = h5.attribute("dx");
   img.points = {shape[2], shape[1], shape[0]};
   img.spacing = {dx, dx, dx};
+  img.length_units = "1";  // model units
   img.point_data.push_back({"xi", 1, h5.read_doubles("xi"), h5.units("xi")});
   io::write_vti(out, img, vtk);
 }

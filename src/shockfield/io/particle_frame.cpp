@@ -67,7 +67,7 @@ ParticleOutput::ParticleOutput(const std::filesystem::path& run, const std::file
     : run_(run), folder_(folder), stem_(std::move(stem)), vtk_(vtk), dumps_(dumps), pad_(pad) {
   std::filesystem::create_directories(folder_);
   if (dumps_) std::filesystem::create_directories(run_ / "dumps");
-  pvd_ = PvdSeries(folder_ / (stem_ + ".pvd"), resume_time);
+  pvd_ = PvdSeries(folder_ / (stem_ + ".pvd"), resume_time, "s");  // SI frames (pd, granular)
 }
 
 void ParticleOutput::write(const ParticleFrame& frame, std::int64_t index) {

@@ -33,7 +33,8 @@ DumpFrame particle_dump_frame(const ParticleFrame& frame);
 /// Writes frames as `<folder>/<stem>_<k>.vtp` indexed by `<folder>/<stem>.pvd` and, with `dumps`,
 /// `<run>/dumps/dump.<step>.lammpstrj` (the step zero-padded to `pad` digits, as MD names its
 /// dumps, so `shockfield analyze atoms <run>` reads them), values printed in the shortest text that
-/// reads back to the same double. A resumed run (resume_time) keeps the .pvd entries up to it.
+/// reads back to the same double. A resumed run (resume_time) keeps the .pvd entries up to it; the
+/// .pvd names its times' unit, time_units="s".
 class ParticleOutput {
  public:
   ParticleOutput() = default;

@@ -105,6 +105,7 @@ VtkImage image_piece(const VtkImage& image, const VtkExtent& extent) {
   piece.points = size;
   piece.origin = image.origin;
   piece.spacing = image.spacing;
+  piece.length_units = image.length_units;
   piece.point_data = arrays_in_box(image.point_data, image.points, extent.lo, size);
   piece.cell_data = arrays_in_box(image.cell_data, cell_dims, cell_lo, cell_size);
   if (!image.hidden_points.empty()) piece.hidden_points = copy_box(image.hidden_points, image.points, 1, extent.lo, size);
@@ -126,10 +127,10 @@ std::string write_image_frame(const fs::path& folder, const std::string& name, c
   std::string text = fmt::format(
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"PImageData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-      "  <PImageData WholeExtent=\"{}\" GhostLevel=\"0\" Origin=\"{} {} {}\" Spacing=\"{} {} {}\">\n"
+      "  <PImageData WholeExtent=\"{}\" GhostLevel=\"0\" Origin=\"{} {} {}\" Spacing=\"{} {} {}\"{}>\n"
       "    <PPointData>\n",
       whole.text(), image.origin[0], image.origin[1], image.origin[2], image.spacing[0], image.spacing[1],
-      image.spacing[2]);
+      image.spacing[2], length_units_attribute(image));
   text += declare_arrays(image.point_data, format.precision);
   if (!image.hidden_points.empty())
     text += "      <PDataArray type=\"UInt8\" Name=\"vtkGhostType\" NumberOfComponents=\"1\"/>\n";

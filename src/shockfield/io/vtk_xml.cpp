@@ -129,6 +129,10 @@ std::string base64(const unsigned char* data, std::size_t size) {
   return out;
 }
 
+std::string length_units_attribute(const VtkImage& image) {
+  return image.length_units.empty() ? "" : fmt::format(" length_units=\"{}\"", image.length_units);
+}
+
 const char* real_type(VtkPrecision precision) { return precision == VtkPrecision::Float64 ? "Float64" : "Float32"; }
 
 const char* data_array_type(const VtkArray& a, VtkPrecision precision) {
@@ -162,9 +166,9 @@ void write_vti_piece(const std::filesystem::path& file, const VtkImage& image, V
   require_array_lengths(file, image.point_data, n[0] * n[1] * n[2], image.cell_data, cells);
   out << "<?xml version=\"1.0\"?>\n"
       << arrays.file_tag("ImageData")
-      << fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{} {} {}\" Spacing=\"{} {} {}\">\n",
+      << fmt::format("  <ImageData WholeExtent=\"{}\" Origin=\"{} {} {}\" Spacing=\"{} {} {}\"{}>\n",
                      whole.text(), image.origin[0], image.origin[1], image.origin[2], image.spacing[0], image.spacing[1],
-                     image.spacing[2])
+                     image.spacing[2], length_units_attribute(image))
       << fmt::format("    <Piece Extent=\"{}\">\n", piece.text()) << "      <PointData>\n";
   for (const VtkArray& a : image.point_data) arrays.data(a);
   if (!image.hidden_points.empty()) {
@@ -264,7 +268,8 @@ void write_vtu(const std::filesystem::path& file, const VtkCells& mesh, VtkForma
   arrays.write(file);
 }
 
-PvdSeries::PvdSeries(std::filesystem::path file, const double* keep_until) : file_(std::move(file)) {
+PvdSeries::PvdSeries(std::filesystem::path file, const double* keep_until, std::string time_units)
+    : file_(std::move(file)), time_units_(std::move(time_units)) {
   if (keep_until && std::filesystem::exists(file_)) {
     std::ifstream in(file_);
     const std::regex entry(R"re(timestep="([^"]+)".*file="([^"]+)")re");
@@ -283,7 +288,8 @@ void PvdSeries::add(double time, const std::string& data_file) {
 }
 
 void PvdSeries::write() const {
-  std::string text = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\">\n  <Collection>\n";
+  std::string text = fmt::format("<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\">\n  <Collection{}>\n",
+                                 time_units_.empty() ? "" : fmt::format(" time_units=\"{}\"", time_units_));
   for (const auto& [t, f] : entries_)
     text += fmt::format("    <DataSet timestep=\"{}\" part=\"0\" file=\"{}\"/>\n", t, f);
   text += "  </Collection>\n</VTKFile>\n";

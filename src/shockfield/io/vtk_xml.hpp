@@ -58,6 +58,10 @@ struct VtkImage {
   std::array<std::size_t, 3> points{1, 1, 1};
   std::array<double, 3> origin{0, 0, 0};
   std::array<double, 3> spacing{1, 1, 1};
+  /// The unit of origin and spacing ("m", "A", "1" for model units), written as the ImageData's
+  /// (PImageData's) attribute length_units="…" (VTK ignores it; `shockfield analyze` names its
+  /// columns by it, docs/conventions.md); empty: not written.
+  std::string length_units{};
   std::vector<VtkArray> point_data;
   std::vector<VtkArray> cell_data{};
   /// Empty, or one flag per point: the points no material reaches. They are written as VTK's
@@ -69,6 +73,8 @@ struct VtkImage {
 
 /// The VTK type name of an array's values in a file of `precision`: Int32 (categorical), Float32 or Float64.
 const char* data_array_type(const VtkArray& a, VtkPrecision precision);
+/// ` length_units="…"` for an ImageData/PImageData tag, empty when the image names no length unit.
+std::string length_units_attribute(const VtkImage& image);
 /// The VTK type name of real values (positions) in `precision`.
 const char* real_type(VtkPrecision precision);
 
@@ -114,8 +120,10 @@ class PvdSeries {
  public:
   PvdSeries() = default;
   /// Starts the index at `file`; with `keep_until` (a resumed run) the existing entries with
-  /// timestep <= *keep_until are kept and the others dropped.
-  explicit PvdSeries(std::filesystem::path file, const double* keep_until = nullptr);
+  /// timestep <= *keep_until are kept and the others dropped. A non-empty `time_units` ("s", "ps",
+  /// "1") is written as the Collection's attribute time_units="…" (VTK ignores it; `shockfield
+  /// analyze` names its time column by it).
+  explicit PvdSeries(std::filesystem::path file, const double* keep_until = nullptr, std::string time_units = "");
   /// Adds a frame; `data_file` is written relative to the .pvd's folder.
   void add(double time, const std::string& data_file);
   std::size_t size() const { return entries_.size(); }
@@ -123,6 +131,7 @@ class PvdSeries {
  private:
   void write() const;
   std::filesystem::path file_;
+  std::string time_units_;
   std::vector<std::pair<double, std::string>> entries_;
 };
 

@@ -33,7 +33,7 @@ RodOutputs::RodOutputs(const fs::path& folder, const OutputSpec& spec, std::opti
   if (spec.vtk_every > 0) {
     fs::create_directories(folder / "particles");
     const double keep = resume_step ? static_cast<double>(*resume_step) : 0.0;
-    pvd_ = io::PvdSeries(folder / "particles.pvd", resume_step ? &keep : nullptr);
+    pvd_ = io::PvdSeries(folder / "particles.pvd", resume_step ? &keep : nullptr, "s");
   }
   if (resume_step) {
     drop_frames_after(folder / "dumps", *resume_step);

@@ -38,8 +38,8 @@ RunOutput::RunOutput(const fs::path& folder, const MpmCase& c, std::optional<Cav
   if (c.output.field_interval > 0.0) {
     fs::create_directories(folder / "fields");
     const double* keep_time = resume ? &resume->time : nullptr;
-    grid_pvd_ = io::PvdSeries(folder / "grid.pvd", keep_time);
-    if (c.output.particles) particles_pvd_ = io::PvdSeries(folder / "particles.pvd", keep_time);
+    grid_pvd_ = io::PvdSeries(folder / "grid.pvd", keep_time, "s");
+    if (c.output.particles) particles_pvd_ = io::PvdSeries(folder / "particles.pvd", keep_time, "s");
   }
   if (!c.diagnostics.histogram_times.empty()) fs::create_directories(folder / "histograms");
 }
@@ -110,6 +110,7 @@ io::VtkImage grid_fields(const Simulation& sim) {
   const GridSpec& g = grid.spec();
   const Particles& p = sim.particles();
   io::VtkImage img;
+  img.length_units = "m";
   for (int a = 0; a < 3; ++a) {
     img.points[static_cast<std::size_t>(a)] = static_cast<std::size_t>(grid.nodes(a));
     img.origin[static_cast<std::size_t>(a)] = g.origin[a];

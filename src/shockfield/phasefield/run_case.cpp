@@ -142,7 +142,7 @@ class PhasefieldMethod final : public Method {
                              "long_axis_y", "long_axis_z", "center_x", "center_y", "center_z"},
                             resumed ? &keep_step : nullptr);
     fs::create_directories(run.folder / "fields");
-    pvd_ = io::PvdSeries(run.folder / "fields.pvd", resumed ? &keep_time : nullptr);
+    pvd_ = io::PvdSeries(run.folder / "fields.pvd", resumed ? &keep_time : nullptr, "1");
     if (!finished())
       run.log.info("running to t = {} in {} steps of dt = {} ({} scheme; explicit limit {:.4g}; c0 = {:.6g})",
                    c_.end_time, c_.steps, c_.dt, scheme_name(c_.scheme), explicit_step_limit(c_.grid, c_.model),
@@ -180,6 +180,7 @@ class PhasefieldMethod final : public Method {
 void write_xi_frame(const fs::path& folder, const Grid& grid, const std::vector<double>& xi, std::int64_t k,
                     const io::VtkFormat& format, double time, io::PvdSeries& pvd) {
   io::VtkImage image;
+  image.length_units = "1";  // model units
   for (int d = 0; d < 3; ++d) {
     image.points[d] = static_cast<std::size_t>(grid.n[d]);
     image.spacing[d] = grid.dx;

@@ -170,7 +170,7 @@ class SharpFrontMethod final : public Method {
                                "area", "volume", "atomic_volume"},
                               resumed ? &keep_step : nullptr);
     fs::create_directories(run.folder / "fields");
-    pvd_ = io::PvdSeries(run.folder / "fields.pvd", resumed ? &keep_time : nullptr);
+    pvd_ = io::PvdSeries(run.folder / "fields.pvd", resumed ? &keep_time : nullptr, "1");
     if (!finished())
       run.log.info("running to t = {} in {} steps of dt = {} (sharp front, law {}: dR/dt = c0 {} {} D/R; fixed radius {:.6g})",
                    c_.end_time, c_.steps, c_.dt, front_law_name(c_.law.law), c_.law.sign() > 0 ? "+" : "-",

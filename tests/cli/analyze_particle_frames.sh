@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# `shockfield analyze` on a run's particle frames (analysis/point_frame_reader). Geometry: the last
+# MPM particle frame as a .vtp, through its .pvd (--frame -1), and as a .pvtp of three pieces gives
+# the Delaunay division (2D: the particles' x, y) that the same points give as a CSV file written by
+# the Python reader (shockfield.vtk_arrays, numpy only: a peer reader of the same file); the
+# outputs carry the frame's position unit (units="m"); a .pvd of grid frames and a frame beyond the
+# series are refused (exit 2). Fields: `analyze stats --bin-size` bins the frames' pressure on one
+# grid and gets per frame the void cells, mean and std that numpy gets binning the same points
+# (read by shockfield.vtk_arrays) by the same rule, in the frames' units (mean_Pa, time_s); the
+# 3-piece frames give the same table; wrong combinations are refused (exit 2).
+source "$(dirname "$0")/lib.bash"
+set -e
+export OMP_NUM_THREADS=1
+CASE="$ROOT/tests/cli/cases/mpm_tiny.toml"
+"$SF" run "$CASE" --output "$WORK/one" -q > /dev/null
+sed "s/^\[output\]/[output]\nvtk_pieces = 3/" "$CASE" > "$WORK/pieces.toml"
+"$SF" run "$WORK/pieces.toml" --output "$WORK/three" -q > /dev/null
+last=$(ls "$WORK/one/fields" | grep '^particles_.*\.vtp$' | tail -1)
+# The peer: the same frame's points through the Python reader, as x,y CSV (repr: every double exact;
+# the file's Float32 coordinates are doubles exactly).
+PYTHONPATH="$ROOT/python" /usr/bin/python3 - "$WORK/one/fields/$last" "$WORK/points.csv" <<'PY'
+import sys
+from shockfield.vtk_arrays import read_vtk_arrays
+xyz = read_vtk_arrays(sys.argv[1])["points"]
+with open(sys.argv[2], "w") as f:
+    f.write("x,y\n" + "".join(f"{float(x)!r},{float(y)!r}\n" for x, y, _ in xyz))
+PY
+"$SF" analyze geometry "$WORK/points.csv" --dimension 2 -d 3e-5 -o "$WORK/csv" > /dev/null
+for input in "one/fields/$last" "one/particles.pvd" "three/particles.pvd"; do
+  out="$WORK/out_$(echo "$input" | tr / _)"
+  "$SF" analyze geometry "$WORK/$input" --dimension 2 --frame -1 -d 3e-5 -o "$out" > /dev/null
+  cmp -s "$WORK/csv/summary.txt" "$out/summary.txt" ||
+    fail "$input: another division than the CSV of its points: $(diff "$WORK/csv/summary.txt" "$out/summary.txt")"
+  cmp -s <(cut -d, -f2- "$WORK/csv/clusters.csv") <(cut -d, -f2- "$out/clusters.csv") || fail "$input: other clusters"
+  grep -aq 'Name="points"[^>]* units="m"' "$out/delaunay.vtu" ||
+    fail "$input: delaunay.vtu's points do not say units=\"m\""
+done
+grep -aq 'Name="points"[^>]* units="1"' "$WORK/csv/delaunay.vtu" || fail "a CSV's points are not units=\"1\""
+echo "ok: .vtp, .pvd and .pvtp frames divide as the CSV of their points ($(grep '^points' "$WORK/csv/summary.txt"), $(grep '^simplices' "$WORK/csv/summary.txt"))"
+analyze_rejected "its frames are .vti files; expected particle frames" -- geometry "$WORK/one/grid.pvd" --dimension 2
+analyze_rejected "--frame 5; the series has 5 frames" -- geometry "$WORK/one/particles.pvd" --frame 5 --dimension 2
+printf '<VTKFile type="PolyData"><PolyData><Piece NumberOfPoints="1000000000"><Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0</DataArray></Points></Piece></PolyData></VTKFile>\n' > "$WORK/huge.vtp"
+analyze_rejected "1000000000 points cannot fit in a file of" -- geometry "$WORK/huge.vtp"
+"$SF" analyze stats "$WORK/one/particles.pvd" --array pressure --bin-size 2e-5 -o "$WORK/binned" > /dev/null
+"$SF" analyze stats "$WORK/three/particles.pvd" --array pressure --bin-size 2e-5 -o "$WORK/binned3" > /dev/null
+cmp -s <(cut -d, -f2- "$WORK/binned/stats.csv") <(cut -d, -f2- "$WORK/binned3/stats.csv") ||
+  fail "the 3-piece frames binned to other statistics"
+PYTHONPATH="$ROOT/python" /usr/bin/python3 - "$WORK/one" "$WORK/binned/stats.csv" <<'PY' || fail "binned statistics differ from numpy's"
+import csv, pathlib, re, sys
+import numpy as np
+from shockfield.vtk_arrays import read_vtk_arrays
+run = pathlib.Path(sys.argv[1])
+files = re.findall(r'file="([^"]+)"', (run / "particles.pvd").read_text())
+frames = [read_vtk_arrays(run / f) for f in files]
+h = 2e-5
+lo = np.min([f["points"].min(axis=0) for f in frames], axis=0)
+hi = np.max([f["points"].max(axis=0) for f in frames], axis=0)
+n = np.floor((hi - lo) / h).astype(int) + 1
+rows = list(csv.DictReader(open(sys.argv[2])))
+assert list(rows[0])[:6] == ["file", "time_s", "cells", "void_cells", "mean_Pa", "std_Pa"], list(rows[0])
+for frame, row in zip(frames, rows):
+    cell = np.floor((frame["points"][:, :2] - lo[:2]) / h).astype(int)
+    flat = cell[:, 0] + n[0] * cell[:, 1]
+    count = np.bincount(flat, minlength=n[0] * n[1])
+    total = np.bincount(flat, weights=frame["pressure"].astype(float), minlength=n[0] * n[1])
+    means = total[count > 0] / count[count > 0]
+    assert int(row["cells"]) == n[0] * n[1] and int(row["void_cells"]) == (count == 0).sum(), (row, n)
+    for key, value in (("mean_Pa", means.mean()), ("std_Pa", means.std())):
+        # %.10g in the CSV; the sums run in another order: 1e-9 of the field's scale
+        assert abs(float(row[key]) - value) <= 1e-9 * max(abs(means).max(), 1.0), (key, row[key], value)
+print(f"ok: {len(rows)} binned frames as numpy bins them ({n[0]} x {n[1]} cells of 20 um)")
+PY
+analyze_rejected "give --bin-size H" -- stats "$WORK/one/particles.pvd" --array pressure
+analyze_rejected "--bin-size bins particle frames" -- stats "$WORK/one/grid.pvd" --bin-size 1e-5
+analyze_rejected "no point array named 'nope'" -- stats "$WORK/one/particles.pvd" --array nope --bin-size 1e-5
+analyze_rejected "expected at most 1e8" -- stats "$WORK/one/particles.pvd" --array pressure --bin-size 1e-12
+echo "analyze_particle_frames: ok"
