@@ -3,7 +3,8 @@
 # case.toml over K, the convergence and sensitivity sweeps, then plot.py (table.md, fig63.png, fig64.png).
 # usage: run.sh [RUNS] [PART ...], PART in study, conv, sensitivity (default: all three).
 # Wall times measured on this machine (load average 6-9, one thread per run): 64² runs 2-5 min each,
-# K = 1e-5 on 128² 18 min, the convergence runs 2.4 (96²) to 16 min (128², K = 3e-5) each.
+# K = 1e-5 on 128² to t = 4 38 min
+# (493 s of CPU), the convergence runs 2.4 (96²) to 26 min (96², K = 1e-5, to t = 4) each.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 exe=${SHOCKFIELD:-$here/../../build/release/shockfield}
