@@ -58,7 +58,15 @@ def load(folder):
         if name.startswith("L_rho"):
             run["L_peaks"][float(name[5:])] = t[int(np.argmax(s[name]))] if s[name].max() > 0 else float("nan")
     run["u_DG"] = u_dg(run, t[-1])
+    run["energy_drift"] = energy_drift(run, t[-1])
     return run
+
+
+def energy_drift(run, t_end):
+    """(e_T(t_end) − e_T(0))/|e_T(0)|: what the state filter took (e_T is conserved otherwise)."""
+    s = run["series"]
+    e = s["energy_per_length" if "energy_per_length" in s.dtype.names else "energy"]  # the older runs: energy
+    return (e[s["time"] <= t_end + 1e-9][-1] - e[0]) / abs(e[0])
 
 
 def u_dg(run, t_end):
@@ -72,7 +80,8 @@ def group(runs_dir, name):
     d = runs_dir / name
     if not (d / "sweep.csv").is_file():
         return []
-    return [load(d / r["folder"]) for r in read_csv(d / "sweep.csv") if r["status"] == "finished"]
+    # a run stopped by a signal (checkpoint written, resumable) is tabulated up to its end t
+    return [load(d / r["folder"]) for r in read_csv(d / "sweep.csv") if r["status"] in ("finished", "stopped")]
 
 
 def fits(runs):
@@ -99,13 +108,13 @@ def fit_text(f):
 
 def table(runs, title):
     levels = sorted({lv for r in runs for lv in r["L_peaks"]})
-    head = ("| K | grid | t_SD | R_SD | D_max | u_DG | peak of D^F at t | "
-            + " | ".join(f"peak of L(ρ_th={lv:g}) at t" for lv in levels) + " | end t |")
-    lines = [f"### {title}", "", head, "|" + "---|" * (head.count("|") - 1)]
+    columns = (["K", "grid", "t_SD", "R_SD", "D_max", "u_DG", "peak of D^F at t"]
+               + [f"peak of L(ρ_th={lv:g}) at t" for lv in levels] + ["end t", "Δe_T/\\|e_T(0)\\| at end"])
+    lines = [f"### {title}", "", "| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
     for r in sorted(runs, key=lambda r: (r["K"], r["n"])):
         peaks = " | ".join(f"{r['L_peaks'].get(lv, float('nan')):.3f}" for lv in levels)
         lines.append(f"| {r['K']:g} | {r['n']}² | {r['t_SD']:.3f} | {r['R_SD']:.4f} | {r['D_max']:.4f} | "
-                     f"{r['u_DG']:.4f} | {r['t_DF']:.3f} | {peaks} | {r['t_end']:.2f} |")
+                     f"{r['u_DG']:.4f} | {r['t_DF']:.3f} | {peaks} | {r['t_end']:.2f} | {r['energy_drift']:+.4f} |")
     return lines + [""]
 
 
@@ -186,9 +195,9 @@ def main():
         for K in sorted({r["K"] for r in conv}):
             same = [r for r in conv + study if np.isclose(r["K"], K)]
             end = min(r["t_end"] for r in same)
-            rows += [dict(r, u_DG=u_dg(r, end)) for r in same]
+            rows += [dict(r, u_DG=u_dg(r, end), energy_drift=energy_drift(r, end)) for r in same]
         lines += table(rows, "convergence in Δx (the same band-limited noise on every grid; u_DG over [t_SD, end of "
-                             "the shortest run of that K])")
+                             "the shortest run of that K], Δe_T at that end)")
     for d in sorted(p for p in runs_dir.iterdir() if (p / "sweep.csv").is_file()):
         if d.name in ("study64", "study128") or d.name.startswith("conv"):
             continue

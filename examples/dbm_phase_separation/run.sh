@@ -3,7 +3,8 @@
 # case.toml over K, the convergence and sensitivity sweeps, then plot.py (table.md, fig63.png, fig64.png).
 # usage: run.sh [RUNS] [PART ...], PART in study, conv, sensitivity (default: all three).
 # Wall times measured on this machine (load average 6-9, one thread per run): 64² runs 2-5 min each,
-# K = 1e-5 on 128² 18 min, the convergence runs 2.4 (96²) to 16 min (128², K = 3e-5) each.
+# K = 1e-5 on 128² to t = 4 38 min
+# (493 s of CPU), the convergence runs 2.4 (96²) to 26 min (96², K = 1e-5, to t = 4) each.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 exe=${SHOCKFIELD:-$here/../../build/release/shockfield}
@@ -19,14 +20,17 @@ for part in $parts; do
   case $part in
     study)
       sweep -o "$out/study64" --set model.K=2e-5,3e-5,6e-5,1e-4,1.8e-4,3e-4
-      # K = 1e-5: interface 1 cell wide on 64²; to t = 1.5 (its t_SD is 0.4), the time we had
-      sweep -o "$out/study128" --set model.K=1e-5 --set run.end_time=1.5 $g128 ;;
-    conv)  # the same band-limited noise on 64² (study64), 96² and 128²; t_SD ≈ 0.54 and 1.58 on 64²
-      for K_end in 3e-5:1.2 1.8e-4:2.0; do
+      # K = 1e-5: interface 1 cell wide on 64², so the study's grid for it is 128² (to t = 4 like the rest)
+      sweep -o "$out/study128" --set model.K=1e-5 $g128 ;;
+    conv)  # the same band-limited noise on 64² (study64), 96² and 128²; t_SD ≈ 0.46, 0.54 and 1.58 on 64²; end times: past the last peak
+      for K_end in 2e-5:1.0 3e-5:1.2 1.8e-4:2.0; do
         K=${K_end%:*} end=${K_end#*:}
         sweep -o "$out/conv96_K$K" --set model.K=$K --set run.end_time=$end $g96
         sweep -o "$out/conv128_K$K" --set model.K=$K --set run.end_time=$end $g128
-      done ;;
+      done
+      # K = 1e-5 (study on 128²) on the coarser grids, to t = 4
+      sweep -o "$out/conv64_K1e-5" --set model.K=1e-5
+      sweep -o "$out/conv96_K1e-5" --set model.K=1e-5 $g96 ;;
     sensitivity)  # assumptions the paper does not give: noise amplitude, quench depth (ρ_th: extra_thresholds)
       sweep -o "$out/noise0.02" --set model.K=3e-5,1e-4,3e-4 --set initial.noise=0.02
       sweep -o "$out/quench0.80" --set model.K=3e-5,1e-4,3e-4 --set initial.T=0.80 ;;

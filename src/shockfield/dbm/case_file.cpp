@@ -183,7 +183,7 @@ void read_gls_part(const Config& root, const Config& model, DbmCase& c) {
   const Config initial = root.table("initial");
   initial.get_choice_or("type", {"quench"}, "quench");
   g.quench = read_quench(initial, g.settings, c.lattice);
-  expected_density_range(g);
+  expected_density_range(g, c.lattice);
   const std::optional<Config> output = root.optional_table("output");
   g.threshold = output ? output->get_double_or("threshold", g.quench.rho0, {0.0, eos_max_density(g.settings.eos), true, true})
                        : g.quench.rho0;

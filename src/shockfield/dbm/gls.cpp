@@ -57,14 +57,19 @@ GlsForce::GlsForce(Simulation& simulation, const Boundaries& boundaries,
 }
 
 std::vector<Macro> GlsForce::macros(const std::vector<double>& f) const {
+  std::vector<Macro> m;
+  macros(f, m);
+  return m;
+}
+
+void GlsForce::macros(const std::vector<double>& f, std::vector<Macro>& m) const {
   const Lattice& L = sim_.lattice();
-  std::vector<Macro> m(spectral_.size());
+  m.resize(spectral_.size());
 #pragma omp parallel for schedule(static)
   for (int j = 0; j < L.ny; ++j)
     for (int i = 0; i < L.nx; ++i)
       m[i + static_cast<std::size_t>(L.nx) * j] =
           macro_of(sim_.model(), f.data() + L.at(i, j), L.cells(), sim_.b());
-  return m;
 }
 
 namespace {
@@ -79,27 +84,31 @@ void run_jobs(const std::vector<std::function<void()>>& jobs) {
 }  // namespace
 
 void GlsForce::coefficients(const std::vector<double>& f) {
-  const std::vector<Macro> m = macros(f);
-  const std::size_t n = m.size();
+  Scratch& w = scratch_;
+  macros(f, w.m);
+  const std::size_t n = w.m.size();
   const double K = settings_.K, zeta = settings_.zeta, q = settings_.q;
   const double a = eos_attraction(settings_.eos);
-  std::vector<double> rho(n), ux(n), uy(n), T(n), P(n);
+  const std::vector<Macro>& m = w.m;
+  std::vector<double> &rho = w.rho, &ux = w.ux, &uy = w.uy, &T = w.T, &P = w.P;
+  for (auto* v : {&rho, &ux, &uy, &T, &P, &w.div, &w.nonideal, &w.Lxx, &w.Lxy, &w.Lyy, &w.hx, &w.hy}) v->resize(n);
   for (std::size_t c = 0; c < n; ++c) {  // serial: the EOS throws on states outside its domain
     rho[c] = m[c].rho, ux[c] = m[c].ux, uy[c] = m[c].uy, T[c] = m[c].T;
     P[c] = eos_pressure(settings_.eos, rho[c], T[c]);
   }
   const PeriodicSpectral& s = spectral_;
-  using Spectrum = PeriodicSpectral::Spectrum;
-  Spectrum s_rho, s_ux, s_uy, s_T;
-  run_jobs({[&] { s_rho = s.forward(rho); }, [&] { s_ux = s.forward(ux); }, [&] { s_uy = s.forward(uy); },
-            [&] { s_T = s.forward(T); }});
-  std::vector<double> rx, ry, lap, uxx, uxy, uyx, uyy, Tx, Ty;  // uxy = ∂y ux, uyx = ∂x uy
-  run_jobs({[&] { rx = s.derivative(s_rho, 1, 0); }, [&] { ry = s.derivative(s_rho, 0, 1); },
-            [&] { lap = s.laplacian(s_rho); }, [&] { uxx = s.derivative(s_ux, 1, 0); },
-            [&] { uxy = s.derivative(s_ux, 0, 1); }, [&] { uyx = s.derivative(s_uy, 1, 0); },
-            [&] { uyy = s.derivative(s_uy, 0, 1); }, [&] { Tx = s.derivative(s_T, 1, 0); },
-            [&] { Ty = s.derivative(s_T, 0, 1); }});
-  std::vector<double> div(n), nonideal(n), Lxx(n), Lxy(n), Lyy(n), hx(n), hy(n);
+  auto& work = w.work;
+  run_jobs({[&] { s.forward(rho, w.s_rho); }, [&] { s.forward(ux, w.s_ux); }, [&] { s.forward(uy, w.s_uy); },
+            [&] { s.forward(T, w.s_T); }});
+  std::vector<double> &rx = w.rx, &ry = w.ry, &lap = w.lap, &uxx = w.uxx, &uxy = w.uxy, &uyx = w.uyx, &uyy = w.uyy,
+                      &Tx = w.Tx, &Ty = w.Ty;
+  run_jobs({[&] { s.derivative(w.s_rho, 1, 0, work[0], rx); }, [&] { s.derivative(w.s_rho, 0, 1, work[1], ry); },
+            [&] { s.laplacian(w.s_rho, work[2], lap); }, [&] { s.derivative(w.s_ux, 1, 0, work[3], uxx); },
+            [&] { s.derivative(w.s_ux, 0, 1, work[4], uxy); }, [&] { s.derivative(w.s_uy, 1, 0, work[5], uyx); },
+            [&] { s.derivative(w.s_uy, 0, 1, work[6], uyy); }, [&] { s.derivative(w.s_T, 1, 0, work[7], Tx); },
+            [&] { s.derivative(w.s_T, 0, 1, work[8], Ty); }});
+  std::vector<double> &div = w.div, &nonideal = w.nonideal, &Lxx = w.Lxx, &Lxy = w.Lxy, &Lyy = w.Lyy, &hx = w.hx,
+                      &hy = w.hy;
 #pragma omp parallel for schedule(static)
   for (std::size_t c = 0; c < n; ++c) {
     div[c] = uxx[c] + uyy[c];
@@ -114,16 +123,18 @@ void GlsForce::coefficients(const std::vector<double>& f) {
     hx[c] = 2.0 * q * rho[c] * T[c] * Tx[c];  // eq. 18 flux
     hy[c] = 2.0 * q * rho[c] * T[c] * Ty[c];
   }
-  Spectrum s_div, s_ni, s_xx, s_xy, s_yy, s_hx, s_hy;
-  run_jobs({[&] { s_div = s.forward(div); }, [&] { s_ni = s.forward(nonideal); }, [&] { s_xx = s.forward(Lxx); },
-            [&] { s_xy = s.forward(Lxy); }, [&] { s_yy = s.forward(Lyy); },
-            [&] { s_hx = q != 0.0 ? s.forward(hx) : Spectrum(); },
-            [&] { s_hy = q != 0.0 ? s.forward(hy) : Spectrum(); }});
-  std::vector<double> divx, divy, nix, niy, dLx, dLy, dh;
-  run_jobs({[&] { divx = s.derivative(s_div, 1, 0); }, [&] { divy = s.derivative(s_div, 0, 1); },
-            [&] { nix = s.derivative(s_ni, 1, 0); }, [&] { niy = s.derivative(s_ni, 0, 1); },
-            [&] { dLx = s.divergence(s_xx, s_xy); }, [&] { dLy = s.divergence(s_xy, s_yy); },
-            [&] { dh = q != 0.0 ? s.divergence(s_hx, s_hy) : std::vector<double>(n); }});
+  run_jobs({[&] { s.forward(div, w.s_div); }, [&] { s.forward(nonideal, w.s_ni); }, [&] { s.forward(Lxx, w.s_xx); },
+            [&] { s.forward(Lxy, w.s_xy); }, [&] { s.forward(Lyy, w.s_yy); },
+            [&] { if (q != 0.0) s.forward(hx, w.s_hx); }, [&] { if (q != 0.0) s.forward(hy, w.s_hy); }});
+  std::vector<double> &divx = w.divx, &divy = w.divy, &nix = w.nix, &niy = w.niy, &dLx = w.dLx, &dLy = w.dLy,
+                      &dh = w.dh;
+  run_jobs({[&] { s.derivative(w.s_div, 1, 0, work[0], divx); }, [&] { s.derivative(w.s_div, 0, 1, work[1], divy); },
+            [&] { s.derivative(w.s_ni, 1, 0, work[2], nix); }, [&] { s.derivative(w.s_ni, 0, 1, work[3], niy); },
+            [&] { s.divergence(w.s_xx, w.s_xy, work[4], dLx); }, [&] { s.divergence(w.s_xy, w.s_yy, work[5], dLy); },
+            [&] {
+              if (q != 0.0) s.divergence(w.s_hx, w.s_hy, work[6], dh);
+              else dh.assign(n, 0.0);
+            }});
 #pragma omp parallel for schedule(static)
   for (std::size_t c = 0; c < n; ++c) {
     const double r = rho[c], t = T[c], d = div[c];

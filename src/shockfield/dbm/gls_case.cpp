@@ -59,9 +59,12 @@ Quench read_quench(const Config& initial, const GlsSettings& gls, const Lattice&
   return q;
 }
 
-void expected_density_range(GlsCaseSpec& spec) {
+void expected_density_range(GlsCaseSpec& spec, const Lattice& lattice) {
   const Quench& q = spec.quench;
-  spec.rho_vapour = q.rho0 * (1.0 - q.noise), spec.rho_liquid = q.rho0 * (1.0 + q.noise);
+  // The initial densities ρ0(1 + noise·ξ) at the cells: |ξ| ≤ 1 for white noise, up to ~4·rms for
+  // band-limited noise (its rigorous bound s Σ|A_mn| is ~6x looser and would cut the Δt limit through ζ/ρ_vapour).
+  const auto [xi_min, xi_max] = q.noise_field(lattice).extremes_on_cells();
+  spec.rho_vapour = q.rho0 * (1.0 + q.noise * xi_min), spec.rho_liquid = q.rho0 * (1.0 + q.noise * xi_max);
   std::visit(
       [&](const auto& eos) {
         if (q.T >= critical_point(eos).T) return;

@@ -16,7 +16,7 @@ struct GlsCaseSpec {
   double threshold = 0.0;    ///< density level of the boundary length L(t); default ρ0
   std::vector<double> extra_thresholds;  ///< more levels of L(t) (series columns L_rho<level>)
   double rho_vapour = 0.0;   ///< density range expected in the run (Maxwell construction at the
-  double rho_liquid = 0.0;   ///< quench T, or ρ0(1 ± noise) above T_c): EOS domain and Δt check
+  double rho_liquid = 0.0;   ///< quench T, or the initial field's range above T_c): EOS domain and Δt check
 };
 
 /// [model] keys of kind = "gls": eos, eos_a, eos_b, K, zeta, q (the relaxation time τ is read by
@@ -27,8 +27,9 @@ GlsSettings read_gls_model(const Config& model, double tau);
 /// densities outside the EOS domain and a noise wavelength the lattice cannot hold.
 Quench read_quench(const Config& initial, const GlsSettings& gls, const Lattice& lattice);
 
-/// The densities the quench will reach (Maxwell construction at T below T_c).
-void expected_density_range(GlsCaseSpec& spec);
+/// The densities the quench will reach: those of its initial field on `lattice`, widened to the Maxwell
+/// construction's vapour and liquid at T below T_c.
+void expected_density_range(GlsCaseSpec& spec, const Lattice& lattice);
 
 /// Refuses (under [run].dt) a Δt above the stable limit of gls_step_limit, naming its cause.
 void check_gls_time_step(const Config& run, const GlsCaseSpec& spec, const Lattice& lattice,

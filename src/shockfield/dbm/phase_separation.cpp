@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -48,6 +49,16 @@ double QuenchNoise::operator()(double x, double y) const {
   double xi = 0.0;
   for (const Mode& m : modes_) xi += m.amplitude * std::cos(m.kx * x + m.ky * y + m.phase);
   return xi;
+}
+
+std::pair<double, double> QuenchNoise::extremes_on_cells() const {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int j = 0; j < lattice_.ny; ++j)
+    for (int i = 0; i < lattice_.nx; ++i) {
+      const double xi = (*this)(lattice_.x(i), lattice_.y(j));
+      lo = std::min(lo, xi), hi = std::max(hi, xi);
+    }
+  return {lo, hi};
 }
 
 Macro Quench::state(const QuenchNoise& xi, double x, double y) const {

@@ -7,6 +7,7 @@
 // (analysis/spectral_statistics), and the end of spinodal decomposition t_SD at the peak of D(t)
 // with D_max = D(t_SD).
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "shockfield/analysis/grid_field.hpp"
@@ -29,6 +30,8 @@ class QuenchNoise {
   double operator()(double x, double y) const;
   /// An upper bound of |ξ| (1 for white noise, s Σ|A_mn| for the modes).
   double bound() const { return bound_; }
+  /// The smallest and largest ξ at the lattice's cell centres, the values the initial state takes.
+  std::pair<double, double> extremes_on_cells() const;
   std::size_t modes() const { return modes_.size(); }
 
  private:

@@ -89,10 +89,11 @@ class DbmMethod final : public Method, public DerivedArrays {
                        c_.gls ? ", GLS liquid-vapour" : "", c_.bgk.tau, ranks);
   }
   std::string check_text() const override {
-    // The distributions, and per cell 5 reactant arrays with [reaction] and ~10 GLS values.
+    // The distributions, and per cell 5 reactant arrays with [reaction] and 56 GLS values (GlsForce:
+    // 4 coefficients, and its Scratch of 4 macroscopic values, 28 fields and 20 half spectra).
     const double cells = static_cast<double>(c_.lattice.nx) * c_.lattice.ny;
     const double bytes = Simulation::bytes(c_.lattice, c_.model, c_.bgk.spectral_convection) +
-                         8.0 * cells * (c_.reaction ? 5.0 : 0.0) + 8.0 * cells * (c_.gls ? 10.0 : 0.0);
+                         8.0 * cells * (c_.reaction ? 5.0 : 0.0) + 8.0 * cells * (c_.gls ? 56.0 : 0.0);
     return fmt::format("dbm case ({} x {} cells, {} steps, dt {:.3g}; {} cells, {} when it runs)", c_.lattice.nx,
                        c_.lattice.ny, c_.steps, c_.bgk.dt, c_.lattice.nx * static_cast<long long>(c_.lattice.ny),
                        memory_text(bytes));

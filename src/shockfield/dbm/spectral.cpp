@@ -46,20 +46,44 @@ PeriodicSpectral::~PeriodicSpectral() {
 }
 
 PeriodicSpectral::Spectrum PeriodicSpectral::forward(const std::vector<double>& field) const {
-  Spectrum out(static_cast<std::size_t>(hx_) * ny_);
-  // FFTW's r2c transforms leave their input alone (no FFTW_DESTROY_INPUT).
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_plan_), const_cast<double*>(field.data()),
-                       reinterpret_cast<fftw_complex*>(out.data()));
+  Spectrum out;
+  forward(field, out);
   return out;
 }
 
-std::vector<double> PeriodicSpectral::backward(Spectrum s) const {
-  std::vector<double> out(size());
-  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_plan_),
-                       reinterpret_cast<fftw_complex*>(s.data()), out.data());
+std::vector<double> PeriodicSpectral::derivative(const Spectrum& s, int ax, int ay) const {
+  Spectrum work;
+  std::vector<double> out;
+  derivative(s, ax, ay, work, out);
+  return out;
+}
+
+std::vector<double> PeriodicSpectral::divergence(const Spectrum& sx, const Spectrum& sy) const {
+  Spectrum work;
+  std::vector<double> out;
+  divergence(sx, sy, work, out);
+  return out;
+}
+
+std::vector<double> PeriodicSpectral::laplacian(const Spectrum& s) const {
+  Spectrum work;
+  std::vector<double> out;
+  laplacian(s, work, out);
+  return out;
+}
+
+void PeriodicSpectral::forward(const std::vector<double>& field, Spectrum& out) const {
+  out.resize(spectrum_size());
+  // FFTW's r2c transforms leave their input alone (no FFTW_DESTROY_INPUT).
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_plan_), const_cast<double*>(field.data()),
+                       reinterpret_cast<fftw_complex*>(out.data()));
+}
+
+void PeriodicSpectral::backward(Spectrum& s, std::vector<double>& out) const {
+  out.resize(size());
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_plan_), reinterpret_cast<fftw_complex*>(s.data()), out.data());
   const double norm = 1.0 / static_cast<double>(size());
   for (double& v : out) v *= norm;
-  return out;
 }
 
 std::complex<double> PeriodicSpectral::factor(int ix, int iy, int ax, int ay) const {
@@ -69,34 +93,35 @@ std::complex<double> PeriodicSpectral::factor(int ix, int iy, int ax, int ay) co
   return f;
 }
 
-std::vector<double> PeriodicSpectral::derivative(const Spectrum& s, int ax, int ay) const {
-  Spectrum d(s.size());
+void PeriodicSpectral::derivative(const Spectrum& s, int ax, int ay, Spectrum& work, std::vector<double>& out) const {
+  work.resize(s.size());
   for (int iy = 0; iy < ny_; ++iy)
     for (int ix = 0; ix < hx_; ++ix) {
       const std::size_t c = ix + static_cast<std::size_t>(hx_) * iy;
-      d[c] = factor(ix, iy, ax, ay) * s[c];
+      work[c] = factor(ix, iy, ax, ay) * s[c];
     }
-  return backward(std::move(d));
+  backward(work, out);
 }
 
-std::vector<double> PeriodicSpectral::divergence(const Spectrum& sx, const Spectrum& sy) const {
-  Spectrum d(sx.size());
+void PeriodicSpectral::divergence(const Spectrum& sx, const Spectrum& sy, Spectrum& work,
+                                  std::vector<double>& out) const {
+  work.resize(sx.size());
   for (int iy = 0; iy < ny_; ++iy)
     for (int ix = 0; ix < hx_; ++ix) {
       const std::size_t c = ix + static_cast<std::size_t>(hx_) * iy;
-      d[c] = factor(ix, iy, 1, 0) * sx[c] + factor(ix, iy, 0, 1) * sy[c];
+      work[c] = factor(ix, iy, 1, 0) * sx[c] + factor(ix, iy, 0, 1) * sy[c];
     }
-  return backward(std::move(d));
+  backward(work, out);
 }
 
-std::vector<double> PeriodicSpectral::laplacian(const Spectrum& s) const {
-  Spectrum d(s.size());
+void PeriodicSpectral::laplacian(const Spectrum& s, Spectrum& work, std::vector<double>& out) const {
+  work.resize(s.size());
   for (int iy = 0; iy < ny_; ++iy)
     for (int ix = 0; ix < hx_; ++ix) {
       const std::size_t c = ix + static_cast<std::size_t>(hx_) * iy;
-      d[c] = (factor(ix, iy, 2, 0) + factor(ix, iy, 0, 2)) * s[c];
+      work[c] = (factor(ix, iy, 2, 0) + factor(ix, iy, 0, 2)) * s[c];
     }
-  return backward(std::move(d));
+  backward(work, out);
 }
 
 void PeriodicSpectral::convect(std::complex<double>* s, double vx, double vy) const {
