@@ -234,6 +234,17 @@ class Run:
             return pd.read_csv(path, comment="#")
         return read_csv(path)
 
+    def toml(self, name):
+        """The TOML file ``name`` of the folder (relative, ".toml" optional: hugoniot_shock.toml,
+        hugoniot_fit.toml, ...) as a dict. InputError naming the TOML files the run holds when it
+        has no such file."""
+        path = self.folder / (name if name.endswith(".toml") else name + ".toml")
+        if not path.is_file():
+            held = sorted(str(p.relative_to(self.folder)) for p in self.folder.rglob("*.toml"))
+            raise InputError(f"{self.folder}: this {self.method} run has no {path.name}; its TOML files: "
+                             f"{', '.join(held) or 'none'}")
+        return read_toml(path)
+
     @property
     def thermo(self):
         """thermo.csv: the thermo table (every method)."""

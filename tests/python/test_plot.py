@@ -264,6 +264,20 @@ class Plot(unittest.TestCase):
         self.assertEqual(set(read_points(points.file).dtype.names), set(points.data.dtype.names))
         self.assertNotIn("points", read_csv(pd.folder / "series.csv").dtype.names)
 
+    def test_toml_accessor(self):
+        """Run.toml (the examples' hugoniot_*.toml) against tomllib on every TOML file of a run; a
+        missing one is refused naming the TOML files the run holds."""
+        for name in ("md", "pd"):
+            run = shockfield.Run.open(self.folder(name))
+            held = sorted(run.folder.rglob("*.toml"))
+            self.assertIn(run.folder / "config.resolved.toml", held)
+            for path in held:
+                with open(path, "rb") as f:
+                    self.assertEqual(run.toml(str(path.relative_to(run.folder))), tomllib.load(f), path)
+            self.assertEqual(run.toml("config.resolved"), run.config)
+            with self.assertRaisesRegex(shockfield.InputError, "no hugoniot_nothing.toml; its TOML files: .*config.resolved.toml"):
+                run.toml("hugoniot_nothing")
+
     def test_readers_refuse_mutated_files(self):
         """Mutation fuzzing of the shared reader: every kind of file with random bytes replaced,
         inserted, deleted or cut off (seeded) is read or refused with InputError naming it, never
