@@ -5,10 +5,13 @@ both final.data files on the same bins (7.23 Å from the piston face).
 
     compare_parts.py ONE_PART_RUN PART2_RUN
 """
+import os
 import sys
-import tomllib
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
 
 KB = 8.617333262e-5            # eV/K
 MVV2E = 1.0364269e-4           # amu Å²/ps² → eV
@@ -57,9 +60,9 @@ def profile(path, origin, width, nbins):
 
 
 def last_thermo(run):
-    rows = open(f"{run}/thermo.csv").read().splitlines()
-    names = rows[0].split(",")
-    return dict(zip(names, map(float, rows[-1].split(","))))
+    """The last row of the run's thermo table as {column: value}."""
+    thermo = Run.open(run).thermo
+    return dict(zip(thermo.dtype.names, thermo[-1]))
 
 
 def main(one, part2):
@@ -82,8 +85,7 @@ def main(one, part2):
     print(f"final thermo: T {ta['temperature_K']:.2f} | {tb['temperature_K']:.2f} K, PE {ta['pe_eV']:.3f} | {tb['pe_eV']:.3f} eV, "
           f"KE {ta['ke_eV']:.3f} | {tb['ke_eV']:.3f} eV, Pzz {ta['pzz_bar']:.1f} | {tb['pzz_bar']:.1f} bar, "
           f"rebuilds {ta['neighbor_rebuilds']:.0f} | {tb['neighbor_rebuilds']:.0f}")
-    ha = tomllib.load(open(f"{one}/hugoniot_shock.toml", "rb"))
-    hb = tomllib.load(open(f"{part2}/hugoniot_shock.toml", "rb"))
+    ha, hb = Run.open(one).toml("hugoniot_shock"), Run.open(part2).toml("hugoniot_shock")
     print("Hugoniot (one part over 2.5 ps | part 2 alone over its 1.2 ps):")
     for key in ("us_km_s", "up_km_s", "pressure_GPa", "density_g_cc", "temperature_K"):
         if key in ha and key in hb:
