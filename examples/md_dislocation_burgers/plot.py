@@ -21,7 +21,7 @@ COLOURS = {2: ("hcp (stacking fault)", "#d62728"), 3: ("bcc", "#2ca02c"), 5: ("o
 def main():
     folder, output = sys.argv[1], sys.argv[2]
     atoms = read_lammps_dump(f"{folder}/dump.0.lammpstrj")[0][3]  # (step, time, box, atoms) of its one frame
-    circuits = read_csv(f"{folder}/burgers.csv")
+    circuits = read_csv(f"{folder}/burgers.csv", text=("b",))  # b: "0" when a circuit closes
     fig, ax = plt.subplots(figsize=(8.5, 6.5))
     x, y = atoms["x"], atoms["y"]
     fcc = atoms["acna"] == 1
