@@ -17,7 +17,7 @@ SOURCE = pathlib.Path(os.environ.get("SHOCKFIELD_SOURCE", pathlib.Path(__file__)
 # What a shockfield run or analysis folder holds (docs/python.md, docs/cli.md).
 RUN_FILES = (r"summary\.json|config\.resolved\.toml|thermo\.csv|series\.csv|profiles|index\.csv|"
              r"tracks\.csv|growth\.csv|voids\.csv|domains\.csv|burgers\.csv|structures\.csv|clusters\.csv|"
-             r"hugoniot_\w*\.(?:toml|csv)|shock_front\w*\.csv|hugoniot_sweep\.csv")
+             r"hugoniot_\w*\.(?:toml|csv)|shock_front\w*\.csv|hugoniot_sweep\.csv|\.lammpstrj|final\.data|\.p?vt[ipu]|\.pvd")
 PARSERS = (r"csv\.DictReader|csv\.reader|\bloadtxt\(|\bgenfromtxt\(|json\.loads?\(|tomllib\.loads?\(|"
            r"pd\.read_csv|pandas\.read_csv")
 OPEN_OF_RUN_FILE = rf"open\([^)]*(?:{RUN_FILES})"
@@ -25,6 +25,9 @@ OPEN_OF_RUN_FILE = rf"open\([^)]*(?:{RUN_FILES})"
 # Scripts that parse files that are not run-folder outputs, or whose run-folder files the
 # example cannot reproduce cheaply enough to prove a conversion; each with its reason.
 ALLOWED = {
+    "bridge_cu_atoms_to_plate/plot.py": "mpm_states.txt, pd_speeds.txt and timings.txt are the example's own "
+                                        "tables (written by run.sh, mpm_hugoniot.py, pd_front_speed.py), no run-folder "
+                                        "files; its run folders go through shockfield.run",
 }
 
 
