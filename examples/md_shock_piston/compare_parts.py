@@ -4,14 +4,15 @@ final.data (run.sh): the Hugoniot states, the final thermo row and the final pro
 both final.data files on the same bins (7.23 Å from the piston face).
 
     compare_parts.py ONE_PART_RUN PART2_RUN
+
+final.data is read by the compiled module: the package of the build tree (build/release/python)
+must be on PYTHONPATH, as run.sh sets it.
 """
-import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
-from shockfield.run import Run, read_lammps_data  # noqa: E402  (the shared run-folder readers)
+from shockfield.run import Run, read_lammps_data  # noqa: E402  (the shared readers; PYTHONPATH: the build tree's package)
 
 KB = 8.617333262e-5            # eV/K
 MVV2E = 1.0364269e-4           # amu Å²/ps² → eV

@@ -4,6 +4,9 @@
 (bottom), from series.csv and the last frame.
 
     plot.py OUT.png RUN_DIR [RUN_DIR ...]
+
+The fields are read by the compiled module: the package of the build tree (build/release/python)
+must be on PYTHONPATH, as run.sh sets it.
 """
 import os
 import sys
@@ -13,8 +16,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
-from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
+from shockfield.run import Run  # (the shared run-folder reader; PYTHONPATH: the build tree's package)
 
 out, runs = sys.argv[1], sys.argv[2:]
 fig, axes = plt.subplots(2, len(runs), figsize=(3.2 * len(runs), 6.4))
