@@ -229,7 +229,7 @@ class Run:
 
     def table(self, name, pandas=False, text=()):
         """The CSV file ``name`` (relative to the folder, ".csv" optional) as a structured array
-        (the columns named in ``text`` as str, read_csv), or a pandas DataFrame with
+        (the columns named in ``text`` as str, read_csv; with pandas their dtype str), or a pandas DataFrame with
         ``pandas=True``. InputError naming the tables the run holds when it has no such file."""
         path = self.folder / (name if name.endswith(".csv") else name + ".csv")
         if not path.is_file():
@@ -237,7 +237,7 @@ class Run:
                              f"{', '.join(self.tables()) or 'none'}")
         if pandas:
             import pandas as pd  # optional
-            return pd.read_csv(path, comment="#")
+            return pd.read_csv(path, comment="#", **({"dtype": {name: str for name in text}} if text else {}))
         return read_csv(path, text)
 
     def toml(self, name):
