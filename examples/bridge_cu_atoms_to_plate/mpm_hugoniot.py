@@ -6,11 +6,12 @@ conservation, rho0*Us = rho*(Us - Up), and P_RH = rho0*Us*Up (Rankine-Hugoniot);
 pressure is the EOS pressure P (the mean stress; the longitudinal stress exceeds it by 2Y/3).
 Usage: mpm_hugoniot.py SHOCKFIELD MATERIAL_FILE FOLDER UP_KM_S... [--yield PA]
 Prints one line per speed: up_km_s us_km_s pressure_GPa pressure_rh_GPa density_kg_m3."""
-import csv
 import os
 import subprocess
 import sys
-import tomllib
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run, read_toml  # noqa: E402  (the shared run-folder readers)
 
 CASE = """method = "mpm"
 [grid]
@@ -41,7 +42,7 @@ series_interval = {end_time}
 
 
 def shocked_state(shockfield, material, folder, up_km_s, yield_stress):
-    eos = tomllib.load(open(material, "rb"))["eos"]
+    eos = read_toml(material)["eos"]
     rho0 = eos["rho0"]
     up = up_km_s * 1e3
     us_guess = eos["c0"] + eos["s"] * up
@@ -55,7 +56,7 @@ def shocked_state(shockfield, material, folder, up_km_s, yield_stress):
     run = case[:-5]
     subprocess.run([shockfield, "run", case, "--output", run, "--overwrite", "-q"], check=True,
                    stdout=subprocess.DEVNULL)
-    row = list(csv.DictReader(open(os.path.join(run, "series.csv"))))[-1]
+    row = Run.open(run).series[-1]
     rho = float(row["bottom_h300um_density_mean_kg_m3"])
     pressure = float(row["bottom_h300um_pressure_mean_Pa"])
     us = rho * up / (rho - rho0)

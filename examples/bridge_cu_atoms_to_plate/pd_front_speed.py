@@ -3,18 +3,19 @@ position where the particle velocity crosses a quarter of the impact speed (half
 v/2 that runs into the resting half), interpolated between points, fitted against time over the
 profiles after the first (start-up of the impact). Prints the speed in m/s.
 Usage: pd_front_speed.py RUN_FOLDER IMPACT_SPEED_M_S"""
-import csv
+import os
 import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
+
 
 def front_speed(run, impact_speed):
     t, front = [], []
-    for row in csv.DictReader(open(f"{run}/profiles/index.csv")):
-        time = float(row["time_s"])
-        d = np.genfromtxt(f"{run}/profiles/profile_{row['profile']}.csv", delimiter=",", names=True)
-        x, v = d["x_m"], d["vx_m_s"]
+    for profile in Run.open(run).frames(kind="profiles"):
+        time, x, v = profile.time, profile.data["x_m"], profile.data["vx_m_s"]
         level = 0.25 * impact_speed
         i = np.where(v > level)[0][-1]
         if time <= 0 or i >= len(v) - 2:

@@ -7,10 +7,8 @@ spall strength; the share of the wall time each scale took.
 Usage: plot.py OUT PNG [--check] (OUT: the folder run.sh wrote). With --check, exits 1 unless the
 issue's round-trip bounds hold: MPM Us, P and rho (P and rho against the MD Rankine-Hugoniot values)
 within 2% of every MD point, PD front speeds within 1% of sqrt(C_L/rho)."""
-import csv
 import os
 import sys
-import tomllib
 
 import matplotlib
 
@@ -20,19 +18,17 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "mpm_spall"))
 import spall as mpm_spall  # noqa: E402  the pull-back and last-frame readers of examples/mpm_spall
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run, read_csv, read_toml  # noqa: E402  (the shared run-folder readers)
 
 out, png = sys.argv[1], sys.argv[2]
 check = "--check" in sys.argv[3:]
 worst = {"mpm": 0.0, "pd": 0.0}
-md = list(csv.DictReader(open(f"{out}/md_sweep/hugoniot_sweep.csv")))
-md_up = np.array([float(r["up_km_s"]) for r in md])
-md_us = np.array([float(r["us_km_s"]) for r in md])
-md_err = np.array([float(r["us_stderr_km_s"]) for r in md])
-md_p = np.array([float(r["pressure_GPa"]) for r in md])
-md_prh = np.array([float(r["pressure_rankine_hugoniot_GPa"]) for r in md])
-md_rho = np.array([float(r["density_g_cc"]) * 1e3 for r in md])
+md = read_csv(f"{out}/md_sweep/hugoniot_sweep.csv")  # shockfield hugoniot's table
+md_up, md_us, md_err = md["up_km_s"], md["us_km_s"], md["us_stderr_km_s"]
+md_p, md_prh, md_rho = md["pressure_GPa"], md["pressure_rankine_hugoniot_GPa"], md["density_g_cc"] * 1e3
 mpm = np.loadtxt(f"{out}/mpm_states.txt", ndmin=2)  # up us P P_RH rho
-material = tomllib.load(open(f"{out}/cu_md.toml", "rb"))
+material = read_toml(f"{out}/cu_md.toml")
 eos, el = material["eos"], material["elasticity"]
 fit = material["provenance"]["hugoniot_to_eos"]["fit"]
 c0, s = eos["c0"] / 1e3, eos["s"]
@@ -68,9 +64,8 @@ print(f"bridged spall: {sp['strength'] / 1e9:.2f} +- {sfit['strength_stderr_Pa']
 fs = {}
 for name in ("bridged", "none"):
     run = f"{out}/mpm_spall_{name}"
-    ser = list(csv.DictReader(open(f"{run}/series.csv")))
-    t_fs = np.array([float(r["time_s"]) for r in ser])
-    u_fs = np.array([float(r["top_h10um_vy_mean_m_s"]) for r in ser])
+    ser = Run.open(run).series
+    t_fs, u_fs = ser["time_s"], ser["top_h10um_vy_mean_m_s"]
     plateau, low, t_low = mpm_spall.pullback(t_fs, u_fs)
     frame = mpm_spall.last_frame(run)[1]
     failed = frame["damage"] > 0
@@ -103,14 +98,14 @@ b.legend(fontsize=8, loc="upper left")
 b.set_title("elastic waves: atoms -> cubic C_ij -> PD", fontsize=10)
 for run, series, key, label, color in (("md_tension", "tension", "spall", "MD tension: -P", "C0"),
                                        ("md_compression_111", "diff", "yield", "MD [111]: sigma_L - sigma_T", "C3")):
-    th = list(csv.DictReader(open(f"{out}/{run}/thermo.csv")))
-    t_md = np.array([float(r["time_ps"]) for r in th])
+    th = Run.open(f"{out}/{run}").thermo
+    t_md = th["time_ps"]
     if series == "tension":
-        y_md = -np.array([float(r["press_bar"]) for r in th]) / 1e4
+        y_md = -th["press_bar"] / 1e4
         bridged = sp["strength"] / 1e9
         text = f"[spall] strength {bridged:.1f} GPa at {sp['strain_rate']:.2g}/s"
     else:
-        y_md = np.array([float(r["pzz_bar"]) - 0.5 * (float(r["pxx_bar"]) + float(r["pyy_bar"])) for r in th]) / 1e4
+        y_md = (th["pzz_bar"] - 0.5 * (th["pxx_bar"] + th["pyy_bar"])) / 1e4
         bridged = yfit["stress_difference_Pa"] / 1e9
         text = (f"break {bridged:.1f} GPa -> [strength] Y {strength['yield_stress'] / 1e9:.1f} GPa, "
                 f"g0 {strength['g0'] / 1e9:.1f} GPa")

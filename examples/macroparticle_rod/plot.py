@@ -6,7 +6,7 @@ nu_vs_division.png     Poisson's ratio against n_phi (beside Fig 5)
 stress_strain.png      tension and compression with the plastic pair law (beside Fig 6)
 compression_buckling.png  the L/D = 3.5 rod in compression: its stress drop and the buckled slice
 """
-import csv, glob, os, re, sys
+import glob, os, sys
 
 import matplotlib
 matplotlib.use("Agg")
@@ -15,11 +15,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 from shockfield_plot.macroparticle_plots import stress_strain  # noqa: E402  (`shockfield plot stress-strain`)
-
-
-def read_csv(path):
-    rows = list(csv.DictReader(open(path)))
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+from shockfield.run import Run, read_csv  # noqa: E402  (the shared readers)
 
 
 def studies(out):
@@ -69,14 +65,9 @@ def plot_stress_strain(out, pictures):
                       "Al rod (n_phi = 4, n_h = 8), plastic pair law (cf. Saitoh et al. Fig 6)")
 
 
-def read_dump(path):
-    lines = open(path).read().split("\n")
-    n = int(lines[lines.index("ITEM: NUMBER OF ATOMS") + 1])
-    head = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
-    cols = lines[head].split()[2:]
-    a = np.array([[float(v) for v in l.split()] for l in lines[head + 1:head + 1 + n]])
-    a = a[np.argsort(a[:, cols.index("id")])]
-    return {c: a[:, k] for k, c in enumerate(cols)}
+def in_id_order(frame):
+    """A dump frame's particles sorted by id."""
+    return frame.data[np.argsort(frame.data["id"])]
 
 
 def bonds(d, r0):
@@ -90,11 +81,11 @@ def plot_buckling(out, pictures):
     """Stress-strain of the L/D = 3.5 rod in compression (imperfect with sliding ends, imperfect
     with clamped ends, perfect) and the buckled rod's (1-10) slice through the axis."""
     folder = os.path.join(out, "buckling")
-    files = sorted(glob.glob(os.path.join(folder, "dumps", "dump.*.lammpstrj")), key=lambda p: int(p.split(".")[-2]))
-    if not files:
+    if not glob.glob(os.path.join(folder, "dumps", "dump.*.lammpstrj")):
         return
-    r0 = float(re.search(r"^r0 = ([0-9.e+-]+)", open(os.path.join(folder, "config.resolved.toml")).read(), re.M).group(1))
-    first, last = read_dump(files[0]), read_dump(files[-1])
+    run = Run.open(folder)
+    r0 = run.value("r0")
+    first, last = in_id_order(next(run.frames(kind="dumps"))), in_id_order(run.last_frame(kind="dumps"))
     lost = len(bonds(first, r0) - bonds(last, r0))
     fig, axes = plt.subplots(1, 2, figsize=(10, 5), gridspec_kw={"width_ratios": [1.4, 1]})
     runs = [(os.path.join(out, n), l) for n, l in (("buckling", "imperfect (1e-3 r0), sliding ends"),

@@ -14,15 +14,16 @@ slip_fine (the same at n_phi = 8, n_h = 16), slip_perfect, slip_clamped and slip
 - stress-strain of the five runs, the particles of slip_fine viewed edge-on to its slip plane
   coloured by their slip, and the largest layer-pair slip of each family against strain.
 """
-import csv
-import glob
 import itertools
-import re
+import os
 import sys
 
 import numpy as np
 from scipy.optimize import brentq
 from scipy.spatial import cKDTree
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
 
 A = np.sqrt(2.0)  # cubic cell of the packing, r0 = 1
 FAMILIES = {"111": ([[1, 1, 1], [1, 1, -1], [1, -1, 1], [-1, 1, 1]], A / np.sqrt(3)),
@@ -32,32 +33,28 @@ FAMILIES = {"111": ([[1, 1, 1], [1, 1, -1], [1, -1, 1], [-1, 1, 1]], A / np.sqrt
 
 def resolved(run):
     """r0 and the bond law of a run: p, q and the route (ε_y, h, ε_s, ε_c as in [plasticity])."""
-    text = open(f"{run}/config.resolved.toml").read()
-    get = lambda key, default=None: (lambda m: float(m.group(1)) if m else default)(re.search(rf"\n{key} = (\S+)", text))
-    hardening = [float(v) for v in re.search(r"\nhardening = \[([^\]]*)\]", text).group(1).split(",")]
+    config = Run.open(run)
+    get = lambda key, default=None: (lambda v: default if v is None else v)(config.value(key))
+    hardening = [float(v) for v in config.config["plasticity"]["hardening"]]
     route = dict(eps_y=get("yield_strain"), h=hardening, sat=get("saturation_strain", np.inf),
                  eps_c=get("compression_yield_strain", get("yield_strain")))
     return get("r0"), route, get("p"), get("q")
 
 
 def thermo(run):
-    rows = list(csv.DictReader(open(f"{run}/thermo.csv")))
-    return tuple(np.array([abs(float(r[c])) for r in rows]) for c in ("Strain", "Stress", "Step"))
+    table = Run.open(run).thermo
+    return tuple(np.abs(table[c]) for c in ("Strain", "Stress", "Step"))
 
 
 def frames(run):
-    files = glob.glob(f"{run}/dumps/dump.*.lammpstrj")
-    return sorted(files, key=lambda f: int(re.search(r"dump\.(\d+)\.", f).group(1)))
+    """The run's dump frames in step order."""
+    return list(Run.open(run).frames(kind="dumps"))
 
 
-def positions(path, r0):
-    lines = open(path).read().splitlines()
-    n = int(lines[lines.index("ITEM: NUMBER OF ATOMS") + 1])
-    head = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
-    cols = lines[head].split()[2:]
-    data = np.array([l.split() for l in lines[head + 1:head + 1 + n]], float)
-    data = data[np.argsort(data[:, cols.index("id")])]
-    return np.c_[data[:, cols.index("x")], data[:, cols.index("y")], data[:, cols.index("z")]] / r0
+def positions(frame, r0):
+    """The particles' positions of a dump frame in id order, in units of r0."""
+    data = frame.data[np.argsort(frame.data["id"])]
+    return np.c_[data["x"], data["y"], data["z"]] / r0
 
 
 # --- the infinite packing (engine units: r0 = D = 1, k = pq) ---
@@ -148,7 +145,7 @@ def main(out, here):
         X = positions(files[0], r0s[name])
         bonds = np.array(sorted(cKDTree(X).query_pairs(1.2)))
         strain, stress, step = thermo(f"{out}/{name}")
-        at = np.interp([int(re.search(r"dump\.(\d+)\.", f).group(1)) for f in files], step, strain)
+        at = np.interp([f.step for f in files], step, strain)
         histories[name] = (at, [{k: v[0] for k, v in layer_slip(X, positions(f, r0s[name]), bonds).items()} for f in files])
         final = layer_slip(X, positions(files[-1], r0s[name]), bonds)
         s111, n111, pairs, L, d, dl = final["111"]

@@ -10,6 +10,9 @@ import csv, os, re, subprocess, sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
+
 STEPS = int(os.environ.get("STEPS", "4000"))
 
 
@@ -22,15 +25,12 @@ def run(sf, out, n_phi, n_h):
     folder = os.path.join(out, f"rod_{n_phi}_{n_h}")
     subprocess.run([sf, "run", case, "-q", "--overwrite", "--output", folder, "--set", f"loading.strain_rate={rate}",
                     "--set", f"output.thermo_every={max(STEPS // 200, 1)}"] + sets, check=True)
-    rows = list(csv.DictReader(open(os.path.join(folder, "thermo.csv"))))
-    strain = np.array([float(r["Strain"]) for r in rows])
-    stress = np.array([float(r["Stress"]) for r in rows])
-    lateral = np.array([float(r["LatStrain"]) for r in rows])
+    result = Run.open(folder)
+    strain, stress, lateral = (result.thermo[c] for c in ("Strain", "Stress", "LatStrain"))
     half = strain >= 0.5 * strain[-1]
     E = np.polyfit(strain[half], stress[half], 1)[0]
     nu = -np.polyfit(strain[half], lateral[half], 1)[0]
-    derived = open(os.path.join(folder, "config.resolved.toml")).read()
-    get = lambda key: float(re.search(rf"^{key} = ([0-9.e+-]+)", derived, re.M).group(1))
+    get = result.value
     return [n_phi, n_h, int(get("particles")), E, nu, get("youngs_eq15"), get("youngs_lattice_001")]
 
 

@@ -15,11 +15,14 @@ import tempfile
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import read_csv, read_lammps_dump  # noqa: E402  (the shared readers of analyze outputs)
+
 bin_, dump, clusters_csv, out_csv = sys.argv[1:5]
 min_size = int(sys.argv[5]) if len(sys.argv) > 5 else 40
 radius = float(sys.argv[6]) if len(sys.argv) > 6 else 6.0
-step = int(open(dump).readlines()[1])
-rows = [r for r in csv.DictReader(open(clusters_csv)) if int(r["timestep"]) == step and int(r["size"]) >= min_size]
+step = read_lammps_dump(dump)[0][0]
+rows = [r for r in read_csv(clusters_csv) if int(r["timestep"]) == step and int(r["size"]) >= min_size]
 results = []
 for r in rows:
     c = np.array([float(r[f"{q}_A"]) for q in "xyz"])
@@ -34,12 +37,14 @@ for r in rows:
                                 "--burgers-orient", "1 1 0,-1 1 0,0 0 1", "-o", tmp, "-j", "1"],
                                capture_output=True, text=True)
             if p.returncode != 0:
-                results.append(dict(timestep=step, stacking_fault=r["cluster"], sf_atoms=r["size"], place=where,
+                results.append(dict(timestep=step, stacking_fault=int(r["cluster"]), sf_atoms=int(r["size"]), place=where,
                                     line=line, b="", kind="no closed circuit", reliable="", max_step_error=""))
                 continue
-            b = next(csv.DictReader(open(os.path.join(tmp, "burgers.csv"))))
-            results.append(dict(timestep=step, stacking_fault=r["cluster"], sf_atoms=r["size"], place=where, line=line,
-                                b=b["b"], kind=b["kind"], reliable=b["reliable"], max_step_error=b["max_step_error"]))
+            b = read_csv(os.path.join(tmp, "burgers.csv"), text=("b",))[0]  # b: "0" when the circuit closes
+            # max_step_error as analyze atoms writes it ({:.4g}, analyze_atoms_burgers.cpp)
+            results.append(dict(timestep=step, stacking_fault=int(r["cluster"]), sf_atoms=int(r["size"]), place=where,
+                                line=line, b=b["b"], kind=b["kind"], reliable=int(b["reliable"]),
+                                max_step_error=f"{b['max_step_error']:.4g}"))
 fields = ["timestep", "stacking_fault", "sf_atoms", "place", "line", "b", "kind", "reliable", "max_step_error"]
 new = not os.path.exists(out_csv)
 with open(out_csv, "a", newline="") as fh:

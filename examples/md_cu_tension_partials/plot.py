@@ -4,7 +4,6 @@ Usage: plot.py RUN ANALYSIS BURGERS OUT.png
 Reads RUN/thermo.csv (pxx), ANALYSIS/dump.*.lammpstrj (columns coord, cna, acna), BURGERS/burgers.csv
 (circuits around core clusters) and BURGERS/partials.csv (around the stacking faults' edges);
 writes OUT.png and prints the table of the README (fractions against strain)."""
-import csv
 import glob
 import os
 import sys
@@ -12,7 +11,10 @@ import sys
 import numpy as np
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run, read_csv, read_lammps_dump  # noqa: E402  (the shared readers)
 
 run, ana, bdir, out = sys.argv[1:5]
 rate, dt, start = 0.01, 0.002, 1000     # 1/ps, ps per step, first step of the stretch (case.toml)
@@ -22,32 +24,21 @@ def strain(step):
     return max(step - start, 0) * dt * rate
 
 
-def read_dump(path):
-    with open(path) as f:
-        lines = f.readlines()
-    step = int(lines[1])
-    n = int(lines[3])
-    box = np.array([[float(v) for v in lines[5 + d].split()[:2]] for d in range(3)])
-    cols = lines[8].split()[2:]
-    data = np.loadtxt(lines[9:9 + n])
-    return step, box, {c: data[:, k] for k, c in enumerate(cols)}
-
-
-thermo = list(csv.DictReader(open(os.path.join(run, "thermo.csv"))))
-ts = np.array([int(r["step"]) for r in thermo])
-sxx = np.array([-float(r["pxx_bar"]) / 1e4 for r in thermo])   # GPa, tension positive
+thermo = Run.open(run).thermo
+ts = thermo["step"].astype(np.int64)
+sxx = -thermo["pxx_bar"] / 1e4   # GPa, tension positive
 frames = []
 for path in sorted(glob.glob(os.path.join(ana, "dump.*.lammpstrj")), key=lambda p: int(p.split(".")[-2])):
-    step, box, c = read_dump(path)
-    n = len(c["id"])
-    frames.append(dict(step=step, box=box, c=c, hcp=np.mean(c["acna"] == 2), other=np.mean(c["acna"] == 5),
+    step, _, _, c = read_lammps_dump(path)[0]  # the annotated dump's one frame: step, time, box, atoms
+    frames.append(dict(step=step, c=c, hcp=np.mean(c["acna"] == 2), other=np.mean(c["acna"] == 5),
                        bcc=np.mean(c["acna"] == 3), cna_hcp=np.mean(c["cna"] == 2), cna_other=np.mean(c["cna"] == 5),
                        c13=np.mean(c["coord"] == 13), cnot12=np.mean(c["coord"] != 12)))
 burgers = []
 for name in ("burgers.csv", "partials.csv"):
     p = os.path.join(bdir, name)
     if os.path.exists(p):
-        for r in csv.DictReader(open(p)):
+        table = read_csv(p, text=("b", "circuit", "reliable", "stacking_fault"))  # compared and shown as text
+        for r in (dict(zip(table.dtype.names, row)) for row in table):
             if "line" in r:   # partials.csv: the line's centre
                 r["circuit"] = f"SF{r['stacking_fault']}{r['place']}"
                 r["centre_x_A"], r["centre_y_A"], r["centre_z_A"] = r["line"].split(":")[0].split(",")

@@ -1,23 +1,25 @@
 """Voids opening in Cu under [110] tension: per frame the missing volume of each void (analyze atoms
 --voids, voids.csv) and their sum against strain and time, beside the tensile stress.
 Usage: plot_voids.py RUN VOIDS_DIR OUT.png"""
-import csv
 import os
 import sys
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run, read_csv  # noqa: E402  (the shared readers; VOIDS_DIR is no run folder)
 
 run, vdir, out = sys.argv[1:4]
 rate, dt, start = 0.01, 0.002, 1000
-rows = list(csv.DictReader(open(os.path.join(vdir, "voids.csv"))))
+rows = read_csv(os.path.join(vdir, "voids.csv"))
 steps = sorted({int(r["timestep"]) for r in rows})
-frames = sorted(int(r["timestep"]) for r in csv.DictReader(open(os.path.join(vdir, "structures.csv"))))
+frames = sorted(int(r["timestep"]) for r in read_csv(os.path.join(vdir, "structures.csv")))
 total = {s: sum(float(r["missing_volume_A3"]) for r in rows if int(r["timestep"]) == s) for s in frames}
 largest = {s: max([float(r["missing_volume_A3"]) for r in rows if int(r["timestep"]) == s] or [0.0]) for s in frames}
 count = {s: sum(1 for r in rows if int(r["timestep"]) == s) for s in frames}
-thermo = list(csv.DictReader(open(os.path.join(run, "thermo.csv"))))
+thermo = Run.open(run).thermo
 fig, ax = plt.subplots(figsize=(6.4, 4.2))
 t = [(s - start) * dt for s in frames]
 ax.semilogy(t, [max(total[s], 1) for s in frames], "o-", label="all voids (missing volume)")

@@ -3,7 +3,7 @@
 coloured by adaptive CNA (fcc left out), with the Burgers circuits of burgers.csv and their vectors.
 
 usage: plot.py ANALYSIS_FOLDER OUTPUT.png"""
-import csv
+import os
 import sys
 
 import matplotlib
@@ -12,23 +12,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import read_csv, read_lammps_dump  # noqa: E402  (the shared readers; an analyze folder)
+
 COLOURS = {2: ("hcp (stacking fault)", "#d62728"), 3: ("bcc", "#2ca02c"), 5: ("other (cores, surface)", "#1f77b4")}
-
-
-def read_dump(path):
-    with open(path) as f:
-        lines = f.readlines()
-    header = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
-    names = lines[header].split()[2:]
-    data = np.loadtxt(lines[header + 1:])
-    return {n: data[:, k] for k, n in enumerate(names)}
 
 
 def main():
     folder, output = sys.argv[1], sys.argv[2]
-    atoms = read_dump(f"{folder}/dump.0.lammpstrj")
-    with open(f"{folder}/burgers.csv") as f:
-        circuits = list(csv.DictReader(f))
+    atoms = read_lammps_dump(f"{folder}/dump.0.lammpstrj")[0][3]  # (step, time, box, atoms) of its one frame
+    circuits = read_csv(f"{folder}/burgers.csv", text=("b",))  # b: "0" when a circuit closes
     fig, ax = plt.subplots(figsize=(8.5, 6.5))
     x, y = atoms["x"], atoms["y"]
     fcc = atoms["acna"] == 1

@@ -8,7 +8,10 @@ import sys
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
 
 root, out = sys.argv[1], sys.argv[2]
 pat = re.compile(r"P = ([\d.]+) GPa.*V/V0 = ([\d.]+), T = ([\d.]+) K, Us = ([\d.]+) km/s, Up = ([\d.]+)")
@@ -21,7 +24,7 @@ for pot in sorted(os.listdir(root)):
             if "Hugoniostat" in line:
                 m = pat.search(line)
                 state = [float(v) for v in m.groups()]
-        fr = list(csv.DictReader(open(os.path.join(d, "analysis", "structures.csv"))))
+        fr = Run.open(d).table("analysis/structures")
         hug = [r for r in fr if int(r["timestep"]) > 3000]   # the hug stage (relax: 3000 steps)
         t = [(int(r["timestep"]) - 3000) * 0.001 for r in hug]
         f = {s: [float(r[f"acna_{s}_fraction"]) for r in hug] for s in ("bcc", "hcp", "fcc", "other")}

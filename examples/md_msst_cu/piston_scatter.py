@@ -5,23 +5,24 @@ count-weighted means of U_p, P_zz, density and T over the bins between piston an
 kept from each), and over frames their mean and standard deviation; the bins ahead of the front
 give rho0. Prints TOML. Usage: /usr/bin/python3 piston_scatter.py PISTON_RUN_DIR
 """
-import csv
+import os
 import statistics
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
 
 MARGIN = 3
 
 
 def main():
-    run = sys.argv[1]
+    run = Run.open(sys.argv[1])
     fronts = {}
-    with open(f"{run}/shock_front_shock.csv") as f:
-        for r in csv.DictReader(f):
-            fronts[int(r["step"])] = (float(r["front_A"]), float(r["piston_A"]), float(r["time_ps"]))
+    for r in run.table("shock_front_shock"):
+        fronts[int(r["step"])] = (float(r["front_A"]), float(r["piston_A"]), float(r["time_ps"]))
     frames = {}
-    with open(f"{run}/profiles.csv") as f:
-        for r in csv.DictReader(f):
-            frames.setdefault(int(r["step"]), []).append(r)
+    for r in run.profiles:
+        frames.setdefault(int(r["step"]), []).append(r)
     steps = sorted(fronts)  # the profiles of the piston stage
     t0, t1 = fronts[steps[0]][2], fronts[steps[-1]][2]
     steps = [s for s in steps if fronts[s][2] >= t0 + 0.3 * (t1 - t0) - 1e-9 and fronts[s][0] == fronts[s][0]]

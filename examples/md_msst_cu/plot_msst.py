@@ -4,34 +4,35 @@ P_zz, V/V0 and temperature of the cell (thermo.csv of each run), with the piston
 at the same shock speed (hugoniot_shock.toml of a piston run) as dashed lines.
 Usage: /usr/bin/python3 plot_msst.py OUT.png PISTON_HUGONIOT_TOML RUN_DIR[=LABEL] [RUN_DIR[=LABEL] ...]
 """
-import csv
-import json
+import os
 import sys
-import tomllib
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run, read_toml  # noqa: E402  (the shared run-folder readers)
 
 AMU_A3_TO_G_CC = 1.66053904
 
 
-def read_thermo(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    rows = [r for r in rows if r["msst_lagrangian_speed_A_ps"] not in ("nan", "")]
-    return rows
+def read_thermo(run):
+    """The rows of thermo.csv written by the msst stage (msst_lagrangian_speed_A_ps a number)."""
+    thermo = run.thermo
+    return thermo[~np.isnan(thermo["msst_lagrangian_speed_A_ps"])]
 
 
-def series(run):
-    rows = read_thermo(f"{run}/thermo.csv")
+def series(folder):
+    run = Run.open(folder)
+    rows = read_thermo(run)
     # The stage's first row (its start) belongs to the stage before, which wrote that step: the
     # stage starts one row interval before the first MSST row; V0 is the fix's (summary.json).
     t1, t2 = float(rows[0]["time_ps"]), float(rows[1]["time_ps"])
     t0 = t1 - (t2 - t1)
-    with open(f"{run}/summary.json") as f:
-        v0 = json.load(f)["results"]["msst"][0]["v0_A3"]
+    v0 = run.summary["results"]["msst"][0]["v0_A3"]
     return {"t": [0.0] + [float(r["time_ps"]) - t0 for r in rows],
             "up_km_s": [0.0] + [0.1 * float(r["msst_lagrangian_speed_A_ps"]) for r in rows],
             "pressure_GPa": [float("nan")] + [1e-4 * float(r["pzz_bar"]) for r in rows],
@@ -41,8 +42,7 @@ def series(run):
 
 def main():
     out, piston_file = sys.argv[1], sys.argv[2]
-    with open(piston_file, "rb") as f:
-        piston = tomllib.load(f)
+    piston = read_toml(piston_file)
     fig, axes = plt.subplots(2, 2, figsize=(9, 6), sharex=True)
     panels = [(axes[0, 0], "up_km_s", "Up (km/s)"), (axes[0, 1], "pressure_GPa", "P_zz (GPa)"),
               (axes[1, 0], "vratio", "V/V0"), (axes[1, 1], "temperature_K", "T (K)")]

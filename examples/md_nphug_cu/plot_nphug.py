@@ -2,14 +2,17 @@
 for each run's hug stage, (c) the Hugoniot points in the Us-Up plane beside the piston sweep of
 docs/md-validation.md and the MSST state of examples/md_msst_cu (numbers copied from there).
 Usage: plot_nphug.py OUT.png RUN_DIR..."""
-import csv
-import json
+import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
 
 # docs/md-validation.md, section 2 (shockfield piston sweep): piston speed, Up, Us, Us standard error.
 PISTON = [(0.5, 0.5057, 4.983, 0.050), (1.0, 1.0059, 5.386, 0.034), (1.5, 1.5097, 5.964, 0.026),
@@ -19,17 +22,18 @@ MSST = (1.568, 5.964)
 
 
 def read_thermo(run):
-    with open(f"{run}/thermo.csv") as f:
-        rows = [r for r in csv.DictReader(f) if r["nphug_dhugoniot_K"] != "nan"]
-    return rows
+    """The rows of thermo.csv written by the hug stage (nphug_dhugoniot_K a number)."""
+    thermo = run.thermo
+    return thermo[~np.isnan(thermo["nphug_dhugoniot_K"])]
 
 
 def main():
     out, runs = sys.argv[1], sys.argv[2:]
     fig, (ax_p, ax_t, ax_h) = plt.subplots(1, 3, figsize=(15, 4.5))
-    for run in runs:
+    for folder in runs:
+        run = Run.open(folder)
         rows = read_thermo(run)
-        result = json.load(open(f"{run}/summary.json"))["results"]["nphug"][-1]
+        result = run.summary["results"]["nphug"][-1]
         label = f"{result['target_pressure_GPa']:.1f} GPa"
         t0 = float(rows[0]["time_ps"])
         t = [float(r["time_ps"]) - t0 for r in rows]

@@ -12,14 +12,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "python"))
+from shockfield.run import Run, read_toml  # noqa: E402  (the shared run-folder readers)
+
 run, out, root = pathlib.Path(sys.argv[1]), sys.argv[2], pathlib.Path(sys.argv[3])
-t = np.genfromtxt(run / "thermo.csv", delimiter=",", names=True)
+t = Run.open(run).thermo
 natoms = 864
 a = (4 * t["volume_A3"] / natoms) ** (1 / 3)
 ref = dict(line.split()[:2] for line in (root / "tests/fixtures/lammps_npt/cu_300K_0bar.ref").read_text().splitlines())
 a_lammps = (4 * float(ref["volume"]) / 500) ** (1 / 3)
-c44 = float(next(line.split("=")[1] for line in (root / "tests/fixtures/lammps_elastic/results.toml").read_text()
-                 .splitlines() if line.startswith("c44_GPa")))
+c44 = read_toml(root / "tests/fixtures/lammps_elastic/results.toml")["c44_GPa"]
 shear_end = 2.0  # ps: stage "shear", 1000 steps of 2 fs
 late = t["time_ps"] >= t["time_ps"][-1] - 4.0
 

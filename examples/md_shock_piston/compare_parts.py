@@ -4,45 +4,35 @@ final.data (run.sh): the Hugoniot states, the final thermo row and the final pro
 both final.data files on the same bins (7.23 Å from the piston face).
 
     compare_parts.py ONE_PART_RUN PART2_RUN
+
+final.data is read by the compiled module: the package of the build tree (build/release/python)
+must be on PYTHONPATH, as run.sh sets it.
 """
 import sys
-import tomllib
 
 import numpy as np
+
+from shockfield.run import Run, read_lammps_data  # noqa: E402  (the shared readers; PYTHONPATH: the build tree's package)
 
 KB = 8.617333262e-5            # eV/K
 MVV2E = 1.0364269e-4           # amu Å²/ps² → eV
 AMU_A3_TO_G_CC = 1.66053906660  # amu/Å³ → g/cm³
 
 
-def read_data(path):
-    """Box (3, 2), masses per type, and id-sorted (type, x (n, 3), v (n, 3)) of a data file."""
-    lines = open(path).read().splitlines()
-    box, masses, atoms, vel, section = np.zeros((3, 2)), {}, {}, {}, None
-    for line in lines[1:]:
-        words = line.split("#")[0].split()
-        if not words:
-            continue
-        if len(words) == 4 and words[2].endswith("lo"):
-            box["xyz".index(words[2][0])] = [float(words[0]), float(words[1])]
-        elif words[0] in ("Masses", "Atoms", "Velocities"):
-            section = words[0]
-        elif section == "Masses":
-            masses[int(words[0])] = float(words[1])
-        elif section == "Atoms":
-            atoms[int(words[0])] = (int(words[1]), [float(w) for w in words[2:5]])
-        elif section == "Velocities":
-            vel[int(words[0])] = [float(w) for w in words[1:4]]
-    ids = sorted(atoms)
-    types = np.array([atoms[i][0] for i in ids])
-    return box, masses, types, np.array([atoms[i][1] for i in ids]), np.array([vel[i] for i in ids])
+def read_data(run):
+    """The run's final.data (the library's reader, with the run's boundary codes: atoms mapped into
+    the periodic x and y only): box (a shockfield.box.Box), and in id order the atoms' masses,
+    positions (n, 3) and velocities (n, 3)."""
+    system = Run.open(run).config["system"]
+    data = read_lammps_data(f"{run}/final.data", system.get("boundary") or system["lattice"]["boundary"])
+    order = np.argsort(data["ids"])
+    return data["box"], data["masses"][data["types"][order] - 1], data["positions"][order], data["velocities"][order]
 
 
-def profile(path, origin, width, nbins):
+def profile(run, origin, width, nbins):
     """Per bin along z: count, density (g/cm³), mean vz (km/s), temperature (K, c.o.m. removed)."""
-    box, masses, types, x, v = read_data(path)
-    m = np.array([masses[t] for t in types])
-    area = (box[0, 1] - box[0, 0]) * (box[1, 1] - box[1, 0])
+    box, m, x, v = read_data(run)
+    area = (box.hi[0] - box.lo[0]) * (box.hi[1] - box.lo[1])
     k = np.floor((x[:, 2] - origin) / width).astype(int)
     out = np.full((nbins, 4), np.nan)
     for b in range(nbins):
@@ -57,18 +47,18 @@ def profile(path, origin, width, nbins):
 
 
 def last_thermo(run):
-    rows = open(f"{run}/thermo.csv").read().splitlines()
-    names = rows[0].split(",")
-    return dict(zip(names, map(float, rows[-1].split(","))))
+    """The last row of the run's thermo table as {column: value}."""
+    thermo = Run.open(run).thermo
+    return dict(zip(thermo.dtype.names, thermo[-1]))
 
 
 def main(one, part2):
     width = 7.23
     # Common bins: from the lower face of the one-part run's final box (the piston side).
-    origin = read_data(f"{one}/final.data")[0][2, 0]
-    top = max(read_data(f"{r}/final.data")[0][2, 1] for r in (one, part2))
+    origin = read_data(one)[0].lo[2]
+    top = max(read_data(r)[0].hi[2] for r in (one, part2))
     nbins = int(np.ceil((top - origin) / width))
-    a, b = profile(f"{one}/final.data", origin, width, nbins), profile(f"{part2}/final.data", origin, width, nbins)
+    a, b = profile(one, origin, width, nbins), profile(part2, origin, width, nbins)
     both = ~np.isnan(a[:, 0]) & ~np.isnan(b[:, 0])
     print(f"final profiles on {both.sum()} common bins of {width} Å (one part | two parts):")
     for name, col, unit in (("density", 1, "g/cc"), ("vz", 2, "km/s"), ("temperature", 3, "K")):
@@ -82,8 +72,7 @@ def main(one, part2):
     print(f"final thermo: T {ta['temperature_K']:.2f} | {tb['temperature_K']:.2f} K, PE {ta['pe_eV']:.3f} | {tb['pe_eV']:.3f} eV, "
           f"KE {ta['ke_eV']:.3f} | {tb['ke_eV']:.3f} eV, Pzz {ta['pzz_bar']:.1f} | {tb['pzz_bar']:.1f} bar, "
           f"rebuilds {ta['neighbor_rebuilds']:.0f} | {tb['neighbor_rebuilds']:.0f}")
-    ha = tomllib.load(open(f"{one}/hugoniot_shock.toml", "rb"))
-    hb = tomllib.load(open(f"{part2}/hugoniot_shock.toml", "rb"))
+    ha, hb = Run.open(one).toml("hugoniot_shock"), Run.open(part2).toml("hugoniot_shock")
     print("Hugoniot (one part over 2.5 ps | part 2 alone over its 1.2 ps):")
     for key in ("us_km_s", "up_km_s", "pressure_GPa", "density_g_cc", "temperature_K"):
         if key in ha and key in hb:

@@ -16,4 +16,4 @@ piston=$(tail -1 "$runs/part1/shock_front_shock.csv" | cut -d, -f4)
 data="$(cd "$runs/part1" && pwd)/final.data"
 "$bin" run "$here/case_part2.toml" -o "$runs/part2" -j2 --set "system.data_file=\"$data\"" \
   --set "stage[0].piston.position=$piston" | tail -1
-/usr/bin/python3 "$here/compare_parts.py" "$runs/run" "$runs/part2"
+PYTHONPATH="${PYTHONPATH:-$(cd "$here/../.." && pwd)/build/release/python}" /usr/bin/python3 "$here/compare_parts.py" "$runs/run" "$runs/part2"

@@ -1,18 +1,20 @@
 """The void of examples/md_void_shock_111 against time: its missing volume and the volume of the
 polyhedron through the atoms around it (analyze atoms --voids, voids.csv), 0 in the frames where
 no void is found. Usage: plot_void.py VOIDS_DIR RUN_DIR OUT.png"""
-import csv
 import os
 import sys
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import read_csv  # noqa: E402  (the shared reader; VOIDS_DIR is no run folder)
 
 voids_dir, run_dir, out = sys.argv[1:4]
 dt, shock_start = 0.001, 500          # ps per step; the piston starts at step 500 (case.toml)
 steps = sorted(int(f.split(".")[1]) for f in os.listdir(os.path.join(run_dir, "dumps")) if f.startswith("dump."))
-rows = list(csv.DictReader(open(os.path.join(voids_dir, "voids.csv"))))
+rows = read_csv(os.path.join(voids_dir, "voids.csv"))
 missing = {s: 0.0 for s in steps}
 poly = {s: 0.0 for s in steps}
 for r in rows:

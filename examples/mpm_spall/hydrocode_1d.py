@@ -109,16 +109,17 @@ def pullback(t, u, speed=200.0):
 def figure(out, mpm_run, shear):
     """u_fs(t): the MPM run of hydrodynamic.toml, this code at its cell size and at 10 µm with and
     without the two experiments, and without the spall model."""
-    import csv
+    import os
+    import sys
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+    from shockfield.run import Run  # the shared run-folder reader
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7.5, 4.6))
     if mpm_run:
-        with open(f"{mpm_run}/series.csv") as f:
-            rows = list(csv.DictReader(f))
-        t = np.array([float(r["time_s"]) for r in rows])
-        u = np.array([float(r["top_h25um_vy_mean_m_s"]) for r in rows])
+        series = Run.open(mpm_run).series
+        t, u = series["time_s"], series["top_h25um_vy_mean_m_s"]
         _, dufs, _ = pullback(t, u)
         ax.plot(t * 1e9, u, "k", lw=2, label=f"MPM, 0.1 mm cells: {0.5 * RHO0 * C0 * dufs / 1e9:.2f} GPa")
     cases = [(1e-4, True, False, 1e9, "1D, 0.1 mm"), (1e-5, True, False, 1e9, "1D, 10 µm"),

@@ -26,11 +26,14 @@ E = 72 GPa, ρ = 2440 kg/m³: c_R = c_s (0.862 + 1.14ν)/(1 + ν), Viktorov's fi
 unless the crack ran past the notch below c_R; --check-branching also needs a branch.
 """
 import argparse
-import csv
 import math
+import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
 
 E, RHO, NU = 72e9, 2440.0, 1.0 / 3.0
 C_S = math.sqrt(E / (2.0 * (1.0 + NU)) / RHO)
@@ -41,11 +44,9 @@ SYMMETRY_VELOCITY = 1e-6
 
 
 def frames(run):
-    with open(f"{run}/profiles/index.csv") as f:
-        rows = list(csv.DictReader(f))
-    for row in rows:
-        d = np.genfromtxt(f"{run}/profiles/profile_{row['profile']}.csv", delimiter=",", names=True)
-        yield float(row["time_s"]), d
+    """(time, profile) of each profile of the run (profiles/index.csv), in time order."""
+    for profile in Run.open(run).frames(kind="profiles"):
+        yield profile.time, profile.data
 
 
 def branch_runs(x, y, crack, column, gap):

@@ -16,11 +16,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "python"))
+from shockfield.run import Run  # noqa: E402  (the shared run-folder reader)
+
 D = 0.25
 runs = Path(sys.argv[1])
 fig, ax = plt.subplots(figsize=(6, 4))
 for a, colour in ((0.45, "C0"), (0.5, "C1")):
-    data = np.genfromtxt(runs / f"a{a}" / "series.csv", delimiter=",", names=True)
+    data = Run.open(runs / f"a{a}").series
     t, R = data["time"], data["equivalent_radius"]
     if a != 0.5:
         R = np.sqrt(R**2 - np.pi**2 * 2 * D / 3)  # the xi = 1/2 level

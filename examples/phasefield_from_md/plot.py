@@ -3,15 +3,14 @@ volume), the law it was made with, the law the bridge fitted on t <= t_fit, and 
 model run from the MD frame at t_fit (radius of its xi > 1/2 volume) -> compare.png; prints the
 fitted c0 and D against the true ones and the largest deviation of the phase field from the MD.
 usage: plot.py RUNS T_FIT TAU_PS. CHECK=1: exit 1 when a number leaves the bounds of README.md."""
-import csv
 import math
 import os
 import sys
-import tomllib
 
 import numpy as np
 
 from growth_io import fitted, md_radius
+from shockfield.run import Run  # the shared run-folder reader (growth_io puts it on the path)
 
 C0, D = 1.0, 4.0  # the law generate.py used (Å/ps, Å²/ps)
 runs, t_fit, tau = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
@@ -31,11 +30,10 @@ def law(R0, c0, d, t):  # RK4 of dR/dt = c0 - 2D/R from R0 at t[0]
 
 tm, Rm = md_radius(f"{runs}/analysis/tracks.csv")
 fit, c0, c0_e, d, d_e = fitted(f"{runs}/fe_pf.toml")
-series = list(csv.DictReader(open(f"{runs}/pf/series.csv")))
-resolved = tomllib.load(open(f"{runs}/pf/config.resolved.toml", "rb"))
-n, dx = resolved["grid"]["nodes"], resolved["grid"]["spacing"]
-tp = t_fit + tau * np.array([float(r["time"]) for r in series])
-Rp = np.cbrt(3 * np.array([float(r["volume_fraction"]) for r in series]) * np.prod(n) * dx**3 / (4 * math.pi))
+pf = Run.open(f"{runs}/pf")
+n, dx = pf.config["grid"]["nodes"], pf.config["grid"]["spacing"]
+tp = t_fit + tau * pf.series["time"]
+Rp = np.cbrt(3 * pf.series["volume_fraction"] * np.prod(n) * dx**3 / (4 * math.pi))
 later = tm > t_fit
 dev = np.interp(tm[later], tp, Rp) / Rm[later] - 1
 tt = np.linspace(0, tm[-1], 300)

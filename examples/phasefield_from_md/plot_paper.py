@@ -4,21 +4,22 @@ of their atomic volume) beside the sharp-front run of the paper's law fitted to 
 and the largest deviation of the run from the MD radii. The well-posed law's fit of the same
 series (D < 0) was refused by the bridge (refused.txt).
 usage: plot_paper.py RUNS. CHECK=1: exit 1 when the run leaves 3x the fit's rms residual."""
-import csv
 import os
 import sys
 
 import numpy as np
 
 from growth_io import fitted, md_radius
+from shockfield.run import Run  # the shared run-folder reader (growth_io puts it on the path)
 
 runs = sys.argv[1]
 tm, Rm = md_radius(f"{runs}/decelerating/analysis/tracks.csv")
 fit, c0, c0_e, d, d_e = fitted(f"{runs}/paper.toml")
 rms = fit["residual_rms_m"] * 1e10
-run = [r for r in csv.DictReader(open(f"{runs}/sharp/tracks.csv")) if r["track"] == "1"]
-ts = tm[0] + np.array([float(r["time"]) for r in run])
-Rs = np.array([float(r["L"]) for r in run])
+tracks = Run.open(f"{runs}/sharp").table("tracks")
+run = tracks[tracks["track"] == 1]
+ts = tm[0] + run["time"]
+Rs = run["L"]
 dev = np.interp(tm, ts, Rs) - Rm
 refused = open(f"{runs}/refused.txt").read()
 d_ac = refused.split("fitted D = ")[1].split(" A^2/ps")[0] if "fitted D = " in refused else "?"

@@ -4,29 +4,28 @@
 (bottom), from series.csv and the last frame.
 
     plot.py OUT.png RUN_DIR [RUN_DIR ...]
+
+The fields are read by the compiled module: the package of the build tree (build/release/python)
+must be on PYTHONPATH, as run.sh sets it.
 """
-import csv, glob, os, re, sys
+import os
+import sys
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
-from shockfield.vtk_arrays import read_vtk_arrays  # noqa: E402
+from shockfield.run import Run  # (the shared run-folder reader; PYTHONPATH: the build tree's package)
 
 out, runs = sys.argv[1], sys.argv[2:]
 fig, axes = plt.subplots(2, len(runs), figsize=(3.2 * len(runs), 6.4))
 for col, run in enumerate(runs):
     name = os.path.basename(os.path.normpath(run))
-    rows = list(csv.DictReader(open(os.path.join(run, "series.csv"))))
-    s = {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
-    last = max(glob.glob(os.path.join(run, "fields", "xi_*.vti")), key=lambda f: int(re.search(r"(\d+)\.vti$", f).group(1)))
-    head = open(last, "rb").read(4000).decode("latin-1")
-    ext = [int(v) for v in re.search(r'WholeExtent="([^"]+)"', head).group(1).split()]
-    h = float(re.search(r'Spacing="([^ "]+)', head).group(1))
-    n = [ext[1] + 1, ext[3] + 1, ext[5] + 1]
-    xi = read_vtk_arrays(last)["xi"].reshape(n[2], n[1], n[0])
+    s = Run.open(run).series
+    last = Run.open(run).last_frame(array="xi", kind="fields")
+    xi, h = last.data, last.extra["spacing"][0]  # xi shaped (nz, ny, nx)
+    n = xi.shape[::-1]
     cy = int(round(s["center_y"][-1] / h)) % n[1]
     slab = xi[:, cy, :]  # z rows, x columns
     top = axes[0, col]
@@ -46,8 +45,8 @@ fig.suptitle("Growth shapes of an hcp domain (a = 0.2, D = 1): isotropic, and an
 fig.tight_layout()
 fig.savefig(out, dpi=110)
 for run in runs:
-    rows = list(csv.DictReader(open(os.path.join(run, "series.csv"))))
-    first, last = rows[0], rows[-1]
+    series = Run.open(run).series
+    first, last = series[0], series[-1]
     print(f"{os.path.basename(os.path.normpath(run)):10s} t = {float(last['time']):5.1f}: semi-axes "
           f"{float(first['axis_a']):5.2f} {float(first['axis_b']):5.2f} {float(first['axis_c']):5.2f} -> "
           f"{float(last['axis_a']):5.2f} {float(last['axis_b']):5.2f} {float(last['axis_c']):5.2f}, long axis "

@@ -11,4 +11,4 @@ set -eu
 "$bin" run "$here/ellipsoid.toml" -o "$runs/ellipsoid" --overwrite -q
 "$bin" run "$here/case.toml" -o "$runs/disc" --overwrite -q --set 'model.anisotropy=[1.0, 1.0, 0.25]'
 "$bin" run "$here/case.toml" -o "$runs/column" --overwrite -q --set 'model.anisotropy=[0.25, 0.25, 1.0]'
-/usr/bin/python3 "$here/plot.py" "$here/shapes.png" "$runs/sphere" "$runs/ellipsoid" "$runs/disc" "$runs/column"
+PYTHONPATH="${PYTHONPATH:-$(cd "$here/../.." && pwd)/build/release/python}" /usr/bin/python3 "$here/plot.py" "$here/shapes.png" "$runs/sphere" "$runs/ellipsoid" "$runs/disc" "$runs/column"

@@ -46,9 +46,11 @@ def _malformed(what):
 
 
 @_malformed("a CSV table with a header line")
-def read_csv(path):
+def read_csv(path, text=()):
     """A CSV file with a header line (lines starting with '#' skipped) as a structured array: a
-    column whose every value is a number (an empty value: NaN) is float64, any other str."""
+    column whose every value is a number (an empty value: NaN) is float64, any other str, and so
+    are the columns named in ``text`` (a text column whose rows all happen to read as numbers,
+    e.g. burgers.csv's ``b`` = "0" for a circuit that closes, kept as the file writes it)."""
     with open(path, newline="") as f:
         rows = [row for row in csv.reader(line for line in f if not line.startswith("#")) if row]
     if not rows:
@@ -57,17 +59,21 @@ def read_csv(path):
     for number, row in enumerate(body, start=2):
         if len(row) != len(header):
             raise InputError(f"{path}: row {number} has {len(row)} values for {len(header)} columns")
-    columns = []
-    for k, name in enumerate(header):
-        values = [row[k] for row in body]
-        try:
-            columns.append(np.array([float(v) if v.strip() else np.nan for v in values], dtype=np.float64))
-        except ValueError:
-            columns.append(np.array(values, dtype=str))
+    columns = [_column([row[k] for row in body], as_text=name in text) for k, name in enumerate(header)]
     out = np.empty(len(body), dtype=[(name, c.dtype) for name, c in zip(header, columns)])
     for name, c in zip(header, columns):
         out[name] = c
     return out
+
+
+def _column(values, as_text):
+    """One CSV column: float64 when every value is a number (an empty one NaN) and not as_text, else str."""
+    if not as_text:
+        try:
+            return np.array([float(v) if v.strip() else np.nan for v in values], dtype=np.float64)
+        except ValueError:
+            pass
+    return np.array(values, dtype=str)
 
 
 @_malformed("TOML")
@@ -221,18 +227,29 @@ class Run:
         """The CSV files of the folder (relative names), sorted."""
         return sorted(str(p.relative_to(self.folder)) for p in self.folder.rglob("*.csv"))
 
-    def table(self, name, pandas=False):
-        """The CSV file ``name`` (relative to the folder, ".csv" optional) as a structured array,
-        or a pandas DataFrame with ``pandas=True``. InputError naming the tables the run holds
-        when it has no such file."""
+    def table(self, name, pandas=False, text=()):
+        """The CSV file ``name`` (relative to the folder, ".csv" optional) as a structured array
+        (the columns named in ``text`` as str, read_csv; with pandas their dtype str), or a pandas DataFrame with
+        ``pandas=True``. InputError naming the tables the run holds when it has no such file."""
         path = self.folder / (name if name.endswith(".csv") else name + ".csv")
         if not path.is_file():
             raise InputError(f"{self.folder}: this {self.method} run has no {path.name}; its tables: "
                              f"{', '.join(self.tables()) or 'none'}")
         if pandas:
             import pandas as pd  # optional
-            return pd.read_csv(path, comment="#")
-        return read_csv(path)
+            return pd.read_csv(path, comment="#", **({"dtype": {name: str for name in text}} if text else {}))
+        return read_csv(path, text)
+
+    def toml(self, name):
+        """The TOML file ``name`` of the folder (relative, ".toml" optional: hugoniot_shock.toml,
+        hugoniot_fit.toml, ...) as a dict. InputError naming the TOML files the run holds when it
+        has no such file."""
+        path = self.folder / (name if name.endswith(".toml") else name + ".toml")
+        if not path.is_file():
+            held = sorted(str(p.relative_to(self.folder)) for p in self.folder.rglob("*.toml"))
+            raise InputError(f"{self.folder}: this {self.method} run has no {path.name}; its TOML files: "
+                             f"{', '.join(held) or 'none'}")
+        return read_toml(path)
 
     @property
     def thermo(self):

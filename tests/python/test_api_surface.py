@@ -169,7 +169,9 @@ class Pandas(unittest.TestCase):
             stand_in.read_csv = lambda path, **options: calls.append((pathlib.Path(path), options)) or "frame"
             with mock.patch.dict(sys.modules, {"pandas": stand_in}):
                 self.assertEqual(run.table("thermo", pandas=True), "frame")
-            self.assertEqual(calls, [(folder / "thermo.csv", {"comment": "#"})])
+                run.table("thermo", pandas=True, text=("step",))
+            self.assertEqual(calls, [(folder / "thermo.csv", {"comment": "#"}),
+                                     (folder / "thermo.csv", {"comment": "#", "dtype": {"step": str}})])
 
 
 if __name__ == "__main__":

@@ -264,6 +264,36 @@ class Plot(unittest.TestCase):
         self.assertEqual(set(read_points(points.file).dtype.names), set(points.data.dtype.names))
         self.assertNotIn("points", read_csv(pd.folder / "series.csv").dtype.names)
 
+    def test_toml_accessor(self):
+        """Run.toml (the examples' hugoniot_*.toml) against tomllib on every TOML file of a run; a
+        missing one is refused naming the TOML files the run holds."""
+        for name in ("md", "pd"):
+            run = shockfield.Run.open(self.folder(name))
+            held = sorted(run.folder.rglob("*.toml"))
+            self.assertIn(run.folder / "config.resolved.toml", held)
+            for path in held:
+                with open(path, "rb") as f:
+                    self.assertEqual(run.toml(str(path.relative_to(run.folder))), tomllib.load(f), path)
+            self.assertEqual(run.toml("config.resolved"), run.config)
+            with self.assertRaisesRegex(shockfield.InputError, "no hugoniot_nothing.toml; its TOML files: .*config.resolved.toml"):
+                run.toml("hugoniot_nothing")
+
+    def test_text_columns(self):
+        """read_csv / Run.table(text=...): a text column whose rows all read as numbers (burgers.csv's
+        b = "0" for a closed circuit) stays the file's text; without it the column is float64."""
+        folder = pathlib.Path(self.tmp.name) / "text_columns"
+        folder.mkdir()
+        (folder / "config.resolved.toml").write_bytes((self.folder("md") / "config.resolved.toml").read_bytes())
+        (folder / "burgers.csv").write_text("circuit,b,kind,max_step_error\n1,0,none,0.4569\n2,0,none,1e-05\n")
+        run = shockfield.Run.open(folder)
+        inferred, kept = run.table("burgers"), run.table("burgers", text=("b", "max_step_error"))
+        self.assertEqual(inferred["b"].dtype, np.float64)
+        self.assertEqual(list(kept["b"]), ["0", "0"])
+        self.assertEqual(list(kept["max_step_error"]), ["0.4569", "1e-05"])
+        np.testing.assert_array_equal(kept["circuit"], [1.0, 2.0])
+        self.assertEqual(list(kept["kind"]), list(inferred["kind"]))
+        self.assertEqual(read_csv(folder / "burgers.csv", text=("b",))["b"].dtype.kind, "U")
+
     def test_readers_refuse_mutated_files(self):
         """Mutation fuzzing of the shared reader: every kind of file with random bytes replaced,
         inserted, deleted or cut off (seeded) is read or refused with InputError naming it, never
