@@ -76,8 +76,7 @@ DIMENSIONLESS = {"step", "steps", "profile", "grain", "bin", "particles", "plast
                  f"axis{k}_{d}" for k in (1, 2, 3) for d in "xyz"}
 # Files known to break the unit rule, with the reason; each entry must still break it. The last CSV
 # and JSON ones (MD's clusters.csv and structures.csv, PD's summary.json) follow it since issue 15.
-NOT_YET_UNIFORM = {("dbm", "grid.pvd"): "dbm/run_output.cpp does not yet name the .pvd's time_units",
-                   ("dbm", "grid_*.vti"): "dbm/run_output.cpp does not yet name the grid's length_units"}
+NOT_YET_UNIFORM = {}
 PER_MISSING_LABELS = ("_per_m", "_per_m2")
 
 # The tables of `shockfield analyze minkowski|similarity|stats` (docs/conventions.md, "Field analysis

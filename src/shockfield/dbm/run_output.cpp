@@ -34,7 +34,7 @@ RunOutput::RunOutput(const fs::path& folder, const DbmOutputSpec& spec, const Si
   if (spec.field_interval > 0.0) {
     fs::create_directories(folder / "fields");
     const double keep_time = resumed ? resumed->time() : 0.0;
-    grid_pvd_ = io::PvdSeries(folder / "grid.pvd", resumed ? &keep_time : nullptr);
+    grid_pvd_ = io::PvdSeries(folder / "grid.pvd", resumed ? &keep_time : nullptr, "1");  // model time units
   }
 }
 
@@ -79,6 +79,7 @@ void RunOutput::write_profile(const Simulation& sim, std::int64_t index) {
 
 void RunOutput::write_fields(const Simulation& sim) {
   io::VtkImage img = macro_cell_image(sim.lattice(), [&](int i, int j) { return sim.macro(i, j); });
+  img.length_units = "1";  // lengths in the model's units, as every DBM quantity
   if (gls_) {
     for (io::VtkArray& a : gls_->field_arrays()) img.cell_data.push_back(std::move(a));
   } else {
