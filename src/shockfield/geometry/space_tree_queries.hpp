@@ -21,10 +21,9 @@ double box_distance2(const Tree& tree, typename Tree::Id id, const std::array<do
 }
 
 /// MS2's range of a cube for the squared distance to q: m(b) = distance to its region, and no
-/// M(b) (+inf): depth first with the nearest sub-cube first, the first leaf already bounds the
-/// search better than the farthest points of the cubes ranked on the way (measured: computing
-/// M(b) cost 10-15% of a nearest query and pruned nothing more). Offers the form over all
-/// sub-cubes at once (sub_cube_distances2).
+/// M(b) (+inf): depth first with the nearest sub-cube first, the first leaf reached already
+/// bounds the search, so the distance to a cube's farthest point is not worth computing for
+/// every sub-cube ranked. Offers the form over all sub-cubes at once (sub_cube_distances2).
 template <int N>
 auto distance2_range(const std::array<double, N>& q) {
   return Overloaded{
