@@ -10,14 +10,24 @@ namespace shockfield::geometry {
 
 template <int N, SpaceTreeAdaptor<N> A>
 void SpaceTree<N, A>::make_root(const Point& lo, const Point& hi) {
-  // A dyadic root: its half-side a power of two at least the box's longest side, its centre a
-  // multiple of the half-side, so that every sub-cube's centre (centre ± half/2) is exact and a
-  // point's cube by the comparisons c >= centre always holds it by |c − centre| <= half.
+  // A dyadic root: its half-side a power of two, its centre a multiple of the half-side, so that
+  // every sub-cube's centre (centre ± half/2) is exact and a point's cube by the comparisons
+  // c >= centre always holds it by |c − centre| <= half. The smallest such cube that holds the
+  // box (half-sides from about a quarter of the box's longest side up; a half-side of at least
+  // the longest side always does), so that no search walks through cubes of one sub-cube above
+  // the objects (the unit cube: root [0, 1]³, not [−2, 2]³).
   double extent = 0.0;
   for (int k = 0; k < N; ++k) extent = std::max(extent, hi[k] - lo[k]);
-  const double half = std::ldexp(1.0, std::ilogb(extent > 0.0 ? extent : 1.0) + 1);
+  double half = std::ldexp(1.0, std::ilogb(extent > 0.0 ? extent : 1.0) - 1);
   Point centre;
-  for (int k = 0; k < N; ++k) centre[k] = std::round(0.5 * (lo[k] + hi[k]) / half) * half;
+  for (;; half *= 2.0) {
+    bool holds = true;
+    for (int k = 0; k < N; ++k) {
+      centre[k] = std::round(0.5 * (lo[k] + hi[k]) / half) * half;
+      holds &= lo[k] >= centre[k] - half && hi[k] <= centre[k] + half;
+    }
+    if (holds) break;
+  }
   root_ = new_node(centre, half, -1);
   update_resolution(centre, half);
 }
