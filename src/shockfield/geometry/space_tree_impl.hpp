@@ -10,20 +10,23 @@ namespace shockfield::geometry {
 
 template <int N, SpaceTreeAdaptor<N> A>
 void SpaceTree<N, A>::make_root(const Point& lo, const Point& hi) {
-  // A dyadic root: its half-side a power of two, its centre a multiple of the half-side, so that
-  // every sub-cube's centre (centre ± half/2) is exact and a point's cube by the comparisons
-  // c >= centre always holds it by |c − centre| <= half. The smallest such cube that holds the
-  // box (half-sides from about a quarter of the box's longest side up; a half-side of at least
-  // the longest side always does), so that no search walks through cubes of one sub-cube above
-  // the objects (the unit cube: root [0, 1]³, not [−2, 2]³).
+  // A dyadic root: its half-side a power of two, its centre a multiple of half/64 (a power of
+  // two), so that every sub-cube's centre (centre ± half/2, ± half/4, ...) is exact down to the
+  // resolution limit and a point's cube by the comparisons c >= centre always holds it by
+  // |c − centre| <= half. The smallest such cube that holds the box (half-sides from about a
+  // quarter of the box's longest side up; a half-side of at least the longest side always
+  // does), so that no search walks through cubes of one sub-cube above the objects and the
+  // leaves fit the data (the unit cube: root [0, 1]³, not [−2, 2]³; a crystal from −0.1 to 62.9:
+  // [−0.5, 63.5]³, not [−64, 64]³).
   double extent = 0.0;
   for (int k = 0; k < N; ++k) extent = std::max(extent, hi[k] - lo[k]);
   double half = std::ldexp(1.0, std::ilogb(extent > 0.0 ? extent : 1.0) - 1);
   Point centre;
   for (;; half *= 2.0) {
     bool holds = true;
+    const double grid = std::ldexp(half, -6);
     for (int k = 0; k < N; ++k) {
-      centre[k] = std::round(0.5 * (lo[k] + hi[k]) / half) * half;
+      centre[k] = std::round(0.5 * (lo[k] + hi[k]) / grid) * grid;
       holds &= lo[k] >= centre[k] - half && hi[k] <= centre[k] + half;
     }
     if (holds) break;
