@@ -108,7 +108,8 @@ struct TreeCube {
   TreeCube sub_cube(int b, double sub_margin) const {
     TreeCube cube;
     cube.half = 0.5 * half;
-    for (int k = 0; k < N; ++k) cube.centre[k] = centre[k] + ((b >> k & 1) ? cube.half : -cube.half);
+    for (int k = 0; k < N; ++k)
+      cube.centre[k] = centre[k] + ((b >> k & 1) ? cube.half : -cube.half);
     cube.margin = sub_margin;
     return cube;
   }
@@ -182,7 +183,8 @@ struct SpaceTreeOptions {
   /// for objects with an extent. Points: a cube of the 2^n-tree splits into 8 (3D), so its
   /// leaves hold on average between bucket/8 and bucket points; with 64 the uniform trees of
   /// 10^4-10^6 points have leaves of ~20-30 points, and a nearest query opens fewer cubes:
-  /// 1.5-2× the rate of bucket 16 measured in bench/delaunay_bench (bench/RESULTS.md).
+  /// 1.3-1.6× the rate of bucket 16 at 10^4-10^5 uniform points (bench/delaunay_bench
+  /// queries; bench/RESULTS.md).
   std::size_t bucket = 0;
   double resolution = 0.0;   ///< smallest cube half-side (at least 2^-40 of the root's)
 };
