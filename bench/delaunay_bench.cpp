@@ -4,15 +4,19 @@
 //                                        cube of unit cells) with Gaussian thermal displacements
 //                                        of 0.03 per coordinate (seeded), CSV
 //   delaunay_bench delaunay DIM FILE     time of our Delaunay division of the points of FILE
-//   delaunay_bench queries N Q           nearest and radius query rates of the SHT beside
-//                                        nanoflann's kd-tree on the same N points, Q queries;
-//                                        the answers are compared (must be equal)
+//   delaunay_bench queries N Q [fcc]     nearest and radius query rates (per second of the
+//                                        thread's CPU time) of the SHT beside nanoflann's
+//                                        kd-tree on the same N points (uniform, or the
+//                                        perturbed fcc crystal of generate-fcc), Q uniform
+//                                        queries in the points' box; the answers are compared
+//                                        (must be equal)
 // bench/delaunay_compare.sh runs these beside CGAL (cgal_delaunay_peer) and SciPy/Qhull.
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <time.h>
 #include <cstdio>
 #include <fstream>
 #include <nanoflann.hpp>
@@ -31,6 +35,13 @@ namespace {
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// CPU time of the calling thread, s (the machine is shared: wall time measures the load).
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 std::vector<std::array<double, 3>> uniform(std::size_t n, std::uint64_t seed) {
@@ -86,9 +97,15 @@ struct Cloud {  // nanoflann's dataset adaptor
   bool kdtree_get_bbox(B&) const { return false; }
 };
 
-int queries(std::size_t n, std::size_t q) {
-  const auto pts = uniform(n, 1), qs = uniform(q, 2);
-  const double r = std::cbrt(30.0 / (4.18879 * n));  // about 30 points per ball
+int queries(std::size_t n, std::size_t q, bool fcc) {
+  const auto pts = fcc ? perturbed_fcc(n, 11) : uniform(n, 1);
+  // Queries uniform in the points' box (the unit cube, or the crystal's cube of cells).
+  const double side = fcc ? std::cbrt(pts.size() / 4.0) : 1.0;
+  auto qs = uniform(q, 2);
+  for (auto& x : qs)
+    for (double& c : x) c *= side;
+  n = pts.size();
+  const double r = side * std::cbrt(30.0 / (4.18879 * n));  // about 30 points per ball
   auto t0 = Clock::now();
   auto adaptor = sg::points_adaptor<3>(n, [&](std::size_t i, int k) { return pts[i][k]; });
   const auto tree = sg::SpaceTree<3, decltype(adaptor)>::with_all(adaptor);
@@ -108,29 +125,29 @@ int queries(std::size_t n, std::size_t q) {
   constexpr std::size_t kSlices = 20;
   for (std::size_t slice = 0; slice < kSlices; ++slice) {
     const std::size_t from = q * slice / kSlices, to = q * (slice + 1) / kSlices;
-    t0 = Clock::now();
+    double c0 = thread_cpu_seconds();
     for (std::size_t i = from; i < to; ++i) sht_nn[i] = sg::nearest<3>(tree, qs[i]).distance;
-    sht_nearest += seconds_since(t0);
-    t0 = Clock::now();
+    sht_nearest += thread_cpu_seconds() - c0;
+    c0 = thread_cpu_seconds();
     for (std::size_t i = from; i < to; ++i) {
       std::uint32_t idx;
       double d2;
       kd.knnSearch(qs[i].data(), 1, &idx, &d2);
       kd_nn[i] = std::sqrt(d2);
     }
-    kd_nearest += seconds_since(t0);
-    t0 = Clock::now();
+    kd_nearest += thread_cpu_seconds() - c0;
+    c0 = thread_cpu_seconds();
     for (std::size_t i = from; i < to; ++i) sht_found += sg::within_radius<3>(tree, qs[i], r).size();
-    sht_radius += seconds_since(t0);
-    t0 = Clock::now();
+    sht_radius += thread_cpu_seconds() - c0;
+    c0 = thread_cpu_seconds();
     for (std::size_t i = from; i < to; ++i)
       kd_found +=
           kd.radiusSearch(qs[i].data(), r * r, found, nanoflann::SearchParams(32, 0.0f, false));
-    kd_radius += seconds_since(t0);
+    kd_radius += thread_cpu_seconds() - c0;
   }
   std::size_t mismatches = 0;
   for (std::size_t i = 0; i < q; ++i) mismatches += sht_nn[i] != kd_nn[i];
-  std::printf("points %zu queries %zu radius %.5g\n", n, q, r);
+  std::printf("points %zu (%s) queries %zu radius %.5g\n", n, fcc ? "fcc" : "uniform", q, r);
   std::printf("build: sht %.3f s, nanoflann %.3f s\n", sht_build, kd_build);
   std::printf("nearest: sht %.3g /s, nanoflann %.3g /s, ratio %.2f, mismatches %zu\n",
               q / sht_nearest, q / kd_nearest, kd_nearest / sht_nearest, mismatches);
@@ -153,13 +170,14 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (mode == "delaunay" && argc == 4) return argv[2][0] == '2' ? delaunay<2>(argv[3]) : delaunay<3>(argv[3]);
-    if (mode == "queries" && argc == 4) return queries(std::stoull(argv[2]), std::stoull(argv[3]));
+    if (mode == "queries" && (argc == 4 || (argc == 5 && std::string(argv[4]) == "fcc")))
+      return queries(std::stoull(argv[2]), std::stoull(argv[3]), argc == 5);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
   std::fprintf(stderr,
                "usage: delaunay_bench generate DIM N FILE | generate-fcc N FILE | delaunay DIM FILE "
-               "| queries N Q\n");
+               "| queries N Q [fcc]\n");
   return 2;
 }

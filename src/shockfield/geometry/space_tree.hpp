@@ -69,7 +69,12 @@ struct TreeObject<N, true> {
   std::array<double, N> low;
   const std::array<double, N>& lo() const { return low; }
   const std::array<double, N>& hi() const { return low; }
-  double distance2_to(const std::array<double, N>& q) const { return distance2_to_box<N>(q, low, low); }
+  /// |q − p|², bitwise the box distance to the box [p, p] (max(p − q, q − p, 0)² = (p − q)²).
+  double distance2_to(const std::array<double, N>& q) const {
+    double d2 = 0.0;
+    for (int k = 0; k < N; ++k) d2 += (low[k] - q[k]) * (low[k] - q[k]);
+    return d2;
+  }
 };
 
 /// A cube of the tree as the searches see it: its centre and half-side, and the region its
@@ -99,7 +104,57 @@ struct TreeCube {
     }
     return d2;
   }
+  /// Sub-cube b (bit k of b set: the upper half along axis k), its region widened by sub_margin.
+  TreeCube sub_cube(int b, double sub_margin) const {
+    TreeCube cube;
+    cube.half = 0.5 * half;
+    for (int k = 0; k < N; ++k)
+      cube.centre[k] = centre[k] + ((b >> k & 1) ? cube.half : -cube.half);
+    cube.margin = sub_margin;
+    return cube;
+  }
 };
+
+/// Squared distances d2[b] from q to the regions of the 2^N sub-cubes of `cube` (sub-cube b
+/// widened by margins[b]), bitwise equal to cube.sub_cube(b, margins[b]).distance2_to(q). When
+/// no sub-cube has a margin (a tree of points) the distance along axis k is computed once for
+/// the lower half [c − h, c] and once for the upper [c, c + h] and shared by the 2^(N−1)
+/// sub-cubes on that side: 2N distances and 2^N sums of N terms instead of N·2^N distances.
+/// (c ± h is exact in the dyadic tree, so the terms equal those of the sub-cube's own box.)
+template <int N>
+[[gnu::always_inline]] inline void sub_cube_distances2(const TreeCube<N>& cube,
+                                                      const std::array<double, (1 << N)>& margins,
+                                                      const std::array<double, N>& q,
+                                                      std::array<double, (1 << N)>& d2) {
+  constexpr int kChildren = 1 << N;
+  bool margins_zero = true;
+  for (double m : margins) margins_zero &= m == 0.0;
+  if (!margins_zero) {
+    for (int b = 0; b < kChildren; ++b) d2[b] = cube.sub_cube(b, margins[b]).distance2_to(q);
+    return;
+  }
+  std::array<std::array<double, 2>, N> side;  // side[k][upper]: squared distance along axis k
+  for (int k = 0; k < N; ++k) {
+    const double c = cube.centre[k], h = cube.half;
+    const double lower = std::max({(c - h) - q[k], q[k] - c, 0.0});
+    const double upper = std::max({c - q[k], q[k] - (c + h), 0.0});
+    side[k] = {lower * lower, upper * upper};
+  }
+  for (int b = 0; b < kChildren; ++b) {
+    double sum = 0.0;
+    for (int k = 0; k < N; ++k) sum += side[k][b >> k & 1];
+    d2[b] = sum;
+  }
+}
+
+/// One callable made of several lambdas (a search's range or may_contain that also offers the
+/// all-sub-cubes form below).
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
 
 /// Points given coordinate by coordinate: coordinate(i, k) of point i, count points.
 template <int N, class Coordinate>
@@ -124,7 +179,13 @@ concept SpaceTreeAdaptor = requires(const A& a, std::size_t i, std::array<double
 };
 
 struct SpaceTreeOptions {
-  std::size_t bucket = 16;   ///< objects fitting a child that a cube holds before it splits
+  /// Objects fitting a child that a cube holds before it splits; 0: 64 for a tree of points, 16
+  /// for objects with an extent. Points: a cube of the 2^n-tree splits into 8 (3D), so its
+  /// leaves hold on average between bucket/8 and bucket points; with 64 the uniform trees of
+  /// 10^4-10^6 points have leaves of ~20-30 points, and a nearest query opens fewer cubes:
+  /// 1.3-1.6× the rate of bucket 16 at 10^4-10^5 uniform points (bench/delaunay_bench
+  /// queries; bench/RESULTS.md).
+  std::size_t bucket = 0;
   double resolution = 0.0;   ///< smallest cube half-side (at least 2^-40 of the root's)
 };
 
@@ -139,7 +200,9 @@ class SpaceTree {
 
   /// An empty tree over `objects` (nothing inserted).
   SpaceTree(const Adaptor& objects, SpaceTreeOptions options = {})
-      : objects_(&objects), options_(options) {}
+      : objects_(&objects), options_(options) {
+    if (options_.bucket == 0) options_.bucket = kPoints ? 64 : 16;
+  }
 
   /// Establishes the tree holding every object of the adaptor.
   static SpaceTree with_all(const Adaptor& objects, SpaceTreeOptions options = {}) {
@@ -187,7 +250,10 @@ class SpaceTree {
   /// sub-cubes in Morton order), the cubes for which may_contain(cube) is true, skipping the
   /// others with everything below them, and calls visit(id) for each object of a visited cube
   /// with condition(object) true; visit returns false to stop the search. condition (and value
-  /// below) take either the id or the held Object (id and box).
+  /// below) take either the id or the held Object (id and box). may_contain may also offer the
+  /// test of all sub-cubes of a cube at once, may_contain(cube, sub_margins) -> unsigned with
+  /// bit b set when sub-cube b (cube.sub_cube(b, sub_margins[b])) may contain; the search then
+  /// asks that once per opened cube instead of once per sub-cube (the same cubes are visited).
   template <class MayContain, class Condition, class Visit>
   void conditional_search(MayContain&& may_contain, Condition&& condition, Visit&& visit) const;
 
@@ -204,6 +270,11 @@ class SpaceTree {
   /// (k = 1) the smallest M(b) of a cube seen (every cube holds an object); a cube with
   /// m(b) = +inf is never opened. Ties in value are resolved by the lower id (a cube whose m(b)
   /// equals the k-th value is still opened), so the result does not depend on the tree's shape.
+  /// range may also offer the lower bounds of all sub-cubes of a cube at once,
+  /// range(cube, sub_margins, m) filling m[b] for sub-cube b (cube.sub_cube(b, sub_margins[b]));
+  /// the search then asks that once per opened cube and takes M(b) = +inf for sub-cubes (the
+  /// root is ranked by range(cube)). Worth it when M(b) prunes little, as for distances, where
+  /// the nearest-first order finds a good k-th value in the first leaf.
   template <class Range, class Value>
   std::vector<Found> minimum_search(std::size_t k, Range&& range, Value&& value) const {
     std::vector<Found> best;
@@ -224,6 +295,12 @@ class SpaceTree {
       size = std::max(size, o.hi()[k] - o.lo()[k]);
     }
   }
+  /// Whether a range or may_contain offers the form over all sub-cubes of a cube at once.
+  template <class F>
+  static constexpr bool kAllSubCubes =
+      std::is_invocable_v<F&, const TreeCube<N>&, const std::array<double, kChildren>&,
+                          std::array<double, kChildren>&> ||
+      std::is_invocable_r_v<unsigned, F&, const TreeCube<N>&, const std::array<double, kChildren>&>;
   /// condition/value of a search called with the held object, or with its id.
   template <class F>
   static decltype(auto) call_on(F& f, const Object& o) {
@@ -264,12 +341,7 @@ class SpaceTree {
   }
   /// Child b of a cube as the searches see it (from the parent's record alone).
   static TreeCube<N> child_cube(const Node& node, int b) {
-    TreeCube<N> cube;
-    cube.half = 0.5 * node.cube.half;
-    for (int k = 0; k < N; ++k)
-      cube.centre[k] = node.cube.centre[k] + ((b >> k & 1) ? cube.half : -cube.half);
-    cube.margin = node.child_margin[b];
-    return cube;
+    return node.cube.sub_cube(b, node.child_margin[b]);
   }
   /// Asks the processor to bring the first line of cube n's record into cache: a search pushes
   /// the sub-cubes it will open, and their loads then overlap instead of following one another.

@@ -2,6 +2,7 @@
 // SpaceTree's establish/insert/remove and invariant checker (included by space_tree.hpp).
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -9,14 +10,27 @@ namespace shockfield::geometry {
 
 template <int N, SpaceTreeAdaptor<N> A>
 void SpaceTree<N, A>::make_root(const Point& lo, const Point& hi) {
-  // A dyadic root: its half-side a power of two at least the box's longest side, its centre a
-  // multiple of the half-side, so that every sub-cube's centre (centre ± half/2) is exact and a
-  // point's cube by the comparisons c >= centre always holds it by |c − centre| <= half.
+  // A dyadic root: its half-side a power of two, its centre a multiple of half/64 (a power of
+  // two), so that every sub-cube's centre (centre ± half/2, ± half/4, ...) is exact down to the
+  // resolution limit and a point's cube by the comparisons c >= centre always holds it by
+  // |c − centre| <= half. The smallest such cube that holds the box (half-sides from about a
+  // quarter of the box's longest side up; a half-side of at least the longest side always
+  // does), so that no search walks through cubes of one sub-cube above the objects and the
+  // leaves fit the data (the unit cube: root [0, 1]³, not [−2, 2]³; a crystal from −0.1 to 62.9:
+  // [−0.5, 63.5]³, not [−64, 64]³).
   double extent = 0.0;
   for (int k = 0; k < N; ++k) extent = std::max(extent, hi[k] - lo[k]);
-  const double half = std::ldexp(1.0, std::ilogb(extent > 0.0 ? extent : 1.0) + 1);
+  double half = std::ldexp(1.0, std::ilogb(extent > 0.0 ? extent : 1.0) - 1);
   Point centre;
-  for (int k = 0; k < N; ++k) centre[k] = std::round(0.5 * (lo[k] + hi[k]) / half) * half;
+  for (;; half *= 2.0) {
+    bool holds = true;
+    const double grid = std::ldexp(half, -6);
+    for (int k = 0; k < N; ++k) {
+      centre[k] = std::round(0.5 * (lo[k] + hi[k]) / grid) * grid;
+      holds &= lo[k] >= centre[k] - half && hi[k] <= centre[k] + half;
+    }
+    if (holds) break;
+  }
   root_ = new_node(centre, half, -1);
   update_resolution(centre, half);
 }
@@ -280,11 +294,19 @@ void SpaceTree<N, A>::conditional_search(MayContain&& may_contain, Condition&& c
     const Node& node = nodes_[stack.back()];
     stack.pop_back();
     prefetch_objects(node);  // arriving while the sub-cubes are tested
-    for (int b = kChildren - 1; b >= 0; --b)  // popped in Morton order
-      if (node.child[b] >= 0 && may_contain(child_cube(node, b))) {
-        prefetch(node.child[b]);
-        stack.push_back(node.child[b]);
-      }
+    if (node.split) {
+      unsigned open = 0;  // bit b: sub-cube b may contain
+      if constexpr (kAllSubCubes<MayContain>)
+        open = may_contain(node.cube, node.child_margin);
+      else
+        for (int b = 0; b < kChildren; ++b)
+          if (node.child[b] >= 0 && may_contain(child_cube(node, b))) open |= 1u << b;
+      for (int b = kChildren - 1; b >= 0; --b)  // popped in Morton order
+        if ((open >> b & 1) && node.child[b] >= 0) {
+          prefetch(node.child[b]);
+          stack.push_back(node.child[b]);
+        }
+    }
     for (const Object& o : node.objects)
       if (call_on(condition, o) && !visit(o.id)) return;
   }
@@ -325,9 +347,16 @@ void SpaceTree<N, A>::minimum_search_into(std::size_t k, Range&& range, Value&& 
     prefetch_objects(node);  // arriving while the sub-cubes are ranked
     std::array<Open, kChildren> children;
     int count = 0;
+    std::array<double, kChildren> lower_bounds;  // m(b) of every sub-cube, when range gives them
+    if constexpr (kAllSubCubes<Range>)
+      if (node.split) range(node.cube, node.child_margin, lower_bounds);
     for (int b = 0; b < kChildren && node.split; ++b) {
       if (node.child[b] < 0) continue;
-      const auto [m, M] = range(child_cube(node, b));
+      double m, M = std::numeric_limits<double>::infinity();
+      if constexpr (kAllSubCubes<Range>)
+        m = lower_bounds[b];
+      else
+        std::tie(m, M) = range(child_cube(node, b));
       if (!(m < std::numeric_limits<double>::infinity())) continue;  // no finite value inside
       if (k == 1) upper = std::min(upper, M);
       // Insertion into `children`, kept in decreasing m so that the nearest is pushed last.
@@ -335,16 +364,28 @@ void SpaceTree<N, A>::minimum_search_into(std::size_t k, Range&& range, Value&& 
       for (; at > 0 && children[at - 1].m < m; --at) children[at] = children[at - 1];
       children[at] = {m, node.child[b]};
     }
-    for (const Object& o : node.objects) {
-      const double v = call_on(value, o);
-      if (!(v < std::numeric_limits<double>::infinity())) continue;
-      if (best.size() < k) {
-        best.push_back({v, o.id});
-        std::push_heap(best.begin(), best.end(), worse);
-      } else if (worse(Found{v, o.id}, best.front())) {
-        std::pop_heap(best.begin(), best.end(), worse);
-        best.back() = {v, o.id};
-        std::push_heap(best.begin(), best.end(), worse);
+    if (k == 1) {  // the heap of one: a running minimum (the same order: value, then id)
+      Found least = best.empty() ? Found{std::numeric_limits<double>::infinity(), 0} : best.front();
+      for (const Object& o : node.objects) {
+        const double v = call_on(value, o);
+        if (v < least.value || (v == least.value && o.id < least.id)) least = {v, o.id};
+      }
+      if (least.value < std::numeric_limits<double>::infinity()) {
+        best.clear();
+        best.push_back(least);
+      }
+    } else {
+      for (const Object& o : node.objects) {
+        const double v = call_on(value, o);
+        if (!(v < std::numeric_limits<double>::infinity())) continue;
+        if (best.size() < k) {
+          best.push_back({v, o.id});
+          std::push_heap(best.begin(), best.end(), worse);
+        } else if (worse(Found{v, o.id}, best.front())) {
+          std::pop_heap(best.begin(), best.end(), worse);
+          best.back() = {v, o.id};
+          std::push_heap(best.begin(), best.end(), worse);
+        }
       }
     }
     for (int c = 0; c < count; ++c)

@@ -20,10 +20,18 @@ double box_distance2(const Tree& tree, typename Tree::Id id, const std::array<do
   return distance2_to_box<N>(q, lo, hi);
 }
 
-/// MS2's range of a cube for the distance to q: [distance to its region, to its farthest point].
+/// MS2's range of a cube for the squared distance to q: m(b) = distance to its region, and no
+/// M(b) (+inf): depth first with the nearest sub-cube first, the first leaf reached already
+/// bounds the search, so the distance to a cube's farthest point is not worth computing for
+/// every sub-cube ranked. Offers the form over all sub-cubes at once (sub_cube_distances2).
 template <int N>
-std::pair<double, double> distance2_range(const TreeCube<N>& cube, const std::array<double, N>& q) {
-  return {cube.distance2_to(q), cube.farthest2_from(q)};
+auto distance2_range(const std::array<double, N>& q) {
+  return Overloaded{
+      [&q](const TreeCube<N>& cube) {
+        return std::pair{cube.distance2_to(q), std::numeric_limits<double>::infinity()};
+      },
+      [&q](const TreeCube<N>& cube, const std::array<double, (1 << N)>& sub_margins,
+           std::array<double, (1 << N)>& m) { sub_cube_distances2<N>(cube, sub_margins, q, m); }};
 }
 
 struct Neighbour {
@@ -35,8 +43,7 @@ struct Neighbour {
 template <int N, class Tree>
 std::vector<Neighbour> k_nearest(const Tree& tree, const std::array<double, N>& q, std::size_t k) {
   const auto found = tree.minimum_search(
-      k, [&](const TreeCube<N>& cube) { return distance2_range<N>(cube, q); },
-      [&](const typename Tree::Object& o) { return o.distance2_to(q); });
+      k, distance2_range<N>(q), [&](const typename Tree::Object& o) { return o.distance2_to(q); });
   std::vector<Neighbour> out;
   out.reserve(found.size());
   for (const auto& f : found) out.push_back({std::sqrt(f.value), f.id});
@@ -48,8 +55,8 @@ template <int N, class Tree>
 Neighbour nearest(const Tree& tree, const std::array<double, N>& q) {
   InlineVector<typename Tree::Found, 1> found;
   tree.minimum_search_into(
-      1, [&](const TreeCube<N>& cube) { return distance2_range<N>(cube, q); },
-      [&](const typename Tree::Object& o) { return o.distance2_to(q); }, found);
+      1, distance2_range<N>(q), [&](const typename Tree::Object& o) { return o.distance2_to(q); },
+      found);
   if (found.empty()) return {std::numeric_limits<double>::infinity(), 0};
   return {std::sqrt(found.front().value), found.front().id};
 }
@@ -60,7 +67,16 @@ std::vector<std::uint32_t> within_radius(const Tree& tree, const std::array<doub
                                          double r) {
   std::vector<std::uint32_t> out;
   const double r2 = r * r;
-  tree.conditional_search([&](const TreeCube<N>& cube) { return cube.distance2_to(q) <= r2; },
+  const auto may_contain = Overloaded{
+      [&](const TreeCube<N>& cube) { return cube.distance2_to(q) <= r2; },
+      [&](const TreeCube<N>& cube, const std::array<double, (1 << N)>& sub_margins) {
+        std::array<double, (1 << N)> d2;
+        sub_cube_distances2<N>(cube, sub_margins, q, d2);
+        unsigned open = 0;
+        for (int b = 0; b < (1 << N); ++b) open |= unsigned(d2[b] <= r2) << b;
+        return open;
+      }};
+  tree.conditional_search(may_contain,
                           [&](const typename Tree::Object& o) { return o.distance2_to(q) <= r2; },
                           [&](typename Tree::Id id) {
                             out.push_back(id);

@@ -146,10 +146,60 @@ TEST(SpaceTree, SpheresOverFourDecadesOfSize) {
     auto in = within_radius<3>(tree, q, 0.3);
     std::sort(in.begin(), in.end());
     std::vector<std::uint32_t> expected;
-    for (std::uint32_t i = 0; i < s.size(); ++i)
+    double nearest_box2 = INFINITY;
+    for (std::uint32_t i = 0; i < s.size(); ++i) {
       if (box_distance2<3>(tree, i, q) <= 0.09) expected.push_back(i);
+      nearest_box2 = std::min(nearest_box2, box_distance2<3>(tree, i, q));
+    }
     ASSERT_EQ(in, expected);
+    // MS2 on boxes: the sub-cubes have margins, so their distances take the per-sub-cube path.
+    ASSERT_EQ(nearest<3>(tree, q).distance, std::sqrt(nearest_box2)) << "query " << t;
   }
+}
+
+// The distances of all sub-cubes at once (per axis, shared by the sub-cubes on one side) must
+// be bitwise those of each sub-cube's own region, with and without margins, or the searches
+// built on them would prune differently from the per-cube form and from brute force.
+template <int N>
+void check_sub_cube_distances(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  std::uniform_int_distribution<int> level(-6, 3);
+  for (int t = 0; t < 2000; ++t) {
+    TreeCube<N> cube;
+    cube.half = std::ldexp(1.0, level(rng));  // dyadic, as in the tree
+    for (double& c : cube.centre) c = std::round(u(rng) / cube.half) * cube.half;
+    std::array<double, N> q;
+    for (int k = 0; k < N; ++k) q[k] = cube.centre[k] + cube.half * u(rng);
+    std::array<double, (1 << N)> margins{}, fast;
+    if (t % 2 == 1)
+      for (double& m : margins) m = t % 4 == 1 ? 0.0 : 0.1 * cube.half * (u(rng) + 3.0);
+    if (t % 4 == 1) margins[t % (1 << N)] = 1e-3 * cube.half;  // one sub-cube with a margin
+    sub_cube_distances2<N>(cube, margins, q, fast);
+    for (int b = 0; b < (1 << N); ++b)
+      ASSERT_EQ(fast[b], cube.sub_cube(b, margins[b]).distance2_to(q))
+          << "case " << t << " sub-cube " << b;
+  }
+}
+
+TEST(SpaceTree, SubCubeDistancesEqualEachSubCubesOwn) {
+  check_sub_cube_distances<1>(31);
+  check_sub_cube_distances<2>(32);
+  check_sub_cube_distances<3>(33);
+}
+
+TEST(SpaceTree, DefaultBucketOfPointsIs64) {
+  // 65 points in distinct octants of a cube split its root (64 held, the 65th splits); 64 do not.
+  Points<3> pts;
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 65; ++i) pts.push_back({u(rng), u(rng), u(rng)});
+  const auto adaptor = adaptor_of<3>(pts);
+  const auto all = SpaceTree<3, decltype(adaptor)>::with_all(adaptor);
+  EXPECT_GT(all.cube_count(), 1u);
+  EXPECT_EQ(all.check(), "");
+  const auto first64 = points_adaptor<3>(64, [&pts](std::size_t i, int k) { return pts[i][k]; });
+  EXPECT_EQ((SpaceTree<3, decltype(first64)>::with_all(first64).cube_count()), 1u);
 }
 
 TEST(SpaceTree, InsertRemoveSequencesKeepInvariants) {
