@@ -361,9 +361,7 @@ GridField read_vti(const std::string& path, const std::string& text, const std::
 }
 
 std::vector<SeriesEntry> read_pvd(const std::filesystem::path& pvd) {
-  std::ifstream in(pvd);
-  if (!in) throw InputError(fmt::format("{}: cannot open", pvd.string()));
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = read_whole_file(pvd.string());
   std::vector<SeriesEntry> out;
   const auto collection = text.find("<Collection");
   const std::string time_units =
@@ -405,9 +403,7 @@ std::vector<SeriesEntry> read_series(const std::string& path) {
 }
 
 GridField read_grid_field(const std::string& path, const std::string& array) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open", path));
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = read_whole_file(path);
   const std::string ext = lower(std::filesystem::path(path).extension().string());
   GridField f;
   if (ext == ".csv" || ext == ".txt")

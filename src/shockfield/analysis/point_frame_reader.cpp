@@ -5,8 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "shockfield/analysis/vti_binary.hpp"
 #include "shockfield/core/error.hpp"
@@ -16,12 +14,6 @@ namespace shockfield::analysis {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open", path));
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 std::string_view tag_at(std::string_view text, std::size_t pos) { return text.substr(pos, text.find('>', pos) - pos); }
 
@@ -131,13 +123,10 @@ void read_pvtp(const std::string& path, const std::string& text, const std::stri
   for (auto pos = text.find("<Piece", summary); pos != std::string::npos; pos = text.find("<Piece", pos + 1)) {
     const std::string source = xml_attribute(tag_at(text, pos), "Source");
     const std::string where = fmt::format("{}: piece '{}'", path, source);
-    const fs::path file = fs::path(source).lexically_normal();
-    if (file.extension() != ".vtp" || file.is_absolute() || file.empty() || *file.begin() == "..")
-      throw InputError(fmt::format("{}: expected a .vtp file next to or below the .pvtp", where));
+    const std::string piece_path = piece_file(path, source, ".vtp", where);
     PointFrame piece;
     try {
-      const std::string piece_path = (fs::path(path).parent_path() / file).string();
-      read_vtp(piece_path, read_text(piece_path), array, piece);
+      read_vtp(piece_path, read_whole_file(piece_path), array, piece);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: {}", where, e.what()));
     }
@@ -153,7 +142,7 @@ void read_pvtp(const std::string& path, const std::string& text, const std::stri
 }  // namespace
 
 PointFrame read_point_frame(const std::string& path, const std::string& array) {
-  const std::string text = read_text(path);
+  const std::string text = read_whole_file(path);
   PointFrame frame;
   if (fs::path(path).extension() == ".pvtp")
     read_pvtp(path, text, array, frame);

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <sstream>
 
 #include "shockfield/analysis/field_reader.hpp"
@@ -16,7 +15,6 @@ namespace shockfield::analysis {
 
 namespace {
 
-namespace fs = std::filesystem;
 
 // The six whole numbers of an Extent attribute "x0 x1 y0 y1 z0 z1", x0 <= x1 and so on.
 std::array<long long, 6> parse_extent(const std::string& text, const std::string& where) {
@@ -85,12 +83,10 @@ GridField read_pvti(const std::string& path, const std::string& text, const std:
     for (std::size_t a = 0; a < 3; ++a)
       if (e[2 * a] < whole[2 * a] || e[2 * a + 1] > whole[2 * a + 1])
         throw InputError(fmt::format("{}: its Extent lies outside the WholeExtent", where));
-    const fs::path file = fs::path(source).lexically_normal();
-    if (file.extension() != ".vti" || file.is_absolute() || (!file.empty() && *file.begin() == ".."))
-      throw InputError(fmt::format("{}: expected a .vti file next to or below the .pvti", where));
+    const std::string file = piece_file(path, source, ".vti", where);
     GridField piece;
     try {
-      piece = read_grid_field((fs::path(path).parent_path() / file).string(), name);
+      piece = read_grid_field(file, name);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: {}", where, e.what()));
     }

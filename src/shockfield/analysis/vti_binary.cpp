@@ -8,6 +8,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <functional>
 
 #include "shockfield/core/error.hpp"
@@ -197,6 +200,22 @@ std::vector<double> VtiBinary::appended_values(double offset, std::size_t count)
     pos += out.size();
     return out;
   });
+}
+
+std::string read_whole_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot open", path));
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string piece_file(const std::string& parallel_file, const std::string& source, const std::string& extension,
+                       const std::string& where) {
+  namespace fs = std::filesystem;
+  const fs::path file = fs::path(source).lexically_normal();
+  if (file.extension() != extension || file.is_absolute() || file.empty() || *file.begin() == "..")
+    throw InputError(fmt::format("{}: expected a {} file next to or below the .p{}", where, extension,
+                                 extension.substr(1)));
+  return (fs::path(parallel_file).parent_path() / file).string();
 }
 
 }  // namespace shockfield::analysis

@@ -17,6 +17,14 @@ namespace shockfield::analysis {
 /// Value of attribute `key` in an XML start tag (`<Name a="1" b="2"`); empty if absent.
 std::string xml_attribute(std::string_view tag, const std::string& key);
 
+/// The whole file as text; InputError "PATH: cannot open".
+std::string read_whole_file(const std::string& path);
+
+/// The file a parallel VTK file's (.pvti, .pvtp) <Piece Source="…"> names, next to or below it:
+/// `extension` (".vti", ".vtp") and relative without "..", else InputError at `where`.
+std::string piece_file(const std::string& parallel_file, const std::string& source, const std::string& extension,
+                       const std::string& where);
+
 struct VtiBinary {
   std::string_view text;  ///< the whole file
   std::string where;      ///< "file:line" of the DataArray, for messages
