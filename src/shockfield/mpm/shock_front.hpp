@@ -5,8 +5,8 @@
 //    of the window quantities, diagnostics.hpp), the front where the compressive longitudinal
 //    stress −σ_aa crosses half its jump from the state ahead to the plateau behind (sub-slab
 //    linear interpolation, analysis/shock_profile), and the plateau: the mean and scatter of each
-//    quantity over the slabs between the impact face and the front, `margin_bins` slabs kept
-//    from each. With a Hugoniot elastic limit σ_HEL and a plateau above it the elastic precursor
+//    quantity over the slabs between the impact face and the top of the front (where −σ_aa first
+//    reaches 90 % of the jump), `margin_bins` slabs kept from each. With a Hugoniot elastic limit σ_HEL and a plateau above it the elastic precursor
 //    is sought too, at half the HEL, and the plastic front then crosses (σ_HEL + plateau)/2;
 //    the precursor's plateau is the half of the stretch between the fronts next to the precursor;
 //  - over the frames, the front speed by least squares of position against time (md::fit_line)
@@ -59,6 +59,7 @@ struct FrontFrame {
   double time = 0.0;
   double front = NAN;      ///< the (plastic) front
   double precursor = NAN;  ///< the elastic precursor, when one runs ahead by more than 2·margin_bins slabs
+  double rise = NAN;       ///< the top of the (plastic) front: −σ_aa first at 90 % of its jump
   double face = NAN;       ///< the body's last occupied slab behind the front (the impact face)
   double free_end = NAN;   ///< its last occupied slab ahead
   double leading = NAN;     ///< the leading edge: the precursor, else where −σ_aa first reaches min(σ_HEL, peak)/2

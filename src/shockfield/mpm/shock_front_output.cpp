@@ -18,13 +18,13 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kFile = "shock_front.csv";
-constexpr std::size_t kPositions = 5;  // front, precursor front, leading edge, impact face, free end
+constexpr std::size_t kPositions = 6;  // front, precursor front, leading edge, rise, impact face, free end
 
-// step, time, the five positions, the state ahead, then for the plateau and the precursor's
+// step, time, the six positions, the state ahead, then for the plateau and the precursor's
 // plateau their mass and each quantity's mean and std.
 std::vector<std::string> columns(int dim) {
-  std::vector<std::string> c{"step", "time_s", "front_m", "precursor_front_m", "leading_edge_m", "impact_face_m",
-                             "free_end_m"};
+  std::vector<std::string> c{"step", "time_s", "front_m", "precursor_front_m", "leading_edge_m", "rise_m",
+                             "impact_face_m", "free_end_m"};
   const auto quantities = window_quantities(dim);
   for (const auto& q : quantities) c.push_back("ahead_" + q.name + "_mean_" + q.unit);
   for (const char* part : {"plateau", "precursor"}) {
@@ -38,7 +38,8 @@ std::vector<std::string> columns(int dim) {
 }
 
 std::vector<double> row(const FrontFrame& f, std::int64_t step) {
-  std::vector<double> r{static_cast<double>(step), f.time, f.front, f.precursor, f.leading, f.face, f.free_end};
+  std::vector<double> r{static_cast<double>(step), f.time, f.front, f.precursor, f.leading, f.rise, f.face,
+                         f.free_end};
   r.insert(r.end(), f.ahead.begin(), f.ahead.end());
   for (const auto* part : {&f.plateau, &f.precursor_plateau}) {
     r.push_back(part->empty() ? 0.0 : part->front().weight);
@@ -51,7 +52,7 @@ std::vector<double> row(const FrontFrame& f, std::int64_t step) {
 FrontFrame frame_of(const std::vector<double>& r, std::size_t nq, const ShockFrontSettings& s) {
   FrontFrame f;
   f.time = r[1];
-  f.front = r[2], f.precursor = r[3], f.leading = r[4], f.face = r[5], f.free_end = r[6];
+  f.front = r[2], f.precursor = r[3], f.leading = r[4], f.rise = r[5], f.face = r[6], f.free_end = r[7];
   f.at_free_end = s.direction * (f.free_end - f.leading) <= s.margin_bins * s.bin_width;
   std::size_t k = 2 + kPositions;
   for (std::size_t q = 0; q < nq; ++q) f.ahead.push_back(r[k++]);

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# The MPM shock-front tool ([shock_front], docs/mpm.md "Shock front and Hugoniot") in a run: a solid
+# aluminium strip on a rigid wall at 1000 m/s writes shock_front.csv and hugoniot_al.toml, whose
+# Us, up, ρ and −σ_yy meet the linear Rankine–Hugoniot values of [derived] within 2 % (the
+# tolerance of the MPM Rankine–Hugoniot tests: the strength's ⅔σ_Y is 0.5 % of σ_yy, the shock is
+# smeared); stopped and resumed it writes the same files; the tool off leaves every other output
+# byte-identical; bad keys exit 2.
+source "$(dirname "$0")/lib.bash"
+set -e
+export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive
+case="$ROOT/tests/cli/cases/mpm_shock_front.toml"
+"$SF" run "$case" --output "$WORK/on" -q > /dev/null
+toml="$WORK/on/hugoniot_al.toml"
+[ -s "$toml" ] && [ -s "$WORK/on/shock_front.csv" ] || fail "no hugoniot_al.toml or shock_front.csv"
+grep -q "^complete = true" "$toml" || fail "incomplete Hugoniot state: $(grep note "$toml")"
+grep -q "^two_wave = false" "$toml" || fail "an overdriven shock read as two waves"
+grep -q "shock front: Us = " "$WORK/on/log.txt" || fail "the log lacks the shock front"
+grep -q '"hugoniot_al.toml"' "$WORK/on/summary.json" || fail "summary.json lacks the Hugoniot state"
+value() { awk -F' = ' -v k="$1" '$1 == k { print $2; exit }' "$2"; }
+derived="$WORK/on/config.resolved.toml"
+within() {  # within NAME MEASURED REFERENCE TOLERANCE
+  awk -v m="$2" -v r="$3" -v t="$4" 'BEGIN { d = (m - r) / r; exit !(d < t && -d < t) }' \
+    || fail "$1 = $2, expected $3 within $4"
+}
+within us "$(value us_m_s "$toml")" "$(value hugoniot_shock_speed_m_s "$derived")" 0.02
+within up "$(value up_m_s "$toml")" 1000 0.02
+within density "$(value density_kg_m3 "$toml")" "$(value hugoniot_density_kg_m3 "$derived")" 0.02
+within stress "$(value longitudinal_stress_Pa "$toml")" "-$(value hugoniot_pressure_Pa "$derived")" 0.02
+/usr/bin/python3 "$ROOT/tests/cli/conventions.py" "$WORK/on" > /dev/null || fail "shock_front.csv breaks the unit rule"
+
+# Stopped and resumed: the same rows and the same state.
+stop_then_resume "$case" "$WORK/split" 150
+same_files "$WORK/on" "$WORK/split" shock_front.csv hugoniot_al.toml series.csv
+
+# Off (no table, or enabled = false): every other file as with it on.
+grep -v -e '^\[shock_front\]' -e '^enabled = true' "$case" > "$WORK/off.toml"
+"$SF" run "$WORK/off.toml" --output "$WORK/off" -q > /dev/null
+[ ! -e "$WORK/off/shock_front.csv" ] && ! ls "$WORK/off"/hugoniot_*.toml 2> /dev/null || fail "the tool wrote without [shock_front]"
+same_files "$WORK/on" "$WORK/off" series.csv thermo.csv
+grep -q '"hugoniot"' "$WORK/off/summary.json" && fail "summary.json has a Hugoniot state without [shock_front]"
+
+# Bad keys: exit 2 naming the key, no run folder.
+tiny=$(sed '/^\[loading\]/,$d' "$ROOT/tests/cli/cases/mpm_tiny.toml")
+expect_error "$tiny
+[shock_front]
+enabled = true" "direction" "\"up\" or \"down\""
+expect_error "$(cat "$case")
+body = 3" "body"
+expect_error "$(cat "$case")
+window_fraction = 0.0" "window_fraction"
+expect_error "$(cat "$case")
+direction = \"sideways\"" "direction"
+echo "mpm_shock_front: ok"
