@@ -14,9 +14,10 @@ namespace {
 
 using analysis::WeightedMoments;
 
-// Indices into window_quantities(dim): density first, then pressure, temperature, the velocity
-// components, the longitudinal stress σ_aa.
+// Indices into profile_quantities(dim): density first, then pressure, temperature, the velocity
+// components, the longitudinal stress σ_aa, its deviator, von Mises, the bulk density last.
 constexpr std::size_t kDensity = 0, kPressure = 1, kTemperature = 2;
+std::size_t bulk_density(int dim) { return profile_quantities(dim).size() - 1; }
 std::size_t axis_velocity(int dim) { return 3 + static_cast<std::size_t>(dim) - 1; }
 std::size_t longitudinal_stress(int dim) { return 3 + static_cast<std::size_t>(dim); }
 
@@ -29,24 +30,42 @@ double hugoniot_elastic_limit(const materials::SolidMaterial& m) {
   return (bulk + 4.0 * g / 3.0) * y0 / (2.0 * g);
 }
 
-ShockProfile shock_profile(const Particles& p, int dim, int body, double lo, double hi, double width, double time) {
+std::vector<WindowQuantity> profile_quantities(int dim) {
+  std::vector<WindowQuantity> q = window_quantities(dim);
+  q.push_back({"bulk_density", "kg_m3"});
+  return q;
+}
+
+ShockProfile shock_profile(const Particles& p, int dim, int body, double lo, double hi, double width,
+                           double cross_section, double time) {
   const int axis = dim - 1;
   const auto bins = static_cast<std::size_t>(std::max(1.0, std::ceil((hi - lo) / width - 1e-9)));
   const std::size_t nq = window_quantities(dim).size();
   ShockProfile s;
   s.time = time;
   s.mass.assign(bins, 0.0);
-  s.means.assign(nq, std::vector<double>(bins, 0.0));
+  s.means.assign(nq + 1, std::vector<double>(bins, 0.0));
   for (std::size_t k = 0; k < bins; ++k) s.position.push_back(lo + (static_cast<double>(k) + 0.5) * width);
+  const auto last = static_cast<double>(bins - 1);
   for (std::size_t i = 0; i < p.size(); ++i) {  // particle order: independent of the thread count
     if (p.body[i] != body) continue;
-    const double slab = std::floor((p.x[i][axis] - lo) / width);
-    const auto k = static_cast<std::size_t>(std::clamp(slab, 0.0, static_cast<double>(bins - 1)));
-    s.mass[k] += p.mass[i];
-    for (std::size_t q = 0; q < nq; ++q) s.means[q][k] += p.mass[i] * quantity(p, i, q, dim);
+    // The point's extent along the axis, its reference box stretched by F_aa (as cpGIMP's), shared
+    // among the slabs it overlaps: a slab's mass does not jump as rows of points cross its faces.
+    const double half = p.half_size[i][axis] * std::abs(p.state[i].deformation(axis, axis));
+    const double a = (p.x[i][axis] - half - lo) / width, b = (p.x[i][axis] + half - lo) / width;
+    for (double k = std::clamp(std::floor(a), 0.0, last); k <= std::clamp(std::floor(b), 0.0, last); ++k) {
+      const double overlap = b > a ? (std::min(b, k + 1.0) - std::max(a, k)) / (b - a) : 1.0;
+      if (!(overlap > 0.0)) continue;
+      const auto u = static_cast<std::size_t>(k);
+      const double m = p.mass[i] * overlap;
+      s.mass[u] += m;
+      for (std::size_t q = 0; q < nq; ++q) s.means[q][u] += m * quantity(p, i, q, dim);
+    }
   }
   for (std::size_t q = 0; q < nq; ++q)
     for (std::size_t k = 0; k < bins; ++k) s.means[q][k] = s.mass[k] > 0.0 ? s.means[q][k] / s.mass[k] : NAN;
+  // Slab mass over slab volume, voids included (the body filling the lateral extent).
+  for (std::size_t k = 0; k < bins; ++k) s.means[nq][k] = s.mass[k] > 0.0 ? s.mass[k] / (width * cross_section) : NAN;
   return s;
 }
 
@@ -142,7 +161,7 @@ WaveState fit_wave(const std::vector<const FrontFrame*>& frames, int dim, const 
                    double v_ahead, const Upstream& one, Position position, Plateau plateau_of) {
   const int dir = s.direction;
   std::vector<double> t, x;
-  std::vector<std::vector<WeightedMoments>> parts(window_quantities(dim).size());
+  std::vector<std::vector<WeightedMoments>> parts(profile_quantities(dim).size());
   for (const FrontFrame* f : frames) {
     t.push_back(f->time), x.push_back(position(*f));
     for (std::size_t q = 0; q < parts.size(); ++q) parts[q].push_back(plateau_of(*f)[q]);
@@ -194,7 +213,7 @@ ShockHugoniot fit_hugoniot(const std::vector<FrontFrame>& frames, int dim, const
                          fit.size(), free_end.empty() ? "" : "; " + free_end);
     return h;
   }
-  h.ahead.assign(window_quantities(dim).size(), 0.0);
+  h.ahead.assign(profile_quantities(dim).size(), 0.0);
   for (std::size_t q = 0; q < h.ahead.size(); ++q) {
     double n = 0.0;
     for (const FrontFrame* f : fit)
@@ -202,7 +221,8 @@ ShockHugoniot fit_hugoniot(const std::vector<FrontFrame>& frames, int dim, const
     h.ahead[q] = n > 0 ? h.ahead[q] / n : NAN;
   }
   const double v_ahead = std::isfinite(h.ahead[vq]) ? h.ahead[vq] : 0.0;
-  const Upstream undisturbed{std::isfinite(h.ahead[sq]) ? h.ahead[sq] : 0.0, h.ahead[kDensity], 0.0};
+  const std::size_t bq = bulk_density(dim);
+  const Upstream undisturbed{std::isfinite(h.ahead[sq]) ? h.ahead[sq] : 0.0, h.ahead[bq], 0.0};
   Upstream into_shock = undisturbed;
   std::vector<const FrontFrame*> with_precursor;
   for (const FrontFrame* f : fit)
@@ -210,11 +230,11 @@ ShockHugoniot fit_hugoniot(const std::vector<FrontFrame>& frames, int dim, const
   if (with_precursor.size() >= 3) {
     h.precursor = fit_wave(with_precursor, dim, s, v_ahead, undisturbed, [](const FrontFrame& f) { return f.precursor; },
                            [](const FrontFrame& f) -> const std::vector<WeightedMoments>& { return f.precursor_plateau; });
-    into_shock = {h.precursor->plateau[sq].mean, h.precursor->plateau[kDensity].mean, h.precursor->up};
+    into_shock = {h.precursor->plateau[sq].mean, h.precursor->plateau[bq].mean, h.precursor->up};
   }
   h.shock = fit_wave(fit, dim, s, v_ahead, into_shock, [](const FrontFrame& f) { return f.front; },
                      [](const FrontFrame& f) -> const std::vector<WeightedMoments>& { return f.plateau; });
-  if (!std::isfinite(h.ahead[kDensity]))
+  if (!std::isfinite(h.ahead[bq]))
     h.note = "no undisturbed slab ahead of the front (initial density unknown): use a longer body or stop earlier";
   if (!free_end.empty() && h.note.empty()) h.note = free_end;
   if (!h.complete() && h.note.empty()) h.note = "a value of the Hugoniot state is not finite";
@@ -223,7 +243,7 @@ ShockHugoniot fit_hugoniot(const std::vector<FrontFrame>& frames, int dim, const
 
 bool ShockHugoniot::complete() const {
   if (shock.plateau.empty() || ahead.empty()) return false;
-  for (double v : {shock.us, shock.up, shock.density_rh, shock.stress_rh, ahead[kDensity]})
+  for (double v : {shock.us, shock.up, shock.density_rh, shock.stress_rh, ahead[kDensity], ahead.back()})
     if (!std::isfinite(v)) return false;
   return std::all_of(shock.plateau.begin(), shock.plateau.end(), [](const WeightedMoments& m) { return std::isfinite(m.mean); });
 }
@@ -244,6 +264,7 @@ std::string wave_keys(const WaveState& w, int dim) {
   add(text, "us_stderr_m_s", w.us_stderr);
   add(text, "up_m_s", w.up);
   add(text, "density_kg_m3", mean(kDensity));
+  add(text, "bulk_density_kg_m3", w.plateau.empty() ? NAN : w.plateau.back().mean);
   add(text, "density_rankine_hugoniot_kg_m3", w.density_rh);
   add(text, "pressure_Pa", mean(kPressure));
   add(text, "longitudinal_stress_Pa", mean(sq));
@@ -259,7 +280,7 @@ std::string wave_keys(const WaveState& w, int dim) {
 
 std::string plateau_table(const std::string& name, const WaveState& w, int dim) {
   std::string text = fmt::format("\n[{}]  # mean and scatter (mass-weighted std over slabs and frames) behind the front\n", name);
-  const auto quantities = window_quantities(dim);
+  const auto quantities = profile_quantities(dim);
   for (std::size_t q = 0; q < quantities.size() && q < w.plateau.size(); ++q) {
     add(text, quantities[q].name + "_mean_" + quantities[q].unit, w.plateau[q].mean);
     add(text, quantities[q].name + "_std_" + quantities[q].unit, w.plateau[q].std);
@@ -273,6 +294,7 @@ std::string hugoniot_toml(const ShockHugoniot& h, int dim, const std::string& ti
   std::string text = fmt::format("# {} (docs/mpm.md: 'Shock front and Hugoniot')\n", title);
   text += wave_keys(h.shock, dim);
   if (!h.ahead.empty()) add(text, "density0_kg_m3", h.ahead[kDensity]);
+  if (!h.ahead.empty()) add(text, "bulk_density0_kg_m3", h.ahead.back());
   if (!h.ahead.empty()) add(text, "velocity_ahead_m_s", h.ahead[axis_velocity(dim)]);
   text += fmt::format("two_wave = {}\ncomplete = {}\nnote = \"{}\"\n", h.precursor.has_value(), h.complete(), h.note);
   text += plateau_table("plateau", h.shock, dim);

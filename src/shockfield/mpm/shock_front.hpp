@@ -2,7 +2,7 @@
 // The shock front and the shocked state along the shock axis (docs/mpm.md, "Shock front and
 // Hugoniot"), measured as MD measures a piston's (md/diagnostics/hugoniot.hpp):
 //  - per frame, one body's particles binned in slabs along the shock axis (mass-weighted means
-//    of the window quantities, diagnostics.hpp), the front where the compressive longitudinal
+//    of the window quantities of diagnostics.hpp, and the bulk density), the front where the compressive longitudinal
 //    stress −σ_aa crosses half its jump from the state ahead to the plateau behind (sub-slab
 //    linear interpolation, analysis/shock_profile), and the plateau: the mean and scatter of each
 //    quantity over the slabs between the impact face and the top of the front (where −σ_aa first
@@ -20,6 +20,7 @@
 
 #include "shockfield/analysis/shock_profile.hpp"
 #include "shockfield/materials/solid_material.hpp"
+#include "shockfield/mpm/diagnostics.hpp"
 #include "shockfield/mpm/particles.hpp"
 
 namespace shockfield::mpm {
@@ -44,17 +45,25 @@ struct ShockFrontSpec {
   std::string material;  ///< the profiled body's material: hugoniot_<material>.toml
 };
 
-/// One frame's slabs: centres, masses, and per quantity of window_quantities(dim) the mass-weighted means.
+/// What a profile holds per slab: the window quantities (diagnostics.hpp) and bulk_density [kg/m³]
+/// (slab mass over slab volume, voids included).
+std::vector<WindowQuantity> profile_quantities(int dim);
+
+/// One frame's slabs: centres, masses, and per quantity of profile_quantities(dim) the
+/// mass-weighted means (the bulk density: the slab's mass over its volume).
 struct ShockProfile {
   double time = 0.0;
   std::vector<double> position, mass;
   std::vector<std::vector<double>> means;  ///< [quantity][slab]
 };
 
-/// Slabs [lo + k·width, lo + (k+1)·width) over [lo, hi) along the axis (dim − 1) of the particles of `body`.
-ShockProfile shock_profile(const Particles& p, int dim, int body, double lo, double hi, double width, double time);
+/// Slabs [lo + k·width, lo + (k+1)·width) over [lo, hi) along the axis (dim − 1) of the particles
+/// of `body`; each point's mass is shared among the slabs its box (half-width l0·|F_aa|) overlaps.
+/// `cross_section`: the lateral measure of a slab (m in 2D, m² in 3D; the body filling it).
+ShockProfile shock_profile(const Particles& p, int dim, int body, double lo, double hi, double width,
+                           double cross_section, double time);
 
-/// What one frame shows (positions in m; moments per window quantity).
+/// What one frame shows (positions in m; moments per profile quantity).
 struct FrontFrame {
   double time = 0.0;
   double front = NAN;      ///< the (plastic) front
@@ -72,13 +81,14 @@ FrontFrame analyse_front(const ShockProfile& profile, int dim, const ShockFrontS
 
 /// One wave's state: its speed U_s and the plateau behind it, with the jump conditions from the
 /// state it runs into (1: ahead of it): ρ = ρ1(U_s − u1)/(U_s − u_p), σ_aa = σ1 − ρ1(U_s − u1)(u_p − u1),
-/// velocities relative to the material ahead of the leading front, along the shock's direction.
+/// ρ the bulk densities (voids included: a porous body's Hugoniot), velocities relative to the
+/// material ahead of the leading front, along the shock's direction.
 struct WaveState {
   double us = NAN, us_stderr = NAN;   ///< [m/s]
   double up = NAN;                    ///< [m/s]
   double density_rh = NAN;            ///< [kg/m³]
   double stress_rh = NAN;             ///< σ_aa, tension positive [Pa]
-  std::vector<analysis::WeightedMoments> plateau;  ///< per window quantity
+  std::vector<analysis::WeightedMoments> plateau;  ///< per profile quantity
   int frames = 0;
   double fit_start = NAN, fit_end = NAN;  ///< [s]
 };

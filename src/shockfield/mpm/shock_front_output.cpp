@@ -10,6 +10,7 @@
 #include "shockfield/core/run_folder.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/mpm/diagnostics.hpp"
+#include "shockfield/mpm/run_output.hpp"
 
 namespace shockfield::mpm {
 
@@ -25,7 +26,7 @@ constexpr std::size_t kPositions = 6;  // front, precursor front, leading edge, 
 std::vector<std::string> columns(int dim) {
   std::vector<std::string> c{"step", "time_s", "front_m", "precursor_front_m", "leading_edge_m", "rise_m",
                              "impact_face_m", "free_end_m"};
-  const auto quantities = window_quantities(dim);
+  const auto quantities = profile_quantities(dim);
   for (const auto& q : quantities) c.push_back("ahead_" + q.name + "_mean_" + q.unit);
   for (const char* part : {"plateau", "precursor"}) {
     c.push_back(std::string(part) + "_mass_kg" + units::si::per_missing_dimensions_column(dim));
@@ -75,8 +76,8 @@ ShockFrontOutput::ShockFrontOutput(const fs::path& folder, const GridSpec& grid,
 void ShockFrontOutput::record(const Simulation& sim) {
   const int axis = grid_.dim - 1;
   const double lo = grid_.origin[axis];
-  const ShockProfile profile = shock_profile(sim.particles(), grid_.dim, spec_.settings.body, lo,
-                                             lo + grid_.length(axis), spec_.settings.bin_width, sim.time());
+  const ShockProfile profile = shock_profile(sim.particles(), grid_.dim, spec_.settings.body, lo, lo + grid_.length(axis),
+                                             spec_.settings.bin_width, window_cross_section(grid_), sim.time());
   csv_.row(row(analyse_front(profile, grid_.dim, spec_.settings), sim.step_count()));
 }
 
@@ -85,7 +86,7 @@ ShockHugoniot ShockFrontOutput::finish() const {
   std::ifstream in(file);
   std::string line;
   std::getline(in, line);
-  const std::size_t nq = window_quantities(grid_.dim).size(), width = columns(grid_.dim).size();
+  const std::size_t nq = profile_quantities(grid_.dim).size(), width = columns(grid_.dim).size();
   std::vector<FrontFrame> frames;
   while (std::getline(in, line)) {
     std::vector<double> r;

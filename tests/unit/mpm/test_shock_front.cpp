@@ -9,6 +9,7 @@
 #include "plastic_bar.hpp"
 #include "shockfield/materials/library.hpp"
 #include "shockfield/mpm/diagnostics.hpp"
+#include "shockfield/mpm/run_output.hpp"
 #include "shockfield/mpm/shock_front.hpp"
 #include "strip.hpp"
 
@@ -18,8 +19,8 @@ namespace mpm = shockfield::mpm;
 namespace {
 
 constexpr int kDim = 2;
-// window_quantities(2): density, pressure, temperature, vx, vy, σ_yy, s_yy, von Mises.
-constexpr std::size_t kRho = 0, kP = 1, kT = 2, kVx = 3, kVy = 4, kSigma = 5, kDev = 6, kVm = 7;
+// profile_quantities(2): density, pressure, temperature, vx, vy, σ_yy, s_yy, von Mises, bulk density.
+constexpr std::size_t kRho = 0, kP = 1, kT = 2, kVx = 3, kVy = 4, kSigma = 5, kDev = 6, kVm = 7, kBulk = 8;
 
 // A wave whose compression rises from 0 to `jump` over a tanh of half-width `width` about `at`,
 // running up the axis (the shocked side below it): 1 behind, 0 ahead.
@@ -37,7 +38,7 @@ struct Synthetic {
     mpm::ShockProfile p;
     p.time = time;
     const auto n = static_cast<std::size_t>(std::lround(4e-3 / h));
-    p.means.assign(8, std::vector<double>(n, 0.0));
+    p.means.assign(9, std::vector<double>(n, 0.0));
     for (std::size_t k = 0; k < n; ++k) {
       const double y = (static_cast<double>(k) + 0.5) * h;
       p.position.push_back(y);
@@ -54,6 +55,7 @@ struct Synthetic {
       p.means[kSigma][k] = -stress;
       p.means[kDev][k] = -0.1e9 * s * wiggle;
       p.means[kVm][k] = 0.15e9 * s * wiggle;
+      p.means[kBulk][k] = rho;  // a solid: the slabs full
     }
     return p;
   }
@@ -72,9 +74,10 @@ std::vector<mpm::FrontFrame> track(mpm::Simulation& sim, const mpm::ShockFrontSe
   const auto& g = sim.grid().spec();
   for (int k = 1; k <= frames; ++k) {
     sim.run_until(k * dt);
-    out.push_back(mpm::analyse_front(
-        mpm::shock_profile(sim.particles(), kDim, s.body, g.origin[1], g.origin[1] + g.length(1), s.bin_width, sim.time()),
-        kDim, s));
+    out.push_back(mpm::analyse_front(mpm::shock_profile(sim.particles(), kDim, s.body, g.origin[1],
+                                                        g.origin[1] + g.length(1), s.bin_width,
+                                                        mpm::window_cross_section(g), sim.time()),
+                                     kDim, s));
   }
   return out;
 }
