@@ -50,4 +50,23 @@ expect_error "$(cat "$case")
 window_fraction = 0.0" "window_fraction"
 expect_error "$(cat "$case")
 direction = \"sideways\"" "direction"
+# The sweep (`shockfield hugoniot --method mpm`): three loading speeds on the same strip give back
+# the material's linear Hugoniot, c0 = 5350 m/s and s = 1.34 (measured 5368 and 1.3415): bounds
+# 1 % on c0 and 2 % on s (the strength adds ⅔σ_Y to the stress and a little to U_s).
+"$SF" hugoniot "$case" --method mpm --speeds 0.5,1.0,1.5 -o "$WORK/sweep" -q > "$WORK/sweep.txt"
+fit="$WORK/sweep/hugoniot_fit.toml"
+[ "$(wc -l < "$WORK/sweep/hugoniot_sweep.csv")" -eq 4 ] || fail "hugoniot_sweep.csv should have 3 rows"
+within c0 "$(value c0_m_s "$fit")" 5350 0.01
+within s "$(value s "$fit")" 1.34 0.02
+grep -q "c0 (km/s)" "$WORK/sweep.txt" || fail "the sweep printed no fit"
+# Refused with exit 2: an MPM case without [shock_front], an MD case.
+grep -v -e '^\[shock_front\]' -e '^enabled = true' "$case" > "$WORK/no_front.toml"
+set +e
+"$SF" hugoniot "$WORK/no_front.toml" --method mpm --speeds 1 -o "$WORK/bad1" -q > /dev/null 2> "$WORK/err1"
+code1=$?
+"$SF" hugoniot "$ROOT/examples/md_shock_piston/case.toml" --method mpm --speeds 1 -o "$WORK/bad2" -q > /dev/null 2> "$WORK/err2"
+code2=$?
+set -e
+[ $code1 -eq 2 ] && grep -q "shock_front" "$WORK/err1" || fail "no [shock_front]: exit $code1, $(cat "$WORK/err1")"
+[ $code2 -eq 2 ] && grep -q "MPM case" "$WORK/err2" || fail "an MD case: exit $code2, $(cat "$WORK/err2")"
 echo "mpm_shock_front: ok"
