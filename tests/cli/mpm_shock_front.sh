@@ -38,6 +38,10 @@ grep -v -e '^\[shock_front\]' -e '^enabled = true' "$case" > "$WORK/off.toml"
 [ ! -e "$WORK/off/shock_front.csv" ] && ! ls "$WORK/off"/hugoniot_*.toml 2> /dev/null || fail "the tool wrote without [shock_front]"
 same_files "$WORK/on" "$WORK/off" series.csv thermo.csv
 grep -q '"hugoniot"' "$WORK/off/summary.json" && fail "summary.json has a Hugoniot state without [shock_front]"
+sed 's/^enabled = true/enabled = false\nmargin_bins = 4/' "$case" > "$WORK/disabled.toml"
+"$SF" run "$WORK/disabled.toml" --output "$WORK/disabled" -q > /dev/null || fail "enabled = false with other keys refused"
+[ ! -e "$WORK/disabled/shock_front.csv" ] || fail "the tool wrote with enabled = false"
+same_files "$WORK/on" "$WORK/disabled" series.csv
 
 # Bad keys: exit 2 naming the key, no run folder.
 tiny=$(sed '/^\[loading\]/,$d' "$ROOT/tests/cli/cases/mpm_tiny.toml")

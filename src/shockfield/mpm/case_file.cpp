@@ -167,12 +167,14 @@ DiagnosticsSpec read_diagnostics(const std::optional<Config>& d, double default_
 // [shock_front]: which body, the way its shock runs (by default up from a wall, down from a
 // symmetric impact's plane), the slabs and the windows (shock_front.hpp).
 std::optional<ShockFrontSpec> read_shock_front(const std::optional<Config>& t, const MpmCase& c) {
-  if (!t || !t->get_bool_or("enabled", true)) return std::nullopt;
+  if (!t) return std::nullopt;
+  // Every key is read (and checked) even when the tool is off, so switching it off keeps the case valid.
+  const bool enabled = t->get_bool_or("enabled", true);
   ShockFrontSpec spec;
   ShockFrontSettings& s = spec.settings;
   s.body = static_cast<int>(t->get_int_or("body", 0, Range::closed(0, static_cast<double>(c.bodies.size()) - 1)));
   const char* by_loading = c.loading == LoadingKind::Wall ? "up" : c.loading == LoadingKind::Symmetric ? "down" : nullptr;
-  if (!by_loading && !t->has("direction"))
+  if (enabled && !by_loading && !t->has("direction"))
     t->fail("direction", "\"up\" or \"down\", the way the shock runs along the shock axis (no default without wall or "
                          "symmetric loading)");
   s.direction = t->get_choice_or("direction", {"up", "down"}, by_loading ? by_loading : "up") == "up" ? 1 : -1;
@@ -183,6 +185,7 @@ std::optional<ShockFrontSpec> read_shock_front(const std::optional<Config>& t, c
   const auto& material = c.materials[static_cast<std::size_t>(c.bodies[static_cast<std::size_t>(s.body)].body.material)];
   s.hel = hugoniot_elastic_limit(material);
   spec.material = c.material_names[static_cast<std::size_t>(c.bodies[static_cast<std::size_t>(s.body)].body.material)];
+  if (!enabled) return std::nullopt;
   return spec;
 }
 
