@@ -164,6 +164,31 @@ DiagnosticsSpec read_diagnostics(const std::optional<Config>& d, double default_
   return s;
 }
 
+// [shock_front]: which body, the way its shock runs (by default up from a wall, down from a
+// symmetric impact's plane), the slabs and the windows (shock_front.hpp).
+std::optional<ShockFrontSpec> read_shock_front(const std::optional<Config>& t, const MpmCase& c) {
+  if (!t) return std::nullopt;
+  // Every key is read (and checked) even when the tool is off, so switching it off keeps the case valid.
+  const bool enabled = t->get_bool_or("enabled", true);
+  ShockFrontSpec spec;
+  ShockFrontSettings& s = spec.settings;
+  s.body = static_cast<int>(t->get_int_or("body", 0, Range::closed(0, static_cast<double>(c.bodies.size()) - 1)));
+  const char* by_loading = c.loading == LoadingKind::Wall ? "up" : c.loading == LoadingKind::Symmetric ? "down" : nullptr;
+  if (enabled && !by_loading && !t->has("direction"))
+    t->fail("direction", "\"up\" or \"down\", the way the shock runs along the shock axis (no default without wall or "
+                         "symmetric loading)");
+  s.direction = t->get_choice_or("direction", {"up", "down"}, by_loading ? by_loading : "up") == "up" ? 1 : -1;
+  s.bin_width = t->get_double_or("bin_width", c.grid.cell_size[c.axis()], Range::positive());
+  s.margin_bins = static_cast<int>(t->get_int_or("margin_bins", 6, Range::closed(0, 1000)));
+  s.window_fraction = t->get_double_or("window_fraction", 1.0, {0.0, 1.0, true, false});
+  s.skip_fraction = t->get_double_or("skip_fraction", 0.3, {0.0, 1.0, false, true});
+  const auto& material = c.materials[static_cast<std::size_t>(c.bodies[static_cast<std::size_t>(s.body)].body.material)];
+  s.hel = hugoniot_elastic_limit(material);
+  spec.material = c.material_names[static_cast<std::size_t>(c.bodies[static_cast<std::size_t>(s.body)].body.material)];
+  if (!enabled) return std::nullopt;
+  return spec;
+}
+
 OutputSpec read_output(const std::optional<Config>& o, double end_time) {
   OutputSpec s;
   static_cast<OutputIntervals&>(s) = read_output_intervals(o, end_time, {.profiles = false, .fields = true, .vtk = true});
@@ -249,6 +274,7 @@ MpmCase read_mpm_case(const Config& root) {
   for (double t : c.diagnostics.histogram_times)
     if (t > c.end_time) root.table("diagnostics").fail("histogram_times", fmt::format("{} s is after end_time {} s", t, c.end_time));
   c.output = read_output(root.optional_table("output"), c.end_time);
+  c.shock_front = read_shock_front(root.optional_table("shock_front"), c);
   try {
     c.options.validate();
   } catch (const InputError& e) {

@@ -12,6 +12,7 @@
 #include "shockfield/materials/solid_material.hpp"
 #include "shockfield/mpm/grid.hpp"
 #include "shockfield/mpm/sample_builders.hpp"
+#include "shockfield/mpm/shock_front.hpp"
 #include "shockfield/mpm/simulation.hpp"
 
 namespace shockfield::mpm {
@@ -67,11 +68,12 @@ struct MpmCase {
   double speed = 0.0;                ///< loading speed [m/s]
   DiagnosticsSpec diagnostics;
   OutputSpec output;
+  std::optional<ShockFrontSpec> shock_front;  ///< [shock_front]: the front and Hugoniot tool, when on
 
   int axis() const { return grid.dim - 1; }
 };
 
-/// Reads [grid], [solver], [[material]], [[body]], [loading], [diagnostics] and [output].
+/// Reads [grid], [solver], [[material]], [[body]], [loading], [diagnostics], [output] and [shock_front].
 /// Geometric consistency (bodies inside the grid, packable porosity, cavity inside its body)
 /// is checked when the sample is built (case_builder).
 MpmCase read_mpm_case(const Config& root);

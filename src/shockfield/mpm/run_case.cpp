@@ -17,6 +17,7 @@
 #include "shockfield/mpm/checkpoint.hpp"
 #include "shockfield/mpm/diagnostics.hpp"
 #include "shockfield/mpm/run_output.hpp"
+#include "shockfield/mpm/shock_front.hpp"
 
 namespace shockfield::mpm {
 
@@ -38,14 +39,8 @@ void derive(const Config& root, const MpmCase& c, const BuiltSample& sample, con
   for (const auto& m : c.materials) {
     root.derive(m.name + "_longitudinal_speed_m_s", m.longitudinal_speed(m.eos.rho0, 0.0));
     root.derive(m.name + "_bulk_sound_speed_m_s", m.eos.c0);
-    // Hugoniot elastic limit of the J2 solid in uniaxial strain (1D, plane strain or 3D along the
-    // shock): the longitudinal stress where the deviator reaches yield, s_xx = (2/3)Y0 with
-    // σ_xx = −P + s_xx and P = K ε_v, s_xx = (4/3)G ε: σ_HEL = (K + 4G/3) Y0 / (2G), K = ρ0 c0².
-    const double g = m.strength.shear_modulus, y0 = m.strength.yield_stress0;
-    if (g > 0 && y0 > 0) {
-      const double bulk = m.eos.rho0 * m.eos.c0 * m.eos.c0;
-      root.derive(m.name + "_hel_Pa", (bulk + 4.0 * g / 3.0) * y0 / (2.0 * g));
-    }
+    // Hugoniot elastic limit of the J2 solid in uniaxial strain (1D, plane strain or 3D along the shock).
+    if (const double hel = hugoniot_elastic_limit(m); hel > 0) root.derive(m.name + "_hel_Pa", hel);
   }
   if (c.loading == LoadingKind::Wall || c.loading == LoadingKind::Symmetric) {
     const auto& eos = c.materials[static_cast<std::size_t>(c.bodies[0].body.material)].eos;
@@ -137,6 +132,22 @@ class MpmMethod final : public Method {
   }
 
   void write_outputs() override { write_due(); }
+  // With [shock_front]: the Hugoniot state from every frame of shock_front.csv, written and logged.
+  void write_final_outputs() override {
+    hugoniot_ = output_->write_hugoniot();
+    if (!hugoniot_) return;
+    const ShockHugoniot& h = *hugoniot_;
+    const std::size_t sq = static_cast<std::size_t>(c_.grid.dim) + 3;  // σ_aa in window_quantities
+    const auto stress = [&](const WaveState& w) { return w.plateau.empty() ? NAN : w.plateau[sq].mean; };
+    if (h.precursor)
+      log_->info("shock front: elastic precursor at {:.6g} m/s, u_p = {:.6g} m/s, sigma_aa = {:.6g} Pa ({} frames)",
+                 h.precursor->us, h.precursor->up, stress(*h.precursor), h.precursor->frames);
+    log_->info("shock front: Us = {:.6g} +- {:.3g} m/s, u_p = {:.6g} m/s, sigma_aa = {:.6g} Pa (Rankine-Hugoniot "
+               "{:.6g}), rho = {:.6g} kg/m^3 (Rankine-Hugoniot {:.6g}) over {} frames -> {}{}",
+               h.shock.us, h.shock.us_stderr, h.shock.up, stress(h.shock), h.shock.stress_rh,
+               h.shock.plateau.empty() ? NAN : h.shock.plateau[0].mean, h.shock.density_rh, h.shock.frames,
+               output_->hugoniot_file()->filename().string(), h.note.empty() ? "" : " (" + h.note + ")");
+  }
   std::int64_t step() const override { return sim_.step_count(); }
   std::string position() const override { return fmt::format(" (t = {} s)", sim_.time()); }
   double fraction_done() const override { return (sim_.time() - start_time_) / (c_.end_time - start_time_); }
@@ -224,13 +235,15 @@ class MpmMethod final : public Method {
                        .set("bulk_density_kg_m3", w.bulk_density).set("means", means(w)));
     }
     const std::string per = units::si::per_missing_dimensions_column(c_.grid.dim);  // totals: per m in 2D
-    return Json::object()
-        .set("kinetic_energy_J" + per, t.kinetic)
+    Json r = Json::object();
+    r.set("kinetic_energy_J" + per, t.kinetic)
         .set("internal_energy_J" + per, t.internal)
         .set("total_energy_J" + per, t.total())
         .set("momentum_kg_m_s" + per, Json::Array{t.momentum[0], t.momentum[1], t.momentum[2]})
         .set("means_all_particles", means(window_stats(p, c_.grid.dim, -INFINITY, INFINITY, 1.0)))
         .set("bottom_windows", std::move(windows));
+    if (hugoniot_) r.set("hugoniot", hugoniot_json());
+    return r;
   }
   std::vector<std::string> resume_safe_keys() const override {
     return {"solver.end_time", "output.*_interval", "output.thermo_every", "output.checkpoint_every"};
@@ -247,6 +260,23 @@ class MpmMethod final : public Method {
     log_ = &run.log;
     output_.emplace(run.folder, c_, std::move(tracker), resume);
     start_time_ = sim_.time();
+  }
+  // The shock-front tool's result for summary.json: its file, the speeds and the plateau's means
+  // keyed as the series columns.
+  Json hugoniot_json() const {
+    const std::vector<WindowQuantity> quantities = window_quantities(c_.grid.dim);
+    const auto wave = [&](const WaveState& w) {
+      Json plateau = Json::object();
+      for (std::size_t q = 0; q < quantities.size() && q < w.plateau.size(); ++q)
+        plateau.set(quantities[q].name + "_" + quantities[q].unit, w.plateau[q].mean);
+      return Json::object().set("us_m_s", w.us).set("us_stderr_m_s", w.us_stderr).set("up_m_s", w.up)
+          .set("density_rankine_hugoniot_kg_m3", w.density_rh).set("longitudinal_stress_rankine_hugoniot_Pa", w.stress_rh)
+          .set("plateau", std::move(plateau));
+    };
+    Json j = Json::object().set("file", output_->hugoniot_file()->filename().string())
+                 .set("complete", hugoniot_->complete()).set("shock", wave(hugoniot_->shock));
+    if (hugoniot_->precursor) j.set("precursor", wave(*hugoniot_->precursor));
+    return j.set("note", hugoniot_->note);
   }
   void log_plan() const {
     for (const std::string& note : c_.material_notes) log_->info("material file: {}", note);
@@ -288,6 +318,7 @@ class MpmMethod final : public Method {
   std::optional<RunOutput> output_;
   fs::path folder_;
   Logger* log_ = nullptr;
+  std::optional<ShockHugoniot> hugoniot_;  ///< [shock_front]'s result, once the run has ended
 };
 
 }  // namespace

@@ -42,6 +42,19 @@ RunOutput::RunOutput(const fs::path& folder, const MpmCase& c, std::optional<Cav
     if (c.output.particles) particles_pvd_ = io::PvdSeries(folder / "particles.pvd", keep_time, "s");
   }
   if (!c.diagnostics.histogram_times.empty()) fs::create_directories(folder / "histograms");
+  if (c.shock_front)
+    shock_front_.emplace(folder, c.grid, *c.shock_front,
+                         resume ? std::optional<std::int64_t>(resume->step) : std::nullopt);
+}
+
+std::optional<ShockHugoniot> RunOutput::write_hugoniot() const {
+  if (!shock_front_) return std::nullopt;
+  return shock_front_->finish();
+}
+
+std::optional<fs::path> RunOutput::hugoniot_file() const {
+  if (!shock_front_) return std::nullopt;
+  return shock_front_->toml_file();
 }
 
 std::vector<std::string> RunOutput::columns() const {
@@ -103,6 +116,7 @@ void RunOutput::write_series(const Simulation& sim) {
   if (case_.options.contact.enabled)
     row.insert(row.end(), {static_cast<double>(sim.contact_stats().nodes), sim.contact_stats().force});
   series_.row(row);
+  if (shock_front_) shock_front_->record(sim);
 }
 
 io::VtkImage grid_fields(const Simulation& sim) {

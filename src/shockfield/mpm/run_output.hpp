@@ -3,7 +3,8 @@
 // statistics, gradient mean squares, cavity and ejecta columns), grid fields as VTK ImageData
 // (fields/grid_<step>.vti, indexed by grid.pvd) and particles as VTK PolyData
 // (fields/particles_<step>.vtp, particles.pvd), and histograms with moments at chosen times
-// (histograms/hist_<k>.csv).
+// (histograms/hist_<k>.csv); with [shock_front], shock_front.csv beside each series row and
+// hugoniot_<material>.toml at the end (shock_front_output.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "shockfield/io/vtk_xml.hpp"
 #include "shockfield/mpm/case_file.hpp"
 #include "shockfield/mpm/cavity_tracker.hpp"
+#include "shockfield/mpm/shock_front_output.hpp"
 #include "shockfield/mpm/simulation.hpp"
 
 namespace shockfield::mpm {
@@ -30,7 +32,11 @@ class RunOutput {
   RunOutput(const std::filesystem::path& folder, const MpmCase& c, std::optional<CavityTracker> cavity,
             std::optional<ResumePoint> resume);
 
+  /// A series.csv row, and with [shock_front] a shock_front.csv row.
   void write_series(const Simulation& sim);
+  /// With [shock_front]: the fit of every shock_front.csv row, written as its toml.
+  std::optional<ShockHugoniot> write_hugoniot() const;
+  std::optional<std::filesystem::path> hugoniot_file() const;
   void write_fields(const Simulation& sim);
   /// Histograms of the quantities at the current time; `index` numbers the file.
   void write_histograms(const Simulation& sim, std::size_t index);
@@ -45,6 +51,7 @@ class RunOutput {
   std::optional<CavityTracker> cavity_;
   io::CsvWriter series_;
   io::PvdSeries grid_pvd_, particles_pvd_;
+  std::optional<ShockFrontOutput> shock_front_;
 };
 
 /// The lateral measure of a measurement window (width in 2D, area in 3D; 1 in 1D) [m^(dim-1)].
