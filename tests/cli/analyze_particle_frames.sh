@@ -2,8 +2,9 @@
 # `shockfield analyze` on a run's particle frames (analysis/point_frame_reader). Geometry: the last
 # MPM particle frame as a .vtp, through its .pvd (--frame -1), and as a .pvtp of three pieces gives
 # the Delaunay division (2D: the particles' x, y) that the same points give as a CSV file written by
-# the Python reader (shockfield.vtk_arrays, numpy only: a peer reader of the same file); the
-# outputs carry the frame's position unit (units="m"); a .pvd of grid frames and a frame beyond the
+# the Python reader (shockfield.vtk_arrays, numpy only: a peer reader of the same file, given
+# --length-units m); the outputs carry the frame's position unit (units="m", x_m, total_area_m2), a
+# CSV's is unknown without --length-units, and a --length-units other than the frame's is refused; a .pvd of grid frames and a frame beyond the
 # series are refused (exit 2). Fields: `analyze stats --bin-size` bins the frames' pressure on one
 # grid and gets per frame the void cells, mean and std that numpy gets binning the same points
 # (read by shockfield.vtk_arrays) by the same rule, in the frames' units (mean_Pa, time_s); the
@@ -25,7 +26,7 @@ xyz = read_vtk_arrays(sys.argv[1])["points"]
 with open(sys.argv[2], "w") as f:
     f.write("x,y\n" + "".join(f"{float(x)!r},{float(y)!r}\n" for x, y, _ in xyz))
 PY
-"$SF" analyze geometry "$WORK/points.csv" --dimension 2 -d 3e-5 -o "$WORK/csv" > /dev/null
+"$SF" analyze geometry "$WORK/points.csv" --dimension 2 -d 3e-5 --length-units m -o "$WORK/csv" > /dev/null
 for input in "one/fields/$last" "one/particles.pvd" "three/particles.pvd"; do
   out="$WORK/out_$(echo "$input" | tr / _)"
   "$SF" analyze geometry "$WORK/$input" --dimension 2 --frame -1 -d 3e-5 -o "$out" > /dev/null
@@ -34,8 +35,14 @@ for input in "one/fields/$last" "one/particles.pvd" "three/particles.pvd"; do
   cmp -s <(cut -d, -f2- "$WORK/csv/clusters.csv") <(cut -d, -f2- "$out/clusters.csv") || fail "$input: other clusters"
   grep -aq 'Name="points"[^>]* units="m"' "$out/delaunay.vtu" ||
     fail "$input: delaunay.vtu's points do not say units=\"m\""
+  [ "$(head -1 "$out/clusters.csv")" = "index,x_m,y_m,seed_rule,single_linkage" ] || fail "$input: clusters.csv header $(head -1 "$out/clusters.csv")"
+  grep -q '^total_area_m2 ' "$out/summary.txt" || fail "$input: summary.txt names no m2: $(cat "$out/summary.txt")"
 done
-grep -aq 'Name="points"[^>]* units="1"' "$WORK/csv/delaunay.vtu" || fail "a CSV's points are not units=\"1\""
+# Without --length-units a CSV's unit is unknown, and the outputs say so.
+"$SF" analyze geometry "$WORK/points.csv" --dimension 2 -o "$WORK/csv_unknown" > /dev/null
+grep -aq 'Name="points"[^>]* units="unknown"' "$WORK/csv_unknown/delaunay.vtu" || fail "a CSV's points are not units=\"unknown\""
+grep -q '^total_area_unknown ' "$WORK/csv_unknown/summary.txt" || fail "summary.txt of a CSV: $(cat "$WORK/csv_unknown/summary.txt")"
+analyze_rejected "its coordinates are in 'm'; --length-units says 'A'" -- geometry "$WORK/one/particles.pvd" --dimension 2 --length-units A
 echo "ok: .vtp, .pvd and .pvtp frames divide as the CSV of their points ($(grep '^points' "$WORK/csv/summary.txt"), $(grep '^simplices' "$WORK/csv/summary.txt"))"
 analyze_rejected "its frames are .vti files; expected particle frames" -- geometry "$WORK/one/grid.pvd" --dimension 2
 analyze_rejected "--frame 5; the series has 5 frames" -- geometry "$WORK/one/particles.pvd" --frame 5 --dimension 2
