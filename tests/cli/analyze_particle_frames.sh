@@ -8,7 +8,9 @@
 # series are refused (exit 2). Fields: `analyze stats --bin-size` bins the frames' pressure on one
 # grid and gets per frame the void cells, mean and std that numpy gets binning the same points
 # (read by shockfield.vtk_arrays) by the same rule, in the frames' units (mean_Pa, time_s); the
-# 3-piece frames give the same table; wrong combinations are refused (exit 2).
+# 3-piece frames give the same table; wrong combinations are refused (exit 2). MD's LAMMPS dumps
+# (one frame per file) bin to their known cell means; a dump of two frames or without the column
+# is refused.
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_NUM_THREADS=1
@@ -81,4 +83,26 @@ analyze_rejected "give --bin-size H" -- stats "$WORK/one/particles.pvd" --array 
 analyze_rejected "--bin-size bins particle frames" -- stats "$WORK/one/grid.pvd" --bin-size 1e-5
 analyze_rejected "no point array named 'nope'" -- stats "$WORK/one/particles.pvd" --array nope --bin-size 1e-5
 analyze_rejected "expected at most 1e8" -- stats "$WORK/one/particles.pvd" --array pressure --bin-size 1e-12
+# MD's LAMMPS dumps binned the same way (one frame per file): 4 atoms, two per 1 A cell along x at
+# one y and z (a 2D grid of 2 x 1 cells), vx 1, 3 | V, 7: cell means 2 and (V + 7)/2, so stats.csv's
+# mean over the cells is 4 (V = 5) and 5 (V = 9) exactly; positions in A (no ITEM: UNITS), vx of
+# no named unit (mean_unknown), times from --times.
+dump_frame() {  # dump_frame STEP V FILE
+  printf 'ITEM: TIMESTEP\n%s\nITEM: NUMBER OF ATOMS\n4\nITEM: BOX BOUNDS ss pp pp\n0 2\n0 1\n0 1\nITEM: ATOMS id type x y z vx\n1 1 0 0.5 0.5 1\n2 1 0.5 0.5 0.5 3\n3 1 1.5 0.5 0.5 %s\n4 1 1.6 0.5 0.5 7\n' "$1" "$2" > "$3"
+}
+mkdir -p "$WORK/md_dumps"
+dump_frame 0 5 "$WORK/md_dumps/dump.0.lammpstrj"
+dump_frame 100 9 "$WORK/md_dumps/dump.100.lammpstrj"
+"$SF" analyze stats "$WORK/md_dumps/dump.0.lammpstrj" "$WORK/md_dumps/dump.100.lammpstrj" --array vx --bin-size 1 \
+  --times 0,0.1 --time-units ps -o "$WORK/md_binned" > /dev/null
+/usr/bin/python3 - "$WORK/md_binned/stats.csv" <<'PY' || fail "MD dumps binned to other cell means"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert [(r["time_ps"], r["cells"], r["void_cells"], float(r["mean_unknown"])) for r in rows] == \
+    [("0", "2", "0", 4.0), ("0.1", "2", "0", 5.0)], rows
+print("ok: two MD dumps binned to their known cell means (4 and 5)")
+PY
+cat "$WORK/md_dumps/dump.0.lammpstrj" "$WORK/md_dumps/dump.100.lammpstrj" > "$WORK/md_dumps/two_frames.lammpstrj"
+analyze_rejected "2 frames; expected one frame per file" -- stats "$WORK/md_dumps/two_frames.lammpstrj" --array vx --bin-size 1
+analyze_rejected "vy" -- stats "$WORK/md_dumps/dump.0.lammpstrj" --array vy --bin-size 1
 echo "analyze_particle_frames: ok"
