@@ -6,8 +6,9 @@ followed by a marker naming where the example prints it,
     <!-- value: EXAMPLE LABEL[#K] [±TOL[%]] -->
 
 EXAMPLE is a folder of examples/ with a run.sh; LABEL a word of what run.sh prints (a key such as
-`pressure_GPa`, `p*`); the value is the K-th number (default 1) after LABEL on the last line of
-that output that names LABEL (as a word: not inside another name). The quoted number is the last
+`pressure_GPa`, `p*`) or a "quoted phrase" (`"ps: a"`); the value is the K-th number (default 1)
+after LABEL on the last line of that output that names LABEL (as a word: not inside another name;
+a number is one standing alone, not the 44 of C44). The quoted number is the last
 number before the marker on its line (`−` read as a minus). They agree when the printed value
 rounds to the quoted digits (48.96 quotes 48.955 … 48.965; 47.2 does not quote 47.96), or, with
 ±TOL, when they differ by at most TOL (±0.5% relative): for a run that is not bit-reproducible
@@ -16,8 +17,9 @@ Markdown hides the comment, so the page reads as before.
 """
 import re
 
-MARKER = re.compile(r"<!--\s*value:\s*(\S+)\s+(\S+?)(?:#(\d+))?(?:\s+±([0-9.eE+-]+)(%?))?\s*-->")
-NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+MARKER = re.compile(r'<!--\s*value:\s*(\S+)\s+("[^"]+"|[^\s"#]+)(?:#(\d+))?(?:\s+±([0-9.eE+-]+)(%?))?\s*-->')
+# A number standing alone: not the digits of a name (C44, time_ps) nor the tail of another number.
+NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
 def markers(text):
@@ -25,7 +27,7 @@ def markers(text):
     for number, line in enumerate(text.splitlines(), 1):
         for m in MARKER.finditer(line):
             before = NUMBER.findall(line[: m.start()].replace("−", "-"))
-            yield (number, before[-1] if before else None, m.group(1), m.group(2), int(m.group(3) or 1),
+            yield (number, before[-1] if before else None, m.group(1), m.group(2).strip('"'), int(m.group(3) or 1),
                    float(m.group(4)) if m.group(4) else None, m.group(5) == "%")
 
 
