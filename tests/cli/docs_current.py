@@ -32,6 +32,8 @@ SOURCE_ROOT. Five checks, each catching a sentence that went stale when the code
 - Python names: every `shockfield.x.y` / `shockfield_plot.x` a Markdown file quotes in inline code
   is a package, a module (.py, .pyi: the compiled _core) or a name its module defines (def, class,
   assignment, import) under python/.
+- Examples: every folder of examples/ has a README.md, a run.sh and a picture (.png), as the
+  repository's README says.
 - Quoted values (docs_values.py): a number followed by a marker `<!-- value: EXAMPLE LABEL ... -->`
   is what examples/EXAMPLE/run.sh prints after LABEL. Without --printed only the markers' form is
   checked (the example exists, the marker follows a number); with --printed DIR (a folder holding
@@ -208,7 +210,10 @@ def page_method(path, methods):
 
 
 def stale_conditional_keys(keys):
-    """CONDITIONAL_KEYS entries that no longer hold: the file does not name the key, or a case reads it now."""
+    """CONDITIONAL_KEYS entries that no longer hold: the file does not name the key, or a case reads it now
+    (nothing for a tree without sources, the test's own)."""
+    if not keys.sources:
+        return
     for (page, section, key), source in CONDITIONAL_KEYS.items():
         file = keys.root / source
         if not file.exists() or not re.search(rf"\b{key}\b", file.read_text()):
@@ -266,6 +271,15 @@ def stale_python_names(path, text, root):
                 yield f"{path}:{number}: Python name `{dotted}` does not exist under python/"
 
 
+def incomplete_examples(root):
+    """README.md's promise: every example has a README saying what it shows, a run.sh and a picture."""
+    for example in sorted(p for p in (root / "examples").glob("*") if p.is_dir()):
+        for what, present in (("README.md", (example / "README.md").exists()), ("run.sh", (example / "run.sh").exists()),
+                              ("a picture (.png)", any(example.glob("*.png")))):
+            if not present:
+                yield f"examples/{example.name}: {what} missing (README.md says every example has one)"
+
+
 def main():
     args = sys.argv[1:]
     printed_dir = None
@@ -282,7 +296,7 @@ def main():
         sys.exit(check_printed_values(files, root, printed_dir))
     flags = help_tree(binary)
     keys = CaseKeys(binary, root, os.environ.get("DOCS_CURRENT_KEYS_CACHE"))
-    problems = list(stale_conditional_keys(keys))
+    problems = list(stale_conditional_keys(keys)) + list(incomplete_examples(root))
     for f in files:
         text = f.read_text()
         problems += stale_flags(f, text, flags)

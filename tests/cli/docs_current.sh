@@ -3,7 +3,7 @@
 # that subcommand's --help, every key of a method's key tables is read in that section by its case
 # readers (of other pages: by name somewhere in src/shockfield); every repository path and Python
 # name (shockfield.x.y) they quote exists; every quoted-value marker follows a number and names an
-# example (the values themselves: docs_values.sh). The check fails on a planted stale sentence of
+# example (the values themselves: docs_values.sh); every example has a README, a run.sh and a picture. The check fails on a planted stale sentence of
 # each kind (a flag the command lacks, a flag of another subcommand, a key nobody reads, a key of
 # another section, a key of another method, a file that is not there, a Python module that is not
 # there).
@@ -60,4 +60,11 @@ reports_planted "$WORK/report.txt" 8 \
   "mpm.md:5: key \`courant\` is not read in [output] of a mpm case" \
   "mpm.md:6: key \`dump_every\` is not read in [output] of a mpm case" \
   "md.md:7: key \`cell_size\` is not read in [stage.msst] of a md case"
+# An example without a run.sh and a picture, in a tree of its own.
+mkdir -p "$WORK/tree/examples/bare" "$WORK/tree/examples/whole" "$WORK/tree/src/shockfield"
+touch "$WORK/tree/examples/bare/README.md" "$WORK/tree/examples/whole/"{README.md,run.sh,picture.png} "$WORK/empty.md"
+if /usr/bin/python3 "$ROOT/tests/cli/docs_current.py" "$SF" "$WORK/tree" "$WORK/empty.md" > "$WORK/report.txt"; then
+  fail "the check passed an example without run.sh and picture"
+fi
+reports_planted "$WORK/report.txt" 2 "examples/bare: run.sh missing" "examples/bare: a picture (.png) missing"
 echo "docs_current: ok"
