@@ -79,7 +79,7 @@ std::vector<std::array<double, 3>> perturbed_fcc(std::size_t atoms, std::uint64_
 
 template <int N>
 int delaunay(const std::string& file) {
-  const auto pts = sg::read_points<N>(file);
+  const auto pts = sg::read_points<N>(file).points;
   const auto t0 = Clock::now();
   const std::clock_t c0 = std::clock();
   const auto d = sg::delaunay_division<N>(pts, file);

@@ -2,12 +2,12 @@
 """Plots of an MPM run folder written by `shockfield run` (method = "mpm").
 
   python3 -m shockfield_plot.mpm_plots porous RUN_DIR [--out FILE]
-      bottom-window means of density, pressure, temperature and u_y against time (seed Fig 19)
+      bottom-window means of density, pressure, temperature and u_y against time (Xu et al. (2015) Fig 19)
       with Xu et al.'s (2015) values at 250 ns when the run is their case, and the particles'
       temperature at the last frame
   python3 -m shockfield_plot.mpm_plots cavity RUN_DIR [RUN_DIR ...] [--out FILE]
       per run: particles around the cavity coloured by temperature at the last frame, and the
-      cavity area and collapsibility against time (seed Figs 46, 50, 53)
+      cavity area and collapsibility against time (Xu et al. (2015) Figs 46, 50, 53)
 
 Reads series.csv, config.resolved.toml and particles.pvd through shockfield.run.Run. Uses only
 numpy and matplotlib from Debian (run with /usr/bin/python3).
@@ -62,7 +62,7 @@ def porous(run, out):
             ax.plot(t_ns, s[f"bottom_{h}_{q}"] * scale, label=f"bottom, h = {h[1:-2]} µm")
             ax.plot(t_ns, s[f"top_{h}_{q}"] * scale, ls=":", lw=1, label=f"top, h = {h[1:-2]} µm")
         if seed_case and q in SEED_250NS:
-            ax.plot([250], [SEED_250NS[q] * scale], "k*", ms=12, label="seed Fig 19, h = 800 µm")
+            ax.plot([250], [SEED_250NS[q] * scale], "k*", ms=12, label="Xu et al. (2015) Fig 19, h = 800 µm")
         ax.set_xlabel("t (ns)")
         ax.set_ylabel(label)
     axes[0, 0].legend(fontsize="x-small")

@@ -29,7 +29,7 @@
   python3 -m shockfield_plot.pd_plots orientations RUN_DIR [--out FILE]
       a [homogeneous] run's grains (grain_summary.csv): the crystal direction along the loading
       axis before and after, in the standard stereographic triangle [001]-[101]-[111] (inverse
-      pole figure; seed Fig. 5(a) shows the initial orientations); prints the mean angle from <110>.
+      pole figure; Liu et al. (2025) Fig. 5(a) shows the initial orientations); prints the mean angle from <110>.
 
   python3 -m shockfield_plot.pd_plots damage RUN_DIR [RUN_DIR ...] [--tips X,Y ...] [--labels L ...] [--out FILE]
       a 2D run's damage at the last profile time on the reference positions (mm); for each notch

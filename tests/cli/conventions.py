@@ -7,6 +7,11 @@ The folders after --analysis are output folders of `shockfield analyze atoms` (n
 metal units): their CSV tables (structures, clusters, profiles, tracks, growth, burgers, domains,
 voids) and .vtp surfaces are checked as an MD run's, as the method "analyze_atoms".
 
+A folder of `shockfield analyze geometry` (summary.txt with its simplices) is checked as such: every
+name of summary.txt and column of clusters.csv a count or label (GEOMETRY_COUNTS) or a quantity of
+GEOMETRY_QUANTITIES with its unit's suffix (x_m, total_volume_A3, _1, _unknown), units on its VTK
+arrays.
+
 The tables of the field analyses (`shockfield analyze minkowski|similarity|stats`: FIELD_TABLES),
 in any folder given, are in the units of the field they read: every column is a pure number
 (FIELD_DIMENSIONLESS) or a quantity of FIELD_QUANTITIES followed by its unit's suffix, `_1` (a pure
@@ -101,6 +106,34 @@ def check_field_table(path):
         if not any(c.startswith(q + "_") and FIELD_UNIT.fullmatch(c[len(q) + 1:]) for q in FIELD_QUANTITIES):
             yield (f"{path}: column '{c}' has no unit suffix (a quantity of FIELD_QUANTITIES, then _<unit>, _1 "
                    "or _unknown) and is not a pure number")
+
+
+# The outputs of `shockfield analyze geometry` (a folder with summary.txt, clusters.csv, delaunay.vtu,
+# surface.vtp), in the length unit of the points read (core/unit_names: x_m, total_volume_A3, _1,
+# _unknown): summary.txt's names and clusters.csv's columns are counts and labels (GEOMETRY_COUNTS)
+# or a quantity of GEOMETRY_QUANTITIES with its unit's suffix.
+GEOMETRY_COUNTS = {"index", "points", "duplicates", "simplices", "surface_triangles", "surface_euler_characteristic",
+                   "surface_manifold", "seed_rule", "single_linkage", "seed_rule_clusters", "seed_rule_largest",
+                   "seed_rule_shared_points", "single_linkage_clusters", "single_linkage_largest", "check"}
+GEOMETRY_QUANTITIES = ("x", "y", "z", "total_volume", "total_area", "surface_area", "surface_volume")
+
+
+def is_geometry_analysis(run):
+    summary = run / "summary.txt"
+    return summary.exists() and re.search(r"^simplices ", summary.read_text(), re.M) is not None
+
+
+def check_geometry_analysis(run):
+    names = [("summary.txt", line.split()[0]) for line in (run / "summary.txt").read_text().splitlines() if line.split()]
+    if (run / "clusters.csv").exists():
+        names += [("clusters.csv", c) for c in next(csv_lines(run / "clusters.csv"), [])]
+    for file, name in names:
+        if name not in GEOMETRY_COUNTS and not any(name.startswith(q + "_") and FIELD_UNIT.fullmatch(name[len(q) + 1:])
+                                                   for q in GEOMETRY_QUANTITIES):
+            yield (f"{run / file}: '{name}' has no unit suffix (a quantity of GEOMETRY_QUANTITIES, then _<unit>, _1 "
+                   "or _unknown) and is not a count")
+    for path in sorted(run.glob("*.vt[up]")):
+        yield from check_vtk(path, None)
 
 
 def unit_problem(column, system):
@@ -369,6 +402,9 @@ def main():
     analysis = set(args[args.index("--analysis") + 1:]) if "--analysis" in args else set()
     folders = [a for a in args if a != "--analysis"]
     for run in map(pathlib.Path, folders):
+        if is_geometry_analysis(run):
+            problems += check_geometry_analysis(run)
+            continue
         method = "analyze_atoms" if str(run) in analysis else method_of(run)
         if method not in UNIT_SYSTEM:
             problems.append(f"{run}: method {method!r} has no unit system in conventions.py (UNIT_SYSTEM); "

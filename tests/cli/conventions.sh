@@ -4,14 +4,14 @@
 # column per file named for the method's unit system, units in every CSV column name (SI and metal
 # units) and summary.json result key, velocities never named u, totals of 1D/2D runs labelled per length or area
 # (model units too), self-describing checkpoints (docs/checkpoints.md), and the same for the tables and surfaces
-# of `analyze atoms` (metal units). The checker
+# of `analyze atoms` (metal units) and the outputs of `analyze geometry` (the length unit of its input). The checker
 # itself fails on a folder that breaks them (a second time column, a time column of another unit
 # system, an array without units, an image without its length_units and a .pvd without or with
 # another time_units, granular, PD and MPM columns without their units, PD summary keys
 # without their unit or per-area label, MD analysis tables without units, an MPM velocity and a DBM
 # (model-unit) velocity named u, DBM and phase-field totals without their per-length label, analyze
 # atoms' tables under their old names (tracks.csv, growth.csv, profiles.csv) and a surface without
-# units, a method without a unit system, a checkpoint dataset without units or a case that is not
+# units, analyze geometry's summary.txt, clusters.csv and mesh without units, a method without a unit system, a checkpoint dataset without units or a case that is not
 # the run's).
 source "$(dirname "$0")/lib.bash"
 set -e
@@ -92,6 +92,16 @@ done
   fail "MPM structure_factor.csv columns: $(head -1 "$WORK/fields_mpm/structure_factor.csv")"
 [ "$(head -1 "$WORK/fields_phasefield/minkowski.csv")" = "file,time_1,threshold_1,A,L_1,chi,chi_per_black" ] ||
   fail "phase-field minkowski.csv columns: $(head -1 "$WORK/fields_phasefield/minkowski.csv")"
+# `analyze geometry` in the length unit of its points: an MPM particle frame (m), the MD analysis
+# case's last dump (A), a CSV without --length-units (unknown).
+last_frame=$(ls "$WORK"/mpm_tiny/fields/particles_*.vtp | tail -1)
+"$SF" analyze geometry "$last_frame" --dimension 2 -d 3e-5 -o "$WORK/geometry_mpm" > /dev/null
+"$SF" analyze geometry "$(ls "$WORK"/tiny_cu_analysis/dumps/* | tail -1)" -d 3.0 -r 3.0 -o "$WORK/geometry_md" > /dev/null
+printf 'x,y,z\n0,0,0\n1,0,0\n0,1,0\n0,0,1\n' > "$WORK/tetrahedron.csv"
+"$SF" analyze geometry "$WORK/tetrahedron.csv" -d 2 -o "$WORK/geometry_csv" > /dev/null
+grep -q '^total_area_m2 ' "$WORK/geometry_mpm/summary.txt" && grep -q '^surface_area_A2 ' "$WORK/geometry_md/summary.txt" &&
+  grep -q '^total_volume_unknown ' "$WORK/geometry_csv/summary.txt" || fail "analyze geometry's summaries name no units"
+runs+=("$WORK/geometry_mpm" "$WORK/geometry_md" "$WORK/geometry_csv")
 check "${runs[@]}" --analysis "$WORK/atoms" "$WORK/fields_mpm" "$WORK/fields_phasefield" ||
   fail "a run or analysis folder breaks the output conventions (above)"
 
@@ -216,6 +226,16 @@ AS_ANALYSIS=1 expect_reported "$WORK/broken_fields" "field-analysis tables witho
   "minkowski.csv: column 'threshold' has no unit suffix" "minkowski.csv: column 'L' has no unit suffix" \
   "minkowski.csv: column 'time' has no unit suffix" "stats.csv: column 'mean' has no unit suffix" \
   "stats.csv: column 'domain_size_R' has no unit suffix" "stats.csv: time columns ['time_s', 'time_ps']"
+# analyze geometry's outputs under their names before issue 15 (no units) and a mesh without units.
+mkdir -p "$WORK/broken_geometry"
+sed 's/^total_volume_A3 /total_volume /; s/^surface_area_A2 /surface_area /' "$WORK/geometry_md/summary.txt" \
+  > "$WORK/broken_geometry/summary.txt"
+sed '1s/x_A,y_A,z_A/x,y,z/' "$WORK/geometry_md/clusters.csv" > "$WORK/broken_geometry/clusters.csv"
+sed 's/ units="A3"//' "$WORK/geometry_md/delaunay.vtu" > "$WORK/broken_geometry/delaunay.vtu"
+expect_reported "$WORK/broken_geometry" "analyze geometry's outputs without units" \
+  "summary.txt: 'total_volume' has no unit suffix" "summary.txt: 'surface_area' has no unit suffix" \
+  "clusters.csv: 'x' has no unit suffix" "clusters.csv: 'z' has no unit suffix" \
+  "delaunay.vtu: DataArray 'volume' has no units attribute"
 # The next method: a run folder of a method the checker has no unit system for is itself a violation.
 mkdir -p "$WORK/broken_new_method"
 printf "method = 'newmethod'\n" > "$WORK/broken_new_method/config.resolved.toml"

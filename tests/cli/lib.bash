@@ -5,6 +5,16 @@ ROOT="$2"
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
+# reports_planted REPORT COUNT PATTERN...: a checker's REPORT on planted problems names each
+# PATTERN and has COUNT lines (nothing else reported).
+reports_planted() {
+  local report="$1" count="$2" p
+  shift 2
+  for p in "$@"; do
+    grep -qF -- "$p" "$report" || fail "not reported: $p ($(cat "$report"))"
+  done
+  [ "$(wc -l < "$report")" -eq "$count" ] || fail "other than the $count planted problems: $(cat "$report")"
+}
 # run_expecting CODE CASE_TEXT PATTERN...: runs the case into $WORK/out; the exit code must be
 # CODE and stderr must contain every pattern.
 run_expecting() {

@@ -12,8 +12,33 @@ PY=/usr/bin/python3
 cases="$ROOT/tests/cli/cases"
 "$SF" run "$cases/granular_tiny.toml" --output "$WORK/granular" -q > /dev/null
 "$SF" run "$cases/pd_tiny.toml" --output "$WORK/pd" -q > /dev/null
+"$SF" run "$cases/macroparticle_tiny.toml" --output "$WORK/macroparticle" -q > /dev/null
 [ "$(ls "$WORK/granular/dumps")" = "$(printf 'dump.000.lammpstrj\ndump.309.lammpstrj\ndump.617.lammpstrj')" ] ||
   fail "granular dumps are not one per particle frame, named by the padded step: $(ls "$WORK/granular/dumps")"
+# The macroscopic particles' dumps (MD's writer, dump_every) are named and labelled alike: the step
+# padded to the digits of the last (250), ITEM: UNITS si (metres, m/s).
+[ "$(ls "$WORK/macroparticle/dumps")" = "$(printf 'dump.000.lammpstrj\ndump.125.lammpstrj\ndump.250.lammpstrj')" ] ||
+  fail "macroparticle dumps are not named by the padded step: $(ls "$WORK/macroparticle/dumps")"
+for f in "$WORK"/{granular,pd,macroparticle}/dumps/*; do
+  [ "$(sed -n '/^ITEM: UNITS$/{n;p;q}' "$f")" = si ] || fail "$f does not say ITEM: UNITS si"
+done
+# Every particle of every frame inside its box: the shrink-wrapped box is reset to the particles
+# (as write_data does), not the box of the last neighbour rebuild, which they had left.
+"$PY" - "$WORK"/macroparticle/dumps/* <<'PYEOF' || fail "a macroparticle lies outside its dump's box"
+import sys
+for name in sys.argv[1:]:
+    lines = open(name).read().splitlines()
+    b = lines.index(next(l for l in lines if l.startswith("ITEM: BOX BOUNDS")))
+    box = [tuple(map(float, lines[b + 1 + d].split())) for d in range(3)]
+    at = lines.index(next(l for l in lines if l.startswith("ITEM: ATOMS")))
+    columns = lines[at].split()[2:]
+    for row in lines[at + 1:]:
+        v = row.split()
+        for d, c in enumerate("xyz"):
+            x = float(v[columns.index(c)])
+            assert box[d][0] <= x <= box[d][1], (name, v[0], c, x, box[d])
+print(f"ok: every macroparticle inside its frame's box ({len(sys.argv) - 1} frames)")
+PYEOF
 
 # analyze atoms reads the run folders. Grains 4 mm apart (touching) and PD points 10 µm apart
 # have two neighbours within 1.025 spacings, the two ends one.

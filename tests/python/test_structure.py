@@ -108,7 +108,8 @@ class Structure(unittest.TestCase):
                 np.testing.assert_array_equal(r["single_linkage"]["label"], labels["single_linkage"].astype(int))
                 summary = dict(line.split() for line in (out / "summary.txt").read_text().splitlines())
                 total = r["total_volume" if dim == 3 else "total_area"]
-                self.assertEqual(f"{total:.12g}", summary["total_volume" if dim == 3 else "total_area"])
+                # a CSV names no unit: summary.txt says so (docs/conventions.md)
+                self.assertEqual(f"{total:.12g}", summary["total_volume_unknown" if dim == 3 else "total_area_unknown"])
                 self.assertEqual(int(summary["seed_rule_clusters"]), r["seed_rule"]["count"])
                 self.assertGreater(r["single_linkage"]["count"], 1)
 

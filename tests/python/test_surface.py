@@ -71,14 +71,14 @@ class Surface(unittest.TestCase):
                 np.testing.assert_array_equal(s["points"], points[s["point_index"]])
                 out = self.dir / method
                 process = subprocess.run([SF, "analyze", "geometry", str(csv), "--no-mesh", "--surface-method", method,
-                                          *options, "-o", str(out)], capture_output=True, text=True)
+                                          *options, "--length-units", "m", "-o", str(out)], capture_output=True, text=True)
                 self.assertEqual(process.returncode, 0, process.stderr)
                 vtp_points, vtp_triangles = read_cells(out / "surface.vtp", 3)
                 np.testing.assert_array_equal(s["points"], vtp_points)
                 np.testing.assert_array_equal(s["triangles"], vtp_triangles)
                 summary = dict(line.split() for line in (out / "summary.txt").read_text().splitlines())
-                self.assertEqual(f"{s['area']:.12g}", summary["surface_area"])
-                self.assertEqual(f"{s['volume']:.12g}", summary["surface_volume"])
+                self.assertEqual(f"{s['area']:.12g}", summary["surface_area_m2"])  # --length-units m
+                self.assertEqual(f"{s['volume']:.12g}", summary["surface_volume_m3"])
                 self.assertEqual(len(s["triangles"]), int(summary["surface_triangles"]))
                 self.assertEqual(s["euler_characteristic"], int(summary["surface_euler_characteristic"]))
                 self.assertEqual("yes" if s["manifold"] else "no", summary["surface_manifold"])

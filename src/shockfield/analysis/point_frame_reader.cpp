@@ -5,9 +5,13 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "shockfield/analysis/vti_binary.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/unit_names.hpp"
+#include "shockfield/io/lammps_dump.hpp"
 #include "shockfield/io/vtk_zlib.hpp"
 
 namespace shockfield::analysis {
@@ -139,12 +143,44 @@ void read_pvtp(const std::string& path, const std::string& text, const std::stri
   if (pieces == 0) throw InputError(fmt::format("{}: no <Piece Source> entries", path));
 }
 
+// A LAMMPS text dump of one frame (MD's dumps/dump.<step>.lammpstrj, io/lammps_dump): its positions
+// in the length unit of its ITEM: UNITS style (Å without one: LAMMPS metal units, MD's dumps), and
+// the column `array`, whose unit a dump does not name.
+PointFrame read_dump_frame(const std::string& path, const std::string& text, const std::string& array) {
+  std::istringstream in(text);
+  const auto frames = io::read_dump(in, path);
+  if (frames.size() != 1)
+    throw InputError(fmt::format("{}: {} frames; expected one frame per file (as MD writes its "
+                                 "dumps/dump.<step>.lammpstrj)", path, frames.size()));
+  const io::DumpFrame& dump = frames.front();
+  PointFrame frame;
+  for (const Vec3& p : dump.positions()) frame.xyz.insert(frame.xyz.end(), {p[0], p[1], p[2]});
+  frame.position_units = dump.units.empty() ? "A" : units::lammps_length_unit(dump.units);
+  if (frame.position_units.empty())
+    throw InputError(fmt::format("{}: ITEM: UNITS '{}' is not a LAMMPS unit style ({})", path, dump.units,
+                                 units::kLammpsUnitStyles));
+  if (!array.empty()) frame.values = dump.column(array);
+  return frame;
+}
+
+bool starts_like_dump(const std::string& text) { return text.rfind("ITEM:", 0) == 0; }
+
 }  // namespace
+
+bool is_point_frame_file(const std::string& path) {
+  const auto ext = fs::path(path).extension();
+  if (ext == ".vtp" || ext == ".pvtp") return true;
+  std::ifstream in(path);
+  std::string first;
+  return std::getline(in, first) && starts_like_dump(first);
+}
 
 PointFrame read_point_frame(const std::string& path, const std::string& array) {
   const std::string text = read_whole_file(path);
   PointFrame frame;
-  if (fs::path(path).extension() == ".pvtp")
+  if (starts_like_dump(text))
+    frame = read_dump_frame(path, text, array);
+  else if (fs::path(path).extension() == ".pvtp")
     read_pvtp(path, text, array, frame);
   else
     read_vtp(path, text, array, frame);

@@ -19,6 +19,7 @@
 #include "shockfield/analysis/field_statistics.hpp"
 #include "shockfield/analysis/minkowski.hpp"
 #include "shockfield/analysis/particle_binning.hpp"
+#include "shockfield/analysis/point_frame_reader.hpp"
 #include "shockfield/analysis/similarity.hpp"
 #include "shockfield/analysis/spectral_statistics.hpp"
 #include "shockfield/app/commands.hpp"
@@ -76,9 +77,10 @@ void add_common(CLI::App* cmd, Common& c, const char* files_help) {
       ->check(CLI::IsMember({2, 3}));
   cmd->add_option("--array", c.array, "Data array to read from VTK files (default: the first)");
   cmd->add_option("--bin-size", c.bin_size,
-                  "Particle frames (.vtp, .pvtp, a .pvd of them: MPM, PD, granular, macroparticle): bin "
-                  "--array's values (mean per cell; empty cells void) on cubic cells of this side, in the "
-                  "frames' length unit, one grid over every frame's particles");
+                  "Particle frames (.vtp, .pvtp, a .pvd of them: MPM, PD, granular, macroparticle; MD's "
+                  "LAMMPS dumps, one frame per file, --array a column): bin --array's values (mean per cell; "
+                  "empty cells void) on cubic cells of this side, in the frames' length unit, one grid over "
+                  "every frame's particles");
   cmd->add_option("-o,--output", c.output, "Output folder (created if missing)")
       ->capture_default_str();
   cmd->add_option("-j,--threads", c.threads, "OpenMP threads (default: OMP_NUM_THREADS, else all)")
@@ -175,18 +177,16 @@ Inputs read_all(const Common& c, const std::vector<std::string>& paths, const ch
                                            [&](const std::string& u) { return u == series_units.front(); });
   in.time_units = !c.time_units.empty() ? c.time_units
                   : c.times.empty() && one_series_unit ? series_units.front() : "";
-  const auto is_frame = [](const std::string& f) {
-    const auto ext = fs::path(f).extension();
-    return ext == ".vtp" || ext == ".pvtp";
-  };
-  const auto frames = std::count_if(in.files.begin(), in.files.end(), is_frame);
+  const auto frames = std::count_if(in.files.begin(), in.files.end(), sa::is_point_frame_file);
   if (frames > 0 && frames < static_cast<std::ptrdiff_t>(in.files.size()))
-    throw InputError(fmt::format("{} fields: particle frames (.vtp, .pvtp) mixed with grids; give one kind", role));
+    throw InputError(fmt::format("{} fields: particle frames (.vtp, .pvtp, LAMMPS dumps) mixed with grids; give one kind",
+                                 role));
   if (frames > 0 && (c.bin_size <= 0.0 || c.array.empty()))
     throw InputError(fmt::format("{}: a particle frame; give --bin-size H (the cell side, in the frame's length "
                                  "unit) and --array NAME (the point array to bin)", in.files.front()));
   if (frames == 0 && c.bin_size > 0.0)
-    throw InputError(fmt::format("--bin-size bins particle frames (.vtp, .pvtp); {} is a grid", in.files.front()));
+    throw InputError(fmt::format("--bin-size bins particle frames (.vtp, .pvtp, LAMMPS dumps); {} is a grid",
+                                 in.files.front()));
   if (frames > 0) in.fields = sa::bin_point_frames(in.files, c.array, c.bin_size);
   for (std::size_t k = 0; k < in.files.size(); ++k) {
     const std::string& f = in.files[k];

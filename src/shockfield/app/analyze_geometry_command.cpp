@@ -12,6 +12,7 @@
 #include "shockfield/analysis/point_frame_reader.hpp"
 #include "shockfield/app/commands.hpp"
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/unit_names.hpp"
 #include "shockfield/geometry/delaunay.hpp"
 #include "shockfield/geometry/delaunay_clusters.hpp"
 #include "shockfield/geometry/delaunay_output.hpp"
@@ -35,17 +36,29 @@ struct GeometryArgs {
   double sculpt_depth = 0.0;      // 0: no packing-sculpting surface (3D only)
   std::string rule = "both";
   std::string surface_method = "delaunay";
+  std::string length_units;  // of a file that names none; "" unknown
   bool check = false;
   bool no_mesh = false;
 };
 
-// The points of the input and their unit ("1" when the file does not say: CSV, XYZ; a LAMMPS dump
-// names none either). A particle frame (.vtp, .pvtp) gives its Points' units; a .pvd its frame
-// number `frame` (0-based, −1 the last) in time order.
+// The points of the input and the unit of their coordinates ("" when unknown). A particle frame
+// (.vtp, .pvtp) gives its Points' units, a LAMMPS dump its ITEM: UNITS style's length unit; a .pvd
+// its frame number `frame` (0-based, −1 the last) in time order. `--length-units` names the unit of
+// a file that names none (CSV, XYZ, a dump without ITEM: UNITS, read as Å otherwise: metal units).
 template <int N>
 std::pair<std::vector<std::array<double, N>>, std::string> input_points(const GeometryArgs& a) {
   const std::string ext = fs::path(a.input).extension().string();
-  if (ext != ".vtp" && ext != ".pvtp" && ext != ".pvd") return {sg::read_points<N>(a.input, a.frame), "1"};
+  const auto with_unit = [&](std::vector<std::array<double, N>> points, const std::string& named,
+                             const std::string& fallback) {
+    if (!named.empty() && !a.length_units.empty() && named != a.length_units)
+      throw InputError(fmt::format("{}: its coordinates are in '{}'; --length-units says '{}'", a.input, named,
+                                   a.length_units));
+    return std::pair{std::move(points), !named.empty() ? named : !a.length_units.empty() ? a.length_units : fallback};
+  };
+  if (ext != ".vtp" && ext != ".pvtp" && ext != ".pvd") {
+    auto set = sg::read_points<N>(a.input, a.frame);
+    return with_unit(std::move(set.points), set.length_unit, set.lammps_dump ? "A" : "");
+  }
   std::string file = a.input;
   if (ext == ".pvd") {
     const auto series = analysis::read_series(a.input);
@@ -61,12 +74,15 @@ std::pair<std::vector<std::array<double, N>>, std::string> input_points(const Ge
   std::vector<std::array<double, N>> points(frame.xyz.size() / 3);
   for (std::size_t i = 0; i < points.size(); ++i)
     for (int d = 0; d < N; ++d) points[i][static_cast<std::size_t>(d)] = frame.xyz[3 * i + static_cast<std::size_t>(d)];
-  return {std::move(points), frame.position_units.empty() ? "1" : frame.position_units};
+  return with_unit(std::move(points), frame.position_units, "");
 }
 
 template <int N>
 void run_geometry(const GeometryArgs& a) {
-  auto [points, units] = input_points<N>(a);
+  auto [points, length_unit] = input_points<N>(a);
+  units::column_suffix(length_unit);  // a --length-units no column name can spell stops here (InputError)
+  // The VTK files spell an unknown unit "unknown", as the column names do (core/unit_names).
+  const std::string vtk_units = length_unit.empty() ? "unknown" : length_unit;
   const auto division = sg::delaunay_division<N>(std::move(points), a.input);
   if (a.check) {
     if (const std::string e = sg::check_delaunay<N>(division); !e.empty())
@@ -95,21 +111,23 @@ void run_geometry(const GeometryArgs& a) {
   sg::PointArrays arrays;
   for (const auto& [name, c] : clusterings)
     arrays.emplace_back(name, std::vector<double>(c.label.begin(), c.label.end()));
-  if (!a.no_mesh) sg::write_delaunay_vtu<N>(out / "delaunay.vtu", division, arrays, units);
+  if (!a.no_mesh) sg::write_delaunay_vtu<N>(out / "delaunay.vtu", division, arrays, vtk_units);
   std::vector<std::pair<std::string, const sg::PointClusters*>> refs;
   for (const auto& [name, c] : clusterings) refs.emplace_back(name, &c);
-  if (!clusterings.empty()) sg::write_clusters_csv<N>(out / "clusters.csv", division, refs);
-  std::string summary = fmt::format(
-      "points {}\nduplicates {}\nsimplices {}\ntotal_{} {:.12g}\n", division.points.size(),
-      division.duplicates, division.simplices.size(), N == 2 ? "area" : "volume",
-      sg::total_volume<N>(division));
+  if (!clusterings.empty()) sg::write_clusters_csv<N>(out / "clusters.csv", division, refs, length_unit);
+  // summary.txt names the unit of each length, area and volume as a CSV column would
+  // (docs/conventions.md): total_volume_m3, surface_area_A2, total_area_unknown.
+  const auto name = [&](const char* quantity, int power) { return units::column_name(quantity, length_unit, power); };
+  std::string summary = fmt::format("points {}\nduplicates {}\nsimplices {}\n{} {:.12g}\n", division.points.size(),
+                                    division.duplicates, division.simplices.size(),
+                                    name(N == 2 ? "total_area" : "total_volume", N), sg::total_volume<N>(division));
   if (a.check) summary += "check passed\n";
   if (surface) {
-    sg::write_surface_vtp(out / "surface.vtp", surface->points, surface->triangles, units);
+    sg::write_surface_vtp(out / "surface.vtp", surface->points, surface->triangles, vtk_units);
     summary += fmt::format(
-        "surface_triangles {}\nsurface_area {:.12g}\nsurface_volume {:.12g}\n"
-        "surface_euler_characteristic {}\nsurface_manifold {}\n",
-        surface->triangles.size(), surface->area, surface->volume, surface->euler_characteristic,
+        "surface_triangles {}\n{} {:.12g}\n{} {:.12g}\nsurface_euler_characteristic {}\nsurface_manifold {}\n",
+        surface->triangles.size(), name("surface_area", 2), surface->area, name("surface_volume", 3), surface->volume,
+        surface->euler_characteristic,
         surface->manifold ? "yes" : "no");
   }
   for (const auto& [name, c] : clusterings) {
@@ -140,7 +158,8 @@ void add_analyze_geometry_command(CLI::App& analyze) {
       "surface) or --sculpt-depth (packing-sculpting surface), and OUTPUT/summary.txt.\n"
       "Input: CSV/text (x,y[,z] by header name or the first columns), .xyz (count, comment, 'species x y z' lines), a LAMMPS text\n"
       "dump, or a particle frame of a run (.vtp, .pvtp, or a .pvd of them with --frame: MPM, PD, granular,\n"
-      "macroparticle; the outputs then carry its points' units). See docs/geometry-giso.md.");
+      "macroparticle). The outputs name the points' length unit: a frame's, a dump's ITEM: UNITS (A\n"
+      "without it), else --length-units, else 'unknown'. See docs/geometry-giso.md.");
   cmd->add_option("points", a->input, "Point file (.csv/.txt, .xyz, a LAMMPS dump, .vtp, .pvtp or a .pvd of them)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -172,6 +191,9 @@ void add_analyze_geometry_command(CLI::App& analyze) {
                   "or packing (the packing-sculpting surface of Xu et al. 2015 to --sculpt-depth)")
       ->capture_default_str()
       ->check(CLI::IsMember({"delaunay", "pivot", "packing"}));
+  cmd->add_option("--length-units", a->length_units,
+                  "Unit of the coordinates of a file that names none (CSV/text, XYZ, a dump without ITEM: UNITS), "
+                  "e.g. A or m: the column names and VTK units of the outputs say it (default: unknown; A for a dump)");
   cmd->add_flag("--check", a->check,
                 "Check the division exactly (orientation, neighbour links, empty circumspheres) "
                 "before writing");

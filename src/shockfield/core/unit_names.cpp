@@ -74,4 +74,15 @@ std::string column_name(const std::string& name, const std::string& unit, int po
   return name + "_" + column_suffix(unit, power);
 }
 
+std::string lammps_length_unit(const std::string& style) {
+  if (style == "real" || style == "metal") return "A";
+  if (style == "si") return "m";
+  if (style == "cgs") return "cm";
+  if (style == "electron") return "Bohr";
+  if (style == "micro") return "um";
+  if (style == "nano") return "nm";
+  if (style == "lj") return "1";
+  return "";
+}
+
 }  // namespace shockfield::units

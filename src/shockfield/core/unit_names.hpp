@@ -16,4 +16,12 @@ std::string column_suffix(const std::string& unit, int power = 1);
 /// `name` + "_" + column_suffix(unit, power): ("mean", "Pa") → mean_Pa.
 std::string column_name(const std::string& name, const std::string& unit, int power = 1);
 
+/// The unit styles of LAMMPS's `units` command, as a list for messages.
+inline constexpr const char* kLammpsUnitStyles = "lj, real, metal, si, cgs, electron, micro, nano";
+
+/// The length unit of a LAMMPS unit style (a dump's `ITEM: UNITS`; LAMMPS's `units` command page):
+/// real and metal → "A", si → "m", cgs → "cm", electron → "Bohr", micro → "um", nano → "nm",
+/// lj → "1" (reduced units); "" for a word that is no unit style.
+std::string lammps_length_unit(const std::string& style);
+
 }  // namespace shockfield::units

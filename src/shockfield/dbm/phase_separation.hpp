@@ -72,7 +72,7 @@ PhaseSample sample_phase_separation(const Simulation& simulation, GlsForce& forc
 
 struct SpinodalEnd {
   double t_sd = 0, D_max = 0;
-  double t_L_max = 0, L_max = 0;  // peak of the boundary length (coincides with t_SD, seed §4.3)
+  double t_L_max = 0, L_max = 0;  // peak of the boundary length (coincides with t_SD, Xu et al. (2015) §4.3)
 };
 /// Peaks of D(t) and L(t) over the samples (first maximum on ties).
 SpinodalEnd spinodal_end(const std::vector<PhaseSample>& samples);

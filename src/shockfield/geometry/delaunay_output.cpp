@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "shockfield/core/unit_names.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/vtk_xml.hpp"
 
@@ -13,9 +14,9 @@ namespace {
 // Analysis meshes are written as the runs' fields are: zlib-compressed binary, Float64 positions.
 const io::VtkFormat kMeshFormat(io::VtkEncoding::Zlib, io::VtkPrecision::Float64);
 
-// The unit of a measure of `dimension` lengths of `length_unit` ("A" -> "A3"; "1" stays "1").
+// The unit of a measure of `dimension` lengths of `length_unit` ("A" -> "A3"; "1" and "unknown" stay).
 std::string power_unit(const std::string& length_unit, int dimension) {
-  return length_unit == "1" ? length_unit : length_unit + std::to_string(dimension);
+  return length_unit == "1" || length_unit == "unknown" ? length_unit : length_unit + std::to_string(dimension);
 }
 
 }  // namespace
@@ -70,9 +71,11 @@ void write_surface_vtp(const std::filesystem::path& file,
 
 template <int N>
 void write_clusters_csv(const std::filesystem::path& file, const DelaunayDivision<N>& d,
-                        const std::vector<std::pair<std::string, const PointClusters*>>& clusterings) {
+                        const std::vector<std::pair<std::string, const PointClusters*>>& clusterings,
+                        const std::string& length_unit) {
   io::CheckedOutput out(file);  // a failed write stops with RunError naming the file
-  out << "index," << (N == 2 ? "x,y" : "x,y,z");
+  out << "index";
+  for (int k = 0; k < N; ++k) out << ',' << units::column_name(std::string(1, "xyz"[k]), length_unit);
   for (const auto& [name, c] : clusterings) out << ',' << name;
   out << '\n';
   for (std::size_t i = 0; i < d.points.size(); ++i) {
@@ -89,8 +92,8 @@ template void write_delaunay_vtu<2>(const std::filesystem::path&, const Delaunay
 template void write_delaunay_vtu<3>(const std::filesystem::path&, const DelaunayDivision<3>&, const PointArrays&,
                                     const std::string&);
 template void write_clusters_csv<2>(const std::filesystem::path&, const DelaunayDivision<2>&,
-                                    const std::vector<std::pair<std::string, const PointClusters*>>&);
+                                    const std::vector<std::pair<std::string, const PointClusters*>>&, const std::string&);
 template void write_clusters_csv<3>(const std::filesystem::path&, const DelaunayDivision<3>&,
-                                    const std::vector<std::pair<std::string, const PointClusters*>>&);
+                                    const std::vector<std::pair<std::string, const PointClusters*>>&, const std::string&);
 
 }  // namespace shockfield::geometry

@@ -37,9 +37,11 @@ void write_surface_vtp(const std::filesystem::path& file,
                        const std::vector<std::array<double, 3>>& points,
                        const std::vector<std::array<std::int32_t, 3>>& triangles, const std::string& length_unit);
 
-/// CSV: index,x,y[,z],<one column per named clustering>; the header names the columns.
+/// CSV: index,x_<unit>,y_<unit>[,z_<unit>],<one column per named clustering>; the coordinates
+/// named with `length_unit` as core/unit_names spells it (x_A, x_m; x_unknown for "").
 template <int N>
 void write_clusters_csv(const std::filesystem::path& file, const DelaunayDivision<N>& d,
-                        const std::vector<std::pair<std::string, const PointClusters*>>& clusterings);
+                        const std::vector<std::pair<std::string, const PointClusters*>>& clusterings,
+                        const std::string& length_unit);
 
 }  // namespace shockfield::geometry

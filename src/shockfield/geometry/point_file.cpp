@@ -9,6 +9,7 @@
 #include <string>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/core/unit_names.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 #include "shockfield/io/line_reader.hpp"
 
@@ -98,14 +99,18 @@ std::vector<std::array<double, N>> read_xyz(const std::filesystem::path& file) {
 }
 
 template <int N>
-std::vector<std::array<double, N>> read_dump_points(const std::filesystem::path& file, int frame) {
+PointSet<N> read_dump_points(const std::filesystem::path& file, int frame) {
   const auto frames = io::read_dump(file);
   if (frames.empty()) throw InputError(fmt::format("{}: no frame in the dump file", file.string()));
   const int f = frame < 0 ? static_cast<int>(frames.size()) - 1 : frame;
   if (f >= static_cast<int>(frames.size()))
     throw InputError(fmt::format("{}: frame {} asked for, the dump has {}", file.string(), frame,
                                  frames.size()));
-  std::vector<std::array<double, N>> pts;
+  PointSet<N> set{{}, frames[f].units.empty() ? "" : units::lammps_length_unit(frames[f].units), true};
+  if (!frames[f].units.empty() && set.length_unit.empty())
+    throw InputError(fmt::format("{}: frame {}: ITEM: UNITS '{}' is not a LAMMPS unit style ({})", file.string(), f,
+                                 frames[f].units, units::kLammpsUnitStyles));
+  auto& pts = set.points;
   for (const auto& v : frames[f].positions()) {
     std::array<double, N> p;
     for (int k = 0; k < N; ++k) {
@@ -116,7 +121,7 @@ std::vector<std::array<double, N>> read_dump_points(const std::filesystem::path&
     }
     pts.push_back(p);
   }
-  return pts;
+  return set;
 }
 
 bool looks_like_dump(const std::filesystem::path& file) {
@@ -128,16 +133,16 @@ bool looks_like_dump(const std::filesystem::path& file) {
 }  // namespace
 
 template <int N>
-std::vector<std::array<double, N>> read_points(const std::filesystem::path& file, int frame) {
+PointSet<N> read_points(const std::filesystem::path& file, int frame) {
   if (!std::filesystem::is_regular_file(file))
     throw InputError(fmt::format("{}: no such file", file.string()));
   if (looks_like_dump(file)) return read_dump_points<N>(file, frame);
   const std::string ext = file.extension().string();
-  if (ext == ".xyz" || ext == ".extxyz") return read_xyz<N>(file);
-  return read_csv<N>(file);
+  if (ext == ".xyz" || ext == ".extxyz") return {read_xyz<N>(file), "", false};
+  return {read_csv<N>(file), "", false};
 }
 
-template std::vector<std::array<double, 2>> read_points<2>(const std::filesystem::path&, int);
-template std::vector<std::array<double, 3>> read_points<3>(const std::filesystem::path&, int);
+template PointSet<2> read_points<2>(const std::filesystem::path&, int);
+template PointSet<3> read_points<3>(const std::filesystem::path&, int);
 
 }  // namespace shockfield::geometry

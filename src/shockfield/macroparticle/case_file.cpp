@@ -210,6 +210,7 @@ MacroparticleCase read_macroparticle_case(const Config& root) {
   if (out) {
     c.output.thermo_every = out->get_int_or("thermo_every", 0, Range::closed(0, 1e12));
     c.output.dump_every = out->get_int_or("dump_every", 0, Range::closed(0, 1e12));
+    c.output.dump_pad = static_cast<int>(std::to_string(c.steps).size());  // dump.<step> sorts in time order
     c.output.vtk_every = out->get_int_or("vtk_every", 0, Range::closed(0, 1e12));
     c.output.vtk_pieces = static_cast<int>(out->get_int_or("vtk_pieces", 1, Range::closed(1, 4096)));
     c.output.checkpoint_every = out->get_int_or("checkpoint_every", 0, Range::closed(0, 1e12));

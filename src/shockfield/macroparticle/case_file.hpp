@@ -44,6 +44,7 @@ struct LangevinSpec {
 struct OutputSpec {
   long long thermo_every = 0;     ///< 0: about ten rows
   long long dump_every = 0;       ///< LAMMPS text dumps, 0: none
+  int dump_pad = 1;               ///< digits of the dumps' step in their names (those of the last step, as MD's)
   long long vtk_every = 0;        ///< VTK particles, 0: none
   int vtk_pieces = 1;             ///< pieces per VTK frame (io/vtk_pieces), 1: one .vtp
   long long checkpoint_every = 0;

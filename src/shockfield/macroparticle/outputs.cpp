@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "shockfield/geometry/shrink_wrap.hpp"
 #include "shockfield/io/checked_file.hpp"
 #include "shockfield/io/lammps_dump.hpp"
 #include "shockfield/io/vtk_pieces.hpp"
@@ -56,7 +57,12 @@ void RodOutputs::write_due(const Rod& rod) {
 
 void RodOutputs::write_dump(const Rod& rod) const {
   const md::Simulation& sim = rod.sim();
-  io::DumpFrame frame = io::make_dump_frame(sim.step, sim.box, sim.atoms, {"id", "type", "x", "y", "z", "vx", "vy", "vz"});
+  // The box reset to where the particles are now, as LAMMPS write_data resets a shrink-wrapped box
+  // (geometry/shrink_wrap), not where the last neighbour rebuild left it: LAMMPS read_dump and
+  // rerun then find every particle inside.
+  geometry::Box box = sim.box;
+  geometry::shrink_wrap(box, std::span<const Vec3>(sim.atoms.x.data(), sim.atoms.nlocal), sim.shrink_margin);
+  io::DumpFrame frame = io::make_dump_frame(sim.step, box, sim.atoms, {"id", "type", "x", "y", "z", "vx", "vy", "vz"});
   // Engine units to SI (reduced_units.hpp).
   const double length = rod.units().length, speed = rod.units().velocity();
   for (const char* c : {"x", "y", "z"}) {
@@ -74,8 +80,9 @@ void RodOutputs::write_dump(const Rod& rod) const {
     frame.box.hi[d] *= length;
   }
   frame.time = sim.time * rod.units().time();
+  frame.units = "si";  // what the columns are in, as the PD and granular dumps say (io/particle_frame)
   frame.set_column("szz", rod.particle_stress());
-  io::CheckedOutput out(folder_ / "dumps" / fmt::format("dump.{}.lammpstrj", sim.step));
+  io::CheckedOutput out(folder_ / "dumps" / fmt::format("dump.{:0{}}.lammpstrj", sim.step, spec_.dump_pad));
   io::write_dump_frame(out.stream(), frame);
   out.close();
 }

@@ -4,7 +4,7 @@
 // ringing:
 //   q = ρ·ℓ·(C_Q·ℓ·(∇·v)² − C_L·c·∇·v)   for ∇·v < 0,   q = 0 otherwise,
 // with ℓ the cell size and c the sound speed. Defaults C_Q = 2.0, C_L = 1.0 are ours. C_Q was set on
-// the seed-aluminium 1000 m/s symmetric impact (tests/unit/mpm/test_aluminium_impact.cpp): the
+// the aluminium of Xu et al. (2015) 1000 m/s symmetric impact (tests/unit/mpm/test_aluminium_impact.cpp): the
 // finite element defaults of LS-DYNA's *CONTROL_BULK_VISCOSITY (Q1 = 1.5, Q2 = 0.06) leave enough
 // ringing behind an MPM shock (±8% stress) that the overshoot raises the eq.-7 temperature rise by
 // ~20%. C_L was 0.3 until the ringing it leaves was found to cycle every point of a strong metal

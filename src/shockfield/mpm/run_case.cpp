@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Resolved values the run echoes under [derived] (seed §2.2.2 step; shock state of the linear
+// Resolved values the run echoes under [derived] (Xu et al. (2015) §2.2.2 step; shock state of the linear
 // Us-Up Hugoniot for the loading speed).
 void derive(const Config& root, const MpmCase& c, const BuiltSample& sample, const Simulation& sim, double first_dt) {
   root.derive("particles", static_cast<long long>(sim.particles().size()));

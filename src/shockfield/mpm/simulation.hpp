@@ -2,7 +2,7 @@
 // The material point method simulation (Xu et al. 2015, §2.2.2): owns its grid, particles and
 // materials, and its explicit time loop. One step (MUSL, Sulsky, Zhou & Schreyer, Comput. Phys.
 // Commun. 87 (1995) 236; USL as an option):
-//   1. Δt = C·Δx_min / max_p(c_p + |v_p|)                        (stable step, seed §2.2.2)
+//   1. Δt = C·Δx_min / max_p(c_p + |v_p|)                        (stable step, Xu et al. (2015) §2.2.2)
 //   2. particles → grid: m_i, m_i v_i, f_i^int                   (eq. 12)
 //   3. grid: m_i v_i += f_i Δt; rigid walls                       (eq. 12, explicit)
 //   4. grid → particles: v_p += Δt Σ N_i f_i/m_i (FLIP; PIC v_p = Σ N_i v_i in the first step;

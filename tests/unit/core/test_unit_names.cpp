@@ -36,4 +36,19 @@ TEST(UnitNames, RefusesWhatItCannotSpell) {
   EXPECT_THROW(column_suffix("m123"), InputError);
 }
 
+// The length unit of each style of LAMMPS's `units` command (its documentation's table), as a dump's
+// ITEM: UNITS names it; anything else is no style.
+TEST(UnitNames, LammpsUnitStylesLengths) {
+  EXPECT_EQ(lammps_length_unit("metal"), "A");
+  EXPECT_EQ(lammps_length_unit("real"), "A");
+  EXPECT_EQ(lammps_length_unit("si"), "m");
+  EXPECT_EQ(lammps_length_unit("cgs"), "cm");
+  EXPECT_EQ(lammps_length_unit("electron"), "Bohr");
+  EXPECT_EQ(lammps_length_unit("micro"), "um");
+  EXPECT_EQ(lammps_length_unit("nano"), "nm");
+  EXPECT_EQ(lammps_length_unit("lj"), "1");
+  EXPECT_EQ(lammps_length_unit("Metal"), "");
+  EXPECT_EQ(lammps_length_unit(""), "");
+}
+
 }  // namespace shockfield::units

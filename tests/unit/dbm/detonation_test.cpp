@@ -2,7 +2,7 @@
 // the CJ and von Neumann states satisfy the Rankine–Hugoniot relations; the measured front speed is
 // within 2% of D_CJ (issue 6); Δ*_2xx is positive in the shock in front of the von Neumann
 // pressure peak (compression) and negative in the reaction zone behind it (thermal expansion from
-// the heat release), as Yan et al. (2013) found and seed §4.3 reports, while an inert shock has no
+// the heat release), as Yan et al. (2013) found and Xu et al. (2015) §4.3 reports, while an inert shock has no
 // such negative zone. Fresh gas ρ0 = 1, p0 = 0.6 so that every temperature of the run stays inside
 // the range where the D2V16 model (speeds 1, 2, 3, 4; η0 = 2) is linearly stable (T ≲ 1.25).
 #include <gtest/gtest.h>

@@ -50,7 +50,7 @@ std::vector<std::array<std::int32_t, N + 1>> read_peer(const std::string& file, 
 
 template <int N>
 void compare_with_peer(const std::string& name) {
-  const auto pts = read_points<N>("fixtures/giso/" + name + "_points.csv");
+  const auto pts = read_points<N>("fixtures/giso/" + name + "_points.csv").points;
   const auto d = delaunay_division<N>(pts);
   ASSERT_EQ(check_delaunay<N>(d), "");
   double hull = 0;
