@@ -37,7 +37,7 @@ void run_mpm(const HugoniotOptions& o) {
     std::printf("one speed: no Us-up fit (give two or more speeds) -> %s/hugoniot_sweep.csv\n", folder.c_str());
     return;
   }
-  const md::LineFit& f = sweep.fit->line;
+  const analysis::LineFit& f = sweep.fit->line;
   std::printf("\nUs = c0 + s up    this sweep           %s (its EOS)\n"
               "c0 (km/s)         %.3f +- %.3f        %.3f\n"
               "s                 %.3f +- %.3f        %.3f\n"
@@ -72,7 +72,7 @@ void run(HugoniotOptions o) {
     std::printf("one speed: no Us-Up fit (give two or more speeds) -> %s/hugoniot_sweep.csv\n", folder.c_str());
     return;
   }
-  const md::UsUpFit& f = *sweep.fit;
+  const analysis::UsUpFit& f = *sweep.fit;
   std::printf("\nUs = c0 + s Up    this sweep           experiment, copper (Marsh 1980)\n"
               "c0 (km/s)         %.3f +- %.3f        %.3f\n"
               "s                 %.3f +- %.3f        %.3f\n"

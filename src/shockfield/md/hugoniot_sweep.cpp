@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -12,6 +11,7 @@
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/run_folder.hpp"
 #include "shockfield/core/run_options.hpp"
+#include "shockfield/core/sweep_run.hpp"
 #include "shockfield/core/units.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/md/case_file.hpp"
@@ -60,7 +60,7 @@ void set_value(RunOptions& r, const std::string& method, std::size_t stage, doub
 // shock_front_<stage>.csv: step, time_ps, front_A, piston_A ("nan" where no front was found).
 // Every time and front position is checked where it is read (file:line): finite (a front may be
 // the "nan" of no front) and within kMaxMagnitude, so that the fit's sums cannot overflow to inf.
-LineFit front_fit(const fs::path& file) {
+analysis::LineFit front_fit(const fs::path& file) {
   constexpr double kMaxMagnitude = 1e9;  // ps or Å: 1 ms, 10 cm — far beyond any MD run
   const std::string name = file.string();
   std::ifstream in(file);
@@ -87,7 +87,7 @@ LineFit front_fit(const fs::path& file) {
     x.push_back(value(front, "front position in Å (or nan)", true));
   }
   try {
-    return fit_shock_front(t, x);
+    return analysis::fit_shock_front(t, x);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", name, e.what()));
   }
@@ -95,24 +95,14 @@ LineFit front_fit(const fs::path& file) {
 
 SweepPoint run_one(const HugoniotSweepSettings& s, double value, const fs::path& folder,
                    const std::pair<std::string, std::size_t>& stage) {
-  const fs::path hugoniot = folder / fmt::format("hugoniot_{}.toml", stage.first);
-  if (s.overwrite || !fs::exists(hugoniot)) {
-    RunOptions r;
-    r.case_file = s.case_file;
-    r.output = folder;
-    r.overwrite = s.overwrite;
-    r.quiet = s.quiet;
-    set_value(r, s.method, stage.second, value);
-    const Config root = Config::load(s.case_file, r.overrides);
-    root.get_choice("method", {"md"});  // read here as `shockfield run` does, so it is a known key
-    run_case(root, r);
-  } else {
-    std::printf("%s: reusing the finished run in %s\n", value_folder(s.method, value).c_str(), folder.string().c_str());
-  }
-  const Config h = Config::load(hugoniot);
-  if (!h.get_bool("complete"))
-    throw RunError(fmt::format("{}: no complete Hugoniot state at {} ({})", hugoniot.string(),
-                               value_folder(s.method, value), h.get_string("note")));
+  RunOptions r;
+  r.case_file = s.case_file;
+  r.output = folder;
+  r.overwrite = s.overwrite;
+  r.quiet = s.quiet;
+  set_value(r, s.method, stage.second, value);
+  const Config h = sweep_point_state(folder / fmt::format("hugoniot_{}.toml", stage.first), r, "md", run_case,
+                                     value_folder(s.method, value));
   SweepPoint p;
   p.piston = s.method == "piston" ? h.get_double("piston_speed_km_s") : value;
   p.up = h.get_double("up_km_s");
@@ -125,7 +115,7 @@ SweepPoint run_one(const HugoniotSweepSettings& s, double value, const fs::path&
     p.us_stderr = p.front_rms = NAN;
     return p;
   }
-  const LineFit f = front_fit(folder / fmt::format("shock_front_{}.csv", stage.first));
+  const analysis::LineFit f = front_fit(folder / fmt::format("shock_front_{}.csv", stage.first));
   p.us_stderr = f.slope_stderr * A_per_ps_to_km_per_s;
   p.front_rms = f.residual_rms;
   return p;
@@ -159,9 +149,9 @@ HugoniotSweep run_hugoniot_sweep(HugoniotSweepSettings s) {
     us.push_back(p.us);
   }
   if (sweep.points.size() < 2) return sweep;
-  sweep.fit = fit_us_up(up, us);
+  sweep.fit = analysis::fit_us_up(up, us);
   write_file_atomically(s.folder / "hugoniot_fit.toml",
-                        us_up_fit_toml(*sweep.fit) +
+                        analysis::us_up_fit_toml(*sweep.fit) +
                             fmt::format("\n[experiment_copper]  # Marsh, LASL Shock Hugoniot Data (1980); Mitchell & "
                                         "Nellis, J. Appl. Phys. 52, 3363 (1981)\nc0_km_s = {}\ns = {}\n",
                                         kCopperC0, kCopperS));

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "shockfield/md/diagnostics/us_up_fit.hpp"
+#include "shockfield/analysis/line_fit.hpp"
 
 namespace shockfield::md {
 
@@ -43,7 +43,7 @@ struct SweepPoint {
 struct HugoniotSweep {
   std::string stage;               ///< the swept stage's name
   std::vector<SweepPoint> points;  ///< in increasing piston speed
-  std::optional<UsUpFit> fit;      ///< with two or more speeds
+  std::optional<analysis::UsUpFit> fit;      ///< with two or more speeds
 };
 
 /// Runs (or reuses) every speed and writes the sweep files; InputError for a case without

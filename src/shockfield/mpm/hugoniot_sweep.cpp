@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstdio>
 
 #include "shockfield/core/config.hpp"
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/run_folder.hpp"
 #include "shockfield/core/run_options.hpp"
+#include "shockfield/core/sweep_run.hpp"
 #include "shockfield/io/csv_writer.hpp"
 #include "shockfield/mpm/case_file.hpp"
 #include "shockfield/mpm/run_case.hpp"
@@ -37,23 +37,14 @@ const materials::SolidMaterial& swept_material(const fs::path& case_file, MpmCas
 
 MpmSweepPoint run_one(const fs::path& case_file, const std::string& material, double speed, const fs::path& folder,
                       bool overwrite, bool quiet) {
-  const fs::path state = folder / fmt::format("hugoniot_{}.toml", material);
-  if (overwrite || !fs::exists(state)) {
-    RunOptions r;
-    r.case_file = case_file;
-    r.output = folder;
-    r.overwrite = overwrite;
-    r.quiet = quiet;
-    r.overrides.push_back(fmt::format("loading.speed={}", speed));
-    const Config root = Config::load(case_file, r.overrides);
-    root.get_choice("method", {"mpm"});  // read here as `shockfield run` does, so it is a known key
-    run_case(root, r);
-  } else {
-    std::printf("%s: reusing the finished run\n", folder.string().c_str());
-  }
-  const Config h = Config::load(state);
-  if (!h.get_bool("complete"))
-    throw RunError(fmt::format("{}: no complete Hugoniot state at {} m/s ({})", state.string(), speed, h.get_string("note")));
+  RunOptions r;
+  r.case_file = case_file;
+  r.output = folder;
+  r.overwrite = overwrite;
+  r.quiet = quiet;
+  r.overrides.push_back(fmt::format("loading.speed={}", speed));
+  const Config h =
+      sweep_point_state(folder / fmt::format("hugoniot_{}.toml", material), r, "mpm", run_case, fmt::format("{} m/s", speed));
   MpmSweepPoint p;
   p.speed = speed;
   p.up = h.get_double("up_m_s");
@@ -94,8 +85,8 @@ MpmHugoniotSweep run_mpm_hugoniot_sweep(const fs::path& case_file, std::vector<d
     up.push_back(p.up), us.push_back(p.us);
   }
   if (sweep.points.size() < 2) return sweep;
-  sweep.fit = md::fit_us_up(up, us);
-  const md::LineFit& f = sweep.fit->line;
+  sweep.fit = analysis::fit_us_up(up, us);
+  const analysis::LineFit& f = sweep.fit->line;
   write_file_atomically(
       folder / "hugoniot_fit.toml",
       fmt::format("# U_s = c0 + s u_p, least squares; standard errors from the residuals (n - 2 dof)\n"

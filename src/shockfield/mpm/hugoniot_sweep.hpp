@@ -2,7 +2,7 @@
 // A U_s–u_p sweep of an MPM case (`shockfield hugoniot --method mpm`): the case, with wall or
 // symmetric loading and [shock_front] on, runs once per loading speed into FOLDER/up_<km/s>/
 // (--set loading.speed); each run's hugoniot_<material>.toml (shock_front_output.hpp) is
-// collected, U_s = c0 + s·u_p is fitted (md::fit_us_up) and FOLDER/hugoniot_sweep.csv and
+// collected, U_s = c0 + s·u_p is fitted (analysis::fit_us_up) and FOLDER/hugoniot_sweep.csv and
 // FOLDER/hugoniot_fit.toml are written in SI, the fit beside the linear Hugoniot of the profiled
 // body's material (c0, λ of its Mie–Grüneisen EOS). A finished run already in its folder is
 // reused unless `overwrite`.
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "shockfield/md/diagnostics/us_up_fit.hpp"
+#include "shockfield/analysis/line_fit.hpp"
 
 namespace shockfield::mpm {
 
@@ -27,7 +27,7 @@ struct MpmHugoniotSweep {
   std::string material;                  ///< the profiled body's material
   double c0 = 0, lambda = 0;             ///< its EOS's linear Hugoniot U_s = c0 + λ u_p [m/s, 1]
   std::vector<MpmSweepPoint> points;     ///< in increasing speed
-  std::optional<md::UsUpFit> fit;        ///< with two or more speeds (c0 in m/s)
+  std::optional<analysis::UsUpFit> fit;        ///< with two or more speeds (c0 in m/s)
 };
 
 /// `speeds` in m/s. InputError for a case that is not an MPM case with [shock_front] and wall or

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "shockfield/md/diagnostics/us_up_fit.hpp"
+#include "shockfield/analysis/line_fit.hpp"
 #include "shockfield/mpm/diagnostics.hpp"
 
 namespace shockfield::mpm {
@@ -167,7 +167,7 @@ WaveState fit_wave(const std::vector<const FrontFrame*>& frames, int dim, const 
     for (std::size_t q = 0; q < parts.size(); ++q) parts[q].push_back(plateau_of(*f)[q]);
   }
   WaveState w;
-  const md::LineFit line = md::fit_line(t, x);
+  const analysis::LineFit line = analysis::fit_line(t, x);
   w.us = dir * line.slope - dir * v_ahead;  // relative to the material ahead
   w.us_stderr = line.slope_stderr;
   for (auto& p : parts) w.plateau.push_back(analysis::pooled_moments(p));

@@ -9,7 +9,7 @@
 //    reaches 90 % of the jump), `margin_bins` slabs kept from each. With a Hugoniot elastic limit σ_HEL and a plateau above it the elastic precursor
 //    is sought too, at half the HEL, and the plastic front then crosses (σ_HEL + plateau)/2;
 //    the precursor's plateau is the half of the stretch between the fronts next to the precursor;
-//  - over the frames, the front speed by least squares of position against time (md::fit_line)
+//  - over the frames, the front speed by least squares of position against time (analysis::fit_line)
 //    over the last (1 − skip_fraction) of the frames where a front was found, ending before the
 //    first frame whose leading front is within `margin_bins` of the body's free end, and the
 //    plateaus pooled over those frames; U_s and u_p relative to the material ahead, and the

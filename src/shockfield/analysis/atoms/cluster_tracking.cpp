@@ -7,7 +7,7 @@
 #include <tuple>
 
 #include "shockfield/core/error.hpp"
-#include "shockfield/md/diagnostics/us_up_fit.hpp"
+#include "shockfield/analysis/line_fit.hpp"
 
 namespace shockfield::analysis::atoms {
 namespace {
@@ -64,7 +64,7 @@ PowerLawFit fit_power_law(const std::string& quantity, const std::vector<double>
     if (t[i] > 0 && y[i] > 0 && std::isfinite(y[i])) log_t.push_back(std::log(t[i])), log_y.push_back(std::log(y[i]));
   if (log_t.size() < 3)
     throw InputError(fmt::format("growth law of {}: {} points with t > 0, at least 3 are needed", quantity, log_t.size()));
-  const md::LineFit line = md::fit_line(log_t, log_y);  // ln y = ln C + k ln t
+  const analysis::LineFit line = analysis::fit_line(log_t, log_y);  // ln y = ln C + k ln t
   return {quantity, line.slope, line.slope_stderr, std::exp(line.intercept), line.points};
 }
 

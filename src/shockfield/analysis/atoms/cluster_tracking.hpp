@@ -11,7 +11,7 @@
 // an atom with it.
 //
 // Growth laws: for each track, y = C t^k fitted by least squares on (ln t, ln y) with the
-// standard error of k from the residuals (md::fit_line), for the semi-axes a ≥ b ≥ c, the size
+// standard error of k from the residuals (analysis::fit_line), for the semi-axes a ≥ b ≥ c, the size
 // L = (abc)^{1/3}, the ellipsoid surface A and volume V, and the atomic volume; t = (timestep −
 // origin) · dt, points with t ≤ 0 left out (the origin is the domain's nucleation step).
 #include <cstdint>

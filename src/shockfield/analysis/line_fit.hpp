@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace shockfield::md {
+namespace shockfield::analysis {
 
 struct LineFit {
   double intercept = 0, slope = 0;
@@ -39,4 +39,4 @@ UsUpFit fit_us_up(const std::vector<double>& up, const std::vector<double>& us);
 /// TOML lines c0_km_s, s, their standard errors, the rms residual and the point count.
 std::string us_up_fit_toml(const UsUpFit& fit);
 
-}  // namespace shockfield::md
+}  // namespace shockfield::analysis

@@ -1,4 +1,4 @@
-#include "shockfield/md/diagnostics/us_up_fit.hpp"
+#include "shockfield/analysis/line_fit.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 
 #include "shockfield/core/error.hpp"
 
-namespace shockfield::md {
+namespace shockfield::analysis {
 
 LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
   if (x.size() != y.size()) throw InputError(fmt::format("line fit: {} x values but {} y values", x.size(), y.size()));
@@ -68,4 +68,4 @@ std::string us_up_fit_toml(const UsUpFit& f) {
       f.c0(), f.line.intercept_stderr, f.s(), f.line.slope_stderr, f.line.residual_rms, f.line.points);
 }
 
-}  // namespace shockfield::md
+}  // namespace shockfield::analysis

@@ -7,10 +7,10 @@
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/rng.hpp"
-#include "shockfield/md/diagnostics/us_up_fit.hpp"
+#include "shockfield/analysis/line_fit.hpp"
 
 using namespace shockfield;
-using namespace shockfield::md;
+using namespace shockfield::analysis;
 
 TEST(UsUpFit, HandWorkedFourPoints) {
   // x̄ = 1.5, ȳ = 2.75, Sxx = 5, Sxy = 5.5 → slope 1.1, intercept 1.1; residuals −0.1, 0.8,
