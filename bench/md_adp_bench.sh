@@ -30,35 +30,5 @@ case_file eam/alloy NiAlH_jea.eam.alloy > "$work/eam_alloy.toml"
 lammps_input adp Ni.adp > "$work/in.adp"
 lammps_input eam/alloy NiAlH_jea.eam.alloy > "$work/in.eam_alloy"
 
-run_sf() {  # CASE -> seconds per atom-step
-  rm -rf "$work/out"
-  OMP_NUM_THREADS=1 "$sf" run "$work/$1.toml" --output "$work/out" -q -j 1 > /dev/null
-  sed -n 's/.*done at step .* (\([0-9.]*\) steps\/s.*/\1/p' "$work/out/log.txt" |
-    awk -v a=$atoms '{printf "%.4g\n", 1 / ($1 * a)}'
-}
-run_lmp() {  # INPUT -> seconds per atom-step
-  (cd "$work" && OMP_NUM_THREADS=1 LAMMPS_POTENTIALS=/usr/share/lammps/potentials \
-     lmp -nocite -screen none -log log.lmp -in "in.$1" > /dev/null)
-  awk -v a=$atoms -v s=$steps '/^Loop time of/ {printf "%.4g\n", $4 / (a * s)}' "$work/log.lmp"
-}
-
-for r in $(seq "$runs"); do
-  for c in eam_alloy adp; do
-    run_sf "$c" >> "$work/sf_$c"
-    run_lmp "$c" >> "$work/lmp_$c"
-  done
-done
-echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo
-echo "| potential | shockfield s/atom-step (median of $runs) | vs its eam/alloy | LAMMPS s/atom-step | vs its eam/alloy | shockfield/LAMMPS |"
-echo "|---|---|---|---|---|---|"
-sf0=$(median < "$work/sf_eam_alloy"); lmp0=$(median < "$work/lmp_eam_alloy")
-for c in eam_alloy adp; do
-  s=$(median < "$work/sf_$c"); l=$(median < "$work/lmp_$c")
-  awk -v c="$c" -v s="$s" -v l="$l" -v s0="$sf0" -v l0="$lmp0" \
-    'BEGIN {printf "| %s | %.3g | %.2f | %.3g | %.2f | %.2f |\n", c, s, s / s0, l, l / l0, s / l}'
-done
-echo
-for c in eam_alloy adp; do
-  echo "raw $c: sf $(tr '\n' ' ' < "$work/sf_$c")| lmp $(tr '\n' ' ' < "$work/lmp_$c")"
-done
+alternate eam_alloy adp
+ratio_table eam_alloy eam_alloy adp
