@@ -39,34 +39,5 @@ done
 cp "$root/bench/cases/lj.toml" "$work/lj.toml"
 cp "$root/bench/lammps/in.lj" "$work/in.lj"
 
-run_sf() {  # CASE -> seconds per atom-step
-  rm -rf "$work/out"
-  OMP_NUM_THREADS=1 "$sf" run "$work/$1.toml" --output "$work/out" -q -j 1 > /dev/null
-  sed -n 's/.*done at step .* (\([0-9.]*\) steps\/s.*/\1/p' "$work/out/log.txt" |
-    awk -v a=$atoms '{printf "%.4g\n", 1 / ($1 * a)}'
-}
-run_lmp() {  # INPUT -> seconds per atom-step
-  (cd "$work" && OMP_NUM_THREADS=1 lmp -nocite -screen none -log log.lmp -in "in.$1" > /dev/null)
-  awk -v a=$atoms -v s=$steps '/^Loop time of/ {printf "%.4g\n", $4 / (a * s)}' "$work/log.lmp"
-}
-
-for r in $(seq "$runs"); do
-  for c in lj table_linear table_spline; do
-    run_sf "$c" >> "$work/sf_$c"
-    run_lmp "$c" >> "$work/lmp_$c"
-  done
-done
-echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo
-echo "| potential | shockfield s/atom-step (median of $runs) | vs its lj/cut | LAMMPS s/atom-step | vs its lj/cut | shockfield/LAMMPS |"
-echo "|---|---|---|---|---|---|"
-sf_lj=$(median < "$work/sf_lj"); lmp_lj=$(median < "$work/lmp_lj")
-for c in lj table_linear table_spline; do
-  s=$(median < "$work/sf_$c"); l=$(median < "$work/lmp_$c")
-  awk -v c="$c" -v s="$s" -v l="$l" -v s0="$sf_lj" -v l0="$lmp_lj" \
-    'BEGIN {printf "| %s | %.3g | %.2f | %.3g | %.2f | %.2f |\n", c, s, s / s0, l, l / l0, s / l}'
-done
-echo
-for c in lj table_linear table_spline; do
-  echo "raw $c: sf $(tr '\n' ' ' < "$work/sf_$c")| lmp $(tr '\n' ' ' < "$work/lmp_$c")"
-done
+alternate lj table_linear table_spline
+ratio_table lj lj table_linear table_spline

@@ -49,7 +49,8 @@ void parse_field(const fs::path& file) { analysis::read_grid_field(file.string()
 
 void parse_eam(const fs::path& file) {
   const std::string name = file.filename().string();
-  if (name.ends_with(".eam.alloy")) md::potentials::read_setfl(file, false);
+  if (name.ends_with(".adp")) md::potentials::read_adp(file);
+  else if (name.ends_with(".eam.alloy")) md::potentials::read_setfl(file, false);
   else if (name.ends_with(".eam.fs")) md::potentials::read_setfl(file, true);
   else md::potentials::read_funcfl(file);
 }

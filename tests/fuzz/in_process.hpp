@@ -13,7 +13,8 @@ void parse_dump(const std::filesystem::path& file);
 void parse_extxyz(const std::filesystem::path& file);
 /// A field file (.csv, .vtk, .vti).
 void parse_field(const std::filesystem::path& file);
-/// An EAM file by its extension: .eam (funcfl), .eam.alloy (setfl), .eam.fs (Finnis-Sinclair).
+/// An EAM or ADP file by its extension: .eam (funcfl), .eam.alloy (setfl), .eam.fs
+/// (Finnis-Sinclair), .adp (setfl with the u and w tables).
 void parse_eam(const std::filesystem::path& file);
 /// A pair_style table file: its sections M11, M22 and M12 (those of the cross-check's pair.table).
 void parse_pair_table(const std::filesystem::path& file);

@@ -29,7 +29,7 @@ std::vector<fs::path> sorted_glob(const fs::path& dir, const std::string& file_n
   return out;
 }
 
-// The MD case of tests/fixtures/fuzz/cases/eam.toml for one potential file.
+// The MD case of tests/fixtures/fuzz/cases/eam.toml for one potential file (eam* or adp).
 struct EamCase {
   std::string style, element, a0;
   bool elements_key;  // eam/alloy and eam/fs name the element
@@ -227,6 +227,7 @@ std::vector<Target> parser_targets(const Context& c) {
           in_process(c, "eam_funcfl", {kPotentials / "Cu_u3.eam"}, parse_eam),
           in_process(c, "eam_setfl", {kPotentials / "CuNi.eam.alloy"}, parse_eam),
           in_process(c, "eam_fs", {kPotentials / "NiAlH_jea.eam.fs"}, parse_eam),
+          in_process(c, "adp", {kPotentials / "Ni.adp"}, parse_eam),
           in_process(c, "pair_table", {pair_table_input(c)}, parse_pair_table),
           in_process(c, "data", data_inputs(c), parse_data),
           in_process(c, "dump", dump_inputs(c), parse_dump),
@@ -266,6 +267,7 @@ std::vector<Target> all_targets(const Context& c, const std::vector<std::string>
   t.push_back(eam_target(c, "eam_funcfl", kPotentials / "Cu_u3.eam", {"eam", "Cu", "3.615", false}));
   t.push_back(eam_target(c, "eam_setfl", kPotentials / "CuNi.eam.alloy", {"eam/alloy", "Cu", "3.615", true}));
   t.push_back(eam_target(c, "eam_fs", kPotentials / "NiAlH_jea.eam.fs", {"eam/fs", "Ni", "3.52", true}));
+  t.push_back(eam_target(c, "adp", kPotentials / "Ni.adp", {"adp", "Ni", "3.52", true}));
   t.push_back(template_target(c, "pair_table", {pair_table_input(c)}, "pair_table.toml"));
   t.push_back(template_target(c, "data", data_inputs(c), "data.toml"));
   t.push_back(in_process(c, "dump", dump_inputs(c), parse_dump));

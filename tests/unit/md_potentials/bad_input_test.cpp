@@ -79,6 +79,33 @@ TEST_F(BadInput, GridMustBeUsable) {
   expect_input_error([&] { read_funcfl(file); }, {"grid.eam:3:", "Nrho and Nr >= 5"});
 }
 
+// ADP files (Ni.adp: 5 header lines, the element line, 3001 lines of F, then 10000 lines each of
+// rho, r*phi, u and w).
+TEST_F(BadInput, AdpFileWithoutItsAngularTablesNamesTheMissingTable) {
+  // Cut after r*phi: the setfl part of the file is whole, u(r) and w(r) are missing.
+  const auto file = write("no_uw.adp", kPotentials / "Ni.adp", 23007);
+  expect_input_error([&] { read_adp(file); },
+                     {"no_uw.adp:23007:", "unexpected end of file after 0 of the 10000 values",
+                      "ADP dipole function u(r) of Ni-Ni"});
+}
+
+TEST_F(BadInput, TruncatedAdpQuadrupoleTable) {
+  const auto file = write("cut.adp", kPotentials / "Ni.adp", 40000);
+  expect_input_error([&] { read_adp(file); },
+                     {"cut.adp:40000:", "after 6993 of the 10000 values", "quadrupole function w(r) of Ni-Ni"});
+}
+
+TEST_F(BadInput, AdpElementCountMustMatchItsNames) {
+  const auto file = write("count.adp", kPotentials / "Ni.adp", -1, "1 Ni", "2 Ni");
+  expect_input_error([&] { read_adp(file); }, {"count.adp:4:", "N = 2 and 1 names"});
+  expect_input_error(
+      [] { potential_from_toml("[potential]\nstyle = \"adp\"\nfile = \"AlCu.adp\"\nelements = [\"Al\"]\n", 2); },
+      {"test.toml:4", "potential.elements", "one element per atom type (2 names, one of: Al Cu)", "found 1"});
+  expect_input_error(
+      [] { potential_from_toml("[potential]\nstyle = \"adp\"\nfile = \"Ni.adp\"\nelements = [\"Cu\"]\n", 1); },
+      {"test.toml:4", "'Cu' is not in", "Ni.adp (it has: Ni)"});
+}
+
 TEST_F(BadInput, FortranDExponentsAreReadAsE) {
   // The same funcfl file with every exponent written as D (upper and lower case) reads the same.
   std::ifstream in(kPotentials / "Cu_u3.eam");

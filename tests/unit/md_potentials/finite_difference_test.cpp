@@ -62,7 +62,11 @@ INSTANTIATE_TEST_SUITE_P(
         FdCase{"spline_1000", "[potential]\nstyle = \"table\"\ninterpolation = \"spline\"\npoints = 1000\n"
                               "file = \"fixtures/lammps_table/pair.table\"\n[[potential.pair]]\ntypes = [1, 1]\n"
                               "keyword = \"M11\"\n[[potential.pair]]\ntypes = [2, 2]\nkeyword = \"M22\"\n"
-                              "[[potential.pair]]\ntypes = [1, 2]\nkeyword = \"M12\"\n", "lammps_table", 1e-5}),
+                              "[[potential.pair]]\ntypes = [1, 2]\nkeyword = \"M12\"\n", "lammps_table", 1e-5},
+        // ADP on a distorted cell: the Al-Cu alloy in a sheared prism with a void (the dipole and
+        // quadrupole forces are not along the pairs; same C¹ splines, same tolerance as EAM).
+        FdCase{"alcu_sheared_void", "[potential]\nstyle = \"adp\"\nfile = \"AlCu.adp\"\n"
+                                    "elements = [\"Al\", \"Cu\"]\n", "lammps_adp"}),
     [](const auto& info) { return info.param.fixture; });
 
 }  // namespace

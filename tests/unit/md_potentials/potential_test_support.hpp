@@ -4,6 +4,7 @@
 // Test support for tests/unit/md_potentials: atoms from a LAMMPS dump, one complete force
 // evaluation (ghosts, half list, evaluate_forces), potentials from TOML text.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,11 +48,16 @@ struct LammpsDeviation {
   void expect_below(double tolerance) const;
 };
 
+/// A known difference from LAMMPS's energy of owned atom i (added to LAMMPS's per-atom and total
+/// energies before comparing), given the potential after the evaluation and the atoms.
+using EnergyCorrection = std::function<double(const Potential&, const Atoms&, std::size_t i)>;
+
 /// Evaluates the potential of the [potential] TOML `toml` on the atoms of `<base>.dump` (a
 /// LAMMPS dump of id type x y z fx fy fz c_pe and the six c_st components of `compute
 /// stress/atom NULL virial`) and compares with it and with `<base>.totals` (lines "energy E",
 /// "volume V", "pressure_virial p1 .. p6" of `compute pressure NULL virial`).
-LammpsDeviation compare_with_lammps(const std::string& base, const std::string& toml);
+LammpsDeviation compare_with_lammps(const std::string& base, const std::string& toml,
+                                    const EnergyCorrection& correction = {});
 
 /// Runs `f`, expecting an error of type E (InputError by default) whose message contains every
 /// fragment.

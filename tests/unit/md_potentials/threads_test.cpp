@@ -39,6 +39,11 @@ TEST(Threads, EamResultsDoNotDependOnTheThreadCount) {
                            "elements = [\"Cu\", \"Ni\"]\n");
 }
 
+TEST(Threads, AdpResultsDoNotDependOnTheThreadCount) {
+  expect_same("lammps_adp/alcu_sheared_void", "[potential]\nstyle = \"adp\"\nfile = \"AlCu.adp\"\n"
+                                             "elements = [\"Al\", \"Cu\"]\n");
+}
+
 TEST(Threads, LjResultsDoNotDependOnTheThreadCount) {
   expect_same("lammps/lj_void", "[potential]\nstyle = \"lj/cut\"\ncutoff = 8.5\nepsilon = 0.0104\n"
                          "sigma = 3.4\n");

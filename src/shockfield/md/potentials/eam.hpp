@@ -15,39 +15,25 @@
 #include <string>
 #include <vector>
 
-#include "shockfield/md/potential.hpp"
-#include "shockfield/md/potentials/eam_tables.hpp"
+#include "shockfield/md/potentials/embedded_atom.hpp"
 #include "shockfield/md/potentials/pair_loop.hpp"
 
 namespace shockfield::md::potentials {
 
-class EamPotential final : public Potential {
+class EamPotential final : public EmbeddedAtomPotential {
  public:
-  /// `style` is "eam", "eam/alloy" or "eam/fs"; `type_names[t]` names the element of type t
-  /// ("" when the file does not name it), checked against the atoms' type names.
+  /// `style` is "eam", "eam/alloy" or "eam/fs"; see EmbeddedAtomPotential for `type_names`.
   EamPotential(std::string style, EamTables tables, std::vector<std::string> type_names);
 
-  std::string style() const override { return style_; }
-  double cutoff() const override { return tables_.cut; }
-  void check_types(const Atoms& atoms) const override;
   void compute(Atoms& atoms, const geometry::NeighborList& list, ForceResult& out) override;
 
-  const EamTables& tables() const { return tables_; }
-  /// The mass of atom type t (0-based) given by the potential file, amu.
-  double type_mass(int t) const { return tables_.type_mass[static_cast<std::size_t>(t)]; }
-  /// The element of each atom type named by the potential file ("" where it names none).
-  const std::vector<std::string>& type_names() const { return type_names_; }
   /// Electron density at each owned atom after the last compute().
   const std::vector<double>& density() const { return rho_; }
 
  private:
-  std::string style_;
-  EamTables tables_;
-  std::vector<std::string> type_names_;
-  // Per ordered type pair (ti, tj) and grid interval: density values [to_i c3..c6, to_j c3..c6]
-  // and force derivatives [ρ'_{i→j} c0..c2, ρ'_{j→i} c0..c2, (rφ)' c0..c2, rφ c3..c6].
-  std::vector<double> density_rows_;
-  std::vector<double> force_rows_;
+  // The density and force rows of fill_eam_density_row() and fill_eam_force_row().
+  PackedPairRows density_rows_;
+  PackedPairRows force_rows_;
   std::vector<double> rho_, fp_;
   AcceptedPairs accepted_;  // pairs within the cutoff, found by the density pass
   ThreadScratch scratch_;

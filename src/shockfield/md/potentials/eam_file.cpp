@@ -172,6 +172,17 @@ double read_mass(Records& in, const std::string& what) {
   return mass;
 }
 
+// One table of Nr values per element pair i >= j, in the order (0,0) (1,0) (1,1) (2,0) ...
+std::vector<std::vector<double>> read_pair_tables(Records& in, const SetflFile& s, const std::string& what) {
+  std::vector<std::vector<double>> tables;
+  const auto n = s.elements.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j <= i; ++j)
+      tables.push_back(in.doubles(static_cast<std::size_t>(s.grid.nr),
+                                  fmt::format("{} of {}-{}", what, s.elements[i], s.elements[j])));
+  return tables;
+}
+
 }  // namespace
 
 int SetflFile::element_index(const std::string& name) const {
@@ -192,8 +203,10 @@ FuncflFile read_funcfl(const std::filesystem::path& file) {
   return f;
 }
 
-SetflFile read_setfl(const std::filesystem::path& file, bool finnis_sinclair) {
-  Records in(file);
+namespace {
+
+// The setfl (or fs) records of `in`, from its first line up to the last r*phi table.
+SetflFile read_setfl_records(Records& in, const std::filesystem::path& file, bool finnis_sinclair) {
   SetflFile s;
   s.path = file.string();
   s.finnis_sinclair = finnis_sinclair;
@@ -217,10 +230,24 @@ SetflFile read_setfl(const std::filesystem::path& file, bool finnis_sinclair) {
       s.rhor.push_back(in.doubles(nr, "rho(r) of " + el));
     }
   }
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j <= i; ++j)
-      s.z2r.push_back(in.doubles(nr, fmt::format("r*phi(r) of {}-{}", s.elements[i], s.elements[j])));
+  s.z2r = read_pair_tables(in, s, "r*phi(r)");
   return s;
+}
+
+}  // namespace
+
+SetflFile read_setfl(const std::filesystem::path& file, bool finnis_sinclair) {
+  Records in(file);
+  return read_setfl_records(in, file, finnis_sinclair);
+}
+
+AdpFile read_adp(const std::filesystem::path& file) {
+  Records in(file);
+  AdpFile a;
+  a.setfl = read_setfl_records(in, file, false);
+  a.u2r = read_pair_tables(in, a.setfl, "the ADP dipole function u(r)");
+  a.w2r = read_pair_tables(in, a.setfl, "the ADP quadrupole function w(r)");
+  return a;
 }
 
 }  // namespace shockfield::md::potentials

@@ -15,6 +15,10 @@
 //   Finnis-Sinclair (pair_style eam/fs, *.eam.fs), pair_eam_fs.cpp read_file(): as setfl but each
 //     element block holds N density functions rho_{i,j}(r), j = 0..N-1 (density at an atom of
 //     element j due to a neighbour of element i).
+//   ADP (pair_style adp, *.adp; LAMMPS doc page pair_adp, "extended DYNAMO setfl format"): a setfl
+//     file followed by the dipole functions u_ij(r) [Nr] and then the quadrupole functions
+//     w_ij(r) [Nr], each for every element pair i >= j in the order of r*phi; u and w are
+//     tabulated as they are (not multiplied by r).
 //
 // Numbers may use Fortran exponents ("1.0D-3", "2.5d+01"): LAMMPS 2021 rejects them
 // (utils::is_double); we accept them because DYNAMO tools write them. Every malformed or
@@ -59,7 +63,15 @@ struct SetflFile {
   int element_index(const std::string& name) const;  ///< -1 when absent
 };
 
+/// One ADP file: its setfl part and the angular tables, indexed like SetflFile::z2r.
+struct AdpFile {
+  SetflFile setfl;
+  std::vector<std::vector<double>> u2r;  ///< [i*(i+1)/2 + j], i >= j: u_ij(r), eV/Å
+  std::vector<std::vector<double>> w2r;  ///< [i*(i+1)/2 + j], i >= j: w_ij(r), eV/Å²
+};
+
 FuncflFile read_funcfl(const std::filesystem::path& file);
 SetflFile read_setfl(const std::filesystem::path& file, bool finnis_sinclair);
+AdpFile read_adp(const std::filesystem::path& file);
 
 }  // namespace shockfield::md::potentials

@@ -144,4 +144,11 @@ EamTables tabulate_setfl(const SetflFile& file, const std::vector<int>& type_ele
   return t;
 }
 
+AdpTables tabulate_adp(const AdpFile& file, const std::vector<int>& type_element) {
+  AdpTables t{tabulate_setfl(file.setfl, type_element), {}, {}};
+  for (const auto& f : file.u2r) t.u2r.push_back(spline_coefficients(f, t.eam.dr));
+  for (const auto& f : file.w2r) t.w2r.push_back(spline_coefficients(f, t.eam.dr));
+  return t;
+}
+
 }  // namespace shockfield::md::potentials

@@ -27,12 +27,22 @@ concept PairForceKernel = requires(const K& k, int i, int j, double rsq, double&
   { k(i, j, rsq, fpair, energy) } -> std::same_as<bool>;
 };
 
-/// A pair density model (EAM): returns false beyond the cutoff, else what atom i receives from
-/// j (to_i) and j from i (to_j).
+/// A pair force model whose force is not along the pair (ADP): for atoms i, j at d = x_i - x_j,
+/// |d|² = rsq, returns false beyond its cutoff; otherwise sets fij (the force on i; j gets -fij)
+/// and the pair energy.
 template <class K>
-concept PairScalarKernel = requires(const K& k, int i, int j, double rsq, double& to_i,
-                                    double& to_j) {
-  { k(i, j, rsq, to_i, to_j) } -> std::same_as<bool>;
+concept PairVectorForceKernel = requires(const K& k, int i, int j, const Vec3& d, double rsq,
+                                         Vec3& fij, double& energy) {
+  { k(i, j, d, rsq, fij, energy) } -> std::same_as<bool>;
+};
+
+/// A pair density model (EAM's ρ, ADP's ρ, μ, λ): for atoms i, j at d = x_i - x_j, |d|² = rsq,
+/// returns false beyond the cutoff, else what atom i receives from j (to_i) and j from i (to_j).
+/// T is added with += and zeroed by T{}.
+template <class K, class T>
+concept PairScalarKernel = requires(const K& k, int i, int j, const Vec3& d, double rsq, T& to_i,
+                                    T& to_j) {
+  { k(i, j, d, rsq, to_i, to_j) } -> std::same_as<bool>;
 };
 
 /// Per-thread private copies of per-atom arrays, kept between calls to avoid reallocation.
@@ -105,9 +115,15 @@ void pair_force_range(const Vec3* x, const int* neighbors, const std::int64_t* f
     for (auto k = first[i]; k < last[i]; ++k) {
       const int j = neighbors[k];
       const Vec3 d = xi - x[j];
-      double fpair, epair;
-      if (!kernel(static_cast<int>(i), j, d.squaredNorm(), fpair, epair)) continue;
-      const Vec3 fij = d * fpair;
+      double epair;
+      Vec3 fij;
+      if constexpr (PairVectorForceKernel<K>) {
+        if (!kernel(static_cast<int>(i), j, d, d.squaredNorm(), fij, epair)) continue;
+      } else {
+        double fpair;
+        if (!kernel(static_cast<int>(i), j, d.squaredNorm(), fpair, epair)) continue;
+        fij = d * fpair;
+      }
       fi += fij;
       f[j] -= fij;
       e += epair;
@@ -145,10 +161,11 @@ inline Voigt6 virial_fdotr(const Vec3* x, const Vec3* f, std::size_t n) {
 /// Adds the forces of `kernel` over the half list to atoms.f (owned and ghost entries, zero on
 /// entry as Potential::compute() is promised), the pair energy and virial Σ r_ij ⊗ f_ij to `out`,
 /// and with `out.per_atom` half of each pair's energy and virial to each atom (LAMMPS ev_tally
-/// with newton on). The total virial is Σ x ⊗ f of each thread's forces, before they are summed.
-/// With `accepted` (recorded by accumulate_pair_scalars on the same list and positions) only
-/// those pairs are visited.
-template <PairForceKernel K>
+/// with newton on; ev_tally_xyz for a vector force). The total virial is Σ x ⊗ f of each thread's
+/// forces, before they are summed. With `accepted` (recorded by accumulate_pair_scalars on the
+/// same list and positions) only those pairs are visited.
+template <class K>
+  requires PairForceKernel<K> || PairVectorForceKernel<K>
 void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, const K& kernel,
                             ForceResult& out, ThreadScratch& scratch,
                             const AcceptedPairs* accepted = nullptr) {
@@ -191,15 +208,35 @@ void accumulate_pair_forces(Atoms& atoms, const geometry::NeighborList& list, co
   }
 }
 
-/// Adds to_i and to_j of `kernel` over the half list into `values` (owned and ghost entries);
-/// with `accepted`, records the pairs the kernel accepted (see AcceptedPairs).
-template <PairScalarKernel K>
+/// Σ_i per_atom(i) over owned atoms i < n, threaded (static schedule) and summed in thread
+/// order: the embedding passes of the many-body potentials. per_atom may write atom i's entries.
+template <class F>
+double sum_over_atoms(std::size_t n, const F& per_atom) {
+  const int nthreads = omp_get_max_threads();
+  std::vector<double> partial(static_cast<std::size_t>(nthreads), 0.0);
+  const auto count = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel num_threads(nthreads)
+  {
+    double sum = 0;
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < count; ++i) sum += per_atom(static_cast<std::size_t>(i));
+    partial[static_cast<std::size_t>(omp_get_thread_num())] = sum;
+  }
+  double total = 0;
+  for (double e : partial) total += e;
+  return total;
+}
+
+/// Adds to_i and to_j of `kernel` over the half list into `values` (owned and ghost entries),
+/// threads other than the first through `copies`; with `accepted`, records the pairs the kernel
+/// accepted (see AcceptedPairs).
+template <class T, PairScalarKernel<T> K>
 void accumulate_pair_scalars(const Atoms& atoms, const geometry::NeighborList& list,
-                             const K& kernel, std::vector<double>& values, ThreadScratch& scratch,
-                             AcceptedPairs* accepted = nullptr) {
+                             const K& kernel, std::vector<T>& values,
+                             std::vector<std::vector<T>>& copies, AcceptedPairs* accepted = nullptr) {
   const int nthreads = omp_get_max_threads();
   const auto range = detail::thread_ranges(list, nthreads);
-  scratch.scalar.resize(static_cast<std::size_t>(nthreads));
+  copies.resize(static_cast<std::size_t>(nthreads));
   const Vec3* x = atoms.x.data();
   const int* neighbors = list.neighbors.data();
   const std::int64_t* offset = list.offset.data();
@@ -215,15 +252,16 @@ void accumulate_pair_scalars(const Atoms& atoms, const geometry::NeighborList& l
   {
     const int t = omp_get_thread_num();
     const K local_kernel = kernel;  // in registers: the stores below could alias a reference
-    double* v = detail::private_copy(scratch.scalar, values, t, 0.0).data();
+    T* v = detail::private_copy(copies, values, t, T{}).data();
     for (std::size_t i = range[t]; i < range[t + 1]; ++i) {
       const Vec3 xi = x[i];
-      double vi = 0;
+      T vi{};
       std::int64_t n_kept = offset[i];
       for (auto k = offset[i]; k < offset[i + 1]; ++k) {
         const int j = neighbors[k];
-        double to_i, to_j;
-        if (!local_kernel(static_cast<int>(i), j, (xi - x[j]).squaredNorm(), to_i, to_j)) continue;
+        const Vec3 d = xi - x[j];
+        T to_i, to_j;
+        if (!local_kernel(static_cast<int>(i), j, d, d.squaredNorm(), to_i, to_j)) continue;
         vi += to_i;
         v[j] += to_j;
         if (kept) kept[n_kept++] = j;
@@ -232,7 +270,7 @@ void accumulate_pair_scalars(const Atoms& atoms, const geometry::NeighborList& l
       if (kept_end) kept_end[i] = n_kept;
     }
 #pragma omp barrier
-    detail::reduce_copies(scratch.scalar, values, nthreads);
+    detail::reduce_copies(copies, values, nthreads);
   }
 }
 

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "shockfield/core/error.hpp"
+#include "shockfield/md/potentials/adp.hpp"
 #include "shockfield/md/potentials/eam.hpp"
 #include "shockfield/md/potentials/eam_file.hpp"
 #include "shockfield/md/potentials/eam_tables.hpp"
@@ -39,10 +40,8 @@ std::unique_ptr<Potential> make_funcfl(const Config& table, const std::filesyste
                                         std::vector<std::string>(static_cast<std::size_t>(ntypes)));
 }
 
-std::unique_ptr<Potential> make_setfl(const Config& table, const std::filesystem::path& case_dir,
-                                      int ntypes, bool finnis_sinclair) {
-  const auto path = find_potential_file(table, "file", case_dir);
-  const auto file = read_for_key(table, "file", [&] { return read_setfl(path, finnis_sinclair); });
+// The file element of each atom type from `elements` (pair_coeff * * file El_1 ... El_n).
+std::vector<int> type_elements(const Config& table, const SetflFile& file, int ntypes) {
   const auto elements = table.get_strings("elements");
   const std::string available = fmt::format("{}", fmt::join(file.elements, " "));
   if (static_cast<int>(elements.size()) != ntypes)
@@ -53,11 +52,27 @@ std::unique_ptr<Potential> make_setfl(const Config& table, const std::filesystem
     const int e = file.element_index(name);
     if (e < 0)
       table.fail("elements", fmt::format("element '{}' is not in {} (it has: {})", name,
-                                         path.string(), available));
+                                         file.path, available));
     type_element.push_back(e);
   }
+  return type_element;
+}
+
+std::unique_ptr<Potential> make_setfl(const Config& table, const std::filesystem::path& case_dir,
+                                      int ntypes, bool finnis_sinclair) {
+  const auto path = find_potential_file(table, "file", case_dir);
+  const auto file = read_for_key(table, "file", [&] { return read_setfl(path, finnis_sinclair); });
   return std::make_unique<EamPotential>(finnis_sinclair ? "eam/fs" : "eam/alloy",
-                                        tabulate_setfl(file, type_element), elements);
+                                        tabulate_setfl(file, type_elements(table, file, ntypes)),
+                                        table.get_strings("elements"));
+}
+
+// pair_style adp; pair_coeff * * file El_1 ... El_n as for eam/alloy.
+std::unique_ptr<Potential> make_adp(const Config& table, const std::filesystem::path& case_dir, int ntypes) {
+  const auto path = find_potential_file(table, "file", case_dir);
+  const auto file = read_for_key(table, "file", [&] { return read_adp(path); });
+  return std::make_unique<AdpPotential>(tabulate_adp(file, type_elements(table, file.setfl, ntypes)),
+                                        table.get_strings("elements"));
 }
 
 std::unique_ptr<Potential> make_lj_cut(const Config& table, const std::filesystem::path&, int ntypes) {
@@ -159,6 +174,7 @@ const std::vector<std::pair<std::string, Factory>>& factories() {
       {"eam", make_funcfl},
       {"eam/alloy", [](const Config& c, const std::filesystem::path& d, int n) { return make_setfl(c, d, n, false); }},
       {"eam/fs", [](const Config& c, const std::filesystem::path& d, int n) { return make_setfl(c, d, n, true); }},
+      {"adp", make_adp},
   };
   return table;
 }
@@ -182,12 +198,12 @@ std::unique_ptr<Potential> make_potential(const Config& table, const std::filesy
 }
 
 std::optional<double> potential_type_mass(const Potential& potential, int t) {
-  if (const auto* eam = dynamic_cast<const EamPotential*>(&potential)) return eam->type_mass(t);
+  if (const auto* eam = dynamic_cast<const EmbeddedAtomPotential*>(&potential)) return eam->type_mass(t);
   return std::nullopt;
 }
 
 std::optional<std::string> potential_type_element(const Potential& potential, int t) {
-  if (const auto* eam = dynamic_cast<const EamPotential*>(&potential)) {
+  if (const auto* eam = dynamic_cast<const EmbeddedAtomPotential*>(&potential)) {
     const auto& names = eam->type_names();
     if (static_cast<std::size_t>(t) < names.size() && !names[static_cast<std::size_t>(t)].empty())
       return names[static_cast<std::size_t>(t)];

@@ -2,10 +2,11 @@
 // Potentials by name, from the [potential] table of a case file:
 //
 //   [potential]                       # EAM: one LAMMPS potential file
-//   style = "eam/alloy"               # "eam" (funcfl), "eam/alloy" (setfl), "eam/fs", "lj/cut", "table"
+//   style = "eam/alloy"               # "eam" (funcfl), "eam/alloy" (setfl), "eam/fs", "adp",
+//                                     # "lj/cut", "table"
 //   file = "CuNi.eam.alloy"           # relative to the case file's folder, then
 //                                     # $LAMMPS_POTENTIALS, /usr/share/lammps/potentials
-//   elements = ["Cu", "Ni"]           # eam/alloy, eam/fs: element of atom types 1..n
+//   elements = ["Cu", "Ni"]           # eam/alloy, eam/fs, adp: element of atom types 1..n
 //                                     # (LAMMPS `pair_coeff * * CuNi.eam.alloy Cu Ni`)
 //
 //   [potential]                       # Lennard-Jones
@@ -56,9 +57,9 @@ std::unique_ptr<Potential> make_potential(const Config& table, const std::filesy
 /// The style names make_potential() accepts.
 std::vector<std::string> potential_styles();
 
-/// The mass the potential file gives atom type t (0-based), if the potential has masses (EAM).
+/// The mass the potential file gives atom type t (0-based), if the potential has masses (EAM, ADP).
 std::optional<double> potential_type_mass(const Potential& potential, int t);
-/// The element the potential file names for atom type t (0-based): eam/alloy and eam/fs files.
+/// The element the potential file names for atom type t (0-based): eam/alloy, eam/fs, adp files.
 std::optional<std::string> potential_type_element(const Potential& potential, int t);
 
 /// The file named by string `key` of `table`: as given if absolute, else case_dir/name; else, as
