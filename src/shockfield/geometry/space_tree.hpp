@@ -29,6 +29,7 @@
 // searches allocate nothing for trees of ordinary depth (their stacks and heaps live in place).
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -264,11 +265,11 @@ class SpaceTree {
   /// Minimum search (§3.2.2): the k objects of smallest value(id), in increasing value (fewer
   /// when fewer objects have a finite value). range(cube) returns {m, M}: bounds of the values
   /// of the objects in the cube's region, m(b) <= value <= M(b) (M = +inf when unknown). Cubes
-  /// are opened depth first, the sub-cubes of a cube in increasing m(b) (the one nearest in
-  /// value first, as a kd-tree does; the paper's order by m(b) over all cubes needs a heap and
-  /// finds the same objects); a cube is skipped when m(b) exceeds the k-th value found, or
-  /// (k = 1) the smallest M(b) of a cube seen (every cube holds an object); a cube with
-  /// m(b) = +inf is never opened. Ties in value are resolved by the lower id (a cube whose m(b)
+  /// are opened depth first, as a recursive kd-tree search does, the sub-cubes of a cube from the
+  /// one of least m(b) outwards (kFarthestFirst read backwards; the paper's order by m(b) over
+  /// all cubes needs a heap and finds the same objects); a sub-cube is tested when its turn comes
+  /// and skipped when m(b) exceeds the k-th value found by then, or (k = 1) the smallest M(b)
+  /// of a cube seen (every cube holds an object); a cube with m(b) = +inf is never opened. Ties in value are resolved by the lower id (a cube whose m(b)
   /// equals the k-th value is still opened), so the result does not depend on the tree's shape.
   /// range may also offer the lower bounds of all sub-cubes of a cube at once,
   /// range(cube, sub_margins, m) filling m[b] for sub-cube b (cube.sub_cube(b, sub_margins[b]));
@@ -295,6 +296,19 @@ class SpaceTree {
       size = std::max(size, o.hi()[k] - o.lo()[k]);
     }
   }
+  /// The sub-cubes b ^ c of a cube, c in this order, from the sub-cube across every axis from b
+  /// to b itself (c in decreasing number of set bits). The minimum search takes a cube's
+  /// sub-cubes in the reverse order from b, the one of least m(b): b, then those across one
+  /// axis, two, ... — near the order of m(b) (a sub-cube across more axes from q's is never
+  /// nearer than the sub-cubes between) without sorting.
+  static constexpr std::array<int, kChildren> kFarthestFirst = [] {
+    std::array<int, kChildren> order{};
+    int at = 0;
+    for (int bits = N; bits >= 0; --bits)
+      for (int c = 0; c < kChildren; ++c)
+        if (std::popcount(unsigned(c)) == bits) order[at++] = c;
+    return order;
+  }();
   /// Whether a range or may_contain offers the form over all sub-cubes of a cube at once.
   template <class F>
   static constexpr bool kAllSubCubes =

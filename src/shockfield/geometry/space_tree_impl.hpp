@@ -318,81 +318,104 @@ void SpaceTree<N, A>::minimum_search_into(std::size_t k, Range&& range, Value&& 
                                           Best& best) const {
   best.clear();  // a max-heap on value, at most k
   if (root_ < 0 || k == 0) return;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
   // Ties in value go to the lower id: (value, id) compared lexicographically.
   auto worse = [](const Found& a, const Found& b) {
     return a.value < b.value || (a.value == b.value && a.id < b.id);
   };
-  // Depth first, the children of a cube taken in increasing m(b) (nearest first), which finds
-  // a good k-th value as soon as best-first order does, without a heap of cubes.
-  struct Open {
-    double m;
-    int node;
+  double upper = kInf;  // min M(b) seen, used when k == 1
+  // A cube is opened when m(b) <= bound(): m(b) > the k-th value found (or, k = 1, > a cube's
+  // M) rules it out.
+  auto bound = [&] { return best.size() == k ? std::min(upper, best.front().value) : upper; };
+  // Depth first, as a recursive kd-tree search: one frame per split cube on the path from the
+  // root, holding its sub-cubes from the one of least m(b) outwards (b = nearest ^ c, c along
+  // kFarthestFirst read backwards) with their m(b) (NaN where there is no sub-cube or m(b) is
+  // +inf, so that no bound opens it). A frame's next sub-cube is the first one not yet taken
+  // with m(b) <= bound() at the moment it is taken: all 2^N tested at once, so a cube whose
+  // remaining sub-cubes the values found so far rule out is left at once.
+  struct Frame {
+    std::array<double, kChildren> m;
+    std::array<int, kChildren> child;
+    unsigned taken = 0;  ///< positions below this one were taken or passed over
   };
-  InlineVector<Open, 256> open;  // cubes to open, the next on top
-  double upper = std::numeric_limits<double>::infinity();  // min M(b) seen, used when k == 1
-  auto skipped = [&](double m) {
-    return m > upper || (best.size() == k && m > best.front().value);
-  };
-  {
-    const auto [m, M] = range(nodes_[root_].cube);
-    if (!(m < std::numeric_limits<double>::infinity())) return;  // no finite value inside
-    if (k == 1) upper = M;
-    open.push_back({m, root_});
-  }
-  while (!open.empty()) {
-    const Open top = open.back();
-    open.pop_back();
-    if (skipped(top.m)) continue;
-    const Node& node = nodes_[top.node];
-    prefetch_objects(node);  // arriving while the sub-cubes are ranked
-    std::array<Open, kChildren> children;
-    int count = 0;
-    std::array<double, kChildren> lower_bounds;  // m(b) of every sub-cube, when range gives them
-    if constexpr (kAllSubCubes<Range>)
-      if (node.split) range(node.cube, node.child_margin, lower_bounds);
-    for (int b = 0; b < kChildren && node.split; ++b) {
-      if (node.child[b] < 0) continue;
-      double m, M = std::numeric_limits<double>::infinity();
-      if constexpr (kAllSubCubes<Range>)
-        m = lower_bounds[b];
-      else
-        std::tie(m, M) = range(child_cube(node, b));
-      if (!(m < std::numeric_limits<double>::infinity())) continue;  // no finite value inside
-      if (k == 1) upper = std::min(upper, M);
-      // Insertion into `children`, kept in decreasing m so that the nearest is pushed last.
-      int at = count++;
-      for (; at > 0 && children[at - 1].m < m; --at) children[at] = children[at - 1];
-      children[at] = {m, node.child[b]};
-    }
+  InlineVector<Frame, 48> path;
+  auto measure = [&](const Node& node) {
     if (k == 1) {  // the heap of one: a running minimum (the same order: value, then id)
-      Found least = best.empty() ? Found{std::numeric_limits<double>::infinity(), 0} : best.front();
+      Found least = best.empty() ? Found{kInf, 0} : best.front();
       for (const Object& o : node.objects) {
         const double v = call_on(value, o);
         if (v < least.value || (v == least.value && o.id < least.id)) least = {v, o.id};
       }
-      if (least.value < std::numeric_limits<double>::infinity()) {
+      if (least.value < kInf) {
         best.clear();
         best.push_back(least);
       }
-    } else {
-      for (const Object& o : node.objects) {
-        const double v = call_on(value, o);
-        if (!(v < std::numeric_limits<double>::infinity())) continue;
-        if (best.size() < k) {
-          best.push_back({v, o.id});
-          std::push_heap(best.begin(), best.end(), worse);
-        } else if (worse(Found{v, o.id}, best.front())) {
-          std::pop_heap(best.begin(), best.end(), worse);
-          best.back() = {v, o.id};
-          std::push_heap(best.begin(), best.end(), worse);
+      return;
+    }
+    for (const Object& o : node.objects) {
+      const double v = call_on(value, o);
+      if (!(v < kInf)) continue;
+      if (best.size() < k) {
+        best.push_back({v, o.id});
+        std::push_heap(best.begin(), best.end(), worse);
+      } else if (worse(Found{v, o.id}, best.front())) {
+        std::pop_heap(best.begin(), best.end(), worse);
+        best.back() = {v, o.id};
+        std::push_heap(best.begin(), best.end(), worse);
+      }
+    }
+  };
+  auto open_cube = [&](int n) {
+    const Node& node = nodes_[n];
+    prefetch_objects(node);  // arriving while the sub-cubes are ranked
+    if (node.split) {
+      std::array<double, kChildren> m;
+      if constexpr (kAllSubCubes<Range>) range(node.cube, node.child_margin, m);
+      double least = kInf;
+      int nearest = 0;
+      for (int b = 0; b < kChildren; ++b) {
+        if constexpr (!kAllSubCubes<Range>) {
+          double M = kInf;
+          m[b] = kInf;
+          if (node.child[b] >= 0) std::tie(m[b], M) = range(child_cube(node, b));
+          if (k == 1) upper = std::min(upper, M);
+        }
+        if (node.child[b] < 0 || !(m[b] < kInf)) m[b] = std::numeric_limits<double>::quiet_NaN();
+        nearest = m[b] < least ? b : nearest;
+        least = m[b] < least ? m[b] : least;
+      }
+      if (least < kInf) {
+        prefetch(node.child[nearest]);
+        path.push_back({});
+        Frame& f = path.back();
+        for (int p = 0; p < kChildren; ++p) {
+          const int b = nearest ^ kFarthestFirst[kChildren - 1 - p];
+          f.m[p] = m[b];
+          f.child[p] = node.child[b];
         }
       }
     }
-    for (int c = 0; c < count; ++c)
-      if (!skipped(children[c].m)) {
-        prefetch(children[c].node);
-        open.push_back(children[c]);
-      }
+    measure(node);
+  };
+  {
+    const auto [m, M] = range(nodes_[root_].cube);
+    if (!(m < kInf)) return;  // no finite value inside
+    if (k == 1) upper = M;
+    open_cube(root_);
+  }
+  while (!path.empty()) {
+    Frame& f = path.back();
+    const double limit = bound();
+    unsigned open = 0;
+    for (int p = 0; p < kChildren; ++p) open |= unsigned(f.m[p] <= limit) << p;
+    open &= ~0u << f.taken;
+    if (open == 0) {
+      path.pop_back();
+      continue;
+    }
+    const int p = std::countr_zero(open);
+    f.taken = p + 1;
+    open_cube(f.child[p]);  // may push a frame: f is not used after this
   }
   std::sort_heap(best.begin(), best.end(), worse);
 }
