@@ -35,6 +35,9 @@
 #include <string>
 #include <type_traits>
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/inline_vector.hpp"
@@ -315,6 +318,38 @@ class SpaceTree {
       std::is_invocable_v<F&, const TreeCube<N>&, const std::array<double, kChildren>&,
                           std::array<double, kChildren>&> ||
       std::is_invocable_r_v<unsigned, F&, const TreeCube<N>&, const std::array<double, kChildren>&>;
+  /// Bit p set where m[p] <= limit (NaN: never): SSE2 compares two at a time where there is
+  /// SSE2 (every x86-64), the same bits one at a time elsewhere.
+  static unsigned at_most_mask(const std::array<double, kChildren>& m, double limit) {
+#if defined(__SSE2__)
+    if constexpr (kChildren % 2 == 0) {
+      const __m128d l = _mm_set1_pd(limit);
+      unsigned mask = 0;
+      for (int p = 0; p < kChildren; p += 2)
+        mask |= unsigned(_mm_movemask_pd(_mm_cmple_pd(_mm_loadu_pd(&m[p]), l))) << p;
+      return mask;
+    }
+#endif
+    unsigned mask = 0;
+    for (int p = 0; p < kChildren; ++p) mask |= unsigned(m[p] <= limit) << p;
+    return mask;
+  }
+  /// Whether a value offers the form over coordinate columns of points,
+  /// value(axes, count, out): out[i] for the point (axes[0][i], ..., axes[N-1][i]).
+  template <class F>
+  static constexpr bool kColumnsValue =
+      std::is_invocable_v<F&, const std::array<const double*, N>&, std::size_t, double*>;
+  /// The least of v[0..n) (+inf for none; a NaN never wins), two lanes at a time.
+  static double least_of(const double* v, std::size_t n) {
+    double a = std::numeric_limits<double>::infinity(), b = a;
+    std::size_t i = 0;
+    for (; i + 2 <= n; i += 2) {
+      a = v[i] < a ? v[i] : a;
+      b = v[i + 1] < b ? v[i + 1] : b;
+    }
+    if (i < n) a = v[i] < a ? v[i] : a;
+    return a < b ? a : b;
+  }
   /// condition/value of a search called with the held object, or with its id.
   template <class F>
   static decltype(auto) call_on(F& f, const Object& o) {
@@ -336,6 +371,7 @@ class SpaceTree {
     int parent = -1;
     int slot = 0;  ///< which child of the parent this cube is
     std::size_t count = 0;  ///< objects in this cube and its sub-cubes
+    std::uint32_t first = 0;  ///< where its objects' coordinates start in columns_ (points)
   };
   struct Where {
     int node = -1;
@@ -361,12 +397,17 @@ class SpaceTree {
   /// the sub-cubes it will open, and their loads then overlap instead of following one another.
   void prefetch(int n) const {
     __builtin_prefetch(&nodes_[n]);
-    prefetch_geometry(nodes_[n]);
+    __builtin_prefetch(&nodes_[n].cube);
+    if constexpr (!kPoints) __builtin_prefetch(&nodes_[n].child_margin.back());
   }
-  /// The rest of a split cube's record (its geometry and sub-cube margins).
-  void prefetch_geometry(const Node& node) const {
-    __builtin_prefetch(&node.cube);
-    __builtin_prefetch(&node.child_margin.back());
+  /// The margins of a cube's sub-cubes as the searches rank them: all 0 in a tree of points
+  /// (known when compiling, so that the searches neither read nor test them).
+  static const std::array<double, kChildren>& sub_margins(const Node& node) {
+    static constexpr std::array<double, kChildren> kNone{};
+    if constexpr (kPoints)
+      return kNone;
+    else
+      return node.child_margin;
   }
   void prefetch_objects(const Node& node) const {
     const char* first = reinterpret_cast<const char*>(node.objects.data());
@@ -396,6 +437,11 @@ class SpaceTree {
   std::vector<int> free_;
   std::vector<Where> where_;
   int root_ = -1;
+  /// A tree of points: the coordinates of every held point, axis by axis, cube after cube in
+  /// the depth-first order of lay_out_depth_first (which fills them); a search reads a cube's
+  /// points as columns from there while no insert or remove has happened since.
+  std::array<std::vector<double>, N> columns_;
+  bool columns_valid_ = false;
   double min_half_ = 0.0;  ///< the resolution limit in force
   std::size_t held_ = 0;
 };

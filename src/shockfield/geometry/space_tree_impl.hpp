@@ -125,6 +125,7 @@ void SpaceTree<N, A>::insert(Id id) {
     throw InputError(fmt::format("space tree: object {} is not in the adaptor ({} objects)", id,
                                  objects_->size()));
   if (contains(id)) throw InputError(fmt::format("space tree: object {} is already held", id));
+  columns_valid_ = false;
   Object o{};
   o.id = id;
   {
@@ -223,11 +224,24 @@ void SpaceTree<N, A>::lay_out_depth_first() {
   nodes_ = std::move(laid);
   free_.clear();
   root_ = renumbered[root_];
+  if constexpr (kPoints) {
+    for (auto& column : columns_) {
+      column.clear();
+      column.reserve(held_);
+    }
+    for (Node& node : nodes_) {
+      node.first = static_cast<std::uint32_t>(columns_[0].size());
+      for (const Object& o : node.objects)
+        for (int k = 0; k < N; ++k) columns_[k].push_back(o.low[k]);
+    }
+    columns_valid_ = true;
+  }
 }
 
 template <int N, SpaceTreeAdaptor<N> A>
 bool SpaceTree<N, A>::remove(Id id) {
   if (!contains(id)) return false;
+  columns_valid_ = false;
   const Where w = where_[id];
   Node& node = nodes_[w.node];
   const Object moved = node.objects.back();
@@ -297,7 +311,7 @@ void SpaceTree<N, A>::conditional_search(MayContain&& may_contain, Condition&& c
     if (node.split) {
       unsigned open = 0;  // bit b: sub-cube b may contain
       if constexpr (kAllSubCubes<MayContain>)
-        open = may_contain(node.cube, node.child_margin);
+        open = may_contain(node.cube, sub_margins(node));
       else
         for (int b = 0; b < kChildren; ++b)
           if (node.child[b] >= 0 && may_contain(child_cube(node, b))) open |= 1u << b;
@@ -336,86 +350,117 @@ void SpaceTree<N, A>::minimum_search_into(std::size_t k, Range&& range, Value&& 
   struct Frame {
     std::array<double, kChildren> m;
     std::array<int, kChildren> child;
-    unsigned taken = 0;  ///< positions below this one were taken or passed over
+    unsigned taken;  ///< positions below this one were taken or passed over (no default
+                     ///< value: the frames in place would all be written per search)
   };
   InlineVector<Frame, 48> path;
+  // The values of a cube's objects, a chunk at a time: from the coordinate columns when the
+  // value offers that form and they are valid (a loop the compiler vectorises), else one object
+  // at a time.
+  constexpr std::size_t kChunk = 64;
+  std::array<double, kChunk> values;
   auto measure = [&](const Node& node) {
-    if (k == 1) {  // the heap of one: a running minimum (the same order: value, then id)
-      Found least = best.empty() ? Found{kInf, 0} : best.front();
-      for (const Object& o : node.objects) {
-        const double v = call_on(value, o);
-        if (v < least.value || (v == least.value && o.id < least.id)) least = {v, o.id};
+    const std::size_t count = node.objects.size();
+    for (std::size_t from = 0; from < count; from += kChunk) {
+      const std::size_t size = std::min(kChunk, count - from);
+      const Object* objects = node.objects.data() + from;
+      bool from_columns = false;
+      if constexpr (kPoints && kColumnsValue<Value>) {
+        if (columns_valid_) {
+          std::array<const double*, N> axes;
+          for (int k = 0; k < N; ++k) axes[k] = columns_[k].data() + node.first + from;
+          value(axes, size, values.data());
+          from_columns = true;
+        }
       }
-      if (least.value < kInf) {
+      if (!from_columns)
+        for (std::size_t i = 0; i < size; ++i) values[i] = call_on(value, objects[i]);
+      if (k == 1) {  // the heap of one: the chunk's least value, then the lowest id having it
+        const double low = least_of(values.data(), size);
+        if (!(low < kInf) || (!best.empty() && low > best.front().value)) continue;
+        Found least = best.empty() || low < best.front().value
+                          ? Found{low, std::numeric_limits<Id>::max()}
+                          : best.front();
+        for (std::size_t i = 0; i < size; ++i)
+          if (values[i] == low && objects[i].id < least.id) least.id = objects[i].id;
         best.clear();
         best.push_back(least);
+        continue;
       }
-      return;
-    }
-    for (const Object& o : node.objects) {
-      const double v = call_on(value, o);
-      if (!(v < kInf)) continue;
-      if (best.size() < k) {
-        best.push_back({v, o.id});
-        std::push_heap(best.begin(), best.end(), worse);
-      } else if (worse(Found{v, o.id}, best.front())) {
-        std::pop_heap(best.begin(), best.end(), worse);
-        best.back() = {v, o.id};
-        std::push_heap(best.begin(), best.end(), worse);
+      for (std::size_t i = 0; i < size; ++i) {
+        const Found f{values[i], objects[i].id};
+        if (!(f.value < kInf)) continue;
+        if (best.size() < k) {
+          best.push_back(f);
+          std::push_heap(best.begin(), best.end(), worse);
+        } else if (worse(f, best.front())) {
+          std::pop_heap(best.begin(), best.end(), worse);
+          best.back() = f;
+          std::push_heap(best.begin(), best.end(), worse);
+        }
       }
     }
   };
-  auto open_cube = [&](int n) {
-    const Node& node = nodes_[n];
-    prefetch_objects(node);  // arriving while the sub-cubes are ranked
-    if (node.split) {
-      std::array<double, kChildren> m;
-      if constexpr (kAllSubCubes<Range>) range(node.cube, node.child_margin, m);
+  // Opens cube n and goes on down into the sub-cube of least m(b) while it is within the bound
+  // (the first sub-cube a frame gives: taken at once, without testing the frame again).
+  auto descend = [&](int n) {
+    while (n >= 0) {
+      const Node& node = nodes_[n];
+      prefetch_objects(node);  // arriving while the sub-cubes are ranked
       double least = kInf;
-      int nearest = 0;
-      for (int b = 0; b < kChildren; ++b) {
-        if constexpr (!kAllSubCubes<Range>) {
-          double M = kInf;
-          m[b] = kInf;
-          if (node.child[b] >= 0) std::tie(m[b], M) = range(child_cube(node, b));
-          if (k == 1) upper = std::min(upper, M);
+      int nearest = -1;
+      if (node.split) {
+        std::array<double, kChildren> m;
+        if constexpr (kAllSubCubes<Range>) range(node.cube, sub_margins(node), m);
+        for (int b = 0; b < kChildren; ++b) {
+          if constexpr (!kAllSubCubes<Range>) {
+            double M = kInf;
+            m[b] = kInf;
+            if (node.child[b] >= 0) std::tie(m[b], M) = range(child_cube(node, b));
+            if (k == 1) upper = std::min(upper, M);
+          }
+          if (node.child[b] < 0 || !(m[b] < kInf)) m[b] = std::numeric_limits<double>::quiet_NaN();
+          nearest = m[b] < least ? b : nearest;
+          least = m[b] < least ? m[b] : least;
         }
-        if (node.child[b] < 0 || !(m[b] < kInf)) m[b] = std::numeric_limits<double>::quiet_NaN();
-        nearest = m[b] < least ? b : nearest;
-        least = m[b] < least ? m[b] : least;
-      }
-      if (least < kInf) {
-        prefetch(node.child[nearest]);
-        path.push_back({});
-        Frame& f = path.back();
-        for (int p = 0; p < kChildren; ++p) {
-          const int b = nearest ^ kFarthestFirst[kChildren - 1 - p];
-          f.m[p] = m[b];
-          f.child[p] = node.child[b];
+        if (nearest >= 0) {
+          for (int b = 0; b < kChildren; ++b)  // the ones that may be opened
+            if (m[b] < kInf) prefetch(node.child[b]);
+          path.push_back({});  // written in place (a frame copied just after its fields were
+          Frame& f = path.back();  // written would stall on store forwarding)
+          f.taken = 1;  // the first, the sub-cube of least m(b), is opened next (or none is)
+          for (int p = 0; p < kChildren; ++p) {
+            const int b = nearest ^ kFarthestFirst[kChildren - 1 - p];
+            f.m[p] = m[b];
+            f.child[p] = node.child[b];
+          }
         }
       }
+      measure(node);
+      if (nearest < 0) return;
+      if (!(least <= bound())) {  // nor any other sub-cube: m(b) >= least for all
+        path.pop_back();
+        return;
+      }
+      n = node.child[nearest];
     }
-    measure(node);
   };
   {
     const auto [m, M] = range(nodes_[root_].cube);
     if (!(m < kInf)) return;  // no finite value inside
     if (k == 1) upper = M;
-    open_cube(root_);
+    descend(root_);
   }
   while (!path.empty()) {
     Frame& f = path.back();
-    const double limit = bound();
-    unsigned open = 0;
-    for (int p = 0; p < kChildren; ++p) open |= unsigned(f.m[p] <= limit) << p;
-    open &= ~0u << f.taken;
+    const unsigned open = at_most_mask(f.m, bound()) & (~0u << f.taken);
     if (open == 0) {
       path.pop_back();
       continue;
     }
     const int p = std::countr_zero(open);
     f.taken = p + 1;
-    open_cube(f.child[p]);  // may push a frame: f is not used after this
+    descend(f.child[p]);  // may push frames: f is not used after this
   }
   std::sort_heap(best.begin(), best.end(), worse);
 }
@@ -433,6 +478,10 @@ std::string SpaceTree<N, A>::check_node(int n, std::size_t& counted) const {
     objects_->bounds(id, lo, hi);
     if (lo != o.lo() || hi != o.hi())
       return fmt::format("object {} in cube {} holds a box other than the adaptor's", id, n);
+    if constexpr (kPoints)
+      for (int k = 0; k < N && columns_valid_; ++k)
+        if (columns_[k].size() <= node.first + s || columns_[k][node.first + s] != o.low[k])
+          return fmt::format("object {} in cube {}: its coordinate columns differ", id, n);
     Point c;
     double size;
     centre_and_size(o, c, size);
