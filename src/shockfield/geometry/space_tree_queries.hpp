@@ -58,7 +58,8 @@ auto distance2_value(const std::array<double, N>& q) {
 /// The k objects nearest to q, nearest first (MS2 for k = 1).
 template <int N, class Tree>
 std::vector<Neighbour> k_nearest(const Tree& tree, const std::array<double, N>& q, std::size_t k) {
-  const auto found = tree.minimum_search(k, distance2_range<N>(q), distance2_value<N, Tree>(q));
+  InlineVector<typename Tree::Found, 16> found;  // no allocation but the answer's for k <= 16
+  tree.minimum_search_into(k, distance2_range<N>(q), distance2_value<N, Tree>(q), found);
   std::vector<Neighbour> out;
   out.reserve(found.size());
   for (const auto& f : found) out.push_back({std::sqrt(f.value), f.id});
