@@ -368,7 +368,8 @@ void SpaceTree<N, A>::minimum_search_into(std::size_t k, Range&& range, Value&& 
       if constexpr (kPoints && kColumnsValue<Value>) {
         if (columns_valid_) {
           std::array<const double*, N> axes;
-          for (int k = 0; k < N; ++k) axes[k] = columns_[k].data() + node.first + from;
+          for (int axis = 0; axis < N; ++axis)
+            axes[axis] = columns_[axis].data() + node.first + from;
           value(axes, size, values.data());
           from_columns = true;
         }
