@@ -4,8 +4,8 @@
 //                                        cube of unit cells) with Gaussian thermal displacements
 //                                        of 0.03 per coordinate (seeded), CSV
 //   delaunay_bench delaunay DIM FILE     time of our Delaunay division of the points of FILE
-//   delaunay_bench queries N Q [fcc]     nearest and radius query rates (per second of the
-//                                        thread's CPU time) of the SHT beside nanoflann's
+//   delaunay_bench queries N Q [fcc]     nearest, 8-nearest and radius query rates (per second
+//                                        of the thread's CPU time) of the SHT beside nanoflann's
 //                                        kd-tree on the same N points (uniform, or the
 //                                        perturbed fcc crystal of generate-fcc), Q uniform
 //                                        queries in the points' box; the answers are compared
@@ -118,9 +118,10 @@ int queries(std::size_t n, std::size_t q, bool fcc) {
   const double kd_build = seconds_since(t0);
   // The four query loops run on 20 slices of the queries in turn (SHT, nanoflann, SHT, ...),
   // so that a change of the machine's load mid-run hits both alike.
-  std::vector<double> sht_nn(q), kd_nn(q);
+  std::vector<double> sht_nn(q), kd_nn(q), sht_knn(q), kd_knn(q);
   std::size_t sht_found = 0, kd_found = 0;
-  double sht_nearest = 0, kd_nearest = 0, sht_radius = 0, kd_radius = 0;
+  double sht_nearest = 0, kd_nearest = 0, sht_radius = 0, kd_radius = 0, sht_k = 0, kd_k = 0;
+  constexpr std::size_t kNeighbours = 8;  // k-nearest: the 8th neighbour's distance compared
   std::vector<std::pair<std::uint32_t, double>> found;  // nanoflann 1.4 (Debian 12)
   constexpr std::size_t kSlices = 20;
   for (std::size_t slice = 0; slice < kSlices; ++slice) {
@@ -137,6 +138,18 @@ int queries(std::size_t n, std::size_t q, bool fcc) {
     }
     kd_nearest += thread_cpu_seconds() - c0;
     c0 = thread_cpu_seconds();
+    for (std::size_t i = from; i < to; ++i)
+      sht_knn[i] = sg::k_nearest<3>(tree, qs[i], kNeighbours).back().distance;
+    sht_k += thread_cpu_seconds() - c0;
+    c0 = thread_cpu_seconds();
+    for (std::size_t i = from; i < to; ++i) {
+      std::array<std::uint32_t, kNeighbours> idx;
+      std::array<double, kNeighbours> d2;
+      kd.knnSearch(qs[i].data(), kNeighbours, idx.data(), d2.data());
+      kd_knn[i] = std::sqrt(d2.back());
+    }
+    kd_k += thread_cpu_seconds() - c0;
+    c0 = thread_cpu_seconds();
     for (std::size_t i = from; i < to; ++i) sht_found += sg::within_radius<3>(tree, qs[i], r).size();
     sht_radius += thread_cpu_seconds() - c0;
     c0 = thread_cpu_seconds();
@@ -146,11 +159,13 @@ int queries(std::size_t n, std::size_t q, bool fcc) {
     kd_radius += thread_cpu_seconds() - c0;
   }
   std::size_t mismatches = 0;
-  for (std::size_t i = 0; i < q; ++i) mismatches += sht_nn[i] != kd_nn[i];
+  for (std::size_t i = 0; i < q; ++i) mismatches += sht_nn[i] != kd_nn[i] || sht_knn[i] != kd_knn[i];
   std::printf("points %zu (%s) queries %zu radius %.5g\n", n, fcc ? "fcc" : "uniform", q, r);
   std::printf("build: sht %.3f s, nanoflann %.3f s\n", sht_build, kd_build);
   std::printf("nearest: sht %.3g /s, nanoflann %.3g /s, ratio %.2f, mismatches %zu\n",
               q / sht_nearest, q / kd_nearest, kd_nearest / sht_nearest, mismatches);
+  std::printf("%zu-nearest: sht %.3g /s, nanoflann %.3g /s, ratio %.2f\n", kNeighbours, q / sht_k,
+              q / kd_k, kd_k / sht_k);
   std::printf("radius: sht %.3g /s, nanoflann %.3g /s, ratio %.2f, found %zu vs %zu\n",
               q / sht_radius, q / kd_radius, kd_radius / sht_radius, sht_found, kd_found);
   return mismatches == 0 && sht_found == kd_found ? 0 : 1;

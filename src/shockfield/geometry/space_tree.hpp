@@ -29,11 +29,15 @@
 // searches allocate nothing for trees of ordinary depth (their stacks and heaps live in place).
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <type_traits>
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/geometry/inline_vector.hpp"
@@ -264,11 +268,11 @@ class SpaceTree {
   /// Minimum search (§3.2.2): the k objects of smallest value(id), in increasing value (fewer
   /// when fewer objects have a finite value). range(cube) returns {m, M}: bounds of the values
   /// of the objects in the cube's region, m(b) <= value <= M(b) (M = +inf when unknown). Cubes
-  /// are opened depth first, the sub-cubes of a cube in increasing m(b) (the one nearest in
-  /// value first, as a kd-tree does; the paper's order by m(b) over all cubes needs a heap and
-  /// finds the same objects); a cube is skipped when m(b) exceeds the k-th value found, or
-  /// (k = 1) the smallest M(b) of a cube seen (every cube holds an object); a cube with
-  /// m(b) = +inf is never opened. Ties in value are resolved by the lower id (a cube whose m(b)
+  /// are opened depth first, as a recursive kd-tree search does, the sub-cubes of a cube from the
+  /// one of least m(b) outwards (kFarthestFirst read backwards; the paper's order by m(b) over
+  /// all cubes needs a heap and finds the same objects); a sub-cube is tested when its turn comes
+  /// and skipped when m(b) exceeds the k-th value found by then, or (k = 1) the smallest M(b)
+  /// of a cube seen (every cube holds an object); a cube with m(b) = +inf is never opened. Ties in value are resolved by the lower id (a cube whose m(b)
   /// equals the k-th value is still opened), so the result does not depend on the tree's shape.
   /// range may also offer the lower bounds of all sub-cubes of a cube at once,
   /// range(cube, sub_margins, m) filling m[b] for sub-cube b (cube.sub_cube(b, sub_margins[b]));
@@ -295,12 +299,57 @@ class SpaceTree {
       size = std::max(size, o.hi()[k] - o.lo()[k]);
     }
   }
+  /// The sub-cubes b ^ c of a cube, c in this order, from the sub-cube across every axis from b
+  /// to b itself (c in decreasing number of set bits). The minimum search takes a cube's
+  /// sub-cubes in the reverse order from b, the one of least m(b): b, then those across one
+  /// axis, two, ... — near the order of m(b) (a sub-cube across more axes from q's is never
+  /// nearer than the sub-cubes between) without sorting.
+  static constexpr std::array<int, kChildren> kFarthestFirst = [] {
+    std::array<int, kChildren> order{};
+    int at = 0;
+    for (int bits = N; bits >= 0; --bits)
+      for (int c = 0; c < kChildren; ++c)
+        if (std::popcount(unsigned(c)) == bits) order[at++] = c;
+    return order;
+  }();
   /// Whether a range or may_contain offers the form over all sub-cubes of a cube at once.
   template <class F>
   static constexpr bool kAllSubCubes =
       std::is_invocable_v<F&, const TreeCube<N>&, const std::array<double, kChildren>&,
                           std::array<double, kChildren>&> ||
       std::is_invocable_r_v<unsigned, F&, const TreeCube<N>&, const std::array<double, kChildren>&>;
+  /// Bit p set where m[p] <= limit (NaN: never): SSE2 compares two at a time where there is
+  /// SSE2 (every x86-64), the same bits one at a time elsewhere.
+  static unsigned at_most_mask(const std::array<double, kChildren>& m, double limit) {
+#if defined(__SSE2__)
+    if constexpr (kChildren % 2 == 0) {
+      const __m128d l = _mm_set1_pd(limit);
+      unsigned mask = 0;
+      for (int p = 0; p < kChildren; p += 2)
+        mask |= unsigned(_mm_movemask_pd(_mm_cmple_pd(_mm_loadu_pd(&m[p]), l))) << p;
+      return mask;
+    }
+#endif
+    unsigned mask = 0;
+    for (int p = 0; p < kChildren; ++p) mask |= unsigned(m[p] <= limit) << p;
+    return mask;
+  }
+  /// Whether a value offers the form over coordinate columns of points,
+  /// value(axes, count, out): out[i] for the point (axes[0][i], ..., axes[N-1][i]).
+  template <class F>
+  static constexpr bool kColumnsValue =
+      std::is_invocable_v<F&, const std::array<const double*, N>&, std::size_t, double*>;
+  /// The least of v[0..n) (+inf for none; a NaN never wins), two lanes at a time.
+  static double least_of(const double* v, std::size_t n) {
+    double a = std::numeric_limits<double>::infinity(), b = a;
+    std::size_t i = 0;
+    for (; i + 2 <= n; i += 2) {
+      a = v[i] < a ? v[i] : a;
+      b = v[i + 1] < b ? v[i + 1] : b;
+    }
+    if (i < n) a = v[i] < a ? v[i] : a;
+    return a < b ? a : b;
+  }
   /// condition/value of a search called with the held object, or with its id.
   template <class F>
   static decltype(auto) call_on(F& f, const Object& o) {
@@ -322,6 +371,7 @@ class SpaceTree {
     int parent = -1;
     int slot = 0;  ///< which child of the parent this cube is
     std::size_t count = 0;  ///< objects in this cube and its sub-cubes
+    std::uint32_t first = 0;  ///< where its objects' coordinates start in columns_ (points)
   };
   struct Where {
     int node = -1;
@@ -347,12 +397,17 @@ class SpaceTree {
   /// the sub-cubes it will open, and their loads then overlap instead of following one another.
   void prefetch(int n) const {
     __builtin_prefetch(&nodes_[n]);
-    prefetch_geometry(nodes_[n]);
+    __builtin_prefetch(&nodes_[n].cube);
+    if constexpr (!kPoints) __builtin_prefetch(&nodes_[n].child_margin.back());
   }
-  /// The rest of a split cube's record (its geometry and sub-cube margins).
-  void prefetch_geometry(const Node& node) const {
-    __builtin_prefetch(&node.cube);
-    __builtin_prefetch(&node.child_margin.back());
+  /// The margins of a cube's sub-cubes as the searches rank them: all 0 in a tree of points
+  /// (known when compiling, so that the searches neither read nor test them).
+  static const std::array<double, kChildren>& sub_margins(const Node& node) {
+    static constexpr std::array<double, kChildren> kNone{};
+    if constexpr (kPoints)
+      return kNone;
+    else
+      return node.child_margin;
   }
   void prefetch_objects(const Node& node) const {
     const char* first = reinterpret_cast<const char*>(node.objects.data());
@@ -382,6 +437,11 @@ class SpaceTree {
   std::vector<int> free_;
   std::vector<Where> where_;
   int root_ = -1;
+  /// A tree of points: the coordinates of every held point, axis by axis, cube after cube in
+  /// the depth-first order of lay_out_depth_first (which fills them); a search reads a cube's
+  /// points as columns from there while no insert or remove has happened since.
+  std::array<std::vector<double>, N> columns_;
+  bool columns_valid_ = false;
   double min_half_ = 0.0;  ///< the resolution limit in force
   std::size_t held_ = 0;
 };

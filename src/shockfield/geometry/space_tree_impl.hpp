@@ -125,6 +125,7 @@ void SpaceTree<N, A>::insert(Id id) {
     throw InputError(fmt::format("space tree: object {} is not in the adaptor ({} objects)", id,
                                  objects_->size()));
   if (contains(id)) throw InputError(fmt::format("space tree: object {} is already held", id));
+  columns_valid_ = false;
   Object o{};
   o.id = id;
   {
@@ -223,11 +224,24 @@ void SpaceTree<N, A>::lay_out_depth_first() {
   nodes_ = std::move(laid);
   free_.clear();
   root_ = renumbered[root_];
+  if constexpr (kPoints) {
+    for (auto& column : columns_) {
+      column.clear();
+      column.reserve(held_);
+    }
+    for (Node& node : nodes_) {
+      node.first = static_cast<std::uint32_t>(columns_[0].size());
+      for (const Object& o : node.objects)
+        for (int k = 0; k < N; ++k) columns_[k].push_back(o.low[k]);
+    }
+    columns_valid_ = true;
+  }
 }
 
 template <int N, SpaceTreeAdaptor<N> A>
 bool SpaceTree<N, A>::remove(Id id) {
   if (!contains(id)) return false;
+  columns_valid_ = false;
   const Where w = where_[id];
   Node& node = nodes_[w.node];
   const Object moved = node.objects.back();
@@ -297,7 +311,7 @@ void SpaceTree<N, A>::conditional_search(MayContain&& may_contain, Condition&& c
     if (node.split) {
       unsigned open = 0;  // bit b: sub-cube b may contain
       if constexpr (kAllSubCubes<MayContain>)
-        open = may_contain(node.cube, node.child_margin);
+        open = may_contain(node.cube, sub_margins(node));
       else
         for (int b = 0; b < kChildren; ++b)
           if (node.child[b] >= 0 && may_contain(child_cube(node, b))) open |= 1u << b;
@@ -318,81 +332,136 @@ void SpaceTree<N, A>::minimum_search_into(std::size_t k, Range&& range, Value&& 
                                           Best& best) const {
   best.clear();  // a max-heap on value, at most k
   if (root_ < 0 || k == 0) return;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
   // Ties in value go to the lower id: (value, id) compared lexicographically.
   auto worse = [](const Found& a, const Found& b) {
     return a.value < b.value || (a.value == b.value && a.id < b.id);
   };
-  // Depth first, the children of a cube taken in increasing m(b) (nearest first), which finds
-  // a good k-th value as soon as best-first order does, without a heap of cubes.
-  struct Open {
-    double m;
-    int node;
+  double upper = kInf;  // min M(b) seen, used when k == 1
+  // A cube is opened when m(b) <= bound(): m(b) > the k-th value found (or, k = 1, > a cube's
+  // M) rules it out.
+  auto bound = [&] { return best.size() == k ? std::min(upper, best.front().value) : upper; };
+  // Depth first, as a recursive kd-tree search: one frame per split cube on the path from the
+  // root, holding its sub-cubes from the one of least m(b) outwards (b = nearest ^ c, c along
+  // kFarthestFirst read backwards) with their m(b) (NaN where there is no sub-cube or m(b) is
+  // +inf, so that no bound opens it). A frame's next sub-cube is the first one not yet taken
+  // with m(b) <= bound() at the moment it is taken: all 2^N tested at once, so a cube whose
+  // remaining sub-cubes the values found so far rule out is left at once.
+  struct Frame {
+    std::array<double, kChildren> m;
+    std::array<int, kChildren> child;
+    unsigned taken;  ///< positions below this one were taken or passed over (no default
+                     ///< value: the frames in place would all be written per search)
   };
-  InlineVector<Open, 256> open;  // cubes to open, the next on top
-  double upper = std::numeric_limits<double>::infinity();  // min M(b) seen, used when k == 1
-  auto skipped = [&](double m) {
-    return m > upper || (best.size() == k && m > best.front().value);
-  };
-  {
-    const auto [m, M] = range(nodes_[root_].cube);
-    if (!(m < std::numeric_limits<double>::infinity())) return;  // no finite value inside
-    if (k == 1) upper = M;
-    open.push_back({m, root_});
-  }
-  while (!open.empty()) {
-    const Open top = open.back();
-    open.pop_back();
-    if (skipped(top.m)) continue;
-    const Node& node = nodes_[top.node];
-    prefetch_objects(node);  // arriving while the sub-cubes are ranked
-    std::array<Open, kChildren> children;
-    int count = 0;
-    std::array<double, kChildren> lower_bounds;  // m(b) of every sub-cube, when range gives them
-    if constexpr (kAllSubCubes<Range>)
-      if (node.split) range(node.cube, node.child_margin, lower_bounds);
-    for (int b = 0; b < kChildren && node.split; ++b) {
-      if (node.child[b] < 0) continue;
-      double m, M = std::numeric_limits<double>::infinity();
-      if constexpr (kAllSubCubes<Range>)
-        m = lower_bounds[b];
-      else
-        std::tie(m, M) = range(child_cube(node, b));
-      if (!(m < std::numeric_limits<double>::infinity())) continue;  // no finite value inside
-      if (k == 1) upper = std::min(upper, M);
-      // Insertion into `children`, kept in decreasing m so that the nearest is pushed last.
-      int at = count++;
-      for (; at > 0 && children[at - 1].m < m; --at) children[at] = children[at - 1];
-      children[at] = {m, node.child[b]};
-    }
-    if (k == 1) {  // the heap of one: a running minimum (the same order: value, then id)
-      Found least = best.empty() ? Found{std::numeric_limits<double>::infinity(), 0} : best.front();
-      for (const Object& o : node.objects) {
-        const double v = call_on(value, o);
-        if (v < least.value || (v == least.value && o.id < least.id)) least = {v, o.id};
+  InlineVector<Frame, 48> path;
+  // The values of a cube's objects, a chunk at a time: from the coordinate columns when the
+  // value offers that form and they are valid (a loop the compiler vectorises), else one object
+  // at a time.
+  constexpr std::size_t kChunk = 64;
+  std::array<double, kChunk> values;
+  auto measure = [&](const Node& node) {
+    const std::size_t count = node.objects.size();
+    for (std::size_t from = 0; from < count; from += kChunk) {
+      const std::size_t size = std::min(kChunk, count - from);
+      const Object* objects = node.objects.data() + from;
+      bool from_columns = false;
+      if constexpr (kPoints && kColumnsValue<Value>) {
+        if (columns_valid_) {
+          std::array<const double*, N> axes;
+          for (int axis = 0; axis < N; ++axis)
+            axes[axis] = columns_[axis].data() + node.first + from;
+          value(axes, size, values.data());
+          from_columns = true;
+        }
       }
-      if (least.value < std::numeric_limits<double>::infinity()) {
+      if (!from_columns)
+        for (std::size_t i = 0; i < size; ++i) values[i] = call_on(value, objects[i]);
+      if (k == 1) {  // the heap of one: the chunk's least value, then the lowest id having it
+        const double low = least_of(values.data(), size);
+        if (!(low < kInf) || (!best.empty() && low > best.front().value)) continue;
+        Found least = best.empty() || low < best.front().value
+                          ? Found{low, std::numeric_limits<Id>::max()}
+                          : best.front();
+        for (std::size_t i = 0; i < size; ++i)
+          if (values[i] == low && objects[i].id < least.id) least.id = objects[i].id;
         best.clear();
         best.push_back(least);
+        continue;
       }
-    } else {
-      for (const Object& o : node.objects) {
-        const double v = call_on(value, o);
-        if (!(v < std::numeric_limits<double>::infinity())) continue;
+      for (std::size_t i = 0; i < size; ++i) {
+        const Found f{values[i], objects[i].id};
+        if (!(f.value < kInf)) continue;
         if (best.size() < k) {
-          best.push_back({v, o.id});
+          best.push_back(f);
           std::push_heap(best.begin(), best.end(), worse);
-        } else if (worse(Found{v, o.id}, best.front())) {
+        } else if (worse(f, best.front())) {
           std::pop_heap(best.begin(), best.end(), worse);
-          best.back() = {v, o.id};
+          best.back() = f;
           std::push_heap(best.begin(), best.end(), worse);
         }
       }
     }
-    for (int c = 0; c < count; ++c)
-      if (!skipped(children[c].m)) {
-        prefetch(children[c].node);
-        open.push_back(children[c]);
+  };
+  // Opens cube n and goes on down into the sub-cube of least m(b) while it is within the bound
+  // (the first sub-cube a frame gives: taken at once, without testing the frame again).
+  auto descend = [&](int n) {
+    while (n >= 0) {
+      const Node& node = nodes_[n];
+      prefetch_objects(node);  // arriving while the sub-cubes are ranked
+      double least = kInf;
+      int nearest = -1;
+      if (node.split) {
+        std::array<double, kChildren> m;
+        if constexpr (kAllSubCubes<Range>) range(node.cube, sub_margins(node), m);
+        for (int b = 0; b < kChildren; ++b) {
+          if constexpr (!kAllSubCubes<Range>) {
+            double M = kInf;
+            m[b] = kInf;
+            if (node.child[b] >= 0) std::tie(m[b], M) = range(child_cube(node, b));
+            if (k == 1) upper = std::min(upper, M);
+          }
+          if (node.child[b] < 0 || !(m[b] < kInf)) m[b] = std::numeric_limits<double>::quiet_NaN();
+          nearest = m[b] < least ? b : nearest;
+          least = m[b] < least ? m[b] : least;
+        }
+        if (nearest >= 0) {
+          for (int b = 0; b < kChildren; ++b)  // the ones that may be opened
+            if (m[b] < kInf) prefetch(node.child[b]);
+          path.push_back({});  // written in place (a frame copied just after its fields were
+          Frame& f = path.back();  // written would stall on store forwarding)
+          f.taken = 1;  // the first, the sub-cube of least m(b), is opened next (or none is)
+          for (int p = 0; p < kChildren; ++p) {
+            const int b = nearest ^ kFarthestFirst[kChildren - 1 - p];
+            f.m[p] = m[b];
+            f.child[p] = node.child[b];
+          }
+        }
       }
+      measure(node);
+      if (nearest < 0) return;
+      if (!(least <= bound())) {  // nor any other sub-cube: m(b) >= least for all
+        path.pop_back();
+        return;
+      }
+      n = node.child[nearest];
+    }
+  };
+  {
+    const auto [m, M] = range(nodes_[root_].cube);
+    if (!(m < kInf)) return;  // no finite value inside
+    if (k == 1) upper = M;
+    descend(root_);
+  }
+  while (!path.empty()) {
+    Frame& f = path.back();
+    const unsigned open = at_most_mask(f.m, bound()) & (~0u << f.taken);
+    if (open == 0) {
+      path.pop_back();
+      continue;
+    }
+    const int p = std::countr_zero(open);
+    f.taken = p + 1;
+    descend(f.child[p]);  // may push frames: f is not used after this
   }
   std::sort_heap(best.begin(), best.end(), worse);
 }
@@ -410,6 +479,10 @@ std::string SpaceTree<N, A>::check_node(int n, std::size_t& counted) const {
     objects_->bounds(id, lo, hi);
     if (lo != o.lo() || hi != o.hi())
       return fmt::format("object {} in cube {} holds a box other than the adaptor's", id, n);
+    if constexpr (kPoints)
+      for (int k = 0; k < N && columns_valid_; ++k)
+        if (columns_[k].size() <= node.first + s || columns_[k][node.first + s] != o.low[k])
+          return fmt::format("object {} in cube {}: its coordinate columns differ", id, n);
     Point c;
     double size;
     centre_and_size(o, c, size);

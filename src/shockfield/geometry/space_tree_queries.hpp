@@ -39,11 +39,27 @@ struct Neighbour {
   std::uint32_t id;
 };
 
+/// Squared distance from q to an object: to its box for a held object, and also in the form
+/// over coordinate columns of points (out[i] = |q − p_i|², the same sum in the same order as
+/// TreeObject::distance2_to, so bitwise equal).
+template <int N, class Tree>
+auto distance2_value(const std::array<double, N>& q) {
+  return Overloaded{
+      [&q](const typename Tree::Object& o) { return o.distance2_to(q); },
+      [&q](const std::array<const double*, N>& axes, std::size_t count, double* out) {
+        for (std::size_t i = 0; i < count; ++i) {
+          double d2 = 0.0;
+          for (int k = 0; k < N; ++k) d2 += (axes[k][i] - q[k]) * (axes[k][i] - q[k]);
+          out[i] = d2;
+        }
+      }};
+}
+
 /// The k objects nearest to q, nearest first (MS2 for k = 1).
 template <int N, class Tree>
 std::vector<Neighbour> k_nearest(const Tree& tree, const std::array<double, N>& q, std::size_t k) {
-  const auto found = tree.minimum_search(
-      k, distance2_range<N>(q), [&](const typename Tree::Object& o) { return o.distance2_to(q); });
+  InlineVector<typename Tree::Found, 16> found;  // no allocation but the answer's for k <= 16
+  tree.minimum_search_into(k, distance2_range<N>(q), distance2_value<N, Tree>(q), found);
   std::vector<Neighbour> out;
   out.reserve(found.size());
   for (const auto& f : found) out.push_back({std::sqrt(f.value), f.id});
@@ -54,9 +70,7 @@ std::vector<Neighbour> k_nearest(const Tree& tree, const std::array<double, N>& 
 template <int N, class Tree>
 Neighbour nearest(const Tree& tree, const std::array<double, N>& q) {
   InlineVector<typename Tree::Found, 1> found;
-  tree.minimum_search_into(
-      1, distance2_range<N>(q), [&](const typename Tree::Object& o) { return o.distance2_to(q); },
-      found);
+  tree.minimum_search_into(1, distance2_range<N>(q), distance2_value<N, Tree>(q), found);
   if (found.empty()) return {std::numeric_limits<double>::infinity(), 0};
   return {std::sqrt(found.front().value), found.front().id};
 }
