@@ -102,6 +102,25 @@ PY
 stop_then_resume "$WORK/case.toml" "$WORK/npt_resumed" 170
 same_files "$WORK/out" "$WORK/npt_resumed" thermo.csv final.data
 echo "ok: npt tri resumed from its checkpoint equals the uninterrupted run"
+# Shear-pressure targets through the case file (shear_pressure = LAMMPS `xy 5000 5000 0.5 xz
+# -4000 -4000 0.5`, fixtures/lammps_npt_tri/tri_shear.thermo): the first 100 steps follow LAMMPS
+# in the shear pressures, tilts and econserved (with its strain energy) to 1e-9 as above.
+run_expecting 0 "${npt_tri_case/steps = 400/steps = 100}
+shear_pressure = [5000, -4000, 0]"
+/usr/bin/python3 - "$WORK/out/thermo.csv" "$npt_fixture/tri_shear.thermo" <<'PY'
+import csv, sys
+ours = {int(r["step"]): r for r in csv.DictReader(open(sys.argv[1]))}
+columns = {"pxy_bar": 9, "pxz_bar": 10, "pyz_bar": 11, "xy_A": 15, "xz_A": 16, "econserved_eV": 19}
+worst = 0.0
+for line in open(sys.argv[2]):
+    values = [float(v) for v in line.split()]
+    if int(values[0]) > 100: break
+    for name, c in columns.items():
+        scale = 3e4 if name.startswith("p") else max(abs(values[c]), 1.0)
+        worst = max(worst, abs(float(ours[int(values[0])][name]) - values[c]) / scale)
+print(f"npt tri with shear targets: largest deviation from LAMMPS {worst:.2e}")
+sys.exit(0 if worst < 1e-9 else "FAIL: shear_pressure deviates from LAMMPS fix npt tri xy/xz targets")
+PY
 # Profiles along x and y in the tilted cell bin the fractional coordinate s (slabs parallel to the
 # b-c or a-c face): on the npt run's final.data (thermal positions, tilts 3.59 0.014 0.0046 Å) the
 # step-0 count per 3.7 Å bin equals numpy's binning of s·L (L = lx, ly) and the density
@@ -146,6 +165,11 @@ expect_error "$npt_tri_case
 pressure_dims = [\"x\", \"xy\"]" "stage[0]" "pressure_dims" "couple = \"tri\" barostats x, y, z, xy, xz and yz"
 expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"x\", \"shear\"]}" "stage[0]" "pressure_dims" \
   "expected a list of \"x\", \"y\", \"z\", \"xy\", \"xz\", \"yz\""
+expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"x\", \"xy\"]
+shear_pressure = [5000, -4000, 0]}" "stage[0]" "shear_pressure" \
+  "a target for the xz tilt, which is not barostatted: use couple = \"tri\" or list \"xz\" in pressure_dims"
+expect_error "$npt_tri_case
+shear_pressure = [5000, -4000]" "stage[0]" "shear_pressure"
 expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"xz\"]
 deform_tilt_rate = [0, 0.01, 0]}" "stage[0]" "deform_tilt_rate" "the xz tilt is barostatted by npt and deformed at once"
 # A tilt whose second dimension is not periodic cannot be barostatted (LAMMPS: "Cannot use fix npt

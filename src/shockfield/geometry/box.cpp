@@ -33,6 +33,12 @@ Vec3 Box::edge(int d) const {
   return {tilt.y(), tilt.z(), l.z()};
 }
 
+Mat3 Box::cell() const {
+  Mat3 h;
+  h << edge(0), edge(1), edge(2);
+  return h;
+}
+
 Vec3 Box::lattice_shift(const std::array<int, 3>& n) const {
   const Vec3 l = length();
   return {n[0] * l.x() + n[1] * tilt.x() + n[2] * tilt.y(), n[1] * l.y() + n[2] * tilt.z(), n[2] * l.z()};

@@ -34,6 +34,8 @@ struct Box {
   bool triclinic() const { return tilt.x() != 0 || tilt.y() != 0 || tilt.z() != 0; }
   /// Edge vector d of the cell (a, b or c).
   Vec3 edge(int d) const;
+  /// The cell matrix h = [a b c] (edges as columns; upper triangular).
+  Mat3 cell() const;
   /// n0 a + n1 b + n2 c: the displacement of periodic image n (image counts as in LAMMPS).
   Vec3 lattice_shift(const std::array<int, 3>& n) const;
   /// Fractional coordinates s = h^-1 (x - lo) of a position.

@@ -109,6 +109,16 @@ StageSpec read_stage(const Config& t, std::size_t index) {
           t.fail("pressure_dims", "expected a list of \"x\", \"y\", \"z\", \"xy\", \"xz\", \"yz\"");
       }
     }
+    if (t.has("shear_pressure")) {  // LAMMPS `xy P P τ xz P P τ yz P P τ`, constant targets
+      const auto p = t.get_doubles("shear_pressure", 3, Range::closed(-1e7, 1e7));
+      for (std::size_t k = 0; k < 3; ++k)
+        if (p[k] != 0 && !s.pressure_tilts[k])
+          t.fail("shear_pressure",
+                 fmt::format("a target for the {} tilt, which is not barostatted: use couple = "
+                             "\"tri\" or list \"{}\" in pressure_dims",
+                             std::array{"xy", "xz", "yz"}[k], std::array{"xy", "xz", "yz"}[k]));
+      s.shear_pressure = Vec3(p[0], p[1], p[2]);
+    }
   }
   if (s.ensemble == "msst") s.msst = read_msst(t, s.steps);
   else if (t.has("msst")) t.fail("msst", "a [stage.msst] table only with ensemble = \"msst\"");

@@ -177,7 +177,8 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   else if (s.ensemble == "npt")
     sim.fixes.push_back(std::make_unique<FixNoseHooverNpt>(
         NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims,
-                    s.couple_iso, s.chain, std::nullopt, false, s.pressure_tilts},
+                    s.couple_iso, s.chain, std::nullopt, false, s.pressure_tilts,
+                    s.shear_pressure},
         group));
   else if (s.ensemble == "msst") sim.fixes.push_back(std::make_unique<FixMsst>(s.msst, group));
   else if (s.ensemble == "nphug") sim.fixes.push_back(std::make_unique<FixNphug>(s.nphug, group));
