@@ -158,6 +158,7 @@ StageSpec read_stage(const Config& t, std::size_t index) {
     const auto r = t.get_doubles("deform_tilt_rate", 3, Range::closed(-10, 10));
     s.deform_tilt_rate = Vec3(r[0], r[1], r[2]);
   }
+  if (s.ensemble == "npt" || s.deform_rate || s.deform_tilt_rate) s.flip = t.get_bool_or("flip", true);
   if ((s.ensemble == "minimize" || s.ensemble == "msst" || s.ensemble == "nphug") &&
       (s.piston || s.deform_rate || s.deform_tilt_rate))
     t.fail("ensemble", fmt::format("{} stage cannot have a piston, deform_rate or deform_tilt_rate",

@@ -38,6 +38,7 @@ struct StageSpec {
   std::optional<PistonSpec> piston;
   std::optional<Vec3> deform_rate; ///< 1/ps per dimension
   std::optional<Vec3> deform_tilt_rate;  ///< 1/ps per tilt factor xy, xz, yz (LAMMPS fix deform xy erate ...)
+  bool flip = true;                ///< npt, deform: flip a cell whose tilt passes its limit (LAMMPS flip yes)
   MinimizeSettings minimize;
   MsstSettings msst;               ///< ensemble = "msst": the [stage.msst] table
   NphugSettings nphug;             ///< ensemble = "nphug": the [stage.nphug] table

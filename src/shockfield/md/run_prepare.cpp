@@ -178,7 +178,7 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
     sim.fixes.push_back(std::make_unique<FixNoseHooverNpt>(
         NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims,
                     s.couple_iso, s.chain, std::nullopt, false, s.pressure_tilts,
-                    s.shear_pressure},
+                    s.shear_pressure, s.flip},
         group));
   else if (s.ensemble == "msst") sim.fixes.push_back(std::make_unique<FixMsst>(s.msst, group));
   else if (s.ensemble == "nphug") sim.fixes.push_back(std::make_unique<FixNphug>(s.nphug, group));
@@ -190,7 +190,8 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   }
   if (s.deform_rate || s.deform_tilt_rate)
     sim.fixes.push_back(std::make_unique<FixDeform>(s.deform_rate.value_or(Vec3::Zero()),
-                                                    s.deform_tilt_rate.value_or(Vec3::Zero()), sim.box, sim.time));
+                                                    s.deform_tilt_rate.value_or(Vec3::Zero()), sim.box, sim.time,
+                                                    s.flip));
 }
 
 }  // namespace shockfield::md

@@ -76,6 +76,12 @@ void FixNoseHooverNpt::initial_integrate(Simulation& sim) {
   dilate(sim);
 }
 
+void FixNoseHooverNpt::post_integrate(Simulation& sim) {
+  if (!settings_.flip || !sim.box.triclinic()) return;
+  const geometry::CellFlip flip = sim.box.flip_beyond(0.6);  // LAMMPS: 0.5 + DELTAFLIP
+  if (flip.any()) sim.flip_cell(flip);
+}
+
 void FixNoseHooverNpt::final_integrate(Simulation& sim) {
   velocity_kick(sim);
   barostat_velocity_scaling(sim);
@@ -246,11 +252,12 @@ void FixNoseHooverNpt::dilate_triclinic(Simulation& sim) {
     if (d == 2 && !tilt_on[2]) yz *= e;
   }
   tilt_half();
-  try {
-    box.check_tilt(fmt::format(
-        "step {}: npt (LAMMPS would flip the cell here; shockfield does not)", sim.step));
-  } catch (const InputError& e) {
-    throw RunError(e.what());
+  if (!settings_.flip) {
+    try {
+      box.check_tilt(fmt::format("step {}: npt with flip = false (LAMMPS flip no)", sim.step));
+    } catch (const InputError& e) {
+      throw RunError(e.what());
+    }
   }
   Atoms& a = sim.atoms;
 #pragma omp parallel for schedule(static)

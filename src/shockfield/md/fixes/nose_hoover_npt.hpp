@@ -44,8 +44,11 @@
 // (3) and the barostat chain (which then targets the number of all barostatted components, also
 // for iso: LAMMPS's pstyle TRICLINIC). A tilted box under a barostat that leaves a tilt alone
 // scales that tilt with its second edge (xy with ly, xz and yz with lz: LAMMPS's default
-// scalexy/scalexz/scaleyz yes). A tilt that passes half an edge stops the run (LAMMPS flips the
-// cell; shockfield does not).
+// scalexy/scalexz/scaleyz yes). A tilt that passes 0.6 of its edge (LAMMPS's 0.5 + DELTAFLIP, so
+// that a tilt oscillating about one half does not flip back and forth) flips the cell in
+// post_integrate (Box::flip_beyond, Simulation::flip_cell; LAMMPS FixNH::pre_exchange, which runs
+// at the next neighbour-list rebuild instead, a step or a few later); with `flip` off a tilt past
+// half an edge stops the run (LAMMPS `flip no` lets it grow).
 // A derived fix may move the thermostat target every step (target_temperature(), called after the
 // barostat chain's first half step, as LAMMPS FixNH::compute_temp_target), with the masses kept
 // at the temperature the fix was built with or reset by set_reference_temperature().
@@ -71,6 +74,7 @@ struct NptSettings {
   std::array<bool, 3> tilt_dims{false, false,
                                 false};  ///< barostatted tilt factors xy, xz, yz, eq. (5)
   Vec3 tilt_pressure = Vec3::Zero();  ///< target shear pressures P*_xy, P*_xz, P*_yz, bar, eq. (7)
+  bool flip = true;               ///< flip a cell whose tilt passes 0.6 of its edge (LAMMPS flip yes)
 };
 
 class FixNoseHooverNpt : public Fix {
@@ -80,6 +84,8 @@ class FixNoseHooverNpt : public Fix {
   /// Records V₀ for the P(V − V₀) term of the conserved quantity.
   void setup(Simulation& sim) override;
   void initial_integrate(Simulation& sim) override;
+  /// The cell flip, when a tilt passed 0.6 of its edge.
+  void post_integrate(Simulation& sim) override;
   void final_integrate(Simulation& sim) override;
   double energy_added() const override;
   FixState state() const override;
