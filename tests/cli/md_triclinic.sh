@@ -5,10 +5,11 @@
 # the three shear pressures to 1e-8 relative (thermo.csv has 10 significant digits: 5e-10, plus the
 # growth of round-off over 100 steps of a hot, chaotic crystal); final.data keeps the tilt and is
 # read by LAMMPS read_data (when lmp is installed) and by shockfield; the dumps carry LAMMPS's
-# triclinic header; msst refuses a tilted box by key (exit 2); profiles along x and y bin the
-# fractional coordinate; npt couple =
-# "tri" follows LAMMPS fix npt tri and resumes bitwise; fix deform tilt rates follow LAMMPS; a
-# crystal built into a tilted cell; simple shear gives LAMMPS's C44.
+# triclinic header; msst, nphug, pistons and relax_box refuse a tilted box by key (exit 2);
+# profiles along x and y bin the fractional coordinate; npt couple = "tri" follows LAMMPS fix npt
+# tri (also with shear_pressure targets) and resumes bitwise; fix deform tilt rates follow LAMMPS;
+# the cell flips past half an edge (flip = false stops, exit 3); a crystal built into a tilted
+# cell; simple shear gives LAMMPS's C44.
 source "$(dirname "$0")/lib.bash"
 set -e
 # cu_u3_case DATA_FILE TIMESTEP THERMO_EVERY: the head of a case of Cu_u3 copper read from a data
@@ -61,6 +62,15 @@ ensemble = \"msst\"
 [stage.msst]
 axis = \"z\"
 shock_speed = 60" "stage[0]" "ensemble" "msst is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
+expect_error "$case_text
+ensemble = \"nphug\"
+[stage.nphug]
+pressure = 1e5" "stage[0]" "ensemble" "nphug is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
+expect_error "$case_text
+[stage.piston]
+speed = 5" "stage[0]" "piston" "a piston is not supported in a triclinic box"
+expect_error "${case_text/steps = 100/ensemble = \"minimize\"
+relax_box = [\"x\"]}" "stage[0]" "relax_box" "relaxing the box is not supported in a triclinic box"
 # npt with couple = "tri" through the case file (LAMMPS `fix npt temp 300 300 0.1 tri 1000 1000
 # 0.5`, fixtures/lammps_npt_tri, the peer of tests/unit/md_npt/test_npt_tri_lammps.cpp): 400 steps
 # of 256 atoms in a sheared cell follow LAMMPS in T, pe, press, the shear pressures, the edges and
@@ -218,6 +228,19 @@ PY
 stop_then_resume "$WORK/case.toml" "$WORK/resumed" 110
 same_files "$WORK/out" "$WORK/resumed" thermo.csv final.data
 echo "ok: the tilted, deforming run resumed from its checkpoint equals the uninterrupted one"
+
+# Cell flips (fixtures/lammps_triclinic/in.flip; compared with LAMMPS by
+# tests/unit/md_npt/test_cell_flip.cpp): xy at 1/ps from lx/4 passes lx/2 at step 126 and the
+# cell flips (final.data's xy is negative, the run ends normally); with flip = false the run
+# stops there (exit 3) naming the setting.
+flip_case="$(cu_u3_case "$fixture/deform_start.data" 0.002 10)
+[[stage]]
+steps = 130
+deform_tilt_rate = [1.0, 0, 0]"
+run_expecting 0 "$flip_case"
+awk '/xy xz yz$/ { exit ($1 < -7 && $1 > -7.3) ? 0 : 1 }' "$WORK/out/final.data" || fail "the cell did not flip: $(grep 'xy xz yz' "$WORK/out/final.data")"
+run_expecting 3 "$flip_case
+flip = false" "deform_tilt_rate with flip = false (LAMMPS flip no)" "tilt xy"
 
 # Simple shear carried by the tilt (examples/md_triclinic_shear): at gamma = 0.005 the shear stress
 # over gamma is LAMMPS's C44 of Cu_u3 (76.448 GPa, fixtures/lammps_elastic, strain 1e-3) within
