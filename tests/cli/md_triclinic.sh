@@ -5,8 +5,8 @@
 # the three shear pressures to 1e-8 relative (thermo.csv has 10 significant digits: 5e-10, plus the
 # growth of round-off over 100 steps of a hot, chaotic crystal); final.data keeps the tilt and is
 # read by LAMMPS read_data (when lmp is installed) and by shockfield; the dumps carry LAMMPS's
-# triclinic header; msst runs along z, and along x or y, nphug, pistons and relax_box refuse a
-# tilted box by key (exit 2);
+# triclinic header; msst runs along z, and msst along x or y, nphug but along z, pistons and
+# relax_box refuse a tilted box by key (exit 2);
 # profiles along x and y bin the fractional coordinate; npt couple = "tri" follows LAMMPS fix npt
 # tri (also with shear_pressure targets) and resumes bitwise; fix deform tilt rates follow LAMMPS;
 # the cell flips past half an edge (flip = false stops, exit 3); a crystal built into a tilted
@@ -73,7 +73,8 @@ shock_speed = 60" "stage[0].msst.axis" "\"z\" in a triclinic box (tilt 3.615 -3.
 expect_error "$case_text
 ensemble = \"nphug\"
 [stage.nphug]
-pressure = 1e5" "stage[0]" "ensemble" "nphug is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
+style = \"iso\"
+pressure = 1e5" "stage[0].nphug.style" "\"z\" in a triclinic box (tilt 3.615 -3.615 1.8075): nphug compresses a tilted cell along z only"
 expect_error "$case_text
 [stage.piston]
 speed = 5" "stage[0]" "piston" "a piston is not supported in a triclinic box"

@@ -28,14 +28,14 @@ namespace {
 // compress the cell along one and the box relaxation of the minimiser. msst along z does: its
 // remap (z about the centre, x and y kept) is the uniaxial strain diag(1, 1, e), which keeps c's
 // tilts xz and yz, as LAMMPS's fractional remap does; along x or y a tilt would have to follow.
+// nphug with style z likewise (its barostat scales xz and yz with lz, LAMMPS's scalexz/scaleyz).
 void refuse_with_tilt(const StageSpec& s, const Config& stage, const geometry::Box& box) {
   const std::string tilt = fmt::format("a triclinic box (tilt {} {} {})", box.tilt[0], box.tilt[1], box.tilt[2]);
   if (s.ensemble == "msst" && s.msst.axis != 2)
     stage.table("msst").fail("axis", fmt::format("\"z\" in {}: msst compresses a tilted cell along z only", tilt));
-  if (s.ensemble == "nphug")
-    stage.fail("ensemble",
-               fmt::format("{} is not supported in {} yet: use nve, langevin, nvt, npt or minimize",
-                           s.ensemble, tilt));
+  const bool nphug_z = s.nphug.npt.dims == std::array<bool, 3>{false, false, true} && !s.nphug.npt.iso;
+  if (s.ensemble == "nphug" && !nphug_z)
+    stage.table("nphug").fail("style", fmt::format("\"z\" in {}: nphug compresses a tilted cell along z only", tilt));
   if (s.ensemble == "minimize" && s.minimize.relax_box != std::array<bool, 3>{false, false, false})
     stage.fail("relax_box", fmt::format("relaxing the box is not supported in {} yet", tilt));
   if (s.piston) stage.fail("piston", fmt::format("a piston is not supported in {} yet", tilt));
