@@ -17,6 +17,7 @@ import pathlib
 import numpy as np
 
 from .analysis import _require_core
+from .box import Box
 from .case import Case
 
 
@@ -88,9 +89,21 @@ class Simulation:
         dbm ``rho`` (ny, nx), ``velocity`` (ny, nx, 2) (vx, vy) and ``T`` (ny, nx), the moments
         of f in lattice units — the values the run's field frames hold for this step; pd
         ``damage`` (n,), the share of each point's bonds broken, and for models with them
-        ``stress`` (n, 3, 3) and ``plastic`` (n,) (its profiles' columns). Other
+        ``stress`` (n, 3, 3) and ``plastic`` (n,) (its profiles' columns); md the box:
+        ``box_lo``, ``box_hi``, ``box_tilt`` (3,) and ``cell`` (3, 3) (see ``box``). Other
         methods (and decomposed DBM runs) raise ``ValueError``."""
         return self._core.fields()
+
+    @property
+    def box(self):
+        """The md box at this step as a ``shockfield.Box`` (a copy; take it again after a step that
+        moves it): ``lo``, ``hi`` (LAMMPS's boxlo/boxhi), ``tilt`` (xy, xz, yz; zero for an
+        orthogonal box), ``cell`` (3, 3) with the edge vectors a, b, c as rows, ``volume``,
+        ``bounds``. Methods without a box raise ``ValueError``."""
+        fields = self.fields()
+        if "box_lo" not in fields:
+            raise ValueError(f"the {self.method} method has no box")
+        return Box.of(fields["box_lo"], fields["box_hi"], fields["box_tilt"])
 
     def units(self):
         """The unit of each array, by name ("" for indices)."""

@@ -5,6 +5,7 @@ from typing import Union
 
 import numpy as np
 
+from .box import Box
 from .case import Case
 
 class Simulation:
@@ -16,6 +17,7 @@ class Simulation:
     steps_left: int
     finished: bool
     closed: bool
+    box: Box
     def __init__(self, case: Union[Case, str, pathlib.Path], output: Union[str, pathlib.Path], threads: int = 0,
                  overwrite: bool = False, quiet: bool = True, resume: bool = False) -> None: ...
     def step(self, n: int = 1) -> int: ...

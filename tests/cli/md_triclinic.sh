@@ -5,10 +5,12 @@
 # the three shear pressures to 1e-8 relative (thermo.csv has 10 significant digits: 5e-10, plus the
 # growth of round-off over 100 steps of a hot, chaotic crystal); final.data keeps the tilt and is
 # read by LAMMPS read_data (when lmp is installed) and by shockfield; the dumps carry LAMMPS's
-# triclinic header; msst refuses a tilted box by key (exit 2); profiles along x and y bin the
-# fractional coordinate; npt couple =
-# "tri" follows LAMMPS fix npt tri and resumes bitwise; fix deform tilt rates follow LAMMPS; a
-# crystal built into a tilted cell; simple shear gives LAMMPS's C44.
+# triclinic header; msst runs along z, and msst along x or y, nphug but along z, pistons and
+# relax_box refuse a tilted box by key (exit 2);
+# profiles along x and y bin the fractional coordinate; npt couple = "tri" follows LAMMPS fix npt
+# tri (also with shear_pressure targets) and resumes bitwise; fix deform tilt rates follow LAMMPS;
+# the cell flips past half an edge (flip = false stops, exit 3); a crystal built into a tilted
+# cell; simple shear gives LAMMPS's C44.
 source "$(dirname "$0")/lib.bash"
 set -e
 # cu_u3_case DATA_FILE TIMESTEP THERMO_EVERY: the head of a case of Cu_u3 copper read from a data
@@ -56,11 +58,28 @@ fi
 mv "$WORK/out" "$WORK/first"
 run_expecting 0 "${case_text/$ROOT\/tests\/fixtures\/io\/data_triclinic.data/$WORK/first/final.data}"
 # What does not take a tilted box yet stops the case by key.
-expect_error "$case_text
+# msst shocks a tilted cell along z (its remap keeps the tilts, as LAMMPS's; equal to LAMMPS fix
+# msst in tests/unit/md_msst), not along x or y.
+run_expecting 0 "$case_text
 ensemble = \"msst\"
 [stage.msst]
 axis = \"z\"
-shock_speed = 60" "stage[0]" "ensemble" "msst is not supported in a triclinic box (tilt 3.615 -3.615 1.8075) yet"
+shock_speed = 60"
+expect_error "$case_text
+ensemble = \"msst\"
+[stage.msst]
+axis = \"x\"
+shock_speed = 60" "stage[0].msst.axis" "\"z\" in a triclinic box (tilt 3.615 -3.615 1.8075): msst compresses a tilted cell along z only"
+expect_error "$case_text
+ensemble = \"nphug\"
+[stage.nphug]
+style = \"iso\"
+pressure = 1e5" "stage[0].nphug.style" "\"z\" in a triclinic box (tilt 3.615 -3.615 1.8075): nphug compresses a tilted cell along z only"
+expect_error "$case_text
+[stage.piston]
+speed = 5" "stage[0]" "piston" "a piston is not supported in a triclinic box"
+expect_error "${case_text/steps = 100/ensemble = \"minimize\"
+relax_box = [\"x\"]}" "stage[0]" "relax_box" "relaxing the box is not supported in a triclinic box"
 # npt with couple = "tri" through the case file (LAMMPS `fix npt temp 300 300 0.1 tri 1000 1000
 # 0.5`, fixtures/lammps_npt_tri, the peer of tests/unit/md_npt/test_npt_tri_lammps.cpp): 400 steps
 # of 256 atoms in a sheared cell follow LAMMPS in T, pe, press, the shear pressures, the edges and
@@ -102,6 +121,25 @@ PY
 stop_then_resume "$WORK/case.toml" "$WORK/npt_resumed" 170
 same_files "$WORK/out" "$WORK/npt_resumed" thermo.csv final.data
 echo "ok: npt tri resumed from its checkpoint equals the uninterrupted run"
+# Shear-pressure targets through the case file (shear_pressure = LAMMPS `xy 5000 5000 0.5 xz
+# -4000 -4000 0.5`, fixtures/lammps_npt_tri/tri_shear.thermo): the first 100 steps follow LAMMPS
+# in the shear pressures, tilts and econserved (with its strain energy) to 1e-9 as above.
+run_expecting 0 "${npt_tri_case/steps = 400/steps = 100}
+shear_pressure = [5000, -4000, 0]"
+/usr/bin/python3 - "$WORK/out/thermo.csv" "$npt_fixture/tri_shear.thermo" <<'PY'
+import csv, sys
+ours = {int(r["step"]): r for r in csv.DictReader(open(sys.argv[1]))}
+columns = {"pxy_bar": 9, "pxz_bar": 10, "pyz_bar": 11, "xy_A": 15, "xz_A": 16, "econserved_eV": 19}
+worst = 0.0
+for line in open(sys.argv[2]):
+    values = [float(v) for v in line.split()]
+    if int(values[0]) > 100: break
+    for name, c in columns.items():
+        scale = 3e4 if name.startswith("p") else max(abs(values[c]), 1.0)
+        worst = max(worst, abs(float(ours[int(values[0])][name]) - values[c]) / scale)
+print(f"npt tri with shear targets: largest deviation from LAMMPS {worst:.2e}")
+sys.exit(0 if worst < 1e-9 else "FAIL: shear_pressure deviates from LAMMPS fix npt tri xy/xz targets")
+PY
 # Profiles along x and y in the tilted cell bin the fractional coordinate s (slabs parallel to the
 # b-c or a-c face): on the npt run's final.data (thermal positions, tilts 3.59 0.014 0.0046 Å) the
 # step-0 count per 3.7 Å bin equals numpy's binning of s·L (L = lx, ly) and the density
@@ -146,6 +184,11 @@ expect_error "$npt_tri_case
 pressure_dims = [\"x\", \"xy\"]" "stage[0]" "pressure_dims" "couple = \"tri\" barostats x, y, z, xy, xz and yz"
 expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"x\", \"shear\"]}" "stage[0]" "pressure_dims" \
   "expected a list of \"x\", \"y\", \"z\", \"xy\", \"xz\", \"yz\""
+expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"x\", \"xy\"]
+shear_pressure = [5000, -4000, 0]}" "stage[0]" "shear_pressure" \
+  "a target for the xz tilt, which is not barostatted: use couple = \"tri\" or list \"xz\" in pressure_dims"
+expect_error "$npt_tri_case
+shear_pressure = [5000, -4000]" "stage[0]" "shear_pressure"
 expect_error "${npt_tri_case/couple = \"tri\"/pressure_dims = [\"xz\"]
 deform_tilt_rate = [0, 0.01, 0]}" "stage[0]" "deform_tilt_rate" "the xz tilt is barostatted by npt and deformed at once"
 # A tilt whose second dimension is not periodic cannot be barostatted (LAMMPS: "Cannot use fix npt
@@ -194,6 +237,19 @@ PY
 stop_then_resume "$WORK/case.toml" "$WORK/resumed" 110
 same_files "$WORK/out" "$WORK/resumed" thermo.csv final.data
 echo "ok: the tilted, deforming run resumed from its checkpoint equals the uninterrupted one"
+
+# Cell flips (fixtures/lammps_triclinic/in.flip; compared with LAMMPS by
+# tests/unit/md_npt/test_cell_flip.cpp): xy at 1/ps from lx/4 passes lx/2 at step 126 and the
+# cell flips (final.data's xy is negative, the run ends normally); with flip = false the run
+# stops there (exit 3) naming the setting.
+flip_case="$(cu_u3_case "$fixture/deform_start.data" 0.002 10)
+[[stage]]
+steps = 130
+deform_tilt_rate = [1.0, 0, 0]"
+run_expecting 0 "$flip_case"
+awk '/xy xz yz$/ { exit ($1 < -7 && $1 > -7.3) ? 0 : 1 }' "$WORK/out/final.data" || fail "the cell did not flip: $(grep 'xy xz yz' "$WORK/out/final.data")"
+run_expecting 3 "$flip_case
+flip = false" "deform_tilt_rate with flip = false (LAMMPS flip no)" "tilt xy"
 
 # Simple shear carried by the tilt (examples/md_triclinic_shear): at gamma = 0.005 the shear stress
 # over gamma is LAMMPS's C44 of Cu_u3 (76.448 GPa, fixtures/lammps_elastic, strain 1e-3) within

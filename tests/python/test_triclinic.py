@@ -15,8 +15,13 @@
   coordinate (numpy's count per slab parallel to the b-c or a-c face; the Cartesian axis gives
   other counts); a profile along z runs. voids(), the voxel field and domains on the tilted cell
   raise InputError saying they need an orthogonal box.
+- Simulation.box of an in-process md run in a tilted cell (tests/cli/cases/tilted_fcc.toml, tilts
+  2.1 -3.3 1.7 Å) sheared by deform_tilt_rate: the tilt equals thermo.csv's xy_A xz_A yz_A (to
+  its 10 digits) and the final.data header, cell's rows are the edges a = (lx, 0, 0), b = (xy, ly, 0), c = (xz, yz, lz),
+  det(cell) the volume; it moves with the shear (a copy: the next step's box is new).
 """
 
+import csv
 import os
 import pathlib
 import subprocess
@@ -156,6 +161,25 @@ class Triclinic(unittest.TestCase):
         with self.assertRaises(ValueError):
             analysis.structure(x, (box.lo,), coordination=3.0)
 
+
+    def test_simulation_box_gives_the_tilt_and_cell(self):
+        case = pathlib.Path(os.environ["SHOCKFIELD_SOURCE"]) / "tests" / "cli" / "cases" / "tilted_fcc.toml"
+        sheared = shockfield.Case.load(case).set("stage[0].deform_tilt_rate", [0.05, -0.03, 0.02])
+        sim = shockfield.Simulation(sheared, pathlib.Path(self.tmp.name) / "box", threads=1)
+        start = sim.box
+        np.testing.assert_array_equal(start.tilt, [2.1, -3.3, 1.7])
+        sim.step(sim.steps_left)
+        box = sim.box
+        self.assertGreater(box.tilt[0], start.tilt[0])  # sheared at +0.05/ps: a new copy
+        (lx, ly, lz), (xy, xz, yz) = box.lengths, box.tilt
+        np.testing.assert_array_equal(box.cell, [[lx, 0, 0], [xy, ly, 0], [xz, yz, lz]])
+        self.assertAlmostEqual(abs(np.linalg.det(box.cell)), box.volume, delta=1e-9 * box.volume)
+        sim.finish()
+        with open(sim.folder / "thermo.csv") as table:
+            last = list(csv.DictReader(table))[-1]  # the final step's row, 10 significant digits
+        np.testing.assert_allclose(box.tilt, [float(last[k]) for k in ("xy_A", "xz_A", "yz_A")], rtol=1e-9)
+        header = next(line for line in open(sim.folder / "final.data") if line.rstrip().endswith("xy xz yz"))
+        np.testing.assert_allclose([float(w) for w in header.split()[:3]], box.tilt, rtol=1e-15, atol=0)
 
 if __name__ == "__main__":
     unittest.main()

@@ -33,6 +33,12 @@ Vec3 Box::edge(int d) const {
   return {tilt.y(), tilt.z(), l.z()};
 }
 
+Mat3 Box::cell() const {
+  Mat3 h;
+  h << edge(0), edge(1), edge(2);
+  return h;
+}
+
 Vec3 Box::lattice_shift(const std::array<int, 3>& n) const {
   const Vec3 l = length();
   return {n[0] * l.x() + n[1] * tilt.x() + n[2] * tilt.y(), n[1] * l.y() + n[2] * tilt.z(), n[2] * l.z()};
@@ -107,6 +113,33 @@ void Box::check_tilt(const std::string& where) const {
                                    "is not supported: use p or f", where, tilt[0], tilt[1], tilt[2], boundary_codes()));
 }
 
+CellFlip Box::flip_beyond(double fraction) const {
+  CellFlip f;
+  const Vec3 l = length();
+  double xz = tilt.y();
+  if (periodic(1) && std::abs(tilt.z()) > fraction * l.y()) {
+    f.p = tilt.z() > 0 ? -1 : 1;
+    xz += f.p * tilt.x();
+  }
+  if (periodic(0) && std::abs(xz) > fraction * l.x()) f.n = xz > 0 ? -1 : 1;
+  if (periodic(0) && std::abs(tilt.x()) > fraction * l.x()) f.m = tilt.x() > 0 ? -1 : 1;
+  return f;
+}
+
+void Box::apply_flip(const CellFlip& f) {
+  const Vec3 l = length();
+  // LAMMPS's order: yz (moving xz by the old xy), then xz, then xy.
+  tilt.z() += f.p * l.y();
+  tilt.y() += f.p * tilt.x();
+  tilt.y() += f.n * l.x();
+  tilt.x() += f.m * l.x();
+}
+
+std::array<int, 3> flipped_image(const std::array<int, 3>& image, const CellFlip& f) {
+  const int b = image[1] - f.p * image[2];
+  return {image[0] - f.m * b - f.n * image[2], b, image[2]};
+}
+
 void require_orthogonal(const Box& box, const std::string& what) {
   if (box.triclinic())
     throw InputError(fmt::format("{} needs an orthogonal box; this one is triclinic (tilt xy xz yz = {} {} {})", what,
@@ -143,6 +176,11 @@ bool Box::try_wrap_triclinic(Vec3& x, std::array<int, 3>& image) const {
     if (t < 0) y += edge(d), --n[d];
     if (t >= 1) y -= edge(d), ++n[d];
     double u = to_fractional(y)[d];
+    if (u >= 1 && u < 1 + 1e-12) {  // on the hi face by round-off both ways: to the lo face
+      y -= edge(d);
+      ++n[d];
+      u = to_fractional(y)[d];
+    }
     if (u < 0 && u > -1e-12) {
       // Still below the lo face by round-off: a point a few ulps from the face at x = lo + (tilt
       // terms) can have no representable position inside; as LAMMPS's Domain::remap clamps lamda

@@ -16,6 +16,14 @@ namespace shockfield::geometry {
 
 enum class Boundary { periodic, fixed, shrink };
 
+/// A cell flip (LAMMPS `flip yes` of fix deform and fix npt; Domain::image_flip's m, n, p): the
+/// equivalent cell with edges b' = b + m a and c' = c + n a + p b (b the edge before the flip), the
+/// same lattice of periodic images, whose tilts are back within half an edge.
+struct CellFlip {
+  int m = 0, n = 0, p = 0;
+  bool any() const { return m != 0 || n != 0 || p != 0; }
+};
+
 /// Parses "p", "f" or "s"; throws InputError naming `what` otherwise.
 Boundary parse_boundary(const std::string& code, const std::string& what);
 char boundary_code(Boundary b);
@@ -34,6 +42,8 @@ struct Box {
   bool triclinic() const { return tilt.x() != 0 || tilt.y() != 0 || tilt.z() != 0; }
   /// Edge vector d of the cell (a, b or c).
   Vec3 edge(int d) const;
+  /// The cell matrix h = [a b c] (edges as columns; upper triangular).
+  Mat3 cell() const;
   /// n0 a + n1 b + n2 c: the displacement of periodic image n (image counts as in LAMMPS).
   Vec3 lattice_shift(const std::array<int, 3>& n) const;
   /// Fractional coordinates s = h^-1 (x - lo) of a position.
@@ -67,10 +77,21 @@ struct Box {
   /// along, |xy|, |xz| <= lx / 2 and |yz| <= ly / 2; a skewed dimension periodic: xy needs y
   /// periodic, xz and yz need z periodic); throws InputError starting with `where`.
   void check_tilt(const std::string& where) const;
+  /// The flip that brings back each tilt beyond `fraction` of its edge (LAMMPS FixNH::pre_exchange
+  /// with fraction 0.6, FixDeform::end_of_step with 0.5): yz by one ly (which moves xz by the xy
+  /// tilt), then xz and xy by one lx; only along periodic a (xy, xz) and b (yz).
+  CellFlip flip_beyond(double fraction) const;
+  /// Replaces the cell by the flipped one: the tilts change, lo, hi and the lattice do not.
+  void apply_flip(const CellFlip& flip);
 
  private:
   bool try_wrap_triclinic(Vec3& x, std::array<int, 3>& image) const;
 };
+
+/// The image counts of the same unwrapped position in the flipped cell (LAMMPS
+/// Domain::image_flip): with b = b' − m a and c = c' − n a − p b, n_b' = n_b − p n_c and
+/// n_a' = n_a − m n_b' − n n_c.
+std::array<int, 3> flipped_image(const std::array<int, 3>& image, const CellFlip& flip);
 
 /// Throws InputError "<what> needs an orthogonal box; ..." for a triclinic box (the methods that
 /// grid or bin along the axes and have not learnt tilted cells yet).

@@ -109,6 +109,16 @@ StageSpec read_stage(const Config& t, std::size_t index) {
           t.fail("pressure_dims", "expected a list of \"x\", \"y\", \"z\", \"xy\", \"xz\", \"yz\"");
       }
     }
+    if (t.has("shear_pressure")) {  // LAMMPS `xy P P τ xz P P τ yz P P τ`, constant targets
+      const auto p = t.get_doubles("shear_pressure", 3, Range::closed(-1e7, 1e7));
+      for (std::size_t k = 0; k < 3; ++k)
+        if (p[k] != 0 && !s.pressure_tilts[k])
+          t.fail("shear_pressure",
+                 fmt::format("a target for the {} tilt, which is not barostatted: use couple = "
+                             "\"tri\" or list \"{}\" in pressure_dims",
+                             std::array{"xy", "xz", "yz"}[k], std::array{"xy", "xz", "yz"}[k]));
+      s.shear_pressure = Vec3(p[0], p[1], p[2]);
+    }
   }
   if (s.ensemble == "msst") s.msst = read_msst(t, s.steps);
   else if (t.has("msst")) t.fail("msst", "a [stage.msst] table only with ensemble = \"msst\"");
@@ -148,6 +158,7 @@ StageSpec read_stage(const Config& t, std::size_t index) {
     const auto r = t.get_doubles("deform_tilt_rate", 3, Range::closed(-10, 10));
     s.deform_tilt_rate = Vec3(r[0], r[1], r[2]);
   }
+  if (s.ensemble == "npt" || s.deform_rate || s.deform_tilt_rate) s.flip = t.get_bool_or("flip", true);
   if ((s.ensemble == "minimize" || s.ensemble == "msst" || s.ensemble == "nphug") &&
       (s.piston || s.deform_rate || s.deform_tilt_rate))
     t.fail("ensemble", fmt::format("{} stage cannot have a piston, deform_rate or deform_tilt_rate",

@@ -34,9 +34,11 @@ struct StageSpec {
   std::optional<std::array<bool, 3>> pressure_dims;  ///< npt barostatted dimensions; default: the periodic ones
   std::array<bool, 3> pressure_tilts{false, false,
                                      false};  ///< npt barostatted tilt factors xy, xz, yz
+  Vec3 shear_pressure = Vec3::Zero();  ///< npt target P_xy, P_xz, P_yz, bar (LAMMPS xy Pstart ...)
   std::optional<PistonSpec> piston;
   std::optional<Vec3> deform_rate; ///< 1/ps per dimension
   std::optional<Vec3> deform_tilt_rate;  ///< 1/ps per tilt factor xy, xz, yz (LAMMPS fix deform xy erate ...)
+  bool flip = true;                ///< npt, deform: flip a cell whose tilt passes its limit (LAMMPS flip yes)
   MinimizeSettings minimize;
   MsstSettings msst;               ///< ensemble = "msst": the [stage.msst] table
   NphugSettings nphug;             ///< ensemble = "nphug": the [stage.nphug] table

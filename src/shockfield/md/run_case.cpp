@@ -73,7 +73,7 @@ std::optional<HugoniotState> report_hugoniot(const Simulation& sim, const RunOut
 // the atoms of its piece and steps them; rank 0 runs the driver and announces each collective
 // call to the other ranks, which serve() by making the same call (parallel/method_mirror.hpp).
 // The outputs are the serial ones, written by rank 0 from the gathered atoms.
-class MdMethod final : public Method {
+class MdMethod final : public Method, public DerivedArrays {
  public:
   MdMethod(const Config& root, const RunOptions& options)
       : p_(prepare(root, options)), atoms_(p_.system.atom_count()),
@@ -212,6 +212,7 @@ class MdMethod final : public Method {
   }
 
   std::vector<StateArray> state_arrays() override { return atom_state_arrays(*sim_, {"Å", "Å/ps", "eV/Å", "eV"}); }
+  std::vector<DerivedArray> derived_arrays() const override { return box_arrays(sim_->box, "Å"); }
   double time() const override { return sim_->time; }
   std::string time_unit() const override { return "ps"; }
   // The Hugoniot state of every piston stage ended in this session and the final energies.

@@ -25,14 +25,17 @@ namespace fs = std::filesystem;
 namespace {
 
 // What does not handle a tilted cell yet: the shock methods that move a face along an axis or
-// compress the cell along one (LAMMPS refuses fix msst in a triclinic box too) and the box
-// relaxation of the minimiser.
+// compress the cell along one and the box relaxation of the minimiser. msst along z does: its
+// remap (z about the centre, x and y kept) is the uniaxial strain diag(1, 1, e), which keeps c's
+// tilts xz and yz, as LAMMPS's fractional remap does; along x or y a tilt would have to follow.
+// nphug with style z likewise (its barostat scales xz and yz with lz, LAMMPS's scalexz/scaleyz).
 void refuse_with_tilt(const StageSpec& s, const Config& stage, const geometry::Box& box) {
   const std::string tilt = fmt::format("a triclinic box (tilt {} {} {})", box.tilt[0], box.tilt[1], box.tilt[2]);
-  if (s.ensemble == "msst" || s.ensemble == "nphug")
-    stage.fail("ensemble",
-               fmt::format("{} is not supported in {} yet: use nve, langevin, nvt, npt or minimize",
-                           s.ensemble, tilt));
+  if (s.ensemble == "msst" && s.msst.axis != 2)
+    stage.table("msst").fail("axis", fmt::format("\"z\" in {}: msst compresses a tilted cell along z only", tilt));
+  const bool nphug_z = s.nphug.npt.dims == std::array<bool, 3>{false, false, true} && !s.nphug.npt.iso;
+  if (s.ensemble == "nphug" && !nphug_z)
+    stage.table("nphug").fail("style", fmt::format("\"z\" in {}: nphug compresses a tilted cell along z only", tilt));
   if (s.ensemble == "minimize" && s.minimize.relax_box != std::array<bool, 3>{false, false, false})
     stage.fail("relax_box", fmt::format("relaxing the box is not supported in {} yet", tilt));
   if (s.piston) stage.fail("piston", fmt::format("a piston is not supported in {} yet", tilt));
@@ -177,7 +180,8 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   else if (s.ensemble == "npt")
     sim.fixes.push_back(std::make_unique<FixNoseHooverNpt>(
         NptSettings{s.temperature, s.damping, s.pressure, s.pressure_damping, *s.pressure_dims,
-                    s.couple_iso, s.chain, std::nullopt, false, s.pressure_tilts},
+                    s.couple_iso, s.chain, std::nullopt, false, s.pressure_tilts,
+                    s.shear_pressure, s.flip},
         group));
   else if (s.ensemble == "msst") sim.fixes.push_back(std::make_unique<FixMsst>(s.msst, group));
   else if (s.ensemble == "nphug") sim.fixes.push_back(std::make_unique<FixNphug>(s.nphug, group));
@@ -189,7 +193,8 @@ void add_stage_fixes(Simulation& sim, const StageSpec& s, std::uint32_t group, s
   }
   if (s.deform_rate || s.deform_tilt_rate)
     sim.fixes.push_back(std::make_unique<FixDeform>(s.deform_rate.value_or(Vec3::Zero()),
-                                                    s.deform_tilt_rate.value_or(Vec3::Zero()), sim.box, sim.time));
+                                                    s.deform_tilt_rate.value_or(Vec3::Zero()), sim.box, sim.time,
+                                                    s.flip));
 }
 
 }  // namespace shockfield::md

@@ -42,6 +42,12 @@ void Simulation::rebuild() {
   steps_since_rebuild = 0;
 }
 
+void Simulation::flip_cell(const geometry::CellFlip& flip) {
+  box.apply_flip(flip);
+  for (std::size_t i = 0; i < atoms.nlocal; ++i) atoms.image[i] = geometry::flipped_image(atoms.image[i], flip);
+  x_rebuild_.clear();  // needs_rebuild_here(): a list of another cell
+}
+
 void Simulation::restore_rebuild_state(const std::vector<Vec3>& x_rebuild, const geometry::Box& box_rebuild) {
   const std::vector<Vec3> x_now(atoms.x.begin(), atoms.x.begin() + static_cast<std::ptrdiff_t>(atoms.nlocal));
   const geometry::Box box_now = box;

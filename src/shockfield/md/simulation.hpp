@@ -70,6 +70,10 @@ class Simulation {
   void compute_forces(bool per_atom);
   /// Rebuild ghosts and neighbour list now (after changing positions or the box by hand).
   void rebuild();
+  /// Replaces the cell by the flipped, equivalent one (geometry::CellFlip; LAMMPS's pre_exchange
+  /// flip): image counts follow, and the next force evaluation wraps the atoms into the new cell
+  /// and rebuilds ghosts and the neighbour list. Between initial_integrate and the forces only.
+  void flip_cell(const geometry::CellFlip& flip);
 
   double kinetic_energy() const;
   ThermoState thermo() const;

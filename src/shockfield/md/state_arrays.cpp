@@ -27,4 +27,14 @@ std::vector<StateArray> atom_state_arrays(Simulation& sim, const AtomUnits& unit
   return arrays;
 }
 
+std::vector<DerivedArray> box_arrays(const geometry::Box& box, const std::string& length_unit) {
+  auto three = [&length_unit](const char* name, const Vec3& v) {
+    return DerivedArray{name, {v.x(), v.y(), v.z()}, {3}, length_unit};
+  };
+  DerivedArray cell{"cell", {}, {3, 3}, length_unit};
+  for (int d = 0; d < 3; ++d)
+    for (int k = 0; k < 3; ++k) cell.values.push_back(box.edge(d)[k]);
+  return {three("box_lo", box.lo), three("box_hi", box.hi), three("box_tilt", box.tilt), std::move(cell)};
+}
+
 }  // namespace shockfield::md

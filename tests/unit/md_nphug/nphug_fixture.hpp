@@ -53,9 +53,10 @@ inline Row thermo_row(const Simulation& sim, const FixNphug& fix) {
           etotal - fix.energy_added(), -fix.energy_added(), q.dhugoniot, q.us, q.up};
 }
 
-/// Runs the Hugoniostat from cu_512.data; our rows every `every` steps (and step 0).
-inline std::vector<Row> run_nphug(const NphugSettings& s, int every, Simulation* out = nullptr) {
-  Simulation sim = msst_test::from_data("cu_512");
+/// Runs the Hugoniostat from lammps_msst/<data>.data; our rows every `every` steps (and step 0).
+inline std::vector<Row> run_nphug(const NphugSettings& s, int every, Simulation* out = nullptr,
+                                  const std::string& data = "cu_512") {
+  Simulation sim = msst_test::from_data(data);
   sim.fixes.push_back(std::make_unique<FixNphug>(s));
   sim.setup(false);
   sim.fixes[0]->setup(sim);

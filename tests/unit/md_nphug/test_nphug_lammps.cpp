@@ -35,3 +35,20 @@ TEST(NphugLammps, UniaxialZFollowsLammpsFixNphugOver2000Steps) { check_case("z",
 TEST(NphugLammps, IsoFollowsLammpsFixNphugOver2000Steps) { check_case("iso", "iso_20GPa"); }
 
 TEST(NphugLammps, DefaultChainsFollowLammpsFixNphugOver2000Steps) { check_case("z", "z_20GPa_chains", 3, 3); }
+
+// z in a tilted cell: the sheared, tilted 256-atom Cu start of lammps_npt_tri (tilts 4.215, -0.5,
+// 0.4 Å; lammps_msst/tri_256.data), 1000 steps (fixture z_20GPa_tri). The barostat scales xz and yz
+// with lz (LAMMPS's scalexz/scaleyz yes for a nonzero tilt: the uniaxial strain diag(1, 1, e)).
+// Tolerance as above.
+TEST(NphugLammps, UniaxialZFollowsLammpsFixNphugInATiltedCell) {
+  Simulation sim = msst_test::from_data("tri_256");
+  const std::vector<Row> ours = run_nphug(settings("z", 1000), 10, &sim, "tri_256");
+  expect_follows_lammps(ours, "z_20GPa_tri", 10.0, 1e-12);
+  const auto ref = read_thermo("z_20GPa_tri.thermo");
+  EXPECT_LT(ref.back()[kVol] / ref.front()[kVol], 0.93);  // compressed
+  // xz and yz followed lz (x and y kept): tilt / lz as at the start, -0.5 / 14.46 and 0.4 / 14.46.
+  const double lz = sim.box.length().z();
+  EXPECT_NEAR(sim.box.tilt.y() / lz, -0.5 / 14.46, 1e-12);
+  EXPECT_NEAR(sim.box.tilt.z() / lz, 0.4 / 14.46, 1e-12);
+  EXPECT_NEAR(sim.box.tilt.x(), 4.215, 1e-12);
+}

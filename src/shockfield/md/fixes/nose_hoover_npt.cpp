@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <Eigen/LU>
 
 #include "shockfield/core/error.hpp"
 #include "shockfield/core/units.hpp"
@@ -30,6 +31,27 @@ void FixNoseHooverNpt::set_reference_temperature(double temperature) {
 
 void FixNoseHooverNpt::setup(Simulation& sim) {
   volume0_ = volume_ = sim.box.volume();
+  deviatoric_ = settings_.tilt_pressure != Vec3::Zero();
+  if (!deviatoric_) return;
+  // Σ of eq. (7): the target minus its hydrostatic part P I has only the shear targets.
+  const Vec3& t = settings_.tilt_pressure;  // xy, xz, yz
+  Mat3 deviator;
+  deviator << 0, t[0], t[1], t[0], 0, t[2], t[1], t[2], 0;
+  const Mat3 h0_inverse = sim.box.cell().inverse();
+  sigma_ = volume0_ * h0_inverse * deviator * h0_inverse.transpose();
+  update_strain_energy(sim.box);
+}
+
+void FixNoseHooverNpt::update_strain_energy(const geometry::Box& box) {
+  if (!deviatoric_) return;
+  // ½ Tr(Σ h hᵀ) of eq. (7) (LAMMPS FixNH::compute_strain_energy), eV.
+  const Mat3 h = box.cell();
+  strain_energy_ = 0.5 * (sigma_ * h * h.transpose()).trace() / nktv2p;
+}
+
+Mat3 FixNoseHooverNpt::deviatoric_force(const geometry::Box& box) const {
+  const Mat3 h = box.cell();
+  return h * sigma_ * h.transpose();
 }
 
 void FixNoseHooverNpt::retarget(double temperature) {
@@ -52,6 +74,12 @@ void FixNoseHooverNpt::initial_integrate(Simulation& sim) {
   for (std::size_t i = 0; i < a.nlocal; ++i)
     if (a.mask[i] & group_bit_) a.x[i] += sim.dt * a.v[i];
   dilate(sim);
+}
+
+void FixNoseHooverNpt::post_integrate(Simulation& sim) {
+  if (!settings_.flip || !sim.box.triclinic()) return;
+  const geometry::CellFlip flip = sim.box.flip_beyond(0.6);  // LAMMPS: 0.5 + DELTAFLIP
+  if (flip.any()) sim.flip_cell(flip);
 }
 
 void FixNoseHooverNpt::final_integrate(Simulation& sim) {
@@ -115,6 +143,7 @@ void FixNoseHooverNpt::barostat_kick(Simulation& sim) {
   const double mtk = twice_ke / divisor;
   // iso: the scalar pressure, or for two coupled dimensions the mean of their components
   // (LAMMPS FixNH::couple).
+  const Mat3 fdev = deviatoric_ ? deviatoric_force(sim.box) : Mat3::Zero();  // eq. (7)
   double coupled = 0;
   for (int d = 0; d < 3; ++d)
     if (settings_.dims[d]) coupled += thermo.pressure_tensor[d];
@@ -123,16 +152,20 @@ void FixNoseHooverNpt::barostat_kick(Simulation& sim) {
   for (int d = 0; d < 3; ++d) {
     if (!settings_.dims[d]) continue;
     const double p = settings_.iso ? coupled : thermo.pressure_tensor[d];
-    const double force = (p - settings_.pressure) * thermo.volume / nktv2p + mtk;  // eV
+    double force = (p - settings_.pressure) * thermo.volume / nktv2p + mtk;  // eV
+    if (deviatoric_) force -= fdev(d, d) / nktv2p;
     omega_dot_[d] += 0.5 * sim.dt * force / mass_;
     trace += omega_dot_[d];
   }
   mu_ = trace / divisor;
-  // Eq. (5): the shear pressures P_xy, P_xz, P_yz (Voigt 3, 4, 5) against a zero target.
-  for (int t = 0; t < 3; ++t)
-    if (settings_.tilt_dims[t])
-      tilt_omega_dot_[t] +=
-          0.5 * sim.dt * thermo.pressure_tensor[3 + t] * thermo.volume / nktv2p / mass_;
+  // Eq. (5): the shear pressures P_xy, P_xz, P_yz (Voigt 3, 4, 5), less F_t of eq. (7).
+  static constexpr std::array<std::array<int, 2>, 3> tilt_entry{{{0, 1}, {0, 2}, {1, 2}}};
+  for (int t = 0; t < 3; ++t) {
+    if (!settings_.tilt_dims[t]) continue;
+    double force = thermo.pressure_tensor[3 + t] * thermo.volume / nktv2p;  // eV
+    if (deviatoric_) force -= fdev(tilt_entry[t][0], tilt_entry[t][1]) / nktv2p;
+    tilt_omega_dot_[t] += 0.5 * sim.dt * force / mass_;
+  }
 }
 
 void FixNoseHooverNpt::barostat_velocity_scaling(Simulation& sim) const {
@@ -186,6 +219,7 @@ void FixNoseHooverNpt::dilate(Simulation& sim) {
     for (std::size_t i = 0; i < a.nlocal; ++i) a.x[i][d] = c + (a.x[i][d] - c) * e;
   }
   volume_ = box.volume();
+  update_strain_energy(box);
 }
 
 // ḣ = ω̇ h over ½Δt with ω̇ and h upper triangular, in LAMMPS FixNH::remap's time-symmetric order:
@@ -218,17 +252,19 @@ void FixNoseHooverNpt::dilate_triclinic(Simulation& sim) {
     if (d == 2 && !tilt_on[2]) yz *= e;
   }
   tilt_half();
-  try {
-    box.check_tilt(fmt::format(
-        "step {}: npt (LAMMPS would flip the cell here; shockfield does not)", sim.step));
-  } catch (const InputError& e) {
-    throw RunError(e.what());
+  if (!settings_.flip) {
+    try {
+      box.check_tilt(fmt::format("step {}: npt with flip = false (LAMMPS flip no)", sim.step));
+    } catch (const InputError& e) {
+      throw RunError(e.what());
+    }
   }
   Atoms& a = sim.atoms;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < a.nlocal; ++i)
     a.x[i] = box.from_fractional(old.to_fractional(a.x[i]));
   volume_ = box.volume();
+  update_strain_energy(box);
 }
 
 double FixNoseHooverNpt::energy_added() const {
@@ -238,6 +274,7 @@ double FixNoseHooverNpt::energy_added() const {
     if (settings_.dims[d]) e += 0.5 * mass_ * omega_dot_[d] * omega_dot_[d];
   for (int t = 0; t < 3; ++t)
     if (settings_.tilt_dims[t]) e += 0.5 * mass_ * tilt_omega_dot_[t] * tilt_omega_dot_[t];
+  e += strain_energy_;
   return -e;  // eq. (3): the extended variables hold this energy
 }
 
@@ -251,6 +288,12 @@ FixState FixNoseHooverNpt::state() const {
     s.push_back({"omega_dot_tilt",
                  "1/ps",
                  {tilt_omega_dot_.x(), tilt_omega_dot_.y(), tilt_omega_dot_.z()}});
+  if (deviatoric_) {
+    s.push_back({"strain_reference",
+                 "bar Angstrom",
+                 {sigma_(0, 0), sigma_(1, 1), sigma_(2, 2), sigma_(0, 1), sigma_(0, 2), sigma_(1, 2)}});
+    s.push_back({"strain_energy", "eV", {strain_energy_}});
+  }
   atom_chain_.save(s, "thermostat");
   barostat_chain_.save(s, "barostat_chain");
   return s;
@@ -264,6 +307,12 @@ void FixNoseHooverNpt::restore(const FixState& s) {
     tilt_omega_dot_ = Vec3(fix_state_values(s, name(), "omega_dot_tilt", 3).data());
   volume0_ = fix_state_value(s, name(), "volume0");
   volume_ = fix_state_value(s, name(), "volume");
+  deviatoric_ = settings_.tilt_pressure != Vec3::Zero();
+  if (deviatoric_) {
+    const auto v = fix_state_values(s, name(), "strain_reference", 6);
+    sigma_ << v[0], v[3], v[4], v[3], v[1], v[5], v[4], v[5], v[2];
+    strain_energy_ = fix_state_value(s, name(), "strain_energy");
+  }
   atom_chain_.restore(s, name(), "thermostat");
   barostat_chain_.restore(s, name(), "barostat_chain");
 }

@@ -27,9 +27,15 @@
 // (identical to (1–2) when all three dimensions are barostatted); fix nphug uses them.
 // Tilt factors (LAMMPS fix nh `tri`, `xy`, `xz`, `yz`; Shinoda et al. 2004 eq. 1 with the cell
 // matrix h upper triangular, h = [a b c] of geometry::Box): a barostatted tilt t ∈ {xy, xz, yz} is
-// one more strain rate ω̇_t of mass W, kicked by its shear pressure at zero target (LAMMPS's
-// shear targets; the deviatoric term of nonzero ones is not implemented),
-//   W dω̇_t/dt = V P_t                                                    (5)
+// one more strain rate ω̇_t of mass W, kicked by its shear pressure,
+//   W dω̇_t/dt = V P_t − F_t                                              (5)
+// A nonzero target P*_t of a shear pressure (LAMMPS `xy Pstart Pstop Pdamp`, Pstart = Pstop)
+// enters as LAMMPS's deviatoric term (FixNH::compute_sigma, compute_deviatoric; Shinoda et al.
+// 2004 eq. 1): with the reference cell h₀ and volume V₀ of the stage start,
+//   Σ = V₀ h₀⁻¹ (P* − P I) h₀⁻ᵀ,   F = h Σ hᵀ                           (7)
+// (P*: the target tensor, P on its diagonal and the shear targets off it), F_t the component of
+// F at tilt t, F_d its diagonal component subtracted from the force of (1) too, and the strain
+// energy ½ Tr(Σ h hᵀ) joins (3). With zero shear targets F = 0 and (5) is V P_t.
 // it couples to the velocities through the upper-triangular ω̇ (LAMMPS nh_v_press; applied with
 // the diagonal factors split in two quarter steps around it, as LAMMPS does)
 //   v_x ← v_x − ½Δt (ω̇_xy v_y + ω̇_xz v_z),  v_y ← v_y − ½Δt ω̇_yz v_z      (6)
@@ -38,8 +44,11 @@
 // (3) and the barostat chain (which then targets the number of all barostatted components, also
 // for iso: LAMMPS's pstyle TRICLINIC). A tilted box under a barostat that leaves a tilt alone
 // scales that tilt with its second edge (xy with ly, xz and yz with lz: LAMMPS's default
-// scalexy/scalexz/scaleyz yes). A tilt that passes half an edge stops the run (LAMMPS flips the
-// cell; shockfield does not).
+// scalexy/scalexz/scaleyz yes). A tilt that passes 0.6 of its edge (LAMMPS's 0.5 + DELTAFLIP, so
+// that a tilt oscillating about one half does not flip back and forth) flips the cell in
+// post_integrate (Box::flip_beyond, Simulation::flip_cell; LAMMPS FixNH::pre_exchange, which runs
+// at the next neighbour-list rebuild instead, a step or a few later); with `flip` off a tilt past
+// half an edge stops the run (LAMMPS `flip no` lets it grow).
 // A derived fix may move the thermostat target every step (target_temperature(), called after the
 // barostat chain's first half step, as LAMMPS FixNH::compute_temp_target), with the masses kept
 // at the temperature the fix was built with or reset by set_reference_temperature().
@@ -47,6 +56,7 @@
 #include <optional>
 
 #include "shockfield/core/types.hpp"
+#include "shockfield/geometry/box.hpp"
 #include "shockfield/md/fixes/nose_hoover.hpp"
 
 namespace shockfield::md {
@@ -63,6 +73,8 @@ struct NptSettings {
   bool lammps_mtk = false;        ///< eq. (4) instead of (1–2) for a subset of dimensions
   std::array<bool, 3> tilt_dims{false, false,
                                 false};  ///< barostatted tilt factors xy, xz, yz, eq. (5)
+  Vec3 tilt_pressure = Vec3::Zero();  ///< target shear pressures P*_xy, P*_xz, P*_yz, bar, eq. (7)
+  bool flip = true;               ///< flip a cell whose tilt passes 0.6 of its edge (LAMMPS flip yes)
 };
 
 class FixNoseHooverNpt : public Fix {
@@ -72,6 +84,8 @@ class FixNoseHooverNpt : public Fix {
   /// Records V₀ for the P(V − V₀) term of the conserved quantity.
   void setup(Simulation& sim) override;
   void initial_integrate(Simulation& sim) override;
+  /// The cell flip, when a tilt passed 0.6 of its edge.
+  void post_integrate(Simulation& sim) override;
   void final_integrate(Simulation& sim) override;
   double energy_added() const override;
   FixState state() const override;
@@ -105,6 +119,10 @@ class FixNoseHooverNpt : public Fix {
   /// fractional coordinates.
   void dilate_triclinic(Simulation& sim);
   bool tilts_barostatted() const;
+  /// F = h Σ hᵀ of eq. (7) in the current cell (bar Å³); zero without shear targets.
+  Mat3 deviatoric_force(const geometry::Box& box) const;
+  /// The strain energy of eq. (7) in `box`.
+  void update_strain_energy(const geometry::Box& box);
 
   NptSettings settings_;
   std::uint32_t group_bit_;
@@ -114,6 +132,9 @@ class FixNoseHooverNpt : public Fix {
   double mass_ = 0;                ///< W, eV ps²
   double mu_ = 0;                  ///< eq. (2), 1/ps
   double volume0_ = 0, volume_ = 0;
+  bool deviatoric_ = false;        ///< a nonzero shear target, eq. (7)
+  Mat3 sigma_ = Mat3::Zero();      ///< Σ of eq. (7), bar Å³ / Å² = bar Å
+  double strain_energy_ = 0;       ///< ½ Tr(Σ h hᵀ) of eq. (7) in the current cell, eV
 };
 
 }  // namespace shockfield::md
