@@ -120,6 +120,9 @@ class DbmMethod final : public Method, public DerivedArrays {
     counters_ = read_checkpoint(run.checkpoint, sim_, reactant());
     if (decomposition_) decomposition_->scatter(sim_);
     open(run, true);
+    // A finished GLS run resumed has nothing to step: its summary.csv is written again from series.csv,
+    // so a run folder of an older build gains the summary columns added since (u_DG).
+    if (gls_ && finished()) write_phase_summary(run.folder, *c_.gls, run.log);
   }
   bool finished() const override { return sim_.steps() >= c_.steps; }
   void advance() override {
@@ -147,7 +150,7 @@ class DbmMethod final : public Method, public DerivedArrays {
     output_->write_profile(current(), counters_.profiles);
     if (gls_) {
       run_->log.info("{}", GlsRunPart::blow_up_hint());
-      gls_->write_summary(run_->folder, run_->log);
+      write_phase_summary(run_->folder, *c_.gls, run_->log);
     }
     return fmt::format("the state at the failure: profiles/profile_{}.csv", counters_.profiles);
   }
@@ -155,7 +158,7 @@ class DbmMethod final : public Method, public DerivedArrays {
     if (c_.output.profile_interval == 0.0) output_->write_profile(current(), counters_.profiles++);
   }
   void log_results(double steps_per_second) override {
-    if (gls_) gls_->write_summary(run_->folder, run_->log);
+    if (gls_) write_phase_summary(run_->folder, *c_.gls, run_->log);
     const auto total = current().totals();
     const char* per = units::model::per_missing_dimensions_text(Lattice::dim);
     run_->log.info("finished: t = {} after {} steps ({:.3g} cell-steps/s); mass {}, momentum ({}, {}), energy {} "
@@ -233,7 +236,7 @@ class DbmMethod final : public Method, public DerivedArrays {
   }
   // end_time is not safe: dt is set so that a whole number of steps lands on it.
   std::vector<std::string> resume_safe_keys() const override {
-    return {"output.*_interval", "output.thermo_every", "output.checkpoint_every"};
+    return {"output.*_interval", "output.thermo_every", "output.checkpoint_every", "output.growth_window"};
   }
 
  private:
