@@ -44,6 +44,7 @@ head -1 "$WORK/gls/summary.csv" | grep -q "t_SD,D_max" || fail "summary columns"
 grep -q 'Name="D_force"' "$WORK/gls/fields/grid_000000010.vti" || fail "field frame lacks D_force"
 grep -q "gls_time_step_limited_by = 'collision'" "$WORK/gls/config.resolved.toml" || fail "derived time-step limit missing"
 grep -q "phase separation: t_SD" "$WORK/gls/log.txt" || fail "log lacks the t_SD line"
+grep -q "\"u_DG\"" "$WORK/gls/summary.json" || fail "summary.json results lack phase_separation.u_DG"
 stop_then_resume "$WORK/gls.toml" "$WORK/split" 7
 same_files "$WORK/gls" "$WORK/split" series.csv summary.csv fields/grid_000000020.vti
 # A finished run resumed steps nothing and writes summary.csv again from series.csv (u_DG with its window).

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "shockfield/core/json.hpp"
 #include "shockfield/core/logger.hpp"
 #include "shockfield/dbm/case_file.hpp"
 #include "shockfield/dbm/gls.hpp"
@@ -35,9 +36,18 @@ class GlsRunPart {
   GlsCaseSpec spec_;
 };
 
-/// summary.csv of a GLS run folder from its series.csv (Xu et al. 2015, §4.3): t_SD and D_max (peak of
-/// D), the peak of D^F (t_SD_force, D_force_max) and of L (t_L_max, L_max), and u_DG, the slope of R(t)
-/// over [t_DG_begin, t_DG_end] = [t_SD, t_SD + spec.growth_window] (domain_growth); the values are also logged.
-void write_phase_summary(const std::filesystem::path& folder, const GlsCaseSpec& spec, Logger& log);
+/// The phase-separation measures of a run's series (Xu et al. 2015, §4.3).
+struct PhaseSummary {
+  SpinodalEnd net, force;  // peaks of D (t_SD, D_max, R_SD) and of L; peak of D^F
+  DomainGrowth growth;     // u_DG over [t_SD, t_SD + growth_window]
+};
+
+/// summary.csv of a GLS run folder from its series.csv: t_SD, R_SD and D_max (peak of D), the peak of
+/// D^F (t_SD_force, D_force_max) and of L (t_L_max, L_max), and u_DG, the slope of R(t) over
+/// [t_DG_begin, t_DG_end] = [t_SD, t_SD + spec.growth_window] (domain_growth); the values are also logged.
+PhaseSummary write_phase_summary(const std::filesystem::path& folder, const GlsCaseSpec& spec, Logger& log);
+
+/// The summary as summary.json's results "phase_separation" (so a sweep's CSV has a column of each).
+Json phase_summary_json(const PhaseSummary& s);
 
 }  // namespace shockfield::dbm

@@ -98,7 +98,7 @@ PhaseSample sample_phase_separation(const Simulation& simulation, GlsForce& forc
 SpinodalEnd spinodal_end(const std::vector<PhaseSample>& samples) {
   SpinodalEnd e;
   for (const PhaseSample& s : samples) {
-    if (s.D > e.D_max) e.D_max = s.D, e.t_sd = s.t;
+    if (s.D > e.D_max) e.D_max = s.D, e.t_sd = s.t, e.R_sd = s.domain_size;
     if (s.boundary_length > e.L_max) e.L_max = s.boundary_length, e.t_L_max = s.t;
   }
   return e;

@@ -68,7 +68,7 @@ PhaseSample sample_phase_separation(const Simulation& simulation, GlsForce& forc
                                     double threshold);
 
 struct SpinodalEnd {
-  double t_sd = 0, D_max = 0;
+  double t_sd = 0, D_max = 0, R_sd = 0;  // R_SD = R(t_SD)
   double t_L_max = 0, L_max = 0;  // peak of the boundary length (coincides with t_SD, Xu et al. (2015) §4.3)
 };
 /// Peaks of D(t) and L(t) over the samples (first maximum on ties).

@@ -74,7 +74,7 @@ TEST(DbmDomainGrowth, SummaryColumnIsTheWindowsSlope) {
     std::ifstream in(folder / "summary.csv");
     std::string header, row;
     std::getline(in, header), std::getline(in, row);
-    EXPECT_EQ(header, "t_SD,D_max,t_SD_force,D_force_max,t_L_max,L_max,u_DG,t_DG_begin,t_DG_end");
+    EXPECT_EQ(header, "t_SD,D_max,R_SD,t_SD_force,D_force_max,t_L_max,L_max,u_DG,t_DG_begin,t_DG_end");
     std::vector<double> values;
     for (std::size_t at = 0, next; at <= row.size(); at = next + 1) {
       next = std::min(row.find(',', at), row.size());
@@ -83,13 +83,14 @@ TEST(DbmDomainGrowth, SummaryColumnIsTheWindowsSlope) {
     return values;
   };
   const std::vector<double> early = summary_row(kWindow);
-  ASSERT_EQ(early.size(), 9u);
+  ASSERT_EQ(early.size(), 10u);
   EXPECT_NEAR(early[0], kTsd, 1e-9);                        // t_SD, the peak of D
-  EXPECT_NEAR(early[6], kSpeed, 1e-8);                      // u_DG (10 written digits)
-  EXPECT_NEAR(early[7], kTsd, 1e-9);                        // the window written beside it
-  EXPECT_NEAR(early[8], kTsd + kWindow, 1e-9);
+  EXPECT_NEAR(early[2], 0.1, 1e-9);                         // R_SD = R(t_SD)
+  EXPECT_NEAR(early[7], kSpeed, 1e-8);                      // u_DG (10 written digits)
+  EXPECT_NEAR(early[8], kTsd, 1e-9);                        // the window written beside it
+  EXPECT_NEAR(early[9], kTsd + kWindow, 1e-9);
   const std::vector<double> late = summary_row(2.0);        // the column follows growth_window
-  EXPECT_NEAR(late[6], domain_growth(run, kTsd, 2.0).speed, 1e-8);
-  EXPECT_LT(late[6], 0.8 * kSpeed);
+  EXPECT_NEAR(late[7], domain_growth(run, kTsd, 2.0).speed, 1e-8);
+  EXPECT_LT(late[7], 0.8 * kSpeed);
   std::filesystem::remove_all(folder);
 }

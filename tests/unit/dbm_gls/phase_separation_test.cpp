@@ -139,11 +139,13 @@ TEST(DbmPhaseSeparation, SpinodalEndIsThePeakOfD) {
     s.t = 0.1 * i;
     s.D = std::exp(-std::pow(s.t - 1.2, 2));
     s.boundary_length = 5 - std::abs(s.t - 1.1);
+    s.domain_size = 0.1 + s.t;
     samples.push_back(s);
   }
   const SpinodalEnd e = spinodal_end(samples);
   EXPECT_NEAR(e.t_sd, 1.2, 1e-12);
   EXPECT_NEAR(e.D_max, 1.0, 1e-12);
+  EXPECT_NEAR(e.R_sd, 1.3, 1e-12);
   EXPECT_NEAR(e.t_L_max, 1.1, 1e-12);
   EXPECT_NEAR(e.L_max, 5.0, 1e-12);
 }
