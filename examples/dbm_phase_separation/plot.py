@@ -8,12 +8,14 @@ RUNS holds the sweep folders of run.sh (each with sweep.csv and one run folder p
   conv<n>/      the convergence runs on n² (optional)
   <other>/      sensitivity sweeps (noise amplitude, quench, noise wavelength; optional)
 Writes table.md (per K: t_SD, R_SD, D_max, u_DG, the peaks of L(t) and D^F(t); the fits of eqs. 34,
-36, 37 beside the paper's; the convergence and sensitivity tables), fig63.png, fig64.png.
+36, 37 beside the paper's; the convergence, window and sensitivity tables), fig63.png, fig64.png.
 
 Definitions (README): t_SD = time of the peak of D(t) (eq. 35 of Δ*); R_SD = R(t_SD) with R = 2π/k₁
-(first moment of the structure factor); D_max = D(t_SD); u_DG = dR/dt in the domain-growth stage,
-the least-squares slope of R(t) over [t_SD, t_end] (the paper: "the slope of the R(t) curve presents
-a phase separation speed u_DG for the domain growth stage").
+(first moment of the structure factor); D_max = D(t_SD); u_DG = dR/dt in the early domain-growth
+stage, the least-squares slope of R(t) over [t_SD, t_SD + 0.5] (the paper: "the slope of the R(t)
+curve presents a phase separation speed u_DG for the domain growth stage"). u_DG and its window are
+the run's own (summary.csv, written by shockfield: [output] growth_window); the other windows of the
+window table are recomputed here with the same least squares, checked against the run's at 0.5.
 """
 import re
 import sys
@@ -30,6 +32,7 @@ from shockfield.run import Run, read_csv, read_pvd  # noqa: E402  (the shared ru
 from shockfield.vtk_arrays import read_vtk_arrays  # noqa: E402
 
 PAPER = {"a": 0.066, "b": 1.51e3, "c": -0.073, "d": 3.30e-3, "e": 0.00764, "f": 1.51e2, "g": 8.06e2, "h": 1.02e3}
+WINDOWS = (0.25, 0.5, 1.0, 1.5, None)  # u_DG windows [t_SD, t_SD + Δ] of the window table; None: [t_SD, t_end]
 
 
 def read_rho(vti):
@@ -57,7 +60,14 @@ def load(folder):
     for name in s.dtype.names:
         if name.startswith("L_rho"):
             run["L_peaks"][float(name[5:])] = t[int(np.argmax(s[name]))] if s[name].max() > 0 else float("nan")
-    run["u_DG"] = u_dg(run, t[-1])
+    summary = read_csv(Path(folder) / "summary.csv")  # the run's own t_SD and u_DG (shockfield, write_phase_summary)
+    if "u_DG" not in summary.dtype.names:
+        sys.exit(f"{folder}/summary.csv has no u_DG: written by an older shockfield; rewrite it with "
+                 f"`shockfield run <case> --output {folder} --resume` (a finished run: the summary only)")
+    assert np.isclose(summary["t_SD"][0], run["t_SD"], rtol=0, atol=1e-9), folder
+    run.update(u_DG=summary["u_DG"][0], t_DG=(summary["t_DG_begin"][0], summary["t_DG_end"][0]))
+    window = cfg.get("output", {}).get("growth_window", 0.5)
+    assert np.isclose(u_dg(run, window), run["u_DG"], rtol=1e-6), (folder, u_dg(run, window), run["u_DG"])
     run["energy_drift"] = energy_drift(run, t[-1])
     return run
 
@@ -69,10 +79,11 @@ def energy_drift(run, t_end):
     return (e[s["time"] <= t_end + 1e-9][-1] - e[0]) / abs(e[0])
 
 
-def u_dg(run, t_end):
-    """Least-squares slope of R(t) over [t_SD, t_end] (the domain-growth stage)."""
+def u_dg(run, window=None):
+    """Least-squares slope of R(t) over [t_SD, t_SD + window] (None: to the run's end), cut at its end."""
     s = run["series"]
-    grow = (s["time"] >= run["t_SD"]) & (s["time"] <= t_end + 1e-9)
+    t_end = run["t_end"] if window is None else run["t_SD"] + window
+    grow = (s["time"] >= run["t_SD"] - 1e-9) & (s["time"] <= t_end + 1e-9)
     return np.polyfit(s["time"][grow], s["R"][grow], 1)[0] if grow.sum() >= 3 else float("nan")
 
 
@@ -90,31 +101,64 @@ def fits(runs):
     out = {}
     out["b"], out["a"] = np.polyfit(K, [r["t_SD"] for r in runs], 1)
     out["d"], out["c"] = np.polyfit(K ** -0.5, [r["D_max"] for r in runs], 1)
-    if len(runs) >= 5:  # u_DG = e + fK − (gK)² + (hK)³: a cubic in K (4 coefficients)
-        p3, p2, p1, p0 = np.polyfit(K, [r["u_DG"] for r in runs], 3)
-        out.update(e=p0, f=p1, g2=-p2, h3=p3)
+    if len(runs) >= 5:
+        out.update(eq34_fit(K, [r["u_DG"] for r in runs]))
     return out
+
+
+def eq34_fit(K, u):
+    """u_DG = e + fK − (gK)² + (hK)³ (eq. 34): a cubic in K, least squares; g², h³ as fitted."""
+    p3, p2, p1, p0 = np.polyfit(K, u, 3)
+    return dict(e=p0, f=p1, g2=-p2, h3=p3)
+
+
+def eq34_text(f):
+    g = f"g = {np.sqrt(f['g2']):.3g}" if f["g2"] > 0 else f"(gK)² coefficient {-f['g2']:.3g} (> 0: g imaginary)"
+    return f"e = {f['e']:.3g}, f = {f['f']:.3g}, {g}, h = {np.cbrt(f['h3']):.3g}"
 
 
 def fit_text(f):
     t = (f"eq. 36 t_SD = a + bK: a = {f['a']:.3f}, b = {f['b']:.3g} (paper 0.066, 1.51e3); "
          f"eq. 37 D_max = c + dK^-0.5: c = {f['c']:.3f}, d = {f['d']:.3g} (paper -0.073, 3.30e-3)")
     if "e" in f:
-        g = f"g = {np.sqrt(f['g2']):.3g}" if f["g2"] > 0 else f"(gK)² coefficient {-f['g2']:.3g} (> 0: g imaginary)"
-        t += (f"; eq. 34 u_DG = e + fK - (gK)^2 + (hK)^3: e = {f['e']:.3g}, f = {f['f']:.3g}, {g}, "
-              f"h = {np.cbrt(f['h3']):.3g} (paper 0.00764, 151, 806, 1020)")
+        t += f"; eq. 34 u_DG = e + fK - (gK)^2 + (hK)^3: {eq34_text(f)} (paper 0.00764, 151, 806, 1020)"
     return t
 
 
 def table(runs, title):
     levels = sorted({lv for r in runs for lv in r["L_peaks"]})
-    columns = (["K", "grid", "t_SD", "R_SD", "D_max", "u_DG", "peak of D^F at t"]
+    columns = (["K", "grid", "t_SD", "R_SD", "D_max", "u_DG", "u_DG over t", "peak of D^F at t"]
                + [f"peak of L(ρ_th={lv:g}) at t" for lv in levels] + ["end t", "Δe_T/\\|e_T(0)\\| at end"])
     lines = [f"### {title}", "", "| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
     for r in sorted(runs, key=lambda r: (r["K"], r["n"])):
         peaks = " | ".join(f"{r['L_peaks'].get(lv, float('nan')):.3f}" for lv in levels)
         lines.append(f"| {r['K']:g} | {r['n']}² | {r['t_SD']:.3f} | {r['R_SD']:.4f} | {r['D_max']:.4f} | "
-                     f"{r['u_DG']:.4f} | {r['t_DF']:.3f} | {peaks} | {r['t_end']:.2f} | {r['energy_drift']:+.4f} |")
+                     f"{r['u_DG']:.4f} | {r['t_DG'][0]:.2f}–{r['t_DG'][1]:.2f} | {r['t_DF']:.3f} | {peaks} | {r['t_end']:.2f} | {r['energy_drift']:+.4f} |")
+    return lines + [""]
+
+
+def window_name(w):
+    return "[t_SD, t_end]" if w is None else f"[t_SD, t_SD+{w:g}]"
+
+
+def window_tables(study, conv):
+    """u_DG per window: over the study's K with the eq. 34 fit of each window, and across the grids of
+    each K that has convergence runs (a window the shorter runs do not reach is left out: '—')."""
+    head = "| K | grid | " + " | ".join(f"u_DG {window_name(w)}" for w in WINDOWS) + " |"
+    rule = "|" + "---|" * (2 + len(WINDOWS))
+    row = lambda r, cells: f"| {r['K']:g} | {r['n']}² | " + " | ".join(cells) + " |"
+    lines = ["### u_DG by window (the study; the run's own is [t_SD, t_SD+0.5])", "", head, rule]
+    lines += [row(r, [f"{u_dg(r, w):.4f}" for w in WINDOWS]) for r in study]
+    lines += ["", "eq. 34 fitted per window (paper e = 0.00764, f = 151, g = 806, h = 1020):", ""]
+    K = np.array([r["K"] for r in study])
+    lines += [f"- {window_name(w)}: {eq34_text(eq34_fit(K, [u_dg(r, w) for r in study]))}" for w in WINDOWS]
+    lines += ["", "### u_DG by window across the grids (convergence; '—': a run ends inside the window)", "",
+              head, rule]
+    for K_conv in sorted({r["K"] for r in conv}):
+        same = sorted((r for r in conv + study if np.isclose(r["K"], K_conv)), key=lambda r: r["n"])
+        reached = lambda w: (all(r["t_end"] >= r["t_SD"] + w - 1e-9 for r in same) if w is not None
+                             else np.ptp([r["t_end"] for r in same]) < 1e-6)  # [t_SD, t_end]: one end for all
+        lines += [row(r, [f"{u_dg(r, w):.4f}" if reached(w) else "—" for w in WINDOWS]) for r in same]
     return lines + [""]
 
 
@@ -139,14 +183,25 @@ def fig63(study, out):
     fig.savefig(out, dpi=60)
 
 
-def fig64(study, f, out):
-    fig, ax = plt.subplots(2, 2, figsize=(11, 8))
+def growth_line(ax, r, **style):
+    """The least-squares line of u_DG over the run's window, drawn on that window."""
+    s = r["series"]
+    t0, t1 = r["t_DG"]
+    inside = (s["time"] >= t0 - 1e-9) & (s["time"] <= t1 + 1e-9)
+    t, R = s["time"][inside], s["R"][inside]
+    ax.plot([t0, t1], R.mean() + r["u_DG"] * (np.array([t0, t1]) - t.mean()), **style)
+
+
+def fig64(study, conv, f, out):
+    fig, ax = plt.subplots(2, 3, figsize=(16, 8))
     colours = plt.cm.viridis(np.linspace(0, 0.9, len(study)))
-    for r, col in zip(study, colours):  # (a) R(t) with t_SD marked
+    for r, col in zip(study, colours):  # (a) R(t) with t_SD marked and u_DG's line on its window
         s = r["series"]
         ax[0][0].plot(s["time"], s["R"], color=col, label=f"K={r['K']:g}, u_DG={r['u_DG']:.3f}")
         ax[0][0].plot(r["t_SD"], r["R_SD"], "v", color=col)
-    ax[0][0].set(xlabel="t", ylabel="R = 2π/k1", title="(a) domain size R(t); ▼ end of SD (t_SD, R_SD)")
+        growth_line(ax[0][0], r, color="k", lw=2.5, ls="--")
+    ax[0][0].set(xlabel="t", ylabel="R = 2π/k1",
+                 title="(a) R(t); ▼ (t_SD, R_SD); dashed: u_DG over [t_SD, t_SD+0.5]")
     first = min(study, key=lambda r: r["K"])  # (b) L and the TNE of the smallest K
     s = first["series"]
     b2 = ax[0][1].twinx()
@@ -179,8 +234,32 @@ def fig64(study, f, out):
     d2.set_ylabel("D_max")
     ax[1][1].legend(fontsize=7, loc="upper left"), d2.legend(fontsize=7, loc="upper right")
     ax[0][0].legend(fontsize=6)
+    u_dg_panel(ax[0][2], study)
+    k5 = sorted((r for r in conv + study if np.isclose(r["K"], 1e-5)), key=lambda r: r["n"])
+    for r in k5:  # (f) the smallest K on every grid: where the runs part, and the window before it
+        line = ax[1][2].plot(r["series"]["time"], r["series"]["R"], label=f"{r['n']}², u_DG = {r['u_DG']:.4f}")[0]
+        growth_line(ax[1][2], r, color=line.get_color(), lw=2.5, ls="--")
+    if k5:
+        ax[1][2].axvspan(*k5[-1]["t_DG"], color="0.9")
+    ax[1][2].set(xlabel="t", ylabel="R", title="(f) K = 1e-5 on 64²–160²; grey: u_DG window")
+    ax[1][2].legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(out, dpi=70)
+
+
+def u_dg_panel(ax, study):
+    """(e) u_DG against K, the run's window and the former [t_SD, t_end], with eq. 34 fitted to each."""
+    K = np.array([r["K"] for r in study])
+    kk = np.linspace(K.min(), K.max(), 200)
+    for w, style, name in ((0.5, "o", "u_DG [t_SD, t_SD+0.5] (the run's)"), (None, "s", "u_DG [t_SD, 4] (former)")):
+        u = [r["u_DG"] if w == 0.5 else u_dg(r, w) for r in study]
+        f = eq34_fit(K, u)
+        col = ax.plot(K, u, style, mfc="none" if w is None else None, label=name)[0].get_color()
+        ax.plot(kk, f["e"] + f["f"] * kk - f["g2"] * kk ** 2 + f["h3"] * kk ** 3, "-", color=col, label="eq. 34 fitted")
+    P = PAPER
+    ax.plot(kk, P["e"] + P["f"] * kk - (P["g"] * kk) ** 2 + (P["h"] * kk) ** 3, "k:", label="paper eq. 34")
+    ax.set(xlabel="K", ylabel="u_DG", ylim=(0, 0.085), title="(e) u_DG against K with eq. 34 (dotted: the paper's)")
+    ax.legend(fontsize=6, ncol=2, loc="upper center")
 
 
 def main():
@@ -190,14 +269,15 @@ def main():
     f = fits(study)
     lines = ["## The study (Δx = 1/64; K = 1e-5 on 1/128)", ""] + table(study, "per K") + [fit_text(f), ""]
     conv = [r for d in sorted(runs_dir.glob("conv*")) for r in group(runs_dir, d.name)]
-    if conv:  # u_DG of a K over the window all its grids ran: [t_SD, their shortest end]
+    if conv:  # Δe_T of a K at the end all its grids ran to; u_DG the run's own
         rows = []
         for K in sorted({r["K"] for r in conv}):
             same = [r for r in conv + study if np.isclose(r["K"], K)]
             end = min(r["t_end"] for r in same)
-            rows += [dict(r, u_DG=u_dg(r, end), energy_drift=energy_drift(r, end)) for r in same]
-        lines += table(rows, "convergence in Δx (the same band-limited noise on every grid; u_DG over [t_SD, end of "
-                             "the shortest run of that K], Δe_T at that end)")
+            rows += [dict(r, energy_drift=energy_drift(r, end)) for r in same]
+        lines += table(rows, "convergence in Δx (the same band-limited noise on every grid; Δe_T at the end of the "
+                             "shortest run of that K)")
+    lines += window_tables(study, conv)
     for d in sorted(p for p in runs_dir.iterdir() if (p / "sweep.csv").is_file()):
         if d.name in ("study64", "study128") or d.name.startswith("conv"):
             continue
@@ -206,11 +286,11 @@ def main():
             same = [r for r in study if r["n"] == 64 and any(np.isclose(r["K"], o["K"]) for o in other)]
             lines += table(other, f"sensitivity: {d.name}") + [f"fits of {d.name}: " + fit_text(fits(other)), ""]
             if len(same) >= 2:
-                lines += [f"the study's fits over the same K: " + fit_text(fits(same)), ""]
+                lines += ["the study's fits over the same K: " + fit_text(fits(same)), ""]
     (HERE / "table.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
     fig63(study, HERE / "fig63.png")
-    fig64(study, f, HERE / "fig64.png")
+    fig64(study, conv, f, HERE / "fig64.png")
 
 
 if __name__ == "__main__":

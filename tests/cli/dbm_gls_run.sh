@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A short GLS quench ([model] kind = "gls", [initial] type = "quench") writes series.csv with the
-# phase-separation columns, summary.csv (t_SD, D_max, peak of L), field frames with D and D^F and
-# the derived time-step limit; a stopped and resumed run writes the same series and summary;
+# phase-separation columns, summary.csv (t_SD, D_max, peak of L, u_DG), field frames with D and D^F and
+# the derived time-step limit; a stopped and resumed run writes the same series and summary, a finished
+# one resumed writes its summary again;
 # bad GLS input is refused (exit 2, key named): dt above the stable limit with its cause, rho0
 # outside the EOS domain, q >= tau, gamma != 2, NND convection, the state filter with NND, a
 # non-periodic side; a blow-up
@@ -43,8 +44,16 @@ head -1 "$WORK/gls/summary.csv" | grep -q "t_SD,D_max" || fail "summary columns"
 grep -q 'Name="D_force"' "$WORK/gls/fields/grid_000000010.vti" || fail "field frame lacks D_force"
 grep -q "gls_time_step_limited_by = 'collision'" "$WORK/gls/config.resolved.toml" || fail "derived time-step limit missing"
 grep -q "phase separation: t_SD" "$WORK/gls/log.txt" || fail "log lacks the t_SD line"
+grep -q "\"u_DG\"" "$WORK/gls/summary.json" || fail "summary.json results lack phase_separation.u_DG"
 stop_then_resume "$WORK/gls.toml" "$WORK/split" 7
 same_files "$WORK/gls" "$WORK/split" series.csv summary.csv fields/grid_000000020.vti
+# A finished run resumed steps nothing and writes summary.csv again from series.csv (u_DG with its window).
+head -1 "$WORK/gls/summary.csv" | grep -q ",u_DG,t_DG_begin,t_DG_end$" || fail "summary lacks u_DG: $(head -1 "$WORK/gls/summary.csv")"
+mv "$WORK/gls/summary.csv" "$WORK/summary.before"
+"$SF" run "$WORK/gls.toml" --output "$WORK/gls" --resume -q > /dev/null
+cmp -s "$WORK/summary.before" "$WORK/gls/summary.csv" || fail "a finished run resumed did not write the same summary.csv"
+expect_error "${gls/checkpoint_every = 5/checkpoint_every = 5
+growth_window = 0}" "output.growth_window"
 expect_error "${gls/q = -0.019/q = -0.019
 zeta = 1.0}" "run.dt" "stable limit" "diffusion"
 expect_error "${gls/K = 1e-3/K = 5.0}" "run.dt" "capillary waves"
@@ -78,4 +87,4 @@ run_expecting 0 "${gls/noise = 0.05/noise = 0.05
 noise_wavelength = 0.25}"
 expect_error "${gls/noise = 0.05/noise = 0.05
 noise_wavelength = 0.1}" "initial.noise_wavelength" "two cells"
-echo "dbm_gls_run: series, summary, fields, derived dt limit, bitwise resume, refused GLS input, blow-up, extra L thresholds, band-limited noise"
+echo "dbm_gls_run: series, summary, fields, derived dt limit, bitwise resume, summary of a finished run resumed, refused GLS input, blow-up, extra L thresholds, band-limited noise"

@@ -176,7 +176,7 @@ std::optional<RiemannStar> exact_star(const InitialSpec& s, double gamma) {
 }
 
 // ---- GLS liquid–vapour (kind = "gls", gls_case.hpp): model keys, the quench, the L(t) threshold
-// ([output].threshold, default ρ0) and the GLS time-step limit.
+// ([output].threshold, default ρ0), the u_DG window ([output].growth_window) and the GLS time-step limit.
 void read_gls_part(const Config& root, const Config& model, DbmCase& c) {
   GlsCaseSpec g;
   g.settings = read_gls_model(model, c.bgk.tau);
@@ -187,8 +187,10 @@ void read_gls_part(const Config& root, const Config& model, DbmCase& c) {
   const std::optional<Config> output = root.optional_table("output");
   g.threshold = output ? output->get_double_or("threshold", g.quench.rho0, {0.0, eos_max_density(g.settings.eos), true, true})
                        : g.quench.rho0;
-  if (output)
+  if (output) {
     g.extra_thresholds = output->get_doubles_or("extra_thresholds", {}, {0.0, eos_max_density(g.settings.eos), true, true});
+    g.growth_window = output->get_double_or("growth_window", g.growth_window, Range::positive());
+  }
   check_gls_time_step(root.table("run"), g, c.lattice, c.model.max_speed(), c.bgk.tau, c.bgk.dt);
   c.gls = g;
 }

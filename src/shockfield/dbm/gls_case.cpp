@@ -1,5 +1,8 @@
 #include "shockfield/dbm/gls_case.hpp"
 
+#include <optional>
+#include <tuple>
+
 #include <fmt/format.h>
 
 #include "shockfield/core/error.hpp"
@@ -13,6 +16,12 @@ E read_eos_parameters(const Config& model, E eos) {
   eos.a = model.get_double_or("eos_a", eos.a, Range::positive());
   eos.b = model.get_double_or("eos_b", eos.b, Range::positive());
   return eos;
+}
+
+// The smallest and largest density ρ0(1 + noise·ξ) of the quench's initial field on the lattice's cells.
+std::pair<double, double> initial_density_range(const Quench& q, const QuenchNoise& xi) {
+  const auto [xi_min, xi_max] = xi.extremes_on_cells();
+  return {q.rho0 * (1.0 + q.noise * xi_min), q.rho0 * (1.0 + q.noise * xi_max)};
 }
 
 }  // namespace
@@ -44,27 +53,29 @@ Quench read_quench(const Config& initial, const GlsSettings& gls, const Lattice&
   q.noise = initial.get_double_or("noise", 0.01, {0.0, 1.0, true, true});
   q.seed = static_cast<std::uint64_t>(initial.get_int_or("seed", 1, Range::non_negative()));
   q.noise_wavelength = initial.get_double_or("noise_wavelength", 0.0, Range::non_negative());
-  double bound = 1.0;
+  std::optional<QuenchNoise> xi;
   try {
-    bound = q.noise_field(lattice).bound();
+    xi.emplace(q.noise_field(lattice));
   } catch (const InputError& e) {
     initial.fail("noise_wavelength", e.what());
   }
-  if (q.rho0 * (1.0 + q.noise * bound) >= max_density)
-    initial.fail("noise", fmt::format("rho0 (1 + noise max|xi|) = {} reaches the EOS limit {} (excluded volume)",
-                                      q.rho0 * (1.0 + q.noise * bound), max_density));
-  if (q.rho0 * (1.0 - q.noise * bound) <= 0.0)
-    initial.fail("noise", fmt::format("rho0 (1 - noise max|xi|) = {} is not positive (max|xi| = {:.3g})",
-                                      q.rho0 * (1.0 - q.noise * bound), bound));
+  // The densities the field takes on the cells (band-limited noise reaches |ξ| ≈ 4× its rms there; the
+  // rigorous bound s Σ|A_mn| of its modes is ~6× looser and refused noise ≥ 0.077 at ρ0 = 1).
+  const auto [rho_min, rho_max] = initial_density_range(q, *xi);
+  if (rho_max >= max_density)
+    initial.fail("noise", fmt::format("the largest initial density rho0 (1 + noise max xi) = {} reaches the EOS limit "
+                                      "{} (excluded volume)", rho_max, max_density));
+  if (rho_min <= 0.0)
+    initial.fail("noise", fmt::format("the smallest initial density rho0 (1 + noise min xi) = {} is not positive",
+                                      rho_min));
   return q;
 }
 
 void expected_density_range(GlsCaseSpec& spec, const Lattice& lattice) {
   const Quench& q = spec.quench;
   // The initial densities ρ0(1 + noise·ξ) at the cells: |ξ| ≤ 1 for white noise, up to ~4·rms for
-  // band-limited noise (its rigorous bound s Σ|A_mn| is ~6x looser and would cut the Δt limit through ζ/ρ_vapour).
-  const auto [xi_min, xi_max] = q.noise_field(lattice).extremes_on_cells();
-  spec.rho_vapour = q.rho0 * (1.0 + q.noise * xi_min), spec.rho_liquid = q.rho0 * (1.0 + q.noise * xi_max);
+  // band-limited noise.
+  std::tie(spec.rho_vapour, spec.rho_liquid) = initial_density_range(q, q.noise_field(lattice));
   std::visit(
       [&](const auto& eos) {
         if (q.T >= critical_point(eos).T) return;

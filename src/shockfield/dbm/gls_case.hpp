@@ -15,6 +15,7 @@ struct GlsCaseSpec {
   Quench quench;
   double threshold = 0.0;    ///< density level of the boundary length L(t); default ρ0
   std::vector<double> extra_thresholds;  ///< more levels of L(t) (series columns L_rho<level>)
+  double growth_window = 0.5;  ///< u_DG is the slope of R(t) over [t_SD, t_SD + growth_window]
   double rho_vapour = 0.0;   ///< density range expected in the run (Maxwell construction at the
   double rho_liquid = 0.0;   ///< quench T, or the initial field's range above T_c): EOS domain and Δt check
 };

@@ -89,20 +89,32 @@ std::vector<std::vector<double>> read_columns(const fs::path& file, const std::v
 
 }  // namespace
 
-void GlsRunPart::write_summary(const fs::path& folder, Logger& log) const {
-  const auto col = read_columns(folder / "series.csv", {"time", "D", "D_force", "L"});
+PhaseSummary write_phase_summary(const fs::path& folder, const GlsCaseSpec& spec, Logger& log) {
+  const auto col = read_columns(folder / "series.csv", {"time", "D", "D_force", "L", "R"});
   std::vector<PhaseSample> samples(col[0].size()), force(col[0].size());
   for (std::size_t k = 0; k < samples.size(); ++k) {
     samples[k].t = force[k].t = col[0][k];
     samples[k].D = col[1][k], force[k].D = col[2][k];
     samples[k].boundary_length = col[3][k];
+    samples[k].domain_size = col[4][k];
   }
   const SpinodalEnd e = spinodal_end(samples), f = spinodal_end(force);
-  io::CsvWriter csv(folder / "summary.csv", {"t_SD", "D_max", "t_SD_force", "D_force_max", "t_L_max", "L_max"});
-  csv.row({e.t_sd, e.D_max, f.t_sd, f.D_max, e.t_L_max, e.L_max});
-  log.info("phase separation: t_SD = {} (peak of D, D_max = {}), peak of D^F at t = {} ({}), peak of L at t = {} "
-           "(L_max = {}, threshold {})",
-           e.t_sd, e.D_max, f.t_sd, f.D_max, e.t_L_max, e.L_max, spec_.threshold);
+  const DomainGrowth g = domain_growth(samples, e.t_sd, spec.growth_window);
+  io::CsvWriter csv(folder / "summary.csv", {"t_SD", "D_max", "R_SD", "t_SD_force", "D_force_max", "t_L_max", "L_max",
+                                             "u_DG", "t_DG_begin", "t_DG_end"});
+  csv.row({e.t_sd, e.D_max, e.R_sd, f.t_sd, f.D_max, e.t_L_max, e.L_max, g.speed, g.t_begin, g.t_end});
+  log.info("phase separation: t_SD = {} (peak of D, D_max = {}, R_SD = {}), peak of D^F at t = {} ({}), peak of L at "
+           "t = {} (L_max = {}, threshold {}), u_DG = {} (slope of R over t = {} to {})",
+           e.t_sd, e.D_max, e.R_sd, f.t_sd, f.D_max, e.t_L_max, e.L_max, spec.threshold, g.speed, g.t_begin, g.t_end);
+  return {e, f, g};
+}
+
+Json phase_summary_json(const PhaseSummary& s) {
+  Json j = Json::object();
+  j.set("t_SD", s.net.t_sd).set("R_SD", s.net.R_sd).set("D_max", s.net.D_max);
+  j.set("t_SD_force", s.force.t_sd).set("D_force_max", s.force.D_max).set("t_L_max", s.net.t_L_max);
+  j.set("u_DG", s.growth.speed).set("t_DG_begin", s.growth.t_begin).set("t_DG_end", s.growth.t_end);
+  return j;
 }
 
 }  // namespace shockfield::dbm

@@ -25,7 +25,7 @@ QuenchNoise::QuenchNoise(std::uint64_t seed, double shortest_wavelength, const L
   // The relative slack keeps a mode on the cutoff circle on every grid of the box (Lx = nx dx rounds).
   const double cut2 = (1.0 + 1e-9) / (shortest_wavelength * shortest_wavelength);
   const int mx = static_cast<int>(Lx / shortest_wavelength) + 1, my = static_cast<int>(Ly / shortest_wavelength) + 1;
-  double power = 0.0, sum = 0.0;
+  double power = 0.0;
   for (int n = 0; n <= my; ++n)
     for (int m = -mx; m <= mx; ++m) {
       if ((n == 0 && m <= 0) || (m / Lx) * (m / Lx) + (n / Ly) * (n / Ly) > cut2) continue;
@@ -33,11 +33,10 @@ QuenchNoise::QuenchNoise(std::uint64_t seed, double shortest_wavelength, const L
       const double amplitude = rng::normal(seed, a, b, 0);
       modes_.push_back({2.0 * std::numbers::pi * m / Lx, 2.0 * std::numbers::pi * n / Ly, amplitude,
                         2.0 * std::numbers::pi * rng::uniform(seed, a, b, 2)});
-      power += 0.5 * amplitude * amplitude, sum += std::abs(amplitude);
+      power += 0.5 * amplitude * amplitude;
     }
   const double scale = 1.0 / std::sqrt(3.0 * power);
   for (Mode& mode : modes_) mode.amplitude *= scale;
-  bound_ = sum * scale;
 }
 
 double QuenchNoise::operator()(double x, double y) const {
@@ -99,10 +98,33 @@ PhaseSample sample_phase_separation(const Simulation& simulation, GlsForce& forc
 SpinodalEnd spinodal_end(const std::vector<PhaseSample>& samples) {
   SpinodalEnd e;
   for (const PhaseSample& s : samples) {
-    if (s.D > e.D_max) e.D_max = s.D, e.t_sd = s.t;
+    if (s.D > e.D_max) e.D_max = s.D, e.t_sd = s.t, e.R_sd = s.domain_size;
     if (s.boundary_length > e.L_max) e.L_max = s.boundary_length, e.t_L_max = s.t;
   }
   return e;
+}
+
+DomainGrowth domain_growth(const std::vector<PhaseSample>& samples, double t_sd, double window) {
+  // Sample times carry the round-off of n·Δt (and 10 digits in series.csv): a relative slack.
+  const double slack = 1e-9 * (1.0 + std::abs(t_sd) + window);
+  std::vector<const PhaseSample*> in;
+  for (const PhaseSample& s : samples)
+    if (s.t >= t_sd - slack && s.t <= t_sd + window + slack) in.push_back(&s);
+  DomainGrowth g{std::numeric_limits<double>::quiet_NaN(), t_sd, t_sd};
+  if (in.empty()) return g;
+  g.t_end = in.back()->t;
+  if (in.size() < 3) return g;
+  // Least squares R = a + u_DG t about the window's mean time (no cancellation at late t).
+  double t_mean = 0.0, R_mean = 0.0;
+  for (const PhaseSample* s : in) t_mean += s->t, R_mean += s->domain_size;
+  t_mean /= static_cast<double>(in.size()), R_mean /= static_cast<double>(in.size());
+  double stt = 0.0, stR = 0.0;
+  for (const PhaseSample* s : in) {
+    const double dt = s->t - t_mean;
+    stt += dt * dt, stR += dt * (s->domain_size - R_mean);
+  }
+  g.speed = stR / stt;
+  return g;
 }
 
 }  // namespace shockfield::dbm

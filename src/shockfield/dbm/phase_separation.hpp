@@ -4,8 +4,8 @@
 // (eq. 35, domain mean of the net central measures, with its force and gradient parts, eqs.
 // 29–31), the boundary length L(t) of the density field at a threshold (Minkowski functional,
 // analysis/minkowski), the domain size R(t) = 2π/k₁ from the structure factor
-// (analysis/spectral_statistics), and the end of spinodal decomposition t_SD at the peak of D(t)
-// with D_max = D(t_SD).
+// (analysis/spectral_statistics), the end of spinodal decomposition t_SD at the peak of D(t)
+// with D_max = D(t_SD), and the domain-growth speed u_DG, the slope of R(t) after t_SD.
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -28,8 +28,6 @@ class QuenchNoise {
   /// InputError when λ > 0 is shorter than two cells (the grid cannot hold its modes).
   QuenchNoise(std::uint64_t seed, double shortest_wavelength, const Lattice& lattice);
   double operator()(double x, double y) const;
-  /// An upper bound of |ξ| (1 for white noise, s Σ|A_mn| for the modes).
-  double bound() const { return bound_; }
   /// The smallest and largest ξ at the lattice's cell centres, the values the initial state takes.
   std::pair<double, double> extremes_on_cells() const;
   std::size_t modes() const { return modes_.size(); }
@@ -41,7 +39,6 @@ class QuenchNoise {
   std::uint64_t seed_;
   Lattice lattice_;
   std::vector<Mode> modes_;  // empty for white noise
-  double bound_ = 1.0;
 };
 
 /// ρ(x, y) = ρ0 (1 + noise·ξ(x, y)) at rest at temperature T (ξ: QuenchNoise).
@@ -71,10 +68,22 @@ PhaseSample sample_phase_separation(const Simulation& simulation, GlsForce& forc
                                     double threshold);
 
 struct SpinodalEnd {
-  double t_sd = 0, D_max = 0;
+  double t_sd = 0, D_max = 0, R_sd = 0;  // R_SD = R(t_SD)
   double t_L_max = 0, L_max = 0;  // peak of the boundary length (coincides with t_SD, Xu et al. (2015) §4.3)
 };
 /// Peaks of D(t) and L(t) over the samples (first maximum on ties).
 SpinodalEnd spinodal_end(const std::vector<PhaseSample>& samples);
+
+/// The domain-growth speed u_DG of Xu et al. (2015) §4.3 ("the slope of the R(t) curve ... for the
+/// domain growth stage", eq. 34): the least-squares slope of R over the samples with t in
+/// [t_SD, t_SD + window], the early domain growth (docs/theory/dbm.md, "The domain-growth speed u_DG":
+/// later, with a few domains left in the box, the slope depends on the grid). A run that ends
+/// before t_SD + window cuts the window at its last sample (t_end says so); fewer than 3 samples
+/// in the window give speed = NaN.
+struct DomainGrowth {
+  double speed = 0;              // u_DG = dR/dt
+  double t_begin = 0, t_end = 0;  // the samples' window
+};
+DomainGrowth domain_growth(const std::vector<PhaseSample>& samples, double t_sd, double window);
 
 }  // namespace shockfield::dbm

@@ -120,6 +120,9 @@ class DbmMethod final : public Method, public DerivedArrays {
     counters_ = read_checkpoint(run.checkpoint, sim_, reactant());
     if (decomposition_) decomposition_->scatter(sim_);
     open(run, true);
+    // A finished GLS run resumed has nothing to step: its summary.csv is written again from series.csv,
+    // so a run folder of an older build gains the summary columns added since (u_DG).
+    if (gls_ && finished()) phase_summary_ = write_phase_summary(run.folder, *c_.gls, run.log);
   }
   bool finished() const override { return sim_.steps() >= c_.steps; }
   void advance() override {
@@ -147,7 +150,7 @@ class DbmMethod final : public Method, public DerivedArrays {
     output_->write_profile(current(), counters_.profiles);
     if (gls_) {
       run_->log.info("{}", GlsRunPart::blow_up_hint());
-      gls_->write_summary(run_->folder, run_->log);
+      phase_summary_ = write_phase_summary(run_->folder, *c_.gls, run_->log);
     }
     return fmt::format("the state at the failure: profiles/profile_{}.csv", counters_.profiles);
   }
@@ -155,7 +158,7 @@ class DbmMethod final : public Method, public DerivedArrays {
     if (c_.output.profile_interval == 0.0) output_->write_profile(current(), counters_.profiles++);
   }
   void log_results(double steps_per_second) override {
-    if (gls_) gls_->write_summary(run_->folder, run_->log);
+    if (gls_) phase_summary_ = write_phase_summary(run_->folder, *c_.gls, run_->log);
     const auto total = current().totals();
     const char* per = units::model::per_missing_dimensions_text(Lattice::dim);
     run_->log.info("finished: t = {} after {} steps ({:.3g} cell-steps/s); mass {}, momentum ({}, {}), energy {} "
@@ -215,7 +218,8 @@ class DbmMethod final : public Method, public DerivedArrays {
   double time() const override { return sim_.time(); }
   std::string time_unit() const override { return "1"; }
   // Domain totals, the mean TNE strength and the means of the central TNE measures (eq. 35 and
-  // its components), and for [reaction] the chemical energy and the tracked front.
+  // its components), for [reaction] the chemical energy and the tracked front, and for GLS the
+  // phase-separation summary once written (t_SD, R_SD, D_max, u_DG, ...: a sweep's CSV carries them).
   Json results() const override {
     const auto total = current().totals();
     const TneFields tne = tne_measures(sim_);
@@ -225,6 +229,7 @@ class DbmMethod final : public Method, public DerivedArrays {
     const std::string per = units::model::per_missing_dimensions_column(Lattice::dim);
     r.set("mass" + per, total[0]).set("momentum" + per, Json::Array{total[1], total[2]}).set("energy" + per, total[3]);
     r.set("mean_tne_strength_D", tne.mean_strength).set("mean_tne_central", std::move(means));
+    if (phase_summary_) r.set("phase_separation", phase_summary_json(*phase_summary_));
     if (reaction_) {
       r.set("chemical_energy" + per, reaction_->chemical_energy());
       r.set("front_x", pressure_front(sim_, c_.output.profile_row, c_.reaction->front_pressure()));
@@ -233,7 +238,7 @@ class DbmMethod final : public Method, public DerivedArrays {
   }
   // end_time is not safe: dt is set so that a whole number of steps lands on it.
   std::vector<std::string> resume_safe_keys() const override {
-    return {"output.*_interval", "output.thermo_every", "output.checkpoint_every"};
+    return {"output.*_interval", "output.thermo_every", "output.checkpoint_every", "output.growth_window"};
   }
 
  private:
@@ -275,6 +280,7 @@ class DbmMethod final : public Method, public DerivedArrays {
   double tol_;
   std::unique_ptr<ReactiveFlow> reaction_;
   std::optional<GlsRunPart> gls_;
+  std::optional<PhaseSummary> phase_summary_;  // GLS: summary.csv's values, once written (results())
   OutputCounters counters_;
   std::optional<RunOutput> output_;
   RunContext* run_ = nullptr;

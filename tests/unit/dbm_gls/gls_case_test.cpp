@@ -1,11 +1,17 @@
 // The density range a GLS quench is expected to reach (gls_case.hpp, expected_density_range): it sets the
 // Δt check (capillary bound through ρ_liquid, diffusion through ζ/ρ_vapour) and the run's
 // gls_expected_rho_* values. Above T_c it is the range of the initial field on the cells; below, widened
-// to the Maxwell construction (Xu et al. 2015, §4.3).
+// to the Maxwell construction (Xu et al. 2015, §4.3). read_quench checks the noise amplitude against the
+// same initial field on the cells.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 
+#include <fmt/format.h>
+
+#include "shockfield/core/config.hpp"
+#include "shockfield/core/error.hpp"
 #include "shockfield/dbm/coexistence.hpp"
 #include "shockfield/dbm/gls_case.hpp"
 
@@ -54,7 +60,6 @@ TEST(DbmGlsCase, SupercriticalRangeIsTheInitialFieldsOnTheCells) {
   EXPECT_DOUBLE_EQ(spec.rho_liquid, hi);
   EXPECT_GT(spec.rho_liquid, 1.05);  // what the per-cell bound got wrong
   EXPECT_LT(spec.rho_vapour, 0.95);
-  EXPECT_LT(spec.rho_liquid, 1.0 + 0.05 * spec.quench.noise_field(lattice).bound());  // inside the rigorous bound
 }
 
 TEST(DbmGlsCase, WhiteNoiseRangeStaysInsideTheNoiseAmplitude) {
@@ -75,4 +80,43 @@ TEST(DbmGlsCase, SubcriticalRangeIsWidenedToMaxwellCoexistence) {
   const Coexistence co = maxwell_construction(materials::VanDerWaals{}, 0.85);
   EXPECT_DOUBLE_EQ(spec.rho_vapour, co.rho_vapour);
   EXPECT_DOUBLE_EQ(spec.rho_liquid, co.rho_liquid);
+}
+
+namespace {
+
+// read_quench of the phase-separation example's noise (ρ0 = 1, band-limited λ = 1/16, seed 7) on 64², at
+// amplitude `noise`.
+Quench read_example_quench(double noise) {
+  const Config root = Config::parse(fmt::format("[initial]\nrho0 = 1.0\nT = 0.85\nseed = 7\nnoise_wavelength = "
+                                                "0.0625\nnoise = {}\n", noise), "quench.toml");
+  return read_quench(root.table("initial"), GlsSettings{}, unit_box(64));
+}
+
+}  // namespace
+
+TEST(DbmGlsCase, QuenchNoiseIsCheckedAgainstTheFieldOnTheCells) {
+  // The field's own extremes on the cells bound the initial densities (as in expected_density_range). The
+  // former check used the rigorous bound s Σ|A_mn| = 12.98 of this noise, ~5.8x its max|ξ| on the cells, and
+  // refused any noise above 1/12.98 = 0.077 at ρ0 = 1 although the field stayed positive.
+  const Quench q = read_example_quench(0.05);
+  const auto [xi_min, xi_max] = q.noise_field(unit_box(64)).extremes_on_cells();
+  ASSERT_GT(-xi_min, 1.5);  // the noise these amplitudes are chosen for: |ξ| between 1.5 and 3
+  ASSERT_LT(-xi_min, 3.0);
+  ASSERT_LT(xi_max, 3.0);
+  // 0.2: densities 1 + 0.2 ξ in [0.4, 1.6], accepted now; 1 − 0.2·12.98 < 0 was refused before.
+  const Quench wide = read_example_quench(0.2);
+  EXPECT_DOUBLE_EQ(wide.noise, 0.2);
+  const auto [rho_vapour, rho_liquid] = std::pair{1.0 + 0.2 * xi_min, 1.0 + 0.2 * xi_max};
+  EXPECT_GT(rho_vapour, 0.0);
+  EXPECT_LT(rho_liquid, 3.0);  // the vdW limit 1/b
+  // 0.7: 1 + 0.7 ξ_min < 0 — a negative density on some cell, refused by both checks, under the key.
+  ASSERT_LT(1.0 + 0.7 * xi_min, 0.0);
+  try {
+    read_example_quench(0.7);
+    ADD_FAILURE() << "noise 0.7 gives a negative density and must be refused";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("noise"), std::string::npos) << what;
+    EXPECT_NE(what.find("not positive"), std::string::npos) << what;
+  }
 }

@@ -91,12 +91,14 @@ TEST(DbmPhaseSeparation, BandLimitedNoiseIsTheSameFieldOnEveryGrid) {
     }
   EXPECT_LT(beyond, 1e-13);
   EXPECT_LT(diff, 1e-13);
-  for (const std::vector<double>* v : {&va, &vb}) {
+  for (const auto& [v, xi] : {std::pair{&va, &a}, std::pair{&vb, &b}}) {
     double mean = 0, square = 0;
     for (const double x : *v) mean += x / v->size(), square += x * x / v->size();
     EXPECT_NEAR(mean, 0.0, 1e-13);
     EXPECT_NEAR(square, 1.0 / 3.0, 1e-12);
-    EXPECT_LE(*std::max_element(v->begin(), v->end()), a.bound());
+    const auto [lo, hi] = xi->extremes_on_cells();  // the values the initial state takes
+    EXPECT_EQ(lo, *std::min_element(v->begin(), v->end()));
+    EXPECT_EQ(hi, *std::max_element(v->begin(), v->end()));
   }
   q.noise_wavelength = 0.0;  // white noise: the two grids draw different fields
   const QuenchNoise wa = q.noise_field(coarse), wb = q.noise_field(fine);
@@ -137,11 +139,13 @@ TEST(DbmPhaseSeparation, SpinodalEndIsThePeakOfD) {
     s.t = 0.1 * i;
     s.D = std::exp(-std::pow(s.t - 1.2, 2));
     s.boundary_length = 5 - std::abs(s.t - 1.1);
+    s.domain_size = 0.1 + s.t;
     samples.push_back(s);
   }
   const SpinodalEnd e = spinodal_end(samples);
   EXPECT_NEAR(e.t_sd, 1.2, 1e-12);
   EXPECT_NEAR(e.D_max, 1.0, 1e-12);
+  EXPECT_NEAR(e.R_sd, 1.3, 1e-12);
   EXPECT_NEAR(e.t_L_max, 1.1, 1e-12);
   EXPECT_NEAR(e.L_max, 5.0, 1e-12);
 }
