@@ -18,7 +18,7 @@
 // operations are the constructor (establish), insert and remove; the root grows when an object
 // falls outside it.
 //
-// Searches, written once (space_tree_impl.hpp): the conditional search prunes cubes with a
+// Searches, written once (space_tree_search.hpp): the conditional search prunes cubes with a
 // may_contain(cube) test and tests objects with a condition; the minimum search ranks cubes by a
 // range [m(b), M(b)] of the values their objects can take and objects by value(o).
 //
@@ -449,3 +449,4 @@ class SpaceTree {
 }  // namespace shockfield::geometry
 
 #include "shockfield/geometry/space_tree_impl.hpp"
+#include "shockfield/geometry/space_tree_search.hpp"
