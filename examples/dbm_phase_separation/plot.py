@@ -6,7 +6,8 @@ RUNS holds the sweep folders of run.sh (each with sweep.csv and one run folder p
   study64/      the K sweep on 64² (the main table, with study128/ for K = 1e-5)
   study128/     the K that need Δx = 1/128
   conv<n>/      the convergence runs on n² (optional)
-  box<n>/       the same case in a box n times as large, same Δx and noise wavelength (optional)
+  box<n>*/      the same case in a box n times as large, same Δx and noise wavelength, and box1_seed<s>/
+                with another noise seed (the spread of the realisations; optional)
   <other>/      sensitivity sweeps (noise amplitude, quench, noise wavelength; optional)
 Writes table.md (per K: t_SD, R_SD, D_max, u_DG, the peaks of L(t) and D^F(t); the fits of eqs. 34,
 36, 37 beside the paper's; the convergence, window, sensitivity and box tables), fig63.png, fig64.png
@@ -51,7 +52,7 @@ def load(folder):
     folder_run = Run.open(folder)
     cfg, s = folder_run.config, folder_run.series
     run = {"folder": folder, "K": cfg["model"]["K"], "n": cfg["grid"]["nx"], "dt": cfg["run"]["dt"],
-           "box": cfg["grid"]["nx"] * cfg["grid"]["dx"],
+           "box": cfg["grid"]["nx"] * cfg["grid"]["dx"], "seed": cfg["initial"]["seed"],
            "noise": cfg["initial"]["noise"], "T0": cfg["initial"]["T"],
            "wavelength": cfg["initial"].get("noise_wavelength", 0.0), "series": s,
            "threshold": cfg.get("output", {}).get("threshold", cfg["initial"]["rho0"])}
@@ -176,41 +177,45 @@ def window_tables(study, conv):
 
 
 def box_table(box_runs, study):
-    """The box-size check: each run of a larger box beside the study's run of its K (same Δx, same noise
-    wavelength), with the relative differences of R_SD, D_max and u_DG and the shifts of the times."""
-    columns = ["K", "box", "grid", "t_SD", "R_SD", "R_SD/box", "D_max", "u_DG", "peak of D^F at t",
+    """The box-size check: each run of a larger box (or of box 1 with another noise seed, the spread of
+    the realisations) beside the study's run of its K (same Δx, same noise wavelength), with the relative
+    differences of R_SD, D_max and u_DG and the shifts of the times."""
+    columns = ["K", "box", "seed", "grid", "t_SD", "R_SD", "R_SD/box", "D_max", "u_DG", "peak of D^F at t",
                "peak of L(ρ_th=1.2) at t", "peak of L(ρ_th=1.4) at t"]
-    lines = ["### box size (the same Δx = 1/64 and noise wavelength 1/16; the study's box is 1)", "",
+    lines = ["### box size and noise seed (the same Δx = 1/64 and noise wavelength 1/16; the study: box 1, seed 7)", "",
              "| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
-    cells = lambda r: [f"{r['K']:g}", f"{r['box']:g}", f"{r['n']}²", f"{r['t_SD']:.3f}", f"{r['R_SD']:.4f}",
+    cells = lambda r: [f"{r['K']:g}", f"{r['box']:g}", f"{r['seed']}", f"{r['n']}²", f"{r['t_SD']:.3f}", f"{r['R_SD']:.4f}",
                        f"{r['R_SD'] / r['box']:.3f}", f"{r['D_max']:.4f}", f"{r['u_DG']:.4f}", f"{r['t_DF']:.3f}",
                        f"{r['L_peaks'].get(1.2, float('nan')):.3f}", f"{r['L_peaks'].get(1.4, float('nan')):.3f}"]
-    notes = []
-    for big in sorted(box_runs, key=lambda r: r["K"]):
+    notes, tabulated = [], []
+    for big in sorted(box_runs, key=lambda r: (r["K"], r["box"])):
         base = [r for r in study if np.isclose(r["K"], big["K"]) and np.isclose(r["box"] / r["n"], big["box"] / big["n"])]
-        rows = base[:1] + [big]
-        lines += ["| " + " | ".join(cells(r)) + " |" for r in rows]
+        shown = any(np.isclose(big["K"], r["K"]) for r in tabulated)  # the study's row once per K
+        tabulated += [big]
+        lines += ["| " + " | ".join(cells(r)) + " |" for r in ([] if shown else base[:1]) + [big]]
         if base:
             b = base[0]
             rel = lambda key: f"{(big[key] - b[key]) / b[key]:+.1%}"
-            notes.append(f"- K = {big['K']:g}, box {big['box']:g} against box 1: t_SD {big['t_SD'] - b['t_SD']:+.2f}, "
+            notes.append(f"- K = {big['K']:g}, box {big['box']:g} seed {big['seed']} against the study: t_SD {big['t_SD'] - b['t_SD']:+.2f}, "
                          f"R_SD {rel('R_SD')}, D_max {rel('D_max')}, u_DG {rel('u_DG')}, peak of D^F "
                          f"{big['t_DF'] - b['t_DF']:+.2f}, peak of L(1.2) {big['L_peaks'][1.2] - b['L_peaks'][1.2]:+.2f}")
     return lines + [""] + notes + [""]
 
 
 def fig_box(box_runs, study, out):
-    """R(t), D(t) and L(t) per unit area (ρ_th = 1.2) of the larger box beside the study's box 1."""
+    """R(t), D(t) and L(t) per unit area (ρ_th = 1.2) of the larger box and of the other seed beside the study's."""
     fig, ax = plt.subplots(1, 3, figsize=(14, 4))
-    for big, col in zip(sorted(box_runs, key=lambda r: r["K"]), ("C0", "C3")):
-        for r, style in [(b, "-") for b in study if np.isclose(b["K"], big["K"])] + [(big, "--")]:
-            s, label = r["series"], f"K={r['K']:g}, box {r['box']:g}"
-            ax[0].plot(s["time"], s["R"], style, color=col, label=label)
-            ax[1].plot(s["time"], s["D"], style, color=col, label=label)
-            ax[2].plot(s["time"], s["L"] / r["box"] ** 2, style, color=col, label=label)
+    colour = {K: f"C{i}" for i, K in enumerate(sorted({r["K"] for r in box_runs}))}
+    base = [(b, "-") for b in study if b["K"] in colour]
+    for r, style in base + [(r, "--" if r["box"] > 1 else ":") for r in box_runs]:
+        s, col, label = r["series"], colour[r["K"]], f"K={r['K']:g}, box {r['box']:g}, seed {r['seed']}"
+        ax[0].plot(s["time"], s["R"], style, color=col, label=label)
+        ax[1].plot(s["time"], s["D"], style, color=col, label=label)
+        ax[2].plot(s["time"], s["L"] / r["box"] ** 2, style, color=col, label=label)
     for a, name in zip(ax, ("R = 2π/k1", "D (eq. 35)", "L(ρ_th=1.2) per unit area")):
-        a.set(xlabel="t", ylabel=name, title=f"{name}: box 1 (solid), box 2 (dashed), Δx = 1/64")
+        a.set(xlabel="t", ylabel=name, title=name)
         a.legend(fontsize=7)
+    fig.suptitle("box 1, seed 7 (the study: solid), box 1, seed 8 (dotted), box 2, seed 7 (dashed); Δx = 1/64", fontsize=9)
     fig.tight_layout()
     fig.savefig(out, dpi=60)
 

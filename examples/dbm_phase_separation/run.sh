@@ -41,7 +41,9 @@ for part in $parts; do
       sweep -o "$out/noise0.02" --set model.K=$sensitivity_K --set initial.noise=0.02
       sweep -o "$out/quench0.80" --set model.K=$sensitivity_K --set initial.T=0.80 ;;
     box)  # R_SD is 0.27-0.35 of the box 1 for K >= 1.8e-4: the same Δx and noise wavelength in a box 2 x 2
-      sweep -o "$out/box2" --set model.K=1.8e-4,3e-4 --set grid.nx=128 --set grid.ny=128 ;;
+      # (128², 12 min each at load average 8-10), and box 1 with another noise seed: the realisations' spread
+      sweep -o "$out/box2" --set model.K=1.8e-4,3e-4 --set grid.nx=128 --set grid.ny=128
+      sweep -o "$out/box1_seed8" --set model.K=1.8e-4,3e-4 --set initial.seed=8 ;;
     *) echo "unknown part '$part' (study, conv, sensitivity, box)" >&2; exit 2 ;;
   esac
 done
