@@ -6,9 +6,12 @@ RUNS holds the sweep folders of run.sh (each with sweep.csv and one run folder p
   study64/      the K sweep on 64² (the main table, with study128/ for K = 1e-5)
   study128/     the K that need Δx = 1/128
   conv<n>/      the convergence runs on n² (optional)
+  box<n>*/      the same case in a box n times as large, same Δx and noise wavelength, and box1_seed<s>/
+                with another noise seed (the spread of the realisations; optional)
   <other>/      sensitivity sweeps (noise amplitude, quench, noise wavelength; optional)
 Writes table.md (per K: t_SD, R_SD, D_max, u_DG, the peaks of L(t) and D^F(t); the fits of eqs. 34,
-36, 37 beside the paper's; the convergence, window and sensitivity tables), fig63.png, fig64.png.
+36, 37 beside the paper's; the convergence, window, sensitivity and box tables), fig63.png, fig64.png
+and, with box<n>/, figbox.png.
 
 Definitions (README): t_SD = time of the peak of D(t) (eq. 35 of Δ*); R_SD = R(t_SD) with R = 2π/k₁
 (first moment of the structure factor); D_max = D(t_SD); u_DG = dR/dt in the early domain-growth
@@ -49,6 +52,7 @@ def load(folder):
     folder_run = Run.open(folder)
     cfg, s = folder_run.config, folder_run.series
     run = {"folder": folder, "K": cfg["model"]["K"], "n": cfg["grid"]["nx"], "dt": cfg["run"]["dt"],
+           "box": cfg["grid"]["nx"] * cfg["grid"]["dx"], "seed": cfg["initial"]["seed"],
            "noise": cfg["initial"]["noise"], "T0": cfg["initial"]["T"],
            "wavelength": cfg["initial"].get("noise_wavelength", 0.0), "series": s,
            "threshold": cfg.get("output", {}).get("threshold", cfg["initial"]["rho0"])}
@@ -117,6 +121,16 @@ def eq34_text(f):
     return f"e = {f['e']:.3g}, f = {f['f']:.3g}, {g}, h = {np.cbrt(f['h3']):.3g}"
 
 
+def eq34_leave_one_out(runs):
+    """How well the points determine the eq. 34 cubic: its coefficients with each K left out in turn."""
+    K, u = np.array([r["K"] for r in runs]), np.array([r["u_DG"] for r in runs])
+    lines = [f"eq. 34 with one K left out (u_DG mean {u.mean():.4f}, standard deviation {u.std():.4f}):", ""]
+    for i in range(len(K)):
+        keep = np.arange(len(K)) != i
+        lines.append(f"- without K = {K[i]:g}: {eq34_text(eq34_fit(K[keep], u[keep]))}")
+    return lines + [""]
+
+
 def fit_text(f):
     t = (f"eq. 36 t_SD = a + bK: a = {f['a']:.3f}, b = {f['b']:.3g} (paper 0.066, 1.51e3); "
          f"eq. 37 D_max = c + dK^-0.5: c = {f['c']:.3f}, d = {f['d']:.3g} (paper -0.073, 3.30e-3)")
@@ -160,6 +174,50 @@ def window_tables(study, conv):
                              else np.ptp([r["t_end"] for r in same]) < 1e-6)  # [t_SD, t_end]: one end for all
         lines += [row(r, [f"{u_dg(r, w):.4f}" if reached(w) else "—" for w in WINDOWS]) for r in same]
     return lines + [""]
+
+
+def box_table(box_runs, study):
+    """The box-size check: each run of a larger box (or of box 1 with another noise seed, the spread of
+    the realisations) beside the study's run of its K (same Δx, same noise wavelength), with the relative
+    differences of R_SD, D_max and u_DG and the shifts of the times."""
+    columns = ["K", "box", "seed", "grid", "t_SD", "R_SD", "R_SD/box", "D_max", "u_DG", "peak of D^F at t",
+               "peak of L(ρ_th=1.2) at t", "peak of L(ρ_th=1.4) at t"]
+    lines = ["### box size and noise seed (the same Δx = 1/64 and noise wavelength 1/16; the study: box 1, seed 7)", "",
+             "| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+    cells = lambda r: [f"{r['K']:g}", f"{r['box']:g}", f"{r['seed']}", f"{r['n']}²", f"{r['t_SD']:.3f}", f"{r['R_SD']:.4f}",
+                       f"{r['R_SD'] / r['box']:.3f}", f"{r['D_max']:.4f}", f"{r['u_DG']:.4f}", f"{r['t_DF']:.3f}",
+                       f"{r['L_peaks'].get(1.2, float('nan')):.3f}", f"{r['L_peaks'].get(1.4, float('nan')):.3f}"]
+    notes, tabulated = [], []
+    for big in sorted(box_runs, key=lambda r: (r["K"], r["box"])):
+        base = [r for r in study if np.isclose(r["K"], big["K"]) and np.isclose(r["box"] / r["n"], big["box"] / big["n"])]
+        shown = any(np.isclose(big["K"], r["K"]) for r in tabulated)  # the study's row once per K
+        tabulated += [big]
+        lines += ["| " + " | ".join(cells(r)) + " |" for r in ([] if shown else base[:1]) + [big]]
+        if base:
+            b = base[0]
+            rel = lambda key: f"{(big[key] - b[key]) / b[key]:+.1%}"
+            notes.append(f"- K = {big['K']:g}, box {big['box']:g} seed {big['seed']} against the study: t_SD {big['t_SD'] - b['t_SD']:+.2f}, "
+                         f"R_SD {rel('R_SD')}, D_max {rel('D_max')}, u_DG {rel('u_DG')}, peak of D^F "
+                         f"{big['t_DF'] - b['t_DF']:+.2f}, peak of L(1.2) {big['L_peaks'][1.2] - b['L_peaks'][1.2]:+.2f}")
+    return lines + [""] + notes + [""]
+
+
+def fig_box(box_runs, study, out):
+    """R(t), D(t) and L(t) per unit area (ρ_th = 1.2) of the larger box and of the other seed beside the study's."""
+    fig, ax = plt.subplots(1, 3, figsize=(14, 4))
+    colour = {K: f"C{i}" for i, K in enumerate(sorted({r["K"] for r in box_runs}))}
+    base = [(b, "-") for b in study if b["K"] in colour]
+    for r, style in base + [(r, "--" if r["box"] > 1 else ":") for r in box_runs]:
+        s, col, label = r["series"], colour[r["K"]], f"K={r['K']:g}, box {r['box']:g}, seed {r['seed']}"
+        ax[0].plot(s["time"], s["R"], style, color=col, label=label)
+        ax[1].plot(s["time"], s["D"], style, color=col, label=label)
+        ax[2].plot(s["time"], s["L"] / r["box"] ** 2, style, color=col, label=label)
+    for a, name in zip(ax, ("R = 2π/k1", "D (eq. 35)", "L(ρ_th=1.2) per unit area")):
+        a.set(xlabel="t", ylabel=name, title=name)
+        a.legend(fontsize=7)
+    fig.suptitle("box 1, seed 7 (the study: solid), box 1, seed 8 (dotted), box 2, seed 7 (dashed); Δx = 1/64", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out, dpi=60)
 
 
 def nearest_frame(run, t):
@@ -267,7 +325,7 @@ def main():
     study = group(runs_dir, "study64") + group(runs_dir, "study128")
     study.sort(key=lambda r: r["K"])
     f = fits(study)
-    lines = ["## The study (Δx = 1/64; K = 1e-5 on 1/128)", ""] + table(study, "per K") + [fit_text(f), ""]
+    lines = ["## The study (Δx = 1/64; K = 1e-5 on 1/128)", ""] + table(study, "per K") + [fit_text(f), ""] + eq34_leave_one_out(study)
     conv = [r for d in sorted(runs_dir.glob("conv*")) for r in group(runs_dir, d.name)]
     if conv:  # Δe_T of a K at the end all its grids ran to; u_DG the run's own
         rows = []
@@ -279,14 +337,18 @@ def main():
                              "shortest run of that K)")
     lines += window_tables(study, conv)
     for d in sorted(p for p in runs_dir.iterdir() if (p / "sweep.csv").is_file()):
-        if d.name in ("study64", "study128") or d.name.startswith("conv"):
+        if d.name in ("study64", "study128") or d.name.startswith(("conv", "box")):
             continue
         other = group(runs_dir, d.name)
         if len(other) >= 2:
-            same = [r for r in study if r["n"] == 64 and any(np.isclose(r["K"], o["K"]) for o in other)]
+            same = [r for r in study if any(np.isclose(r["K"], o["K"]) and r["n"] == o["n"] for o in other)]
             lines += table(other, f"sensitivity: {d.name}") + [f"fits of {d.name}: " + fit_text(fits(other)), ""]
             if len(same) >= 2:
                 lines += ["the study's fits over the same K: " + fit_text(fits(same)), ""]
+    boxes = [r for d in sorted(runs_dir.glob("box*")) for r in group(runs_dir, d.name)]
+    if boxes:
+        lines += box_table(boxes, study)
+        fig_box(boxes, study, HERE / "figbox.png")
     (HERE / "table.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
     fig63(study, HERE / "fig63.png")
