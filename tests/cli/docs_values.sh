@@ -13,23 +13,25 @@
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_WAIT_POLICY=passive SHOCKFIELD="$SF" PYTHONPATH="$(cd "$(dirname "$SF")" && pwd)/python"
-examples=(dbm_sod md_npt_tri_relax analysis_minkowski)
-[ "${SLOW:-0}" = 1 ] && examples+=(md_shock_piston dbm_detonation phasefield_domain pd_crack_branching granular_chain pd_kalthoff_winkler pd_single_crystal pd_polycrystal)
+examples=(dbm_sod md_npt_tri_relax analysis_minkowski python_sweep)
+[ "${SLOW:-0}" = 1 ] && examples+=(md_shock_piston dbm_detonation phasefield_domain pd_crack_branching granular_chain pd_kalthoff_winkler pd_single_crystal pd_polycrystal phasefield_shapes)
 mkdir -p "$WORK/examples" "$WORK/printed"
 cp "$ROOT/examples/run_common.sh" "$WORK/examples/"
 # The copies' repository root is $WORK: their scripts find python/ and tests/fixtures/ there.
 ln -s "$ROOT/python" "$ROOT/tests" "$WORK/"
-# run.sh's arguments: the run folder, except where the script takes the binary first.
+# run.sh's arguments: the run folder, except where the script takes the binary first or reads the
+# folder from $OUT.
 arguments() {
   case "$1" in
     analysis_minkowski) echo "$SF" "$WORK/runs/$1" ;;
+    python_sweep) ;;
     *) echo "$WORK/runs/$1" ;;
   esac
 }
 for example in "${examples[@]}"; do
   cp -r "$ROOT/examples/$example" "$WORK/examples/"
   # from $WORK, the copies' repository root (dbm_detonation's plot finds python/ from there)
-  (cd "$WORK" && bash "examples/$example/run.sh" $(arguments "$example")) > "$WORK/printed/$example.txt" \
+  (cd "$WORK" && OUT="$WORK/runs/$example" bash "examples/$example/run.sh" $(arguments "$example")) > "$WORK/printed/$example.txt" \
     || fail "examples/$example/run.sh failed: $(tail -5 "$WORK/printed/$example.txt")"
 done
 check() { /usr/bin/python3 "$ROOT/tests/cli/docs_current.py" "$SF" "$ROOT" --printed "$@"; }
