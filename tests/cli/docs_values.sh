@@ -14,7 +14,7 @@ source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_WAIT_POLICY=passive SHOCKFIELD="$SF" PYTHONPATH="$(cd "$(dirname "$SF")" && pwd)/python"
 examples=(dbm_sod md_npt_tri_relax analysis_minkowski python_sweep md_triclinic_shear)
-[ "${SLOW:-0}" = 1 ] && examples+=(md_shock_piston dbm_detonation phasefield_domain pd_crack_branching granular_chain pd_kalthoff_winkler pd_single_crystal pd_polycrystal phasefield_shapes mpm_tensile_cavity phasefield_from_md)
+[ "${SLOW:-0}" = 1 ] && examples+=(md_shock_piston dbm_detonation phasefield_domain pd_crack_branching granular_chain pd_kalthoff_winkler pd_single_crystal pd_polycrystal phasefield_shapes mpm_tensile_cavity phasefield_from_md pd_ofhc_compression)
 mkdir -p "$WORK/examples" "$WORK/printed"
 cp "$ROOT/examples/run_common.sh" "$WORK/examples/"
 # The copies' repository root is $WORK: their scripts find python/ and tests/fixtures/ there.
