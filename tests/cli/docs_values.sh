@@ -28,8 +28,12 @@ arguments() {
     *) echo "$WORK/runs/$1" ;;
   esac
 }
+for example in "${examples[@]}"; do cp -r "$ROOT/examples/$example" "$WORK/examples/"; done
+# The other examples linked, for the case files one example reads from another (python_sweep's PD bar).
+for folder in "$ROOT"/examples/*/; do
+  [ -e "$WORK/examples/$(basename "$folder")" ] || ln -s "$folder" "$WORK/examples/$(basename "$folder")"
+done
 for example in "${examples[@]}"; do
-  cp -r "$ROOT/examples/$example" "$WORK/examples/"
   # from $WORK, the copies' repository root (dbm_detonation's plot finds python/ from there)
   (cd "$WORK" && OUT="$WORK/runs/$example" bash "examples/$example/run.sh" $(arguments "$example")) > "$WORK/printed/$example.txt" \
     || fail "examples/$example/run.sh failed: $(tail -5 "$WORK/printed/$example.txt")"
