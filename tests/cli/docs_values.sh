@@ -5,16 +5,19 @@
 # `<!-- value: EXAMPLE LABEL -->` of those examples in docs/ and examples/*/README.md is compared with
 # it. The check must fail on a planted wrong number (0.3042 where dbm_sod prints p* = 0.30323), on a
 # label the run does not print and on an example whose output no page quotes.
-# Default suite: dbm_sod, md_npt_tri_relax and analysis_minkowski (about 9 s of CPU). SLOW=1 (test
-# slow.docs_values) adds md_shock_piston (about 6 min of CPU: the Hugoniot state and the two-part
-# comparison quoted by docs/md.md) and the examples of a few seconds to a minute each: dbm_detonation,
-# phasefield_domain. (MD on the same thread count repeats itself bit for bit on one machine, so its
-# values are compared to their digits; two runs of each MD example printed the same.)
+# Default suite: dbm_sod, md_npt_tri_relax, analysis_minkowski, python_sweep and md_triclinic_shear
+# (about 14 s of CPU). SLOW=1 (test slow.docs_values) adds md_shock_piston (about 6 min of CPU: the
+# Hugoniot state and the two-part comparison quoted by docs/md.md) and the examples of 5-30 s of CPU
+# each (about 2.5 min together). (MD on the same thread count repeats itself bit for bit on one
+# machine, so its values are compared to their digits; two runs of each MD example printed the same;
+# python_sweep, run twice, printed the same too.)
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_WAIT_POLICY=passive SHOCKFIELD="$SF" PYTHONPATH="$(cd "$(dirname "$SF")" && pwd)/python"
 examples=(dbm_sod md_npt_tri_relax analysis_minkowski python_sweep md_triclinic_shear)
-[ "${SLOW:-0}" = 1 ] && examples+=(md_shock_piston dbm_detonation phasefield_domain pd_crack_branching granular_chain pd_kalthoff_winkler pd_single_crystal pd_polycrystal phasefield_shapes mpm_tensile_cavity phasefield_from_md pd_ofhc_compression)
+[ "${SLOW:-0}" = 1 ] && examples+=(md_shock_piston dbm_detonation phasefield_domain phasefield_shapes
+  phasefield_from_md pd_crack_branching pd_kalthoff_winkler pd_single_crystal pd_polycrystal pd_ofhc_compression
+  granular_chain mpm_tensile_cavity)
 mkdir -p "$WORK/examples" "$WORK/printed"
 cp "$ROOT/examples/run_common.sh" "$WORK/examples/"
 # The copies' repository root is $WORK: their scripts find python/ and tests/fixtures/ there.
