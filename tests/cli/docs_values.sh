@@ -17,7 +17,7 @@ export OMP_WAIT_POLICY=passive SHOCKFIELD="$SF" PYTHONPATH="$(cd "$(dirname "$SF
 examples=(dbm_sod md_npt_tri_relax analysis_minkowski python_sweep md_triclinic_shear)
 [ "${SLOW:-0}" = 1 ] && examples+=(md_shock_piston dbm_detonation phasefield_domain phasefield_shapes
   phasefield_from_md pd_crack_branching pd_kalthoff_winkler pd_single_crystal pd_polycrystal pd_ofhc_compression
-  granular_chain mpm_tensile_cavity)
+  granular_chain mpm_tensile_cavity mpm_spall)
 mkdir -p "$WORK/examples" "$WORK/printed"
 cp "$ROOT/examples/run_common.sh" "$WORK/examples/"
 # The copies' repository root is $WORK: their scripts find python/ and tests/fixtures/ there.
