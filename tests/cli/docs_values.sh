@@ -6,11 +6,11 @@
 # it. The check must fail on a planted wrong number (0.3042 where dbm_sod prints p* = 0.30323), on a
 # label the run does not print and on an example whose output no page quotes.
 # Default suite: dbm_sod, md_npt_tri_relax, analysis_minkowski, python_sweep and md_triclinic_shear
-# (about 14 s of CPU). SLOW=1 (test slow.docs_values) adds md_shock_piston (about 6 min of CPU: the
-# Hugoniot state and the two-part comparison quoted by docs/md.md) and the examples of 5-30 s of CPU
-# each (about 2.5 min together). (MD on the same thread count repeats itself bit for bit on one
-# machine, so its values are compared to their digits; two runs of each MD example printed the same;
-# python_sweep, run twice, printed the same too.)
+# (about 14 s of CPU). SLOW=1 (test slow.docs_values) adds md_shock_piston (the Hugoniot state and
+# the two-part comparison quoted by docs/md.md) and the examples of 4-30 s of CPU each: about 4 min
+# of CPU in all, 7.5 min wall on a loaded 2-core machine. (MD on the same thread count repeats itself
+# bit for bit on one machine, so its values are compared to their digits; two runs of each MD example
+# printed the same; python_sweep, run twice, printed the same too.)
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_WAIT_POLICY=passive SHOCKFIELD="$SF" PYTHONPATH="$(cd "$(dirname "$SF")" && pwd)/python"
