@@ -21,3 +21,5 @@ done
 PYTHONPATH=python /usr/bin/python3 -m shockfield_plot.mpm_plots cavity "$runs/v100" "$runs/v400" --out "$here/cavity.png"
 /usr/bin/python3 "$here/tension.py" "$runs/v100" "$runs/v400" --times 4e-9 8e-9 --out "$here/pressure.png" \
     --csv "$here/cavity_area.csv"
+# The README's table, one line per run and time (tests/cli/docs_values.sh checks it): "v100 t = 14 ns: A_um2 = 128.61, Phi = -0.6280"
+awk -F, 'NR > 1 { printf "%s t = %g ns: A_um2 = %.2f, Phi = %s\n", $1, $2 * 1e9, $3 * 1e12, $4 }' "$here/cavity_area.csv"

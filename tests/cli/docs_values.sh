@@ -5,22 +5,40 @@
 # `<!-- value: EXAMPLE LABEL -->` of those examples in docs/ and examples/*/README.md is compared with
 # it. The check must fail on a planted wrong number (0.3042 where dbm_sod prints p* = 0.30323), on a
 # label the run does not print and on an example whose output no page quotes.
-# Default suite: dbm_sod and md_npt_tri_relax (about 7 s of CPU). SLOW=1 (test slow.docs_values,
-# about 6 min of CPU) adds md_shock_piston: the Hugoniot state and the two-part comparison quoted by
-# docs/md.md. (MD on the same thread count repeats itself bit for bit on one machine, so its values
-# are compared to their digits; two runs of each MD example printed the same.)
+# Default suite: dbm_sod, md_npt_tri_relax, analysis_minkowski, python_sweep and md_triclinic_shear
+# (about 14 s of CPU). SLOW=1 (test slow.docs_values) adds md_shock_piston (the Hugoniot state and
+# the two-part comparison quoted by docs/md.md) and the examples of 4-30 s of CPU each: about 4 min
+# of CPU in all, 7.5 min wall on a loaded 2-core machine. (MD on the same thread count repeats itself
+# bit for bit on one machine, so its values are compared to their digits; two runs of each MD example
+# printed the same; python_sweep, run twice, printed the same too.)
 source "$(dirname "$0")/lib.bash"
 set -e
 export OMP_WAIT_POLICY=passive SHOCKFIELD="$SF" PYTHONPATH="$(cd "$(dirname "$SF")" && pwd)/python"
-examples=(dbm_sod md_npt_tri_relax)
-[ "${SLOW:-0}" = 1 ] && examples+=(md_shock_piston)
+examples=(dbm_sod md_npt_tri_relax analysis_minkowski python_sweep md_triclinic_shear)
+[ "${SLOW:-0}" = 1 ] && examples+=(md_shock_piston dbm_detonation phasefield_domain phasefield_shapes
+  phasefield_from_md pd_crack_branching pd_kalthoff_winkler pd_single_crystal pd_polycrystal pd_ofhc_compression
+  granular_chain mpm_tensile_cavity mpm_spall)
 mkdir -p "$WORK/examples" "$WORK/printed"
 cp "$ROOT/examples/run_common.sh" "$WORK/examples/"
 # The copies' repository root is $WORK: their scripts find python/ and tests/fixtures/ there.
 ln -s "$ROOT/python" "$ROOT/tests" "$WORK/"
+# run.sh's arguments: the run folder, except where the script takes the binary first or reads the
+# folder from $OUT.
+arguments() {
+  case "$1" in
+    analysis_minkowski) echo "$SF" "$WORK/runs/$1" ;;
+    python_sweep) ;;
+    *) echo "$WORK/runs/$1" ;;
+  esac
+}
+for example in "${examples[@]}"; do cp -r "$ROOT/examples/$example" "$WORK/examples/"; done
+# The other examples linked, for the case files one example reads from another (python_sweep's PD bar).
+for folder in "$ROOT"/examples/*/; do
+  [ -e "$WORK/examples/$(basename "$folder")" ] || ln -s "$folder" "$WORK/examples/$(basename "$folder")"
+done
 for example in "${examples[@]}"; do
-  cp -r "$ROOT/examples/$example" "$WORK/examples/"
-  sh "$WORK/examples/$example/run.sh" "$WORK/runs/$example" > "$WORK/printed/$example.txt" \
+  # from $WORK, the copies' repository root (dbm_detonation's plot finds python/ from there)
+  (cd "$WORK" && OUT="$WORK/runs/$example" bash "examples/$example/run.sh" $(arguments "$example")) > "$WORK/printed/$example.txt" \
     || fail "examples/$example/run.sh failed: $(tail -5 "$WORK/printed/$example.txt")"
 done
 check() { /usr/bin/python3 "$ROOT/tests/cli/docs_current.py" "$SF" "$ROOT" --printed "$@"; }
