@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Particle frames as LAMMPS text dumps ([output] dump = true, granular and pd;
-# docs/conventions.md): read back by shockfield's own dump reader (`analyze atoms <run folder>`:
+# Particle frames as LAMMPS text dumps ([output] dump = true, granular and pd; dump_every,
+# macroparticle; docs/conventions.md): read back by shockfield's own dump reader (`analyze atoms <run folder>`:
 # every frame, the chain's and the bar's neighbours counted) and by LAMMPS `read_dump` and
 # `rerun` (Debian lammps; that part is skipped with a message when `lmp` is absent): every
 # particle, positions and velocities equal to the file's to the last bit (extremes compared, as
@@ -79,7 +79,9 @@ for name in sys.argv[1:]:
 PYEOF
 }
 # lammps_extremes RUN TYPES: the same numbers from LAMMPS, one line per frame of `rerun` over the
-# run's dumps after a read_dump of the first (which creates the atoms).
+# run's dumps after a read_dump of the first (which creates the atoms with the dump's ids, `add keep`:
+# a macroparticle rod cut from a lattice has ids with gaps, which `add yes` would renumber, and rerun
+# matches atoms by id).
 lammps_extremes() {
   local files
   files=$(ls "$1"/dumps/dump.*.lammpstrj | tr '\n' ' ')
@@ -90,7 +92,7 @@ boundary s s s
 region box block -1 1 -1 1 -1 1
 create_box $2 box
 mass * 1.0
-read_dump $(ls "$1"/dumps/dump.*.lammpstrj | head -1) 0 x y z vx vy vz box yes add yes
+read_dump $(ls "$1"/dumps/dump.*.lammpstrj | head -1) 0 x y z vx vy vz box yes add keep
 compute xlo all reduce min x
 compute xhi all reduce max x
 compute zlo all reduce min z
@@ -107,7 +109,7 @@ EOF
   (cd "$1" && lmp -nocite -log none -in in.rerun > lmp.out 2>&1) || fail "LAMMPS rerun of $1: $(grep -m1 ERROR "$1/lmp.out")"
   awk '/^ *Step /{on = 1; next} /^Loop time/{on = 0} on && $1 ~ /^[0-9]+$/ {$1 = ""; print substr($0, 2)}' "$1/lmp.out"
 }
-for run in granular:2 pd:1; do
+for run in granular:2 pd:1 macroparticle:1; do
   name=${run%:*}
   ours=$(extremes "$WORK/$name"/dumps/dump.*.lammpstrj)
   theirs=$(lammps_extremes "$WORK/$name" "${run#*:}")
@@ -119,4 +121,4 @@ assert ours == theirs, (ours, theirs)
 PYEOF
   echo "ok: LAMMPS rerun read $(echo "$ours" | wc -l) $name frames, every particle, the same extremes of x, z, vx, vz"
 done
-echo "particle_dumps: granular and pd dumps read by analyze atoms and by LAMMPS read_dump/rerun"
+echo "particle_dumps: granular, pd and macroparticle dumps read by analyze atoms and by LAMMPS read_dump/rerun"
