@@ -3,7 +3,8 @@
 //   delaunay_bench generate-fcc N FILE   an fcc crystal of about N atoms (lattice constant 1, a
 //                                        cube of unit cells) with Gaussian thermal displacements
 //                                        of 0.03 per coordinate (seeded), CSV
-//   delaunay_bench generate-lattice sc|fcc N FILE   the exact lattice (no displacements), CSV
+//   delaunay_bench generate-lattice sc|fcc N FILE [A]   the exact lattice (no displacements) of
+//                                        lattice constant A (default 1), CSV
 //   delaunay_bench delaunay DIM FILE     time of our Delaunay division of the points of FILE
 //   delaunay_bench queries N Q [fcc]     nearest, 8-nearest and radius query rates (per second
 //                                        of the thread's CPU time) of the SHT beside nanoflann's
@@ -62,12 +63,12 @@ void write_csv(const std::string& file, const std::vector<std::array<double, 3>>
                      : fmt::format("{:.17g},{:.17g},{:.17g}\n", p[0], p[1], p[2]));
 }
 
-/// A cube of unit cells (lattice constant 1) of about `atoms` atoms: simple cubic, or fcc with 4
+/// A cube of unit cells (lattice constant a) of about `atoms` atoms: simple cubic, or fcc with 4
 /// atoms per cell at (0,0,0), (½,½,0), (½,0,½), (0,½,½); each coordinate displaced by a Gaussian of
 /// standard deviation sigma (σ = 0.03 is about copper's room-temperature vibration, √⟨u²⟩ ≈
 /// 0.08–0.1 Å of a = 3.6 Å; σ = 0 leaves the exact lattice, every in-sphere test degenerate).
 std::vector<std::array<double, 3>> crystal(const std::string& kind, std::size_t atoms, double sigma,
-                                           std::uint64_t seed) {
+                                           std::uint64_t seed, double a = 1.0) {
   const std::vector<std::array<double, 3>> fcc{{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
   const std::vector<std::array<double, 3>> sc{{0, 0, 0}};
   if (kind != "sc" && kind != "fcc") throw std::invalid_argument("lattice kind: sc or fcc");
@@ -82,7 +83,8 @@ std::vector<std::array<double, 3>> crystal(const std::string& kind, std::size_t 
     for (int j = 0; j < cells; ++j)
       for (int k = 0; k < cells; ++k)
         for (const auto& b : basis)
-          p.push_back({displaced(i + b[0]), displaced(j + b[1]), displaced(k + b[2])});
+          p.push_back(
+              {displaced(a * (i + b[0])), displaced(a * (j + b[1])), displaced(a * (k + b[2]))});
   return p;
 }
 
@@ -193,8 +195,9 @@ int main(int argc, char** argv) {
       write_csv(argv[3], crystal("fcc", std::stoull(argv[2]), 0.03, 11), 3);
       return 0;
     }
-    if (mode == "generate-lattice" && argc == 5) {
-      write_csv(argv[4], crystal(argv[2], std::stoull(argv[3]), 0.0, 0), 3);
+    if (mode == "generate-lattice" && (argc == 5 || argc == 6)) {
+      const double a = argc == 6 ? std::stod(argv[5]) : 1.0;
+      write_csv(argv[4], crystal(argv[2], std::stoull(argv[3]), 0.0, 0, a), 3);
       return 0;
     }
     if (mode == "delaunay" && argc == 4) return argv[2][0] == '2' ? delaunay<2>(argv[3]) : delaunay<3>(argv[3]);
@@ -206,7 +209,7 @@ int main(int argc, char** argv) {
   }
   std::fprintf(stderr,
                "usage: delaunay_bench generate DIM N FILE | generate-fcc N FILE | generate-lattice "
-               "sc|fcc N FILE | delaunay DIM FILE "
+               "sc|fcc N FILE [A] | delaunay DIM FILE "
                "| queries N Q [fcc]\n");
   return 2;
 }

@@ -13,7 +13,8 @@
 # only the wall time). `uptime` is printed before and after: report medians and the load.
 # QHULL=0 in the environment leaves SciPy/Qhull out (a rerun of ours against CGAL). SETS (default
 # "uniform3 fcc3 uniform2") chooses the data sets; sc3 and fcclat3 are the exact simple cubic and
-# fcc lattices of about N3D points (generate-lattice, every in-sphere test degenerate). QUERIES=0
+# fcc lattices of about N3D points (generate-lattice, lattice constant 1: every in-sphere test
+# degenerate), fcccu3 the fcc lattice of copper's a = 3.615 (coordinates rounded, near-degenerate). QUERIES=0
 # leaves the query rates out.
 set -eu
 B="$1"; N3="${2:-1000000}"; N2="${3:-1000000}"; ROUNDS="${4:-3}"; Q="${5:-200000}"
@@ -28,6 +29,7 @@ for set in $SETS; do
     uniform2) "$B/bench/delaunay_bench" generate 2 "$N2" "$W/$set.csv" ;;
     sc3) "$B/bench/delaunay_bench" generate-lattice sc "$N3" "$W/$set.csv" ;;
     fcclat3) "$B/bench/delaunay_bench" generate-lattice fcc "$N3" "$W/$set.csv" ;;
+    fcccu3) "$B/bench/delaunay_bench" generate-lattice fcc "$N3" "$W/$set.csv" 3.615 ;;
     *) echo "unknown data set $set" >&2; exit 2 ;;
   esac
 done

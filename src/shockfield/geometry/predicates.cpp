@@ -2,16 +2,17 @@
 // (1997) does in his stage A (differences first, then 2×2 minors), so his forward error bounds
 // apply: |computed − exact| <= c·ε·permanent, ε = 2^−53, with c = 3 + 16ε (orient 2D), 7 + 56ε
 // (orient 3D), 10 + 96ε (in-circle), 16 + 224ε (in-sphere); the permanent is the same expression
-// with every term made non-negative. Inside the bound, the sign is computed exactly: in 128-bit
-// integers when the points lie on a small dyadic grid (exact lattices, GridRows), else in expansions.
+// with every term made non-negative. Inside the bound, the sign is computed exactly: in fixed-width
+// integers when the coordinates span at most 61 bits (predicates_grid.hpp; lattices), else in
+// expansions.
 #include "shockfield/geometry/predicates.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <numeric>
 
 #include "shockfield/geometry/expansion.hpp"
+#include "shockfield/geometry/predicates_grid.hpp"
 
 namespace shockfield::geometry {
 namespace {
@@ -114,83 +115,6 @@ PointRefs<M> first(const std::array<const double*, K>& p) {
   return r;
 }
 
-/// Exact stage for points on a common dyadic grid (exact lattices with coordinates like 0.5·k):
-/// when every difference p_i − q is exact in double and equal to m·2^e, one power of two for all,
-/// with |m| < 2^kGridBits, the determinant of the integers m is evaluated exactly in 128-bit
-/// integers (it is the determinant of the differences times a positive power of two, so it has
-/// the same sign). Bounds with b = kGridBits = 23: |m| < 2^23, a lift Σ m_k² < 3·2^46, a 3×3 minor
-/// < 6·2^69, each lift·minor term < 2^120, the in-sphere sum of four < 2^122 < 2^127. Points off
-/// such a grid (perturbed positions, lattice constants like 3.615) fall through to expansions.
-constexpr int kGridBits = 23;
-__extension__ typedef __int128 Int128;  // GCC/Clang; __extension__ quiets -Wpedantic
-
-template <int N, std::size_t M>
-struct GridRows {
-  std::int64_t d[M][N] = {};  // row M−1 stays zero
-  bool valid = false;
-  explicit GridRows(const std::array<const double*, M>& p) {
-    double diff[M][N] = {};
-    double largest = 0.0;
-    for (std::size_t i = 0; i + 1 < M; ++i)
-      for (int k = 0; k < N; ++k) {
-        const double a = p[i][k], b = p[M - 1][k], x = a - b;
-        // Shewchuk's Two-Diff: the roundoff of a − b; the difference is exact when it is zero.
-        const double b_virtual = a - x, a_virtual = x + b_virtual;
-        if ((a - a_virtual) + (b_virtual - b) != 0.0) return;
-        diff[i][k] = x;
-        largest = std::max(largest, std::abs(x));
-      }
-    int exponent = 0;
-    std::frexp(largest, &exponent);  // largest < 2^exponent
-    if (largest == 0.0 || exponent < -900 || exponent > 900) return;
-    const double scale = std::ldexp(1.0, kGridBits - exponent);  // exact: a power of two
-    for (std::size_t i = 0; i + 1 < M; ++i)
-      for (int k = 0; k < N; ++k) {
-        const double m = diff[i][k] * scale;  // |m| < 2^kGridBits, exact
-        if (m != std::trunc(m)) return;
-        d[i][k] = static_cast<std::int64_t>(m);
-      }
-    valid = true;
-  }
-  Int128 minor(int i, int j) const {
-    return Int128{d[i][0]} * d[j][1] - Int128{d[j][0]} * d[i][1];
-  }
-  Int128 lift(int i) const {
-    Int128 l = 0;
-    for (int k = 0; k < N; ++k) l += Int128{d[i][k]} * d[i][k];
-    return l;
-  }
-  Int128 det3(int i, int j, int k) const {
-    return d[i][2] * minor(j, k) - d[j][2] * minor(i, k) + d[k][2] * minor(i, j);
-  }
-};
-
-int sign_of(Int128 x) { return (x > 0) - (x < 0); }
-
-/// The sign of orient<N> on the grid, or 2 when the points are not on one (see GridRows).
-template <int N>
-int orient_grid(const PointRefs<N + 1>& p) {
-  const GridRows<N, N + 1> r(p);
-  if (!r.valid) return 2;
-  if constexpr (N == 2)
-    return sign_of(r.minor(0, 1));
-  else
-    return sign_of(r.det3(0, 1, 2));
-}
-
-/// The sign of in_sphere<N> on the grid, or 2 (the same cofactor expansion as below).
-template <int N>
-int in_sphere_grid(const PointRefs<N + 2>& p) {
-  const GridRows<N, N + 2> r(p);
-  if (!r.valid) return 2;
-  if constexpr (N == 2)
-    return sign_of(r.lift(0) * r.minor(1, 2) - r.lift(1) * r.minor(0, 2) +
-                   r.lift(2) * r.minor(0, 1));
-  else
-    return sign_of((r.lift(3) * r.det3(0, 1, 2) - r.lift(2) * r.det3(0, 1, 3)) +
-                   (r.lift(1) * r.det3(0, 2, 3) - r.lift(0) * r.det3(1, 2, 3)));
-}
-
 }  // namespace
 
 template <int N>
@@ -223,7 +147,7 @@ int orient(const PointRefs<N + 1>& p) {
   double bound = 0.0;
   const double det = N == 2 ? orient2_fast(first<3>(p), bound) : orient3_fast(first<4>(p), bound);
   if (decided(det, bound)) return sign_of(det);
-  const int on_grid = orient_grid<N>(p);
+  const int on_grid = grid::orient<N>(p);
   return on_grid != 2 ? on_grid : orient_exact<N>(p);
 }
 
@@ -233,7 +157,7 @@ int in_sphere(const PointRefs<N + 2>& p) {
   const double det =
       N == 2 ? incircle_fast(first<4>(p), bound) : insphere_fast(first<5>(p), bound);
   if (decided(det, bound)) return sign_of(det);
-  const int on_grid = in_sphere_grid<N>(p);
+  const int on_grid = grid::in_sphere<N>(p);
   return on_grid != 2 ? on_grid : in_sphere_exact<N>(p);
 }
 

@@ -54,10 +54,11 @@ TEST(Predicates, RandomPointsAgreeWithBigIntegerReference) {
   check_random<3>(1500);
 }
 
-// Points on dyadic grids (integers m·2^shift), the input of the predicates' 128-bit integer
-// stage (exact lattices): small grids, where most determinants are exactly zero, and grids whose
-// differences reach 2^23 (the stage's limit: inside it, and past it where the expansions take
-// over), at three scales. Signs must equal the big-integer reference's.
+// Points on dyadic grids (integers m·2^shift), the input of the predicates' integer stage
+// (predicates_grid.hpp; exact lattices): small grids, where most determinants are exactly zero,
+// differences up to 2^23 (the 128-bit evaluation) and just past it (320 bits), at three scales,
+// then coordinates spanning 59 bits (320 bits) and 62 bits (past the stage: expansions). Signs
+// must equal the big-integer reference's.
 template <int N>
 void check_dyadic_grid(std::int64_t half_width, int shift, int trials) {
   std::mt19937_64 rng(31 + N + shift);
@@ -75,7 +76,9 @@ void check_dyadic_grid(std::int64_t half_width, int shift, int trials) {
     ASSERT_EQ(s, reference_in_sphere<N>(r)) << "trial " << t << " width " << half_width;
     zeros += s == 0;
   }
-  if (half_width <= 2) EXPECT_GT(zeros, trials / 20) << "the small grid should be degenerate";
+  if (half_width <= 2) {
+    EXPECT_GT(zeros, trials / 20) << "the small grid should be degenerate";
+  }
 }
 
 TEST(Predicates, DyadicGridPointsAgreeWithBigIntegerReference) {
@@ -85,6 +88,10 @@ TEST(Predicates, DyadicGridPointsAgreeWithBigIntegerReference) {
       check_dyadic_grid<2>(half_width, shift, 400);
       check_dyadic_grid<3>(half_width, shift, 300);
     }
+  for (const std::int64_t half_width : {std::int64_t{1} << 59, std::int64_t{1} << 62}) {
+    check_dyadic_grid<2>(half_width, -40, 400);
+    check_dyadic_grid<3>(half_width, -40, 300);
+  }
 }
 
 TEST(Predicates, InsideMeansPositiveForPositivelyOrientedSimplex) {
