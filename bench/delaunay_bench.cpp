@@ -3,6 +3,8 @@
 //   delaunay_bench generate-fcc N FILE   an fcc crystal of about N atoms (lattice constant 1, a
 //                                        cube of unit cells) with Gaussian thermal displacements
 //                                        of 0.03 per coordinate (seeded), CSV
+//   delaunay_bench generate-lattice sc|fcc N FILE [A]   the exact lattice (no displacements) of
+//                                        lattice constant A (default 1), CSV
 //   delaunay_bench delaunay DIM FILE     time of our Delaunay division of the points of FILE
 //   delaunay_bench queries N Q [fcc]     nearest, 8-nearest and radius query rates (per second
 //                                        of the thread's CPU time) of the SHT beside nanoflann's
@@ -21,6 +23,7 @@
 #include <fstream>
 #include <nanoflann.hpp>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "shockfield/geometry/delaunay.hpp"
@@ -60,20 +63,28 @@ void write_csv(const std::string& file, const std::vector<std::array<double, 3>>
                      : fmt::format("{:.17g},{:.17g},{:.17g}\n", p[0], p[1], p[2]));
 }
 
-/// fcc: 4 atoms per unit cell at (0,0,0), (½,½,0), (½,0,½), (0,½,½); σ = 0.03 of the lattice
-/// constant is about copper's room-temperature vibration (√⟨u²⟩ ≈ 0.08–0.1 Å of a = 3.6 Å).
-std::vector<std::array<double, 3>> perturbed_fcc(std::size_t atoms, std::uint64_t seed) {
-  const auto cells = static_cast<int>(std::lround(std::cbrt(atoms / 4.0)));
+/// A cube of unit cells (lattice constant a) of about `atoms` atoms: simple cubic, or fcc with 4
+/// atoms per cell at (0,0,0), (½,½,0), (½,0,½), (0,½,½); each coordinate displaced by a Gaussian of
+/// standard deviation sigma (σ = 0.03 is about copper's room-temperature vibration, √⟨u²⟩ ≈
+/// 0.08–0.1 Å of a = 3.6 Å; σ = 0 leaves the exact lattice, every in-sphere test degenerate).
+std::vector<std::array<double, 3>> crystal(const std::string& kind, std::size_t atoms, double sigma,
+                                           std::uint64_t seed, double a = 1.0) {
+  const std::vector<std::array<double, 3>> fcc{{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  const std::vector<std::array<double, 3>> sc{{0, 0, 0}};
+  if (kind != "sc" && kind != "fcc") throw std::invalid_argument("lattice kind: sc or fcc");
+  const auto& basis = kind == "sc" ? sc : fcc;
+  const auto cells = static_cast<int>(std::lround(std::cbrt(double(atoms) / basis.size())));
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> thermal(0.0, 0.03);
-  const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  std::normal_distribution<double> thermal(0.0, sigma);
+  auto displaced = [&](double x) { return sigma > 0 ? x + thermal(rng) : x; };
   std::vector<std::array<double, 3>> p;
-  p.reserve(4 * static_cast<std::size_t>(cells) * cells * cells);
+  p.reserve(basis.size() * cells * cells * cells);
   for (int i = 0; i < cells; ++i)
     for (int j = 0; j < cells; ++j)
       for (int k = 0; k < cells; ++k)
         for (const auto& b : basis)
-          p.push_back({i + b[0] + thermal(rng), j + b[1] + thermal(rng), k + b[2] + thermal(rng)});
+          p.push_back(
+              {displaced(a * (i + b[0])), displaced(a * (j + b[1])), displaced(a * (k + b[2]))});
   return p;
 }
 
@@ -98,7 +109,7 @@ struct Cloud {  // nanoflann's dataset adaptor
 };
 
 int queries(std::size_t n, std::size_t q, bool fcc) {
-  const auto pts = fcc ? perturbed_fcc(n, 11) : uniform(n, 1);
+  const auto pts = fcc ? crystal("fcc", n, 0.03, 11) : uniform(n, 1);
   // Queries uniform in the points' box (the unit cube, or the crystal's cube of cells).
   const double side = fcc ? std::cbrt(pts.size() / 4.0) : 1.0;
   auto qs = uniform(q, 2);
@@ -181,7 +192,12 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (mode == "generate-fcc" && argc == 4) {
-      write_csv(argv[3], perturbed_fcc(std::stoull(argv[2]), 11), 3);
+      write_csv(argv[3], crystal("fcc", std::stoull(argv[2]), 0.03, 11), 3);
+      return 0;
+    }
+    if (mode == "generate-lattice" && (argc == 5 || argc == 6)) {
+      const double a = argc == 6 ? std::stod(argv[5]) : 1.0;
+      write_csv(argv[4], crystal(argv[2], std::stoull(argv[3]), 0.0, 0, a), 3);
       return 0;
     }
     if (mode == "delaunay" && argc == 4) return argv[2][0] == '2' ? delaunay<2>(argv[3]) : delaunay<3>(argv[3]);
@@ -192,7 +208,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::fprintf(stderr,
-               "usage: delaunay_bench generate DIM N FILE | generate-fcc N FILE | delaunay DIM FILE "
+               "usage: delaunay_bench generate DIM N FILE | generate-fcc N FILE | generate-lattice "
+               "sc|fcc N FILE [A] | delaunay DIM FILE "
                "| queries N Q [fcc]\n");
   return 2;
 }

@@ -11,15 +11,28 @@
 # time (`cpu USER SYS`, /usr/bin/time, file reading included); the printed `seconds` and
 # `cpu_seconds` are the wall and CPU times of the division only (an older BEFORE_BENCH may print
 # only the wall time). `uptime` is printed before and after: report medians and the load.
-# QHULL=0 in the environment leaves SciPy/Qhull out (a rerun of ours against CGAL).
+# QHULL=0 in the environment leaves SciPy/Qhull out (a rerun of ours against CGAL). SETS (default
+# "uniform3 fcc3 uniform2") chooses the data sets; sc3 and fcclat3 are the exact simple cubic and
+# fcc lattices of about N3D points (generate-lattice, lattice constant 1: every in-sphere test
+# degenerate), fcccu3 the fcc lattice of copper's a = 3.615 (coordinates rounded, near-degenerate). QUERIES=0
+# leaves the query rates out.
 set -eu
 B="$1"; N3="${2:-1000000}"; N2="${3:-1000000}"; ROUNDS="${4:-3}"; Q="${5:-200000}"
 BEFORE="${6:-}"
 W=$(mktemp -d); trap 'rm -rf "$W"' EXIT
 cpu() { /usr/bin/time -f "  cpu %U %S" "$@"; }
-"$B/bench/delaunay_bench" generate 3 "$N3" "$W/uniform3.csv"
-"$B/bench/delaunay_bench" generate-fcc "$N3" "$W/fcc3.csv"
-"$B/bench/delaunay_bench" generate 2 "$N2" "$W/uniform2.csv"
+SETS="${SETS:-uniform3 fcc3 uniform2}"
+for set in $SETS; do
+  case "$set" in
+    uniform3) "$B/bench/delaunay_bench" generate 3 "$N3" "$W/$set.csv" ;;
+    fcc3) "$B/bench/delaunay_bench" generate-fcc "$N3" "$W/$set.csv" ;;
+    uniform2) "$B/bench/delaunay_bench" generate 2 "$N2" "$W/$set.csv" ;;
+    sc3) "$B/bench/delaunay_bench" generate-lattice sc "$N3" "$W/$set.csv" ;;
+    fcclat3) "$B/bench/delaunay_bench" generate-lattice fcc "$N3" "$W/$set.csv" ;;
+    fcccu3) "$B/bench/delaunay_bench" generate-lattice fcc "$N3" "$W/$set.csv" 3.615 ;;
+    *) echo "unknown data set $set" >&2; exit 2 ;;
+  esac
+done
 scipy_delaunay() {
   cpu /usr/bin/python3 - "$1" "$2" <<'PY'
 import sys, time, numpy as np
@@ -35,7 +48,7 @@ PY
 dim_of() { [ "$1" = uniform2 ] && echo 2 || echo 3; }
 echo "load: $(uptime)"
 for r in $(seq "$ROUNDS"); do
-  for set in uniform3 fcc3 uniform2; do
+  for set in $SETS; do
     d=$(dim_of "$set")
     echo "round $r $set"
     [ -n "$BEFORE" ] && { echo -n "before "; cpu "$BEFORE" delaunay "$d" "$W/$set.csv"; }
@@ -43,13 +56,14 @@ for r in $(seq "$ROUNDS"); do
     [ -x "$B/bench/cgal_delaunay_peer" ] && cpu "$B/bench/cgal_delaunay_peer" "$d" "$W/$set.csv"
   done
 done
-for r in $(seq "$ROUNDS"); do
+[ "${QUERIES:-1}" = 0 ] && ROUNDS_Q=0 || ROUNDS_Q="$ROUNDS"
+for r in $(seq "$ROUNDS_Q"); do
   echo "queries round $r"
   [ -n "$BEFORE" ] && { echo "before:"; "$BEFORE" queries "$N3" "$Q"; }
   "$B/bench/delaunay_bench" queries "$N3" "$Q"
 done
-echo "scipy cKDTree (its own uniform points, same counts and radius, one thread):"
-/usr/bin/python3 - "$N3" "$Q" <<'PY'
+[ "$ROUNDS_Q" = 0 ] || echo "scipy cKDTree (its own uniform points, same counts and radius, one thread):"
+[ "$ROUNDS_Q" = 0 ] || /usr/bin/python3 - "$N3" "$Q" <<'PY'
 import sys, time, numpy as np
 from scipy.spatial import cKDTree
 n, q = int(sys.argv[1]), int(sys.argv[2])
@@ -63,7 +77,7 @@ print(f"ckdtree build {build:.3f} s, nearest {q / nearest:.3g} /s, radius {q / r
       f"found {sum(len(h) for h in hits)}")
 PY
 if [ "${QHULL:-1}" != 0 ]; then
-  for set in uniform3 fcc3 uniform2; do
+  for set in $SETS; do
     scipy_delaunay "$(dim_of "$set")" "$W/$set.csv"
   done
 fi

@@ -2,7 +2,9 @@
 // (1997) does in his stage A (differences first, then 2×2 minors), so his forward error bounds
 // apply: |computed − exact| <= c·ε·permanent, ε = 2^−53, with c = 3 + 16ε (orient 2D), 7 + 56ε
 // (orient 3D), 10 + 96ε (in-circle), 16 + 224ε (in-sphere); the permanent is the same expression
-// with every term made non-negative. Inside the bound, the sign comes from exact expansions.
+// with every term made non-negative. Inside the bound, the sign is computed exactly: in fixed-width
+// integers when the coordinates span at most 61 bits (predicates_grid.hpp; lattices), else in
+// expansions.
 #include "shockfield/geometry/predicates.hpp"
 
 #include <algorithm>
@@ -10,6 +12,7 @@
 #include <numeric>
 
 #include "shockfield/geometry/expansion.hpp"
+#include "shockfield/geometry/predicates_grid.hpp"
 
 namespace shockfield::geometry {
 namespace {
@@ -143,7 +146,9 @@ template <int N>
 int orient(const PointRefs<N + 1>& p) {
   double bound = 0.0;
   const double det = N == 2 ? orient2_fast(first<3>(p), bound) : orient3_fast(first<4>(p), bound);
-  return decided(det, bound) ? sign_of(det) : orient_exact<N>(p);
+  if (decided(det, bound)) return sign_of(det);
+  const int on_grid = grid::orient<N>(p);
+  return on_grid != 2 ? on_grid : orient_exact<N>(p);
 }
 
 template <int N>
@@ -151,7 +156,9 @@ int in_sphere(const PointRefs<N + 2>& p) {
   double bound = 0.0;
   const double det =
       N == 2 ? incircle_fast(first<4>(p), bound) : insphere_fast(first<5>(p), bound);
-  return decided(det, bound) ? sign_of(det) : in_sphere_exact<N>(p);
+  if (decided(det, bound)) return sign_of(det);
+  const int on_grid = grid::in_sphere<N>(p);
+  return on_grid != 2 ? on_grid : in_sphere_exact<N>(p);
 }
 
 template <int N>

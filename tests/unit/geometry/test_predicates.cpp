@@ -54,6 +54,46 @@ TEST(Predicates, RandomPointsAgreeWithBigIntegerReference) {
   check_random<3>(1500);
 }
 
+// Points on dyadic grids (integers m·2^shift), the input of the predicates' integer stage
+// (predicates_grid.hpp; exact lattices): small grids, where most determinants are exactly zero,
+// differences up to 2^23 (the 128-bit evaluation) and just past it (320 bits), at three scales,
+// then coordinates spanning 59 bits (320 bits) and 62 bits (past the stage: expansions). Signs
+// must equal the big-integer reference's.
+template <int N>
+void check_dyadic_grid(std::int64_t half_width, int shift, int trials) {
+  std::mt19937_64 rng(31 + N + shift);
+  std::uniform_int_distribution<std::int64_t> m(-half_width, half_width);
+  int zeros = 0;
+  for (int t = 0; t < trials; ++t) {
+    std::array<std::array<double, N>, N + 2> pts;
+    for (auto& p : pts)
+      for (double& x : p) x = std::ldexp(static_cast<double>(m(rng)), shift);
+    const auto r = refs<N>(pts);
+    std::array<const double*, N + 1> o;
+    std::copy(r.begin(), r.begin() + N + 1, o.begin());
+    ASSERT_EQ(orient<N>(o), reference_orient<N>(o)) << "trial " << t << " width " << half_width;
+    const int s = in_sphere<N>(r);
+    ASSERT_EQ(s, reference_in_sphere<N>(r)) << "trial " << t << " width " << half_width;
+    zeros += s == 0;
+  }
+  if (half_width <= 2) {
+    EXPECT_GT(zeros, trials / 20) << "the small grid should be degenerate";
+  }
+}
+
+TEST(Predicates, DyadicGridPointsAgreeWithBigIntegerReference) {
+  for (const int shift : {-40, -1, 20})
+    for (const std::int64_t half_width : {std::int64_t{2}, std::int64_t{1} << 22,
+                                          (std::int64_t{1} << 23) + 1}) {
+      check_dyadic_grid<2>(half_width, shift, 400);
+      check_dyadic_grid<3>(half_width, shift, 300);
+    }
+  for (const std::int64_t half_width : {std::int64_t{1} << 59, std::int64_t{1} << 62}) {
+    check_dyadic_grid<2>(half_width, -40, 400);
+    check_dyadic_grid<3>(half_width, -40, 300);
+  }
+}
+
 TEST(Predicates, InsideMeansPositiveForPositivelyOrientedSimplex) {
   const std::array<double, 2> a{0, 0}, b{1, 0}, c{0, 1}, in{0.25, 0.25}, out{2, 2};
   EXPECT_EQ(orient<2>({a.data(), b.data(), c.data()}), 1);
