@@ -14,6 +14,7 @@
 // s0 from the previous step; then s0_i = s00 − α·min_j s over i's intact bonds (max of
 // s00 − α·s). s0 starts infinite and becomes s00 at the setup force evaluation.
 #include <cmath>
+#include <concepts>
 #include <numbers>
 
 namespace shockfield::pd {
@@ -33,6 +34,12 @@ struct PmbModel {
   static constexpr bool uses_dilatation = false;
   double micromodulus = 0.0;  ///< c [N/m^6 in 3D]
   double force(const BondTerms& b) const { return micromodulus * b.e / b.r0; }
+  /// The bond loop's form of t·V_j·β: k_b·s with s = e/r0 and the per-bond constant
+  /// k_b = (c·V_j)·β fixed at construction, LAMMPS's rk = (kspring·vfrac[j])·vfrac_scale·stretch
+  /// with its roundings (pair_peri_pmb.cpp).
+  double bond_constant(double neighbor_volume, double volume_scale) const {
+    return micromodulus * neighbor_volume * volume_scale;
+  }
   /// ∂t/∂e of the bond alone (for the stable step).
   double stiffness(const BondTerms& b) const { return micromodulus / b.r0; }
   /// Energy density at i: ¼·c·s²·r0 per unit neighbour volume from each bond (half the pair
@@ -98,6 +105,13 @@ struct LpsModel {
   }
   /// Coefficient of the dilatation coupling (for the stable step).
   double dilatation_coupling() const { return std::abs(dilatation_modulus()); }
+};
+
+/// A law whose t·V_j·β is a per-bond constant times the stretch (PMB): the bond loop precomputes
+/// the constants and runs its divisions packed (bond_force.cpp).
+template <class Model>
+concept LinearInStretch = requires(const Model& model, double v) {
+  { model.bond_constant(v, v) } -> std::convertible_to<double>;
 };
 
 struct CriticalStretch {
