@@ -103,15 +103,17 @@ void BondForce<Model>::bond_pull(std::size_t i, BondStretches& bonds) const {
   const int b0 = family_.begin(i);
   const auto m = static_cast<std::size_t>(family_.end(i) - b0);
   if constexpr (LinearInStretch<Model>) {
-    bonds.linear_pull(bond_constant_.data() + b0, m);
+    const double* k_b = bond_constant_.data() + b0;
+    for (std::size_t k = 0; k < m; ++k) bonds.pull[k] = k_b[k] * bonds.stretch[k];
   } else {
+    const Model model = model_;  // a local copy: the stores to pull cannot alias its moduli
     for (std::size_t k = 0; k < m; ++k) {
       const int b = b0 + static_cast<int>(k);
-      const double t = model_.force(terms(i, b, bonds.extension[k])) * cloud_.volume[family_.neighbor[b]] *
-                       family_.volume_scale[b];
-      bonds.pull[k] = bonds.r[k] > 0.0 ? t / bonds.r[k] : 0.0;
+      bonds.pull[k] = model.force(terms(i, b, bonds.extension[k])) * cloud_.volume[family_.neighbor[b]] *
+                      family_.volume_scale[b];
     }
   }
+  bonds.divide_pull_by_length(m);
 }
 
 template <class Model>

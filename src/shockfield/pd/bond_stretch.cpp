@@ -10,7 +10,7 @@ namespace shockfield::pd {
 namespace {
 
 // r, e and s of bonds [k, k + 1] as packed SSE2 operations (x86-64's baseline; the compiler does
-// not pack std::sqrt itself, which may set errno): the same IEEE values as measure_one.
+// not pack std::sqrt itself, which may set errno): the same IEEE values as measure_one and divide_pull_one.
 #if defined(__SSE2__)
 inline void measure_two(std::size_t k, const double* x, const double* y, const double* z, const double* r0,
                         double* r, double* e, double* s) {
@@ -26,13 +26,12 @@ inline void measure_two(std::size_t k, const double* x, const double* y, const d
   _mm_storeu_pd(s + k, _mm_div_pd(ext, reference));
 }
 
-inline void linear_pull_two(std::size_t k, const double* k_b, const double* s, const double* r, double* pull) {
+inline void divide_pull_two(std::size_t k, const double* r, double* pull) {
   const __m128d length = _mm_loadu_pd(r + k);
   const __m128d positive = _mm_cmpgt_pd(length, _mm_setzero_pd());
   // r = 0 → divide by 1 and keep 0 (no force along an undefined direction).
   const __m128d divisor = _mm_or_pd(_mm_and_pd(positive, length), _mm_andnot_pd(positive, _mm_set1_pd(1.0)));
-  const __m128d t_over_r = _mm_div_pd(_mm_mul_pd(_mm_loadu_pd(k_b + k), _mm_loadu_pd(s + k)), divisor);
-  _mm_storeu_pd(pull + k, _mm_and_pd(positive, t_over_r));
+  _mm_storeu_pd(pull + k, _mm_and_pd(positive, _mm_div_pd(_mm_loadu_pd(pull + k), divisor)));
 }
 #endif
 
@@ -44,8 +43,8 @@ inline void measure_one(std::size_t k, const double* x, const double* y, const d
   s[k] = e[k] / r0[k];
 }
 
-inline void linear_pull_one(std::size_t k, const double* k_b, const double* s, const double* r, double* pull) {
-  pull[k] = r[k] > 0.0 ? k_b[k] * s[k] / r[k] : 0.0;
+inline void divide_pull_one(std::size_t k, const double* r, double* pull) {
+  pull[k] = r[k] > 0.0 ? pull[k] / r[k] : 0.0;
 }
 
 }  // namespace
@@ -71,12 +70,12 @@ void BondStretches::measure(const Family& family, std::size_t i, const std::vect
   for (; k < m; ++k) measure_one(k, dx.data(), dy.data(), dz.data(), r0, r.data(), extension.data(), stretch.data());
 }
 
-void BondStretches::linear_pull(const double* k_b, std::size_t count) {
+void BondStretches::divide_pull_by_length(std::size_t count) {
   std::size_t k = 0;
 #if defined(__SSE2__)
-  for (; k + 2 <= count; k += 2) linear_pull_two(k, k_b, stretch.data(), r.data(), pull.data());
+  for (; k + 2 <= count; k += 2) divide_pull_two(k, r.data(), pull.data());
 #endif
-  for (; k < count; ++k) linear_pull_one(k, k_b, stretch.data(), r.data(), pull.data());
+  for (; k < count; ++k) divide_pull_one(k, r.data(), pull.data());
 }
 
 }  // namespace shockfield::pd

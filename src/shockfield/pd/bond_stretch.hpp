@@ -7,7 +7,7 @@
 //   Y = y_j − y_i,  r = |Y| = √((Y_x² + Y_y²) + Y_z²) (Eigen's norm()),  e = r − r0 (0 when
 //   |e| < 2.2204e-16, LAMMPS's NEAR_ZERO in pair_peri_*.cpp),  s = e / r0 (the exact division:
 //   critical-stretch damage compares it),
-// and for a law linear in the stretch (PMB, bond_models.hpp) the pull t·V_j·β/r = (k_b·s)/r.
+// and the pull t·V_j·β/r of the bond force (PMB: (k_b·s)/r, bond_models.hpp).
 #include <cstddef>
 #include <vector>
 
@@ -23,12 +23,12 @@ struct BondStretches {
   std::vector<double> r;           ///< |Y|
   std::vector<double> extension;   ///< e
   std::vector<double> stretch;     ///< s = e / r0
-  std::vector<double> pull;        ///< t·V_j·β/r (0 at r = 0), filled by linear_pull
+  std::vector<double> pull;        ///< the caller's t·V_j·β, then t·V_j·β/r (0 at r = 0)
 
   /// Measures the bonds of point i (every bond, intact or not).
   void measure(const Family& family, std::size_t i, const std::vector<Vec3>& y);
-  /// pull[k] = (k_b[k]·s[k])/r[k] for the `count` bonds measured last.
-  void linear_pull(const double* k_b, std::size_t count);
+  /// pull[k] /= r[k] (0 where r = 0) for the first `count` bonds measured last.
+  void divide_pull_by_length(std::size_t count);
 };
 
 }  // namespace shockfield::pd
