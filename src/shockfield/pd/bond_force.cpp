@@ -131,23 +131,31 @@ void BondForce<Model>::bond_loop(const std::vector<Vec3>& y, std::vector<Vec3>& 
       bonds.measure(family_, i, y);
       bond_pull(i, bonds);
       const int b0 = family_.begin(i), m = family_.end(i) - b0;
+      // Locals for everything the loop reads: its stores to intact_ (unsigned char) may alias any
+      // object, so members read through `this` would be reloaded for every bond.
+      const double *pull = bonds.pull.data(), *dx = bonds.dx.data(), *dy = bonds.dy.data(), *dz = bonds.dz.data();
+      const double* stretch = bonds.stretch.data();
+      const int* neighbor = family_.neighbor.data() + b0;
+      const double* s0 = s0_.data();
+      unsigned char* intact = intact_.data() + b0;
+      const double s0_i = s0[i], s00 = damage_law_.s00, alpha = damage_law_.alpha;
+      double fx = f[0], fy = f[1], fz = f[2];
       double s0_next = std::numeric_limits<double>::lowest();
       bool any = false;
       for (int k = 0; k < m; ++k) {
-        const int b = b0 + k;
-        if (!intact_[b]) continue;
-        f[0] += bonds.pull[k] * bonds.dx[k];
-        f[1] += bonds.pull[k] * bonds.dy[k];
-        f[2] += bonds.pull[k] * bonds.dz[k];
+        if (!intact[k]) continue;
+        fx += pull[k] * dx[k];
+        fy += pull[k] * dy[k];
+        fz += pull[k] * dz[k];
         if constexpr (kDamage) {
           // LAMMPS: break when s > min(s0_i, s0_j) of the previous step; s0_i of the next step is
           // the largest s00 − α·s over i's bonds intact at the start of this one.
-          const double stretch = bonds.stretch[k];
-          if (stretch > std::min(s0_[i], s0_[family_.neighbor[b]])) intact_[b] = 0;
-          s0_next = std::max(s0_next, damage_law_.s00 - damage_law_.alpha * stretch);
+          if (stretch[k] > std::min(s0_i, s0[neighbor[k]])) intact[k] = 0;
+          s0_next = std::max(s0_next, s00 - alpha * stretch[k]);
           any = true;
         }
       }
+      f = Vec3(fx, fy, fz);
       force_density[i] = f;
       if constexpr (kDamage) s0_new_[i] = any ? s0_next : std::numeric_limits<double>::max();
     }
