@@ -60,27 +60,18 @@ void BondForce<Model>::compute_dilatation(const std::vector<Vec3>& y) {
   if constexpr (!Model::uses_dilatation) {
     return;
   } else {
-    const auto n = static_cast<std::ptrdiff_t>(cloud_.size());
-#pragma omp parallel
-    {
-      BondStretches bonds;
-#pragma omp for schedule(static)
-      for (std::ptrdiff_t si = 0; si < n; ++si) {
-        const auto i = static_cast<std::size_t>(si);
-        bonds.measure(family_, i, y);
-        double sum = 0.0;
-        const int b0 = family_.begin(i);
-        for (int b = b0; b < family_.end(i); ++b) {
-          if (!intact_[b]) continue;
-          const int j = family_.neighbor[b];
-          sum += omega_[b] * family_.length[b] * bonds.extension[b - b0] * cloud_.volume[j] * family_.volume_scale[b];
-        }
-        theta_[i] = weighted_volume_[i] != 0.0 ? model_.dilatation_factor() * sum / weighted_volume_[i] : 0.0;
+    for_each_point_measured(y, [&](std::size_t i, const BondStretches& bonds) {
+      double sum = 0.0;
+      const int b0 = family_.begin(i);
+      for (int b = b0; b < family_.end(i); ++b) {
+        if (!intact_[b]) continue;
+        const int j = family_.neighbor[b];
+        sum += omega_[b] * family_.length[b] * bonds.extension[b - b0] * cloud_.volume[j] * family_.volume_scale[b];
       }
-    }
+      theta_[i] = weighted_volume_[i] != 0.0 ? model_.dilatation_factor() * sum / weighted_volume_[i] : 0.0;
+    });
   }
 }
-
 template <class Model>
 void BondForce<Model>::compute(const Kinematics& k, std::vector<Vec3>& force_density) {
   const auto& y = k.y;
@@ -119,45 +110,52 @@ void BondForce<Model>::bond_pull(std::size_t i, BondStretches& bonds) const {
 template <class Model>
 template <bool kDamage>
 void BondForce<Model>::bond_loop(const std::vector<Vec3>& y, std::vector<Vec3>& force_density) {
+  for_each_point_measured(y, [&](std::size_t i, BondStretches& bonds) {
+    // Contact first, then the bonds, in the order LAMMPS adds them (pair_peri_*.cpp).
+    const Vec3 contact = contact_ ? contact_->force_density(i, y) : Vec3::Zero();
+    bond_pull(i, bonds);
+    const int b0 = family_.begin(i), m = family_.end(i) - b0;
+    // Locals for everything the loop reads: its stores to intact_ (unsigned char) may alias any
+    // object, so members read through `this` would be reloaded for every bond.
+    const double *pull = bonds.pull.data(), *dx = bonds.dx.data(), *dy = bonds.dy.data(), *dz = bonds.dz.data();
+    const double* stretch = bonds.stretch.data();
+    const int* neighbor = family_.neighbor.data() + b0;
+    const double* s0 = s0_.data();
+    unsigned char* intact = intact_.data() + b0;
+    const double s0_i = s0[i], s00 = damage_law_.s00, alpha = damage_law_.alpha;
+    double fx = contact[0], fy = contact[1], fz = contact[2];
+    double s0_next = std::numeric_limits<double>::lowest();
+    bool any = false;
+    for (int k = 0; k < m; ++k) {
+      if (!intact[k]) continue;
+      fx += pull[k] * dx[k];
+      fy += pull[k] * dy[k];
+      fz += pull[k] * dz[k];
+      if constexpr (kDamage) {
+        // LAMMPS: break when s > min(s0_i, s0_j) of the previous step; s0_i of the next step is
+        // the largest s00 − α·s over i's bonds intact at the start of this one.
+        if (stretch[k] > std::min(s0_i, s0[neighbor[k]])) intact[k] = 0;
+        s0_next = std::max(s0_next, s00 - alpha * stretch[k]);
+        any = true;
+      }
+    }
+    force_density[i] = Vec3(fx, fy, fz);
+    if constexpr (kDamage) s0_new_[i] = any ? s0_next : std::numeric_limits<double>::max();
+  });
+}
+
+template <class Model>
+template <class PerPoint>
+void BondForce<Model>::for_each_point_measured(const std::vector<Vec3>& y, PerPoint&& per_point) {
   const auto n = static_cast<std::ptrdiff_t>(cloud_.size());
 #pragma omp parallel
   {
-    BondStretches bonds;
+    BondStretches bonds;  // one per thread, reused point after point
 #pragma omp for schedule(static)
     for (std::ptrdiff_t si = 0; si < n; ++si) {
       const auto i = static_cast<std::size_t>(si);
-      // Contact first, then the bonds, in the order LAMMPS adds them (pair_peri_*.cpp).
-      Vec3 f = contact_ ? contact_->force_density(i, y) : Vec3::Zero();
       bonds.measure(family_, i, y);
-      bond_pull(i, bonds);
-      const int b0 = family_.begin(i), m = family_.end(i) - b0;
-      // Locals for everything the loop reads: its stores to intact_ (unsigned char) may alias any
-      // object, so members read through `this` would be reloaded for every bond.
-      const double *pull = bonds.pull.data(), *dx = bonds.dx.data(), *dy = bonds.dy.data(), *dz = bonds.dz.data();
-      const double* stretch = bonds.stretch.data();
-      const int* neighbor = family_.neighbor.data() + b0;
-      const double* s0 = s0_.data();
-      unsigned char* intact = intact_.data() + b0;
-      const double s0_i = s0[i], s00 = damage_law_.s00, alpha = damage_law_.alpha;
-      double fx = f[0], fy = f[1], fz = f[2];
-      double s0_next = std::numeric_limits<double>::lowest();
-      bool any = false;
-      for (int k = 0; k < m; ++k) {
-        if (!intact[k]) continue;
-        fx += pull[k] * dx[k];
-        fy += pull[k] * dy[k];
-        fz += pull[k] * dz[k];
-        if constexpr (kDamage) {
-          // LAMMPS: break when s > min(s0_i, s0_j) of the previous step; s0_i of the next step is
-          // the largest s00 − α·s over i's bonds intact at the start of this one.
-          if (stretch[k] > std::min(s0_i, s0[neighbor[k]])) intact[k] = 0;
-          s0_next = std::max(s0_next, s00 - alpha * stretch[k]);
-          any = true;
-        }
-      }
-      f = Vec3(fx, fy, fz);
-      force_density[i] = f;
-      if constexpr (kDamage) s0_new_[i] = any ? s0_next : std::numeric_limits<double>::max();
+      per_point(i, bonds);
     }
   }
 }

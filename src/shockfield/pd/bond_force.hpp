@@ -66,6 +66,9 @@ class BondForce final : public ForceModel {
  private:
   BondTerms terms(std::size_t i, int b, double e) const;
   void compute_dilatation(const std::vector<Vec3>& y);
+  /// per_point(i, bonds) for every point, threaded, with i's bonds measured at y (bond_stretch.hpp).
+  template <class PerPoint>
+  void for_each_point_measured(const std::vector<Vec3>& y, PerPoint&& per_point);
   /// The force and damage loop over every point's bonds, with or without critical-stretch damage.
   template <bool kDamage>
   void bond_loop(const std::vector<Vec3>& y, std::vector<Vec3>& force_density);
