@@ -1,6 +1,7 @@
 #pragma once
 // Ordinary peridynamic force laws, each a small type with its parameters and one evaluation
-// function returning the scalar bond force t per unit neighbour volume: point i feels
+// function for the scalar bond force t per unit neighbour volume (LPS: `force`; PMB, linear in
+// the stretch: `bond_constant`, see LinearInStretch): point i feels
 // t·V_j·β·(y_j − y_i)/|y_j − y_i| from bond i→j. Written to match LAMMPS peri/pmb and peri/lps
 // (pair_peri_pmb.cpp, pair_peri_lps.cpp) term by term.
 //
@@ -33,9 +34,8 @@ struct BondTerms {
 struct PmbModel {
   static constexpr bool uses_dilatation = false;
   double micromodulus = 0.0;  ///< c [N/m^6 in 3D]
-  double force(const BondTerms& b) const { return micromodulus * b.e / b.r0; }
-  /// The bond loop's form of t·V_j·β: k_b·s with s = e/r0 and the per-bond constant
-  /// k_b = (c·V_j)·β fixed at construction, LAMMPS's rk = (kspring·vfrac[j])·vfrac_scale·stretch
+  /// t = c·s is evaluated as t·V_j·β = k_b·s, s = e/r0, with the per-bond constant
+  /// k_b = (c·V_j)·β fixed at construction: LAMMPS's rk = (kspring·vfrac[j])·vfrac_scale·stretch
   /// with its roundings (pair_peri_pmb.cpp).
   double bond_constant(double neighbor_volume, double volume_scale) const {
     return micromodulus * neighbor_volume * volume_scale;
