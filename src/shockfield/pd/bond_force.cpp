@@ -8,9 +8,6 @@
 #include "shockfield/core/error.hpp"
 
 namespace shockfield::pd {
-namespace {
-constexpr double kNearZero = 2.2204e-16;  // extensions below this are zero (as in LAMMPS)
-}
 
 template <class Model>
 BondForce<Model>::BondForce(const PointCloud& cloud, const Family& family, Model model, Influence influence,
@@ -27,6 +24,11 @@ BondForce<Model>::BondForce(const PointCloud& cloud, const Family& family, Model
       omega_[b] = Model::uses_dilatation ? influence(r0, family.horizon) : 1.0;
       weighted_volume_[i] += omega_[b] * r0 * r0 * cloud.volume[family.neighbor[b]] * family.volume_scale[b];
     }
+  if constexpr (LinearInStretch<Model>) {
+    bond_constant_.resize(family.bonds());
+    for (std::size_t b = 0; b < family.bonds(); ++b)
+      bond_constant_[b] = model.bond_constant(cloud.volume[family.neighbor[b]], family.volume_scale[b]);
+  }
   theta_.assign(n, 0.0);
   intact_.assign(family.bonds(), 1);
   s0_.assign(n, std::numeric_limits<double>::max());
@@ -58,6 +60,8 @@ void BondForce<Model>::compute_dilatation(const std::vector<Vec3>& y) {
   if constexpr (!Model::uses_dilatation) {
     return;
   } else {
+    // Per bond, not through BondStretches: this sum needs only e, and the staged arrays cost LPS
+    // more than the packed square roots save here (measured, bench/RESULTS.md).
     const auto n = static_cast<std::ptrdiff_t>(cloud_.size());
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t si = 0; si < n; ++si) {
@@ -67,7 +71,7 @@ void BondForce<Model>::compute_dilatation(const std::vector<Vec3>& y) {
         if (!intact_[b]) continue;
         const int j = family_.neighbor[b];
         double e = (y[j] - y[i]).norm() - family_.length[b];
-        if (std::abs(e) < kNearZero) e = 0.0;
+        if (std::abs(e) < kNearZeroExtension) e = 0.0;
         sum += omega_[b] * family_.length[b] * e * cloud_.volume[j] * family_.volume_scale[b];
       }
       theta_[i] = weighted_volume_[i] != 0.0 ? model_.dilatation_factor() * sum / weighted_volume_[i] : 0.0;
@@ -84,35 +88,83 @@ void BondForce<Model>::compute(const Kinematics& k, std::vector<Vec3>& force_den
     if (forward_) forward_(theta_);
   }
   if (contact_) contact_->update(y);
-  const auto n = static_cast<std::ptrdiff_t>(cloud_.size());
   force_density.resize(cloud_.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t si = 0; si < n; ++si) {
-    const auto i = static_cast<std::size_t>(si);
+  if (damage_law_.enabled())
+    bond_loop<true>(y, force_density);
+  else
+    bond_loop<false>(y, force_density);
+  if (damage_law_.enabled()) std::swap(s0_, s0_new_);
+}
+
+template <class Model>
+void BondForce<Model>::bond_pull(std::size_t i, BondStretches& bonds) const {
+  const int b0 = family_.begin(i);
+  const auto m = static_cast<std::size_t>(family_.end(i) - b0);
+  if constexpr (LinearInStretch<Model>) {
+    const double* k_b = bond_constant_.data() + b0;
+    for (std::size_t k = 0; k < m; ++k) bonds.pull[k] = k_b[k] * bonds.stretch[k];
+  } else {
+    const Model model = model_;  // a local copy: the stores to pull cannot alias its moduli
+    for (std::size_t k = 0; k < m; ++k) {
+      const int b = b0 + static_cast<int>(k);
+      bonds.pull[k] = model.force(terms(i, b, bonds.extension[k])) * cloud_.volume[family_.neighbor[b]] *
+                      family_.volume_scale[b];
+    }
+  }
+  bonds.divide_pull_by_length(m);
+}
+
+template <class Model>
+template <bool kDamage>
+void BondForce<Model>::bond_loop(const std::vector<Vec3>& y, std::vector<Vec3>& force_density) {
+  for_each_point_measured(y, [&](std::size_t i, BondStretches& bonds) {
     // Contact first, then the bonds, in the order LAMMPS adds them (pair_peri_*.cpp).
-    Vec3 f = contact_ ? contact_->force_density(i, y) : Vec3::Zero();
+    const Vec3 contact = contact_ ? contact_->force_density(i, y) : Vec3::Zero();
+    bond_pull(i, bonds);
+    const int b0 = family_.begin(i), m = family_.end(i) - b0;
+    // Locals for everything the loop reads: its stores to intact_ (unsigned char) may alias any
+    // object, so members read through `this` would be reloaded for every bond.
+    const double *pull = bonds.pull.data(), *dx = bonds.dx.data(), *dy = bonds.dy.data(), *dz = bonds.dz.data();
+    const double* stretch = bonds.stretch.data();
+    const int* neighbor = family_.neighbor.data() + b0;
+    const double* s0 = s0_.data();
+    unsigned char* intact = intact_.data() + b0;
+    const double s0_i = s0[i], s00 = damage_law_.s00, alpha = damage_law_.alpha;
+    double fx = contact[0], fy = contact[1], fz = contact[2];
     double s0_next = std::numeric_limits<double>::lowest();
     bool any = false;
-    for (int b = family_.begin(i); b < family_.end(i); ++b) {
-      if (!intact_[b]) continue;
-      const int j = family_.neighbor[b];
-      const Vec3 bond = y[j] - y[i];
-      const double r = bond.norm();
-      double e = r - family_.length[b];
-      if (std::abs(e) < kNearZero) e = 0.0;
-      const double t = model_.force(terms(i, b, e)) * cloud_.volume[j] * family_.volume_scale[b];
-      if (r > 0.0) f += (t / r) * bond;
-      if (damage_law_.enabled()) {
-        const double stretch = e / family_.length[b];
-        if (stretch > std::min(s0_[i], s0_[j])) intact_[b] = 0;
-        s0_next = std::max(s0_next, damage_law_.s00 - damage_law_.alpha * stretch);
+    for (int k = 0; k < m; ++k) {
+      if (!intact[k]) continue;
+      fx += pull[k] * dx[k];
+      fy += pull[k] * dy[k];
+      fz += pull[k] * dz[k];
+      if constexpr (kDamage) {
+        // LAMMPS: break when s > min(s0_i, s0_j) of the previous step; s0_i of the next step is
+        // the largest s00 − α·s over i's bonds intact at the start of this one.
+        if (stretch[k] > std::min(s0_i, s0[neighbor[k]])) intact[k] = 0;
+        s0_next = std::max(s0_next, s00 - alpha * stretch[k]);
         any = true;
       }
     }
-    force_density[i] = f;
-    s0_new_[i] = any ? s0_next : std::numeric_limits<double>::max();
+    force_density[i] = Vec3(fx, fy, fz);
+    if constexpr (kDamage) s0_new_[i] = any ? s0_next : std::numeric_limits<double>::max();
+  });
+}
+
+template <class Model>
+template <class PerPoint>
+void BondForce<Model>::for_each_point_measured(const std::vector<Vec3>& y, PerPoint&& per_point) {
+  const auto n = static_cast<std::ptrdiff_t>(cloud_.size());
+#pragma omp parallel
+  {
+    BondStretches bonds;  // one per thread, reused point after point
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t si = 0; si < n; ++si) {
+      const auto i = static_cast<std::size_t>(si);
+      bonds.measure(family_, i, y);
+      per_point(i, bonds);
+    }
   }
-  if (damage_law_.enabled()) std::swap(s0_, s0_new_);
 }
 
 template <class Model>

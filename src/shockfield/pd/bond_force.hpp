@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "shockfield/pd/bond_models.hpp"
+#include "shockfield/pd/bond_stretch.hpp"
 #include "shockfield/pd/contact.hpp"
 #include "shockfield/pd/family.hpp"
 #include "shockfield/pd/force_model.hpp"
@@ -65,12 +66,21 @@ class BondForce final : public ForceModel {
  private:
   BondTerms terms(std::size_t i, int b, double e) const;
   void compute_dilatation(const std::vector<Vec3>& y);
+  /// per_point(i, bonds) for every point, threaded, with i's bonds measured at y (bond_stretch.hpp).
+  template <class PerPoint>
+  void for_each_point_measured(const std::vector<Vec3>& y, PerPoint&& per_point);
+  /// The force and damage loop over every point's bonds, with or without critical-stretch damage.
+  template <bool kDamage>
+  void bond_loop(const std::vector<Vec3>& y, std::vector<Vec3>& force_density);
+  /// bonds.pull[k] = t·V_j·β/r of point i's k-th bond (0 at r = 0), from its measured bonds.
+  void bond_pull(std::size_t i, BondStretches& bonds) const;
 
   const PointCloud& cloud_;
   const Family& family_;
   Model model_;
   CriticalStretch damage_law_;
   std::vector<double> omega_;            // per bond
+  std::vector<double> bond_constant_;    // per bond, LinearInStretch models: k_b = (c·V_j)·β
   std::vector<double> weighted_volume_;  // m_i = Σ ω r0² V β (fixed, LAMMPS wvolume)
   std::vector<double> theta_;
   std::vector<unsigned char> intact_;    // per bond

@@ -1,6 +1,7 @@
 #pragma once
 // Ordinary peridynamic force laws, each a small type with its parameters and one evaluation
-// function returning the scalar bond force t per unit neighbour volume: point i feels
+// function for the scalar bond force t per unit neighbour volume (LPS: `force`; PMB, linear in
+// the stretch: `bond_constant`, see LinearInStretch): point i feels
 // t·V_j·β·(y_j − y_i)/|y_j − y_i| from bond i→j. Written to match LAMMPS peri/pmb and peri/lps
 // (pair_peri_pmb.cpp, pair_peri_lps.cpp) term by term.
 //
@@ -14,6 +15,7 @@
 // s0 from the previous step; then s0_i = s00 − α·min_j s over i's intact bonds (max of
 // s00 − α·s). s0 starts infinite and becomes s00 at the setup force evaluation.
 #include <cmath>
+#include <concepts>
 #include <numbers>
 
 namespace shockfield::pd {
@@ -32,7 +34,12 @@ struct BondTerms {
 struct PmbModel {
   static constexpr bool uses_dilatation = false;
   double micromodulus = 0.0;  ///< c [N/m^6 in 3D]
-  double force(const BondTerms& b) const { return micromodulus * b.e / b.r0; }
+  /// t = c·s is evaluated as t·V_j·β = k_b·s, s = e/r0, with the per-bond constant
+  /// k_b = (c·V_j)·β fixed at construction: LAMMPS's rk = (kspring·vfrac[j])·vfrac_scale·stretch
+  /// with its roundings (pair_peri_pmb.cpp).
+  double bond_constant(double neighbor_volume, double volume_scale) const {
+    return micromodulus * neighbor_volume * volume_scale;
+  }
   /// ∂t/∂e of the bond alone (for the stable step).
   double stiffness(const BondTerms& b) const { return micromodulus / b.r0; }
   /// Energy density at i: ¼·c·s²·r0 per unit neighbour volume from each bond (half the pair
@@ -98,6 +105,13 @@ struct LpsModel {
   }
   /// Coefficient of the dilatation coupling (for the stable step).
   double dilatation_coupling() const { return std::abs(dilatation_modulus()); }
+};
+
+/// A law whose t·V_j·β is a per-bond constant times the stretch (PMB): the bond loop precomputes
+/// the constants and runs its divisions packed (bond_force.cpp).
+template <class Model>
+concept LinearInStretch = requires(const Model& model, double v) {
+  { model.bond_constant(v, v) } -> std::convertible_to<double>;
 };
 
 struct CriticalStretch {
