@@ -4,7 +4,7 @@
 # keys and choices, a point with a singular shape tensor, an unknown slip system set, Euler angles
 # out of range, a zero loading direction, inverted grain sizes, a PMB critical stretch of 0, a
 # negative micromodulus, an LPS key given to PMB, a contact switch that is not a bool or is
-# given to J2).
+# given to J2, a plane-stress LPS body that is not 2D, a plane key given to PMB).
 source "$(dirname "$0")/lib.bash"
 set -e
 base=$(sed -n '/^method/,$p' "$ROOT/tests/cli/cases/pd_tiny.toml")
@@ -53,4 +53,16 @@ expect_error "${pmb/critical_stretch = 0.01/critical_stretch = 0.01
 contact = \"yes\"}" "material.contact"
 expect_error "${base/yield_stress = 270e6/yield_stress = 270e6
 contact = true}" "material.contact" "only of model = \"pmb\" or \"lps\""
+lps="${base/young = 77.11e9
+poisson = 0.334
+yield_stress = 270e6/bulk = 70e9
+shear = 26e9
+critical_stretch = 0.01}"
+lps="${lps/model = \"j2\"/model = \"lps\"}"
+expect_error "${lps/shear = 26e9/shear = 26e9
+plane = \"stress\"}" "material.plane" "2D plate" "dim = 1"
+expect_error "${lps/shear = 26e9/shear = 26e9
+plane = \"membrane\"}" "material.plane" "expected one of"
+expect_error "${pmb/critical_stretch = 0.01/critical_stretch = 0.01
+plane = \"stress\"}" "material.plane" "only of model = \"lps\""
 echo "pd_bad_input: all cases rejected cleanly"

@@ -59,6 +59,8 @@ struct PmbModel {
 //   2D plane strain (the pd convention: the missing direction held): κ = K + G/3 = λ + G and
 //       B = 8G (the 2D LPS of Le, Chan & Schwartz, IJNME 98 (2014) 547): A = 2K − 10G/3;
 //       longitudinal waves then travel at √((K + 4G/3)/ρ) and shear waves at √(G/ρ);
+//   2D plane stress (`plane = "stress"`): κ = 9KG/(3K + 4G) = E/(2(1 − ν)), the same B = 8G:
+//       longitudinal waves at √(E/((1 − ν²)ρ)), the plate speed;
 //   1D uniaxial strain: κ = K + 4G/3 (there is no shear to carry) and B = 3G, the d(d+2)G
 //       pattern of 15G and 8G (our choice: it vanishes on homogeneous strain, so the wave speed
 //       is √((K + 4G/3)/ρ) whatever B is, and it stiffens the zig-zag mode u_j = (−1)^j, which
@@ -68,12 +70,16 @@ struct LpsModel {
   double bulk = 0.0;   ///< K [Pa]
   double shear = 0.0;  ///< G [Pa]
   int dim = 3;         ///< d of the body
+  bool plane_stress = false;  ///< 2D only: κ_2 = 9KG/(3K + 4G) (plane stress) instead of K + G/3
   /// d of θ = (d/m) Σ ω x e V β.
   double dilatation_factor() const { return static_cast<double>(dim); }
   /// A = d·κ_d − B_d/d.
   double dilatation_modulus() const {
     if (dim == 3) return 3.0 * bulk - 5.0 * shear;
-    if (dim == 2) return 2.0 * bulk - 10.0 / 3.0 * shear;
+    if (dim == 2) {  // 2κ_2 − B_2/2 = 2κ_2 − 4G, κ_2 the 2D bulk modulus of the constraint
+      const double kappa = plane_stress ? 9.0 * bulk * shear / (3.0 * bulk + 4.0 * shear) : bulk + shear / 3.0;
+      return 2.0 * kappa - 4.0 * shear;
+    }
     return bulk + 4.0 / 3.0 * shear - 3.0 * shear;
   }
   /// B_d.

@@ -150,7 +150,7 @@ const std::vector<ModelKey>& model_keys() {
       {"hardening", {"j2"}},     {"hugoniot_slope", {"j2", "crystal"}},
       {"micromodulus", {"pmb"}}, {"bulk", {"lps"}},       {"shear", {"lps"}},
       {"critical_stretch", {"pmb", "lps"}},               {"alpha", {"pmb", "lps"}},
-      {"contact", {"pmb", "lps"}}};
+      {"contact", {"pmb", "lps"}},                        {"plane", {"lps"}}};
   return keys;
 }
 
@@ -197,7 +197,8 @@ std::variant<SmallStrainJ2, CrystalSpec, PmbSpec, LpsSpec> read_material(const C
   if (model == "pmb") return read_bond(t, density, PmbModel{t.get_double("micromodulus", Range::positive())});
   if (model == "lps")
     return read_bond(t, density, LpsModel{value("bulk", {"elasticity.bulk"}, {}, Range::positive()),
-                                          value("shear", {"elasticity.shear"}, {}, Range::positive())});
+                                          value("shear", {"elasticity.shear"}, {}, Range::positive()), 3,
+                                          t.get_choice_or("plane", {"strain", "stress"}, "strain") == "stress"});
   const auto [young, poisson] = young_poisson(t, f);
   const double yield = value("yield_stress", {"strength.yield_stress"}, {}, Range::positive());
   const double hardening = value("hardening", {"strength.tangent_modulus"}, 0.0, Range::non_negative());
@@ -231,7 +232,12 @@ PdCase read_pd_case(const Config& root) {
   const std::optional<Family> cloud_family =
       c.body.cloud ? std::optional<Family>(checked_cloud_family(root.table("body"), c.body)) : std::nullopt;
   c.material = read_material(root.table("material"), c.material_notes);
-  if (auto* lps = std::get_if<LpsSpec>(&c.material)) lps->law.dim = c.body.dim;  // the 1D/2D/3D LPS
+  if (auto* lps = std::get_if<LpsSpec>(&c.material)) {  // the 1D/2D/3D LPS
+    lps->law.dim = c.body.dim;
+    if (lps->law.plane_stress && c.body.dim != 2)
+      root.table("material").fail("plane", fmt::format("plane = \"stress\" is the 2D plate's constraint; this body has dim = {} "
+                                                       "(1D is uniaxial strain, 3D has no missing direction)", c.body.dim));
+  }
   c.solver = read_solver(root.table("solver"));
   const std::vector<Config> regions = root.tables("region");
   const bool bond_model = std::holds_alternative<PmbSpec>(c.material) || std::holds_alternative<LpsSpec>(c.material);
