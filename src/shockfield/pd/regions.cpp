@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <memory>
 #include <utility>
 
 #include "shockfield/core/error.hpp"
@@ -179,7 +180,11 @@ void hold(Vec3& value, const Vec3& to, const LoadRegion& r) {
 }
 }  // namespace
 
-void apply_regions(Simulation& sim, const std::vector<LoadRegion>& regions, bool initial) {
+void apply_regions(Simulation& sim, const std::vector<LoadRegion>& given, bool initial) {
+  // The hooks below keep pointers to the regions: they point into this copy, which the hooks own,
+  // so a caller may pass a temporary list (a held region's hook read freed memory before).
+  const auto kept = std::make_shared<const std::vector<LoadRegion>>(given);
+  const std::vector<LoadRegion>& regions = *kept;
   const PointCloud& cloud = sim.cloud();
   std::vector<const LoadRegion*> holder(cloud.size(), nullptr);
   for (const LoadRegion& r : regions) {
@@ -218,14 +223,13 @@ void apply_regions(Simulation& sim, const std::vector<LoadRegion>& regions, bool
     if (initial) hold(sim.velocities()[i], holder[i]->held_velocity(0.0), *holder[i]);
   }
   if (held.empty()) return;
-  // The regions outlive the simulation's run (the case holds them), so the hooks keep pointers.
   if (!displaced.empty())
     sim.add_hook(Simulation::Stage::before_force,
-                 [displaced = std::move(displaced)](Simulation& s) {
+                 [kept, displaced = std::move(displaced)](Simulation& s) {
                    for (const auto& [i, r] : displaced)
                      hold(s.positions()[i], Vec3(s.cloud().x[i] + r->displacement_at(s.time())), *r);
                  });
-  sim.add_hook(Simulation::Stage::after_force, [held = std::move(held)](Simulation& s) {
+  sim.add_hook(Simulation::Stage::after_force, [kept, held = std::move(held)](Simulation& s) {
     for (const auto& [i, r] : held) {
       hold(s.force_density()[i], Vec3::Zero(), *r);
       hold(s.velocities()[i], r->held_velocity(s.time()), *r);

@@ -135,7 +135,7 @@ std::vector<std::size_t> points_in(const geometry::Region& region, const PointCl
 /// Gives the regions' points their initial velocities (tables in order, a later one winning; a
 /// held point wins over an initial velocity) when `initial`, and from now on adds the body forces
 /// (summed where regions overlap) and holds the prescribed points (hooks of the simulation; call before its first step or setup, and again on resume with
-/// `initial` false).
+/// `initial` false). The hooks keep their own copy of `regions` (a temporary list is fine).
 void apply_regions(Simulation& sim, const std::vector<LoadRegion>& regions, bool initial);
 
 /// A line of log.txt saying what region `r` does to its `count` points.
